@@ -1,0 +1,311 @@
+/* fixel — surfaces, the format table, pack/unpack and the span loops. */
+#include "fixel/surface.h"
+#include "fixel/error.h"
+#include "fx_internal.h"
+
+#define FOURCC(a, b, c, d) \
+    ((uint32_t)(a) | ((uint32_t)(b) << 8) | ((uint32_t)(c) << 16) | ((uint32_t)(d) << 24))
+
+static const fx_format_info formats[FX_FMT_COUNT] = {
+    [FX_FMT_XRGB8888] = {"XRGB8888", FOURCC('X', 'R', '2', '4'), 32, 0},
+    [FX_FMT_ARGB8888] = {"ARGB8888", FOURCC('A', 'R', '2', '4'), 32, 1},
+    [FX_FMT_XBGR8888] = {"XBGR8888", FOURCC('X', 'B', '2', '4'), 32, 0},
+    [FX_FMT_RGB565] = {"RGB565", FOURCC('R', 'G', '1', '6'), 16, 0},
+    [FX_FMT_BGR565] = {"BGR565", FOURCC('B', 'G', '1', '6'), 16, 0},
+    [FX_FMT_RGB888] = {"RGB888", FOURCC('R', 'G', '2', '4'), 24, 0},
+    [FX_FMT_BGR888] = {"BGR888", FOURCC('B', 'G', '2', '4'), 24, 0},
+    [FX_FMT_GRAY8] = {"GRAY8", FOURCC('R', '8', ' ', ' '), 8, 0},
+    [FX_FMT_MONO1] = {"MONO1", 0, 1, 0},
+};
+
+const fx_format_info *fx_format_get(fx_format f)
+{
+    return (unsigned)f < FX_FMT_COUNT ? &formats[f] : 0;
+}
+
+static int lower(int c) { return c >= 'A' && c <= 'Z' ? c + 32 : c; }
+
+fx_format fx_format_from_name(const char *name)
+{
+    for (int f = 0; f < FX_FMT_COUNT; f++) {
+        const char *a = formats[f].name, *b = name;
+        while (*a && lower(*a) == lower(*b))
+            a++, b++;
+        if (!*a && !*b)
+            return (fx_format)f;
+    }
+    return FX_FMT_COUNT;
+}
+
+int32_t fx_format_min_stride(fx_format f, int32_t w)
+{
+    return (int32_t)(((int64_t)w * formats[f].bits_per_pixel + 7) / 8);
+}
+
+int fx_surface_init(fx_surface *s, void *pixels, int32_t w, int32_t h, int32_t stride,
+                    fx_format format)
+{
+    if ((unsigned)format >= FX_FMT_COUNT || !pixels || w <= 0 || h <= 0)
+        return -FX_EINVAL;
+    int64_t need = fx_format_min_stride(format, w);
+    int64_t mag = stride < 0 ? -(int64_t)stride : stride;
+    unsigned bpp = formats[format].bits_per_pixel;
+    unsigned align = bpp == 32 ? 4 : bpp == 16 ? 2 : 1;
+    /* Word formats are accessed as aligned words: misaligned memory would be
+     * undefined behaviour (and a fault on older ARM cores). */
+    if (mag < need || mag % align || (uintptr_t)pixels % align)
+        return -FX_EINVAL;
+    s->pixels = pixels;
+    s->w = w;
+    s->h = h;
+    s->stride = stride;
+    s->format = format;
+    s->bit_offset = 0;
+    return 0;
+}
+
+fx_rect fx_rect_intersect(fx_rect a, fx_rect b)
+{
+    fx_rect r = {FX_MAX(a.x0, b.x0), FX_MAX(a.y0, b.y0), FX_MIN(a.x1, b.x1), FX_MIN(a.y1, b.y1)};
+    if (fx_rect_empty(r))
+        r.x1 = r.x0, r.y1 = r.y0;
+    return r;
+}
+
+fx_surface fx_surface_sub(fx_surface s, fx_rect r)
+{
+    r = fx_rect_intersect(r, fx_surface_rect(&s));
+    fx_surface t = s;
+    t.w = r.x1 - r.x0;
+    t.h = r.y1 - r.y0;
+    if (t.w <= 0 || t.h <= 0) {
+        t.w = t.h = 0;
+        return t;
+    }
+    t.pixels = fx_row(&s, r.y0);
+    if (s.format == FX_FMT_MONO1) {
+        int32_t bit = s.bit_offset + r.x0;
+        t.pixels += bit >> 3;
+        t.bit_offset = (uint8_t)(bit & 7);
+    } else {
+        t.pixels += (ptrdiff_t)r.x0 * (formats[s.format].bits_per_pixel / 8);
+    }
+    return t;
+}
+
+static uint32_t luma(fx_color c)
+{
+    uint32_t r = (c >> 16) & 0xFF, g = (c >> 8) & 0xFF, b = c & 0xFF;
+    return (77 * r + 150 * g + 29 * b + 128) >> 8;
+}
+
+uint32_t fx_pack(fx_format f, fx_color c)
+{
+    uint32_t r = (c >> 16) & 0xFF, g = (c >> 8) & 0xFF, b = c & 0xFF;
+    switch (f) {
+    case FX_FMT_XRGB8888: return c & 0xFFFFFF;
+    case FX_FMT_ARGB8888: return c;
+    case FX_FMT_XBGR8888: return (b << 16) | (g << 8) | r;
+    case FX_FMT_RGB565: return ((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3);
+    case FX_FMT_BGR565: return ((b >> 3) << 11) | ((g >> 2) << 5) | (r >> 3);
+    case FX_FMT_RGB888: return c & 0xFFFFFF;
+    case FX_FMT_BGR888: return (b << 16) | (g << 8) | r;
+    case FX_FMT_GRAY8: return luma(c);
+    case FX_FMT_MONO1: return luma(c) >= 128;
+    default: return 0;
+    }
+}
+
+fx_color fx_unpack(fx_format f, uint32_t v)
+{
+    uint32_t r, g, b;
+    switch (f) {
+    case FX_FMT_XRGB8888:
+    case FX_FMT_RGB888: return 0xFF000000u | (v & 0xFFFFFF);
+    case FX_FMT_ARGB8888: return v;
+    case FX_FMT_XBGR8888:
+    case FX_FMT_BGR888:
+        return 0xFF000000u | ((v & 0xFF) << 16) | (v & 0xFF00) | ((v >> 16) & 0xFF);
+    case FX_FMT_RGB565:
+    case FX_FMT_BGR565:
+        r = (v >> 11) & 0x1F;
+        g = (v >> 5) & 0x3F;
+        b = v & 0x1F;
+        if (f == FX_FMT_BGR565) {
+            uint32_t t = r;
+            r = b;
+            b = t;
+        }
+        r = (r << 3) | (r >> 2);
+        g = (g << 2) | (g >> 4);
+        b = (b << 3) | (b >> 2);
+        return 0xFF000000u | (r << 16) | (g << 8) | b;
+    case FX_FMT_GRAY8: v &= 0xFF; return 0xFF000000u | (v << 16) | (v << 8) | v;
+    case FX_FMT_MONO1: return v & 1 ? 0xFFFFFFFFu : 0xFF000000u;
+    default: return 0;
+    }
+}
+
+uint32_t fx_surface_get_native(const fx_surface *s, int32_t x, int32_t y)
+{
+    const uint8_t *row = fx_row(s, y);
+    switch (formats[s->format].bits_per_pixel) {
+    case 32: return ((const uint32_t *)row)[x];
+    case 16: return ((const uint16_t *)row)[x];
+    case 24: row += x * 3; return row[0] | ((uint32_t)row[1] << 8) | ((uint32_t)row[2] << 16);
+    case 8: return row[x];
+    default: {
+        int32_t bit = s->bit_offset + x;
+        return (row[bit >> 3] >> (bit & 7)) & 1;
+    }
+    }
+}
+
+void fx_surface_put_native(const fx_surface *s, int32_t x, int32_t y, uint32_t v)
+{
+    uint8_t *row = fx_row(s, y);
+    switch (formats[s->format].bits_per_pixel) {
+    case 32: ((uint32_t *)row)[x] = v; break;
+    case 16: ((uint16_t *)row)[x] = (uint16_t)v; break;
+    case 24:
+        row += x * 3;
+        row[0] = (uint8_t)v;
+        row[1] = (uint8_t)(v >> 8);
+        row[2] = (uint8_t)(v >> 16);
+        break;
+    case 8: row[x] = (uint8_t)v; break;
+    default: {
+        int32_t bit = s->bit_offset + x;
+        uint8_t m = (uint8_t)(1u << (bit & 7));
+        if (v & 1)
+            row[bit >> 3] |= m;
+        else
+            row[bit >> 3] &= (uint8_t)~m;
+    }
+    }
+}
+
+void fx_surface_put(const fx_surface *s, int32_t x, int32_t y, fx_color c)
+{
+    if ((uint32_t)x < (uint32_t)s->w && (uint32_t)y < (uint32_t)s->h)
+        fx_surface_put_native(s, x, y, fx_pack(s->format, c));
+}
+
+fx_color fx_surface_get(const fx_surface *s, int32_t x, int32_t y)
+{
+    if ((uint32_t)x < (uint32_t)s->w && (uint32_t)y < (uint32_t)s->h)
+        return fx_unpack(s->format, fx_surface_get_native(s, x, y));
+    return 0;
+}
+
+static void mono_span(uint8_t *row, int32_t b0, int32_t b1, int on)
+{
+    /* bits [b0, b1) of the row */
+    while (b0 < b1 && (b0 & 7)) {
+        uint8_t m = (uint8_t)(1u << (b0 & 7));
+        row[b0 >> 3] = on ? row[b0 >> 3] | m : row[b0 >> 3] & (uint8_t)~m;
+        b0++;
+    }
+    if (b1 - b0 >= 8) {
+        fx_memset(row + (b0 >> 3), on ? 0xFF : 0, (size_t)((b1 - b0) >> 3));
+        b0 += (b1 - b0) & ~7;
+    }
+    while (b0 < b1) {
+        uint8_t m = (uint8_t)(1u << (b0 & 7));
+        row[b0 >> 3] = on ? row[b0 >> 3] | m : row[b0 >> 3] & (uint8_t)~m;
+        b0++;
+    }
+}
+
+void fx_span_fill(const fx_surface *s, int32_t y, int32_t x0, int32_t x1, uint32_t v)
+{
+    uint8_t *row = fx_row(s, y);
+    int32_t n = x1 - x0;
+    switch (formats[s->format].bits_per_pixel) {
+    case 32: {
+        uint32_t *p = (uint32_t *)row + x0;
+        while (n--)
+            *p++ = v;
+        break;
+    }
+    case 16: {
+        uint16_t *p = (uint16_t *)row + x0;
+        while (n--)
+            *p++ = (uint16_t)v;
+        break;
+    }
+    case 24: {
+        uint8_t *p = row + x0 * 3, b0 = (uint8_t)v, b1 = (uint8_t)(v >> 8), b2 = (uint8_t)(v >> 16);
+        while (n--) {
+            p[0] = b0;
+            p[1] = b1;
+            p[2] = b2;
+            p += 3;
+        }
+        break;
+    }
+    case 8: fx_memset(row + x0, (int)(v & 0xFF), (size_t)n); break;
+    default: mono_span(row, s->bit_offset + x0, s->bit_offset + x1, v & 1); break;
+    }
+}
+
+void fx_rect_fill_native(const fx_surface *s, fx_rect r, uint32_t v)
+{
+    for (int32_t y = r.y0; y < r.y1; y++)
+        fx_span_fill(s, y, r.x0, r.x1, v);
+}
+
+void fx_surface_fill(const fx_surface *s, fx_rect r, fx_color c)
+{
+    r = fx_rect_intersect(r, fx_surface_rect(s));
+    if (!fx_rect_empty(r))
+        fx_rect_fill_native(s, r, fx_pack(s->format, c));
+}
+
+void fx_surface_clear(const fx_surface *s, fx_color c) { fx_surface_fill(s, fx_surface_rect(s), c); }
+
+void fx_blit(const fx_surface *dst, int32_t dx, int32_t dy, const fx_surface *src)
+{
+    fx_rect r = {dx, dy, dx, dy};
+    r.x1 = (int32_t)FX_MIN((int64_t)dx + src->w, INT32_MAX);
+    r.y1 = (int32_t)FX_MIN((int64_t)dy + src->h, INT32_MAX);
+    r = fx_rect_intersect(r, fx_surface_rect(dst));
+    if (fx_rect_empty(r))
+        return;
+    int32_t sx = r.x0 - dx, sy = r.y0 - dy, w = r.x1 - r.x0, h = r.y1 - r.y0;
+    /* Walk rows bottom-up when the destination lies after the source in
+     * memory, so overlapping views of one buffer copy correctly. */
+    const uint8_t *s_first = fx_row(src, sy), *d_first = fx_row(dst, r.y0);
+    int up = d_first > s_first;
+    unsigned bpp = formats[dst->format].bits_per_pixel;
+    if (src->format == dst->format && bpp >= 8) {
+        size_t bytes = (size_t)w * (bpp / 8), off_s = (size_t)sx * (bpp / 8),
+               off_d = (size_t)r.x0 * (bpp / 8);
+        for (int32_t i = 0; i < h; i++) {
+            int32_t k = up ? h - 1 - i : i;
+            fx_memmove(fx_row(dst, r.y0 + k) + off_d, fx_row(src, sy + k) + off_s, bytes);
+        }
+        return;
+    }
+    int same = src->format == dst->format;
+    for (int32_t i = 0; i < h; i++) {
+        int32_t k = up ? h - 1 - i : i;
+        for (int32_t j = 0; j < w; j++) {
+            int32_t m = up ? w - 1 - j : j;
+            uint32_t v = fx_surface_get_native(src, sx + m, sy + k);
+            if (!same)
+                v = fx_pack(dst->format, fx_unpack(src->format, v));
+            fx_surface_put_native(dst, r.x0 + m, r.y0 + k, v);
+        }
+    }
+}
+
+void fx_surface_row_to_rgb(const fx_surface *s, int32_t y, uint8_t *rgb)
+{
+    for (int32_t x = 0; x < s->w; x++) {
+        fx_color c = fx_unpack(s->format, fx_surface_get_native(s, x, y));
+        *rgb++ = (uint8_t)(c >> 16);
+        *rgb++ = (uint8_t)(c >> 8);
+        *rgb++ = (uint8_t)c;
+    }
+}
