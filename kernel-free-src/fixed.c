@@ -130,7 +130,7 @@ fx_angle fx_atan2(int32_t y, int32_t x)
         base = FX_ANGLE_180;
     }
     /* Scale the vector up to ~2^40 so the shifted terms keep 40 bits. */
-    uint64_t m = X > uabs64(Y) ? (uint64_t)X : uabs64(Y);
+    uint64_t m = (uint64_t)X > uabs64(Y) ? (uint64_t)X : uabs64(Y);
     while (m < ((uint64_t)1 << 40)) {
         X *= 2;
         Y *= 2;

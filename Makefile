@@ -1,0 +1,195 @@
+# fixel — the one entry point.
+#   make                 library (static + shared), tools, fixel.pc
+#   make run             the main job (headless on a machine without a display)
+#   make test            every test suite, plain and under ASan+UBSan, with a total
+#   make bench           the benchmark table (tools/fixel-bench)
+#   make deps            install the Debian packages the build needs (root) or say how
+#   make install PREFIX=/usr/local DESTDIR=
+#   make golden-update   re-render the golden images (look at them before committing)
+#   make BOARD=rpi4 ...  cross-build with a board profile from boards/<name>.mk
+
+BOARD    ?= pc
+-include boards/$(BOARD).mk
+
+CROSS_COMPILE ?=
+CC       := $(CROSS_COMPILE)gcc
+AR       := $(CROSS_COMPILE)ar
+NM       := $(CROSS_COMPILE)nm
+PKG_CONFIG ?= pkg-config
+PREFIX   ?= /usr/local
+DESTDIR  ?=
+VERSION  := 0.1.0
+SOMAJOR  := 0
+
+BUILD    ?= build
+OPT      ?= -O2
+SAN      ?=
+ifeq ($(SAN),1)
+  BUILD    := build/asan
+  SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+endif
+
+WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes -Wvla
+CSTD     := -std=c11
+INCLUDES := -Ikernel-free-src/include -Iboards/include
+CPU_FLAGS ?=
+BASEFLAGS := $(CSTD) $(WARN) $(OPT) -g $(CPU_FLAGS) $(SANFLAGS) -fPIC -MMD -MP $(INCLUDES)
+
+# Libraries the boards side and the tools use (installed by `make deps`).
+SYS_PKGS := libpng zlib
+OPT_PKGS := libdrm libevdev libgpiod
+HAVE_OPT := $(shell $(PKG_CONFIG) --exists $(OPT_PKGS) 2>/dev/null && echo 1)
+PKGS     := $(SYS_PKGS) $(if $(HAVE_OPT),$(OPT_PKGS))
+PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null)
+PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS) 2>/dev/null)
+LDLIBS   := $(PKG_LIBS) -lpthread
+LDFLAGS  ?=
+ifeq ($(STATIC),1)
+  LDFLAGS += -static
+  PKG_LIBS := $(shell $(PKG_CONFIG) --static --libs $(PKGS) 2>/dev/null)
+endif
+
+CORE_SRC   := $(sort $(wildcard kernel-free-src/*.c))
+BOARD_SRC  := $(sort $(wildcard boards/memory/*.c) $(if $(HAVE_OPT),$(wildcard boards/linux/*.c)))
+LIB_SRC    := $(CORE_SRC) $(BOARD_SRC)
+LIB_OBJ    := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
+LIB_A      := $(BUILD)/libfixel.a
+LIB_SO     := $(BUILD)/libfixel.so.$(VERSION)
+
+TOOLS      := $(sort $(notdir $(patsubst %/,%,$(dir $(wildcard tools/*/main.c)))))
+TOOL_BINS  := $(TOOLS:%=$(BUILD)/bin/%)
+
+# Test suites: each entry is a command that prints a final "N passed, N failed".
+TEST_SRC   := $(sort $(wildcard tests/core/*.c))
+TEST_OBJ   := $(TEST_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/runner.o $(BUILD)/obj/tests/registry.o
+TEST_BIN   := $(BUILD)/tests/unit
+GOLDEN_BIN := $(BUILD)/tests/golden
+TEST_SUITES :=
+
+
+.PHONY: all lib tools run test test-bins test-plain test-asan check-freestanding deps install \
+        golden-update clean help
+all: lib tools $(BUILD)/fixel.pc
+
+# Fragments from modules (kernel rig, bench, fuzz...) add targets and suites.
+-include $(sort $(wildcard tests/*/*.mk tools/*/*.mk))
+
+lib: $(LIB_A) $(LIB_SO)
+tools: $(TOOL_BINS)
+
+# V=1 shows the full commands.
+ifeq ($(V),1)
+  Q :=
+else
+  Q := @
+endif
+
+$(BUILD)/obj/kernel-free-src/%.o: kernel-free-src/%.c
+	@mkdir -p $(dir $@)
+	@$(if $(Q),echo "  CC      $<")
+	$(Q)$(CC) $(BASEFLAGS) -c $< -o $@
+
+$(BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	@$(if $(Q),echo "  CC      $<")
+	$(Q)$(CC) $(BASEFLAGS) -D_GNU_SOURCE $(PKG_CFLAGS) -Itests -c $< -o $@
+
+$(LIB_A): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	$(AR) rcs $@ $^
+
+$(LIB_SO): $(LIB_OBJ)
+	$(CC) -shared -Wl,-soname,libfixel.so.$(SOMAJOR) $(SANFLAGS) -o $@ $^ $(LDLIBS)
+	ln -sf libfixel.so.$(VERSION) $(BUILD)/libfixel.so.$(SOMAJOR)
+	ln -sf libfixel.so.$(VERSION) $(BUILD)/libfixel.so
+
+# Each tools/<name>/ with a main.c becomes $(BUILD)/bin/<name>; a fragment may
+# add TOOL_LIBS_<name> (extra libraries) and TOOL_SRC_<name> (extra sources).
+.SECONDEXPANSION:
+tool_objs = $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/$1/*.c) $(TOOL_SRC_$1))
+$(BUILD)/bin/%: $$(call tool_objs,$$*) $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(filter %.o,$^) $(LIB_A) $(TOOL_LIBS_$*) $(LDLIBS)
+
+$(BUILD)/fixel.pc: Makefile
+	@mkdir -p $(dir $@)
+	printf 'prefix=%s\nlibdir=$${prefix}/lib\nincludedir=$${prefix}/include\n\nName: fixel\nDescription: integer-only graphics on Linux framebuffers\nVersion: %s\nLibs: -L$${libdir} -lfixel\nLibs.private: %s -lpthread\nRequires.private: %s\nCflags: -I$${includedir}\n' \
+	  '$(PREFIX)' '$(VERSION)' '' '$(PKGS)' > $@
+
+# ---- tests ----
+$(BUILD)/tests/registry.c: $(TEST_SRC)
+	@mkdir -p $(dir $@)
+	sh tests/gen-registry.sh $(TEST_SRC) > $@
+
+$(BUILD)/obj/tests/registry.o: $(BUILD)/tests/registry.c
+	@mkdir -p $(dir $@)
+	$(CC) $(BASEFLAGS) -Itests -c $< -o $@
+
+$(TEST_BIN): $(TEST_OBJ) $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(TEST_OBJ) $(LIB_A) $(LDLIBS) -lm
+
+$(GOLDEN_BIN): $(BUILD)/obj/tests/golden/golden.o $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $< $(LIB_A) $(LDLIBS)
+
+# The suites of one build (plain or sanitized); each prints its own total.
+BUILD_SUITES = "$(TEST_BIN)" \
+	"$(GOLDEN_BIN) --dir tests/golden --out $(BUILD)/golden" \
+	"sh tests/script-errors.sh $(BUILD)/bin/fixel-draw $(BUILD)/script-errors"
+
+test-plain: all $(TEST_BIN) $(GOLDEN_BIN)
+	@sh tests/run-suites.sh $(BUILD_SUITES)
+
+test-asan:
+	@$(MAKE) --no-print-directory SAN=1 test-plain
+
+check-freestanding:
+	@sh tests/check-freestanding.sh "$(CC)" "$(NM)" "$(BUILD)/freestanding" $(CORE_SRC)
+
+test-bins: all $(TEST_BIN) $(GOLDEN_BIN)
+
+test: deps-check
+	@$(MAKE) --no-print-directory test-bins
+	@$(MAKE) --no-print-directory SAN=1 test-bins
+	@sh tests/run-suites.sh --total \
+	  $(BUILD_SUITES) \
+	  $(subst $(BUILD),build/asan,$(BUILD_SUITES)) \
+	  "sh tests/check-freestanding.sh '$(CC)' '$(NM)' build/freestanding $(CORE_SRC)" \
+	  $(TEST_SUITES)
+
+golden-update: all $(GOLDEN_BIN)
+	$(GOLDEN_BIN) --dir tests/golden --out $(BUILD)/golden --update
+
+# ---- the main job ----
+run: deps-check all
+	@mkdir -p out
+	@if [ -x $(BUILD)/bin/fixel-demo ]; then $(BUILD)/bin/fixel-demo; else \
+	  $(BUILD)/bin/fixel-draw -o out/showcase.png tools/fixel-draw/showcase.fxs && \
+	  echo "fixel: no display here; rendered the showcase headless into out/showcase.png"; fi
+
+# ---- dependencies ----
+DEB_PKGS := gcc make pkg-config libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev \
+            $(EXTRA_DEB_PKGS)
+deps:
+	@sh tests/deps.sh $(sort $(DEB_PKGS))
+deps-check:
+	@sh tests/deps.sh --check $(sort $(DEB_PKGS))
+
+install: all
+	install -d $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/fixel \
+	  $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
+	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/
+	ln -sf libfixel.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libfixel.so.$(SOMAJOR)
+	ln -sf libfixel.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libfixel.so
+	install -m 644 kernel-free-src/include/fixel/*.h boards/include/fixel/*.h \
+	  $(DESTDIR)$(PREFIX)/include/fixel/
+	install -m 644 $(BUILD)/fixel.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/
+	install -m 755 $(TOOL_BINS) $(DESTDIR)$(PREFIX)/bin/
+
+clean:
+	rm -rf build out
+
+-include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

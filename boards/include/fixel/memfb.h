@@ -1,0 +1,32 @@
+/* fixel — the in-memory framebuffer: a surface in ordinary memory, for
+ * headless runs and tests, and image files (PNG via libpng, binary PPM). */
+#ifndef FIXEL_MEMFB_H
+#define FIXEL_MEMFB_H
+
+#include <stdint.h>
+#include "fixel/surface.h"
+
+typedef struct fx_memfb {
+    fx_surface surf;
+    void *mem; /* what to free */
+} fx_memfb;
+
+/* Allocate a w x h surface of format f, 64-byte aligned rows, cleared to 0.
+ * Returns 0, -FX_EINVAL or -FX_ENOMEM. */
+int fx_memfb_create(fx_memfb *fb, int32_t w, int32_t h, fx_format f);
+void fx_memfb_destroy(fx_memfb *fb);
+
+/* Write a surface as 8-bit RGB (every format goes through fx_unpack).
+ * Return 0 or a negative errno; on failure no partial file is left behind. */
+int fx_write_png(const char *path, const fx_surface *s);
+int fx_write_ppm(const char *path, const fx_surface *s);
+/* By extension: ".ppm" writes PPM, anything else PNG. */
+int fx_write_image(const char *path, const fx_surface *s);
+
+/* Read a PNG as 8-bit RGB (alpha dropped, palettes/grey expanded).
+ * *rgb is malloc'd (w*h*3 bytes); the caller frees it. */
+int fx_read_png_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h);
+/* Write 8-bit RGB data as a PNG (used for diff images). */
+int fx_write_png_rgb(const char *path, const uint8_t *rgb, int32_t w, int32_t h);
+
+#endif

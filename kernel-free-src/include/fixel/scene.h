@@ -1,0 +1,123 @@
+/* fixel — the scene-script language: parser and interpreter on a surface.
+ *
+ * One command per line; '#' starts a comment; integers are decimal (a sign
+ * is allowed); fixed-point values are decimal fractions parsed exactly;
+ * colours are #RRGGBB (opaque) or #AARRGGBB; strings are double-quoted with
+ * \" and \\ escapes. Errors carry the line and column of the offending token.
+ *
+ * The interpreter is pure: the host (fixel-draw, the kiosk, tests) supplies
+ * the surface, file loading, tracing and presentation through fx_scene_host,
+ * and all memory through an arena it hands over at init.
+ *
+ * Each module adds its commands in its own file (scene_<module>.c) as a
+ * NULL-terminated fx_scene_cmd table, listed once in scene.c.
+ */
+#ifndef FIXEL_SCENE_H
+#define FIXEL_SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "fixel/draw.h"
+#include "fixel/fixed.h"
+
+typedef struct fx_scene fx_scene;
+
+typedef struct fx_scene_host {
+    void *user;
+    /* Create the drawing surface (called once, before the first command that
+     * draws). Returns 0 or a negative error. */
+    int (*make_surface)(void *user, int32_t w, int32_t h, fx_format f, fx_surface *out);
+    /* Read a whole file named by the script; the data stays valid until the
+     * scene ends. NULL: file commands fail with "files not available". */
+    int (*load_file)(void *user, const char *path, const uint8_t **data, size_t *len);
+    /* Show the surface now ('present' command; live displays). May be NULL. */
+    int (*present)(void *user);
+    /* Receives --trace lines; NULL: tracing off. */
+    fx_trace_fn trace;
+} fx_scene_host;
+
+/* Per-module state lives in the arena, found through these slots. */
+enum {
+    FX_SCENE_MOD_RASTER,
+    FX_SCENE_MOD_CLIP,
+    FX_SCENE_MOD_FILL,
+    FX_SCENE_MOD_3D,
+    FX_SCENE_MOD_FRACTAL,
+    FX_SCENE_MOD_VIZ,
+    FX_SCENE_MOD_APP,
+    FX_SCENE_MOD_COUNT
+};
+
+struct fx_scene {
+    fx_scene_host host;
+    fx_ctx ctx;
+    int have_surface;
+    int32_t w, h;
+    fx_format format;
+    uint8_t size_fixed, format_fixed; /* set by the host: script 'size'/'format' ignored */
+    /* arena */
+    uint8_t *arena;
+    size_t arena_size, arena_used;
+    void *mod[FX_SCENE_MOD_COUNT];
+    /* the line being run */
+    const char *text;
+    int len, pos, lineno, tok_col, cmd_col;
+    /* the first error */
+    int err_line, err_col;
+    char err[200];
+};
+
+typedef struct fx_scene_cmd {
+    const char *name;
+    int (*run)(fx_scene *sc);
+    const char *usage; /* e.g. "line X0 Y0 X1 Y1" */
+    unsigned flags;    /* FX_SCENE_DRAWS: needs the surface */
+} fx_scene_cmd;
+#define FX_SCENE_DRAWS 1u
+
+/* Set up a scene: default size 320x240 XRGB8888, colour white. The arena
+ * (any size; 0 is allowed) holds module state such as depth buffers. */
+void fx_scene_init(fx_scene *sc, const fx_scene_host *host, void *arena, size_t arena_size);
+/* Force size/format regardless of the script (command-line overrides). */
+void fx_scene_fix_size(fx_scene *sc, int32_t w, int32_t h);
+void fx_scene_fix_format(fx_scene *sc, fx_format f);
+
+/* Run a whole script (lines separated by \n; \r\n accepted). Returns 0, or a
+ * negative error with sc->err, sc->err_line and sc->err_col set. A script that
+ * drew nothing still gets its surface (cleared to black by the host). */
+int fx_scene_run(fx_scene *sc, const char *text, size_t len);
+/* Run one line (without its newline) as line number lineno. */
+int fx_scene_exec_line(fx_scene *sc, const char *line, size_t len, int lineno);
+/* Make sure the surface exists (commands flagged FX_SCENE_DRAWS get it for free). */
+int fx_scene_surface(fx_scene *sc);
+
+/* ---- for command implementations ---- */
+/* Record an error at the current token and return -FX_EINVAL. */
+int fx_scene_error(fx_scene *sc, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+/* 1 when more arguments follow on the line. */
+int fx_scene_more(fx_scene *sc);
+/* Error unless the line has no more arguments; later errors then point at
+ * the command itself. */
+int fx_scene_end(fx_scene *sc);
+int fx_scene_arg_int(fx_scene *sc, int32_t *v);
+int fx_scene_arg_color(fx_scene *sc, fx_color *v);
+int fx_scene_arg_fx16(fx_scene *sc, fx16 *v);
+int fx_scene_arg_fx56(fx_scene *sc, fx56 *v);
+/* A bare word (letters, digits, '_', '-', '.', '/'), copied NUL-terminated. */
+int fx_scene_arg_word(fx_scene *sc, char *buf, size_t size);
+/* A double-quoted string, unescaped, NUL-terminated. */
+int fx_scene_arg_string(fx_scene *sc, char *buf, size_t size);
+/* One of the given words (NULL-terminated list): returns its index. */
+int fx_scene_arg_choice(fx_scene *sc, const char *const *choices);
+/* Take size bytes (8-byte aligned, zeroed) from the arena; NULL when full. */
+void *fx_scene_alloc(fx_scene *sc, size_t size);
+
+/* Every command, for --help and docs; NULL-terminated tables. */
+extern const fx_scene_cmd *const fx_scene_tables[];
+const fx_scene_cmd *fx_scene_find(const char *name, size_t len);
+
+#endif

@@ -1,0 +1,28 @@
+#!/bin/sh
+# The core must build freestanding with no floating-point registers (a float
+# or double is then a compile error) and reference nothing from libc but mem*.
+cc=$1; nm=$2; out=$3; shift 3
+mkdir -p "$out"
+P=0; F=0
+for src in "$@"; do
+    o="$out/$(basename "$src" .c).o"
+    if $cc -std=c11 -Wall -Wextra -Werror -O2 -ffreestanding -mgeneral-regs-only \
+        -Ikernel-free-src/include -c "$src" -o "$o" 2> "$o.err"; then
+        P=$((P + 1))
+    else
+        echo "FAIL freestanding compile: $src"; cat "$o.err"; F=$((F + 1))
+    fi
+done
+bad=$(grep -nE '#include *<(linux/|sys/|stdio|stdlib|math\.h|unistd|fcntl|errno|pthread|time\.h|signal)' \
+      kernel-free-src/*.c kernel-free-src/*.h kernel-free-src/include/fixel/*.h)
+if [ -n "$bad" ]; then echo "FAIL forbidden include in the core:"; echo "$bad"; F=$((F + 1)); else P=$((P + 1)); fi
+undef=$($nm -u "$out"/*.o | awk 'NF == 2 && $1 == "U" {print $2} NF == 1 && $1 !~ /:$/ {print $1}' | sort -u)
+defined=$($nm --defined-only "$out"/*.o | awk 'NF == 3 {print $3}' | sort -u)
+extern=$(echo "$undef" | while read -r s; do
+    [ -z "$s" ] && continue
+    echo "$defined" | grep -qx "$s" && continue
+    case "$s" in memset|memcpy|memmove|memcmp|_GLOBAL_OFFSET_TABLE_) ;; *) echo "$s";; esac
+done)
+if [ -n "$extern" ]; then echo "FAIL core objects reference outside symbols:"; echo "$extern"; F=$((F + 1)); else P=$((P + 1)); fi
+echo "freestanding: $P passed, $F failed"
+[ "$F" -eq 0 ]

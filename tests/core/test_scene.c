@@ -1,0 +1,98 @@
+/* The scene-script interpreter: tokens, comments versus colours, strings,
+ * fixed-point arguments, errors with line and column, arena. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "fixel/error.h"
+#include "fixel/scene.h"
+#include "fx_test.h"
+
+static uint32_t mem[64 * 64];
+static int make(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
+{
+    (void)u;
+    if (w * h > 64 * 64)
+        return -FX_ENOMEM;
+    memset(mem, 0, sizeof mem);
+    return fx_surface_init(out, mem, w, h, w * 4, f);
+}
+
+static int run(fx_scene *sc, const char *text)
+{
+    static uint8_t arena[4096];
+    fx_scene_host h = {NULL, make, NULL, NULL, NULL};
+    fx_scene_init(sc, &h, arena, sizeof arena);
+    return fx_scene_run(sc, text, strlen(text));
+}
+
+FX_TEST(scene_draws_and_ignores_comments)
+{
+    fx_scene sc;
+    FX_CHECK_EQ(run(&sc, "size 8 4   # small\n# whole-line comment\r\nclear #102030 # note\n"
+                         "color #80FF0000\n\n   pixel 1 2\nfillrect 6 0 5 5 #deadbeef trailing comment? no\n"),
+                -FX_EINVAL);
+    FX_CHECK_EQ(sc.err_line, 7);
+    FX_CHECK_MSG(strstr(sc.err, "unexpected argument '#deadbeef'") != NULL, "%s", sc.err);
+    FX_CHECK_EQ(run(&sc, "size 8 4   # small\nclear #102030 # note\ncolor #80FF0000\npixel 1 2\n"
+                         "fillrect 6 0 5 5 # fade"),
+                0);
+    FX_CHECK_EQ(sc.w, 8);
+    FX_CHECK_EQ_HEX(mem[0], 0x102030);
+    FX_CHECK_EQ_HEX(mem[2 * 8 + 1], 0xFF0000); /* alpha ignored in SRC mode, X byte 0 */
+    FX_CHECK_EQ_HEX(mem[3 * 8 + 7], 0xFF0000);
+}
+
+FX_TEST(scene_reports_line_and_column)
+{
+    fx_scene sc;
+    FX_CHECK_EQ(run(&sc, "size 8 8\n  line 1 2 x 4\n"), -FX_EINVAL);
+    FX_CHECK_EQ(sc.err_line, 2);
+    FX_CHECK_EQ(sc.err_col, 12);
+    FX_CHECK(!strcmp(sc.err, "expected an integer, got 'x'"));
+    FX_CHECK_EQ(run(&sc, "size 100 100\n"), -FX_EINVAL); /* host refuses the surface */
+    FX_CHECK(strstr(sc.err, "cannot create a 100x100 XRGB8888 surface") != NULL);
+}
+
+static int cmd_probe_result;
+static fx16 probe_fx;
+static fx56 probe_56;
+static char probe_str[32];
+static int probe(fx_scene *sc)
+{
+    static const char *const modes[] = {"alpha", "beta", NULL};
+    int r;
+    if ((r = fx_scene_arg_fx16(sc, &probe_fx)) < 0 || (r = fx_scene_arg_fx56(sc, &probe_56)) < 0 ||
+        (r = fx_scene_arg_string(sc, probe_str, sizeof probe_str)) < 0 ||
+        (r = fx_scene_arg_choice(sc, modes)) < 0)
+        return r;
+    cmd_probe_result = r;
+    return fx_scene_end(sc);
+}
+
+FX_TEST(scene_argument_helpers)
+{
+    fx_scene sc;
+    fx_scene_host h = {NULL, make, NULL, NULL, NULL};
+    uint8_t arena[256];
+    fx_scene_init(&sc, &h, arena, sizeof arena);
+    const fx_scene_cmd cmd = {"probe", probe, "probe", 0};
+    const char *line = "probe -5.5 -0.75 \"a \\\"q\\\" b\" beta";
+    sc.text = line;
+    sc.len = (int)strlen(line);
+    sc.pos = 5;
+    FX_CHECK_EQ(cmd.run(&sc), 0);
+    FX_CHECK_EQ(probe_fx, -360448);
+    FX_CHECK_EQ(probe_56, -(3 * (FX56_ONE / 4)));
+    FX_CHECK(!strcmp(probe_str, "a \"q\" b"));
+    FX_CHECK_EQ(cmd_probe_result, 1);
+    line = "probe 1 2 \"s\" gamma";
+    sc.text = line;
+    sc.len = (int)strlen(line);
+    sc.pos = 5;
+    FX_CHECK_EQ(cmd.run(&sc), -FX_EINVAL);
+    FX_CHECK(!strcmp(sc.err, "expected one of alpha|beta, got 'gamma'"));
+    /* arena: aligned, zeroed, bounded */
+    void *a = fx_scene_alloc(&sc, 10), *b = fx_scene_alloc(&sc, 8);
+    FX_CHECK(a && b && ((uintptr_t)b & 7) == 0 && (uint8_t *)b - (uint8_t *)a == 16);
+    FX_CHECK(fx_scene_alloc(&sc, 1000) == NULL);
+}

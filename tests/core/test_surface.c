@@ -1,0 +1,231 @@
+/* Surfaces and pixel formats: the documented pack/unpack rules, exhaustively
+ * where the domain allows, spans, sub-surfaces, strides and blits. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "fixel/error.h"
+#include "fixel/surface.h"
+#include "fx_test.h"
+
+static const fx_format all[] = {FX_FMT_XRGB8888, FX_FMT_ARGB8888, FX_FMT_XBGR8888,
+                                FX_FMT_RGB565,   FX_FMT_BGR565,   FX_FMT_RGB888,
+                                FX_FMT_BGR888,   FX_FMT_GRAY8,    FX_FMT_MONO1};
+
+FX_TEST(rgb565_packs_by_truncation_for_every_colour)
+{
+    for (uint32_t c = 0; c < (1u << 24); c++) {
+        uint32_t r = c >> 16, g = (c >> 8) & 255, b = c & 255;
+        uint32_t want = ((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3);
+        uint32_t v = fx_pack(FX_FMT_RGB565, c), w = fx_pack(FX_FMT_BGR565, c);
+        if (v != want || w != (((b >> 3) << 11) | ((g >> 2) << 5) | (r >> 3))) {
+            FX_CHECK_MSG(0, "565 pack of %06x", c);
+            break;
+        }
+    }
+    FX_CHECK_EQ_HEX(fx_pack(FX_FMT_RGB565, 0x2060A0), 0x2314); /* WORKLOADS W1 */
+}
+
+FX_TEST(sixteen_bit_formats_round_trip_every_value)
+{
+    for (uint32_t v = 0; v < 65536; v++) {
+        FX_CHECK(fx_pack(FX_FMT_RGB565, fx_unpack(FX_FMT_RGB565, v)) == v);
+        FX_CHECK(fx_pack(FX_FMT_BGR565, fx_unpack(FX_FMT_BGR565, v)) == v);
+    }
+    /* bit replication: full-scale channels unpack to 0xFF, zero to 0 */
+    FX_CHECK_EQ_HEX(fx_unpack(FX_FMT_RGB565, 0xFFFF), 0xFFFFFFFF);
+    FX_CHECK_EQ_HEX(fx_unpack(FX_FMT_RGB565, 0xF800), 0xFFFF0000);
+    FX_CHECK_EQ_HEX(fx_unpack(FX_FMT_BGR565, 0xF800), 0xFF0000FF);
+    FX_CHECK_EQ_HEX(fx_unpack(FX_FMT_RGB565, 0x0420), 0xFF008600); /* g=33 -> 33<<2|33>>4 = 134 */
+}
+
+FX_TEST(byte_formats_are_exact_and_gray_is_bt601_luma)
+{
+    uint32_t s = 17;
+    for (int i = 0; i < 1000000; i++) {
+        uint32_t c = fx_test_rand(&s);
+        FX_CHECK(fx_unpack(FX_FMT_ARGB8888, fx_pack(FX_FMT_ARGB8888, c)) == c);
+        uint32_t o = c | 0xFF000000u;
+        FX_CHECK(fx_unpack(FX_FMT_XRGB8888, fx_pack(FX_FMT_XRGB8888, c)) == o);
+        FX_CHECK(fx_unpack(FX_FMT_XBGR8888, fx_pack(FX_FMT_XBGR8888, c)) == o);
+        FX_CHECK(fx_unpack(FX_FMT_RGB888, fx_pack(FX_FMT_RGB888, c)) == o);
+        FX_CHECK(fx_unpack(FX_FMT_BGR888, fx_pack(FX_FMT_BGR888, c)) == o);
+        FX_CHECK((fx_pack(FX_FMT_XRGB8888, c) >> 24) == 0); /* X byte written as 0 */
+    }
+    for (uint32_t c = 0; c < (1u << 24); c += 7) {
+        uint32_t r = c >> 16, g = (c >> 8) & 255, b = c & 255;
+        uint32_t y = fx_pack(FX_FMT_GRAY8, c);
+        uint32_t lo = r < g ? (r < b ? r : b) : (g < b ? g : b);
+        uint32_t hi = r > g ? (r > b ? r : b) : (g > b ? g : b);
+        if (y < lo || y > hi || y != (77 * r + 150 * g + 29 * b + 128) >> 8) {
+            FX_CHECK_MSG(0, "gray of %06x = %u", c, y);
+            break;
+        }
+        if (fx_pack(FX_FMT_MONO1, c) != (y >= 128)) {
+            FX_CHECK_MSG(0, "mono of %06x", c);
+            break;
+        }
+    }
+    for (uint32_t v = 0; v < 256; v++)
+        FX_CHECK(fx_pack(FX_FMT_GRAY8, fx_unpack(FX_FMT_GRAY8, v)) == v);
+    FX_CHECK_EQ_HEX(fx_unpack(FX_FMT_MONO1, 1), 0xFFFFFFFF);
+    FX_CHECK_EQ_HEX(fx_unpack(FX_FMT_MONO1, 0), 0xFF000000);
+}
+
+FX_TEST(memory_layout_follows_drm_fourcc)
+{
+    uint8_t mem[16] __attribute__((aligned(4)));
+    fx_surface s;
+    struct {
+        fx_format f;
+        uint8_t bytes[4];
+        int n;
+    } cases[] = {
+        {FX_FMT_XRGB8888, {0x33, 0x22, 0x11, 0x00}, 4}, {FX_FMT_ARGB8888, {0x33, 0x22, 0x11, 0x80}, 4},
+        {FX_FMT_XBGR8888, {0x11, 0x22, 0x33, 0x00}, 4}, {FX_FMT_RGB888, {0x33, 0x22, 0x11}, 3},
+        {FX_FMT_BGR888, {0x11, 0x22, 0x33}, 3},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        memset(mem, 0xEE, sizeof mem);
+        FX_CHECK_EQ(fx_surface_init(&s, mem, 1, 1, 4, cases[i].f), 0);
+        fx_surface_put(&s, 0, 0, 0x80112233);
+        FX_CHECK_MSG(memcmp(mem, cases[i].bytes, (size_t)cases[i].n) == 0, "%s",
+                     fx_format_get(cases[i].f)->name);
+    }
+    FX_CHECK_EQ(fx_format_get(FX_FMT_XRGB8888)->drm_fourcc, 0x34325258); /* 'XR24' */
+    FX_CHECK_EQ(fx_format_get(FX_FMT_RGB565)->drm_fourcc, 0x36314752);   /* 'RG16' */
+    FX_CHECK_EQ(fx_format_from_name("rgb565"), FX_FMT_RGB565);
+    FX_CHECK_EQ(fx_format_from_name("RGB56"), FX_FMT_COUNT);
+}
+
+FX_TEST(surface_init_rejects_bad_geometry)
+{
+    uint32_t mem[64];
+    fx_surface s;
+    FX_CHECK_EQ(fx_surface_init(&s, mem, 8, 8, 31, FX_FMT_XRGB8888), -FX_EINVAL); /* too small */
+    FX_CHECK_EQ(fx_surface_init(&s, mem, 8, 8, 34, FX_FMT_XRGB8888), -FX_EINVAL); /* misaligned */
+    FX_CHECK_EQ(fx_surface_init(&s, (uint8_t *)mem + 1, 4, 4, 8, FX_FMT_RGB565), -FX_EINVAL);
+    FX_CHECK_EQ(fx_surface_init(&s, mem, 0, 8, 32, FX_FMT_XRGB8888), -FX_EINVAL);
+    FX_CHECK_EQ(fx_surface_init(&s, NULL, 8, 8, 32, FX_FMT_XRGB8888), -FX_EINVAL);
+    FX_CHECK_EQ(fx_surface_init(&s, mem, 8, 8, 32, FX_FMT_COUNT), -FX_EINVAL);
+    FX_CHECK_EQ(fx_surface_init(&s, mem, 9, 2, 2, FX_FMT_MONO1), 0); /* 9 bits fit in 2 bytes */
+    FX_CHECK_EQ(fx_surface_init(&s, mem, 17, 2, 2, FX_FMT_MONO1), -FX_EINVAL);
+}
+
+/* Every format: a span writes exactly [x0, x1) of its row, nothing else. */
+FX_TEST(spans_write_exactly_their_pixels_in_every_format)
+{
+    for (size_t f = 0; f < sizeof all / sizeof all[0]; f++) {
+        enum { W = 37, H = 5 };
+        fx_surface s;
+        int32_t stride = fx_format_get(all[f])->bits_per_pixel == 32 ? 160 : 128;
+        uint8_t *mem = calloc(1, (size_t)stride * H);
+        FX_CHECK_EQ(fx_surface_init(&s, mem, W, H, stride, all[f]), 0);
+        uint32_t white = fx_pack(all[f], 0xFFFFFF);
+        for (int x0 = 0; x0 < W; x0 += 3)
+            for (int x1 = x0; x1 <= W; x1 += 5) {
+                memset(mem, 0, (size_t)s.stride * H);
+                fx_span_fill(&s, 2, x0, x1, white);
+                for (int y = 0; y < H; y++)
+                    for (int x = 0; x < W; x++) {
+                        int in = y == 2 && x >= x0 && x < x1;
+                        if ((fx_surface_get_native(&s, x, y) == white) != in ||
+                            (!in && fx_surface_get_native(&s, x, y) != 0)) {
+                            FX_CHECK_MSG(0, "%s span [%d,%d) pixel %d,%d",
+                                         fx_format_get(all[f])->name, x0, x1, x, y);
+                            goto next;
+                        }
+                    }
+            }
+    next:
+        free(mem);
+    }
+}
+
+FX_TEST(sub_surfaces_share_pixels_and_clip)
+{
+    uint32_t mem[8 * 8] = {0};
+    fx_surface s, t;
+    fx_surface_init(&s, mem, 8, 8, 32, FX_FMT_XRGB8888);
+    fx_rect r = {2, 3, 20, 5};
+    t = fx_surface_sub(s, r);
+    FX_CHECK_EQ(t.w, 6);
+    FX_CHECK_EQ(t.h, 2);
+    fx_surface_put(&t, 0, 0, 0xABCDEF);
+    fx_surface_put(&t, 6, 0, 0x123456); /* outside the view: ignored */
+    FX_CHECK_EQ_HEX(mem[3 * 8 + 2], 0xABCDEF);
+    FX_CHECK_EQ(fx_surface_get(&t, -1, 0), 0);
+    fx_rect none = {9, 9, 12, 12};
+    FX_CHECK_EQ(fx_surface_sub(s, none).w, 0);
+
+    /* MONO1 views start mid-byte */
+    uint8_t bits[4] = {0};
+    fx_surface m, v;
+    fx_surface_init(&m, bits, 16, 2, 2, FX_FMT_MONO1);
+    fx_rect rv = {5, 1, 16, 2};
+    v = fx_surface_sub(m, rv);
+    fx_span_fill(&v, 0, 0, 6, 1); /* pixels 5..10 of row 1 */
+    FX_CHECK_EQ_HEX(bits[2], 0xE0);
+    FX_CHECK_EQ_HEX(bits[3], 0x07);
+    FX_CHECK_EQ(fx_surface_get_native(&v, 5, 0), 1);
+    FX_CHECK_EQ(fx_surface_get_native(&v, 6, 0), 0);
+}
+
+FX_TEST(negative_and_padded_strides)
+{
+    uint16_t mem[4 * 10] = {0}; /* 4 rows, 10 u16 per row, 6 pixels used */
+    fx_surface s;
+    /* bottom-up: row 0 is the last row in memory */
+    FX_CHECK_EQ(fx_surface_init(&s, mem + 3 * 10, 6, 4, -20, FX_FMT_RGB565), 0);
+    fx_surface_fill(&s, (fx_rect){0, 0, 6, 1}, 0xFFFFFF);
+    fx_surface_put(&s, 5, 3, 0xFF0000);
+    for (int i = 0; i < 6; i++)
+        FX_CHECK_EQ_HEX(mem[30 + i], 0xFFFF);
+    FX_CHECK_EQ_HEX(mem[5], 0xF800);
+    FX_CHECK_EQ(mem[6], 0); /* padding untouched */
+    FX_CHECK_EQ(mem[36], 0);
+}
+
+FX_TEST(blit_converts_clips_and_handles_overlap)
+{
+    enum { W = 13, H = 9 };
+    uint32_t src_mem[W * H];
+    fx_surface src;
+    fx_surface_init(&src, src_mem, W, H, W * 4, FX_FMT_ARGB8888);
+    uint32_t s = 21;
+    for (int i = 0; i < W * H; i++)
+        src_mem[i] = fx_test_rand(&s);
+    for (size_t f = 0; f < sizeof all / sizeof all[0]; f++) {
+        uint32_t dmem[20 * 20];
+        memset(dmem, 0, sizeof dmem);
+        fx_surface d;
+        fx_surface_init(&d, dmem, 20, 20, 80, all[f]);
+        fx_blit(&d, -3, 15, &src); /* clipped left and bottom */
+        for (int y = 0; y < 20; y++)
+            for (int x = 0; x < 20; x++) {
+                int sx = x + 3, sy = y - 15;
+                uint32_t want = sx >= 0 && sx < W && sy >= 0 && sy < H
+                                    ? fx_pack(all[f], src_mem[sy * W + sx])
+                                    : 0;
+                if (fx_surface_get_native(&d, x, y) != want) {
+                    FX_CHECK_MSG(0, "%s blit at %d,%d", fx_format_get(all[f])->name, x, y);
+                    y = 20;
+                    break;
+                }
+            }
+    }
+    /* scrolling a surface onto itself, both directions */
+    uint32_t mem[16 * 4], orig[16 * 4];
+    for (int i = 0; i < 64; i++)
+        orig[i] = mem[i] = (uint32_t)i;
+    fx_surface a;
+    fx_surface_init(&a, mem, 16, 4, 64, FX_FMT_XRGB8888);
+    fx_surface view = fx_surface_sub(a, (fx_rect){0, 0, 16, 3});
+    fx_blit(&a, 0, 1, &view); /* move rows 0..2 down by one */
+    for (int y = 1; y < 4; y++)
+        for (int x = 0; x < 16; x++)
+            FX_CHECK_EQ(mem[y * 16 + x], orig[(y - 1) * 16 + x]);
+    fx_surface right = fx_surface_sub(a, (fx_rect){1, 0, 16, 4});
+    fx_blit(&a, 0, 0, &right); /* move columns left by one */
+    FX_CHECK_EQ(mem[16 + 0], orig[1]);
+    FX_CHECK_EQ(mem[16 + 14], orig[15]);
+}

@@ -1,0 +1,224 @@
+/* fixel — golden-image suite: every tests/golden/scripts/NAME.fxs rendered in
+ * every pixel format (or those listed on a "# formats:" line) and compared
+ * exactly, as 8-bit RGB, with tests/golden/FORMAT/NAME.png. A mismatch writes
+ * OUT/FORMAT/NAME.actual.png and NAME.diff.png (differing pixels red on a
+ * dimmed copy of the expected picture). --update rewrites the goldens. */
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "fixel/error.h"
+#include "fixel/memfb.h"
+#include "fixel/scene.h"
+
+typedef struct host {
+    fx_memfb fb;
+    int have;
+    void *files[64];
+    int nfiles;
+} host;
+
+static int make_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
+{
+    host *H = u;
+    int r = fx_memfb_create(&H->fb, w, h, f);
+    if (r == 0) {
+        H->have = 1;
+        *out = H->fb.surf;
+    }
+    return r;
+}
+
+static char *slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *buf = n >= 0 ? malloc((size_t)n + 1) : NULL;
+    if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) {
+        free(buf);
+        buf = NULL;
+    }
+    fclose(f);
+    if (buf) {
+        buf[n] = 0;
+        *len = (size_t)n;
+    }
+    return buf;
+}
+
+static int load_file(void *u, const char *path, const uint8_t **data, size_t *len)
+{
+    host *H = u;
+    if (H->nfiles == 64)
+        return -FX_ENOMEM;
+    char *b = slurp(path, len);
+    if (!b)
+        return -errno;
+    H->files[H->nfiles++] = b;
+    *data = (const uint8_t *)b;
+    return 0;
+}
+
+static void mkdirs(const char *dir)
+{
+    char tmp[1024];
+    snprintf(tmp, sizeof tmp, "%s", dir);
+    for (char *p = tmp + 1; *p; p++)
+        if (*p == '/') {
+            *p = 0;
+            mkdir(tmp, 0777);
+            *p = '/';
+        }
+    mkdir(tmp, 0777);
+}
+
+static int cmpstr(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+
+/* Formats named on a "# formats: A B" line, or all. */
+static int wants_format(const char *script, fx_format f)
+{
+    const char *p = strstr(script, "# formats:");
+    if (!p)
+        return 1;
+    const char *e = strchr(p, '\n');
+    size_t n = e ? (size_t)(e - p) : strlen(p);
+    const char *name = fx_format_get(f)->name;
+    size_t k = strlen(name);
+    for (const char *q = p + 10; q + k <= p + n; q++)
+        if (!strncmp(q, name, k) && (q[k] == ' ' || q[k] == '\n' || q + k == p + n) && q[-1] == ' ')
+            return 1;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    const char *dir = "tests/golden", *out = "build/golden";
+    int update = 0;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--dir") && i + 1 < argc)
+            dir = argv[++i];
+        else if (!strcmp(argv[i], "--out") && i + 1 < argc)
+            out = argv[++i];
+        else if (!strcmp(argv[i], "--update"))
+            update = 1;
+    }
+    char path[1024];
+    snprintf(path, sizeof path, "%s/scripts", dir);
+    DIR *d = opendir(path);
+    if (!d) {
+        fprintf(stderr, "golden: cannot open %s: %s\n", path, strerror(errno));
+        printf("golden: 0 passed, 1 failed\n");
+        return 1;
+    }
+    char *names[4096];
+    int n = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) && n < 4096) {
+        size_t l = strlen(e->d_name);
+        if (l > 4 && !strcmp(e->d_name + l - 4, ".fxs"))
+            names[n++] = strndup(e->d_name, l - 4);
+    }
+    closedir(d);
+    qsort(names, (size_t)n, sizeof *names, cmpstr);
+
+    int passed = 0, failed = 0;
+    size_t arena_size = (size_t)64 << 20;
+    void *arena = malloc(arena_size);
+    for (int i = 0; i < n; i++) {
+        size_t len;
+        snprintf(path, sizeof path, "%s/scripts/%s.fxs", dir, names[i]);
+        char *text = slurp(path, &len);
+        for (int f = 0; text && f < FX_FMT_COUNT; f++) {
+            if (!wants_format(text, (fx_format)f))
+                continue;
+            const char *fname = fx_format_get((fx_format)f)->name;
+            host H;
+            memset(&H, 0, sizeof H);
+            fx_scene_host hs = {&H, make_surface, load_file, NULL, NULL};
+            static fx_scene sc;
+            fx_scene_init(&sc, &hs, arena, arena_size);
+            fx_scene_fix_format(&sc, (fx_format)f);
+            int r = fx_scene_run(&sc, text, len);
+            char gold[2200], act[2200], dif[2200], odir[1024];
+            snprintf(gold, sizeof gold, "%s/%s/%s.png", dir, fname, names[i]);
+            snprintf(odir, sizeof odir, "%s/%s", out, fname);
+            snprintf(act, sizeof act, "%s/%s.actual.png", odir, names[i]);
+            snprintf(dif, sizeof dif, "%s/%s.diff.png", odir, names[i]);
+            if (r < 0) {
+                printf("FAIL %s [%s]: script error %d:%d: %s\n", names[i], fname, sc.err_line,
+                       sc.err_col, sc.err);
+                failed++;
+            } else if (update) {
+                snprintf(odir, sizeof odir, "%s/%s", dir, fname);
+                mkdirs(odir);
+                r = fx_write_png(gold, &H.fb.surf);
+                printf("%s %s\n", r ? "FAILED to write" : "wrote", gold);
+                r ? failed++ : passed++;
+            } else {
+                uint8_t *exp = NULL;
+                int32_t w, h;
+                fx_surface *s = &H.fb.surf;
+                r = fx_read_png_rgb(gold, &exp, &w, &h);
+                size_t px = (size_t)s->w * (size_t)s->h;
+                uint8_t *got = malloc(px * 3);
+                for (int32_t y = 0; y < s->h; y++)
+                    fx_surface_row_to_rgb(s, y, got + (size_t)y * (size_t)s->w * 3);
+                long diff = -1;
+                if (r == 0 && w == s->w && h == s->h) {
+                    diff = 0;
+                    for (size_t k = 0; k < px; k++)
+                        diff += memcmp(got + 3 * k, exp + 3 * k, 3) != 0;
+                }
+                if (diff == 0) {
+                    passed++;
+                } else {
+                    failed++;
+                    mkdirs(odir);
+                    fx_write_png(act, s);
+                    if (r == 0 && diff > 0) {
+                        for (size_t k = 0; k < px; k++) {
+                            int same = !memcmp(got + 3 * k, exp + 3 * k, 3);
+                            uint8_t g = (uint8_t)((exp[3 * k] + exp[3 * k + 1] + exp[3 * k + 2]) / 12);
+                            got[3 * k] = same ? g : 255;
+                            got[3 * k + 1] = same ? g : 0;
+                            got[3 * k + 2] = same ? g : 0;
+                        }
+                        fx_write_png_rgb(dif, got, s->w, s->h);
+                        printf("FAIL %s [%s]: %ld pixels differ; see %s and %s\n", names[i], fname,
+                               diff, act, dif);
+                    } else if (r == 0) {
+                        printf("FAIL %s [%s]: size %dx%d, golden is %dx%d; see %s\n", names[i],
+                               fname, s->w, s->h, w, h, act);
+                    } else {
+                        printf("FAIL %s [%s]: no golden %s (%s); rendered %s — look at it, then "
+                               "make golden-update\n",
+                               names[i], fname, gold, fx_strerror(r), act);
+                    }
+                }
+                free(got);
+                free(exp);
+            }
+            if (H.have)
+                fx_memfb_destroy(&H.fb);
+            for (int k = 0; k < H.nfiles; k++)
+                free(H.files[k]);
+        }
+        if (!text) {
+            printf("FAIL cannot read %s\n", path);
+            failed++;
+        }
+        free(text);
+        free(names[i]);
+    }
+    free(arena);
+    printf("golden: %d passed, %d failed\n", passed, failed);
+    return failed != 0;
+}
