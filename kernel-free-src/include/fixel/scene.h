@@ -39,11 +39,14 @@ typedef struct fx_scene_host {
 /* Per-module state lives in the arena, found through these slots. */
 enum {
     FX_SCENE_MOD_RASTER,
+    FX_SCENE_MOD_CONIC,
+    FX_SCENE_MOD_TEXT,
     FX_SCENE_MOD_CLIP,
     FX_SCENE_MOD_FILL,
     FX_SCENE_MOD_3D,
     FX_SCENE_MOD_FRACTAL,
     FX_SCENE_MOD_VIZ,
+    FX_SCENE_MOD_INPUT,
     FX_SCENE_MOD_APP,
     FX_SCENE_MOD_COUNT
 };

@@ -1,0 +1,6 @@
+/* fixel — scene commands of the conic module (filled in by that module's work). */
+#include "fixel/scene.h"
+
+const fx_scene_cmd fx_scene_cmds_conic[] = {
+    {0, 0, 0, 0},
+};
