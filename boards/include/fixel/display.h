@@ -1,0 +1,134 @@
+/* fixel — real displays: DRM/KMS, fbdev and a headless memory display.
+ *
+ * A display hands the program an fx_surface to draw into and presents damage
+ * rectangles. Two presentation modes exist:
+ *
+ *  direct  the surface IS the off-screen scanout buffer (a DRM dumb buffer or
+ *          the hidden page of a panned fbdev); present flips, no copy. Before
+ *          each frame the library copies the previous frame's damage from the
+ *          front buffer so the surface always holds the last presented picture
+ *          (that copy reads scanout memory, which is uncached on some SoCs).
+ *  shadow  the surface is a back buffer in normal memory; present copies only
+ *          the damaged rows into scanout memory (rotating if asked) and then
+ *          flips or, single-buffered, just stores. Never reads scanout memory.
+ *
+ * AUTO picks direct when the device can double-buffer and no software rotation
+ * is needed, shadow otherwise; the choice and its reason are logged once.
+ *
+ * The program sees the rotated logical size: with rotation 90 or 270 a
+ * 800x480 panel is drawn as 480x800. Rotation is clockwise: the logical
+ * picture appears turned 90 degrees clockwise on the physical screen.
+ *
+ * Event loops: fx_display_fd() is the DRM fd (page-flip completion events)
+ * or -1; when it is readable call fx_display_dispatch(). fx_display_surface()
+ * waits for a pending flip itself (bounded), so a loop without poll works too.
+ *
+ * Errors are negative fixel error codes (errno values, see fixel/error.h).
+ * Diagnostics go through the log function in the options; the default writes
+ * lines prefixed "fixel: " to stderr at FX_LOG_INFO and above, and the
+ * environment variable FIXEL_LOG=debug|info|error|none changes that level.
+ */
+#ifndef FIXEL_DISPLAY_H
+#define FIXEL_DISPLAY_H
+
+#include <stdarg.h>
+#include <stdint.h>
+
+#include "fixel/surface.h"
+
+typedef struct fx_display fx_display;
+
+typedef enum fx_backend {
+    FX_BACKEND_AUTO,   /* FIXEL_BACKEND, else DRM, then fbdev, then memory */
+    FX_BACKEND_DRM,
+    FX_BACKEND_FBDEV,
+    FX_BACKEND_MEMORY,
+} fx_backend;
+
+typedef enum fx_present_mode {
+    FX_PRESENT_AUTO,   /* FIXEL_PRESENT=direct|shadow, else the rule above */
+    FX_PRESENT_DIRECT,
+    FX_PRESENT_SHADOW,
+} fx_present_mode;
+
+/* Lower is more important, as in syslog. */
+typedef enum fx_log_priority {
+    FX_LOG_ERROR = 10,
+    FX_LOG_INFO = 20,
+    FX_LOG_DEBUG = 30,
+} fx_log_priority;
+
+typedef void (*fx_log_func)(fx_log_priority priority, void *user, const char *fmt, va_list args);
+
+typedef struct fx_display_options {
+    fx_backend backend;
+    fx_present_mode present;
+    /* /dev/dri/cardN or /dev/fbN; NULL: FIXEL_DRM_DEVICE / FIXEL_FB_DEVICE,
+     * else the first card with a connected connector / /dev/fb0. */
+    const char *device;
+    const char *connector; /* DRM connector name ("HDMI-A-1"); NULL: FIXEL_CONNECTOR or first connected */
+    const char *mode;      /* "WxH" or "WxH@Hz"; NULL: FIXEL_MODE or the preferred mode */
+    fx_format format;      /* FX_FMT_XRGB8888 or FX_FMT_RGB565 for DRM; FX_FMT_COUNT = default */
+    int rotation;          /* 0, 90, 180, 270; -1 = FIXEL_ROTATION or 0 */
+    int console;           /* 1: KD_GRAPHICS + keyboard off while open (default); 0: leave the VT alone */
+    int signals;           /* 1: restore the console/CRTC on fatal and terminating signals (default) */
+    int fb_force_refresh;  /* fbdev: FB_ACTIVATE_FORCE after each present, for drivers that need it */
+    int32_t memory_w, memory_h; /* memory backend size (default 640x480) */
+    fx_log_func log;       /* NULL: the default stderr logger */
+    void *log_user;
+    int log_priority;      /* messages above this priority are dropped; 0 = default */
+} fx_display_options;
+
+/* Fill o with the defaults described above. */
+void fx_display_options_init(fx_display_options *o);
+
+/* Open a display. On failure *out is NULL and the reason has been logged. */
+int fx_display_open(fx_display **out, const fx_display_options *o);
+/* Restore the console and CRTC, free everything. NULL is accepted. */
+void fx_display_close(fx_display *d);
+
+/* The surface to draw the next frame into (logical, rotated size). Call it
+ * once per frame: in direct mode its pixels alternate between two buffers. */
+fx_surface fx_display_surface(fx_display *d);
+
+/* Show the frame. damage lists the changed logical rectangles (clipped here);
+ * n == 0 or damage == NULL means the whole surface. Returns 0 or an error. */
+int fx_display_present(fx_display *d, const fx_rect *damage, int n);
+
+/* Wait (at most timeout_ms) until the last presented frame is on screen,
+ * i.e. no flip is pending. Returns 0, or an error when the flip timed out
+ * (the display then falls back to SetCrtc presentation). */
+int fx_display_wait(fx_display *d, int timeout_ms);
+
+/* The fd to poll for flip completion (DRM), or -1 when there is none. */
+int fx_display_fd(const fx_display *d);
+/* Read and handle pending events on fx_display_fd(); never blocks. */
+int fx_display_dispatch(fx_display *d);
+/* 1 while a page flip has been queued and has not completed. */
+int fx_display_flip_pending(const fx_display *d);
+/* Called from fx_display_dispatch (or the wait in fx_display_surface) each
+ * time a flip completes. */
+void fx_display_set_flip_callback(fx_display *d, void (*cb)(fx_display *d, void *user), void *user);
+
+typedef struct fx_display_info {
+    fx_backend backend;
+    fx_present_mode present;  /* the mode in use (never AUTO) */
+    const char *device;       /* path opened, "" for memory */
+    const char *connector;    /* DRM connector name, "" otherwise */
+    int32_t width, height;    /* physical (unrotated) size */
+    int32_t refresh_mhz;      /* mode refresh in millihertz, 0 when unknown */
+    fx_format format;         /* format of scanout memory */
+    int rotation;
+    int buffers;              /* scanout buffers: 2 when flipping/panning, else 1 */
+    int dirtyfb;              /* DRM: 1 when the driver accepted DIRTYFB, 0 refused, -1 not tried */
+    uint32_t flips, fallbacks; /* page flips completed, SetCrtc used instead */
+} fx_display_info;
+
+void fx_display_get_info(const fx_display *d, fx_display_info *info);
+const char *fx_backend_name(fx_backend b);
+
+/* Log through the display's log function (used by other board modules). */
+void fx_display_log(const fx_display *d, fx_log_priority p, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+#endif

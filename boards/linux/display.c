@@ -1,0 +1,432 @@
+/* The display object: backend choice (DRM -> fbdev -> memory), presentation
+ * mode (direct or shadow), damage bookkeeping and rotation. The backends in
+ * drm.c and fbdev.c only know how to show one of their buffers. */
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE
+#endif
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "display_int.h"
+#include "fixel/error.h"
+
+/* ---- logging ----------------------------------------------------------- */
+
+static void default_log(fx_log_priority p, void *user, const char *fmt, va_list ap)
+{
+    (void)p;
+    (void)user;
+    char line[512];
+    vsnprintf(line, sizeof line, fmt, ap);
+    fprintf(stderr, "fixel: %s\n", line);
+}
+
+static int env_log_priority(void)
+{
+    const char *e = getenv("FIXEL_LOG");
+    if (!e || !*e)
+        return FX_LOG_INFO;
+    if (!strcasecmp(e, "debug"))
+        return FX_LOG_DEBUG;
+    if (!strcasecmp(e, "error"))
+        return FX_LOG_ERROR;
+    if (!strcasecmp(e, "none"))
+        return 0;
+    return FX_LOG_INFO;
+}
+
+void fx_display_logv(const fx_display *d, fx_log_priority p, const char *fmt, va_list ap)
+{
+    if ((int)p > d->log_priority)
+        return;
+    d->log(p, d->log_user, fmt, ap);
+}
+
+void fx_display_log(const fx_display *d, fx_log_priority p, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fx_display_logv(d, p, fmt, ap);
+    va_end(ap);
+}
+
+/* ---- options ----------------------------------------------------------- */
+
+void fx_display_options_init(fx_display_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->backend = FX_BACKEND_AUTO;
+    o->present = FX_PRESENT_AUTO;
+    o->format = FX_FMT_COUNT;
+    o->rotation = -1;
+    o->console = 1;
+    o->signals = 1;
+    o->memory_w = 640;
+    o->memory_h = 480;
+}
+
+const char *fx_backend_name(fx_backend b)
+{
+    switch (b) {
+    case FX_BACKEND_DRM: return "drm";
+    case FX_BACKEND_FBDEV: return "fbdev";
+    case FX_BACKEND_MEMORY: return "memory";
+    default: return "auto";
+    }
+}
+
+static int parse_backend(const char *s, fx_backend *b)
+{
+    if (!strcasecmp(s, "drm") || !strcasecmp(s, "kms"))
+        *b = FX_BACKEND_DRM;
+    else if (!strcasecmp(s, "fbdev") || !strcasecmp(s, "fb"))
+        *b = FX_BACKEND_FBDEV;
+    else if (!strcasecmp(s, "memory") || !strcasecmp(s, "headless"))
+        *b = FX_BACKEND_MEMORY;
+    else if (!strcasecmp(s, "auto") || !*s)
+        *b = FX_BACKEND_AUTO;
+    else
+        return -FX_EINVAL;
+    return 0;
+}
+
+/* ---- memory backend -------------------------------------------------- */
+
+static int mem_show(fx_display *d, int buf, const fx_rect *phys, int n)
+{
+    (void)d, (void)buf, (void)phys, (void)n;
+    return 0;
+}
+static int mem_wait(fx_display *d, int t) { (void)d, (void)t; return 0; }
+static int mem_dispatch(fx_display *d) { (void)d; return 0; }
+static int mem_fd(const fx_display *d) { (void)d; return -1; }
+static void mem_close(fx_display *d) { free(d->memory_mem); d->memory_mem = NULL; }
+
+static const struct fx_backend_ops mem_ops = {mem_show, mem_wait, mem_dispatch, mem_fd, mem_close};
+
+static int memory_open(fx_display *d)
+{
+    fx_format f = d->opt.format == FX_FMT_COUNT ? FX_FMT_XRGB8888 : d->opt.format;
+    int32_t w = d->opt.memory_w, h = d->opt.memory_h;
+    if (w <= 0 || h <= 0 || w > 16384 || h > 16384)
+        return -FX_EINVAL;
+    int32_t stride = fx_format_min_stride(f, w);
+    d->memory_mem = calloc((size_t)h, (size_t)stride);
+    if (!d->memory_mem)
+        return -FX_ENOMEM;
+    int r = fx_surface_init(&d->scan[0], d->memory_mem, w, h, stride, f);
+    if (r < 0)
+        return r;
+    d->nbuf = 1;
+    d->ops = &mem_ops;
+    d->info.width = w;
+    d->info.height = h;
+    d->info.format = f;
+    return 0;
+}
+
+/* ---- open / close ------------------------------------------------------ */
+
+static int open_backend(fx_display *d, fx_backend b)
+{
+    switch (b) {
+    case FX_BACKEND_DRM: return fx_drm_open(d);
+    case FX_BACKEND_FBDEV: return fx_fbdev_open(d);
+    default: return memory_open(d);
+    }
+}
+
+static void reset_backend(fx_display *d)
+{
+    if (d->ops)
+        d->ops->close(d);
+    d->ops = NULL;
+    d->priv = NULL;
+    memset(d->scan, 0, sizeof d->scan);
+    memset(&d->info, 0, sizeof d->info);
+    d->nbuf = 0;
+}
+
+static int choose_present(fx_display *d)
+{
+    fx_present_mode m = d->opt.present;
+    const char *why;
+    const char *env = getenv("FIXEL_PRESENT");
+    if (m == FX_PRESENT_AUTO && env && *env) {
+        if (!strcasecmp(env, "direct"))
+            m = FX_PRESENT_DIRECT;
+        else if (!strcasecmp(env, "shadow"))
+            m = FX_PRESENT_SHADOW;
+        else
+            fx_display_log(d, FX_LOG_ERROR, "FIXEL_PRESENT=%s ignored (direct or shadow)", env);
+    }
+    if (m == FX_PRESENT_DIRECT && d->opt.rotation != 0) {
+        fx_display_log(d, FX_LOG_INFO, "rotation %d needs a back buffer: shadow presentation",
+                       d->opt.rotation);
+        m = FX_PRESENT_SHADOW;
+    }
+    if (m == FX_PRESENT_AUTO) {
+        if (d->opt.rotation != 0) {
+            m = FX_PRESENT_SHADOW;
+            why = "software rotation";
+        } else if (d->nbuf < 2 && d->info.backend != FX_BACKEND_MEMORY) {
+            m = FX_PRESENT_SHADOW;
+            why = "single-buffered scanout (no tearing-free direct drawing)";
+        } else {
+            m = FX_PRESENT_DIRECT;
+            why = d->nbuf < 2 ? "memory surface" : "two scanout buffers, flip without copy";
+        }
+        fx_display_log(d, FX_LOG_DEBUG, "%s presentation: %s",
+                       m == FX_PRESENT_DIRECT ? "direct" : "shadow", why);
+    }
+    d->info.present = m;
+    if (m == FX_PRESENT_SHADOW) {
+        int32_t lw, lh;
+        fx_rotated_size(d->opt.rotation, d->info.width, d->info.height, &lw, &lh);
+        int32_t stride = fx_format_min_stride(d->info.format, lw);
+        stride = (stride + 15) & ~15;
+        d->shadow_mem = calloc((size_t)lh, (size_t)stride);
+        if (!d->shadow_mem)
+            return -FX_ENOMEM;
+        int r = fx_surface_init(&d->shadow, d->shadow_mem, lw, lh, stride, d->info.format);
+        if (r < 0)
+            return r;
+    }
+    return 0;
+}
+
+int fx_display_open(fx_display **out, const fx_display_options *opt)
+{
+    fx_display_options defaults;
+    *out = NULL;
+    if (!opt) {
+        fx_display_options_init(&defaults);
+        opt = &defaults;
+    }
+    fx_display *d = calloc(1, sizeof *d);
+    if (!d)
+        return -FX_ENOMEM;
+    d->opt = *opt;
+    d->log = opt->log ? opt->log : default_log;
+    d->log_user = opt->log_user;
+    d->log_priority = opt->log_priority ? opt->log_priority : env_log_priority();
+    d->shown = -1;
+
+    if (d->opt.rotation < 0) {
+        const char *e = getenv("FIXEL_ROTATION");
+        d->opt.rotation = e && *e ? atoi(e) : 0;
+    }
+    if (d->opt.rotation != 0 && d->opt.rotation != 90 && d->opt.rotation != 180 &&
+        d->opt.rotation != 270) {
+        fx_display_log(d, FX_LOG_ERROR, "rotation %d is not 0, 90, 180 or 270", d->opt.rotation);
+        free(d);
+        return -FX_EINVAL;
+    }
+
+    fx_backend b = d->opt.backend;
+    char reasons[256] = "";
+    const char *why = "requested by the program";
+    if (b == FX_BACKEND_AUTO) {
+        const char *e = getenv("FIXEL_BACKEND");
+        if (e && *e) {
+            if (parse_backend(e, &b) < 0) {
+                fx_display_log(d, FX_LOG_ERROR, "FIXEL_BACKEND=%s: use drm, fbdev or memory", e);
+                free(d);
+                return -FX_EINVAL;
+            }
+            why = "FIXEL_BACKEND";
+        }
+    }
+
+    int r;
+    if (b != FX_BACKEND_AUTO) {
+        d->info.backend = b;
+        r = open_backend(d, b);
+        if (r < 0) {
+            reset_backend(d);
+            free(d);
+            return r;
+        }
+    } else {
+        /* Automatic order; remember each failure for the one log line. */
+        static const fx_backend order[] = {FX_BACKEND_DRM, FX_BACKEND_FBDEV, FX_BACKEND_MEMORY};
+        r = -FX_ENODEV;
+        for (unsigned i = 0; i < sizeof order / sizeof order[0]; i++) {
+            d->info.backend = order[i];
+            r = open_backend(d, order[i]);
+            if (r >= 0)
+                break;
+            reset_backend(d);
+            size_t l = strlen(reasons);
+            snprintf(reasons + l, sizeof reasons - l, "%s%s: %s", l ? "; " : "",
+                     fx_backend_name(order[i]), fx_strerror(r));
+        }
+        if (r < 0) {
+            free(d);
+            return r;
+        }
+        why = reasons[0] ? reasons : "first in the automatic order";
+    }
+    d->info.backend = b == FX_BACKEND_AUTO ? d->info.backend : b;
+    d->info.rotation = d->opt.rotation;
+    d->info.buffers = d->nbuf;
+    d->info.device = d->device;
+    d->info.connector = d->connector;
+
+    r = choose_present(d);
+    if (r < 0) {
+        fx_display_close(d);
+        return r;
+    }
+    fx_display_log(d, FX_LOG_INFO, "%s %s%s%s %dx%d %s, %s, %d buffer%s, rotation %d (%s)",
+                   fx_backend_name(d->info.backend), d->device, d->connector[0] ? " " : "",
+                   d->connector, d->info.width, d->info.height,
+                   fx_format_get(d->info.format)->name,
+                   d->info.present == FX_PRESENT_DIRECT ? "direct" : "shadow", d->nbuf,
+                   d->nbuf == 1 ? "" : "s", d->opt.rotation, why);
+
+    if (d->info.backend != FX_BACKEND_MEMORY && d->opt.console) {
+        r = fx_vt_enter(d, &d->vt);
+        if (r < 0)
+            d->vt = NULL; /* logged; a display without a VT (ssh, serial) still works */
+    }
+    if (d->opt.signals && d->info.backend != FX_BACKEND_MEMORY)
+        fx_signals_register(d);
+    *out = d;
+    return 0;
+}
+
+void fx_display_close(fx_display *d)
+{
+    if (!d)
+        return;
+    if (d->ops && d->flip_pending)
+        d->ops->wait(d, 200);
+    if (d->opt.signals && d->info.backend != FX_BACKEND_MEMORY)
+        fx_signals_unregister(d);
+    if (d->ops)
+        d->ops->close(d);
+    if (d->vt)
+        fx_vt_leave(d->vt);
+    free(d->shadow_mem);
+    free(d);
+}
+
+/* ---- frames ------------------------------------------------------------ */
+
+void fx_display_flip_done(fx_display *d)
+{
+    d->flip_pending = 0;
+    d->info.flips++;
+    if (d->flip_cb)
+        d->flip_cb(d, d->flip_user);
+}
+
+static void wait_flip(fx_display *d)
+{
+    if (d->flip_pending)
+        d->ops->wait(d, 1000);
+}
+
+fx_surface fx_display_surface(fx_display *d)
+{
+    if (d->info.present == FX_PRESENT_SHADOW)
+        return d->shadow;
+    wait_flip(d);
+    if (d->repair && d->nbuf == 2) {
+        /* The back buffer holds the frame before last: bring it up to the
+         * picture on screen by copying what the last frame changed. */
+        for (int i = 0; i < d->prev.n; i++)
+            fx_copy_rotated(&d->scan[d->back], &d->scan[d->back ^ 1], d->prev.r[i], 0);
+    }
+    d->repair = 0;
+    return d->scan[d->nbuf == 2 ? d->back : 0];
+}
+
+int fx_display_present(fx_display *d, const fx_rect *damage, int n)
+{
+    fx_damage cur;
+    fx_rect bounds = {0, 0, 0, 0};
+    fx_rect phys[FX_DAMAGE_MAX];
+    int r;
+
+    if (d->info.present == FX_PRESENT_SHADOW) {
+        bounds.x1 = d->shadow.w;
+        bounds.y1 = d->shadow.h;
+    } else {
+        bounds.x1 = d->info.width;
+        bounds.y1 = d->info.height;
+    }
+    fx_damage_reset(&cur);
+    if (!damage || n <= 0)
+        fx_damage_add(&cur, bounds, bounds);
+    else
+        for (int i = 0; i < n; i++)
+            fx_damage_add(&cur, damage[i], bounds);
+    if (cur.n == 0)
+        return 0;
+
+    wait_flip(d);
+    int target = d->nbuf == 2 ? d->back : 0;
+    if (d->info.present == FX_PRESENT_SHADOW) {
+        /* A flipped-to buffer last received the frame before the previous
+         * one: it needs this frame's damage and the previous frame's. */
+        fx_damage todo = cur;
+        if (d->nbuf == 2) {
+            if (d->shown < 0)
+                fx_damage_add(&todo, bounds, bounds);
+            for (int i = 0; i < d->prev.n; i++)
+                fx_damage_add(&todo, d->prev.r[i], bounds);
+        }
+        for (int i = 0; i < todo.n; i++)
+            fx_copy_rotated(&d->scan[target], &d->shadow, todo.r[i], d->opt.rotation);
+    }
+    for (int i = 0; i < cur.n; i++)
+        phys[i] = fx_rect_rotate(cur.r[i], d->opt.rotation, d->info.width, d->info.height);
+    r = d->ops->show(d, target, phys, cur.n);
+    if (r < 0)
+        return r;
+    d->shown = target;
+    if (d->nbuf == 2) {
+        d->back ^= 1;
+        d->repair = d->info.present == FX_PRESENT_DIRECT;
+    }
+    d->prev = cur;
+    return 0;
+}
+
+/* ---- event-loop plumbing ------------------------------------------------ */
+
+int fx_display_fd(const fx_display *d)
+{
+    return d->ops->fd(d);
+}
+
+int fx_display_dispatch(fx_display *d)
+{
+    return d->ops->dispatch(d);
+}
+
+int fx_display_wait(fx_display *d, int timeout_ms)
+{
+    return d->flip_pending ? d->ops->wait(d, timeout_ms) : 0;
+}
+
+int fx_display_flip_pending(const fx_display *d)
+{
+    return d->flip_pending;
+}
+
+void fx_display_set_flip_callback(fx_display *d, void (*cb)(fx_display *, void *), void *user)
+{
+    d->flip_cb = cb;
+    d->flip_user = user;
+}
+
+void fx_display_get_info(const fx_display *d, fx_display_info *info)
+{
+    *info = d->info;
+}

@@ -1,0 +1,135 @@
+/* Internal to boards/linux: the display object shared by display.c, drm.c,
+ * fbdev.c and vt.c, and the pure helpers of present.c (which tests/core
+ * exercises through this header, libevdev style). Not installed. */
+#ifndef FIXEL_DISPLAY_INT_H
+#define FIXEL_DISPLAY_INT_H
+
+#include <stdint.h>
+
+#include "fixel/display.h"
+#include "fixel/surface.h"
+
+/* ---- pure helpers (present.c: no OS headers, no allocation) ---- */
+
+/* fbdev pixel layout as FBIOGET_VSCREENINFO reports it, reduced to the
+ * fields that decide the format. */
+typedef struct fx_fb_bitfields {
+    uint32_t bits_per_pixel;
+    uint32_t grayscale;        /* 1 = gray, 0 = colour (fourcc values are not handled) */
+    uint32_t red_offset, red_length;
+    uint32_t green_offset, green_length;
+    uint32_t blue_offset, blue_length;
+    uint32_t transp_offset, transp_length;
+    int mono_inverted;         /* FB_VISUAL_MONO01: a set bit is black */
+} fx_fb_bitfields;
+
+/* The fixel format matching the layout, or FX_FMT_COUNT when none does. */
+fx_format fx_fb_format_from_bitfields(const fx_fb_bitfields *b);
+
+/* "WxH" or "WxH@Hz" (decimal, no spaces). hz is 0 when absent. Returns 0 or
+ * -FX_EINVAL. */
+int fx_mode_parse(const char *s, int32_t *w, int32_t *h, int32_t *hz);
+
+/* A damage list: at most FX_DAMAGE_MAX pairwise non-intersecting rectangles
+ * whose union covers every rectangle added since the last reset. Rectangles
+ * that overlap are merged, and so are neighbours whose union costs no more
+ * pixels than the two apart; when the list is full the pair whose merge adds
+ * the fewest pixels is merged. */
+#define FX_DAMAGE_MAX 8
+typedef struct fx_damage {
+    fx_rect r[FX_DAMAGE_MAX];
+    int n;
+} fx_damage;
+
+void fx_damage_reset(fx_damage *d);
+/* Adds r clipped to bounds (empty results are ignored). */
+void fx_damage_add(fx_damage *d, fx_rect r, fx_rect bounds);
+int64_t fx_damage_area(const fx_damage *d);
+
+/* Physical size of a logical w x h surface under rotation, and back: 90 and
+ * 270 swap the sides. */
+void fx_rotated_size(int rotation, int32_t w, int32_t h, int32_t *rw, int32_t *rh);
+
+/* The physical rectangle covered by logical rectangle r; phys_w/phys_h are the
+ * physical surface's size. Mapping of a logical pixel (x, y), W x H physical:
+ *    0: (x, y)          90: (W-1-y, x)
+ *  180: (W-1-x, H-1-y) 270: (y, H-1-x)                                    */
+fx_rect fx_rect_rotate(fx_rect r, int rotation, int32_t phys_w, int32_t phys_h);
+
+/* Copy logical rectangle r of src into dst under rotation. src and dst have
+ * the same format; dst is the physical surface (sides swapped for 90/270);
+ * r must lie inside src. Every format is supported, MONO1 included. */
+void fx_copy_rotated(const fx_surface *dst, const fx_surface *src, fx_rect r, int rotation);
+
+/* ---- the display object ---- */
+
+struct fx_backend_ops {
+    /* Make buffer buf visible; phys lists its changed physical rectangles. */
+    int (*show)(fx_display *d, int buf, const fx_rect *phys, int n);
+    /* Wait up to timeout_ms for a queued flip; 0 when none is pending. */
+    int (*wait)(fx_display *d, int timeout_ms);
+    int (*dispatch)(fx_display *d);
+    int (*fd)(const fx_display *d);
+    void (*close)(fx_display *d);
+};
+
+typedef struct fx_vt fx_vt;
+
+struct fx_display {
+    fx_display_options opt;
+    fx_log_func log;
+    void *log_user;
+    int log_priority;
+
+    const struct fx_backend_ops *ops;
+    void *priv;
+    fx_display_info info;
+    char device[64];
+    char connector[32];
+
+    fx_surface scan[2];     /* scanout buffers (physical size) */
+    int nbuf;
+    int back;               /* index of the off-screen buffer */
+    int shown;              /* index on screen, -1 before the first present */
+    int flip_pending;
+    int repair;             /* direct mode: copy prev damage front->back before drawing */
+    fx_damage prev;         /* logical damage of the last presented frame */
+
+    fx_surface shadow;      /* shadow mode: logical back buffer */
+    void *shadow_mem;
+    void *memory_mem;       /* memory backend's buffer */
+
+    void (*flip_cb)(fx_display *d, void *user);
+    void *flip_user;
+
+    fx_vt *vt;
+};
+
+void fx_display_logv(const fx_display *d, fx_log_priority p, const char *fmt, va_list ap);
+/* Called by backends when a flip completes. */
+void fx_display_flip_done(fx_display *d);
+
+/* Backends: fill d->scan[], d->nbuf, d->info and d->ops, or fail with a
+ * logged reason. */
+int fx_drm_open(fx_display *d);
+int fx_fbdev_open(fx_display *d);
+
+/* For the emergency (signal) path: restore what the backend changed using
+ * only async-signal-safe calls. */
+void fx_drm_emergency_restore(void *priv);
+
+/* Console: switch to graphics and mute the keyboard; restore. */
+int fx_vt_enter(fx_display *d, fx_vt **out);
+void fx_vt_leave(fx_vt *vt);
+
+/* Fatal/terminating-signal restoration: each open display registers its
+ * backend restore and console. */
+void fx_signals_register(fx_display *d);
+void fx_signals_unregister(fx_display *d);
+/* The emergency path for one display (async-signal-safe). */
+void fx_vt_emergency_restore(fx_vt *vt);
+
+/* When open() on path fails with EACCES, name the group that owns the node. */
+void fx_log_access_hint(const fx_display *d, const char *path);
+
+#endif

@@ -1,0 +1,565 @@
+/* DRM/KMS backend: one connector, one CRTC, two dumb buffers flipped with
+ * vblank events. Falls back to SetCrtc where flips are refused, calls
+ * DIRTYFB for drivers that need it (SPI/MIPI-DBI panels) and restores the
+ * CRTC it found on close, or from the emergency path on a fatal signal. */
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE
+#endif
+#include <errno.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/ioctl.h>
+#include <sys/mman.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <drm_fourcc.h>
+#include <xf86drm.h>
+#include <xf86drmMode.h>
+
+#include "display_int.h"
+#include "fixel/error.h"
+
+struct drm_buf {
+    uint32_t handle, fb_id, pitch;
+    uint64_t size;
+    void *map;
+};
+
+struct drm_priv {
+    int fd;
+    uint32_t conn_id, crtc_id;
+    drmModeModeInfo mode;
+    drmModeCrtcPtr saved;
+    struct drm_buf buf[2];
+    int nbuf;
+    int flip_ok;
+    int dirty;                       /* -1 untried, 0 refused, 1 accepted */
+    /* Pre-built for the signal path, which may not allocate. */
+    struct drm_mode_crtc emergency;
+    uint32_t emergency_conn;
+};
+
+static int neg_errno(void)
+{
+    return errno ? -errno : -FX_EIO;
+}
+
+/* ---- choosing card, connector, mode, CRTC ------------------------------- */
+
+static void connector_name(const drmModeConnector *c, char *out, size_t n)
+{
+    const char *t = drmModeGetConnectorTypeName(c->connector_type);
+    snprintf(out, n, "%s-%u", t ? t : "Unknown", c->connector_type_id);
+}
+
+static drmModeConnectorPtr pick_connector(fx_display *d, int fd, drmModeResPtr res, const char *want)
+{
+    for (int i = 0; i < res->count_connectors; i++) {
+        drmModeConnectorPtr c = drmModeGetConnector(fd, res->connectors[i]);
+        if (!c)
+            continue;
+        char name[32];
+        connector_name(c, name, sizeof name);
+        int ok = want ? !strcmp(name, want) : c->connection == DRM_MODE_CONNECTED && c->count_modes > 0;
+        if (ok && c->count_modes > 0) {
+            snprintf(d->connector, sizeof d->connector, "%s", name);
+            return c;
+        }
+        drmModeFreeConnector(c);
+    }
+    return NULL;
+}
+
+static int pick_mode(fx_display *d, drmModeConnectorPtr c, drmModeModeInfo *out)
+{
+    const char *want = d->opt.mode ? d->opt.mode : getenv("FIXEL_MODE");
+    if (want && *want) {
+        int32_t w, h, hz;
+        if (fx_mode_parse(want, &w, &h, &hz) < 0) {
+            fx_display_log(d, FX_LOG_ERROR, "mode '%s' is not WxH or WxH@Hz", want);
+            return -FX_EINVAL;
+        }
+        for (int i = 0; i < c->count_modes; i++) {
+            const drmModeModeInfo *m = &c->modes[i];
+            if (m->hdisplay == w && m->vdisplay == h && (!hz || (int32_t)m->vrefresh == hz)) {
+                *out = *m;
+                return 0;
+            }
+        }
+        fx_display_log(d, FX_LOG_ERROR, "connector %s has no mode %s", d->connector, want);
+        return -FX_ENOENT;
+    }
+    for (int i = 0; i < c->count_modes; i++)
+        if (c->modes[i].type & DRM_MODE_TYPE_PREFERRED) {
+            *out = c->modes[i];
+            return 0;
+        }
+    *out = c->modes[0];
+    return 0;
+}
+
+static uint32_t pick_crtc(int fd, drmModeResPtr res, drmModeConnectorPtr c, int *index)
+{
+    /* Keep the CRTC already driving this connector: no needless re-route. */
+    if (c->encoder_id) {
+        drmModeEncoderPtr e = drmModeGetEncoder(fd, c->encoder_id);
+        if (e) {
+            uint32_t id = e->crtc_id;
+            drmModeFreeEncoder(e);
+            for (int i = 0; id && i < res->count_crtcs; i++)
+                if (res->crtcs[i] == id) {
+                    *index = i;
+                    return id;
+                }
+        }
+    }
+    for (int k = 0; k < c->count_encoders; k++) {
+        drmModeEncoderPtr e = drmModeGetEncoder(fd, c->encoders[k]);
+        if (!e)
+            continue;
+        uint32_t possible = e->possible_crtcs;
+        drmModeFreeEncoder(e);
+        for (int i = 0; i < res->count_crtcs; i++)
+            if (possible & (1u << i)) {
+                *index = i;
+                return res->crtcs[i];
+            }
+    }
+    return 0;
+}
+
+/* Does the primary plane of CRTC index ci scan out fourcc? 1 yes, 0 no,
+ * -1 unknown (no plane API): callers then just try. */
+static int plane_supports(int fd, int ci, uint32_t fourcc)
+{
+    drmModePlaneResPtr pr = drmModeGetPlaneResources(fd);
+    int result = -1;
+    if (!pr)
+        return -1;
+    for (uint32_t i = 0; i < pr->count_planes && result != 1; i++) {
+        drmModePlanePtr p = drmModeGetPlane(fd, pr->planes[i]);
+        if (!p)
+            continue;
+        if (p->possible_crtcs & (1u << ci)) {
+            int primary = 0;
+            drmModeObjectPropertiesPtr props =
+                drmModeObjectGetProperties(fd, p->plane_id, DRM_MODE_OBJECT_PLANE);
+            for (uint32_t k = 0; props && k < props->count_props; k++) {
+                drmModePropertyPtr prop = drmModeGetProperty(fd, props->props[k]);
+                if (prop && !strcmp(prop->name, "type") &&
+                    props->prop_values[k] == DRM_PLANE_TYPE_PRIMARY)
+                    primary = 1;
+                drmModeFreeProperty(prop);
+            }
+            drmModeFreeObjectProperties(props);
+            if (primary) {
+                result = 0;
+                for (uint32_t f = 0; f < p->count_formats; f++)
+                    if (p->formats[f] == fourcc)
+                        result = 1;
+            }
+        }
+        drmModeFreePlane(p);
+    }
+    drmModeFreePlaneResources(pr);
+    return result;
+}
+
+/* ---- buffers ------------------------------------------------------------ */
+
+static int create_buf(int fd, struct drm_buf *b, uint32_t w, uint32_t h, uint32_t fourcc, int bpp)
+{
+    struct drm_mode_create_dumb cr = {.width = w, .height = h, .bpp = (uint32_t)bpp};
+    struct drm_mode_map_dumb mr = {0};
+    uint32_t handles[4] = {0}, pitches[4] = {0}, offsets[4] = {0};
+
+    if (drmIoctl(fd, DRM_IOCTL_MODE_CREATE_DUMB, &cr) < 0)
+        return neg_errno();
+    b->handle = cr.handle;
+    b->pitch = cr.pitch;
+    b->size = cr.size;
+    handles[0] = cr.handle;
+    pitches[0] = cr.pitch;
+    if (drmModeAddFB2(fd, w, h, fourcc, handles, pitches, offsets, &b->fb_id, 0) < 0)
+        return neg_errno();
+    mr.handle = cr.handle;
+    if (drmIoctl(fd, DRM_IOCTL_MODE_MAP_DUMB, &mr) < 0)
+        return neg_errno();
+    b->map = mmap(NULL, (size_t)cr.size, PROT_READ | PROT_WRITE, MAP_SHARED, fd, (off_t)mr.offset);
+    if (b->map == MAP_FAILED) {
+        b->map = NULL;
+        return neg_errno();
+    }
+    memset(b->map, 0, (size_t)cr.size);
+    return 0;
+}
+
+static void destroy_buf(int fd, struct drm_buf *b)
+{
+    if (b->map)
+        munmap(b->map, (size_t)b->size);
+    if (b->fb_id)
+        drmModeRmFB(fd, b->fb_id);
+    if (b->handle) {
+        struct drm_mode_destroy_dumb dr = {.handle = b->handle};
+        drmIoctl(fd, DRM_IOCTL_MODE_DESTROY_DUMB, &dr);
+    }
+    memset(b, 0, sizeof *b);
+}
+
+/* ---- ops ---------------------------------------------------------------- */
+
+static void on_flip(int fd, unsigned seq, unsigned sec, unsigned usec, void *data)
+{
+    (void)fd, (void)seq, (void)sec, (void)usec;
+    fx_display_flip_done(data);
+}
+
+static int drm_dispatch(fx_display *d)
+{
+    struct drm_priv *p = d->priv;
+    struct pollfd pfd = {.fd = p->fd, .events = POLLIN};
+    drmEventContext ev = {.version = 2, .page_flip_handler = on_flip};
+    /* drmHandleEvent reads, which would block on an empty queue. */
+    if (poll(&pfd, 1, 0) <= 0)
+        return 0;
+    if (drmHandleEvent(p->fd, &ev) < 0)
+        return neg_errno();
+    return 0;
+}
+
+static int64_t now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (int64_t)t.tv_sec * 1000 + t.tv_nsec / 1000000;
+}
+
+static int drm_wait(fx_display *d, int timeout_ms)
+{
+    struct drm_priv *p = d->priv;
+    int64_t end = now_ms() + timeout_ms;
+    while (d->flip_pending) {
+        int64_t left = end - now_ms();
+        struct pollfd pfd = {.fd = p->fd, .events = POLLIN};
+        int r = left > 0 ? poll(&pfd, 1, (int)left) : 0;
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r <= 0) {
+            /* A flip that never completes would freeze every later frame;
+             * give up on flips for good and present with SetCrtc. */
+            fx_display_log(d, FX_LOG_ERROR,
+                           "page flip did not complete within %d ms; presenting with SetCrtc",
+                           timeout_ms);
+            d->flip_pending = 0;
+            p->flip_ok = 0;
+            return -FX_EIO;
+        }
+        int e = drm_dispatch(d);
+        if (e < 0)
+            return e;
+    }
+    return 0;
+}
+
+static int drm_fd(const fx_display *d)
+{
+    const struct drm_priv *p = d->priv;
+    return p->fd;
+}
+
+static int set_crtc(struct drm_priv *p, int buf)
+{
+    return drmModeSetCrtc(p->fd, p->crtc_id, p->buf[buf].fb_id, 0, 0, &p->conn_id, 1, &p->mode);
+}
+
+static int drm_show(fx_display *d, int buf, const fx_rect *phys, int n)
+{
+    struct drm_priv *p = d->priv;
+    int r;
+
+    if (p->dirty != 0 && n > 0) {
+        drmModeClip clips[FX_DAMAGE_MAX];
+        for (int i = 0; i < n && i < FX_DAMAGE_MAX; i++) {
+            clips[i].x1 = (uint16_t)phys[i].x0;
+            clips[i].y1 = (uint16_t)phys[i].y0;
+            clips[i].x2 = (uint16_t)phys[i].x1;
+            clips[i].y2 = (uint16_t)phys[i].y1;
+        }
+        r = drmModeDirtyFB(p->fd, p->buf[buf].fb_id, clips, (uint32_t)(n < FX_DAMAGE_MAX ? n : FX_DAMAGE_MAX));
+        if (r == 0) {
+            p->dirty = 1;
+        } else {
+            /* Most drivers scan out memory directly and have no dirty hook
+             * (ENOSYS); any refusal just means they do not need it. */
+            fx_display_log(d, FX_LOG_DEBUG, "driver refused DIRTYFB (%s); not calling it again",
+                           strerror(-r));
+            p->dirty = 0;
+        }
+        d->info.dirtyfb = p->dirty;
+    }
+    if (buf == d->shown)
+        return 0; /* single buffer: the store (and DIRTYFB) was the present */
+
+    if (p->flip_ok) {
+        r = drmModePageFlip(p->fd, p->crtc_id, p->buf[buf].fb_id, DRM_MODE_PAGE_FLIP_EVENT, d);
+        if (r == 0) {
+            d->flip_pending = 1;
+            return 0;
+        }
+        if (r == -EACCES || r == -EPERM) {
+            fx_display_log(d, FX_LOG_ERROR, "page flip refused: lost DRM master (%s)", strerror(-r));
+            return r;
+        }
+        fx_display_log(d, FX_LOG_INFO, "page flip not available (%s); presenting with SetCrtc",
+                       strerror(-r));
+        p->flip_ok = 0;
+    }
+    r = set_crtc(p, buf);
+    if (r < 0) {
+        fx_display_log(d, FX_LOG_ERROR, "SetCrtc failed: %s", strerror(errno));
+        return neg_errno();
+    }
+    d->info.fallbacks++;
+    if (d->flip_cb)
+        d->flip_cb(d, d->flip_user);
+    return 0;
+}
+
+static void drm_close(fx_display *d)
+{
+    struct drm_priv *p = d->priv;
+    if (!p)
+        return;
+    if (p->saved) {
+        /* Give the screen back as found (fbcon, a splash, another mode). */
+        if (p->saved->mode_valid && p->saved->buffer_id)
+            drmModeSetCrtc(p->fd, p->crtc_id, p->saved->buffer_id, p->saved->x, p->saved->y,
+                           &p->conn_id, 1, &p->saved->mode);
+        else
+            drmModeSetCrtc(p->fd, p->crtc_id, 0, 0, 0, NULL, 0, NULL);
+        drmModeFreeCrtc(p->saved);
+    }
+    for (int i = 0; i < 2; i++)
+        destroy_buf(p->fd, &p->buf[i]);
+    if (p->fd >= 0) {
+        drmDropMaster(p->fd);
+        close(p->fd);
+    }
+    free(p);
+    d->priv = NULL;
+}
+
+void fx_drm_emergency_restore(void *priv)
+{
+    struct drm_priv *p = priv;
+    if (p && p->fd >= 0 && p->emergency.crtc_id)
+        ioctl(p->fd, DRM_IOCTL_MODE_SETCRTC, &p->emergency);
+}
+
+static const struct fx_backend_ops drm_ops = {drm_show, drm_wait, drm_dispatch, drm_fd, drm_close};
+
+/* ---- open --------------------------------------------------------------- */
+
+static int card_has_connected(int fd)
+{
+    drmModeResPtr res = drmModeGetResources(fd);
+    int found = 0;
+    for (int i = 0; res && i < res->count_connectors && !found; i++) {
+        drmModeConnectorPtr c = drmModeGetConnector(fd, res->connectors[i]);
+        if (c && c->connection == DRM_MODE_CONNECTED && c->count_modes > 0)
+            found = 1;
+        drmModeFreeConnector(c);
+    }
+    drmModeFreeResources(res);
+    return found;
+}
+
+static int open_card(fx_display *d, const char *path, int quiet_enoent)
+{
+    int fd = open(path, O_RDWR | O_CLOEXEC);
+    if (fd < 0) {
+        int e = errno;
+        if (e == EACCES || e == EPERM)
+            fx_log_access_hint(d, path);
+        else if (!(quiet_enoent && e == ENOENT))
+            fx_display_log(d, FX_LOG_DEBUG, "%s: %s", path, strerror(e));
+        return -e;
+    }
+    return fd;
+}
+
+static int find_card(fx_display *d, int *fd_out)
+{
+    const char *want = d->opt.device;
+    if (want && !strstr(want, "/dri/"))
+        want = NULL; /* a /dev/fbN device is for the fbdev backend */
+    if (!want)
+        want = getenv("FIXEL_DRM_DEVICE");
+    if (want && *want) {
+        int fd = open_card(d, want, 0);
+        if (fd < 0)
+            return fd;
+        snprintf(d->device, sizeof d->device, "%s", want);
+        *fd_out = fd;
+        return 0;
+    }
+    int err = -FX_ENODEV;
+    for (int i = 0; i < 16; i++) {
+        char path[32];
+        snprintf(path, sizeof path, "/dev/dri/card%d", i);
+        int fd = open_card(d, path, 1);
+        if (fd < 0) {
+            if (fd != -ENOENT)
+                err = fd;
+            continue;
+        }
+        if (card_has_connected(fd)) {
+            snprintf(d->device, sizeof d->device, "%s", path);
+            *fd_out = fd;
+            return 0;
+        }
+        close(fd);
+    }
+    return err;
+}
+
+int fx_drm_open(fx_display *d)
+{
+    int fd = -1, r, ci = 0;
+    r = find_card(d, &fd);
+    if (r < 0)
+        return r;
+
+    struct drm_priv *p = calloc(1, sizeof *p);
+    if (!p) {
+        close(fd);
+        return -FX_ENOMEM;
+    }
+    p->fd = fd;
+    p->dirty = -1;
+    p->flip_ok = 1;
+    d->priv = p;
+    d->ops = &drm_ops;
+    d->info.dirtyfb = -1;
+
+    uint64_t cap = 0;
+    if (drmGetCap(fd, DRM_CAP_DUMB_BUFFER, &cap) < 0 || !cap) {
+        fx_display_log(d, FX_LOG_ERROR, "%s has no dumb buffers", d->device);
+        return -FX_ENOTSUP;
+    }
+    drmSetClientCap(fd, DRM_CLIENT_CAP_UNIVERSAL_PLANES, 1);
+
+    /* The first opener becomes master by itself; otherwise try to take it.
+     * Failure means a desktop, another fixel program or a logind session
+     * owns the display. */
+    if (!drmIsMaster(fd) && drmSetMaster(fd) != 0) {
+        fx_display_log(d, FX_LOG_ERROR,
+                       "%s: another process holds DRM master (a desktop session or another "
+                       "graphics program): stop it, or use the fbdev backend (FIXEL_BACKEND=fbdev)",
+                       d->device);
+        return -FX_EBUSY;
+    }
+
+    drmModeResPtr res = drmModeGetResources(fd);
+    if (!res) {
+        fx_display_log(d, FX_LOG_ERROR, "%s: cannot read KMS resources: %s", d->device, strerror(errno));
+        return neg_errno();
+    }
+    const char *want = d->opt.connector ? d->opt.connector : getenv("FIXEL_CONNECTOR");
+    if (want && !*want)
+        want = NULL;
+    drmModeConnectorPtr c = pick_connector(d, fd, res, want);
+    if (!c) {
+        fx_display_log(d, FX_LOG_ERROR, "%s: %s%s", d->device,
+                       want ? "no connector named " : "no connected connector", want ? want : "");
+        drmModeFreeResources(res);
+        return -FX_ENODEV;
+    }
+    p->conn_id = c->connector_id;
+    r = pick_mode(d, c, &p->mode);
+    if (r == 0) {
+        p->crtc_id = pick_crtc(fd, res, c, &ci);
+        if (!p->crtc_id) {
+            fx_display_log(d, FX_LOG_ERROR, "%s: no CRTC can drive %s", d->device, d->connector);
+            r = -FX_ENODEV;
+        }
+    }
+    drmModeFreeConnector(c);
+    drmModeFreeResources(res);
+    if (r < 0)
+        return r;
+
+    fx_format f = d->opt.format == FX_FMT_COUNT ? FX_FMT_XRGB8888 : d->opt.format;
+    if (f != FX_FMT_XRGB8888 && f != FX_FMT_RGB565) {
+        fx_display_log(d, FX_LOG_ERROR, "DRM backend draws XRGB8888 or RGB565, not %s",
+                       fx_format_get(f)->name);
+        return -FX_ENOTSUP;
+    }
+    if (plane_supports(fd, ci, fx_format_get(f)->drm_fourcc) == 0) {
+        fx_format other = f == FX_FMT_XRGB8888 ? FX_FMT_RGB565 : FX_FMT_XRGB8888;
+        if (plane_supports(fd, ci, fx_format_get(other)->drm_fourcc) != 1) {
+            fx_display_log(d, FX_LOG_ERROR, "%s: primary plane takes neither XRGB8888 nor RGB565",
+                           d->device);
+            return -FX_ENOTSUP;
+        }
+        fx_display_log(d, FX_LOG_INFO, "primary plane has no %s; using %s",
+                       fx_format_get(f)->name, fx_format_get(other)->name);
+        f = other;
+    }
+    const fx_format_info *fi = fx_format_get(f);
+    uint32_t w = p->mode.hdisplay, h = p->mode.vdisplay;
+
+    for (int i = 0; i < 2; i++) {
+        r = create_buf(fd, &p->buf[i], w, h, fi->drm_fourcc, fi->bits_per_pixel);
+        if (r < 0) {
+            if (i == 1) {
+                /* Tiny-VRAM devices: one buffer still works, shadowed. */
+                fx_display_log(d, FX_LOG_INFO, "second dumb buffer failed (%s); single-buffered",
+                               strerror(-r));
+                destroy_buf(fd, &p->buf[1]);
+                break;
+            }
+            fx_display_log(d, FX_LOG_ERROR, "%s: dumb buffer %ux%u: %s", d->device, w, h, strerror(-r));
+            return r;
+        }
+        fx_surface_init(&d->scan[i], p->buf[i].map, (int32_t)w, (int32_t)h, (int32_t)p->buf[i].pitch, f);
+        p->nbuf = i + 1;
+    }
+
+    p->saved = drmModeGetCrtc(fd, p->crtc_id);
+    if (p->saved) {
+        p->emergency.crtc_id = p->crtc_id;
+        p->emergency_conn = p->conn_id;
+        if (p->saved->mode_valid && p->saved->buffer_id) {
+            p->emergency.fb_id = p->saved->buffer_id;
+            p->emergency.x = p->saved->x;
+            p->emergency.y = p->saved->y;
+            p->emergency.set_connectors_ptr = (uint64_t)(uintptr_t)&p->emergency_conn;
+            p->emergency.count_connectors = 1;
+            p->emergency.mode_valid = 1;
+            memcpy(&p->emergency.mode, &p->saved->mode, sizeof p->emergency.mode);
+        }
+    }
+
+    if (set_crtc(p, 0) < 0) {
+        int e = errno;
+        fx_display_log(d, FX_LOG_ERROR, "%s: modeset %ux%u on %s failed: %s", d->device, w, h,
+                       d->connector, strerror(e));
+        return -e;
+    }
+    d->nbuf = p->nbuf;
+    d->shown = 0;
+    d->back = p->nbuf == 2 ? 1 : 0;
+    d->info.width = (int32_t)w;
+    d->info.height = (int32_t)h;
+    d->info.format = f;
+    int64_t frame = (int64_t)p->mode.htotal * p->mode.vtotal; /* pixels per frame */
+    if (frame > 0) /* clock is in kHz */
+        d->info.refresh_mhz = (int32_t)((int64_t)p->mode.clock * 1000000 / frame);
+    return 0;
+}

@@ -1,0 +1,38 @@
+#!/bin/sh
+# Installs what the qemu kernel rig needs on a Debian 12 host (run as root;
+# CI runs it through `make deps-kernel`). Each step is skipped when already done
+# so a warm machine pays only the dpkg queries.
+set -eu
+APT="apt-get -o DPkg::Lock::Timeout=300 -y -q --no-install-recommends"
+export DEBIAN_FRONTEND=noninteractive
+
+if [ "$(id -u)" != 0 ]; then
+    echo "deps.sh: must run as root (apt-get install)" >&2
+    exit 1
+fi
+
+need=""
+for p in qemu-system-x86 qemu-system-arm busybox-static cpio kmod xz-utils make gcc \
+         libdrm-dev libevdev-dev libgpiod-dev gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
+         python3 bc; do
+    dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed' || need="$need $p"
+done
+
+# arm64 guest programs link the arm64 static libdrm/libevdev/libgpiod.
+if ! dpkg --print-foreign-architectures | grep -qx arm64; then
+    dpkg --add-architecture arm64
+    updated=no
+else
+    updated=yes
+fi
+for p in libdrm-dev:arm64 libevdev-dev:arm64 libgpiod-dev:arm64; do
+    dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed' || need="$need $p"
+done
+
+if [ -n "$need" ] || [ "$updated" = no ]; then
+    $APT update >/dev/null
+    if [ -n "$need" ]; then
+        echo "deps.sh: installing$need"
+        $APT install $need >/dev/null
+    fi
+fi

@@ -1,0 +1,48 @@
+/* Helpers for programs that run inside the qemu guest (see ../README.md for
+ * the marker protocol). Header-only so each guest program stays one .c file. */
+#ifndef FIXEL_GUEST_H
+#define FIXEL_GUEST_H
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+static int guest_failed;
+
+/* CHECK <name> PASS|FAIL <detail>: one result line for the host. */
+static void guest_check(const char *name, int ok, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4), unused));
+static void guest_check(const char *name, int ok, const char *fmt, ...)
+{
+    char detail[400];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(detail, sizeof detail, fmt, ap);
+    va_end(ap);
+    if (!ok)
+        guest_failed = 1;
+    printf("CHECK %s %s %s\n", name, ok ? "PASS" : "FAIL", detail);
+    fflush(stdout);
+}
+
+/* Send a request marker and wait for the host's "ACK <word>" line on
+ * stdin; returns 1 when the word is PASS or OK. */
+static int guest_request(const char *fmt, ...) __attribute__((format(printf, 1, 2), unused));
+static int guest_request(const char *fmt, ...)
+{
+    char line[256];
+    va_list ap;
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+    printf("\n");
+    fflush(stdout);
+    while (fgets(line, sizeof line, stdin)) {
+        if (!strncmp(line, "ACK ", 4))
+            return !strncmp(line + 4, "PASS", 4) || !strncmp(line + 4, "OK", 2);
+    }
+    return 0;
+}
+
+#endif

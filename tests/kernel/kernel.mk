@@ -1,0 +1,49 @@
+# The qemu real-kernel rig (tests/kernel/README.md). Included by the top
+# Makefile; `make test-kernel` runs it. Guest programs are every
+# tests/kernel/guest/*.c, linked statically for x86_64 and aarch64 against
+# the library sources compiled here per architecture.
+
+KT_DIR   := tests/kernel
+KT_CACHE ?= $(KT_DIR)/cache
+KT_BUILD := build/kernel
+KT_ARCHES := x86_64 aarch64
+KT_CC_x86_64  := gcc
+KT_CC_aarch64 := aarch64-linux-gnu-gcc
+KT_LIBSRC := $(wildcard kernel-free-src/*.c) $(wildcard boards/linux/*.c)
+KT_GUESTSRC := $(wildcard $(KT_DIR)/guest/*.c)
+# No -Werror here: the main build enforces it, and a cross compiler's extra
+# warning must not stop the rig.
+KT_CFLAGS := -std=c11 -O2 -g0 -Wall -Wextra \
+	-Ikernel-free-src/include -Iboards/include -Ikernel-free-src -I$(KT_DIR)/guest \
+	-I/usr/include/libdrm -I/usr/include/libevdev-1.0
+KT_LDLIBS := -static -ldrm -levdev -lgpiod
+
+# Installs qemu, cross compiler, arm64 -dev packages (root; no-op when present).
+$(KT_BUILD)/deps.stamp: $(KT_DIR)/deps.sh
+	@mkdir -p $(@D)
+	sh $(KT_DIR)/deps.sh
+	@touch $@
+
+define KT_ARCH_RULES
+$(KT_BUILD)/$(1)/obj/%.o: %.c | $(KT_BUILD)/deps.stamp
+	@mkdir -p $$(@D)
+	$(KT_CC_$(1)) $(KT_CFLAGS) -c $$< -o $$@
+$(KT_BUILD)/$(1)/libfixel.a: $(patsubst %.c,$(KT_BUILD)/$(1)/obj/%.o,$(KT_LIBSRC))
+	@rm -f $$@
+	$(if $(filter aarch64,$(1)),aarch64-linux-gnu-ar,ar) rcs $$@ $$^
+$(KT_BUILD)/$(1)/tests/%: $(KT_DIR)/guest/%.c $(KT_BUILD)/$(1)/libfixel.a $(wildcard $(KT_DIR)/guest/*.h) | $(KT_BUILD)/deps.stamp
+	@mkdir -p $$(@D)
+	$(KT_CC_$(1)) $(KT_CFLAGS) $$< -o $$@ $(KT_BUILD)/$(1)/libfixel.a $(KT_LDLIBS)
+KT_GUESTS += $(patsubst $(KT_DIR)/guest/%.c,$(KT_BUILD)/$(1)/tests/%,$(KT_GUESTSRC))
+endef
+$(foreach a,$(KT_ARCHES),$(eval $(call KT_ARCH_RULES,$(a))))
+
+$(KT_BUILD)/host_render: $(KT_DIR)/host_render.c $(KT_BUILD)/x86_64/libfixel.a $(KT_DIR)/guest/scenes.h
+	gcc $(KT_CFLAGS) $< -o $@ $(KT_BUILD)/x86_64/libfixel.a $(KT_LDLIBS)
+
+kernel-guests: $(KT_GUESTS) $(KT_BUILD)/host_render
+
+test-kernel: kernel-guests
+	@sh $(KT_DIR)/rig.sh $(KT_CACHE) $(KT_BUILD)
+
+.PHONY: test-kernel kernel-guests
