@@ -1,0 +1,111 @@
+/* fixel-bench — shared declarations of the harness and its peers.
+ *
+ * The workloads are the normative ones of ../shared/bench/WORKLOADS.md. The
+ * harness generates them once, owns one 64-byte-aligned 1920x1080 buffer and
+ * hands it to every peer; a peer only knows how to draw the first n
+ * primitives of a workload into that buffer in one of the two formats.
+ */
+#ifndef FIXEL_BENCH_H
+#define FIXEL_BENCH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define BW 1920
+#define BH 1080
+
+enum { FMT_XRGB8888, FMT_RGB565, FMT_COUNT };
+
+enum {
+    W1_CLEAR,
+    W2_RECTS,
+    W3_LINES,
+    W4_AALINES,
+    W5_CIRCLES,
+    W6_DISCS,
+    W7_POLYS,
+    W8_TRIS,
+    W8G_TRIS_GOURAUD,
+    W9_MANDEL,
+    W10_BLIT,
+    W_COUNT
+};
+
+#define N_RECTS 10000
+#define N_LINES 100000
+#define N_AALINES 20000
+#define N_CIRCLES 20000
+#define N_DISCS 5000
+#define N_POLYS 2000
+#define N_TRIS 20000
+#define POLY_N 8
+
+#define W1_COLOUR 0x2060A0u
+
+struct wl_rect { int x, y, w, h; uint32_t c; };
+struct wl_line { int x0, y0, x1, y1; uint32_t c; };
+struct wl_circle { int cx, cy, r; uint32_t c; };
+struct wl_poly { int x[POLY_N], y[POLY_N]; uint32_t c; };
+struct wl_tri { int x[3], y[3]; uint32_t c[3]; };
+
+struct workloads {
+    struct wl_rect rects[N_RECTS];
+    struct wl_line lines[N_LINES];       /* W4 uses the first N_AALINES */
+    struct wl_circle circles[N_CIRCLES]; /* W6 uses the first N_DISCS */
+    struct wl_poly polys[N_POLYS];
+    struct wl_tri tris[N_TRIS];
+    /* W10 sources, one per format, 64-byte aligned, stride = BW * bpp */
+    void *blit_src[FMT_COUNT];
+};
+
+/* Generated once before anything is timed; read-only afterwards. */
+extern const struct workloads *WL;
+
+/* The destination every peer draws into for the current format. */
+struct target {
+    uint8_t *pixels; /* 64-byte aligned */
+    int fmt;         /* FMT_* */
+    int stride;      /* BW * bytes per pixel */
+};
+
+typedef void (*draw_fn)(void *ctx, int n);
+
+/* A peer: one library (or ceiling) under test. open() prepares whatever the
+ * library needs to draw into t (not timed); fn[w] draws the first n
+ * primitives of workload w, or is NULL when the peer has no such operation
+ * (the table shows "-"). fmt_mask says which formats open() accepts. */
+struct peer {
+    const char *name;
+    unsigned fmt_mask;
+    void *(*open)(const struct target *t);
+    void (*close)(void *ctx);
+    draw_fn fn[W_COUNT];
+};
+
+extern const struct peer peer_fixel, peer_libc, peer_ref, peer_ref_native;
+#ifdef BENCH_PEERS
+extern const struct peer peer_cairo, peer_pixman, peer_sdl2, peer_sdlgfx;
+#endif
+
+/* Draws the full workload w onto t (black beforehand) by the literal
+ * definitions of WORKLOADS.md; returns 0 when w has no such reference. */
+int reference_draw(const struct target *t, int w);
+
+/* "cairo 1.16.0, pixman 0.42.2, ..." for the table header. */
+const char *peer_versions(void);
+
+/* The double-precision W9 loop of WORKLOADS.md, writing XRGB8888 into dst
+ * (stride BW*4). ref_mandel is built at -O2 -fno-tree-vectorize (the
+ * baseline), ref_native_mandel at -O3 -march=native. */
+void ref_mandel(uint32_t *dst);
+void ref_native_mandel(uint32_t *dst);
+/* A plain scalar store loop filling the surface, built like ref_mandel. */
+void ref_clear(const struct target *t, uint32_t native);
+void ref_native_clear(const struct target *t, uint32_t native);
+
+static inline uint32_t pack565(uint32_t c)
+{
+    return ((c >> 19 & 0x1F) << 11) | ((c >> 10 & 0x3F) << 5) | (c >> 3 & 0x1F);
+}
+
+#endif
