@@ -1,26 +1,31 @@
-/* fixel through its public API only, one call per primitive, colours
- * converted per call as an application would.
+/* fixel through its public API only: one context, one call per primitive,
+ * the colour set per primitive (fx_ctx_set_color packs it) as an application
+ * would.
  *
- * A workload whose API has not landed yet stays NULL in the table below and
- * is shown as "-"; wiring one in is a two-line change here. */
+ * A workload whose API has not landed on main yet stays NULL in the table at
+ * the end and is shown as "-"; wiring one in is a few lines here. */
 #include "bench.h"
 
+#include <fixel/draw.h>
+#include <fixel/line.h>
 #include <fixel/surface.h>
 
-struct fx_ctx {
+struct fxb {
     fx_surface s, src;
+    fx_ctx c;
 };
-static struct fx_ctx C[FMT_COUNT];
+static struct fxb C[FMT_COUNT];
 
 static void *fx_open(const struct target *t)
 {
-    struct fx_ctx *c = &C[t->fmt];
+    struct fxb *b = &C[t->fmt];
     fx_format f = t->fmt == FMT_XRGB8888 ? FX_FMT_XRGB8888 : FX_FMT_RGB565;
-    if (fx_surface_init(&c->s, t->pixels, BW, BH, t->stride, f) != 0)
+    if (fx_surface_init(&b->s, t->pixels, BW, BH, t->stride, f) != 0)
         return NULL;
-    if (fx_surface_init(&c->src, WL->blit_src[t->fmt], BW, BH, t->stride, f) != 0)
+    if (fx_surface_init(&b->src, WL->blit_src[t->fmt], BW, BH, t->stride, f) != 0)
         return NULL;
-    return c;
+    fx_ctx_init(&b->c, &b->s);
+    return b;
 }
 static void fx_close(void *ctx) { (void)ctx; }
 
@@ -28,26 +33,37 @@ static void fx_close(void *ctx) { (void)ctx; }
 
 static void fx_w1(void *ctx, int n)
 {
-    struct fx_ctx *c = ctx;
+    struct fxb *b = ctx;
     (void)n;
-    fx_surface_clear(&c->s, OPAQUE(W1_COLOUR));
+    fx_ctx_set_color(&b->c, OPAQUE(W1_COLOUR));
+    fx_clear(&b->c);
 }
 
 static void fx_w2(void *ctx, int n)
 {
-    struct fx_ctx *c = ctx;
+    struct fxb *b = ctx;
     const struct wl_rect *r = WL->rects;
     for (int i = 0; i < n; i++) {
-        fx_rect q = {r[i].x, r[i].y, r[i].x + r[i].w, r[i].y + r[i].h};
-        fx_surface_fill(&c->s, q, OPAQUE(r[i].c));
+        fx_ctx_set_color(&b->c, OPAQUE(r[i].c));
+        fx_fill_rect(&b->c, r[i].x, r[i].y, r[i].w, r[i].h);
+    }
+}
+
+static void fx_w3(void *ctx, int n)
+{
+    struct fxb *b = ctx;
+    const struct wl_line *l = WL->lines;
+    for (int i = 0; i < n; i++) {
+        fx_ctx_set_color(&b->c, OPAQUE(l[i].c));
+        fx_line(&b->c, l[i].x0, l[i].y0, l[i].x1, l[i].y1);
     }
 }
 
 static void fx_w10(void *ctx, int n)
 {
-    struct fx_ctx *c = ctx;
+    struct fxb *b = ctx;
     (void)n;
-    fx_blit(&c->s, 0, 0, &c->src);
+    fx_blit(&b->s, 0, 0, &b->src);
 }
 
 const struct peer peer_fixel = {
@@ -59,6 +75,7 @@ const struct peer peer_fixel = {
         {
             [W1_CLEAR] = fx_w1,
             [W2_RECTS] = fx_w2,
+            [W3_LINES] = fx_w3,
             [W10_BLIT] = fx_w10,
         },
 };

@@ -3,7 +3,7 @@
  * the baseline WORKLOADS.md names) and with -DREF_NATIVE at -O3
  * -march=native (peer "ref-native"). Kept in its own file so that the
  * project's flags never change what the baseline measures. */
-#include "bench.h"
+#include "../bench.h"
 
 #ifdef REF_NATIVE
 #define REF(name) ref_native_##name

@@ -7,7 +7,9 @@
  * for. Numbers are only reported for peers whose pictures passed the
  * checksums (W1, W2, W10) or the agreement with the double reference (W9).
  */
+#ifndef _GNU_SOURCE
 #define _GNU_SOURCE
+#endif
 #include "bench.h"
 
 #include <inttypes.h>
@@ -190,7 +192,7 @@ static int cmp_i64(const void *a, const void *b)
 /* Pixel-centre even-odd rasterization as section 3 defines it; ceil is
  * monotone, so sorting the ceilings pairs the same spans as sorting the
  * exact crossings would. */
-int64_t nominal_polygon(const int *xs, const int *ys, int nv)
+static int64_t nominal_polygon(const int *xs, const int *ys, int nv)
 {
     int miny = ys[0], maxy = ys[0];
     for (int i = 1; i < nv; i++) {

@@ -1,0 +1,47 @@
+# fixel-bench: the normative workloads of ../shared/bench/WORKLOADS.md.
+#
+#   make bench        fixel with the memset/memcpy and double-reference ceilings
+#   make bench-peers  the same, in one process with cairo, pixman, SDL2 and
+#                     SDL2_gfx, and a fixel / best-peer ratio column
+#   make test         runs `fixel-bench --check` (checksums, W9 agreement; ~2 s)
+#
+# Built by the generic tools rule (tools/fixel-bench/main.c). Without the peer
+# libraries (before `make deps`) it still builds and measures fixel against
+# the ceilings, and bench-peers says so.
+
+EXTRA_DEB_PKGS += libcairo2-dev libpixman-1-dev libsdl2-dev libsdl2-gfx-dev
+
+BENCH_PKGS := cairo pixman-1 sdl2 SDL2_gfx
+BENCH_HAVE_PEERS := $(shell $(PKG_CONFIG) --exists $(BENCH_PKGS) 2>/dev/null && echo yes)
+ifeq ($(BENCH_HAVE_PEERS),yes)
+$(BUILD)/obj/tools/fixel-bench/%.o: PKG_CFLAGS += -DBENCH_PEERS $(shell $(PKG_CONFIG) --cflags $(BENCH_PKGS))
+TOOL_LIBS_fixel-bench := $(shell $(PKG_CONFIG) --libs $(BENCH_PKGS)) -lm
+else
+$(BUILD)/obj/tools/fixel-bench/%.o: PKG_CFLAGS += -DBENCH_NO_PEERS
+TOOL_LIBS_fixel-bench := -lm
+endif
+
+# The W9 reference is measured at exactly the flags WORKLOADS.md names, whatever
+# OPT and CPU_FLAGS the project is built with; ref-native is the same source at
+# -O3 -march=native. Both are plain C (no fixel), so sanitizers stay off here.
+TOOL_SRC_fixel-bench := tools/fixel-bench/ref/ref.c tools/fixel-bench/ref/ref_native.c
+BENCH_REF_FLAGS := $(CSTD) $(WARN) -g -fPIC -MMD -MP $(INCLUDES)
+$(BUILD)/obj/tools/fixel-bench/ref/ref.o: tools/fixel-bench/ref/ref.c
+	@mkdir -p $(dir $@)
+	$(CC) $(BENCH_REF_FLAGS) -O2 -fno-tree-vectorize -c $< -o $@
+$(BUILD)/obj/tools/fixel-bench/ref/ref_native.o: tools/fixel-bench/ref/ref_native.c
+	@mkdir -p $(dir $@)
+	$(CC) $(BENCH_REF_FLAGS) -O3 -march=native -c $< -o $@
+
+bench: $(BUILD)/bin/fixel-bench
+	$(BUILD)/bin/fixel-bench -o $(BUILD)/bench.txt
+
+bench-peers: $(BUILD)/bin/fixel-bench
+	$(BUILD)/bin/fixel-bench --peers -o $(BUILD)/bench-peers.txt
+
+TEST_SUITES += "$(BUILD)/bin/fixel-bench --check"
+
+.PHONY: bench bench-peers
+
+# Keep the objects (chained pattern rules would delete them as intermediates).
+.SECONDARY: $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/fixel-bench/*.c))

@@ -1,0 +1,3 @@
+/* The same reference loops, built at -O3 -march=native (peer "ref-native"). */
+#define REF_NATIVE
+#include "ref.c"
