@@ -33,7 +33,10 @@ WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototy
 CSTD     := -std=c11
 INCLUDES := -Ikernel-free-src/include -Iboards/include
 CPU_FLAGS ?=
-BASEFLAGS := $(CSTD) $(WARN) $(OPT) -g $(CPU_FLAGS) $(SANFLAGS) -fPIC -MMD -MP $(INCLUDES)
+# Board defaults compiled in (boards/<name>.mk); environment variables override them at run time.
+BOARD_DEFS := -DFX_BOARD_ROTATION=$(or $(BOARD_ROTATION),0) -DFX_BOARD_BACKEND='"$(or $(BOARD_BACKEND),auto)"' \
+              -DFX_BOARD_GPIO_BUTTONS='"$(BOARD_GPIO_BUTTONS)"'
+BASEFLAGS := $(CSTD) $(WARN) $(OPT) -g $(CPU_FLAGS) $(BOARD_DEFS) $(SANFLAGS) -fPIC -MMD -MP $(INCLUDES)
 
 # Libraries the boards side and the tools use (installed by `make deps`).
 SYS_PKGS := libpng zlib
@@ -50,7 +53,8 @@ ifeq ($(STATIC),1)
 endif
 
 CORE_SRC   := $(sort $(wildcard kernel-free-src/*.c))
-BOARD_SRC  := $(sort $(wildcard boards/memory/*.c) $(if $(HAVE_OPT),$(wildcard boards/linux/*.c)))
+BOARD_SRC  := $(sort $(wildcard boards/memory/*.c) boards/linux/present.c \
+                     $(if $(HAVE_OPT),$(wildcard boards/linux/*.c)))
 LIB_SRC    := $(CORE_SRC) $(BOARD_SRC)
 LIB_OBJ    := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 LIB_A      := $(BUILD)/libfixel.a

@@ -13,6 +13,14 @@
 #include "display_int.h"
 #include "fixel/error.h"
 
+/* Compiled-in defaults of the board profile (boards/<name>.mk). */
+#ifndef FX_BOARD_ROTATION
+#define FX_BOARD_ROTATION 0
+#endif
+#ifndef FX_BOARD_BACKEND
+#define FX_BOARD_BACKEND "auto"
+#endif
+
 /* ---- logging ----------------------------------------------------------- */
 
 static void default_log(fx_log_priority p, void *user, const char *fmt, va_list ap)
@@ -217,7 +225,7 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
 
     if (d->opt.rotation < 0) {
         const char *e = getenv("FIXEL_ROTATION");
-        d->opt.rotation = e && *e ? atoi(e) : 0;
+        d->opt.rotation = e && *e ? atoi(e) : FX_BOARD_ROTATION;
     }
     if (d->opt.rotation != 0 && d->opt.rotation != 90 && d->opt.rotation != 180 &&
         d->opt.rotation != 270) {
@@ -238,6 +246,8 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
                 return -FX_EINVAL;
             }
             why = "FIXEL_BACKEND";
+        } else if (parse_backend(FX_BOARD_BACKEND, &b) == 0 && b != FX_BACKEND_AUTO) {
+            why = "board profile default";
         }
     }
 

@@ -18,14 +18,15 @@ for p in qemu-system-x86 qemu-system-arm busybox-static cpio kmod xz-utils make 
     dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed' || need="$need $p"
 done
 
-# arm64 guest programs link the arm64 static libdrm/libevdev/libgpiod.
+# arm64 guest programs link the arm64 static libdrm/libevdev/libgpiod; libpng
+# and zlib make `make BOARD=qemu-arm64` (or rpi4/rpi5) build the whole library.
 if ! dpkg --print-foreign-architectures | grep -qx arm64; then
     dpkg --add-architecture arm64
     updated=no
 else
     updated=yes
 fi
-for p in libdrm-dev:arm64 libevdev-dev:arm64 libgpiod-dev:arm64; do
+for p in libdrm-dev:arm64 libevdev-dev:arm64 libgpiod-dev:arm64 libpng-dev:arm64 zlib1g-dev:arm64; do
     dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed' || need="$need $p"
 done
 
