@@ -1,5 +1,6 @@
 /* fixel — Bresenham lines with O(1) seeking and exact clipping. */
 #include "fixel/line.h"
+#include "fixel/clip.h"
 #include "fx_internal.h"
 
 void fx_bres_init(fx_bres *b, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
@@ -201,6 +202,10 @@ void fx_line(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 {
     fx_bres b;
     uint32_t k0, k1;
+    if (c->line_clipper != FX_CLIP_DIRECT || c->exterior) {
+        fx_clip_draw_line(c, x0, y0, x1, y1); /* same pixels; the chosen algorithm's steps */
+        return;
+    }
     fx_bres_init(&b, x0, y0, x1, y1);
     if (c->trace)
         trace_header(c, &b, x0, y0, x1, y1);
