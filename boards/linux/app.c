@@ -1,0 +1,368 @@
+/* fixel — the app: display + input + GPIO behind GLUT-style callbacks, and
+ * the main loop (poll over every fd; timerfd for timers and debouncing;
+ * signalfd for SIGINT/SIGTERM/SIGHUP). */
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE
+#endif
+#include <errno.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/signalfd.h>
+#include <sys/timerfd.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "app_int.h"
+#include "display_int.h"
+#include "fixel/error.h"
+
+static fx_app *current;
+
+uint64_t fx_app_now_us(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000;
+}
+
+void fx_app_emit(void *u, const fx_event *e)
+{
+    fx_app *a = u;
+    fx_dispatch(&a->cb, a->user, e);
+}
+
+void fx_app_options_init(fx_app_options *o)
+{
+    memset(o, 0, sizeof *o);
+    fx_display_options_init(&o->display);
+    o->input = 1;
+}
+
+static void load_pointercal(fx_app *a, const char *path)
+{
+    const char *env = getenv("FIXEL_POINTERCAL");
+    int explicit = path || env;
+    if (!path)
+        path = env ? env : "/etc/pointercal";
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        if (explicit)
+            fx_display_log(a->disp, FX_LOG_ERROR, "input: cannot read calibration %s: %s", path,
+                           strerror(errno));
+        return;
+    }
+    char buf[256];
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = 0;
+    if (fx_calib_parse(&a->calib, buf, (unsigned)n) < 0)
+        fx_display_log(a->disp, FX_LOG_ERROR, "input: %s is not a tslib pointercal file "
+                       "(7 integers, the last non-zero); ignored", path);
+    else
+        fx_display_log(a->disp, FX_LOG_INFO, "input: touch calibration from %s", path);
+}
+
+int fx_app_open(fx_app **out, const fx_app_options *o)
+{
+    *out = NULL;
+    fx_app *a = calloc(1, sizeof *a);
+    if (!a)
+        return -FX_ENOMEM;
+    a->inotify_fd = a->tfd = a->sfd = -1;
+    int r = fx_display_open(&a->disp, &o->display);
+    if (r < 0) {
+        free(a);
+        return r;
+    }
+    fx_display_info info;
+    fx_display_get_info(a->disp, &info);
+    fx_input_init(&a->in, info.width, info.height, info.rotation);
+    snprintf(a->input_dir, sizeof a->input_dir, "%s", o->input_dir ? o->input_dir : "/dev/input");
+    a->grab = o->grab;
+    load_pointercal(a, o->pointercal);
+    const char *touch = getenv("FIXEL_TOUCH");
+    if (touch) {
+        a->calib.swap_xy = strstr(touch, "swap") != NULL;
+        a->calib.invert_x = strstr(touch, "invertx") != NULL;
+        a->calib.invert_y = strstr(touch, "inverty") != NULL;
+    }
+    if (o->input)
+        fx_evdev_scan(a);
+    if (o->buttons && o->nbuttons > 0) {
+        fx_gpio_open_buttons(a, o->buttons, o->nbuttons);
+    } else if (getenv("FIXEL_BUTTONS")) {
+        char *spec = strdup(getenv("FIXEL_BUTTONS"));
+        fx_gpio_button b[FX_APP_MAX_GPIO];
+        int n = spec ? fx_gpio_parse_buttons(spec, b, FX_APP_MAX_GPIO) : -FX_ENOMEM;
+        if (n < 0)
+            fx_display_log(a->disp, FX_LOG_ERROR, "gpio: cannot parse FIXEL_BUTTONS '%s'",
+                           getenv("FIXEL_BUTTONS"));
+        else
+            fx_gpio_open_buttons(a, b, n);
+        free(spec);
+    }
+    a->tfd = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    sigaddset(&set, SIGHUP);
+    /* Blocked in this thread and read through signalfd: the loop ends
+     * normally and fx_app_close restores the console. */
+    sigprocmask(SIG_BLOCK, &set, NULL);
+    a->sfd = signalfd(-1, &set, SFD_NONBLOCK | SFD_CLOEXEC);
+    current = a;
+    *out = a;
+    return 0;
+}
+
+void fx_app_close(fx_app *a)
+{
+    if (!a)
+        return;
+    fx_evdev_close_all(a);
+    fx_gpio_close_all(a);
+    if (a->tfd >= 0)
+        close(a->tfd);
+    if (a->sfd >= 0)
+        close(a->sfd);
+    fx_display_close(a->disp);
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    sigaddset(&set, SIGHUP);
+    sigprocmask(SIG_UNBLOCK, &set, NULL);
+    if (current == a)
+        current = NULL;
+    free(a);
+}
+
+void fx_app_set_callbacks(fx_app *a, const fx_callbacks *cb, void *user)
+{
+    a->cb = *cb;
+    a->user = user;
+}
+
+void fx_app_post_redisplay(fx_app *a) { a->redisplay = 1; }
+fx_surface fx_app_surface(fx_app *a) { return fx_display_surface(a->disp); }
+int fx_app_present(fx_app *a, const fx_rect *damage, int n) { return fx_display_present(a->disp, damage, n); }
+fx_display *fx_app_display(fx_app *a) { return a->disp; }
+void fx_app_quit(fx_app *a) { a->quit = 1; }
+void fx_app_size(const fx_app *a, int32_t *w, int32_t *h) { fx_input_logical_size(&a->in, w, h); }
+int fx_app_input_count(const fx_app *a) { return a->ndevs + a->ngpio; }
+
+int fx_app_timer(fx_app *a, unsigned ms, void (*fn)(void *user, int value), int value)
+{
+    for (int i = 0; i < FX_APP_MAX_TIMERS; i++)
+        if (!a->timers[i].used) {
+            a->timers[i].used = 1;
+            a->timers[i].at_us = fx_app_now_us() + (uint64_t)ms * 1000;
+            a->timers[i].fn = fn;
+            a->timers[i].value = value;
+            return 0;
+        }
+    return -FX_ENOSPC;
+}
+
+/* Run due timers and debouncers; returns the next deadline. */
+static uint64_t run_timers(fx_app *a)
+{
+    uint64_t now = fx_app_now_us(), next = fx_gpio_poll(a, now);
+    for (int i = 0; i < FX_APP_MAX_TIMERS; i++) {
+        if (!a->timers[i].used)
+            continue;
+        if (a->timers[i].at_us <= now) {
+            a->timers[i].used = 0; /* one-shot; the callback may re-arm */
+            a->timers[i].fn(a->user, a->timers[i].value);
+        }
+    }
+    for (int i = 0; i < FX_APP_MAX_TIMERS; i++)
+        if (a->timers[i].used && a->timers[i].at_us < next)
+            next = a->timers[i].at_us;
+    return next;
+}
+
+static void arm(fx_app *a, uint64_t at_us)
+{
+    struct itimerspec its;
+    memset(&its, 0, sizeof its);
+    if (at_us != UINT64_MAX) {
+        if (at_us == 0)
+            at_us = 1;
+        its.it_value.tv_sec = (time_t)(at_us / 1000000u);
+        its.it_value.tv_nsec = (long)(at_us % 1000000u) * 1000;
+    }
+    timerfd_settime(a->tfd, TFD_TIMER_ABSTIME, &its, NULL);
+}
+
+int fx_app_main_loop(fx_app *a)
+{
+    enum { MAXFD = 4 + FX_APP_MAX_DEVS + FX_APP_MAX_GPIO };
+    a->quit = 0;
+    if (!a->started) {
+        a->started = 1;
+        fx_event e;
+        memset(&e, 0, sizeof e);
+        e.type = FX_EVENT_RESHAPE;
+        fx_input_logical_size(&a->in, &e.x, &e.y);
+        fx_dispatch(&a->cb, a->user, &e);
+        a->redisplay = 1;
+    }
+    while (!a->quit) {
+        uint64_t next = run_timers(a);
+        if (a->quit)
+            break;
+        if (a->redisplay && !fx_display_flip_pending(a->disp) && a->cb.display) {
+            a->redisplay = 0;
+            a->cb.display(a->user);
+            continue; /* timers or input may have become due meanwhile */
+        }
+        arm(a, next);
+        struct pollfd p[MAXFD];
+        int n = 0, dfd = fx_display_fd(a->disp);
+        int i_sig = -1, i_tim = -1, i_disp = -1, i_ino = -1, i_dev = 0, i_gpio = 0;
+        if (a->sfd >= 0)
+            i_sig = n, p[n++] = (struct pollfd){a->sfd, POLLIN, 0};
+        if (a->tfd >= 0)
+            i_tim = n, p[n++] = (struct pollfd){a->tfd, POLLIN, 0};
+        if (dfd >= 0)
+            i_disp = n, p[n++] = (struct pollfd){dfd, POLLIN, 0};
+        if (a->inotify_fd >= 0)
+            i_ino = n, p[n++] = (struct pollfd){a->inotify_fd, POLLIN, 0};
+        i_dev = n;
+        for (int k = 0; k < a->ndevs; k++)
+            p[n++] = (struct pollfd){a->devs[k]->fd, POLLIN, 0};
+        i_gpio = n;
+        for (int k = 0; k < a->ngpio; k++)
+            p[n++] = (struct pollfd){a->gpio[k].fd, POLLIN, 0};
+        int ndev = a->ndevs, ngpio = a->ngpio;
+        /* Sleep unless the program wants idle calls, or a frame is due and no
+         * flip event will wake us (no DRM fd). */
+        int timeout = a->cb.idle ? 0 : (a->redisplay && a->cb.display && dfd < 0) ? 1 : -1;
+        int r = poll(p, (nfds_t)n, timeout);
+        if (r < 0) {
+            if (errno == EINTR)
+                continue;
+            return -errno;
+        }
+        if (r == 0) {
+            if (a->cb.idle)
+                a->cb.idle(a->user);
+            continue;
+        }
+        if (i_sig >= 0 && (p[i_sig].revents & POLLIN)) {
+            struct signalfd_siginfo si;
+            if (read(a->sfd, &si, sizeof si) == (ssize_t)sizeof si) {
+                fx_display_log(a->disp, FX_LOG_INFO, "signal %u: closing", si.ssi_signo);
+                if (a->cb.close)
+                    a->cb.close(a->user);
+                a->quit = 1;
+                break;
+            }
+        }
+        if (i_tim >= 0 && (p[i_tim].revents & POLLIN)) {
+            uint64_t ticks;
+            if (read(a->tfd, &ticks, sizeof ticks) < 0) {
+                /* EAGAIN: the timer was re-armed meanwhile */
+            }
+        }
+        if (i_disp >= 0 && (p[i_disp].revents & POLLIN))
+            fx_display_dispatch(a->disp);
+        if (i_ino >= 0 && (p[i_ino].revents & POLLIN))
+            fx_evdev_hotplug(a);
+        /* Devices may be dropped while reading: walk from the end so the
+         * swap-with-last removal never skips one. */
+        for (int k = ndev - 1; k >= 0; k--)
+            if (p[i_dev + k].revents & (POLLIN | POLLHUP | POLLERR))
+                if (k < a->ndevs && a->devs[k]->fd == p[i_dev + k].fd)
+                    fx_evdev_read(a, k);
+        for (int k = ngpio - 1; k >= 0; k--)
+            if (p[i_gpio + k].revents & (POLLIN | POLLHUP | POLLERR))
+                if (k < a->ngpio && a->gpio[k].fd == p[i_gpio + k].fd)
+                    fx_gpio_read(a, k);
+    }
+    return 0;
+}
+
+void fx_post_redisplay(void)
+{
+    if (current)
+        fx_app_post_redisplay(current);
+}
+
+int fx_main_loop(void) { return current ? fx_app_main_loop(current) : -FX_EINVAL; }
+
+static const struct {
+    const char *name;
+    int key, special;
+} key_names[] = {
+    {"up", FX_KEY_UP, 1},         {"down", FX_KEY_DOWN, 1},   {"left", FX_KEY_LEFT, 1},
+    {"right", FX_KEY_RIGHT, 1},   {"pageup", FX_KEY_PAGE_UP, 1}, {"pagedown", FX_KEY_PAGE_DOWN, 1},
+    {"home", FX_KEY_HOME, 1},     {"end", FX_KEY_END, 1},     {"insert", FX_KEY_INSERT, 1},
+    {"enter", 13, 0},             {"esc", 27, 0},             {"space", ' ', 0},
+    {"tab", 9, 0},
+};
+
+int fx_gpio_parse_buttons(char *buf, fx_gpio_button *out, int max)
+{
+    int n = 0;
+    char *save = NULL;
+    for (char *item = strtok_r(buf, ",", &save); item; item = strtok_r(NULL, ",", &save)) {
+        if (n == max)
+            return -FX_E2BIG;
+        fx_gpio_button *b = &out[n];
+        memset(b, 0, sizeof *b);
+        char *eq = strchr(item, '='), *colon = strchr(item, ':');
+        if (!eq || !colon || colon > eq)
+            return -FX_EINVAL;
+        *colon = *eq = 0;
+        b->chip = item;
+        char *line = colon + 1, *key = eq + 1, *end;
+        long off = strtol(line, &end, 10);
+        if (*line && !*end) {
+            b->offset = (int)off;
+        } else {
+            b->offset = -1;
+            b->name = line;
+        }
+        char *at = strchr(key, '@');
+        if (at) {
+            *at = 0;
+            b->debounce_ms = (unsigned)strtoul(at + 1, &end, 10);
+            if (*end)
+                return -FX_EINVAL;
+        }
+        char *low = strstr(key, "/low");
+        if (low) {
+            *low = 0;
+            b->active_low = 1;
+        }
+        int found = 0;
+        for (size_t k = 0; k < sizeof key_names / sizeof key_names[0]; k++)
+            if (!strcmp(key, key_names[k].name)) {
+                b->key = key_names[k].key;
+                b->special = key_names[k].special;
+                found = 1;
+            }
+        if (!found && (key[0] == 'f' || key[0] == 'F') && key[1] >= '1' && key[1] <= '9') {
+            long f = strtol(key + 1, &end, 10);
+            if (*end || f < 1 || f > 12)
+                return -FX_EINVAL;
+            b->key = (int)f;
+            b->special = 1;
+            found = 1;
+        }
+        if (!found && key[0] && !key[1]) {
+            b->key = (unsigned char)key[0];
+            found = 1;
+        }
+        if (!found)
+            return -FX_EINVAL;
+        n++;
+    }
+    return n;
+}

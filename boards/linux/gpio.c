@@ -1,0 +1,165 @@
+/* fixel — GPIO buttons and output lines through libgpiod (v1.6 API). */
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE
+#endif
+#include <errno.h>
+#include <gpiod.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app_int.h"
+#include "fixel/error.h"
+
+static int open_line(fx_app *a, const char *chipname, int offset, const char *name,
+                     struct gpiod_chip **chip, struct gpiod_line **line, int *close_chip)
+{
+    *chip = NULL;
+    *line = NULL;
+    *close_chip = 0;
+    if (chipname) {
+        *chip = gpiod_chip_open_lookup(chipname);
+        if (!*chip) {
+            int e = errno;
+            fx_display_log(a->disp, FX_LOG_ERROR, "gpio: cannot open chip %s: %s%s", chipname,
+                           strerror(e), e == EACCES ? " (add the user to the 'gpio' group)" : "");
+            return -e;
+        }
+        *line = offset >= 0 ? gpiod_chip_get_line(*chip, (unsigned)offset)
+                            : gpiod_chip_find_line(*chip, name);
+    } else if (name) {
+        *line = gpiod_line_find(name);
+        *close_chip = *line != NULL;
+    }
+    if (!*line) {
+        if (name && offset < 0)
+            fx_display_log(a->disp, FX_LOG_ERROR, "gpio: no line named \"%s\" on %s", name,
+                           chipname ? chipname : "any chip");
+        else
+            fx_display_log(a->disp, FX_LOG_ERROR, "gpio: no line %d on %s", offset,
+                           chipname ? chipname : "(no chip given)");
+        if (*chip)
+            gpiod_chip_close(*chip);
+        *chip = NULL;
+        return -FX_ENODEV;
+    }
+    return 0;
+}
+
+int fx_gpio_open_buttons(fx_app *a, const fx_gpio_button *b, int n)
+{
+    int opened = 0;
+    for (int i = 0; i < n && a->ngpio < FX_APP_MAX_GPIO; i++) {
+        fx_gpio_in *g = &a->gpio[a->ngpio];
+        memset(g, 0, sizeof *g);
+        if (open_line(a, b[i].chip, b[i].offset, b[i].name, &g->chip, &g->line, &g->close_chip) < 0)
+            continue;
+        int flags = b[i].active_low ? GPIOD_LINE_REQUEST_FLAG_ACTIVE_LOW : 0;
+        if (gpiod_line_request_both_edges_events_flags(g->line, "fixel", flags) < 0) {
+            int e = errno;
+            fx_display_log(a->disp, FX_LOG_ERROR, "gpio: cannot request line %d: %s%s",
+                           (int)gpiod_line_offset(g->line), strerror(e),
+                           e == EBUSY ? " (another program uses it)" : "");
+            if (g->close_chip)
+                gpiod_line_close_chip(g->line);
+            else
+                gpiod_chip_close(g->chip);
+            continue;
+        }
+        g->fd = gpiod_line_event_get_fd(g->line);
+        g->b = b[i];
+        int level = gpiod_line_get_value(g->line);
+        fx_debounce_init(&g->db, b[i].debounce_ms ? b[i].debounce_ms : 20, level > 0);
+        a->ngpio++;
+        opened++;
+        fx_display_log(a->disp, FX_LOG_INFO, "gpio: button on line %u (%s) -> %s %d",
+                       gpiod_line_offset(g->line), gpiod_line_name(g->line) ? gpiod_line_name(g->line) : "unnamed",
+                       b[i].special ? "special" : "key", b[i].key);
+    }
+    return opened;
+}
+
+static void close_in(fx_gpio_in *g)
+{
+    gpiod_line_release(g->line);
+    if (g->close_chip)
+        gpiod_line_close_chip(g->line);
+    else
+        gpiod_chip_close(g->chip);
+}
+
+void fx_gpio_read(fx_app *a, int i)
+{
+    fx_gpio_in *g = &a->gpio[i];
+    struct gpiod_line_event ev;
+    /* The event fd blocks: poll() announced one event, read exactly one. */
+    if (gpiod_line_event_read_fd(g->fd, &ev) < 0) {
+        fx_display_log(a->disp, FX_LOG_ERROR, "gpio: line %u vanished (%s); button dropped",
+                       gpiod_line_offset(g->line), strerror(errno));
+        close_in(g);
+        a->gpio[i] = a->gpio[--a->ngpio];
+        return;
+    }
+    /* Timed on our monotonic clock, not ev.ts: older kernels stamp v1 line
+     * events with CLOCK_REALTIME, which must not meet timerfd deadlines. */
+    fx_debounce_edge(&g->db, ev.event_type == GPIOD_LINE_EVENT_RISING_EDGE, fx_app_now_us());
+}
+
+uint64_t fx_gpio_poll(fx_app *a, uint64_t now)
+{
+    uint64_t next = UINT64_MAX;
+    for (int i = 0; i < a->ngpio; i++) {
+        fx_gpio_in *g = &a->gpio[i];
+        int r = fx_debounce_poll(&g->db, now);
+        if (r >= 0) {
+            fx_event e;
+            memset(&e, 0, sizeof e);
+            e.type = g->b.special ? (r ? FX_EVENT_SPECIAL : FX_EVENT_SPECIAL_UP)
+                                  : (r ? FX_EVENT_KEY : FX_EVENT_KEY_UP);
+            e.key = g->b.key;
+            e.time_us = now;
+            fx_input_to_logical(&a->in, a->in.px, a->in.py, &e.x, &e.y);
+            fx_app_emit(a, &e);
+        }
+        uint64_t d = fx_debounce_deadline(&g->db);
+        if (d < next)
+            next = d;
+    }
+    return next;
+}
+
+void fx_gpio_close_all(fx_app *a)
+{
+    while (a->ngpio)
+        close_in(&a->gpio[--a->ngpio]);
+    while (a->nout) {
+        fx_gpio_out *o = &a->out[--a->nout];
+        gpiod_line_release(o->line);
+        gpiod_chip_close(o->chip);
+    }
+}
+
+int fx_app_gpio_output(fx_app *a, const char *chip, int offset, int value)
+{
+    for (int i = 0; i < a->nout; i++)
+        if (a->out[i].offset == offset && !strcmp(a->out[i].chipname, chip))
+            return gpiod_line_set_value(a->out[i].line, value) < 0 ? -errno : 0;
+    if (a->nout == FX_APP_MAX_OUT)
+        return -FX_ENOSPC;
+    fx_gpio_out *o = &a->out[a->nout];
+    int close_chip;
+    int r = open_line(a, chip, offset, NULL, &o->chip, &o->line, &close_chip);
+    if (r < 0)
+        return r;
+    if (gpiod_line_request_output(o->line, "fixel", value) < 0) {
+        r = -errno;
+        fx_display_log(a->disp, FX_LOG_ERROR, "gpio: cannot drive %s line %d: %s", chip, offset,
+                       strerror(-r));
+        gpiod_chip_close(o->chip);
+        return r;
+    }
+    snprintf(o->chipname, sizeof o->chipname, "%s", chip);
+    o->offset = offset;
+    a->nout++;
+    return 0;
+}
