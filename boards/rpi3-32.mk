@@ -5,4 +5,4 @@ BUILD ?= build/rpi3-32
 PKG_CONFIG ?= PKG_CONFIG_LIBDIR=/usr/lib/arm-linux-gnueabihf/pkgconfig:/usr/share/pkgconfig pkg-config
 BOARD_ROTATION ?= 0
 BOARD_BACKEND ?= auto
-BOARD_GPIO_BUTTONS ?=
+BOARD_GPIO_BUTTONS ?= :GPIO17=up/low,:GPIO27=down/low,:GPIO22=enter/low

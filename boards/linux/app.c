@@ -19,6 +19,10 @@
 #include "display_int.h"
 #include "fixel/error.h"
 
+#ifndef FX_BOARD_GPIO_BUTTONS
+#define FX_BOARD_GPIO_BUTTONS ""
+#endif
+
 static fx_app *current;
 
 uint64_t fx_app_now_us(void)
@@ -93,13 +97,14 @@ int fx_app_open(fx_app **out, const fx_app_options *o)
         fx_evdev_scan(a);
     if (o->buttons && o->nbuttons > 0) {
         fx_gpio_open_buttons(a, o->buttons, o->nbuttons);
-    } else if (getenv("FIXEL_BUTTONS")) {
-        char *spec = strdup(getenv("FIXEL_BUTTONS"));
+    } else if (getenv("FIXEL_BUTTONS") || FX_BOARD_GPIO_BUTTONS[0]) {
+        /* FIXEL_BUTTONS, else the board profile's default map */
+        const char *src = getenv("FIXEL_BUTTONS") ? getenv("FIXEL_BUTTONS") : FX_BOARD_GPIO_BUTTONS;
+        char *spec = strdup(src);
         fx_gpio_button b[FX_APP_MAX_GPIO];
         int n = spec ? fx_gpio_parse_buttons(spec, b, FX_APP_MAX_GPIO) : -FX_ENOMEM;
         if (n < 0)
-            fx_display_log(a->disp, FX_LOG_ERROR, "gpio: cannot parse FIXEL_BUTTONS '%s'",
-                           getenv("FIXEL_BUTTONS"));
+            fx_display_log(a->disp, FX_LOG_ERROR, "gpio: cannot parse the button map '%s'", src);
         else
             fx_gpio_open_buttons(a, b, n);
         free(spec);
@@ -320,7 +325,7 @@ int fx_gpio_parse_buttons(char *buf, fx_gpio_button *out, int max)
         if (!eq || !colon || colon > eq)
             return -FX_EINVAL;
         *colon = *eq = 0;
-        b->chip = item;
+        b->chip = *item ? item : NULL; /* ":NAME=KEY" searches every chip */
         char *line = colon + 1, *key = eq + 1, *end;
         long off = strtol(line, &end, 10);
         if (*line && !*end) {

@@ -54,7 +54,11 @@ int fx_gpio_open_buttons(fx_app *a, const fx_gpio_button *b, int n)
         memset(g, 0, sizeof *g);
         if (open_line(a, b[i].chip, b[i].offset, b[i].name, &g->chip, &g->line, &g->close_chip) < 0)
             continue;
-        int flags = b[i].active_low ? GPIOD_LINE_REQUEST_FLAG_ACTIVE_LOW : 0;
+        /* An active-low button shorts the line to ground: enable the pull-up
+         * so an open button reads high instead of floating. */
+        int flags = b[i].active_low
+                        ? GPIOD_LINE_REQUEST_FLAG_ACTIVE_LOW | GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP
+                        : 0;
         if (gpiod_line_request_both_edges_events_flags(g->line, "fixel", flags) < 0) {
             int e = errno;
             fx_display_log(a->disp, FX_LOG_ERROR, "gpio: cannot request line %d: %s%s",

@@ -255,6 +255,9 @@ FX_TEST(gpio_button_spec_parsing)
     FX_CHECK(fx_gpio_parse_buttons(bad2, b, 8) < 0);
     FX_CHECK(fx_gpio_parse_buttons(bad3, b, 8) < 0);
     FX_CHECK(fx_gpio_parse_buttons(bad4, b, 8) < 0);
+    char anychip[] = ":GPIO17=up/low";
+    FX_CHECK_EQ(fx_gpio_parse_buttons(anychip, b, 8), 1);
+    FX_CHECK(b[0].chip == NULL && !strcmp(b[0].name, "GPIO17") && b[0].active_low);
     char many[] = "c:1=a,c:2=b,c:3=c";
     FX_CHECK(fx_gpio_parse_buttons(many, b, 2) < 0);
 }

@@ -49,7 +49,8 @@ typedef struct fx_app_options {
     const char *input_dir;  /* default "/dev/input" */
     int grab;               /* 1: EVIOCGRAB keyboards so keys never reach the console */
     const char *pointercal; /* NULL: FIXEL_POINTERCAL, else /etc/pointercal if readable */
-    const fx_gpio_button *buttons; /* NULL: FIXEL_BUTTONS (see fx_gpio_parse_buttons) */
+    const fx_gpio_button *buttons; /* NULL: FIXEL_BUTTONS, else the board's default map
+                                    * (see fx_gpio_parse_buttons) */
     int nbuttons;
 } fx_app_options;
 
@@ -82,7 +83,9 @@ int fx_app_input_count(const fx_app *a);
 void fx_post_redisplay(void);
 int fx_main_loop(void);
 
-/* Parse "CHIP:LINE=KEY[/low][@MS],..." (LINE: offset or line name; KEY: a
+/* Parse "CHIP:LINE=KEY[/low][@MS],..." (LINE: offset or line name; an empty
+ * CHIP searches every chip for the line name; /low: active low with the
+ * pull-up enabled; @MS: debounce time; KEY: a
  * single character, or up, down, left, right, pageup, pagedown, home, end,
  * insert, f1..f12, enter, esc, space, tab). Names point into buf, which is
  * modified. Returns the number of buttons, or -FX_EINVAL. */
