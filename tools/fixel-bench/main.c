@@ -718,7 +718,7 @@ static double primary(int w, const struct cell *c)
 
 static void print_table(FILE *o, int which)
 {
-    int ratio = opt_peers;
+    int ratio = 1;
     if (which == 0)
         fprintf(o, "TABLE 1  primary metric, median of %d trials  (~ spread>15%%, /k = ran prefix N/k)\n",
                 opt_t);

@@ -10,6 +10,17 @@
 #include <fixel/line.h>
 #include <fixel/surface.h>
 
+/* Modules still being written land one by one; each is wired in as soon as
+ * its header is on main, and its workloads show "-" until then. */
+#if __has_include(<fixel/fill.h>)
+#include <fixel/fill.h>
+#define HAVE_FILL 1
+#endif
+#if __has_include(<fixel/fractal.h>)
+#include <fixel/fractal.h>
+#define HAVE_FRACTAL 1
+#endif
+
 struct fxb {
     fx_surface s, src;
     fx_ctx c;
@@ -59,6 +70,53 @@ static void fx_w3(void *ctx, int n)
     }
 }
 
+#ifdef HAVE_FILL
+static void fx_w7(void *ctx, int n)
+{
+    struct fxb *b = ctx;
+    for (int i = 0; i < n; i++) {
+        const struct wl_poly *p = &WL->polys[i];
+        int32_t xy[2 * POLY_N];
+        for (int k = 0; k < POLY_N; k++) {
+            xy[2 * k] = p->x[k];
+            xy[2 * k + 1] = p->y[k];
+        }
+        fx_ctx_set_color(&b->c, OPAQUE(p->c));
+        fx_fill_poly(&b->c, xy, POLY_N, FX_FILL_EVENODD);
+    }
+}
+
+static void fx_w8(void *ctx, int n)
+{
+    struct fxb *b = ctx;
+    for (int i = 0; i < n; i++) {
+        const struct wl_tri *t = &WL->tris[i];
+        fx_ctx_set_color(&b->c, OPAQUE(t->c[0]));
+        fx_fill_tri(&b->c, t->x[0], t->y[0], t->x[1], t->y[1], t->x[2], t->y[2]);
+    }
+}
+
+static void fx_w8g(void *ctx, int n)
+{
+    struct fxb *b = ctx;
+    for (int i = 0; i < n; i++) {
+        const struct wl_tri *t = &WL->tris[i];
+        int32_t xy[6] = {t->x[0], t->y[0], t->x[1], t->y[1], t->x[2], t->y[2]};
+        fx_color col[3] = {OPAQUE(t->c[0]), OPAQUE(t->c[1]), OPAQUE(t->c[2])};
+        fx_fill_tri_gouraud(&b->c, xy, col);
+    }
+}
+#endif
+
+#ifdef HAVE_FRACTAL
+static void fx_w9(void *ctx, int n)
+{
+    struct fxb *b = ctx;
+    (void)n;
+    fx_mandel_w9(&b->s);
+}
+#endif
+
 static void fx_w10(void *ctx, int n)
 {
     struct fxb *b = ctx;
@@ -76,6 +134,14 @@ const struct peer peer_fixel = {
             [W1_CLEAR] = fx_w1,
             [W2_RECTS] = fx_w2,
             [W3_LINES] = fx_w3,
+#ifdef HAVE_FILL
+            [W7_POLYS] = fx_w7,
+            [W8_TRIS] = fx_w8,
+            [W8G_TRIS_GOURAUD] = fx_w8g,
+#endif
+#ifdef HAVE_FRACTAL
+            [W9_MANDEL] = fx_w9,
+#endif
             [W10_BLIT] = fx_w10,
         },
 };
