@@ -262,7 +262,7 @@ static int in_main_parts(int32_t x, int32_t y, int64_t margin)
         return 0;
     int64_t a = (int64_t)x - one / 4;
     int64_t q = a * a + yy;              /* Q.56, < 1.5 */
-    int64_t s = q + (a << 28);           /* Q.56 */
+    int64_t s = q + a * ((int64_t)1 << 28); /* Q.56 */
     int64_t hi, rhs_hi;
     uint64_t lo, rhs_lo;
     fx_smul64_wide(q, s, &hi, &lo);      /* Q.112 */
