@@ -1,0 +1,174 @@
+/* fixel — area fills: polygons (even-odd and nonzero), triangles, Gouraud
+ * shading, fill styles (patterns, shaders) and the triangle set-up that the
+ * 3D renderer builds on.
+ *
+ * Coverage rule (the one of DESIGN.md and of the benchmark's WORKLOADS.md
+ * section 3). Integer vertices are pixel centres: vertex (X, Y) lies on the
+ * centre of pixel (X, Y), so pixel (x, y) is sampled at vertex coordinates
+ * (x, y). 24.8 vertices (fx8) use the same frame scaled by 256. On row y an
+ * edge counts iff min(y0, y1) <= y < max(y0, y1) (so horizontal edges never
+ * count, and a vertex row belongs to the edge below it); its crossing is the
+ * exact rational xc = x0 + (y - y0)(x1 - x0)/(y1 - y0); the sorted crossings
+ * make spans ceil(xa) <= x < ceil(xb). Even-odd fills a pixel when an odd
+ * number of crossings have ceil(xc) <= x; nonzero when the signed count (+1
+ * for downward edges) is not 0. This is the top-left rule: a centre exactly
+ * on a left or top edge is in, on a right or bottom edge is out, so polygons
+ * sharing an edge cover every pixel along it exactly once. For integer
+ * vertices the pixels are exactly those of the benchmark's reference.
+ *
+ * Crossings are stepped exactly (integer quotient and remainder, set up with
+ * 128-bit products), so any int32 vertex works and the pixels never drift.
+ * Work is bounded by the visible rows and the edges active on them.
+ *
+ * Memory: the edge table lives in caller memory (fx_fill_path) or, for the
+ * convenience calls, in a stack array of FX_FILL_STACK_EDGES entries (about
+ * 3 KiB); a polygon with more edges than that makes them return -FX_E2BIG.
+ *
+ * Every fill ends in fx_fill_span, which honours c->fill_style (NULL: solid
+ * c->color), c->blend (FX_BLEND_OVER blends each pixel's colour with its own
+ * alpha, exactly as fx_blend_over), the clip rectangle and exterior clipping.
+ */
+#ifndef FIXEL_FILL_H
+#define FIXEL_FILL_H
+
+#include <stdint.h>
+#include "fixel/draw.h"
+#include "fixel/fixed.h"
+
+typedef enum fx_fill_rule { FX_FILL_EVENODD = 0, FX_FILL_NONZERO = 1 } fx_fill_rule;
+
+/* ---- fill styles ---- */
+
+/* Colours n pixels of row y starting at column x (surface coordinates) into
+ * out[0..n-1] (0xAARRGGBB; the alpha matters under FX_BLEND_OVER). */
+typedef void (*fx_shade_fn)(const void *user, int32_t y, int32_t x, int32_t n, fx_color *out);
+
+typedef enum fx_fill_kind {
+    FX_FILL_SOLID = 0,   /* c->color */
+    FX_FILL_PATTERN = 1, /* bitmap pattern, see below */
+    FX_FILL_SHADER = 2   /* colours from shade(user, ...): gradients, textures */
+} fx_fill_kind;
+
+/* Pattern: a w x h bitmap tiled from the anchor (ax, ay): pixel (x, y) takes
+ * bit ((x - ax) mod w, (y - ay) mod h); bit (i, j) is
+ * (bits[j * stride + i / 8] >> (7 - i % 8)) & 1, MSB first as patterns are
+ * written (0x80 is the leftmost pixel). Set bits get c->color; clear bits get
+ * bg, or are left untouched when bg_transparent is set. */
+typedef struct fx_fill_style {
+    fx_fill_kind kind;
+    const uint8_t *bits;
+    int32_t w, h, stride; /* 1 <= w, h; stride >= (w + 7) / 8 */
+    int32_t ax, ay;
+    fx_color bg;
+    uint8_t bg_transparent;
+    fx_shade_fn shade;
+    const void *user;
+} fx_fill_style;
+
+/* Fill [x0, x1) of row y with the context's fill style, clipped, honouring
+ * blending and exterior clipping: the building block of every fill. */
+void fx_fill_span(const fx_ctx *c, int32_t y, int32_t x0, int32_t x1);
+
+/* ---- polygons ---- */
+
+#define FX_FILL_STACK_EDGES 64
+
+/* An edge walker: x = ceil(crossing) on the current row in pixels, and
+ * e = x*d - numerator in [0, d); each row adds the step d*qs + rs. */
+typedef struct fx_tri_edge {
+    int64_t x, e, d, qs, rs;
+} fx_tri_edge;
+
+/* One edge of the edge table (sized here so callers can provide memory). */
+typedef struct fx_fill_edge {
+    fx_tri_edge g;
+    int32_t ystart, yend; /* visible rows [ystart, yend) */
+    int32_t dir;          /* +1 downward, -1 upward (nonzero rule) */
+    int32_t pad_;
+} fx_fill_edge;
+
+/* Filled polygon with n vertices xy[2i], xy[2i+1] (closed implicitly).
+ * fx_fill_poly: integer pixel-centre vertices, any int32. fx_fill_poly8: fx8.
+ * Returns 0, -FX_EINVAL (n < 0, NULL xy with n > 0) or -FX_E2BIG (more than
+ * FX_FILL_STACK_EDGES non-horizontal edges: use fx_fill_path). */
+int fx_fill_poly(const fx_ctx *c, const int32_t *xy, int32_t n, fx_fill_rule rule);
+int fx_fill_poly8(const fx_ctx *c, const fx8 *xy, int32_t n, fx_fill_rule rule);
+
+/* Several closed contours filled together (holes, glyphs): contour k has
+ * counts[k] vertices, taken in order from xy. frac_bits is 0 (integer
+ * vertices) or 8 (fx8). The edge table is edges[0..max_edges-1]. Returns 0,
+ * -FX_EINVAL or -FX_E2BIG when the table is too small. */
+int fx_fill_path(const fx_ctx *c, const int32_t *xy, const int32_t *counts, int32_t ncontours,
+                 unsigned frac_bits, fx_fill_rule rule, fx_fill_edge *edges, int32_t max_edges);
+
+/* Outline: the closed chain of Bresenham lines through the vertices, each
+ * vertex lit once (an edge lights its start pixel, not its end pixel). */
+void fx_polygon(const fx_ctx *c, const int32_t *xy, int32_t n);
+
+/* ---- triangles ---- */
+
+/* Flat triangle with integer pixel-centre vertices: exactly the pixels of the
+ * 3-vertex polygon (both rules agree). Vertices beyond +-2^22 take the general
+ * polygon path; nearer ones the two-edge fast path. */
+void fx_fill_tri(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2,
+                 int32_t y2);
+/* The same with fx8 vertices xy[0..5], |coordinate| < 2^30. */
+void fx_fill_tri8(const fx_ctx *c, const fx8 *xy);
+
+/* Gouraud: colours col[i] (ARGB, alpha included) at the vertices, each
+ * channel interpolated linearly and rounded to nearest; a pixel centre on a
+ * vertex gets exactly that vertex's colour. Coverage as fx_fill_tri. The fill
+ * style is ignored (the colours are the style); blending is honoured. */
+void fx_fill_tri_gouraud(const fx_ctx *c, const int32_t *xy, const fx_color *col);
+void fx_fill_tri_gouraud8(const fx_ctx *c, const fx8 *xy, const fx_color *col);
+/* Convex polygon, Gouraud-shaded as the fan (v0, vi, vi+1): the fan's
+ * triangles share edges, so every pixel is covered once. */
+void fx_fill_poly_gouraud(const fx_ctx *c, const int32_t *xy, const fx_color *col, int32_t n);
+
+/* ---- triangle set-up and span stepping (for the 3D renderer) ----
+ *
+ * fx_tri_begin sets up a triangle with fx8 vertices (|coordinate| < 2^30) and
+ * up to FX_TRI_MAX_ATTR int32 attributes per vertex (|value| < 2^30), clipped
+ * to clip. fx_tri_next_span then yields the covered spans row by row, top to
+ * bottom, with the coverage rule above. Attribute k is an affine function of
+ * the pixel centre, kept in Q32.32:
+ *   value(x, y) = fx_tri_attr_at(t, k, x, y)     (int64, Q32.32)
+ * and along a span it steps by t->gx[k] per pixel. Arithmetic is modulo 2^64
+ * (values are exact whenever the true value fits, which it does inside the
+ * triangle), so callers step with uint64_t and convert with
+ * fx_tri_attr_round. Gradients are exact to 2^-32 per pixel, so at a vertex's
+ * own pixel centre the rounded value is that vertex's attribute exactly. */
+#define FX_TRI_MAX_ATTR 8
+
+typedef struct fx_tri {
+    fx_rect clip;
+    int32_t y, ymid, yend; /* next row; row where the short edge changes; end */
+    int32_t nattr;
+    int32_t long_left;     /* 1 when the long edge is on the left */
+    fx_tri_edge lng, sht;  /* long edge, current short edge */
+    fx8 vx[3], vy[3];      /* sorted by y */
+    uint64_t c[FX_TRI_MAX_ATTR], gx[FX_TRI_MAX_ATTR], gy[FX_TRI_MAX_ATTR];
+} fx_tri;
+
+typedef struct fx_tri_span {
+    int32_t y, x0, x1; /* pixels [x0, x1) of row y, inside the clip, x0 < x1 */
+} fx_tri_span;
+
+/* Returns 1 when the triangle may cover pixels, 0 when it is empty
+ * (degenerate or outside clip), -FX_ERANGE when a bound is exceeded.
+ * attr: 3 * nattr values, vertex-major (attr[i * nattr + k]). */
+int fx_tri_begin(fx_tri *t, fx_rect clip, const fx8 *xy, const int32_t *attr, int32_t nattr);
+/* Next non-empty span; returns 0 when the triangle is done. */
+int fx_tri_next_span(fx_tri *t, fx_tri_span *s);
+
+static inline uint64_t fx_tri_attr_at(const fx_tri *t, int k, int32_t x, int32_t y)
+{
+    return t->c[k] + t->gx[k] * (uint64_t)(int64_t)x + t->gy[k] * (uint64_t)(int64_t)y;
+}
+/* Q32.32 (as stepped) -> nearest integer, ties up. */
+static inline int32_t fx_tri_attr_round(uint64_t v)
+{
+    return (int32_t)((int64_t)(v + 0x80000000u) >> 32);
+}
+
+#endif

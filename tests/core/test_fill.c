@@ -1,0 +1,418 @@
+/* Polygon, triangle and Gouraud fills against a pixel-centre reference
+ * rasterizer written here from the definition (WORKLOADS.md section 3,
+ * generalised to fx8 vertices and to the nonzero rule). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "fixel/error.h"
+#include "fixel/fill.h"
+#include "fx_test.h"
+
+#define W 64
+#define H 48
+
+static uint32_t img[H * W];
+
+static void setup(fx_surface *s, fx_ctx *c, uint32_t *buf)
+{
+    memset(buf, 0, sizeof(uint32_t) * W * H);
+    fx_surface_init(s, buf, W, H, W * 4, FX_FMT_XRGB8888);
+    fx_ctx_init(c, s);
+}
+
+static __int128 floordiv128(__int128 a, __int128 b)
+{
+    __int128 q = a / b;
+    return (a % b != 0 && ((a < 0) != (b < 0))) ? q - 1 : q;
+}
+
+/* The definition: row y samples vertex coordinate y << s; an edge counts iff
+ * min <= Y < max; crossing pixel = ceil(xc / 2^s); rule applied to the
+ * crossings sorted by that pixel. cover[] gets +1 for each filled pixel. */
+static void ref_fill(int *cover, const int64_t *xs, const int64_t *ys, int nv, unsigned s, int nonzero,
+                     fx_rect clip)
+{
+    for (int y = clip.y0; y < clip.y1; y++) {
+        __int128 Y = (__int128)y << s;
+        int64_t xc[64];
+        int dir[64], k = 0;
+        for (int i = 0; i < nv; i++) {
+            int j = (i + 1) % nv;
+            int64_t lo = ys[i] < ys[j] ? ys[i] : ys[j], hi = ys[i] < ys[j] ? ys[j] : ys[i];
+            if (!(lo <= Y && Y < hi))
+                continue;
+            /* ceil((x0*dy + (Y-y0)*dx) / (dy << s)) */
+            __int128 dy = (__int128)ys[j] - ys[i], dx = (__int128)xs[j] - xs[i];
+            __int128 num = (__int128)xs[i] * dy + (Y - ys[i]) * dx, den = dy * ((__int128)1 << s);
+            int64_t v = (int64_t)-floordiv128(-num, den);
+            int d = ys[j] > ys[i] ? 1 : -1, m = k++;
+            while (m > 0 && xc[m - 1] > v) {
+                xc[m] = xc[m - 1];
+                dir[m] = dir[m - 1];
+                m--;
+            }
+            xc[m] = v;
+            dir[m] = d;
+        }
+        for (int x = clip.x0; x < clip.x1; x++) {
+            int par = 0, wind = 0;
+            for (int i = 0; i < k; i++)
+                if (xc[i] <= x) {
+                    par ^= 1;
+                    wind += dir[i];
+                }
+            if (nonzero ? wind != 0 : par)
+                cover[y * W + x]++;
+        }
+    }
+}
+
+static int cover_ref[H * W];
+
+static int compare_img(const uint32_t *got, uint32_t col)
+{
+    int bad = 0;
+    for (int i = 0; i < W * H; i++)
+        bad += (got[i] == col) != (cover_ref[i] != 0);
+    return bad;
+}
+
+FX_TEST(fill_random_polygons_match_reference_both_rules)
+{
+    uint32_t seed = 777;
+    for (int iter = 0; iter < 600; iter++) {
+        int nv = 3 + (int)(fx_test_rand(&seed) % 9);
+        unsigned s = (iter & 1) ? 8 : 0;
+        int nonzero = (iter >> 1) & 1;
+        int32_t xy[24];
+        int64_t xs[12], ys[12];
+        int span = s ? 100 * 256 : 100;
+        for (int i = 0; i < nv; i++) {
+            xs[i] = xy[2 * i] = (int32_t)(fx_test_rand(&seed) % (uint32_t)span) - span / 5;
+            ys[i] = xy[2 * i + 1] = (int32_t)(fx_test_rand(&seed) % (uint32_t)(span * 3 / 4)) - span / 8;
+            if (i > 0 && fx_test_rand(&seed) % 8 == 0) { /* horizontal and repeated vertices */
+                ys[i] = xy[2 * i + 1] = xy[2 * i - 1];
+                if (fx_test_rand(&seed) % 2)
+                    xs[i] = xy[2 * i] = xy[2 * i - 2];
+            }
+        }
+        fx_surface sf;
+        fx_ctx c;
+        setup(&sf, &c, img);
+        fx_rect clip = {0, 0, W, H};
+        if (iter % 5 == 4) {
+            clip = (fx_rect){7, 5, 50, 40};
+            fx_ctx_set_clip(&c, clip);
+        }
+        fx_ctx_set_color(&c, 0xFFFFFFFF);
+        int r = s ? fx_fill_poly8(&c, xy, nv, nonzero ? FX_FILL_NONZERO : FX_FILL_EVENODD)
+                  : fx_fill_poly(&c, xy, nv, nonzero ? FX_FILL_NONZERO : FX_FILL_EVENODD);
+        FX_CHECK_EQ(r, 0);
+        memset(cover_ref, 0, sizeof cover_ref);
+        ref_fill(cover_ref, xs, ys, nv, s, nonzero, clip);
+        int bad = compare_img(img, 0xFFFFFF);
+        FX_CHECK_MSG(bad == 0, "iter %d (nv %d, s %u, nonzero %d): %d pixels differ", iter, nv, s, nonzero, bad);
+        if (bad)
+            return;
+    }
+}
+
+FX_TEST(fill_huge_coordinates_match_reference)
+{
+    uint32_t seed = 99;
+    for (int iter = 0; iter < 300; iter++) {
+        int nv = 3 + (int)(fx_test_rand(&seed) % 5);
+        int32_t xy[16];
+        int64_t xs[8], ys[8];
+        for (int i = 0; i < nv; i++) {
+            int big = fx_test_rand(&seed) % 2;
+            int32_t vx = big ? (int32_t)fx_test_rand(&seed) : (int32_t)(fx_test_rand(&seed) % 200) - 70;
+            int32_t vy = big ? (int32_t)fx_test_rand(&seed) : (int32_t)(fx_test_rand(&seed) % 150) - 50;
+            if (fx_test_rand(&seed) % 7 == 0)
+                vx = (fx_test_rand(&seed) & 1) ? INT32_MAX : INT32_MIN;
+            xs[i] = xy[2 * i] = vx;
+            ys[i] = xy[2 * i + 1] = vy;
+        }
+        unsigned s = iter % 3 == 0 ? 8 : 0;
+        int nonzero = iter % 2;
+        fx_surface sf;
+        fx_ctx c;
+        setup(&sf, &c, img);
+        int r = s ? fx_fill_poly8(&c, xy, nv, nonzero ? FX_FILL_NONZERO : FX_FILL_EVENODD)
+                  : fx_fill_poly(&c, xy, nv, nonzero ? FX_FILL_NONZERO : FX_FILL_EVENODD);
+        FX_CHECK_EQ(r, 0);
+        memset(cover_ref, 0, sizeof cover_ref);
+        ref_fill(cover_ref, xs, ys, nv, s, nonzero, (fx_rect){0, 0, W, H});
+        int bad = compare_img(img, 0xFFFFFF);
+        FX_CHECK_MSG(bad == 0, "iter %d: %d pixels differ", iter, bad);
+        if (bad)
+            return;
+        if (nv == 3 && !s) { /* the triangle fast path and its fallback */
+            setup(&sf, &c, img);
+            fx_fill_tri(&c, xy[0], xy[1], xy[2], xy[3], xy[4], xy[5]);
+            FX_CHECK_EQ(compare_img(img, 0xFFFFFF), 0);
+        }
+    }
+}
+
+FX_TEST(fill_triangles_match_reference)
+{
+    uint32_t seed = 4242;
+    for (int iter = 0; iter < 2000; iter++) {
+        unsigned s = iter % 2 ? 8 : 0;
+        int32_t xy[6];
+        int64_t xs[3], ys[3];
+        int span = s ? 90 * 256 : 90;
+        for (int i = 0; i < 3; i++) {
+            xs[i] = xy[2 * i] = (int32_t)(fx_test_rand(&seed) % (uint32_t)span) - span / 6;
+            ys[i] = xy[2 * i + 1] = (int32_t)(fx_test_rand(&seed) % (uint32_t)span) - span / 4;
+        }
+        if (iter % 7 == 0) /* flat top or bottom */
+            ys[1] = xy[3] = xy[1];
+        fx_surface sf;
+        fx_ctx c;
+        setup(&sf, &c, img);
+        if (s)
+            fx_fill_tri8(&c, xy);
+        else
+            fx_fill_tri(&c, xy[0], xy[1], xy[2], xy[3], xy[4], xy[5]);
+        memset(cover_ref, 0, sizeof cover_ref);
+        ref_fill(cover_ref, xs, ys, 3, s, 0, (fx_rect){0, 0, W, H});
+        int bad = compare_img(img, 0xFFFFFF);
+        FX_CHECK_MSG(bad == 0, "tri %d: %d pixels differ", iter, bad);
+        if (bad)
+            return;
+    }
+}
+
+/* A jittered grid split into triangles (both diagonals used, some vertices
+ * sub-pixel): every pixel of the covered area is hit exactly once. */
+static void mesh_test(unsigned s, uint32_t seed)
+{
+    enum { GX = 9, GY = 7 };
+    int32_t px[GY][GX], py[GY][GX];
+    int one = s ? 256 : 1;
+    for (int j = 0; j < GY; j++)
+        for (int i = 0; i < GX; i++) {
+            int jx = (i > 0 && i < GX - 1) ? (int)(fx_test_rand(&seed) % (3u * one)) - one : 0;
+            int jy = (j > 0 && j < GY - 1) ? (int)(fx_test_rand(&seed) % (3u * one)) - one : 0;
+            px[j][i] = (i * 8 - 4) * one + jx; /* starts off-surface: clipping too */
+            py[j][i] = (j * 8 - 3) * one + jy;
+        }
+    static int count[H * W];
+    memset(count, 0, sizeof count);
+    fx_rect clip = {0, 0, W, H};
+    for (int j = 0; j + 1 < GY; j++)
+        for (int i = 0; i + 1 < GX; i++) {
+            int32_t a[2] = {px[j][i], py[j][i]}, b[2] = {px[j][i + 1], py[j][i + 1]};
+            int32_t cc[2] = {px[j + 1][i + 1], py[j + 1][i + 1]}, d[2] = {px[j + 1][i], py[j + 1][i]};
+            int32_t tris[2][6];
+            if (fx_test_rand(&seed) & 1) {
+                int32_t t0[6] = {a[0], a[1], b[0], b[1], cc[0], cc[1]}, t1[6] = {a[0], a[1], cc[0], cc[1], d[0], d[1]};
+                memcpy(tris[0], t0, sizeof t0);
+                memcpy(tris[1], t1, sizeof t1);
+            } else {
+                int32_t t0[6] = {a[0], a[1], b[0], b[1], d[0], d[1]}, t1[6] = {b[0], b[1], cc[0], cc[1], d[0], d[1]};
+                memcpy(tris[0], t0, sizeof t0);
+                memcpy(tris[1], t1, sizeof t1);
+            }
+            for (int t = 0; t < 2; t++) {
+                fx8 v[6];
+                for (int k = 0; k < 6; k++)
+                    v[k] = s ? tris[t][k] : tris[t][k] * 256;
+                fx_tri tr;
+                fx_tri_span sp;
+                if (fx_tri_begin(&tr, clip, v, 0, 0) > 0)
+                    while (fx_tri_next_span(&tr, &sp))
+                        for (int x = sp.x0; x < sp.x1; x++)
+                            count[sp.y * W + x]++;
+            }
+        }
+    /* the mesh covers x in [-4, 60], y in [-3, 45] at the outer vertices */
+    int bad = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            int inside = x < 60 && y < 45;
+            if (count[y * W + x] != inside)
+                bad++;
+        }
+    FX_CHECK_MSG(bad == 0, "mesh s=%u: %d pixels not covered exactly once", s, bad);
+}
+
+FX_TEST(fill_triangle_mesh_covers_each_pixel_once)
+{
+    for (uint32_t k = 1; k < 40; k++) {
+        mesh_test(0, k * 31);
+        mesh_test(8, k * 17);
+    }
+}
+
+FX_TEST(fill_polygon_pair_shares_edge_without_gap)
+{
+    /* two quads sharing a slanted edge, filled with the polygon path */
+    uint32_t seed = 5;
+    for (int iter = 0; iter < 200; iter++) {
+        int32_t tx = (int32_t)(fx_test_rand(&seed) % 40) + 10, bx = (int32_t)(fx_test_rand(&seed) % 40) + 10;
+        int32_t left[8] = {0, 0, tx, 0, bx, 47, 0, 47}, right[8] = {tx, 0, 63, 0, 63, 47, bx, 47};
+        static int count[H * W];
+        memset(count, 0, sizeof count);
+        fx_fill_edge e[8];
+        fx_surface sf;
+        fx_ctx c;
+        for (int side = 0; side < 2; side++) {
+            setup(&sf, &c, img);
+            int32_t n = 4;
+            FX_CHECK_EQ(fx_fill_path(&c, side ? right : left, &n, 1, 0, FX_FILL_NONZERO, e, 8), 0);
+            for (int i = 0; i < W * H; i++)
+                count[i] += img[i] != 0;
+        }
+        int bad = 0;
+        for (int y = 0; y < 47; y++)
+            for (int x = 0; x < 63; x++)
+                bad += count[y * W + x] != 1;
+        FX_CHECK_EQ(bad, 0);
+    }
+}
+
+FX_TEST(fill_path_reports_small_table_and_bad_args)
+{
+    fx_surface sf;
+    fx_ctx c;
+    setup(&sf, &c, img);
+    int32_t sq[8] = {1, 1, 20, 1, 20, 20, 1, 20}, n = 4;
+    fx_fill_edge e[2];
+    FX_CHECK_EQ(fx_fill_path(&c, sq, &n, 1, 0, FX_FILL_EVENODD, e, 1), -FX_E2BIG);
+    FX_CHECK_EQ(fx_fill_path(&c, sq, &n, 1, 3, FX_FILL_EVENODD, e, 2), -FX_EINVAL);
+    FX_CHECK_EQ(fx_fill_path(&c, sq, &n, 1, 0, FX_FILL_EVENODD, e, 2), 0);
+    FX_CHECK_EQ(img[1 * W + 1], 0xFFFFFF);  /* top-left corner pixel is in */
+    FX_CHECK_EQ(img[19 * W + 19], 0xFFFFFF);
+    FX_CHECK_EQ(img[20 * W + 19], 0);       /* bottom and right edges are out */
+    FX_CHECK_EQ(img[19 * W + 20], 0);
+    FX_CHECK_EQ(fx_fill_poly(&c, sq, -1, FX_FILL_EVENODD), -FX_EINVAL);
+    /* a square with a hole: two contours */
+    setup(&sf, &c, img);
+    int32_t two[16] = {0, 0, 30, 0, 30, 30, 0, 30, 10, 10, 20, 10, 20, 20, 10, 20}, cnt[2] = {4, 4};
+    fx_fill_edge e8[8];
+    FX_CHECK_EQ(fx_fill_path(&c, two, cnt, 2, 0, FX_FILL_EVENODD, e8, 8), 0);
+    FX_CHECK_EQ(img[5 * W + 5], 0xFFFFFF);
+    FX_CHECK_EQ(img[15 * W + 15], 0);
+    /* same orientation: nonzero fills the hole */
+    setup(&sf, &c, img);
+    FX_CHECK_EQ(fx_fill_path(&c, two, cnt, 2, 0, FX_FILL_NONZERO, e8, 8), 0);
+    FX_CHECK_EQ(img[15 * W + 15], 0xFFFFFF);
+}
+
+static double exact_attr(const int64_t *vx, const int64_t *vy, const double *a, double x, double y)
+{
+    double e1x = (double)(vx[1] - vx[0]), e1y = (double)(vy[1] - vy[0]);
+    double e2x = (double)(vx[2] - vx[0]), e2y = (double)(vy[2] - vy[0]);
+    double px = x - (double)vx[0], py = y - (double)vy[0], ar = e1x * e2y - e1y * e2x;
+    double l1 = (px * e2y - py * e2x) / ar, l2 = (e1x * py - e1y * px) / ar;
+    return a[0] + (a[1] - a[0]) * l1 + (a[2] - a[0]) * l2;
+}
+
+FX_TEST(fill_gouraud_exact_at_vertices_and_linear)
+{
+    uint32_t seed = 31337;
+    for (int iter = 0; iter < 400; iter++) {
+        int32_t xy[6];
+        fx_color col[3];
+        int64_t vx[3], vy[3];
+        for (int i = 0; i < 3; i++) {
+            vx[i] = xy[2 * i] = (int32_t)(fx_test_rand(&seed) % 70) - 3;
+            vy[i] = xy[2 * i + 1] = (int32_t)(fx_test_rand(&seed) % 54) - 3;
+            col[i] = 0xFF000000u | (fx_test_rand(&seed) & 0xFFFFFF);
+        }
+        fx_surface sf;
+        fx_ctx c;
+        setup(&sf, &c, img);
+        memset(img, 0xAB, sizeof img);
+        fx_fill_tri_gouraud(&c, xy, col);
+        memset(cover_ref, 0, sizeof cover_ref);
+        ref_fill(cover_ref, vx, vy, 3, 0, 0, (fx_rect){0, 0, W, H});
+        int bad = 0, far = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                uint32_t p = img[y * W + x];
+                if (!cover_ref[y * W + x]) {
+                    bad += p != 0xABABABABu;
+                    continue;
+                }
+                for (int ch = 0; ch < 3; ch++) {
+                    double a[3] = {(col[0] >> (8 * ch)) & 0xFF, (col[1] >> (8 * ch)) & 0xFF,
+                                   (col[2] >> (8 * ch)) & 0xFF};
+                    double e = exact_attr(vx, vy, a, x, y);
+                    double got = (p >> (8 * ch)) & 0xFF;
+                    if (got - e > 0.5001 || e - got > 0.5001)
+                        far++;
+                }
+                for (int v = 0; v < 3; v++)
+                    if (x == vx[v] && y == vy[v])
+                        bad += (p & 0xFFFFFF) != (col[v] & 0xFFFFFF);
+            }
+        FX_CHECK_MSG(bad == 0 && far == 0, "gouraud %d: %d wrong, %d off by more than rounding", iter, bad, far);
+        if (bad || far)
+            return;
+    }
+}
+
+FX_TEST(fill_tri_attributes_for_3d)
+{
+    /* a wide attribute (z-like, 2^29) interpolated from sub-pixel vertices */
+    fx8 v[6] = {10 * 256 + 77, 3 * 256 + 10, 60 * 256 + 5, 20 * 256 + 128, 20 * 256 + 200, 45 * 256 + 3};
+    int32_t attr[6] = {0, -5, 1 << 29, 1000, 12345, 1 << 28};
+    fx_tri t;
+    FX_CHECK_EQ(fx_tri_begin(&t, (fx_rect){0, 0, W, H}, v, attr, 2), 1);
+    int64_t vx[3] = {v[0], v[2], v[4]}, vy[3] = {v[1], v[3], v[5]};
+    double a0[3] = {0, 1 << 29, 12345}, a1[3] = {-5, 1000, 1 << 28};
+    fx_tri_span s;
+    int spans = 0, bad = 0;
+    while (fx_tri_next_span(&t, &s)) {
+        spans++;
+        uint64_t z = fx_tri_attr_at(&t, 0, s.x0, s.y), w = fx_tri_attr_at(&t, 1, s.x0, s.y);
+        for (int x = s.x0; x < s.x1; x++) {
+            double e0 = exact_attr(vx, vy, a0, x * 256.0, s.y * 256.0);
+            double e1 = exact_attr(vx, vy, a1, x * 256.0, s.y * 256.0);
+            double g0 = (double)(int64_t)z / 4294967296.0, g1 = (double)(int64_t)w / 4294967296.0;
+            if (g0 - e0 > 0.01 || e0 - g0 > 0.01 || g1 - e1 > 0.01 || e1 - g1 > 0.01)
+                bad++;
+            z += t.gx[0];
+            w += t.gx[1];
+        }
+    }
+    FX_CHECK(spans > 20);
+    FX_CHECK_EQ(bad, 0);
+    /* degenerate and out of range */
+    fx8 line[6] = {0, 0, 256, 256, 512, 512};
+    FX_CHECK_EQ(fx_tri_begin(&t, (fx_rect){0, 0, W, H}, line, 0, 0), 0);
+    fx8 far[6] = {0, 0, 1 << 30, 0, 0, 256};
+    FX_CHECK_EQ(fx_tri_begin(&t, (fx_rect){0, 0, W, H}, far, 0, 0), -FX_ERANGE);
+}
+
+FX_TEST(fill_honours_blend_and_pattern)
+{
+    fx_surface sf;
+    fx_ctx c;
+    setup(&sf, &c, img);
+    for (int i = 0; i < W * H; i++)
+        img[i] = 0x204080;
+    fx_ctx_set_color(&c, 0x80FF0000u);
+    c.blend = FX_BLEND_OVER;
+    fx_fill_tri(&c, 0, 0, 40, 0, 0, 40);
+    FX_CHECK_EQ_HEX(img[1 * W + 1], fx_blend_over(FX_FMT_XRGB8888, 0x204080, 0x80FF0000u));
+    FX_CHECK_EQ_HEX(img[45 * W + 60], 0x204080);
+    /* checkerboard pattern anchored at (1, 0), transparent background */
+    static const uint8_t bits[2] = {0x80, 0x40};
+    fx_fill_style st = {.kind = FX_FILL_PATTERN, .bits = bits, .w = 2, .h = 2, .stride = 1, .ax = 1, .ay = 0,
+                        .bg_transparent = 1};
+    setup(&sf, &c, img);
+    c.fill_style = &st;
+    fx_ctx_set_color(&c, 0xFF00FF00u);
+    int32_t sq[8] = {0, 0, 10, 0, 10, 10, 0, 10};
+    FX_CHECK_EQ(fx_fill_poly(&c, sq, 4, FX_FILL_EVENODD), 0);
+    for (int y = 0; y < 10; y++)
+        for (int x = 0; x < 10; x++) {
+            int on = (((x - 1) & 1) == (y & 1));
+            FX_CHECK_EQ_HEX(img[y * W + x], on ? 0x00FF00u : 0u);
+        }
+}
