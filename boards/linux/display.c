@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/epoll.h>
+#include <unistd.h>
 
 #include "display_int.h"
 #include "fixel/error.h"
@@ -113,7 +115,8 @@ static int mem_dispatch(fx_display *d) { (void)d; return 0; }
 static int mem_fd(const fx_display *d) { (void)d; return -1; }
 static void mem_close(fx_display *d) { free(d->memory_mem); d->memory_mem = NULL; }
 
-static const struct fx_backend_ops mem_ops = {mem_show, mem_wait, mem_dispatch, mem_fd, mem_close};
+static const struct fx_backend_ops mem_ops = {mem_show, mem_wait, mem_dispatch, mem_fd, mem_close,
+                                              NULL, NULL};
 
 static int memory_open(fx_display *d)
 {
@@ -222,6 +225,7 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
     d->log_user = opt->log_user;
     d->log_priority = opt->log_priority ? opt->log_priority : env_log_priority();
     d->shown = -1;
+    d->epoll_fd = -1;
 
     if (d->opt.rotation < 0) {
         const char *e = getenv("FIXEL_ROTATION");
@@ -305,6 +309,19 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
     }
     if (d->opt.signals && d->info.backend != FX_BACKEND_MEMORY)
         fx_signals_register(d);
+    d->info.vt = fx_vt_number(d->vt);
+
+    /* One fd for event loops: flip events and VT switch requests. */
+    int fds[2] = {d->ops->fd(d), fx_vt_event_fd(d->vt)};
+    d->epoll_fd = -1;
+    if (fds[0] >= 0 || fds[1] >= 0) {
+        d->epoll_fd = epoll_create1(EPOLL_CLOEXEC);
+        for (int i = 0; i < 2 && d->epoll_fd >= 0; i++) {
+            struct epoll_event ev = {.events = EPOLLIN, .data.fd = fds[i]};
+            if (fds[i] >= 0 && epoll_ctl(d->epoll_fd, EPOLL_CTL_ADD, fds[i], &ev) < 0)
+                fx_display_log(d, FX_LOG_ERROR, "epoll_ctl: %s", strerror(errno));
+        }
+    }
     *out = d;
     return 0;
 }
@@ -321,6 +338,8 @@ void fx_display_close(fx_display *d)
         d->ops->close(d);
     if (d->vt)
         fx_vt_leave(d->vt);
+    if (d->epoll_fd >= 0)
+        close(d->epoll_fd);
     free(d->shadow_mem);
     free(d);
 }
@@ -343,6 +362,7 @@ static void wait_flip(fx_display *d)
 
 fx_surface fx_display_surface(fx_display *d)
 {
+    fx_vt_handle_events(d);
     if (d->info.present == FX_PRESENT_SHADOW)
         return d->shadow;
     wait_flip(d);
@@ -379,6 +399,11 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n)
     if (cur.n == 0)
         return 0;
 
+    fx_vt_handle_events(d);
+    /* Switched away, fbdev memory shows another VT's console: leave it
+     * alone; the return to our VT redraws from the shadow. */
+    if (d->away && d->info.backend == FX_BACKEND_FBDEV)
+        return 0;
     wait_flip(d);
     int target = d->nbuf == 2 ? d->back : 0;
     if (d->info.present == FX_PRESENT_SHADOW) {
@@ -396,7 +421,9 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n)
     }
     for (int i = 0; i < cur.n; i++)
         phys[i] = fx_rect_rotate(cur.r[i], d->opt.rotation, d->info.width, d->info.height);
-    r = d->ops->show(d, target, phys, cur.n);
+    /* DRM buffers are ours even while away: keep the bookkeeping as if
+     * shown, so the return puts the latest frame up. */
+    r = d->away ? 0 : d->ops->show(d, target, phys, cur.n);
     if (r < 0)
         return r;
     d->shown = target;
@@ -412,12 +439,62 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n)
 
 int fx_display_fd(const fx_display *d)
 {
-    return d->ops->fd(d);
+    return d->epoll_fd;
 }
 
 int fx_display_dispatch(fx_display *d)
 {
+    fx_vt_handle_events(d);
     return d->ops->dispatch(d);
+}
+
+/* ---- VT switching ------------------------------------------------------- */
+
+int fx_display_vt_release(fx_display *d)
+{
+    if (d->opt.vt_switch == FX_VT_SWITCH_DENY) {
+        d->info.vt_refused++;
+        fx_display_log(d, FX_LOG_DEBUG, "VT switch refused (kiosk policy)");
+        return 0;
+    }
+    wait_flip(d);
+    if (d->ops->suspend)
+        d->ops->suspend(d);
+    d->away = 1;
+    d->info.vt_away++;
+    fx_display_log(d, FX_LOG_DEBUG, "VT switched away: display released");
+    if (d->vt_cb)
+        d->vt_cb(d, 0, d->vt_user);
+    return 1;
+}
+
+void fx_display_vt_acquire(fx_display *d)
+{
+    if (d->ops->resume && d->ops->resume(d) < 0)
+        fx_display_log(d, FX_LOG_ERROR, "back on our VT but the display could not be retaken");
+    if (d->info.backend == FX_BACKEND_FBDEV && d->info.present == FX_PRESENT_SHADOW && d->shown >= 0)
+        fx_copy_rotated(&d->scan[d->shown], &d->shadow, fx_surface_rect(&d->shadow), d->opt.rotation);
+    d->away = 0;
+    d->info.vt_back++;
+    fx_display_log(d, FX_LOG_DEBUG, "back on our VT: display retaken");
+    if (d->vt_cb)
+        d->vt_cb(d, 1, d->vt_user);
+}
+
+void fx_display_set_vt_callback(fx_display *d, void (*cb)(fx_display *, int, void *), void *user)
+{
+    d->vt_cb = cb;
+    d->vt_user = user;
+}
+
+int fx_display_active(const fx_display *d)
+{
+    return !d->away;
+}
+
+int fx_display_switch_vt(fx_display *d, int n)
+{
+    return d->vt ? fx_vt_activate(d->vt, n) : -FX_ENOTSUP;
 }
 
 int fx_display_wait(fx_display *d, int timeout_ms)

@@ -71,6 +71,10 @@ struct fx_backend_ops {
     int (*dispatch)(fx_display *d);
     int (*fd)(const fx_display *d);
     void (*close)(fx_display *d);
+    /* VT switched away: give the device up (DRM master). */
+    int (*suspend)(fx_display *d);
+    /* VT back: take it again and show buffer d->shown as it is. */
+    int (*resume)(fx_display *d);
 };
 
 typedef struct fx_vt fx_vt;
@@ -103,6 +107,10 @@ struct fx_display {
     void *flip_user;
 
     fx_vt *vt;
+    int epoll_fd;           /* DRM fd + VT signal pipe, for event loops */
+    int away;               /* our VT is not on screen */
+    void (*vt_cb)(fx_display *d, int active, void *user);
+    void *vt_user;
 };
 
 void fx_display_logv(const fx_display *d, fx_log_priority p, const char *fmt, va_list ap);
@@ -121,6 +129,16 @@ void fx_drm_emergency_restore(void *priv);
 /* Console: switch to graphics and mute the keyboard; restore. */
 int fx_vt_enter(fx_display *d, fx_vt **out);
 void fx_vt_leave(fx_vt *vt);
+/* VT_PROCESS switching: the fd that becomes readable when a switch is
+ * requested (-1 when switching is not handled), and the handler that reads
+ * it and calls back into display.c (fx_display_vt_release/acquire). */
+int fx_vt_event_fd(const fx_vt *vt);
+void fx_vt_handle_events(fx_display *d);
+int fx_vt_number(const fx_vt *vt);
+int fx_vt_activate(fx_vt *vt, int n);
+/* display.c: leave or retake the screen; release returns 1 to allow. */
+int fx_display_vt_release(fx_display *d);
+void fx_display_vt_acquire(fx_display *d);
 
 /* Fatal/terminating-signal restoration: each open display registers its
  * backend restore and console. */

@@ -361,7 +361,29 @@ void fx_drm_emergency_restore(void *priv)
         ioctl(p->fd, DRM_IOCTL_MODE_SETCRTC, &p->emergency);
 }
 
-static const struct fx_backend_ops drm_ops = {drm_show, drm_wait, drm_dispatch, drm_fd, drm_close};
+static int drm_suspend(fx_display *d)
+{
+    struct drm_priv *p = d->priv;
+    /* Without master the console (or the next program) can set its mode. */
+    return drmDropMaster(p->fd) < 0 ? neg_errno() : 0;
+}
+
+static int drm_resume(fx_display *d)
+{
+    struct drm_priv *p = d->priv;
+    if (drmSetMaster(p->fd) < 0) {
+        fx_display_log(d, FX_LOG_ERROR, "%s: cannot retake DRM master: %s", d->device, strerror(errno));
+        return neg_errno();
+    }
+    if (set_crtc(p, d->shown < 0 ? 0 : d->shown) < 0) {
+        fx_display_log(d, FX_LOG_ERROR, "SetCrtc after VT switch: %s", strerror(errno));
+        return neg_errno();
+    }
+    return 0;
+}
+
+static const struct fx_backend_ops drm_ops = {drm_show, drm_wait, drm_dispatch, drm_fd, drm_close,
+                                              drm_suspend, drm_resume};
 
 /* ---- open --------------------------------------------------------------- */
 

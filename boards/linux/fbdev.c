@@ -108,7 +108,22 @@ static void fb_close(fx_display *d)
     d->priv = NULL;
 }
 
-static const struct fx_backend_ops fb_ops = {fb_show, fb_wait, fb_dispatch, fb_fd, fb_close};
+static int fb_resume(fx_display *d)
+{
+    struct fb_priv *p = d->priv;
+    /* The console may have panned; put our shown page back. */
+    if (d->nbuf == 2) {
+        struct fb_var_screeninfo v = p->var;
+        v.xoffset = 0;
+        v.yoffset = (uint32_t)(d->shown < 0 ? 0 : d->shown) * p->var.yres;
+        if (ioctl(p->fd, FBIOPAN_DISPLAY, &v) < 0)
+            return -errno;
+    }
+    return 0;
+}
+
+static const struct fx_backend_ops fb_ops = {fb_show, fb_wait, fb_dispatch, fb_fd, fb_close, NULL,
+                                             fb_resume};
 
 static int try_double_buffer(struct fb_priv *p)
 {

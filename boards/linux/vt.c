@@ -14,8 +14,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/ioctl.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -24,16 +26,34 @@
 
 struct fx_vt {
     int fd;
+    int num;        /* N of /dev/ttyN */
     int old_mode;   /* KD_TEXT or KD_GRAPHICS as found */
     int old_kbmode; /* K_XLATE, K_UNICODE, ... as found */
     int kb_changed;
+    int switching;  /* VT_PROCESS set by us */
+    struct vt_mode old_vtmode;
+    int pipe_r;     /* SIGUSR1/SIGUSR2 arrive here as 'r'/'a' */
 };
+
+/* The write end for the switch-signal handler: one VT per process can be
+ * in VT_PROCESS mode for us, so one global suffices. */
+static volatile int vt_sig_fd = -1;
+static struct sigaction old_usr1, old_usr2;
 
 static int is_vt(int fd)
 {
     int mode;
     struct vt_stat st;
     return ioctl(fd, KDGETMODE, &mode) == 0 && ioctl(fd, VT_GETSTATE, &st) == 0;
+}
+
+static int vt_num_of(int fd)
+{
+    struct stat st;
+    /* VT minors 1..63 are /dev/tty1..63 (major 4). */
+    if (fstat(fd, &st) == 0 && major(st.st_rdev) == 4 && minor(st.st_rdev) >= 1 && minor(st.st_rdev) < 64)
+        return (int)minor(st.st_rdev);
+    return 0;
 }
 
 static int open_active_vt(fx_display *d)
@@ -70,6 +90,102 @@ static int open_active_vt(fx_display *d)
     return fd;
 }
 
+static void on_switch_signal(int sig)
+{
+    int saved_errno = errno;
+    char c = sig == SIGUSR1 ? 'r' : 'a';
+    if (vt_sig_fd >= 0 && write(vt_sig_fd, &c, 1) < 0) {
+        /* a full pipe already holds a wake-up; nothing else to do */
+    }
+    errno = saved_errno;
+}
+
+static int default_action(int sig)
+{
+    struct sigaction cur;
+    return sigaction(sig, NULL, &cur) == 0 && !(cur.sa_flags & SA_SIGINFO) && cur.sa_handler == SIG_DFL;
+}
+
+/* VT_PROCESS: the kernel asks (SIGUSR1) before switching away and tells
+ * (SIGUSR2) when we are back, so the display can be dropped and retaken
+ * cleanly, or the switch refused (kiosk). */
+static void setup_switching(fx_display *d, fx_vt *vt)
+{
+    fx_vt_switch policy = d->opt.vt_switch;
+    const char *e = getenv("FIXEL_VT_SWITCH");
+    if (e && !strcasecmp(e, "deny"))
+        policy = FX_VT_SWITCH_DENY;
+    else if (e && !strcasecmp(e, "allow"))
+        policy = FX_VT_SWITCH_ALLOW;
+    d->opt.vt_switch = policy;
+    if (vt_sig_fd >= 0 || !default_action(SIGUSR1) || !default_action(SIGUSR2)) {
+        fx_display_log(d, FX_LOG_INFO, "SIGUSR1/SIGUSR2 are in use; VT switches are not handled");
+        return;
+    }
+    int p[2];
+    if (ioctl(vt->fd, VT_GETMODE, &vt->old_vtmode) < 0 || pipe2(p, O_CLOEXEC | O_NONBLOCK) < 0)
+        return;
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_switch_signal;
+    sa.sa_flags = SA_RESTART;
+    sigemptyset(&sa.sa_mask);
+    vt_sig_fd = p[1];
+    sigaction(SIGUSR1, &sa, &old_usr1);
+    sigaction(SIGUSR2, &sa, &old_usr2);
+    struct vt_mode m = {.mode = VT_PROCESS, .relsig = SIGUSR1, .acqsig = SIGUSR2};
+    if (ioctl(vt->fd, VT_SETMODE, &m) < 0) {
+        fx_display_log(d, FX_LOG_INFO, "VT_SETMODE VT_PROCESS refused (%s)", strerror(errno));
+        sigaction(SIGUSR1, &old_usr1, NULL);
+        sigaction(SIGUSR2, &old_usr2, NULL);
+        vt_sig_fd = -1;
+        close(p[0]);
+        close(p[1]);
+        return;
+    }
+    vt->pipe_r = p[0];
+    vt->switching = 1;
+    fx_display_log(d, FX_LOG_DEBUG, "VT %d: switching %s", vt->num,
+                   policy == FX_VT_SWITCH_DENY ? "refused (kiosk)" : "handled");
+}
+
+int fx_vt_event_fd(const fx_vt *vt)
+{
+    return vt && vt->switching ? vt->pipe_r : -1;
+}
+
+int fx_vt_number(const fx_vt *vt)
+{
+    return vt ? vt->num : 0;
+}
+
+int fx_vt_activate(fx_vt *vt, int n)
+{
+    if (!vt || n < 1 || n > 63)
+        return -FX_EINVAL;
+    return ioctl(vt->fd, VT_ACTIVATE, n) < 0 ? -errno : 0;
+}
+
+void fx_vt_handle_events(fx_display *d)
+{
+    fx_vt *vt = d->vt;
+    char buf[16];
+    ssize_t n;
+    if (!vt || !vt->switching)
+        return;
+    while ((n = read(vt->pipe_r, buf, sizeof buf)) > 0) {
+        for (ssize_t i = 0; i < n; i++) {
+            if (buf[i] == 'r') {
+                int allow = fx_display_vt_release(d);
+                ioctl(vt->fd, VT_RELDISP, allow ? 1 : 0);
+            } else {
+                ioctl(vt->fd, VT_RELDISP, VT_ACKACQ);
+                fx_display_vt_acquire(d);
+            }
+        }
+    }
+}
+
 int fx_vt_enter(fx_display *d, fx_vt **out)
 {
     *out = NULL;
@@ -82,6 +198,8 @@ int fx_vt_enter(fx_display *d, fx_vt **out)
         return -FX_ENOMEM;
     }
     vt->fd = fd;
+    vt->num = vt_num_of(fd);
+    vt->pipe_r = -1;
     if (ioctl(fd, KDGETMODE, &vt->old_mode) < 0 || ioctl(fd, KDGKBMODE, &vt->old_kbmode) < 0) {
         int e = errno;
         fx_display_log(d, FX_LOG_INFO, "console ioctls refused (%s); console left alone", strerror(e));
@@ -101,6 +219,7 @@ int fx_vt_enter(fx_display *d, fx_vt **out)
     else
         fx_display_log(d, FX_LOG_INFO, "cannot mute the console keyboard (%s)", strerror(errno));
     *out = vt;
+    setup_switching(d, vt);
     return 0;
 }
 
@@ -108,6 +227,8 @@ void fx_vt_emergency_restore(fx_vt *vt)
 {
     if (!vt)
         return;
+    if (vt->switching)
+        ioctl(vt->fd, VT_SETMODE, &vt->old_vtmode);
     if (vt->kb_changed)
         ioctl(vt->fd, KDSKBMODE, vt->old_kbmode);
     ioctl(vt->fd, KDSETMODE, vt->old_mode);
@@ -121,6 +242,15 @@ void fx_vt_leave(fx_vt *vt)
      * raced in so the shell does not run half a command. */
     tcflush(vt->fd, TCIFLUSH);
     fx_vt_emergency_restore(vt);
+    if (vt->switching) {
+        sigaction(SIGUSR1, &old_usr1, NULL);
+        sigaction(SIGUSR2, &old_usr2, NULL);
+        int w = vt_sig_fd;
+        vt_sig_fd = -1;
+        if (w >= 0)
+            close(w);
+        close(vt->pipe_r);
+    }
     close(vt->fd);
     free(vt);
 }

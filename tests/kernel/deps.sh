@@ -6,11 +6,6 @@ set -eu
 APT="apt-get -o DPkg::Lock::Timeout=300 -y -q --no-install-recommends"
 export DEBIAN_FRONTEND=noninteractive
 
-if [ "$(id -u)" != 0 ]; then
-    echo "deps.sh: must run as root (apt-get install)" >&2
-    exit 1
-fi
-
 need=""
 for p in qemu-system-x86 qemu-system-arm busybox-static cpio kmod xz-utils make gcc \
          libdrm-dev libevdev-dev libgpiod-dev gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
@@ -18,9 +13,17 @@ for p in qemu-system-x86 qemu-system-arm busybox-static cpio kmod xz-utils make 
     dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed' || need="$need $p"
 done
 
+as_root() {
+    if [ "$(id -u)" != 0 ]; then
+        echo "deps.sh: missing packages or the arm64 architecture; run as root: sh $0" >&2
+        exit 1
+    fi
+}
+
 # arm64 guest programs link the arm64 static libdrm/libevdev/libgpiod; libpng
 # and zlib make `make BOARD=qemu-arm64` (or rpi4/rpi5) build the whole library.
 if ! dpkg --print-foreign-architectures | grep -qx arm64; then
+    as_root
     dpkg --add-architecture arm64
     updated=no
 else
@@ -31,6 +34,7 @@ for p in libdrm-dev:arm64 libevdev-dev:arm64 libgpiod-dev:arm64 libpng-dev:arm64
 done
 
 if [ -n "$need" ] || [ "$updated" = no ]; then
+    as_root
     $APT update >/dev/null
     if [ -n "$need" ]; then
         echo "deps.sh: installing$need"

@@ -100,7 +100,7 @@ if [ ! -f "$D/src.stamp" ]; then
     mkdir -p "$D/gpio-sim"
     cp "$D/src/$top/drivers/gpio/gpio-sim.c" "$D/src/$top/drivers/gpio/gpiolib.h" \
        "$D/src/$top/kernel/irq/irq_sim.c" "$D/gpio-sim/"
-    rm -rf "$D/src"
+    rm -rf "$D/src" "$D"/debs/linux-source-*.deb
     # irq_to_desc() is not exported to modules; generic_handle_irq() does the
     # same dispatch through an exported symbol (CONFIG_IRQ_SIM is off, so
     # irq_sim.c must be built into the module).

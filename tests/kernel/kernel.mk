@@ -4,7 +4,8 @@
 # the library sources compiled here per architecture.
 
 KT_DIR   := tests/kernel
-KT_CACHE ?= $(KT_DIR)/cache
+# FIXEL_KERNEL_CACHE lets several work trees share one download.
+KT_CACHE ?= $(or $(FIXEL_KERNEL_CACHE),$(KT_DIR)/cache)
 KT_BUILD := build/kernel
 KT_ARCHES := x86_64 aarch64
 KT_CC_x86_64  := gcc

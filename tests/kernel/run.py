@@ -180,6 +180,9 @@ class Guest:
     def screen(self, qmp, args):
         name, w, h, rot, spec = args[0], int(args[1]), int(args[2]), int(args[3]), args[4]
         lw, lh = (h, w) if rot in (90, 270) else (w, h)
+        negate = spec.startswith("!")
+        if negate:
+            spec = spec[1:]
         want = rotate(self.r.expected(spec, lw, lh), lw, lh, rot)
         path = os.path.join(self.work, "screen-%s-%s.ppm" % (self.arch, name))
         # fbdev emulation flushes from a deferred worker: a dump right after
@@ -190,9 +193,14 @@ class Guest:
             sw, sh, got = read_ppm(path)
             if (sw, sh) != (w, h):
                 detail = "screen is %dx%d, guest said %dx%d" % (sw, sh, w, h)
-            elif got == want:
+            elif got == want and not negate:
                 self.check(name, True, "%d pixels equal (%s, rotation %d, dump %d)" % (w * h, spec, rot, tries))
                 return True
+            elif got != want and negate:
+                self.check(name, True, "screen differs from %s as expected (dump %d)" % (spec, tries))
+                return True
+            elif negate:
+                detail = "screen still shows %s" % spec
             else:
                 bad = [i for i in range(0, len(want), 3) if got[i:i + 3] != want[i:i + 3]]
                 i = bad[0] // 3

@@ -51,6 +51,14 @@ typedef enum fx_present_mode {
     FX_PRESENT_SHADOW,
 } fx_present_mode;
 
+/* What happens when another VT is asked for (chvt, logind, a Ctrl-Alt-Fn
+ * the program forwards with fx_display_switch_vt). */
+typedef enum fx_vt_switch {
+    FX_VT_SWITCH_ALLOW, /* FIXEL_VT_SWITCH=deny|allow, else allow: drop the display
+                           while away (DRM master released), redraw on return */
+    FX_VT_SWITCH_DENY,  /* kiosk: refuse every switch away from the program's VT */
+} fx_vt_switch;
+
 /* Lower is more important, as in syslog. */
 typedef enum fx_log_priority {
     FX_LOG_ERROR = 10,
@@ -72,6 +80,8 @@ typedef struct fx_display_options {
     int rotation;          /* 0, 90, 180, 270; -1 = FIXEL_ROTATION or 0 */
     int console;           /* 1: KD_GRAPHICS + keyboard off while open (default); 0: leave the VT alone */
     int signals;           /* 1: restore the console/CRTC on fatal and terminating signals (default) */
+    fx_vt_switch vt_switch; /* VT switching policy (needs console = 1; uses SIGUSR1/SIGUSR2
+                               when the program leaves them at their default) */
     int fb_force_refresh;  /* fbdev: FB_ACTIVATE_FORCE after each present, for drivers that need it */
     int32_t memory_w, memory_h; /* memory backend size (default 640x480) */
     fx_log_func log;       /* NULL: the default stderr logger */
@@ -100,15 +110,30 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n);
  * (the display then falls back to SetCrtc presentation). */
 int fx_display_wait(fx_display *d, int timeout_ms);
 
-/* The fd to poll for flip completion (DRM), or -1 when there is none. */
+/* The fd to poll (readable) for the display's events: page-flip completion
+ * (DRM) and VT switch requests. -1 when there is none (memory backend). */
 int fx_display_fd(const fx_display *d);
-/* Read and handle pending events on fx_display_fd(); never blocks. */
+/* Handle pending events of fx_display_fd(); never blocks. fx_display_surface
+ * and fx_display_present also handle pending VT switches themselves. */
 int fx_display_dispatch(fx_display *d);
 /* 1 while a page flip has been queued and has not completed. */
 int fx_display_flip_pending(const fx_display *d);
 /* Called from fx_display_dispatch (or the wait in fx_display_surface) each
  * time a flip completes. */
 void fx_display_set_flip_callback(fx_display *d, void (*cb)(fx_display *d, void *user), void *user);
+
+/* Called when the program's VT is left (active = 0: the display is not
+ * shown and presents are dropped) and when it comes back (active = 1: the
+ * library has put the last presented frame back on screen, except with
+ * direct presentation on fbdev, whose pages the console overwrote: redraw
+ * everything and present it). */
+void fx_display_set_vt_callback(fx_display *d, void (*cb)(fx_display *d, int active, void *user),
+                                void *user);
+/* 1 while the program's VT is on screen (always 1 without a console). */
+int fx_display_active(const fx_display *d);
+/* Ask for VT n (1..63): for programs that forward Ctrl-Alt-Fn from evdev
+ * while the console keyboard is muted. Returns 0 or an error. */
+int fx_display_switch_vt(fx_display *d, int n);
 
 typedef struct fx_display_info {
     fx_backend backend;
@@ -122,6 +147,8 @@ typedef struct fx_display_info {
     int buffers;              /* scanout buffers: 2 when flipping/panning, else 1 */
     int dirtyfb;              /* DRM: 1 when the driver accepted DIRTYFB, 0 refused, -1 not tried */
     uint32_t flips, fallbacks; /* page flips completed, SetCrtc used instead */
+    int vt;                   /* the VT held in graphics mode, 0 when none */
+    uint32_t vt_away, vt_back, vt_refused; /* VT switch events handled */
 } fx_display_info;
 
 void fx_display_get_info(const fx_display *d, fx_display_info *info);

@@ -9,6 +9,8 @@
 #include <fcntl.h>
 #include <grp.h>
 #include <linux/kd.h>
+#include <linux/vt.h>
+#include <poll.h>
 #include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -165,18 +167,21 @@ static void pic_child(void *arg)
 /* ---- console ------------------------------------------------------------ */
 
 struct vt_state {
-    int mode, kbmode;
+    int mode, kbmode, vtmode;
     uint32_t crtc_fb;
 };
 
 static void read_vt_state(struct vt_state *st)
 {
-    st->mode = st->kbmode = -1;
+    st->mode = st->kbmode = st->vtmode = -1;
     st->crtc_fb = 0;
     int fd = open("/dev/tty1", O_RDWR | O_NOCTTY);
     if (fd >= 0) {
+        struct vt_mode vm;
         ioctl(fd, KDGETMODE, &st->mode);
         ioctl(fd, KDGKBMODE, &st->kbmode);
+        if (ioctl(fd, VT_GETMODE, &vm) == 0)
+            st->vtmode = vm.mode;
         close(fd);
     }
     fd = open("/dev/dri/card0", O_RDWR);
@@ -301,10 +306,11 @@ static void console_checks(void)
                                 : WIFEXITED(st) && WEXITSTATUS(st) == 0;
         guest_check(names[how],
                     ended_ok && after.mode == before.mode && after.kbmode == before.kbmode &&
-                        after.crtc_fb == before.crtc_fb,
-                    "child %s %d; mode %d->%d kbmode %d->%d crtc fb %u->%u",
+                        after.crtc_fb == before.crtc_fb && after.vtmode == before.vtmode,
+                    "child %s %d; mode %d->%d kbmode %d->%d vt mode %d->%d crtc fb %u->%u",
                     WIFSIGNALED(st) ? "signal" : "exit", WIFSIGNALED(st) ? WTERMSIG(st) : WEXITSTATUS(st),
-                    before.mode, after.mode, before.kbmode, after.kbmode, before.crtc_fb, after.crtc_fb);
+                    before.mode, after.mode, before.kbmode, after.kbmode, before.vtmode, after.vtmode,
+                    before.crtc_fb, after.crtc_fb);
         if (how == VT_EXIT) {
             guest_request("KEYS xyz");
             msleep(300);
@@ -312,6 +318,148 @@ static void console_checks(void)
                         "keys typed after exit %s the shell's tty",
                         tty_log_has("xyz") ? "reached" : "did not reach");
         }
+    }
+}
+
+/* ---- VT switching --------------------------------------------------------- */
+
+static int vt_events[2];
+static struct vt_state vt_before;
+
+static void on_vt(fx_display *d, int active, void *user)
+{
+    (void)d, (void)user;
+    vt_events[active ? 1 : 0]++;
+}
+
+static int active_vt(void)
+{
+    struct vt_stat st = {0};
+    int fd = open("/dev/tty0", O_RDWR | O_NOCTTY);
+    if (fd >= 0) {
+        ioctl(fd, VT_GETSTATE, &st);
+        close(fd);
+    }
+    return st.v_active;
+}
+
+/* chvt from another process, as a user or logind would. */
+static pid_t switcher(int n, int wait_active)
+{
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0) {
+        int fd = open("/dev/tty0", O_RDWR | O_NOCTTY);
+        if (fd < 0 || ioctl(fd, VT_ACTIVATE, n) < 0)
+            _exit(1);
+        if (wait_active && ioctl(fd, VT_WAITACTIVE, n) < 0)
+            _exit(2);
+        _exit(0);
+    }
+    return pid;
+}
+
+/* Run the display's events (as an event loop would) until pid exits, then
+ * for linger_ms more; returns pid's wait status or -1 on timeout. */
+static int pump(fx_display *d, pid_t pid, int linger_ms)
+{
+    int st = -1, done = 0;
+    for (int t = 0; t < 4000; t += 10) {
+        struct pollfd pfd = {.fd = fx_display_fd(d), .events = POLLIN};
+        poll(&pfd, 1, 10);
+        fx_display_dispatch(d);
+        if (!done && waitpid(pid, &st, WNOHANG) == pid) {
+            done = 1;
+            t = 4000 - linger_ms;
+        }
+    }
+    if (!done) {
+        kill(pid, SIGKILL);
+        waitpid(pid, NULL, 0);
+        return -1;
+    }
+    return st;
+}
+
+struct vt_case {
+    const char *name;
+    fx_backend backend;
+    fx_present_mode present;
+    fx_vt_switch policy;
+};
+
+static void vtswitch_child(void *arg)
+{
+    const struct vt_case *c = arg;
+    fx_display *d;
+    fx_display_options o;
+    char n[64];
+    opts(&o, c->backend, c->present, 0);
+    o.vt_switch = c->policy;
+    int r = fx_display_open(&d, &o);
+    if (r < 0) {
+        guest_check(c->name, 0, "open: %s", fx_strerror(r));
+        return;
+    }
+    fx_display_set_vt_callback(d, on_vt, NULL);
+    fx_surface s = fx_display_surface(d);
+    scene_draw("bars", &s);
+    fx_display_present(d, NULL, 0);
+    fx_display_wait(d, 1000);
+
+    if (c->policy == FX_VT_SWITCH_DENY) {
+        int st = pump(d, switcher(2, 0), 500);
+        fx_display_info info;
+        fx_display_get_info(d, &info);
+        guest_check(c->name, st == 0 && active_vt() == 1 && info.vt_refused == 1 && vt_events[0] == 0,
+                    "switch request %d, active VT %d, refused %u, away callbacks %d", st, active_vt(),
+                    info.vt_refused, vt_events[0]);
+        snprintf(n, sizeof n, "%s-screen", c->name);
+        screen(n, d, "bars");
+        fx_display_close(d);
+        return;
+    }
+
+    int st = pump(d, switcher(2, 1), 100);
+    struct vt_state away;
+    read_vt_state(&away);
+    snprintf(n, sizeof n, "%s-away", c->name);
+    guest_check(n, st == 0 && active_vt() == 2 && vt_events[0] == 1 && !fx_display_active(d) &&
+                       away.crtc_fb == vt_before.crtc_fb,
+                "chvt 2 status %d, active VT %d, away callbacks %d, console fb on CRTC %s (%u)", st,
+                active_vt(), vt_events[0], away.crtc_fb == vt_before.crtc_fb ? "yes" : "no", away.crtc_fb);
+
+    snprintf(n, sizeof n, "%s-console-shown", c->name);
+    screen(n, d, "!bars");
+
+    /* A frame drawn and presented while away must be the one on screen
+     * after the return: DRM keeps flipping its own buffers without showing
+     * them, fbdev copies the whole shadow back over the console's text. */
+    s = fx_display_surface(d);
+    scene_draw("checker", &s);
+    r = fx_display_present(d, NULL, 0);
+    st = pump(d, switcher(1, 1), 100);
+    snprintf(n, sizeof n, "%s-back", c->name);
+    guest_check(n, r == 0 && st == 0 && active_vt() == 1 && vt_events[1] == 1 && fx_display_active(d),
+                "present while away %d, chvt 1 status %d, active VT %d, back callbacks %d", r, st,
+                active_vt(), vt_events[1]);
+    snprintf(n, sizeof n, "%s-redrawn", c->name);
+    screen(n, d, "checker");
+    fx_display_close(d);
+}
+
+static void vtswitch_checks(void)
+{
+    static const struct vt_case cases[] = {
+        {"vt-switch-drm", FX_BACKEND_DRM, FX_PRESENT_DIRECT, FX_VT_SWITCH_ALLOW},
+        {"vt-switch-fbdev", FX_BACKEND_FBDEV, FX_PRESENT_SHADOW, FX_VT_SWITCH_ALLOW},
+        {"vt-switch-kiosk", FX_BACKEND_DRM, FX_PRESENT_AUTO, FX_VT_SWITCH_DENY},
+    };
+    read_vt_state(&vt_before);
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        in_child(vtswitch_child, (void *)&cases[i]);
+        if (active_vt() != 1) /* never leave a later case on the wrong VT */
+            waitpid(switcher(1, 1), NULL, 0);
     }
 }
 
@@ -423,6 +571,8 @@ int main(int argc, char **argv)
             in_child(pic_child, (void *)&cases[i]);
     if (!only || !strcmp(only, "console"))
         console_checks();
+    if (!only || !strcmp(only, "vt"))
+        vtswitch_checks();
     if (!only || !strcmp(only, "master"))
         master_checks();
     if (!only || !strcmp(only, "nonroot"))
