@@ -12,6 +12,10 @@
 
 /* Modules still being written land one by one; each is wired in as soon as
  * its header is on main, and its workloads show "-" until then. */
+#if __has_include(<fixel/circle.h>)
+#include <fixel/circle.h>
+#define HAVE_CIRCLE 1
+#endif
 #if __has_include(<fixel/fill.h>)
 #include <fixel/fill.h>
 #define HAVE_FILL 1
@@ -69,6 +73,28 @@ static void fx_w3(void *ctx, int n)
         fx_line(&b->c, l[i].x0, l[i].y0, l[i].x1, l[i].y1);
     }
 }
+
+#ifdef HAVE_CIRCLE
+static void fx_w5(void *ctx, int n)
+{
+    struct fxb *b = ctx;
+    const struct wl_circle *q = WL->circles;
+    for (int i = 0; i < n; i++) {
+        fx_ctx_set_color(&b->c, OPAQUE(q[i].c));
+        fx_circle(&b->c, q[i].cx, q[i].cy, q[i].r);
+    }
+}
+
+static void fx_w6(void *ctx, int n)
+{
+    struct fxb *b = ctx;
+    const struct wl_circle *q = WL->circles;
+    for (int i = 0; i < n; i++) {
+        fx_ctx_set_color(&b->c, OPAQUE(q[i].c));
+        fx_disc(&b->c, q[i].cx, q[i].cy, q[i].r);
+    }
+}
+#endif
 
 #ifdef HAVE_FILL
 static void fx_w7(void *ctx, int n)
@@ -134,6 +160,10 @@ const struct peer peer_fixel = {
             [W1_CLEAR] = fx_w1,
             [W2_RECTS] = fx_w2,
             [W3_LINES] = fx_w3,
+#ifdef HAVE_CIRCLE
+            [W5_CIRCLES] = fx_w5,
+            [W6_DISCS] = fx_w6,
+#endif
 #ifdef HAVE_FILL
             [W7_POLYS] = fx_w7,
             [W8_TRIS] = fx_w8,
