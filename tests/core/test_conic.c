@@ -247,17 +247,18 @@ FX_TEST(conic_disc_is_its_definition)
 /* Membership in the W5 pixel set by the closed form, written out here. */
 static int w5_member(int64_t dx, int64_t dy, int64_t r)
 {
-    int64_t a = dx < 0 ? -dx : dx, b = dy < 0 ? -dy : dy;
+    /* 128-bit: offsets reach 2^32 when both centre and pixel are extreme */
+    __int128 a = dx < 0 ? -dx : dx, b = dy < 0 ? -dy : dy, R = r;
     if (a < b) {
-        int64_t t = a;
+        __int128 t = a;
         a = b;
         b = t;
     }
     if (r == 0)
         return a == 0;
     /* octant step b (b(2b-1) < r^2) whose pixel is a: a(a-1) < r^2-b^2 <= a(a+1) */
-    int64_t n = r * r - b * b;
-    return b * (2 * b - 1) < r * r && a * (a - 1) < n && n <= a * (a + 1);
+    __int128 n = R * R - b * b;
+    return b * (2 * b - 1) < R * R && a * (a - 1) < n && n <= a * (a + 1);
 }
 
 FX_TEST(conic_huge_circles_clip_at_once)
