@@ -17,6 +17,8 @@
 
 typedef struct fill_state {
     fx_fill_style style;
+    void *seed_work;
+    size_t seed_size;
     uint8_t bits[PAT_MAX * PAT_MAX / 8];
     int32_t xy[2 * MAX_VERTS];
     fx_color col[MAX_VERTS];
@@ -231,7 +233,42 @@ static int cmd_pattern(fx_scene *sc)
     return 0;
 }
 
+static int seed(fx_scene *sc, int boundary)
+{
+    fill_state *st = state(sc);
+    if (!st)
+        return -FX_ENOMEM;
+    int32_t x, y, conn;
+    fx_color b = 0;
+    TRY(fx_scene_arg_int(sc, &x));
+    TRY(fx_scene_arg_int(sc, &y));
+    if (boundary)
+        TRY(fx_scene_arg_color(sc, &b));
+    TRY(fx_scene_arg_int(sc, &conn));
+    if (conn != 4 && conn != 8)
+        return fx_scene_error(sc, "connectivity must be 4 or 8");
+    TRY(fx_scene_end(sc));
+    if (!st->seed_work) {
+        /* sized for the whole surface once; the clip only ever shrinks it */
+        fx_ctx whole = sc->ctx;
+        fx_ctx_reset_clip(&whole);
+        st->seed_size = fx_seed_work_size(&whole);
+        st->seed_work = fx_scene_alloc(sc, st->seed_size);
+        if (!st->seed_work)
+            return fx_scene_error(sc, "scene arena too small for a seed fill (%lu bytes)",
+                                  (unsigned long)st->seed_size);
+    }
+    int r = boundary ? fx_boundary_fill(&sc->ctx, x, y, b, conn, st->seed_work, st->seed_size)
+                     : fx_flood_fill(&sc->ctx, x, y, conn, st->seed_work, st->seed_size);
+    return r < 0 ? fx_scene_error(sc, "seed fill failed: %s", fx_strerror(r)) : 0;
+}
+
+static int cmd_flood(fx_scene *sc) { return seed(sc, 0); }
+static int cmd_boundaryfill(fx_scene *sc) { return seed(sc, 1); }
+
 const fx_scene_cmd fx_scene_cmds_fill[] = {
+    {"flood", cmd_flood, "flood X Y 4|8", FX_SCENE_DRAWS},
+    {"boundaryfill", cmd_boundaryfill, "boundaryfill X Y #BOUNDARY 4|8", FX_SCENE_DRAWS},
     {"fillpoly", cmd_fillpoly, "fillpoly evenodd|nonzero X0 Y0 X1 Y1 X2 Y2 ...", FX_SCENE_DRAWS},
     {"fillpolyf", cmd_fillpolyf, "fillpolyf evenodd|nonzero X0 Y0 ... (fractional pixel-centre coordinates)",
      FX_SCENE_DRAWS},

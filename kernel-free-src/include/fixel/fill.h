@@ -31,6 +31,7 @@
 #ifndef FIXEL_FILL_H
 #define FIXEL_FILL_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
@@ -124,6 +125,29 @@ void fx_fill_tri_gouraud8(const fx_ctx *c, const fx8 *xy, const fx_color *col);
 /* Convex polygon, Gouraud-shaded as the fan (v0, vi, vi+1): the fan's
  * triangles share edges, so every pixel is covered once. */
 void fx_fill_poly_gouraud(const fx_ctx *c, const int32_t *xy, const fx_color *col, int32_t n);
+
+/* ---- seed fills (seedfill.c) ----
+ *
+ * Flood fill replaces the connected region of pixels whose native value
+ * equals the seed's (the X byte of XRGB8888/XBGR8888 ignored); boundary fill
+ * covers the connected region of pixels that are not the boundary colour
+ * (compared packed, so on RGB565 colours that pack alike are alike).
+ * conn is 4 or 8. The region is confined to the clip rectangle and painted
+ * with fx_fill_span (fill style, blending and exterior clipping apply).
+ *
+ * Scan-line span fill, never recursive; time proportional to the region's
+ * area. work/size is caller memory: a visited bitmap of one bit per pixel of
+ * the clip rectangle (rows rounded up to 64 bits) and a span stack of 12-byte
+ * entries after it. fx_seed_work_size gives the bitmap plus
+ * FX_SEED_STACK_DEFAULT entries; at least FX_SEED_STACK_MIN are required. A
+ * stack that fills up costs rescans, never pixels. Returns 0, -FX_EINVAL
+ * (conn) or -FX_ENOSPC (work too small). */
+#define FX_SEED_STACK_DEFAULT 16384
+#define FX_SEED_STACK_MIN 4
+size_t fx_seed_work_size(const fx_ctx *c);
+int fx_flood_fill(const fx_ctx *c, int32_t x, int32_t y, int conn, void *work, size_t size);
+int fx_boundary_fill(const fx_ctx *c, int32_t x, int32_t y, fx_color boundary, int conn, void *work,
+                     size_t size);
 
 /* ---- triangle set-up and span stepping (for the 3D renderer) ----
  *
