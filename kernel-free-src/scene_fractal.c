@@ -4,6 +4,8 @@
 #include "fixel/colormap.h"
 #include "fixel/error.h"
 #include "fixel/fractal.h"
+#include "fixel/ifs.h"
+#include "fixel/koch.h"
 #include "fixel/scene.h"
 #include "scene_fractal.h"
 
@@ -14,7 +16,7 @@
             return r_;           \
     } while (0)
 
-static fx_scene_fractal defaults = {FX_CMAP_COUNT, 0, 0xFF000000u};
+static const fx_scene_fractal defaults = {FX_CMAP_COUNT, 0, 0xFF000000u, 0, {{0}}, {0, 0, 65536, 65536}};
 
 const fx_scene_fractal *fx_scene_fractal_state(fx_scene *sc)
 {
@@ -116,6 +118,187 @@ static int escape_time(fx_scene *sc, int julia)
 }
 
 static int cmd_mandelbrot(fx_scene *sc) { return escape_time(sc, 0); }
+
+static int ints(fx_scene *sc, int32_t *v, int n)
+{
+    for (int i = 0; i < n; i++)
+        TRY(fx_scene_arg_int(sc, &v[i]));
+    return 0;
+}
+
+static int order_arg(fx_scene *sc, int32_t *n)
+{
+    TRY(fx_scene_arg_int(sc, n));
+    if (*n < 0 || *n > 1000)
+        return fx_scene_error(sc, "order %d out of range (0..1000)", *n);
+    return 0;
+}
+
+static int cmd_koch(fx_scene *sc)
+{
+    int32_t v[4], n;
+    TRY(ints(sc, v, 4));
+    TRY(order_arg(sc, &n));
+    TRY(fx_scene_end(sc));
+    fx_koch(&sc->ctx, v[0], v[1], v[2], v[3], (uint32_t)n);
+    return 0;
+}
+
+static int cmd_snowflake(fx_scene *sc)
+{
+    int32_t v[3], n;
+    TRY(ints(sc, v, 3));
+    TRY(order_arg(sc, &n));
+    TRY(fx_scene_end(sc));
+    if (v[2] < 0 || v[2] > (1 << 28))
+        return fx_scene_error(sc, "radius %d out of range (0..2^28)", v[2]);
+    fx_koch_snowflake(&sc->ctx, v[0], v[1], v[2], (uint32_t)n);
+    return 0;
+}
+
+static int fract_params(fx_scene *sc, fx_fract_params *p)
+{
+    int32_t seed;
+    TRY(fx_scene_arg_fx16(sc, &p->beta));
+    TRY(fx_scene_arg_fx16(sc, &p->sd));
+    TRY(fx_scene_arg_int(sc, &seed));
+    p->seed = (uint32_t)seed;
+    p->min_len = 2;
+    if (p->beta < 0 || p->beta > 3 * FX16_ONE)
+        return fx_scene_error(sc, "beta out of range (0..3)");
+    if (p->sd < 0 || p->sd > FX16_ONE)
+        return fx_scene_error(sc, "standard deviation out of range (0..1)");
+    return 0;
+}
+
+static int cmd_fractline(fx_scene *sc)
+{
+    int32_t v[4];
+    fx_fract_params p;
+    TRY(ints(sc, v, 4));
+    TRY(fract_params(sc, &p));
+    TRY(fx_scene_end(sc));
+    uint32_t st = p.seed;
+    fx_fractline(&sc->ctx, v[0], v[1], v[2], v[3], &p, &st);
+    return 0;
+}
+
+static int cmd_coastline(fx_scene *sc)
+{
+    fx_fract_params p;
+    int32_t xy[64];
+    int n = 0;
+    TRY(fract_params(sc, &p));
+    while (fx_scene_more(sc)) {
+        if (n == 64)
+            return fx_scene_error(sc, "at most 32 vertices");
+        TRY(fx_scene_arg_int(sc, &xy[n++]));
+    }
+    if (n < 6 || n % 2)
+        return fx_scene_error(sc, "need at least 3 vertices as X Y pairs");
+    TRY(fx_scene_end(sc));
+    fx_coastline(&sc->ctx, xy, n / 2, &p);
+    return 0;
+}
+
+static int cmd_spacefill(fx_scene *sc, int peano)
+{
+    int32_t v[3], n;
+    TRY(ints(sc, v, 3));
+    TRY(order_arg(sc, &n));
+    TRY(fx_scene_end(sc));
+    if (v[2] < 1)
+        return fx_scene_error(sc, "size must be at least 1");
+    if (peano)
+        fx_peano(&sc->ctx, v[0], v[1], v[2], (uint32_t)n);
+    else
+        fx_hilbert(&sc->ctx, v[0], v[1], v[2], (uint32_t)n);
+    return 0;
+}
+static int cmd_hilbert(fx_scene *sc) { return cmd_spacefill(sc, 0); }
+static int cmd_peano(fx_scene *sc) { return cmd_spacefill(sc, 1); }
+
+/* user IFS maps, collected by 'ifsmap' in the module state */
+static int cmd_ifsmap(fx_scene *sc)
+{
+    fx16 v[7];
+    for (int i = 0; i < 7; i++)
+        TRY(fx_scene_arg_fx16(sc, &v[i]));
+    TRY(fx_scene_end(sc));
+    fx_scene_fractal *st = state(sc);
+    if (!st)
+        return fx_scene_error(sc, "out of scene memory");
+    if (st->nmaps == FX_IFS_MAX_MAPS)
+        return fx_scene_error(sc, "at most %d maps", FX_IFS_MAX_MAPS);
+    fx_ifs_map m = {v[0], v[1], v[2], v[3], v[4], v[5], v[6]};
+    st->maps[st->nmaps++] = m;
+    return 0;
+}
+
+static int cmd_ifswindow(fx_scene *sc)
+{
+    fx16 v[4];
+    for (int i = 0; i < 4; i++)
+        TRY(fx_scene_arg_fx16(sc, &v[i]));
+    TRY(fx_scene_end(sc));
+    fx_scene_fractal *st = state(sc);
+    if (!st)
+        return fx_scene_error(sc, "out of scene memory");
+    st->win[0] = v[0];
+    st->win[1] = v[1];
+    st->win[2] = v[2];
+    st->win[3] = v[3];
+    return 0;
+}
+
+static int run_ifs(fx_scene *sc, const fx_ifs *s, int chaos)
+{
+    int32_t v[4], n, seed = 1;
+    TRY(ints(sc, v, 4));
+    TRY(fx_scene_arg_int(sc, &n));
+    if (chaos)
+        TRY(fx_scene_arg_int(sc, &seed));
+    TRY(fx_scene_end(sc));
+    if (fx_ifs_check(s) < 0)
+        return fx_scene_error(sc, "bad IFS: 1..16 maps with probabilities summing to 1, and a window");
+    fx_rect d = {v[0], v[1], v[0] + v[2], v[1] + v[3]};
+    if (v[2] < 1 || v[3] < 1)
+        return fx_scene_error(sc, "empty destination rectangle");
+    if (chaos) {
+        if (n < 0 || n > 20000000)
+            return fx_scene_error(sc, "point count %d out of range (0..20000000)", n);
+        fx_ifs_chaos(&sc->ctx, d, s, (uint32_t)n, (uint32_t)seed);
+    } else {
+        if (n < 0 || fx_ifs_copier(&sc->ctx, d, s, (uint32_t)n) < 0)
+            return fx_scene_error(sc, "copier depth %d too deep (at most 2^20 copies)", n);
+    }
+    return 0;
+}
+
+static int cmd_ifs(fx_scene *sc)
+{
+    static const char *const systems[] = {"sierpinski", "fern", "user", 0};
+    static const char *const modes[] = {"chaos", "copier", 0};
+    int k = fx_scene_arg_choice(sc, systems);
+    TRY(k);
+    int mode = fx_scene_arg_choice(sc, modes);
+    TRY(mode);
+    fx_ifs user;
+    const fx_ifs *s = k == 0 ? &fx_ifs_sierpinski : &fx_ifs_fern;
+    if (k == 2) {
+        const fx_scene_fractal *st = fx_scene_fractal_state(sc);
+        user.maps = st->maps;
+        user.n = st->nmaps;
+        user.wx0 = st->win[0];
+        user.wy0 = st->win[1];
+        user.wx1 = st->win[2];
+        user.wy1 = st->win[3];
+        s = &user;
+    }
+    return run_ifs(sc, s, mode == 0);
+}
+
+static int cmd_fern(fx_scene *sc) { return run_ifs(sc, &fx_ifs_fern, 1); }
 static int cmd_julia(fx_scene *sc) { return escape_time(sc, 1); }
 
 const fx_scene_cmd fx_scene_cmds_fractal[] = {
@@ -123,5 +306,16 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
     {"insidecolor", cmd_insidecolor, "insidecolor #RRGGBB", 0},
     {"mandelbrot", cmd_mandelbrot, "mandelbrot CRE CIM WIDTH MAXITER", FX_SCENE_DRAWS},
     {"julia", cmd_julia, "julia CRE CIM CX CY WIDTH MAXITER", FX_SCENE_DRAWS},
+    {"koch", cmd_koch, "koch X0 Y0 X1 Y1 ORDER", FX_SCENE_DRAWS},
+    {"snowflake", cmd_snowflake, "snowflake CX CY R ORDER", FX_SCENE_DRAWS},
+    {"fractline", cmd_fractline, "fractline X0 Y0 X1 Y1 BETA SD SEED", FX_SCENE_DRAWS},
+    {"coastline", cmd_coastline, "coastline BETA SD SEED X0 Y0 X1 Y1 X2 Y2 ...", FX_SCENE_DRAWS},
+    {"hilbert", cmd_hilbert, "hilbert X Y SIZE ORDER", FX_SCENE_DRAWS},
+    {"peano", cmd_peano, "peano X Y SIZE ORDER", FX_SCENE_DRAWS},
+    {"ifsmap", cmd_ifsmap, "ifsmap A B C D E F P", 0},
+    {"ifswindow", cmd_ifswindow, "ifswindow X0 Y0 X1 Y1", 0},
+    {"ifs", cmd_ifs, "ifs sierpinski|fern|user chaos X Y W H NPOINTS SEED | ... copier X Y W H DEPTH",
+     FX_SCENE_DRAWS},
+    {"fern", cmd_fern, "fern X Y W H NPOINTS SEED", FX_SCENE_DRAWS},
     {0, 0, 0, 0},
 };
