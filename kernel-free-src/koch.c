@@ -31,11 +31,13 @@ static void seg(const fx_ctx *c, pt a, pt b)
     fx_line(c, to_px(a.x), to_px(a.y), to_px(b.x), to_px(b.y));
 }
 
+/* Rotate t by h counter-clockwise as seen on the screen (y grows downward,
+ * the convention of fx_atan2), so K_n from left to right bulges upward. */
 static pt turn(pt t, fx_angle h)
 {
     int32_t co = fx_cos30(h), si = fx_sin30(h);
-    pt r = {fx_mul64_shift(t.x, co, 30) - fx_mul64_shift(t.y, si, 30),
-            fx_mul64_shift(t.x, si, 30) + fx_mul64_shift(t.y, co, 30)};
+    pt r = {fx_mul64_shift(t.x, co, 30) + fx_mul64_shift(t.y, si, 30),
+            -fx_mul64_shift(t.x, si, 30) + fx_mul64_shift(t.y, co, 30)};
     return r;
 }
 
@@ -75,15 +77,16 @@ uint64_t fx_koch_snowflake(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r, u
 {
     pt v[3];
     for (int i = 0; i < 3; i++) {
-        /* 90, 210, 330 degrees counter-clockwise; y grows downward */
+        /* 90, 330, 210 degrees (counter-clockwise, y up); y grows downward */
         fx_angle a = FX_ANGLE_90 + (fx_angle)i * 2 * ANGLE_60 * 2;
         v[i].x = (int64_t)cx * ONE + fx_mul64_shift((int64_t)r * ONE, fx_cos30(a), 30);
         v[i].y = (int64_t)cy * ONE - fx_mul64_shift((int64_t)r * ONE, fx_sin30(a), 30);
     }
     uint64_t n = 0;
-    /* clockwise on screen, so the turtle's first turn points outward */
+    /* clockwise on screen (top, lower right, lower left): the turtle's
+     * left, where its first turn goes, is then the outside */
     for (int i = 0; i < 3; i++)
-        n += koch_rec(c, v[(3 - i) % 3], v[(5 - i) % 3], order);
+        n += koch_rec(c, v[i], v[(i + 1) % 3], order);
     return n;
 }
 
