@@ -54,6 +54,7 @@ FX_TEST(koch_segment_counts)
         FX_CHECK_EQ(fx_koch(&k.c, 15, 400, 15 + 729, 400, n), want);
         FX_CHECK_EQ(fx_koch_snowflake(&k.c, 380, 220, 190, n), 3 * want);
     }
+    free(k.px);
     /* endpoints are lit, and the order-1 peak sits sqrt(3)/6 of the chord up */
     canvas_new(&k, 100, 60);
     fx_koch(&k.c, 5, 50, 95, 50, 1);
