@@ -4,6 +4,8 @@
 #include "fixel/error.h"
 #include "fixel/fill.h"
 #include "fixel/scene.h"
+#include "fixel/texture.h"
+#include "fx_internal.h"
 
 #define TRY(x)                   \
     do {                         \
@@ -14,11 +16,18 @@
 
 #define MAX_VERTS 1024
 #define PAT_MAX 32
+#define TEX_MAX 256
 
 typedef struct fill_state {
     fx_fill_style style;
     void *seed_work;
     size_t seed_size;
+    fx_gradient grad;
+    fx_proc_map proc;
+    fx_texture tex;
+    fx_tex_map texmap;
+    int have_tex;
+    uint32_t texpx[TEX_MAX * TEX_MAX];
     uint8_t bits[PAT_MAX * PAT_MAX / 8];
     int32_t xy[2 * MAX_VERTS];
     fx_color col[MAX_VERTS];
@@ -266,7 +275,225 @@ static int seed(fx_scene *sc, int boundary)
 static int cmd_flood(fx_scene *sc) { return seed(sc, 0); }
 static int cmd_boundaryfill(fx_scene *sc) { return seed(sc, 1); }
 
+static int style_off(fx_scene *sc)
+{
+    TRY(fx_scene_end(sc));
+    sc->ctx.fill_style = 0;
+    return 0;
+}
+
+/* gradient linear X0 Y0 X1 Y1 #C... | radial CX CY R #C... | off */
+static int cmd_gradient(fx_scene *sc)
+{
+    fill_state *st = state(sc);
+    if (!st)
+        return -FX_ENOMEM;
+    static const char *const kinds[] = {"linear", "radial", "off", 0};
+    int k = fx_scene_arg_choice(sc, kinds);
+    TRY(k);
+    if (k == 2)
+        return style_off(sc);
+    fx_gradient *g = &st->grad;
+    fx_memset(g, 0, sizeof *g);
+    g->radial = (uint8_t)(k == 1);
+    TRY(fx_scene_arg_int(sc, &g->x0));
+    TRY(fx_scene_arg_int(sc, &g->y0));
+    if (k == 1) {
+        TRY(fx_scene_arg_int(sc, &g->r));
+        if (g->r < 1)
+            return fx_scene_error(sc, "radius must be >= 1");
+    } else {
+        TRY(fx_scene_arg_int(sc, &g->x1));
+        TRY(fx_scene_arg_int(sc, &g->y1));
+    }
+    while (fx_scene_more(sc)) {
+        if (g->nstops == FX_GRADIENT_MAX_STOPS)
+            return fx_scene_error(sc, "more than %d colour stops", FX_GRADIENT_MAX_STOPS);
+        TRY(fx_scene_arg_color(sc, &g->stops[g->nstops++]));
+    }
+    if (g->nstops < 2)
+        return fx_scene_error(sc, "a gradient needs at least 2 colours");
+    fx_fill_style *s = &st->style;
+    s->kind = FX_FILL_SHADER;
+    s->shade = fx_gradient_shade;
+    s->user = g;
+    sc->ctx.fill_style = s;
+    return 0;
+}
+
+/* proctex KIND X0 Y0 SIZE #C0 #C1 [SEED] | off */
+static int cmd_proctex(fx_scene *sc)
+{
+    fill_state *st = state(sc);
+    if (!st)
+        return -FX_ENOMEM;
+    static const char *const kinds[] = {"fakesphere", "noise", "turbulence", "wood", "marble", "off", 0};
+    int k = fx_scene_arg_choice(sc, kinds);
+    TRY(k);
+    if (k == FX_PROC_COUNT)
+        return style_off(sc);
+    fx_proc_map *m = &st->proc;
+    m->kind = k;
+    TRY(fx_scene_arg_int(sc, &m->x0));
+    TRY(fx_scene_arg_int(sc, &m->y0));
+    TRY(fx_scene_arg_int(sc, &m->size));
+    if (m->size < 1)
+        return fx_scene_error(sc, "size must be >= 1");
+    TRY(fx_scene_arg_color(sc, &m->c0));
+    TRY(fx_scene_arg_color(sc, &m->c1));
+    int32_t seed = 1;
+    if (fx_scene_more(sc))
+        TRY(fx_scene_arg_int(sc, &seed));
+    TRY(fx_scene_end(sc));
+    m->seed = (uint32_t)seed;
+    fx_fill_style *s = &st->style;
+    s->kind = FX_FILL_SHADER;
+    s->shade = fx_proc_shade;
+    s->user = m;
+    sc->ctx.fill_style = s;
+    return 0;
+}
+
+/* texture checker W H CELL #C0 #C1 | texture KIND W H #C0 #C1 [SEED]
+ * | texture filter nearest|bilinear | texture wrap repeat|clamp */
+static int cmd_texture(fx_scene *sc)
+{
+    fill_state *st = state(sc);
+    if (!st)
+        return -FX_ENOMEM;
+    static const char *const kinds[] = {"fakesphere", "noise", "turbulence", "wood", "marble", "checker",
+                                        "filter", "wrap", 0};
+    int k = fx_scene_arg_choice(sc, kinds);
+    TRY(k);
+    if (k == 6 || k == 7) {
+        static const char *const filters[] = {"nearest", "bilinear", 0}, *const wraps[] = {"repeat", "clamp", 0};
+        int v = fx_scene_arg_choice(sc, k == 6 ? filters : wraps);
+        TRY(v);
+        TRY(fx_scene_end(sc));
+        if (k == 6)
+            st->tex.filter = (uint8_t)v;
+        else
+            st->tex.wrap = (uint8_t)v;
+        return 0;
+    }
+    int32_t w, h, cell = 1, seed = 1;
+    fx_color c0, c1;
+    TRY(fx_scene_arg_int(sc, &w));
+    TRY(fx_scene_arg_int(sc, &h));
+    if (w < 1 || h < 1 || w > TEX_MAX || h > TEX_MAX)
+        return fx_scene_error(sc, "texture size %dx%d out of range (1..%d)", w, h, TEX_MAX);
+    if (k == 5) {
+        TRY(fx_scene_arg_int(sc, &cell));
+        if (cell < 1)
+            return fx_scene_error(sc, "cell must be >= 1");
+    }
+    TRY(fx_scene_arg_color(sc, &c0));
+    TRY(fx_scene_arg_color(sc, &c1));
+    if (k != 5 && fx_scene_more(sc))
+        TRY(fx_scene_arg_int(sc, &seed));
+    TRY(fx_scene_end(sc));
+    for (int32_t y = 0; y < h; y++)
+        for (int32_t x = 0; x < w; x++) {
+            fx_color c;
+            if (k == 5) {
+                c = ((x / cell + y / cell) & 1) ? c1 : c0;
+            } else { /* texel centres sample the unit square */
+                fx16 s = (fx16)(((int64_t)x * 2 + 1) * FX16_ONE / (2 * w));
+                fx16 t = (fx16)(((int64_t)y * 2 + 1) * FX16_ONE / (2 * h));
+                c = fx_color_lerp(c0, c1, fx_proc_eval(k, s, t, (uint32_t)seed));
+            }
+            st->texpx[y * w + x] = c;
+        }
+    uint8_t filter = st->tex.filter, wrap = st->tex.wrap;
+    fx_surface_init(&st->tex.img, st->texpx, w, h, w * 4, FX_FMT_ARGB8888);
+    st->tex.filter = filter;
+    st->tex.wrap = wrap;
+    st->have_tex = 1;
+    return 0;
+}
+
+static int need_tex(fx_scene *sc, fill_state *st)
+{
+    return st->have_tex ? 0 : fx_scene_error(sc, "no texture yet (use 'texture' first)");
+}
+
+/* textri X0 Y0 S0 T0 X1 Y1 S1 T1 X2 Y2 S2 T2 | texpoly X Y S T ... */
+static int textured(fx_scene *sc, int poly)
+{
+    fill_state *st = state(sc);
+    if (!st)
+        return -FX_ENOMEM;
+    TRY(need_tex(sc, st));
+    fx16 stv[2 * 64];
+    int32_t xy[2 * 64], n = 0;
+    while (fx_scene_more(sc) && n < 64) {
+        TRY(fx_scene_arg_int(sc, &xy[2 * n]));
+        TRY(fx_scene_arg_int(sc, &xy[2 * n + 1]));
+        TRY(fx_scene_arg_fx16(sc, &stv[2 * n]));
+        TRY(fx_scene_arg_fx16(sc, &stv[2 * n + 1]));
+        n++;
+    }
+    TRY(fx_scene_end(sc));
+    if (poly ? n < 3 : n != 3)
+        return fx_scene_error(sc, poly ? "texpoly needs at least 3 vertices" : "textri needs 3 vertices");
+    fx_fill_poly_tex(&sc->ctx, xy, stv, n, &st->tex);
+    return 0;
+}
+
+static int cmd_textri(fx_scene *sc) { return textured(sc, 0); }
+static int cmd_texpoly(fx_scene *sc) { return textured(sc, 1); }
+
+/* texstyle X0 Y0 SIZE | off: the texture tiled in surface space, one copy
+ * per SIZE pixels from (X0, Y0), as the fill style */
+static int cmd_texstyle(fx_scene *sc)
+{
+    fill_state *st = state(sc);
+    if (!st)
+        return -FX_ENOMEM;
+    char w[16];
+    int32_t x0, y0, size;
+    int num = next_is(sc, '-');
+    for (char d = '0'; d <= '9'; d++)
+        num |= next_is(sc, d);
+    if (!num) {
+        TRY(fx_scene_arg_word(sc, w, sizeof w));
+        if (!streq(w, "off"))
+            return fx_scene_error(sc, "expected X0 Y0 SIZE or off");
+        return style_off(sc);
+    }
+    TRY(need_tex(sc, st));
+    TRY(fx_scene_arg_int(sc, &x0));
+    TRY(fx_scene_arg_int(sc, &y0));
+    TRY(fx_scene_arg_int(sc, &size));
+    TRY(fx_scene_end(sc));
+    if (size < 1)
+        return fx_scene_error(sc, "size must be >= 1");
+    fx_tex_map *m = &st->texmap;
+    fx_memset(m, 0, sizeof *m);
+    m->tex = &st->tex;
+    m->dsdx = m->dtdy = FX16_ONE / size;
+    m->s0 = -x0 * m->dsdx;
+    m->t0 = -y0 * m->dtdy;
+    fx_fill_style *s = &st->style;
+    s->kind = FX_FILL_SHADER;
+    s->shade = fx_tex_shade;
+    s->user = m;
+    sc->ctx.fill_style = s;
+    return 0;
+}
+
 const fx_scene_cmd fx_scene_cmds_fill[] = {
+    {"gradient", cmd_gradient, "gradient linear X0 Y0 X1 Y1 #C0 #C1 ... | radial CX CY R #C0 #C1 ... | off",
+     FX_SCENE_DRAWS},
+    {"proctex", cmd_proctex, "proctex fakesphere|noise|turbulence|wood|marble X0 Y0 SIZE #C0 #C1 [SEED] | off",
+     FX_SCENE_DRAWS},
+    {"texture", cmd_texture,
+     "texture checker W H CELL #C0 #C1 | texture fakesphere|noise|turbulence|wood|marble W H #C0 #C1 [SEED] | "
+     "texture filter nearest|bilinear | texture wrap repeat|clamp",
+     0},
+    {"textri", cmd_textri, "textri X0 Y0 S0 T0 X1 Y1 S1 T1 X2 Y2 S2 T2", FX_SCENE_DRAWS},
+    {"texpoly", cmd_texpoly, "texpoly X0 Y0 S0 T0 X1 Y1 S1 T1 ... (convex)", FX_SCENE_DRAWS},
+    {"texstyle", cmd_texstyle, "texstyle X0 Y0 SIZE | off", FX_SCENE_DRAWS},
     {"flood", cmd_flood, "flood X Y 4|8", FX_SCENE_DRAWS},
     {"boundaryfill", cmd_boundaryfill, "boundaryfill X Y #BOUNDARY 4|8", FX_SCENE_DRAWS},
     {"fillpoly", cmd_fillpoly, "fillpoly evenodd|nonzero X0 Y0 X1 Y1 X2 Y2 ...", FX_SCENE_DRAWS},
