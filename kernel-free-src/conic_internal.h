@@ -39,6 +39,28 @@ static inline void conic_put(const conic_sink *k, int32_t x, int32_t y)
     }
 }
 
+/* A plain span of 1, 2 or 4-byte pixels. Fixed-size copies of a pattern
+ * block become single wide stores on every target (and are alias-safe),
+ * several times faster than a store per pixel on wide discs. */
+static inline void conic_fill(const fx_surface *s, unsigned bytes, int32_t y, int32_t x0, int32_t x1,
+                              uint32_t v)
+{
+    uint8_t *p = fx_row(s, y) + (ptrdiff_t)x0 * bytes;
+    size_t n = (size_t)(x1 - x0) * bytes;
+    if (bytes == 1) {
+        fx_memset(p, (int)(v & 0xFF), n);
+        return;
+    }
+    uint32_t w = bytes == 4 ? v : ((v & 0xFFFFu) | (v << 16));
+    uint32_t pat[8] = {w, w, w, w, w, w, w, w};
+    for (; n >= 32; n -= 32, p += 32)
+        fx_memcpy(p, pat, 32);
+    for (; n >= 4; n -= 4, p += 4)
+        fx_memcpy(p, pat, 4);
+    if (n)
+        fx_memcpy(p, pat, 2);
+}
+
 /* Span [x0, x1] (inclusive, 64-bit) on row y, clipped here. */
 static inline void conic_span(const conic_sink *k, int64_t y, int64_t x0, int64_t x1)
 {
@@ -53,6 +75,8 @@ static inline void conic_span(const conic_sink *k, int64_t y, int64_t x0, int64_
         return;
     if (k->mode)
         fx_hspan(c, (int32_t)y, (int32_t)x0, (int32_t)x1 + 1);
+    else if (k->bytes)
+        conic_fill(&c->surf, k->bytes, (int32_t)y, (int32_t)x0, (int32_t)x1 + 1, c->native);
     else
         fx_span_fill(&c->surf, (int32_t)y, (int32_t)x0, (int32_t)x1 + 1, c->native);
 }
