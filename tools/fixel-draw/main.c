@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <zlib.h>
 
 #include "fixel/error.h"
 #include "fixel/memfb.h"
@@ -76,6 +77,49 @@ static int read_all(FILE *f, uint8_t **data, size_t *len)
     return 0;
 }
 
+/* gzip data (fonts as .psf.gz) is inflated here, on the tool side: the core
+ * only ever sees plain bytes. Output is capped at 64 MiB. */
+static int gunzip(uint8_t **buf, size_t *len)
+{
+    size_t cap = *len * 4 + 4096, n = 0;
+    uint8_t *out = malloc(cap + 1);
+    z_stream z;
+    memset(&z, 0, sizeof z);
+    if (!out || inflateInit2(&z, 16 + MAX_WBITS) != Z_OK) {
+        free(out);
+        return -FX_ENOMEM;
+    }
+    z.next_in = *buf;
+    z.avail_in = (uInt)*len;
+    int zr;
+    do {
+        if (n == cap) {
+            uint8_t *nb = cap < ((size_t)64 << 20) ? realloc(out, cap * 2 + 1) : NULL;
+            if (!nb) {
+                inflateEnd(&z);
+                free(out);
+                return -FX_E2BIG;
+            }
+            out = nb;
+            cap *= 2;
+        }
+        z.next_out = out + n;
+        z.avail_out = (uInt)(cap - n);
+        zr = inflate(&z, Z_NO_FLUSH);
+        n = cap - z.avail_out;
+    } while (zr == Z_OK);
+    inflateEnd(&z);
+    if (zr != Z_STREAM_END) {
+        free(out);
+        return -FX_EBADMSG;
+    }
+    out[n] = 0;
+    free(*buf);
+    *buf = out;
+    *len = n;
+    return 0;
+}
+
 static int load_file(void *u, const char *path, const uint8_t **data, size_t *len)
 {
     host *H = u;
@@ -87,6 +131,10 @@ static int load_file(void *u, const char *path, const uint8_t **data, size_t *le
     fclose(f);
     if (r < 0)
         return r;
+    if (*len >= 2 && buf[0] == 0x1f && buf[1] == 0x8b && (r = gunzip(&buf, len)) < 0) {
+        free(buf);
+        return r;
+    }
     struct loaded *l = malloc(sizeof *l);
     if (!l) {
         free(buf);
