@@ -45,15 +45,16 @@ HAVE_OPT := $(shell $(PKG_CONFIG) --exists $(OPT_PKGS) 2>/dev/null && echo 1)
 PKGS     := $(SYS_PKGS) $(if $(HAVE_OPT),$(OPT_PKGS))
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null)
 PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS) 2>/dev/null)
-LDLIBS   := $(PKG_LIBS) -lpthread
 LDFLAGS  ?=
+# STATIC=1: single static binaries to copy to a board (no shared library).
 ifeq ($(STATIC),1)
   LDFLAGS += -static
   PKG_LIBS := $(shell $(PKG_CONFIG) --static --libs $(PKGS) 2>/dev/null)
 endif
+LDLIBS   := $(PKG_LIBS) -lpthread -lm
 
 CORE_SRC   := $(sort $(wildcard kernel-free-src/*.c))
-BOARD_SRC  := $(sort $(wildcard boards/memory/*.c) boards/linux/present.c \
+BOARD_SRC  := $(sort $(wildcard boards/memory/*.c) boards/linux/present.c boards/linux/buttons.c \
                      $(if $(HAVE_OPT),$(wildcard boards/linux/*.c)))
 LIB_SRC    := $(CORE_SRC) $(BOARD_SRC)
 LIB_OBJ    := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
@@ -61,6 +62,11 @@ LIB_A      := $(BUILD)/libfixel.a
 LIB_SO     := $(BUILD)/libfixel.so.$(VERSION)
 
 TOOLS      := $(sort $(notdir $(patsubst %/,%,$(dir $(wildcard tools/*/main.c)))))
+# The benchmark links the host's peer libraries (cairo, pixman, SDL2_gfx) and
+# a -march=native reference: it is a host tool, not built for a board.
+ifneq ($(CROSS_COMPILE),)
+  TOOLS    := $(filter-out fixel-bench,$(TOOLS))
+endif
 TOOL_BINS  := $(TOOLS:%=$(BUILD)/bin/%)
 
 # Test suites: each entry is a command that prints a final "N passed, N failed".
@@ -78,7 +84,7 @@ all: lib tools $(BUILD)/fixel.pc
 # Fragments from modules (kernel rig, bench, fuzz...) add targets and suites.
 -include $(sort $(wildcard tests/*/*.mk tools/*/*.mk))
 
-lib: $(LIB_A) $(LIB_SO)
+lib: $(LIB_A) $(if $(filter 1,$(STATIC)),,$(LIB_SO))
 tools: $(TOOL_BINS)
 
 # V=1 shows the full commands.

@@ -1,12 +1,16 @@
 #!/bin/sh
 # The core must build freestanding with no floating-point registers (a float
 # or double is then a compile error) and reference nothing from libc but mem*.
+# FX_FS_FLAGS replaces the float-ban flags for targets where
+# -mgeneral-regs-only does not exist (32-bit ARM: -mfloat-abi=soft, where any
+# float would instead call a helper such as __aeabi_fadd, caught by nm below).
 cc=$1; nm=$2; out=$3; shift 3
+flags=${FX_FS_FLAGS:--ffreestanding -mgeneral-regs-only}
 mkdir -p "$out"
 P=0; F=0
 for src in "$@"; do
     o="$out/$(basename "$src" .c).o"
-    if $cc -std=c11 -Wall -Wextra -Werror -O2 -ffreestanding -mgeneral-regs-only \
+    if $cc -std=c11 -Wall -Wextra -Werror -O2 $flags \
         -Ikernel-free-src/include -c "$src" -o "$o" 2> "$o.err"; then
         P=$((P + 1))
     else
@@ -24,5 +28,8 @@ extern=$(echo "$undef" | while read -r s; do
     case "$s" in memset|memcpy|memmove|memcmp|_GLOBAL_OFFSET_TABLE_) ;; *) echo "$s";; esac
 done)
 if [ -n "$extern" ]; then echo "FAIL core objects reference outside symbols:"; echo "$extern"; F=$((F + 1)); else P=$((P + 1)); fi
+# No floating-point helper of any ABI (soft-float builds would call these).
+fp=$($nm "$out"/*.o | grep -E ' U (__aeabi_[fd]|__.*[sd]f[23]|__float|__fix|__extend|__trunc)' || true)
+if [ -n "$fp" ]; then echo "FAIL floating-point helpers in the core:"; echo "$fp"; F=$((F + 1)); else P=$((P + 1)); fi
 echo "freestanding: $P passed, $F failed"
 [ "$F" -eq 0 ]

@@ -31,7 +31,7 @@ $(BUILD)/obj/tools/fixel-bench/ref/ref.o: tools/fixel-bench/ref/ref.c
 	$(CC) $(BENCH_REF_FLAGS) -O2 -fno-tree-vectorize -c $< -o $@
 $(BUILD)/obj/tools/fixel-bench/ref/ref_native.o: tools/fixel-bench/ref/ref_native.c
 	@mkdir -p $(dir $@)
-	$(CC) $(BENCH_REF_FLAGS) -O3 -march=native -c $< -o $@
+	$(CC) $(BENCH_REF_FLAGS) -O3 $(if $(CROSS_COMPILE),$(CPU_FLAGS),-march=native) -c $< -o $@
 
 bench: $(BUILD)/bin/fixel-bench
 	$(BUILD)/bin/fixel-bench -o $(BUILD)/bench.txt

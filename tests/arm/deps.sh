@@ -1,0 +1,51 @@
+#!/bin/sh
+# Installs what `make test-arm` and `make BOARD=rpi*` need on a Debian 12 host
+# (root): the cross compilers for arm64, armhf and armel (ARMv6), qemu's user
+# emulators, and the target architectures' -dev packages (multiarch) for
+# libdrm, libevdev, libgpiod, libpng and zlib. Skips what is present.
+set -eu
+APT="apt-get -o DPkg::Lock::Timeout=300 -y -q --no-install-recommends"
+export DEBIAN_FRONTEND=noninteractive
+if [ "$(id -u)" != 0 ]; then
+    echo "tests/arm/deps.sh: must run as root (apt-get install); or install:" >&2
+    echo "  gcc-aarch64-linux-gnu gcc-arm-linux-gnueabihf gcc-arm-linux-gnueabi libc6-dev-armel-cross qemu-user-static" >&2
+    echo "  and lib{drm,evdev,gpiod,png}-dev zlib1g-dev for :arm64 :armhf :armel" >&2
+    exit 1
+fi
+added=no
+for arch in arm64 armhf armel; do
+    if ! dpkg --print-foreign-architectures | grep -qx $arch; then
+        dpkg --add-architecture $arch
+        added=yes
+    fi
+done
+installed() { dpkg-query -W -f='${Status}\n' "$1" 2>/dev/null | grep -q '^install ok installed'; }
+need=""
+for p in gcc-aarch64-linux-gnu gcc-arm-linux-gnueabihf gcc-arm-linux-gnueabi libc6-dev-armel-cross \
+         libc6-dev-arm64-cross libc6-dev-armhf-cross qemu-user-static; do
+    installed "$p" || need="$need $p"
+done
+# A mirror caught mid-sync fails one index; the others still serve.
+if [ -n "$need" ] || [ $added = yes ]; then
+    $APT update >/dev/null 2>&1 || $APT update >/dev/null 2>&1 ||
+        echo "tests/arm/deps.sh: apt-get update reported errors; trying anyway"
+fi
+if [ -n "$need" ]; then
+    echo "tests/arm/deps.sh: installing$need"
+    $APT install $need >/dev/null || echo "tests/arm/deps.sh: could not install the cross toolchains"
+fi
+# Each architecture's libraries on their own: multiarch needs the same
+# version as the host's package, and when a mirror is out of step for one
+# architecture the others must still be tested (test-arm skips, and says so,
+# an architecture whose libraries are missing).
+for arch in arm64 armhf armel; do
+    need=""
+    for p in libdrm-dev libevdev-dev libgpiod-dev libpng-dev zlib1g-dev; do
+        installed "$p:$arch" || need="$need $p:$arch"
+    done
+    [ -z "$need" ] && continue
+    echo "tests/arm/deps.sh: installing$need"
+    $APT install $need >/dev/null 2>&1 ||
+        echo "tests/arm/deps.sh: could not install the $arch libraries (mirror out of step?); test-arm will skip $arch"
+done
+exit 0

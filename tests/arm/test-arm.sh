@@ -1,0 +1,48 @@
+#!/bin/sh
+# Cross-builds fixel's test suites for each Pi architecture and runs them
+# under qemu-user. An architecture whose toolchain, emulator or target
+# libraries are missing is skipped with the reason (tests/arm/deps.sh installs
+# them when run as root); one that builds must pass.
+P=0; F=0
+[ "$(id -u)" = 0 ] && sh tests/arm/deps.sh
+run_suite() { # label, command...
+    label=$1; shift
+    out=$("$@" 2>&1); rc=$?
+    line=$(echo "$out" | grep -E '^([A-Za-z0-9_-]+: )?[0-9]+ passed, [0-9]+ failed' | tail -n 1)
+    p=$(echo "$line" | sed -nE 's/^([A-Za-z0-9_-]+: )?([0-9]+) passed, ([0-9]+) failed.*/\2/p')
+    f=$(echo "$line" | sed -nE 's/^([A-Za-z0-9_-]+: )?([0-9]+) passed, ([0-9]+) failed.*/\3/p')
+    if [ -z "$p" ]; then
+        echo "FAIL $label: no result (exit $rc)"; echo "$out" | tail -n 20; F=$((F + 1)); return
+    fi
+    [ "$rc" -ne 0 ] && [ "$f" -eq 0 ] && f=1
+    [ "$f" -ne 0 ] && echo "$out" | grep -E '^(FAIL|  )' | head -n 30
+    echo "$label: $p passed, $f failed"
+    P=$((P + p)); F=$((F + f))
+}
+for spec in "rpi4 aarch64-linux-gnu- aarch64-linux-gnu qemu-aarch64-static -ffreestanding_-mgeneral-regs-only" \
+            "rpi3-32 arm-linux-gnueabihf- arm-linux-gnueabihf qemu-arm-static -ffreestanding_-mfloat-abi=soft" \
+            "rpi-zero arm-linux-gnueabi- arm-linux-gnueabi qemu-arm-static_-cpu_arm1176 -ffreestanding_-mfloat-abi=soft_-march=armv6_-marm"; do
+    set -- $spec
+    board=$1; cross=$2; triplet=$3; qemu=$(echo "$4" | tr _ ' '); fsflags=$(echo "$5" | tr _ ' ')
+    qbin=${qemu%% *}
+    why=""
+    command -v "${cross}gcc" >/dev/null 2>&1 || why="no ${cross}gcc"
+    [ -z "$why" ] && ! command -v "$qbin" >/dev/null 2>&1 && why="no $qbin"
+    [ -z "$why" ] && ! PKG_CONFIG_LIBDIR=/usr/lib/$triplet/pkgconfig pkg-config --exists libpng zlib && \
+        why="no libpng-dev/zlib1g-dev for $triplet"
+    if [ -n "$why" ]; then
+        echo "SKIP $board: $why (run tests/arm/deps.sh as root)"
+        continue
+    fi
+    echo "== $board ($triplet, $qemu)"
+    if ! make --no-print-directory -j2 BOARD=$board STATIC=1 test-bins > "build/test-arm-$board.log" 2>&1; then
+        echo "FAIL $board: build failed; see build/test-arm-$board.log"; tail -n 15 "build/test-arm-$board.log"
+        F=$((F + 1)); continue
+    fi
+    run_suite "$board unit" $qemu build/$board/tests/unit
+    run_suite "$board golden" $qemu build/$board/tests/golden --dir tests/golden --out build/$board/golden
+    FX_FS_FLAGS="$fsflags" run_suite "$board integer-only core" \
+        sh tests/check-freestanding.sh "${cross}gcc" "${cross}nm" "build/$board/freestanding" kernel-free-src/*.c
+done
+echo "test-arm: $P passed, $F failed"
+[ $F -eq 0 ]
