@@ -4,7 +4,9 @@
 #include "fixel/error.h"
 
 #include <errno.h>
+#ifndef FX_NO_PNG
 #include <png.h>
+#endif
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -73,6 +75,7 @@ int fx_write_ppm(const char *path, const fx_surface *s)
     return finish_tmp(f, tmp, path, ok);
 }
 
+#ifndef FX_NO_PNG
 static int write_png_stream(FILE *f, int32_t w, int32_t h, const fx_surface *s, const uint8_t *rgb)
 {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
@@ -128,14 +131,6 @@ int fx_write_png_rgb(const char *path, const uint8_t *rgb, int32_t w, int32_t h)
     return finish_tmp(f, tmp, path, write_png_stream(f, w, h, NULL, rgb));
 }
 
-int fx_write_image(const char *path, const fx_surface *s)
-{
-    size_t n = strlen(path);
-    if (n >= 4 && strcasecmp(path + n - 4, ".ppm") == 0)
-        return fx_write_ppm(path, s);
-    return fx_write_png(path, s);
-}
-
 int fx_read_png_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h)
 {
     png_image img;
@@ -160,3 +155,62 @@ int fx_read_png_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h)
     *h = (int32_t)img.height;
     return 0;
 }
+
+#else /* FX_NO_PNG: built without libpng; PPM still works */
+int fx_write_png(const char *path, const fx_surface *s)
+{
+    (void)path;
+    (void)s;
+    return -FX_ENOTSUP;
+}
+int fx_write_png_rgb(const char *path, const uint8_t *rgb, int32_t w, int32_t h)
+{
+    (void)path;
+    (void)rgb;
+    (void)w;
+    (void)h;
+    return -FX_ENOTSUP;
+}
+int fx_read_png_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h)
+{
+    (void)path;
+    (void)rgb;
+    (void)w;
+    (void)h;
+    return -FX_ENOTSUP;
+}
+#endif
+
+int fx_read_ppm_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return errno ? -errno : -FX_ENOENT;
+    int W, H, maxval, r = -FX_EBADMSG;
+    if (fscanf(f, "P6 %d %d %d", &W, &H, &maxval) == 3 && maxval == 255 && W > 0 && H > 0 &&
+        W <= 65536 && H <= 65536 && fgetc(f) != EOF) {
+        size_t bytes = (size_t)W * (size_t)H * 3;
+        uint8_t *buf = malloc(bytes);
+        if (!buf) {
+            r = -FX_ENOMEM;
+        } else if (fread(buf, 1, bytes, f) != bytes) {
+            free(buf);
+        } else {
+            *rgb = buf;
+            *w = W;
+            *h = H;
+            r = 0;
+        }
+    }
+    fclose(f);
+    return r;
+}
+
+int fx_write_image(const char *path, const fx_surface *s)
+{
+    size_t n = strlen(path);
+    if (n >= 4 && strcasecmp(path + n - 4, ".ppm") == 0)
+        return fx_write_ppm(path, s);
+    return fx_write_png(path, s);
+}
+

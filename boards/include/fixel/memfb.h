@@ -16,7 +16,8 @@ typedef struct fx_memfb {
 int fx_memfb_create(fx_memfb *fb, int32_t w, int32_t h, fx_format f);
 void fx_memfb_destroy(fx_memfb *fb);
 
-/* Write a surface as 8-bit RGB (every format goes through fx_unpack).
+/* Write a surface as 8-bit RGB (every format goes through fx_unpack). In a
+ * build without libpng (FX_NO_PNG) the PNG functions return -FX_ENOTSUP.
  * Return 0 or a negative errno; on failure no partial file is left behind. */
 int fx_write_png(const char *path, const fx_surface *s);
 int fx_write_ppm(const char *path, const fx_surface *s);
@@ -26,6 +27,8 @@ int fx_write_image(const char *path, const fx_surface *s);
 /* Read a PNG as 8-bit RGB (alpha dropped, palettes/grey expanded).
  * *rgb is malloc'd (w*h*3 bytes); the caller frees it. */
 int fx_read_png_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h);
+/* Read a binary PPM (P6, maxval 255) as 8-bit RGB; *rgb is malloc'd. */
+int fx_read_ppm_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h);
 /* Write 8-bit RGB data as a PNG (used for diff images). */
 int fx_write_png_rgb(const char *path, const uint8_t *rgb, int32_t w, int32_t h);
 
