@@ -3,6 +3,7 @@
 #include "fixel/error.h"
 #include "fixel/line.h"
 #include "fixel/scene.h"
+#include "fixel/xform.h"
 
 #define TRY(x)                   \
     do {                         \
@@ -77,6 +78,7 @@ static int cmd_pixel(fx_scene *sc)
 {
     int32_t v[2];
     TRY(args(sc, v, 2));
+    fx_ctx_map(&sc->ctx, v[0], v[1], &v[0], &v[1]); /* the current transform, if any */
     fx_plot(&sc->ctx, v[0], v[1]);
     return 0;
 }
@@ -85,7 +87,7 @@ static int cmd_rect(fx_scene *sc)
 {
     int32_t v[4];
     TRY(args(sc, v, 4));
-    fx_rect_outline(&sc->ctx, v[0], v[1], v[2], v[3]);
+    fx_xform_rect_outline(&sc->ctx, v[0], v[1], v[2], v[3]); /* a polygon when transformed */
     return 0;
 }
 
@@ -93,7 +95,7 @@ static int cmd_fillrect(fx_scene *sc)
 {
     int32_t v[4];
     TRY(args(sc, v, 4));
-    fx_fill_rect(&sc->ctx, v[0], v[1], v[2], v[3]);
+    fx_xform_fill_rect(&sc->ctx, v[0], v[1], v[2], v[3]);
     return 0;
 }
 
@@ -101,6 +103,8 @@ static int cmd_line(fx_scene *sc)
 {
     int32_t v[4];
     TRY(args(sc, v, 4));
+    fx_ctx_map(&sc->ctx, v[0], v[1], &v[0], &v[1]);
+    fx_ctx_map(&sc->ctx, v[2], v[3], &v[2], &v[3]);
     fx_line(&sc->ctx, v[0], v[1], v[2], v[3]);
     return 0;
 }

@@ -27,6 +27,7 @@
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
+#include "fixel/xform.h" /* fx_pt16 */
 
 /* ctx->line_clipper. Every choice lights the same pixels; they differ in the
  * steps they take (and trace). */
@@ -102,18 +103,16 @@ int fx_clip_pop(fx_clip_stack *s, fx_ctx *c);
 
 /* ---- polygons (polyclip.c) ---- */
 
-/* A vertex in Q16.16 pixel-centre coordinates. */
-typedef struct fx_pt16 {
-    fx16 x, y;
-} fx_pt16;
-
 /* Sutherland-Hodgman: clip the polygon in[0..n-1] (closed implicitly) to the
  * pixel-square region of window w ([x0 - 1/2, x1 - 1/2] in centre
  * coordinates), writing at most cap vertices to out. Intersections are
- * rounded to nearest Q16.16. Returns the vertex count (0: nothing inside) or
- * -FX_ENOSPC when cap is too small (n + 4 always suffices per pass; 2n + 8
- * always suffices overall). A concave polygon that leaves and re-enters the
- * window comes back as one polygon joined by edges along the window border
+ * rounded to Q16.16 (towards the side that keeps the top-left rule's
+ * decisions, see polyclip.c). Returns the vertex count (0: nothing inside) or
+ * -FX_ENOSPC when cap is too small. The passes work in the two halves of out
+ * and a pass at most multiplies the count by 3/2, so cap = 12n always
+ * suffices (n + 8 per half for convex input). A concave polygon that leaves
+ * and re-enters the window comes back as one polygon joined by edges along
+ * the window border
  * (the classic Sutherland-Hodgman result); fx_clip_poly_pieces separates them. */
 int fx_clip_poly_sh(fx_rect w, const fx_pt16 *in, int n, fx_pt16 *out, int cap);
 
@@ -127,5 +126,13 @@ int fx_clip_poly_sh(fx_rect w, const fx_pt16 *in, int n, fx_pt16 *out, int cap);
 size_t fx_clip_poly_work_size(int n);
 int fx_clip_poly_pieces(fx_rect w, const fx_pt16 *in, int n, fx_pt16 *out, int cap, int *starts,
                         int max_pieces, void *work, size_t work_size);
+
+/* Fill pieces (npieces polygons, piece i = pts[starts[i] .. starts[i+1]-1])
+ * as one even-odd region: the pixels whose centres are inside, top-left rule
+ * on ties (a centre on a left or top edge is in, on a right or bottom edge
+ * out), through c's clip and exterior. Work is bounded by the visible rows.
+ * At most FX_POLY_FILL_MAX vertices in all (-FX_E2BIG beyond). */
+#define FX_POLY_FILL_MAX 512
+int fx_poly_fill16(const fx_ctx *c, const fx_pt16 *pts, const int *starts, int npieces);
 
 #endif
