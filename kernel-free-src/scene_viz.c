@@ -194,15 +194,17 @@ static int cmd_heatmap(fx_scene *sc)
 {
     fx_rect r;
     fx_grid g;
+    int32_t lo = 0, hi = 0;
     TRY(rect_args(sc, &r));
-    TRY(scalar(sc, &g));
-    int32_t lo, hi;
-    fx_grid_range(&g, &lo, &hi);
-    if (fx_scene_more(sc)) {
+    int given = fx_scene_more(sc);
+    if (given) {
         TRY(fx_scene_arg_int(sc, &lo));
         TRY(fx_scene_arg_int(sc, &hi));
     }
     TRY(fx_scene_end(sc));
+    TRY(scalar(sc, &g));
+    if (!given)
+        fx_grid_range(&g, &lo, &hi);
     fx_heatmap(&sc->ctx, r, &g, lo, hi, plot_map(sc));
     return 0;
 }
@@ -230,18 +232,19 @@ static int cmd_contour(fx_scene *sc)
     TRY(fx_scene_arg_int(sc, &n));
     if (n < 1 || n > 64)
         return fx_scene_error(sc, "level count %d out of range (1..64)", n);
-    TRY(scalar(sc, &g));
-    int32_t lo, hi;
-    fx_grid_range(&g, &lo, &hi);
-    if (fx_scene_more(sc)) {
+    int given = fx_scene_more(sc);
+    if (given)
         for (int i = 0; i < n; i++)
             TRY(fx_scene_arg_int(sc, &levels[i]));
-    } else {
+    TRY(fx_scene_end(sc));
+    TRY(scalar(sc, &g));
+    if (!given) {
         /* n levels evenly inside (lo, hi) */
+        int32_t lo, hi;
+        fx_grid_range(&g, &lo, &hi);
         for (int i = 0; i < n; i++)
             levels[i] = (int32_t)(lo + ((int64_t)hi - lo) * (i + 1) / (n + 1));
     }
-    TRY(fx_scene_end(sc));
     for (int i = 0; i < n; i++)
         fx_contour(&sc->ctx, r, &g, levels[i]);
     return 0;
