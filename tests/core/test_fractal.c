@@ -8,6 +8,7 @@
 #include "fixel/colormap.h"
 #include "fixel/error.h"
 #include "fixel/fractal.h"
+#include "fixel/scene.h"
 #include "fx_test.h"
 
 /* The course's loop in long double on the exact pixel coordinates the view
@@ -411,4 +412,52 @@ FX_TEST(colormap_definitions)
     FX_CHECK_EQ(fx_cmap_from_name("Viridis"), FX_CMAP_VIRIDIS);
     FX_CHECK_EQ(fx_cmap_from_name("gray"), FX_CMAP_GREY);
     FX_CHECK_EQ(fx_cmap_from_name("jet"), FX_CMAP_COUNT);
+}
+
+/* The script commands: decimals parsed exactly give the library's views. */
+static uint32_t scene_mem[192 * 108];
+static int scene_make(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
+{
+    (void)u;
+    if ((size_t)w * h > sizeof scene_mem / 4)
+        return -FX_ENOMEM;
+    memset(scene_mem, 0, sizeof scene_mem);
+    return fx_surface_init(out, scene_mem, w, h, w * 4, f);
+}
+
+static int scene_run(const char *text)
+{
+    static uint8_t arena[1 << 16];
+    fx_scene sc;
+    fx_scene_host h = {NULL, scene_make, NULL, NULL, NULL};
+    fx_scene_init(&sc, &h, arena, sizeof arena);
+    return fx_scene_run(&sc, text, strlen(text));
+}
+
+FX_TEST(fractal_script_commands)
+{
+    static uint32_t want[192 * 108];
+    fx_surface s;
+    fx_surface_init(&s, want, 192, 108, 192 * 4, FX_FMT_XRGB8888);
+    FX_CHECK_EQ(fx_mandel_w9(&s), 0);
+    FX_CHECK_EQ(scene_run("size 192 108\nmandelbrot -0.5 0 3.0 256\n"), 0);
+    FX_CHECK(memcmp(want, scene_mem, sizeof want) == 0);
+    /* a Julia set in a colour map with a period and an inside colour */
+    fx_fractal_view v = fx_julia_view(0, 0, fx56_of("-0.123"), fx56_of("0.745"), fx56_of("3.2"), 192,
+                                      108, 300);
+    fx_color tab[256];
+    uint32_t lut[256];
+    fx_cmap_table(FX_CMAP_HOT, tab, 256);
+    for (int i = 0; i < 256; i++)
+        lut[i] = fx_pack(FX_FMT_XRGB8888, tab[i]);
+    fx_dwell_pal pal = {lut, 256, (256 << 16) / 20, 1, fx_pack(FX_FMT_XRGB8888, 0xFF203040u)};
+    FX_CHECK_EQ(fx_fractal_render(&s, fx_surface_rect(&s), &v, &pal), 0);
+    FX_CHECK_EQ(scene_run("size 192 108\ncolormap hot 20\ninsidecolor #203040\n"
+                          "julia 0 0 -0.123 0.745 3.2 300\n"),
+                0);
+    FX_CHECK(memcmp(want, scene_mem, sizeof want) == 0);
+    int inside = 0;
+    for (int i = 0; i < 192 * 108; i++)
+        inside += (want[i] & 0xFFFFFF) == 0x203040;
+    FX_CHECK(inside > 500);
 }
