@@ -18,7 +18,7 @@
  * the same portable 128-bit product. */
 static inline int64_t mulsh(int64_t a, int64_t b, unsigned s)
 {
-#if defined(__SIZEOF_INT128__)
+#if defined(__SIZEOF_INT128__) && !defined(FX_NO_INT128)
     __extension__ typedef __int128 i128;
     return (int64_t)(((i128)a * b + ((i128)1 << (s - 1))) >> s);
 #else
