@@ -25,7 +25,9 @@ const fx_ifs fx_ifs_fern = {fern_maps, 4, -157286 /* -2.4 */, 0, 176947 /* 2.7 *
 
 int fx_ifs_check(const fx_ifs *s)
 {
-    if (!s || !s->maps || s->n < 1 || s->n > FX_IFS_MAX_MAPS || s->wx1 <= s->wx0 || s->wy1 <= s->wy0)
+    if (!s || !s->maps || s->n < 1 || s->n > FX_IFS_MAX_MAPS || s->wx1 <= s->wx0 ||
+        s->wy1 <= s->wy0 || (int64_t)s->wx1 - s->wx0 > ((int64_t)1 << 30) ||
+        (int64_t)s->wy1 - s->wy0 > ((int64_t)1 << 30))
         return -FX_EINVAL;
     int64_t sum = 0;
     for (int i = 0; i < s->n; i++) {
@@ -42,22 +44,24 @@ static int64_t floor_div(int64_t a, int64_t b)
     return (a % b != 0 && (a < 0) != (b < 0)) ? q - 1 : q;
 }
 
-/* x, y in Q32.32 world units */
+/* x, y in Q32.32 world units. floor((x - wx0) dw / ww) is split as
+ * u q + floor(u r / ww) with dw = q ww + r, which keeps every product within
+ * 64 bits for windows under 2^14 units and any int32 rectangle. Points more
+ * than a window away from the window are off the rectangle: they get a far
+ * point instead of an overflow. */
 static void to_pixel(const fx_ifs *s, fx_rect d, int64_t x, int64_t y, int32_t *px, int32_t *py)
 {
     int64_t ww = (int64_t)s->wx1 - s->wx0, wh = (int64_t)s->wy1 - s->wy0;
-    int64_t dw = d.x1 - d.x0, dh = d.y1 - d.y0;
-    /* (x - wx0) * dw / ww with x in Q.32 and wx in Q.16: scale down to Q.16
-     * first (the loss is far below a pixel) so the product fits */
+    int64_t dw = (int64_t)d.x1 - d.x0, dh = (int64_t)d.y1 - d.y0;
     int64_t ux = (x >> 16) - s->wx0, uy = (y >> 16) - s->wy0;
-    if (ux < -((int64_t)1 << 40) || ux > ((int64_t)1 << 40) || uy < -((int64_t)1 << 40) ||
-        uy > ((int64_t)1 << 40)) {
+    if (ux < -ww || ux > 2 * ww || uy < -wh || uy > 2 * wh) {
         *px = INT32_MIN;
         *py = INT32_MIN;
         return;
     }
-    *px = d.x0 + (int32_t)floor_div(ux * dw, ww);
-    *py = d.y1 - 1 - (int32_t)floor_div(uy * dh, wh);
+    int64_t qx = dw / ww, rx = dw % ww, qy = dh / wh, ry = dh % wh;
+    *px = fx_sat32((int64_t)d.x0 + ux * qx + floor_div(ux * rx, ww));
+    *py = fx_sat32((int64_t)d.y1 - 1 - (uy * qy + floor_div(uy * ry, wh)));
 }
 
 void fx_ifs_to_pixel(const fx_ifs *s, fx_rect dest, int64_t x, int64_t y, int32_t *px,
@@ -89,8 +93,8 @@ int32_t fx_ifs_chaos(const fx_ctx *c, fx_rect dest, const fx_ifs *s, uint32_t np
         while (r >= cum[i])
             i++;
         const fx_ifs_map *m = &s->maps[i];
-        int64_t nx = ((m->a * x + m->b * y) >> 16) + ((int64_t)m->e << 16);
-        int64_t ny = ((m->c * x + m->d * y) >> 16) + ((int64_t)m->f << 16);
+        int64_t nx = ((m->a * x + m->b * y) >> 16) + ((int64_t)m->e * 65536);
+        int64_t ny = ((m->c * x + m->d * y) >> 16) + ((int64_t)m->f * 65536);
         x = nx;
         y = ny;
         if (k < 20)

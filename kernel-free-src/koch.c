@@ -145,8 +145,10 @@ typedef struct fract_job {
 static void fract_rec(fract_job *j, pt a, pt b, fx16 sd, int depth)
 {
     int64_t dx = b.x - a.x, dy = b.y - a.y;
-    int64_t lx = dx >> (F - 8), ly = dy >> (F - 8); /* 24.8: squares fit */
-    if (lx * lx + ly * ly < j->min2 * 65536 || depth >= 40) {
+    int64_t lx = dx >> (F - 8), ly = dy >> (F - 8); /* 24.8 */
+    const int64_t big = (int64_t)1 << 30; /* longer is never a leaf; squares fit below */
+    int near = lx < big && lx > -big && ly < big && ly > -big;
+    if (depth >= 40 || (near && lx * lx + ly * ly < j->min2 * 65536)) {
         seg(j->c, a, b);
         j->segs++;
         return;
@@ -161,8 +163,13 @@ static void fract_rec(fract_job *j, pt a, pt b, fx16 sd, int depth)
 uint32_t fx_fractline(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
                       const fx_fract_params *p, uint32_t *state)
 {
-    fract_job j = {c, fx16_exp2((FX16_ONE - p->beta) / 2),
-                   (int64_t)FX_MAX(p->min_len, 1) * FX_MAX(p->min_len, 1), state, 0};
+    /* The random draws cannot depend on the clip, so the whole line is
+     * always walked; pieces of at least 1/2^18 of |dx| + |dy| keep that walk
+     * near 2^19 segments however long the line is. */
+    int64_t ddx = (int64_t)x1 - x0, ddy = (int64_t)y1 - y0;
+    int64_t span = (ddx < 0 ? -ddx : ddx) + (ddy < 0 ? -ddy : ddy);
+    int64_t ml = FX_MAX((int64_t)FX_MAX(p->min_len, 1), span >> 18);
+    fract_job j = {c, fx16_exp2((FX16_ONE - p->beta) / 2), ml * ml, state, 0};
     pt a = {(int64_t)x0 * ONE, (int64_t)y0 * ONE}, b = {(int64_t)x1 * ONE, (int64_t)y1 * ONE};
     fract_rec(&j, a, b, p->sd, 0);
     return j.segs;
@@ -284,9 +291,11 @@ typedef struct sfc {
     uint32_t segs;
 } sfc;
 
+/* Pixel of cell i's centre; squares reaching past int32 give far points
+ * that the clipped line drawing handles. */
 static int32_t cell_px(const sfc *s, int32_t org, uint32_t i)
 {
-    return org + (int32_t)(((2 * (uint64_t)i + 1) * (uint64_t)s->size) / (2 * s->cells));
+    return fx_sat32(org + (int64_t)(((2 * (uint64_t)i + 1) * (uint64_t)s->size) / (2 * s->cells)));
 }
 
 static void sfc_point(sfc *s, uint64_t d)
@@ -311,9 +320,9 @@ static void sfc_block(sfc *s, uint64_t d, uint64_t count, uint64_t side)
     uint32_t cx, cy;
     s->d2xy(s->n, d, &cx, &cy);
     uint32_t bx = (uint32_t)(cx / side * side), by = (uint32_t)(cy / side * side);
-    int32_t x0 = cell_px(s, s->x, bx) - 1, y0 = cell_px(s, s->y, by) - 1;
-    int32_t x1 = cell_px(s, s->x, bx + (uint32_t)side - 1) + 1;
-    int32_t y1 = cell_px(s, s->y, by + (uint32_t)side - 1) + 1;
+    int64_t x0 = (int64_t)cell_px(s, s->x, bx) - 1, y0 = (int64_t)cell_px(s, s->y, by) - 1;
+    int64_t x1 = (int64_t)cell_px(s, s->x, bx + (uint32_t)side - 1) + 1;
+    int64_t y1 = (int64_t)cell_px(s, s->y, by + (uint32_t)side - 1) + 1;
     if (x1 < s->c->clip.x0 || x0 >= s->c->clip.x1 || y1 < s->c->clip.y0 || y0 >= s->c->clip.y1) {
         /* the segment entering the block may still cross the clip */
         sfc_point(s, d);

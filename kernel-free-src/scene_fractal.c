@@ -261,9 +261,11 @@ static int run_ifs(fx_scene *sc, const fx_ifs *s, int chaos)
     TRY(fx_scene_end(sc));
     if (fx_ifs_check(s) < 0)
         return fx_scene_error(sc, "bad IFS: 1..16 maps with probabilities summing to 1, and a window");
-    fx_rect d = {v[0], v[1], v[0] + v[2], v[1] + v[3]};
     if (v[2] < 1 || v[3] < 1)
         return fx_scene_error(sc, "empty destination rectangle");
+    int64_t x1 = (int64_t)v[0] + v[2], y1 = (int64_t)v[1] + v[3];
+    fx_rect d = {v[0], v[1], x1 > INT32_MAX ? INT32_MAX : (int32_t)x1,
+                 y1 > INT32_MAX ? INT32_MAX : (int32_t)y1};
     if (chaos) {
         if (n < 0 || n > 20000000)
             return fx_scene_error(sc, "point count %d out of range (0..20000000)", n);

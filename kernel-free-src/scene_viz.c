@@ -154,8 +154,10 @@ static int rect_args(fx_scene *sc, fx_rect *r)
         return fx_scene_error(sc, "empty rectangle %dx%d", v[2], v[3]);
     r->x0 = v[0];
     r->y0 = v[1];
-    r->x1 = v[0] + v[2];
-    r->y1 = v[1] + v[3];
+    /* the far edge saturates: a rectangle reaching past int32 is clipped anyway */
+    int64_t x1 = (int64_t)v[0] + v[2], y1 = (int64_t)v[1] + v[3];
+    r->x1 = x1 > INT32_MAX ? INT32_MAX : (int32_t)x1;
+    r->y1 = y1 > INT32_MAX ? INT32_MAX : (int32_t)y1;
     return 0;
 }
 
@@ -277,7 +279,12 @@ static int cmd_stream(fx_scene *sc)
     if (n < 1 || n > 64)
         return fx_scene_error(sc, "seed count %d out of range (1..64)", n);
     TRY(vector(sc, &g));
-    int32_t w = r.x1 - r.x0, h = r.y1 - r.y0, steps = 2 * (w + h);
+    int64_t w = (int64_t)r.x1 - r.x0, h = (int64_t)r.y1 - r.y0;
+    /* one-pixel steps: twice round the visible part is plenty */
+    fx_rect vis = fx_rect_intersect(r, sc->ctx.clip);
+    int32_t steps = 2 * ((vis.x1 - vis.x0) + (vis.y1 - vis.y0));
+    if (fx_rect_empty(vis))
+        return 0;
     for (int32_t j = 0; j < n; j++)
         for (int32_t i = 0; i < n; i++) {
             int32_t x = r.x0 + (int32_t)(((int64_t)(2 * i + 1) * w) / (2 * n));

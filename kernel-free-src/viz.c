@@ -27,6 +27,14 @@ void fx_grid_range(const fx_grid *g, int32_t *lo, int32_t *hi)
     *hi = b;
 }
 
+/* 24.8 (sh = 8) or 16.16 (sh = 16) to the nearest pixel, ties up,
+ * saturating: geometry reaching past int32 stays a (clipped) far point. */
+static int32_t px_of(int64_t v, int sh)
+{
+    int64_t p = (v + ((int64_t)1 << (sh - 1))) >> sh;
+    return fx_sat32(p);
+}
+
 /* Rounded (ties away from zero) n / d for d > 0. */
 static int64_t rdiv(int64_t n, int64_t d)
 {
@@ -35,7 +43,7 @@ static int64_t rdiv(int64_t n, int64_t d)
 
 /* Pixel coordinate p (any integer, Q16.16 when q16) -> grid coordinate in
  * Q16.16 along an axis of n nodes spread over [o, o + len). */
-static int64_t to_grid(int64_t p16, int32_t o, int32_t len, int32_t n)
+static int64_t to_grid(int64_t p16, int32_t o, int64_t len, int32_t n)
 {
     if (len < 2)
         return 0;
@@ -45,7 +53,7 @@ static int64_t to_grid(int64_t p16, int32_t o, int32_t len, int32_t n)
 /* Bilinear sample at grid position (gx, gy) in Q16.16, clamped to the grid. */
 static int64_t sample(const int32_t *v, int32_t w, int32_t h, int32_t stride, int64_t gx, int64_t gy)
 {
-    int64_t maxx = (int64_t)(w - 1) << 16, maxy = (int64_t)(h - 1) << 16;
+    int64_t maxx = (int64_t)(w - 1) * 65536, maxy = (int64_t)(h - 1) * 65536;
     gx = gx < 0 ? 0 : gx > maxx ? maxx : gx;
     gy = gy < 0 ? 0 : gy > maxy ? maxy : gy;
     int32_t i = (int32_t)(gx >> 16), j = (int32_t)(gy >> 16);
@@ -77,11 +85,11 @@ int fx_heatmap(const fx_ctx *c, fx_rect dest, const fx_grid *g, int32_t lo, int3
         lut[i] = fx_pack(c->surf.format, tab[i]);
     fx_rect r = fx_rect_intersect(dest, c->clip);
     int64_t range = (int64_t)hi - lo;
-    int32_t W = dest.x1 - dest.x0, H = dest.y1 - dest.y0;
+    int64_t W = (int64_t)dest.x1 - dest.x0, H = (int64_t)dest.y1 - dest.y0;
     for (int32_t y = r.y0; y < r.y1; y++) {
-        int64_t gy = to_grid((int64_t)y << 16, dest.y0, H, g->h);
+        int64_t gy = to_grid((int64_t)y * 65536, dest.y0, H, g->h);
         for (int32_t x = r.x0; x < r.x1; x++) {
-            int64_t gx = to_grid((int64_t)x << 16, dest.x0, W, g->w);
+            int64_t gx = to_grid((int64_t)x * 65536, dest.x0, W, g->w);
             int64_t v = sample(g->v, g->w, g->h, g->stride, gx, gy);
             int64_t idx = range > 0 ? rdiv((v - lo) * 255, range) : 0;
             idx = idx < 0 ? 0 : idx > 255 ? 255 : idx;
@@ -93,8 +101,8 @@ int fx_heatmap(const fx_ctx *c, fx_rect dest, const fx_grid *g, int32_t lo, int3
 
 void fx_colorbar(const fx_ctx *c, fx_rect r, fx_cmap m, int ticks)
 {
-    int32_t w = r.x1 - r.x0, h = r.y1 - r.y0;
-    if (w < 1 || h < 1)
+    int64_t w = (int64_t)r.x1 - r.x0, h = (int64_t)r.y1 - r.y0;
+    if (w < 1 || h < 1 || w > INT32_MAX || h > INT32_MAX)
         return;
     int vertical = h > w;
     int32_t n = vertical ? h : w;
@@ -121,7 +129,7 @@ void fx_colorbar(const fx_ctx *c, fx_rect r, fx_cmap m, int ticks)
 }
 
 /* Node position along an axis in 24.8. */
-static int64_t node8(int32_t o, int32_t len, int32_t n, int32_t i)
+static int64_t node8(int32_t o, int64_t len, int32_t n, int32_t i)
 {
     return (int64_t)o * 256 + rdiv((int64_t)i * (len - 1) * 256, n - 1);
 }
@@ -138,8 +146,8 @@ static void cross(const cell *q, int a, int b, int64_t level, int32_t *px, int32
     int64_t t = rdiv((level - q->v[a]) * ((int64_t)1 << 24), q->v[b] - q->v[a]);
     int64_t x = q->x[a] + fx_mul64_shift(q->x[b] - q->x[a], t, 24);
     int64_t y = q->y[a] + fx_mul64_shift(q->y[b] - q->y[a], t, 24);
-    *px = (int32_t)((x + 128) >> 8);
-    *py = (int32_t)((y + 128) >> 8);
+    *px = px_of(x, 8);
+    *py = px_of(y, 8);
 }
 
 /* Edges: 0 top (TL->TR), 1 right (TR->BR), 2 bottom (BL->BR), 3 left (TL->BL). */
@@ -156,7 +164,8 @@ int32_t fx_contour(const fx_ctx *c, fx_rect dest, const fx_grid *g, int32_t leve
         {2, 3, -1, -1},   {0, 2, -1, -1}, {-1, -1, -1, -1}, {1, 2, -1, -1},
         {1, 3, -1, -1},   {0, 1, -1, -1}, {3, 0, -1, -1}, {-1, -1, -1, -1},
     };
-    int32_t W = dest.x1 - dest.x0, H = dest.y1 - dest.y0, segs = 0;
+    int64_t W = (int64_t)dest.x1 - dest.x0, H = (int64_t)dest.y1 - dest.y0;
+    int32_t segs = 0;
     for (int32_t j = 0; j + 1 < g->h; j++) {
         int64_t y0 = node8(dest.y0, H, g->h, j), y1 = node8(dest.y0, H, g->h, j + 1);
         if (y1 < ((int64_t)c->clip.y0 - 1) * 256 || y0 > ((int64_t)c->clip.y1 + 1) * 256)
@@ -206,7 +215,7 @@ int32_t fx_quiver(const fx_ctx *c, fx_rect dest, const fx_vgrid *g, int32_t step
 {
     if (!vgrid_ok(g) || fx_rect_empty(dest) || step < 1)
         return -FX_EINVAL;
-    int32_t W = dest.x1 - dest.x0, H = dest.y1 - dest.y0;
+    int64_t W = (int64_t)dest.x1 - dest.x0, H = (int64_t)dest.y1 - dest.y0;
     uint32_t maxmag = 0;
     for (int32_t j = 0; j < g->h; j += step)
         for (int32_t i = 0; i < g->w; i += step) {
@@ -223,7 +232,7 @@ int32_t fx_quiver(const fx_ctx *c, fx_rect dest, const fx_vgrid *g, int32_t step
         for (int32_t i = 0; i < g->w; i += step) {
             ptrdiff_t o = (ptrdiff_t)j * g->stride + i;
             int64_t bx = node8(dest.x0, W, g->w, i), by = node8(dest.y0, H, g->h, j);
-            int32_t px = (int32_t)((bx + 128) >> 8), py = (int32_t)((by + 128) >> 8);
+            int32_t px = px_of(bx, 8), py = px_of(by, 8);
             uint32_t m = fx_hypot(g->u[o], g->v[o]);
             arrows++;
             if (m == 0 || maxmag == 0) {
@@ -237,15 +246,15 @@ int32_t fx_quiver(const fx_ctx *c, fx_rect dest, const fx_vgrid *g, int32_t step
             int64_t len = fx_mul64_shift(spacing * 9 / 10, ((int64_t)m << 32) / maxmag, 32);
             int64_t dx = fx_mul64_shift(len, ex, 32), dy = fx_mul64_shift(len, ey, 32);
             int64_t tx = bx + dx, ty = by + dy;
-            fx_line(c, px, py, (int32_t)((tx + 128) >> 8), (int32_t)((ty + 128) >> 8));
+            fx_line(c, px, py, px_of(tx, 8), px_of(ty, 8));
             int64_t hl = len / 3 > 512 ? len / 3 : 512;
             /* back along the shaft, turned +-30 degrees */
             int64_t ux = -fx_mul64_shift(hl, ex, 32), uy = -fx_mul64_shift(hl, ey, 32);
             for (int s = -1; s <= 1; s += 2) {
                 int64_t hx = fx_mul64_shift(ux, COS30_Q30, 30) - s * (uy / 2);
                 int64_t hy = s * (ux / 2) + fx_mul64_shift(uy, COS30_Q30, 30);
-                fx_line(c, (int32_t)((tx + 128) >> 8), (int32_t)((ty + 128) >> 8),
-                        (int32_t)((tx + hx + 128) >> 8), (int32_t)((ty + hy + 128) >> 8));
+                fx_line(c, px_of(tx, 8), px_of(ty, 8),
+                        px_of(tx + hx, 8), px_of(ty + hy, 8));
             }
         }
     return arrows;
@@ -256,7 +265,8 @@ int32_t fx_quiver(const fx_ctx *c, fx_rect dest, const fx_vgrid *g, int32_t step
 static int dir_at(const fx_vgrid *g, fx_rect d, int64_t px, int64_t py, int64_t h, int64_t *dx,
                   int64_t *dy)
 {
-    int64_t gx = to_grid(px, d.x0, d.x1 - d.x0, g->w), gy = to_grid(py, d.y0, d.y1 - d.y0, g->h);
+    int64_t gx = to_grid(px, d.x0, (int64_t)d.x1 - d.x0, g->w),
+            gy = to_grid(py, d.y0, (int64_t)d.y1 - d.y0, g->h);
     int64_t u = sample(g->u, g->w, g->h, g->stride, gx, gy);
     int64_t v = sample(g->v, g->w, g->h, g->stride, gx, gy);
     uint32_t m = fx_hypot((int32_t)u, (int32_t)v);
@@ -273,10 +283,10 @@ int32_t fx_streamline(const fx_ctx *c, fx_rect dest, const fx_vgrid *g, int32_t 
     if (!vgrid_ok(g) || fx_rect_empty(dest) || h <= 0 || max_steps < 0)
         return -FX_EINVAL;
     int32_t steps = 0;
-    const int64_t lox = (int64_t)dest.x0 << 16, hix = (int64_t)(dest.x1 - 1) << 16;
-    const int64_t loy = (int64_t)dest.y0 << 16, hiy = (int64_t)(dest.y1 - 1) << 16;
+    const int64_t lox = (int64_t)dest.x0 * 65536, hix = (int64_t)(dest.x1 - 1) * 65536;
+    const int64_t loy = (int64_t)dest.y0 * 65536, hiy = (int64_t)(dest.y1 - 1) * 65536;
     for (int dirn = 1; dirn >= -1; dirn -= 2) {
-        int64_t x = (int64_t)sx << 16, y = (int64_t)sy << 16, hh = (int64_t)h * dirn;
+        int64_t x = (int64_t)sx * 65536, y = (int64_t)sy * 65536, hh = (int64_t)h * dirn;
         for (int32_t k = 0; k < max_steps; k++) {
             if (x < lox || x > hix || y < loy || y > hiy)
                 break;
@@ -286,8 +296,8 @@ int32_t fx_streamline(const fx_ctx *c, fx_rect dest, const fx_vgrid *g, int32_t 
             if (!dir_at(g, dest, x + k1x / 2, y + k1y / 2, hh, &k2x, &k2y))
                 break;
             int64_t nx = x + k2x, ny = y + k2y;
-            fx_line(c, (int32_t)((x + 0x8000) >> 16), (int32_t)((y + 0x8000) >> 16),
-                    (int32_t)((nx + 0x8000) >> 16), (int32_t)((ny + 0x8000) >> 16));
+            fx_line(c, px_of(x, 16), px_of(y, 16),
+                    px_of(nx, 16), px_of(ny, 16));
             x = nx;
             y = ny;
             steps++;

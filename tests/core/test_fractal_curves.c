@@ -278,3 +278,27 @@ FX_TEST(ifs_chaos_and_copier)
     free(a.px);
     free(b.px);
 }
+
+FX_TEST(curves_extreme_arguments)
+{
+    canvas k;
+    canvas_new(&k, 64, 64);
+    /* a curve 2^31 px long starts on the surface: its start is drawn, and
+     * only the few pieces near it are walked */
+    uint64_t segs0 = fx_koch(&k.c, 0, 32, INT32_MAX, 32, 100);
+    FX_CHECK(segs0 > 0 && segs0 < 2000);
+    FX_CHECK(k.px[32 * 64] != 0);
+    memset(k.px, 0, 64 * 64);
+    fx_hilbert(&k.c, 2000000000, 0, 2000000000, 30);
+    fx_peano(&k.c, 2000000000, -5, 2000000000, 30);
+    fx_koch_snowflake(&k.c, INT32_MAX, INT32_MAX, INT32_MAX, 50);
+    fx_ifs_copier(&k.c, (fx_rect){1 << 30, 0, INT32_MAX, 1 << 30}, &fx_ifs_sierpinski, 3);
+    FX_CHECK_EQ(fx_ifs_chaos(&k.c, (fx_rect){1 << 30, 0, INT32_MAX, 1 << 30}, &fx_ifs_fern, 500, 1), 0);
+    FX_CHECK_EQ(lit(&k, (fx_rect){0, 0, 64, 64}), 0);
+    /* a fractal line across all of int32 stays a bounded walk */
+    fx_fract_params p = {98304, 6554, 1, 3};
+    uint32_t st = 1;
+    uint32_t segs = fx_fractline(&k.c, INT32_MIN, 0, INT32_MAX, 10, &p, &st);
+    FX_CHECK(segs > 1000 && segs < (1u << 21));
+    free(k.px);
+}

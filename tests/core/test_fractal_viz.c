@@ -170,3 +170,31 @@ FX_TEST(streamlines_circle_a_vortex)
     FX_CHECK_EQ(fx_streamline(&k.c, d, &g, 50, 50, 0, 400), -FX_EINVAL);
     free(k.px);
 }
+
+/* Geometry anywhere in int32 neither overflows (the sanitizer build runs
+ * this) nor costs more than what is visible; what is off the surface lights
+ * nothing. */
+FX_TEST(viz_and_curves_extreme_arguments)
+{
+    canvas k;
+    canvas_new(&k, 64, 64);
+    int32_t gv[9] = {0, 1, 2, 3, 4, 5, 6, 7, 8}, gu[9] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+    fx_grid gr = {gv, 3, 3, 3};
+    fx_vgrid vg = {gu, gv, 3, 3, 3};
+    fx_rect all = {INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX};
+    FX_CHECK(fx_contour(&k.c, all, &gr, 4) >= 0);
+    FX_CHECK_EQ(fx_quiver(&k.c, all, &vg, 1), 9);
+    FX_CHECK(fx_streamline(&k.c, all, &vg, 10, 10, FX16_ONE, 100) > 0);
+    fx_colorbar(&k.c, all, FX_CMAP_HSV, 3);
+    FX_CHECK(fx_heatmap(&k.c, (fx_rect){-5, -5, INT32_MAX, 70}, &gr, 0, 8, FX_CMAP_HOT) == 0);
+    memset(k.px, 0, 64 * 64 * 4);
+    fx_rect far = {2000000000, 0, INT32_MAX, 2000};
+    FX_CHECK(fx_contour(&k.c, far, &gr, 4) >= 0);
+    FX_CHECK_EQ(fx_quiver(&k.c, far, &vg, 1), 9);
+    FX_CHECK(fx_heatmap(&k.c, far, &gr, 0, 8, FX_CMAP_GREY) == 0);
+    long n = 0;
+    for (int i = 0; i < 64 * 64; i++)
+        n += k.px[i] != 0;
+    FX_CHECK_EQ(n, 0);
+    free(k.px);
+}

@@ -33,8 +33,8 @@ typedef struct fx_ifs {
 extern const fx_ifs fx_ifs_sierpinski;
 extern const fx_ifs fx_ifs_fern;
 
-/* 0 or -FX_EINVAL (no maps, too many, empty window, probabilities not
- * summing to 1.0 within n units). */
+/* 0 or -FX_EINVAL (no maps, too many, an empty window or one wider or
+ * taller than 16384, probabilities not summing to 1.0 within n units). */
 int fx_ifs_check(const fx_ifs *s);
 
 /* The chaos game: from (0, 0), apply a map chosen by probability (16 bits of

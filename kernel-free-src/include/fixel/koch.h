@@ -16,7 +16,9 @@
  * Midpoint displacement is the course's fract(): the midpoint of A C moves
  * along the perpendicular by t |AC| with t ~ N(0, sd), sd scaled by
  * factor = 2^((1 - beta) / 2) at each level, recursing until a piece is
- * shorter than min_len pixels. t comes from fx_gauss16 (the sum of twelve
+ * shorter than min_len pixels (or 2^-18 of the chord's |dx| + |dy|, which
+ * bounds the work for lines reaching far off the surface: the draws cannot
+ * depend on the clip, so the whole line is walked). t comes from fx_gauss16 (the sum of twelve
  * uniform 16-bit draws, Irwin-Hall: mean 0, variance 1) on a xorshift32
  * state, so a seed reproduces the line exactly; the random draws never
  * depend on clipping.
