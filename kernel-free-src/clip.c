@@ -216,6 +216,7 @@ static int liang(const fx_ctx *t, const seg *s, rat *u1, rat *u2)
     static const char *const edge[4] = {"left", "right", "below", "above"};
     rat a = {0, 1}, b = {1, 1};
     char r1[48], r2[48], r3[48];
+    fx_trace(t, "  p_k, q_k in half pixels (the window's edges are pixel borders)");
     for (int k = 0; k < 4; k++) {
         if (p[k] == 0) {
             fx_trace(t, "  k=%d %-5s p=0 q=%lld: parallel, %s", k + 1, edge[k], (long long)q[k],
@@ -511,7 +512,7 @@ void fx_clip_draw_line(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int3
         char b0[5], b1[5];
         bits4(b0, fx_clip_region_code(c->clip, x0, y0));
         bits4(b1, fx_clip_region_code(c->clip, x1, y1));
-        fx_trace(c, "%s (%d,%d)->(%d,%d) window x %d..%d y %d..%d: codes %s %s (half-pixel units)",
+        fx_trace(c, "%s (%d,%d)->(%d,%d) window x %d..%d y %d..%d: codes %s %s",
                  algo_name(algo), x0, y0, x1, y1, c->clip.x0, c->clip.x1 - 1, c->clip.y0,
                  c->clip.y1 - 1, b0, b1);
     }
