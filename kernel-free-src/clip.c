@@ -150,6 +150,12 @@ static const char *ratstr(char *buf, size_t n, rat u)
 }
 
 static const fx_ctx quiet; /* a context without tracing (constant, not state) */
+/* The arguments (ratstr formatting) are evaluated only when tracing. */
+#define TRACE(t, ...)                   \
+    do {                                \
+        if ((t)->trace)                 \
+            fx_trace((t), __VA_ARGS__); \
+    } while (0)
 static const fx_ctx *traced(const fx_ctx *t) { return t && t->trace ? t : &quiet; }
 
 static const char *algo_name(fx_line_clipper a)
@@ -171,12 +177,12 @@ static int cohen(const fx_ctx *t, const seg *s, rat *u1, rat *u2)
         bits4(b1, c[1]);
         int triv = fx_clip_trivial(c[0], c[1]);
         if (triv > 0) {
-            fx_trace(t, "  codes %s %s: accept", b0, b1);
+            TRACE(t, "  codes %s %s: accept", b0, b1);
             break;
         }
         if (triv < 0) {
             bits4(b2, c[0] & c[1]);
-            fx_trace(t, "  codes %s %s: AND %s != 0000, reject", b0, b1, b2);
+            TRACE(t, "  codes %s %s: AND %s != 0000, reject", b0, b1, b2);
             return 0;
         }
         /* Move an outside endpoint onto the boundary its lowest code bit
@@ -199,7 +205,7 @@ static int cohen(const fx_ctx *t, const seg *s, rat *u1, rat *u2)
         }
         c[e] = code_at(s, u[e]);
         bits4(b2, c[e]);
-        fx_trace(t, "  codes %s %s: P%d outside, clip at %s boundary: u=%s, new code %s", b0, b1,
+        TRACE(t, "  codes %s %s: P%d outside, clip at %s boundary: u=%s, new code %s", b0, b1,
                  e, name, ratstr(r1, sizeof r1, u[e]), b2);
     }
     *u1 = u[0];
@@ -216,10 +222,10 @@ static int liang(const fx_ctx *t, const seg *s, rat *u1, rat *u2)
     static const char *const edge[4] = {"left", "right", "below", "above"};
     rat a = {0, 1}, b = {1, 1};
     char r1[48], r2[48], r3[48];
-    fx_trace(t, "  p_k, q_k in half pixels (the window's edges are pixel borders)");
+    TRACE(t, "  p_k, q_k in half pixels (the window's edges are pixel borders)");
     for (int k = 0; k < 4; k++) {
         if (p[k] == 0) {
-            fx_trace(t, "  k=%d %-5s p=0 q=%lld: parallel, %s", k + 1, edge[k], (long long)q[k],
+            TRACE(t, "  k=%d %-5s p=0 q=%lld: parallel, %s", k + 1, edge[k], (long long)q[k],
                      q[k] < 0 ? "outside -> reject" : "inside");
             if (q[k] < 0)
                 return 0;
@@ -232,11 +238,11 @@ static int liang(const fx_ctx *t, const seg *s, rat *u1, rat *u2)
         } else if (ratcmp(r, b) < 0) {
             b = r;
         }
-        fx_trace(t, "  k=%d %-5s p=%lld q=%lld r=%s -> u1=%s u2=%s", k + 1, edge[k],
+        TRACE(t, "  k=%d %-5s p=%lld q=%lld r=%s -> u1=%s u2=%s", k + 1, edge[k],
                  (long long)p[k], (long long)q[k], ratstr(r1, sizeof r1, r),
                  ratstr(r2, sizeof r2, a), ratstr(r3, sizeof r3, b));
         if (ratcmp(a, b) > 0) {
-            fx_trace(t, "  u1 > u2: reject");
+            TRACE(t, "  u1 > u2: reject");
             return 0;
         }
     }
@@ -344,7 +350,7 @@ static int nln(const fx_ctx *t, const seg *s0, rat *u1, rat *u2)
         /* P1 inside: P2 inside, or in the region L, R, B or A cut out by
          * the rays from P1 to the corners. */
         if (x2 >= s->xmin && x2 <= s->xmax && y2 >= s->ymin && y2 <= s->ymax) {
-            fx_trace(t, "  P1 inside, P2 inside: accept");
+            TRACE(t, "  P1 inside, P2 inside: accept");
             *u1 = zero;
             *u2 = one;
             return 1;
@@ -358,7 +364,7 @@ static int nln(const fx_ctx *t, const seg *s0, rat *u1, rat *u2)
             e = s->dy > 0 ? EA : EB;
         *u1 = zero;
         *u2 = edge_u(s, e);
-        fx_trace(t, "  P1 inside, P2 in region %c: u2=%s", f.name[e], ratstr(r2, sizeof r2, *u2));
+        TRACE(t, "  P1 inside, P2 in region %c: u2=%s", f.name[e], ratstr(r2, sizeof r2, *u2));
         return 1;
     }
     if (l + r + b + a == 1) {
@@ -370,19 +376,19 @@ static int nln(const fx_ctx *t, const seg *s0, rat *u1, rat *u2)
         x2 = s->ax + s->dx;
         char p1 = f.name[EL];
         if (x2 < s->xmin) {
-            fx_trace(t, "  P1 in edge region %c, P2 beyond it too: reject", p1);
+            TRACE(t, "  P1 in edge region %c, P2 beyond it too: reject", p1);
             return 0;
         }
         /* Rays to the corners left-above, right-above, right-below,
          * left-below sweep P2's possible regions in order. */
         if (side(s, s->xmin, s->ymax) < 0 || side(s, s->xmin, s->ymin) > 0) {
-            fx_trace(t, "  P1 in edge region %c, P2 outside the corner rays: reject", p1);
+            TRACE(t, "  P1 in edge region %c, P2 outside the corner rays: reject", p1);
             return 0;
         }
         int e = side(s, s->xmax, s->ymax) < 0 ? EA : side(s, s->xmax, s->ymin) > 0 ? EB : ER;
         *u1 = edge_u(s, EL);
         *u2 = exit_u(s, e);
-        fx_trace(t, "  P1 in edge region %c, P2 in region %c%c: u1=%s u2=%s", p1, p1, f.name[e],
+        TRACE(t, "  P1 in edge region %c, P2 in region %c%c: u1=%s u2=%s", p1, p1, f.name[e],
                  ratstr(r1, sizeof r1, *u1), ratstr(r2, sizeof r2, *u2));
         return 1;
     }
@@ -395,7 +401,7 @@ static int nln(const fx_ctx *t, const seg *s0, rat *u1, rat *u2)
     y2 = s->ay + s->dy;
     char c1 = f.name[EL], c2 = f.name[EA];
     if (x2 < s->xmin || y2 > s->ymax) {
-        fx_trace(t, "  P1 in corner region %c%c, P2 on the same side: reject", c1, c2);
+        TRACE(t, "  P1 in corner region %c%c, P2 on the same side: reject", c1, c2);
         return 0;
     }
     /* dx > 0 and dy < 0 now. The ray to the near corner (xmin, ymax) decides
@@ -404,21 +410,21 @@ static int nln(const fx_ctx *t, const seg *s0, rat *u1, rat *u2)
     if (side(s, s->xmin, s->ymax) >= 0) {
         entry = EL; /* the line passes below-left of the near corner */
         if (side(s, s->xmin, s->ymin) > 0) {
-            fx_trace(t, "  P1 in corner region %c%c, P2 outside the corner rays: reject", c1, c2);
+            TRACE(t, "  P1 in corner region %c%c, P2 outside the corner rays: reject", c1, c2);
             return 0;
         }
         e = side(s, s->xmax, s->ymin) < 0 ? ER : EB;
     } else {
         entry = EA;
         if (side(s, s->xmax, s->ymax) < 0) {
-            fx_trace(t, "  P1 in corner region %c%c, P2 outside the corner rays: reject", c1, c2);
+            TRACE(t, "  P1 in corner region %c%c, P2 outside the corner rays: reject", c1, c2);
             return 0;
         }
         e = side(s, s->xmax, s->ymin) < 0 ? ER : EB;
     }
     *u1 = edge_u(s, entry);
     *u2 = exit_u(s, e);
-    fx_trace(t, "  P1 in corner region %c%c, P2 in region %c%c: u1=%s u2=%s", c1, c2,
+    TRACE(t, "  P1 in corner region %c%c, P2 in region %c%c: u1=%s u2=%s", c1, c2,
              f.name[entry], f.name[e], ratstr(r1, sizeof r1, *u1), ratstr(r2, sizeof r2, *u2));
     return 1;
 }
@@ -438,7 +444,7 @@ int fx_clip_line_param(const fx_ctx *t, fx_line_clipper algo, fx_rect w, int32_t
         r = fx_clip_point(w, x0, y0);
         u1.p = 0;
         u2.p = u1.q = u2.q = 1;
-        fx_trace(t, "  a single point: %s", r ? "inside" : "outside");
+        TRACE(t, "  a single point: %s", r ? "inside" : "outside");
     } else if (algo == FX_CLIP_COHEN) {
         r = cohen(t, &s, &u1, &u2);
     } else if (algo == FX_CLIP_NLN) {
@@ -494,10 +500,10 @@ int fx_clip_line_steps(const fx_ctx *t, fx_line_clipper algo, fx_rect w, int32_t
         fz = 1;
     }
     if (a > z) {
-        fx_trace(t, "  no pixel inside (steps %u..%u)", a, z);
+        TRACE(t, "  no pixel inside (steps %u..%u)", a, z);
         return 0;
     }
-    fx_trace(t, "  steps k=%u..%u of %u%s", a, z, b.major,
+    TRACE(t, "  steps k=%u..%u of %u%s", a, z, b.major,
              fa || fz ? " (a half-pixel tie at an end moved it one step)" : "");
     *k0 = a;
     *k1 = z;
@@ -526,12 +532,12 @@ void fx_clip_draw_line(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int3
         /* A line meets a rectangle in one run of steps: what is left outside
          * is at most a run before it and a run after it. */
         if (e0 > k0)
-            fx_line_steps(&q, x0, y0, x1, y1, k0, FX_MIN(k1, e0 - 1));
+            fx_line_steps_inside(&q, x0, y0, x1, y1, k0, FX_MIN(k1, e0 - 1));
         if (e1 < k1)
-            fx_line_steps(&q, x0, y0, x1, y1, FX_MAX(k0, e1 + 1), k1);
+            fx_line_steps_inside(&q, x0, y0, x1, y1, FX_MAX(k0, e1 + 1), k1);
         return;
     }
-    fx_line_steps(&q, x0, y0, x1, y1, k0, k1);
+    fx_line_steps_inside(&q, x0, y0, x1, y1, k0, k1);
 }
 
 /* ---- clip stack ---- */

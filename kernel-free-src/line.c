@@ -198,6 +198,17 @@ void fx_line_steps(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t 
         walk(c, &b, c0, c1);
 }
 
+void fx_line_steps_inside(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
+                          uint32_t k0, uint32_t k1)
+{
+    fx_bres b;
+    fx_bres_init(&b, x0, y0, x1, y1);
+    if (k1 > b.major)
+        k1 = b.major;
+    if (k0 <= k1)
+        walk(c, &b, k0, k1);
+}
+
 void fx_line(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 {
     fx_bres b;

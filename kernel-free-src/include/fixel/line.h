@@ -66,4 +66,10 @@ void fx_line(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1);
 void fx_line_steps(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t k0,
                    uint32_t k1);
 
+/* Like fx_line_steps for steps the caller has already clipped (the line
+ * clippers of clip.h): every pixel of steps [k0, k1] must lie inside c->clip,
+ * nothing is checked again. */
+void fx_line_steps_inside(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
+                          uint32_t k0, uint32_t k1);
+
 #endif
