@@ -114,6 +114,10 @@ static int escape_time(fx_scene *sc, int julia)
         pal.wrap = st->period != 0;
     }
     pal.inside = fx_pack(s->format, st->inside);
+    fx_trace(&sc->ctx, "%s: %s path, pixel step %lld/2^56, %d iterations",
+             julia ? "julia" : "mandelbrot",
+             fx_fractal_precision(&v) == 32 ? "Q4.28 (32-bit)" : "Q8.56 (64-bit)",
+             (long long)(v.width / v.fw), maxiter);
     return fx_fractal_render(s, sc->ctx.clip, &v, &pal);
 }
 
