@@ -144,6 +144,24 @@ FX_TEST(three_clippers_match_the_exact_step_range)
     FX_CHECK(ties > 100); /* the end-step check is exercised, not just present */
 }
 
+/* sign(a*b - c*d) for non-negative a, b, c, d < 2^62, by 32-bit limbs, so
+ * the test also runs on 32-bit targets without 128-bit integers. */
+static void umul(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
+{
+    uint64_t al = a & 0xFFFFFFFFu, ah = a >> 32, bl = b & 0xFFFFFFFFu, bh = b >> 32;
+    uint64_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
+    uint64_t mid = (ll >> 32) + (lh & 0xFFFFFFFFu) + (hl & 0xFFFFFFFFu);
+    *lo = (ll & 0xFFFFFFFFu) | (mid << 32);
+    *hi = hh + (lh >> 32) + (hl >> 32) + (mid >> 32);
+}
+static int prodcmp(int64_t a, int64_t b, int64_t c, int64_t d)
+{
+    uint64_t h1, l1, h2, l2;
+    umul((uint64_t)a, (uint64_t)b, &h1, &l1);
+    umul((uint64_t)c, (uint64_t)d, &h2, &l2);
+    return h1 != h2 ? (h1 < h2 ? -1 : 1) : l1 != l2 ? (l1 < l2 ? -1 : 1) : 0;
+}
+
 FX_TEST(clippers_agree_on_the_parameter_range)
 {
     uint32_t s = 31337;
@@ -159,10 +177,11 @@ FX_TEST(clippers_agree_on_the_parameter_range)
         for (int a = 1; a < 3; a++) {
             FX_CHECK_EQ(r[a], r[0]);
             if (r[a] && r[0]) {
-                __int128 l1 = (__int128)p[a].u1_num * p[0].u1_den, m1 = (__int128)p[0].u1_num * p[a].u1_den;
-                __int128 l2 = (__int128)p[a].u2_num * p[0].u2_den, m2 = (__int128)p[0].u2_num * p[a].u2_den;
-                FX_CHECK_MSG(l1 == m1 && l2 == m2, "algo %d (%d,%d)->(%d,%d): u differ", a, v[0], v[1], v[2], v[3]);
-                FX_CHECK(p[a].u1_den > 0 && p[a].u1_num >= 0 && (__int128)p[a].u1_num * p[a].u2_den <= (__int128)p[a].u2_num * p[a].u1_den);
+                FX_CHECK(p[a].u1_den > 0 && p[a].u1_num >= 0 && p[a].u2_den > 0 && p[a].u2_num >= 0);
+                FX_CHECK_MSG(!prodcmp(p[a].u1_num, p[0].u1_den, p[0].u1_num, p[a].u1_den) &&
+                                 !prodcmp(p[a].u2_num, p[0].u2_den, p[0].u2_num, p[a].u2_den),
+                             "algo %d (%d,%d)->(%d,%d): u differ", a, v[0], v[1], v[2], v[3]);
+                FX_CHECK(prodcmp(p[a].u1_num, p[a].u2_den, p[a].u2_num, p[a].u1_den) <= 0);
                 FX_CHECK(p[a].u2_num <= p[a].u2_den);
             }
         }
@@ -196,7 +215,7 @@ static int check_drawn(fx_line_clipper a, int32_t x0, int32_t y0, int32_t x1, in
             int on = 0;
             int64_t k = sa ? (A - a0) * sa : (A == a0 ? 0 : -1);
             if (k >= 0 && (uint64_t)k <= major) {
-                unsigned __int128 t = (unsigned __int128)(uint64_t)k * minor;
+                uint64_t t = (uint64_t)k * minor; /* k, minor < 2^32 */
                 uint64_t m = major ? (uint64_t)(t / major) + (2 * (uint64_t)(t % major) >= major) : 0;
                 on = B == b0 + sb * (int64_t)m;
             }

@@ -33,11 +33,22 @@ static int ref_inside(const fx_pt16 *p, const int *starts, int npieces, int64_t 
             if (Y < y0 || Y >= y1)
                 continue;
             /* crossing x <= X  <=>  x0 (y1 - y0) + (Y - y0)(x1 - x0) <= X (y1 - y0) */
-            __int128 l = (__int128)x0 * (y1 - y0) + (__int128)(Y - y0) * (x1 - x0);
-            odd ^= l <= (__int128)X * (y1 - y0);
+            /* the test's coordinates stay below 2^24 raw (256 pixels), so
+             * these products fit in 64 bits */
+            int64_t l = x0 * (y1 - y0) + (Y - y0) * (x1 - x0);
+            odd ^= l <= X * (y1 - y0);
         }
     }
     return odd;
+}
+
+/* The reference needs |raw coordinates| < 2^24; every test polygon checks it. */
+static int small(const fx_pt16 *p, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (p[i].x <= -(1 << 24) || p[i].x >= (1 << 24) || p[i].y <= -(1 << 24) || p[i].y >= (1 << 24))
+            return 0;
+    return 1;
 }
 
 static void ref_mask(const fx_pt16 *p, const int *starts, int npieces, fx_rect win, uint8_t *mask)
@@ -82,6 +93,7 @@ static int star(uint32_t *s, fx_pt16 *p, int frac)
         p[i].x = (fx16)x;
         p[i].y = (fx16)y;
     }
+    FX_CHECK(small(p, n));
     return n;
 }
 
