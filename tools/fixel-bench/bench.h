@@ -82,7 +82,7 @@ struct peer {
     draw_fn fn[W_COUNT];
 };
 
-extern const struct peer peer_fixel, peer_libc, peer_ref, peer_ref_native;
+extern const struct peer peer_fixel, peer_fixel_mt, peer_libc, peer_ref, peer_ref_native;
 #ifdef BENCH_PEERS
 extern const struct peer peer_cairo, peer_pixman, peer_sdl2, peer_sdlgfx;
 #endif

@@ -303,7 +303,7 @@ static const uint64_t expected_sum[W_COUNT][FMT_COUNT] = {
 /* ---- peers ---------------------------------------------------------------- */
 
 static const struct peer *PEERS[] = {
-    &peer_fixel, &peer_libc, &peer_ref, &peer_ref_native,
+    &peer_fixel, &peer_fixel_mt, &peer_libc, &peer_ref, &peer_ref_native,
 #ifdef BENCH_PEERS
     &peer_cairo, &peer_pixman, &peer_sdl2, &peer_sdlgfx,
 #endif
@@ -341,7 +341,7 @@ static int peer_enabled(const struct peer *p)
     if (opt_p)
         return listed(opt_p, p->name);
     if (!opt_peers)
-        return p == &peer_fixel || p == &peer_libc || p == &peer_ref;
+        return p == &peer_fixel || p == &peer_fixel_mt || p == &peer_libc || p == &peer_ref;
     return 1;
 }
 
@@ -646,9 +646,14 @@ static void print_diffs(FILE *o)
         return;
     fprintf(o, "TABLE 3  pixels differing from the literal reference picture of the full workload\n"
                "         (WORKLOADS.md section 3 definitions; Bresenham for lines; edge rules only)\n");
+    int col[16] = {0};
+    for (int i = 0; i < NPEERS; i++)
+        for (int w = 0; w < W_COUNT; w++)
+            for (int f = 0; f < FMT_COUNT; f++)
+                col[i] |= DIFFS[w][f][i] >= 0;
     fprintf(o, "%-27s", "workload.fmt");
     for (int i = 0; i < NPEERS; i++)
-        if (peer_enabled(PEERS[i]))
+        if (col[i])
             fprintf(o, "%12s", PEERS[i]->name);
     fprintf(o, "\n");
     for (int w = 0; w < W_COUNT; w++)
@@ -662,7 +667,7 @@ static void print_diffs(FILE *o)
             snprintf(name, sizeof name, "%s.%s", WD[w].name, FMT_NAME[f]);
             fprintf(o, "%-27s", name);
             for (int i = 0; i < NPEERS; i++) {
-                if (!peer_enabled(PEERS[i]))
+                if (!col[i])
                     continue;
                 char t[32];
                 if (DIFFS[w][f][i] < 0)
@@ -717,7 +722,10 @@ static int shown(int i)
 {
     if (!peer_enabled(PEERS[i]))
         return 0;
-    return 1;
+    for (int w = 0; w < W_COUNT; w++)
+        if (PEERS[i]->fn[w])
+            return 1;
+    return 0;
 }
 
 static double primary(int w, const struct cell *c)
@@ -790,7 +798,7 @@ static void print_table(FILE *o, int which)
                 const struct cell *fx = &CELLS[w][f][0];
                 int best = -1;
                 for (int i = 1; i < NPEERS; i++)
-                    if (shown(i) && CELLS[w][f][i].state == 1 &&
+                    if (shown(i) && PEERS[i] != &peer_fixel_mt && CELLS[w][f][i].state == 1 &&
                         (best < 0 || primary(w, &CELLS[w][f][i]) > primary(w, &CELLS[w][f][best])))
                         best = i;
                 if (fx->state == 1 && best >= 0)
