@@ -122,33 +122,44 @@ static int64_t ceil_shift(int64_t v, unsigned s) { return (v + (((int64_t)1 << s
  * The edge (x0, y0) -> (x1, y1), y0 < y1, in vertex units with s fraction
  * bits, set up at pixel row y (y0 <= y << s < y1). x = ceil(xc / 2^s) and
  * e = x*D - N where D = dy << s and N = x0*dy + t*dx, t = (y << s) - y0. */
+/* floor division with remainder for d > 0, on 32 bits when the operands
+ * fit (a 64-bit divide costs several times more on common cores). */
+static inline void floordivmod(int64_t n, int64_t d, int64_t *q, int64_t *r)
+{
+    int64_t qq, rr;
+    if (n >= INT32_MIN && n <= INT32_MAX && d <= INT32_MAX) {
+        int32_t n32 = (int32_t)n, d32 = (int32_t)d;
+        qq = n32 / d32;
+        rr = n32 % d32;
+    } else {
+        qq = n / d;
+        rr = n % d;
+    }
+    if (rr < 0) {
+        qq--;
+        rr += d;
+    }
+    *q = qq;
+    *r = rr;
+}
+
 static void edge_setup(fx_tri_edge *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, unsigned s,
                        int64_t y)
 {
     int64_t dx = x1 - x0, dy = y1 - y0, t = y * ((int64_t)1 << s) - y0, qa, ra;
     int64_t adx = dx < 0 ? -dx : dx;
-    if (t < ((int64_t)1 << 31) && adx < ((int64_t)1 << 31)) {
-        int64_t p = t * dx;
-        qa = p / dy;
-        ra = p % dy;
-        if (ra < 0) {
-            qa--;
-            ra += dy;
-        }
-    } else {
+    if (t < ((int64_t)1 << 31) && adx < ((int64_t)1 << 31))
+        floordivmod(t * dx, dy, &qa, &ra);
+    else
         s128_divfloor(s128_mul(t, dx), dy, &qa, &ra);
-    }
     int64_t m = x0 + qa;
     int64_t x = (m + (ra > 0) + (((int64_t)1 << s) - 1)) >> s;
     g->x = x;
     g->d = dy * ((int64_t)1 << s);
     g->e = dy * (x * ((int64_t)1 << s) - m) - ra;
     /* per-row step S = dx << s = qs*D + rs */
-    int64_t q = dx / dy, r = dx % dy;
-    if (r < 0) {
-        q--;
-        r += dy;
-    }
+    int64_t q, r;
+    floordivmod(dx, dy, &q, &r);
     g->qs = q;
     g->rs = r * ((int64_t)1 << s);
 }
@@ -165,48 +176,50 @@ static inline void edge_step(fx_tri_edge *g)
 
 /* ---- span loops ---- */
 
-/* 32- and 16-bit runs with 8-byte stores (two or four pixels at a time):
- * the compiler's -O2 leaves the plain loops at one store per pixel. */
+/* 32- and 16-bit runs with 16-byte stores through GCC's generic vectors
+ * (SSE2/NEON registers where the target has them, plain 64-bit stores
+ * under -mgeneral-regs-only): the compiler's -O2 leaves the plain loops at
+ * one store per pixel. */
+typedef uint32_t fx_v4u32 __attribute__((vector_size(16)));
+typedef uint16_t fx_v8u16 __attribute__((vector_size(16)));
+
 static inline void run32(uint32_t *p, int32_t n, uint32_t v)
 {
-    if (n >= 6) {
-        if ((uintptr_t)p & 4) {
+    if (n < 4 || ((uintptr_t)p & 3)) {
+        while (n-- > 0)
             *p++ = v;
-            n--;
-        }
-        uint64_t v2 = v | (uint64_t)v << 32;
-        for (; n >= 8; n -= 8, p += 8) {
-            fx_memcpy(p, &v2, 8);
-            fx_memcpy(p + 2, &v2, 8);
-            fx_memcpy(p + 4, &v2, 8);
-            fx_memcpy(p + 6, &v2, 8);
-        }
-        for (; n >= 2; n -= 2, p += 2)
-            fx_memcpy(p, &v2, 8);
+        return;
     }
-    while (n-- > 0)
-        *p++ = v;
+    /* unaligned head and tail (overlapping is fine), aligned body */
+    fx_v4u32 q = {v, v, v, v};
+    fx_memcpy(p, &q, 16);
+    fx_memcpy(p + n - 4, &q, 16);
+    uint32_t *a = (uint32_t *)(((uintptr_t)p + 16) & ~(uintptr_t)15), *e = p + n - 4;
+    for (; a + 8 <= e; a += 8) {
+        *(fx_v4u32 *)a = q;
+        *(fx_v4u32 *)(a + 4) = q;
+    }
+    for (; a < e; a += 4)
+        *(fx_v4u32 *)a = q;
 }
 
 static inline void run16(uint16_t *p, int32_t n, uint16_t v)
 {
-    if (n >= 8) {
-        while ((uintptr_t)p & 6) {
+    if (n < 8 || ((uintptr_t)p & 1)) {
+        while (n-- > 0)
             *p++ = v;
-            n--;
-        }
-        uint64_t v4 = v * 0x0001000100010001ull;
-        for (; n >= 16; n -= 16, p += 16) {
-            fx_memcpy(p, &v4, 8);
-            fx_memcpy(p + 4, &v4, 8);
-            fx_memcpy(p + 8, &v4, 8);
-            fx_memcpy(p + 12, &v4, 8);
-        }
-        for (; n >= 4; n -= 4, p += 4)
-            fx_memcpy(p, &v4, 8);
+        return;
     }
-    while (n-- > 0)
-        *p++ = v;
+    fx_v8u16 q = {v, v, v, v, v, v, v, v};
+    fx_memcpy(p, &q, 16);
+    fx_memcpy(p + n - 8, &q, 16);
+    uint16_t *a = (uint16_t *)(((uintptr_t)p + 16) & ~(uintptr_t)15), *e = p + n - 8;
+    for (; a + 16 <= e; a += 16) {
+        *(fx_v8u16 *)a = q;
+        *(fx_v8u16 *)(a + 8) = q;
+    }
+    for (; a < e; a += 8)
+        *(fx_v8u16 *)a = q;
 }
 
 static inline void run_native(const fx_surface *s, int bpp, int32_t y, int32_t x0, int32_t x1, uint32_t v)
@@ -622,32 +635,68 @@ static inline int tri_next(fx_tri *t, fx_tri_span *s)
 
 int fx_tri_next_span(fx_tri *t, fx_tri_span *s) { return tri_next(t, s); }
 
+/* Rows of one part of a flat triangle between edges l and r, with the
+ * walkers in locals (registers) and a row pointer: no multiply per row. */
+#define TRI_PART(TYPE, RUN)                                                                      \
+    static void part_##TYPE(uint8_t *row, int32_t stride, int32_t n, fx_tri_edge *pl, fx_tri_edge *pr, \
+                            int32_t cx0, int32_t cx1, uint32_t v)                                \
+    {                                                                                            \
+        int64_t lx = pl->x, le = pl->e, ld = pl->d, lq = pl->qs, lr = pl->rs;                   \
+        int64_t rx = pr->x, re = pr->e, rd = pr->d, rq = pr->qs, rr = pr->rs;                   \
+        for (; n > 0; n--, row += stride) {                                                      \
+            int64_t a = lx < cx0 ? cx0 : lx, b = rx > cx1 ? cx1 : rx;                            \
+            if (a < b)                                                                           \
+                RUN((TYPE *)row + a, (int32_t)(b - a), (TYPE)v);                                 \
+            lx += lq;                                                                            \
+            le -= lr;                                                                            \
+            if (le < 0) {                                                                        \
+                le += ld;                                                                        \
+                lx++;                                                                            \
+            }                                                                                    \
+            rx += rq;                                                                            \
+            re -= rr;                                                                            \
+            if (re < 0) {                                                                        \
+                re += rd;                                                                        \
+                rx++;                                                                            \
+            }                                                                                    \
+        }                                                                                        \
+        pl->x = lx, pl->e = le, pr->x = rx, pr->e = re;                                          \
+    }
+TRI_PART(uint32_t, run32)
+TRI_PART(uint16_t, run16)
+
 static void tri_flat(const fx_ctx *c, const fx8 *xy)
 {
     fx_tri t;
     if (fx_tri_begin(&t, c->clip, xy, 0, 0) <= 0)
         return;
     fx_tri_span s;
-    if (!plain_solid(c)) {
-        while (tri_next(&t, &s))
-            fx_fill_span(c, s.y, s.x0, s.x1);
+    int bpp = fx_format_get(c->surf.format)->bits_per_pixel;
+    if (!plain_solid(c) || (bpp != 32 && bpp != 16)) {
+        int fast = plain_solid(c);
+        while (tri_next(&t, &s)) {
+            if (fast)
+                fx_span_fill(&c->surf, s.y, s.x0, s.x1, c->native);
+            else
+                fx_fill_span(c, s.y, s.x0, s.x1);
+        }
         return;
     }
     const fx_surface *sf = &c->surf;
-    uint32_t v = c->native;
-    switch (fx_format_get(sf->format)->bits_per_pixel) {
-    case 32:
-        while (tri_next(&t, &s))
-            run32((uint32_t *)fx_row(sf, s.y) + s.x0, s.x1 - s.x0, v);
-        break;
-    case 16:
-        while (tri_next(&t, &s))
-            run16((uint16_t *)fx_row(sf, s.y) + s.x0, s.x1 - s.x0, (uint16_t)v);
-        break;
-    default:
-        while (tri_next(&t, &s))
-            fx_span_fill(sf, s.y, s.x0, s.x1, v);
-        break;
+    int32_t y = t.y, yend = t.yend;
+    int32_t nA = t.ymid == INT32_MIN ? 0 : FX_MIN(t.ymid, yend) - y;
+    for (int part = 0; part < 2; part++) {
+        int32_t n = part ? yend - y : nA;
+        if (n <= 0)
+            continue;
+        if (part && nA > 0) /* the lower short edge starts where the upper ends */
+            edge_setup(&t.sht, t.vx[1], t.vy[1], t.vx[2], t.vy[2], 8, y);
+        fx_tri_edge *l = t.long_left ? &t.lng : &t.sht, *r = t.long_left ? &t.sht : &t.lng;
+        if (bpp == 32)
+            part_uint32_t(fx_row(sf, y), sf->stride, n, l, r, c->clip.x0, c->clip.x1, c->native);
+        else
+            part_uint16_t(fx_row(sf, y), sf->stride, n, l, r, c->clip.x0, c->clip.x1, c->native);
+        y += n;
     }
 }
 

@@ -416,3 +416,33 @@ FX_TEST(fill_honours_blend_and_pattern)
             FX_CHECK_EQ_HEX(img[y * W + x], on ? 0x00FF00u : 0u);
         }
 }
+
+FX_TEST(fill_spans_exact_at_every_alignment_and_length)
+{
+    /* rectangles as polygons: every start column and length against the
+     * surface's own span writer, in each pixel format, on an odd stride */
+    enum { N = 4 * 130 * 3 + 8 };
+    static uint32_t a32[N / 4], b32[N / 4];
+    uint8_t *a = (uint8_t *)a32, *b = (uint8_t *)b32;
+    for (int f = 0; f < FX_FMT_COUNT; f++) {
+        int32_t stride = fx_format_min_stride((fx_format)f, 130) + 4;
+        int bad = 0;
+        for (int x0 = 0; x0 < 40; x0++)
+            for (int len = 0; len < 80; len += (len < 20 ? 1 : 7)) {
+                memset(a, 0x5A, N);
+                memset(b, 0x5A, N);
+                fx_surface sa, sb;
+                FX_CHECK_EQ(fx_surface_init(&sa, a + 4, 130, 2, stride, (fx_format)f), 0);
+                FX_CHECK_EQ(fx_surface_init(&sb, b + 4, 130, 2, stride, (fx_format)f), 0);
+                fx_ctx c;
+                fx_ctx_init(&c, &sa);
+                fx_ctx_set_color(&c, 0xFF123456u + (uint32_t)len);
+                int32_t q[8] = {x0, 1, x0 + len, 1, x0 + len, 2, x0, 2};
+                fx_fill_poly(&c, q, 4, FX_FILL_EVENODD);
+                if (len)
+                    fx_span_fill(&sb, 1, x0, x0 + len, c.native);
+                bad += memcmp(a, b, N) != 0;
+            }
+        FX_CHECK_MSG(bad == 0, "format %d: %d spans differ", f, bad);
+    }
+}
