@@ -388,6 +388,92 @@ static void fill_row_spans(const fx_ctx *c, int32_t y, const fx_fill_edge *a, in
     }
 }
 
+/* ---- y-monotone polygons (every convex one): two chains ----
+ * When the edges' vertical directions change exactly twice around the
+ * polygon, every row meets exactly one edge of each chain from the top
+ * vertex to the bottom one, so both rules fill between the two crossings:
+ * walked like a triangle, no edge table, no sorting. */
+typedef struct {
+    const int32_t *xy;
+    int32_t n, i, step; /* current edge from vertex i to i + step (mod n) */
+    int32_t yend;       /* first row past the current edge */
+    fx_tri_edge g;
+} chain_t;
+
+static int32_t wrapi(int32_t i, int32_t n) { return i < 0 ? i + n : i >= n ? i - n : i; }
+
+/* Move to the edge covering row y (rows are covered in order) and set it up. */
+static void chain_seek(chain_t *ch, int32_t y, unsigned s)
+{
+    for (;;) {
+        int32_t j = wrapi(ch->i + ch->step, ch->n);
+        int64_t ay = ch->xy[2 * ch->i + 1], by = ch->xy[2 * j + 1];
+        int64_t ye = ceil_shift(by, s);
+        if (by > ay && ye > y) {
+            edge_setup(&ch->g, ch->xy[2 * ch->i], ay, ch->xy[2 * j], by, s, y);
+            ch->yend = (int32_t)FX_MIN(ye, (int64_t)INT32_MAX);
+            return;
+        }
+        ch->i = j;
+    }
+}
+
+static int monotone_fill(const fx_ctx *c, const int32_t *xy, int32_t n, unsigned s)
+{
+    int changes = 0, last = 0;
+    int32_t top = 0;
+    for (int32_t k = 0; k < 2 * n && changes <= 2; k++) { /* twice round: catch the wrap */
+        int32_t i = k % n, j = wrapi(i + 1, n);
+        int d = xy[2 * j + 1] > xy[2 * i + 1] ? 1 : xy[2 * j + 1] < xy[2 * i + 1] ? -1 : 0;
+        if (k < n && xy[2 * i + 1] < xy[2 * top + 1])
+            top = i;
+        if (d && last && d != last && k >= n)
+            changes++;
+        if (d)
+            last = d;
+    }
+    if (changes != 2)
+        return 0;
+    int32_t bot = 0;
+    for (int32_t i = 1; i < n; i++)
+        if (xy[2 * i + 1] > xy[2 * bot + 1])
+            bot = i;
+    int64_t y0 = ceil_shift(xy[2 * top + 1], s), y1 = ceil_shift(xy[2 * bot + 1], s);
+    if (y0 < c->clip.y0)
+        y0 = c->clip.y0;
+    if (y1 > c->clip.y1)
+        y1 = c->clip.y1;
+    if (y0 >= y1)
+        return 1;
+    chain_t a = {xy, n, top, 1, 0, {0, 0, 0, 0, 0}}, b = {xy, n, top, -1, 0, {0, 0, 0, 0, 0}};
+    chain_seek(&a, (int32_t)y0, s);
+    chain_seek(&b, (int32_t)y0, s);
+    int fast = plain_solid(c);
+    int bpp = fast ? fx_format_get(c->surf.format)->bits_per_pixel : 0;
+    int32_t cx0 = c->clip.x0, cx1 = c->clip.x1;
+    for (int32_t y = (int32_t)y0; y < y1; y++) {
+        if (y >= a.yend)
+            chain_seek(&a, y, s);
+        if (y >= b.yend)
+            chain_seek(&b, y, s);
+        int64_t lo = FX_MIN(a.g.x, b.g.x), hi = FX_MAX(a.g.x, b.g.x);
+        int32_t xa = (int32_t)clamp64(lo, cx0, cx1), xb = (int32_t)clamp64(hi, cx0, cx1);
+        if (xa < xb) {
+            if (bpp == 32)
+                run32((uint32_t *)fx_row(&c->surf, y) + xa, xb - xa, c->native);
+            else if (bpp == 16)
+                run16((uint16_t *)fx_row(&c->surf, y) + xa, xb - xa, (uint16_t)c->native);
+            else if (fast)
+                fx_span_fill(&c->surf, y, xa, xb, c->native);
+            else
+                fx_fill_span(c, y, xa, xb);
+        }
+        edge_step(&a.g);
+        edge_step(&b.g);
+    }
+    return 1;
+}
+
 int fx_fill_path(const fx_ctx *c, const int32_t *xy, const int32_t *counts, int32_t ncontours,
                  unsigned frac_bits, fx_fill_rule rule, fx_fill_edge *edges, int32_t max_edges)
 {
@@ -398,6 +484,8 @@ int fx_fill_path(const fx_ctx *c, const int32_t *xy, const int32_t *counts, int3
     if (fx_rect_empty(clip))
         return 0;
     unsigned s = frac_bits;
+    if (ncontours == 1 && counts[0] >= 4 && monotone_fill(c, xy, counts[0], s))
+        return 0;
     int32_t n = 0;
     const int32_t *p = xy;
     for (int32_t k = 0; k < ncontours; k++) {

@@ -20,6 +20,11 @@
  * 128-bit products), so any int32 vertex works and the pixels never drift.
  * Work is bounded by the visible rows and the edges active on them.
  *
+ * Fast paths, same pixels: triangles walk their two sides in registers; any
+ * single contour whose vertical direction changes exactly twice (every
+ * convex polygon, and y-monotone self-crossing ones) is walked as two
+ * chains from its top vertex, with no edge table and no sorting.
+ *
  * Memory: the edge table lives in caller memory (fx_fill_path) or, for the
  * convenience calls, in a stack array of FX_FILL_STACK_EDGES entries (about
  * 3 KiB); a polygon with more edges than that makes them return -FX_E2BIG.
