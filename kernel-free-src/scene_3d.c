@@ -1,6 +1,642 @@
-/* fixel — scene commands of the 3d module (filled in by that module's work). */
+/* fixel — scene commands of the 3D pipeline: camera, projections, the
+ * model matrix stack, lights, materials, shading and visibility modes,
+ * meshes, planar shadows and the shadow buffer. State lives in the arena
+ * (sc->mod[FX_SCENE_MOD_3D]); the first 3D command creates it. */
+#include "fixel/error.h"
+#include "fixel/render3d.h"
 #include "fixel/scene.h"
 
+#define TRY(x)                   \
+    do {                         \
+        int r_ = (x);            \
+        if (r_ < 0)              \
+            return r_;           \
+    } while (0)
+
+typedef struct s3d {
+    fx3d r;
+    fx_mat4 mstack[32], pstack[4];
+    fx_camera cam;
+    void *zbuf[2];         /* 16- and 32-bit depth buffers, made on demand */
+    void *pbuf;
+    size_t pbytes;
+    void *mesh_mem;        /* reused by every mesh command that fits */
+    size_t mesh_bytes;
+    fx3d_shadowmap sm;
+    uint32_t *smbuf;
+    int32_t smsize;
+} s3d;
+
+static int get(fx_scene *sc, s3d **out)
+{
+    TRY(fx_scene_surface(sc));
+    s3d *s = sc->mod[FX_SCENE_MOD_3D];
+    if (!s) {
+        s = fx_scene_alloc(sc, sizeof *s);
+        if (!s)
+            return fx_scene_error(sc, "out of scene memory for the 3D state");
+        fx3d_init(&s->r, &sc->ctx.surf, s->mstack, 32, s->pstack, 4);
+        fx_camera_set(&s->cam, fx_vec3_make(0, 0, 5 * FX16_ONE), fx_vec3_make(0, 0, 0),
+                      fx_vec3_make(0, FX16_ONE, 0));
+        fx_camera_view(&s->cam, &s->r.view);
+        fx_mat4 p;
+        fx_mat4_perspective(&p, fx_angle_from_deg(45), fx16_from_ratio(sc->w, sc->h), FX16_ONE / 10,
+                            100 * FX16_ONE);
+        fx_mat_stack_load(&s->r.proj, &p);
+        sc->mod[FX_SCENE_MOD_3D] = s;
+    }
+    *out = s;
+    return 0;
+}
+
+static int args_fx(fx_scene *sc, fx16 *v, int n)
+{
+    for (int i = 0; i < n; i++)
+        TRY(fx_scene_arg_fx16(sc, &v[i]));
+    return fx_scene_end(sc);
+}
+
+#define GET(s)                   \
+    s3d *s;                      \
+    TRY(get(sc, &s))
+
+static int cmd_viewport(fx_scene *sc)
+{
+    GET(s);
+    int32_t v[4];
+    for (int i = 0; i < 4; i++)
+        TRY(fx_scene_arg_int(sc, &v[i]));
+    TRY(fx_scene_end(sc));
+    if (v[2] < 1 || v[3] < 1 || v[2] > 16384 || v[3] > 16384)
+        return fx_scene_error(sc, "viewport size %dx%d out of range (1..16384)", v[2], v[3]);
+    fx3d_viewport(&s->r, v[0], v[1], v[2], v[3]);
+    return 0;
+}
+
+static int cmd_depth(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"16", "32", "off", NULL};
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    TRY(fx_scene_end(sc));
+    if (c == 2)
+        return fx3d_set_depth(&s->r, NULL, 0);
+    if (!s->zbuf[c]) {
+        s->zbuf[c] = fx_scene_alloc(sc, fx3d_depth_bytes(&sc->ctx.surf, c ? 32 : 16));
+        if (!s->zbuf[c])
+            return fx_scene_error(sc, "out of scene memory for a depth buffer");
+    }
+    return fx3d_set_depth(&s->r, s->zbuf[c], c ? 32 : 16);
+}
+
+static int cmd_cleardepth(fx_scene *sc)
+{
+    GET(s);
+    TRY(fx_scene_end(sc));
+    fx3d_clear_depth(&s->r);
+    return 0;
+}
+
+static int cmd_painter(fx_scene *sc)
+{
+    GET(s);
+    int32_t n = 32768;
+    if (fx_scene_more(sc))
+        TRY(fx_scene_arg_int(sc, &n));
+    TRY(fx_scene_end(sc));
+    if (n < 1 || n > (1 << 20))
+        return fx_scene_error(sc, "painter capacity %d out of range (1..1048576)", n);
+    size_t need = fx3d_painter_bytes(n);
+    if (need > s->pbytes) {
+        s->pbuf = fx_scene_alloc(sc, need);
+        if (!s->pbuf)
+            return fx_scene_error(sc, "out of scene memory for %d painter's triangles", n);
+        s->pbytes = need;
+    }
+    return fx3d_set_painter(&s->r, s->pbuf, s->pbytes);
+}
+
+static int cmd_flush(fx_scene *sc)
+{
+    GET(s);
+    TRY(fx_scene_end(sc));
+    s->r.ctx = sc->ctx;
+    fx3d_flush(&s->r);
+    if (s->r.pdropped)
+        return fx_scene_error(sc, "%d triangles did not fit the painter's buffer", s->r.pdropped);
+    return 0;
+}
+
+static int cmd_camera(fx_scene *sc)
+{
+    GET(s);
+    fx16 v[9];
+    TRY(args_fx(sc, v, 9));
+    if (fx_camera_set(&s->cam, fx_vec3_make(v[0], v[1], v[2]), fx_vec3_make(v[3], v[4], v[5]),
+                      fx_vec3_make(v[6], v[7], v[8])) < 0)
+        return fx_scene_error(sc, "camera: eye equals look, or up is parallel to the view");
+    fx_camera_view(&s->cam, &s->r.view);
+    return 0;
+}
+
+static int cmd_slide(fx_scene *sc)
+{
+    GET(s);
+    fx16 v[3];
+    TRY(args_fx(sc, v, 3));
+    fx_camera_slide(&s->cam, v[0], v[1], v[2]);
+    fx_camera_view(&s->cam, &s->r.view);
+    return 0;
+}
+
+static int cam_turn(fx_scene *sc, void (*fn)(fx_camera *, fx_angle))
+{
+    GET(s);
+    fx16 d;
+    TRY(args_fx(sc, &d, 1));
+    fn(&s->cam, fx_angle_from_deg16(d));
+    fx_camera_view(&s->cam, &s->r.view);
+    return 0;
+}
+
+static int cmd_roll(fx_scene *sc) { return cam_turn(sc, fx_camera_roll); }
+static int cmd_pitch(fx_scene *sc) { return cam_turn(sc, fx_camera_pitch); }
+static int cmd_yaw(fx_scene *sc) { return cam_turn(sc, fx_camera_yaw); }
+
+static fx16 vp_aspect(const s3d *s)
+{
+    return fx16_from_ratio(s->r.viewport.x1 - s->r.viewport.x0, s->r.viewport.y1 - s->r.viewport.y0);
+}
+
+static int cmd_perspective(fx_scene *sc)
+{
+    GET(s);
+    fx16 v[3];
+    TRY(args_fx(sc, v, 3));
+    fx_angle fov = fx_angle_from_deg16(v[0]);
+    if (v[0] <= 0 || v[0] >= 180 * FX16_ONE || fx3d_perspective(&s->r, fov, vp_aspect(s), v[1], v[2]) < 0)
+        return fx_scene_error(sc, "perspective needs 0 < FOVY < 180 and 0 < NEAR < FAR");
+    return 0;
+}
+
+static int cmd_ortho(fx_scene *sc)
+{
+    GET(s);
+    fx16 v[6];
+    TRY(args_fx(sc, v, 6));
+    if (fx3d_ortho(&s->r, v[0], v[1], v[2], v[3], v[4], v[5]) < 0)
+        return fx_scene_error(sc, "ortho: empty view volume");
+    return 0;
+}
+
+static int cmd_oblique(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"cavalier", "cabinet", NULL};
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    fx16 v[7];
+    TRY(args_fx(sc, v, 7));
+    if (fx3d_oblique(&s->r, v[1], v[2], v[3], v[4], v[5], v[6], fx_angle_from_deg16(v[0]),
+                     c ? FX_OBLIQUE_CABINET : FX_OBLIQUE_CAVALIER) < 0)
+        return fx_scene_error(sc, "oblique: empty view volume");
+    return 0;
+}
+
+/* ---- model transforms ---- */
+
+static int cmd_identity(fx_scene *sc)
+{
+    GET(s);
+    TRY(fx_scene_end(sc));
+    fx_mat4 m;
+    fx_mat4_identity(&m);
+    fx_mat_stack_load(&s->r.model, &m);
+    return 0;
+}
+
+static int cmd_push(fx_scene *sc)
+{
+    GET(s);
+    TRY(fx_scene_end(sc));
+    if (fx_mat_stack_push(&s->r.model) < 0)
+        return fx_scene_error(sc, "matrix stack full (32 levels)");
+    return 0;
+}
+
+static int cmd_pop(fx_scene *sc)
+{
+    GET(s);
+    TRY(fx_scene_end(sc));
+    if (fx_mat_stack_pop(&s->r.model) < 0)
+        return fx_scene_error(sc, "'pop' without a matching 'push'");
+    return 0;
+}
+
+static int cmd_translate(fx_scene *sc)
+{
+    GET(s);
+    fx16 v[3];
+    TRY(args_fx(sc, v, 3));
+    fx_mat4 m;
+    fx_mat4_translate(&m, v[0], v[1], v[2]);
+    fx_mat_stack_mult(&s->r.model, &m);
+    return 0;
+}
+
+static int cmd_scale(fx_scene *sc)
+{
+    GET(s);
+    fx16 v[3];
+    TRY(fx_scene_arg_fx16(sc, &v[0]));
+    v[1] = v[2] = v[0];
+    if (fx_scene_more(sc)) {
+        TRY(fx_scene_arg_fx16(sc, &v[1]));
+        TRY(fx_scene_arg_fx16(sc, &v[2]));
+    }
+    TRY(fx_scene_end(sc));
+    fx_mat4 m;
+    fx_mat4_scale(&m, v[0], v[1], v[2]);
+    fx_mat_stack_mult(&s->r.model, &m);
+    return 0;
+}
+
+static int cmd_rotate(fx_scene *sc)
+{
+    GET(s);
+    fx16 v[4];
+    TRY(args_fx(sc, v, 4));
+    fx_mat4 m;
+    if (fx_mat4_rotate(&m, fx_angle_from_deg16(v[0]), fx_vec3_make(v[1], v[2], v[3])) < 0)
+        return fx_scene_error(sc, "rotate: the axis is zero");
+    fx_mat_stack_mult(&s->r.model, &m);
+    return 0;
+}
+
+static int rot_axis(fx_scene *sc, void (*fn)(fx_mat4 *, fx_angle))
+{
+    GET(s);
+    fx16 d;
+    TRY(args_fx(sc, &d, 1));
+    fx_mat4 m;
+    fn(&m, fx_angle_from_deg16(d));
+    fx_mat_stack_mult(&s->r.model, &m);
+    return 0;
+}
+
+static int cmd_rotatex(fx_scene *sc) { return rot_axis(sc, fx_mat4_rotate_x); }
+static int cmd_rotatey(fx_scene *sc) { return rot_axis(sc, fx_mat4_rotate_y); }
+static int cmd_rotatez(fx_scene *sc) { return rot_axis(sc, fx_mat4_rotate_z); }
+
+static int cmd_shear(fx_scene *sc)
+{
+    GET(s);
+    fx16 v[2];
+    TRY(args_fx(sc, v, 2));
+    fx_mat4 m;
+    fx_mat4_shear_z(&m, v[0], v[1]);
+    fx_mat_stack_mult(&s->r.model, &m);
+    return 0;
+}
+
+static int cmd_reflect(fx_scene *sc)
+{
+    GET(s);
+    fx16 v[4];
+    TRY(args_fx(sc, v, 4));
+    fx_mat4 m;
+    if (fx_mat4_reflect(&m, fx_vec3_make(v[0], v[1], v[2]), v[3]) < 0)
+        return fx_scene_error(sc, "reflect: the plane normal is zero");
+    fx_mat_stack_mult(&s->r.model, &m);
+    return 0;
+}
+
+/* ---- lights, materials, modes ---- */
+
+static int cmd_light(fx_scene *sc)
+{
+    GET(s);
+    int32_t i;
+    TRY(fx_scene_arg_int(sc, &i));
+    if (i < 0 || i >= FX3D_MAX_LIGHTS)
+        return fx_scene_error(sc, "light number %d out of range (0..%d)", i, FX3D_MAX_LIGHTS - 1);
+    static const char *const ch[] = {"off", "directional", "point", "spot", NULL};
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    fx3d_light l;
+    l.type = (fx3d_light_type)c;
+    l.pos = l.spot_dir = fx_vec3_make(0, -FX16_ONE, 0);
+    l.cutoff = FX_ANGLE_45;
+    l.spot_exp = 0;
+    fx_color col = 0xFFFFFF;
+    if (c != 0) {
+        fx16 v[3];
+        for (int k = 0; k < 3; k++)
+            TRY(fx_scene_arg_fx16(sc, &v[k]));
+        l.pos = fx_vec3_make(v[0], v[1], v[2]);
+        if (c == 3) {
+            fx16 d[5];
+            for (int k = 0; k < 5; k++)
+                TRY(fx_scene_arg_fx16(sc, &d[k]));
+            l.spot_dir = fx_vec3_make(d[0], d[1], d[2]);
+            if (d[3] <= 0 || d[3] >= 90 * FX16_ONE || d[4] < 0 || d[4] > 128 * FX16_ONE)
+                return fx_scene_error(sc, "spot needs 0 < CUTOFF < 90 and 0 <= EXPONENT <= 128");
+            l.cutoff = fx_angle_from_deg16(d[3]);
+            l.spot_exp = fx16_round(d[4]);
+        }
+        TRY(fx_scene_arg_color(sc, &col));
+    }
+    TRY(fx_scene_end(sc));
+    if (c == 1 && l.pos.x == 0 && l.pos.y == 0 && l.pos.z == 0)
+        return fx_scene_error(sc, "a directional light needs a non-zero direction");
+    l.ambient = fx3d_rgb_from_color(0);
+    l.diffuse = l.specular = fx3d_rgb_from_color(col);
+    s->r.light[i] = l;
+    return 0;
+}
+
+static int cmd_ambient(fx_scene *sc)
+{
+    GET(s);
+    fx_color c;
+    TRY(fx_scene_arg_color(sc, &c));
+    TRY(fx_scene_end(sc));
+    s->r.ambient = fx3d_rgb_from_color(c);
+    return 0;
+}
+
+static int cmd_material(fx_scene *sc)
+{
+    GET(s);
+    fx_color a, d, sp, e = 0;
+    int32_t sh;
+    TRY(fx_scene_arg_color(sc, &a));
+    TRY(fx_scene_arg_color(sc, &d));
+    TRY(fx_scene_arg_color(sc, &sp));
+    TRY(fx_scene_arg_int(sc, &sh));
+    if (fx_scene_more(sc))
+        TRY(fx_scene_arg_color(sc, &e));
+    TRY(fx_scene_end(sc));
+    if (sh < 0 || sh > 128)
+        return fx_scene_error(sc, "shininess %d out of range (0..128)", sh);
+    fx3d_material *m = &s->r.mat;
+    m->ambient = fx3d_rgb_from_color(a);
+    m->diffuse = fx3d_rgb_from_color(d);
+    m->specular = fx3d_rgb_from_color(sp);
+    m->emission = fx3d_rgb_from_color(e);
+    m->shininess = sh;
+    return 0;
+}
+
+static int choice_cmd(fx_scene *sc, const char *const *ch, int *out)
+{
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    TRY(fx_scene_end(sc));
+    *out = c;
+    return 0;
+}
+
+static int cmd_shading(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"flat", "gouraud", "phong", NULL};
+    int c;
+    TRY(choice_cmd(sc, ch, &c));
+    s->r.shading = (fx3d_shading)c;
+    return 0;
+}
+
+static int cmd_cull(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"none", "back", "front", NULL};
+    int c;
+    TRY(choice_cmd(sc, ch, &c));
+    s->r.cull = (fx3d_cull)c;
+    return 0;
+}
+
+static int cmd_polygon(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"fill", "wire", "hidden", NULL};
+    int c;
+    TRY(choice_cmd(sc, ch, &c));
+    s->r.polymode = (fx3d_polymode)c;
+    return 0;
+}
+
+static int cmd_background(fx_scene *sc)
+{
+    GET(s);
+    fx_color c;
+    TRY(fx_scene_arg_color(sc, &c));
+    TRY(fx_scene_end(sc));
+    s->r.background = c;
+    return 0;
+}
+
+/* ---- meshes ---- */
+
+static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
+{
+    int32_t nv, nt;
+    if (fx_mesh_size(p, &nv, &nt) < 0)
+        return fx_scene_error(sc, "tessellation out of range");
+    size_t need = (size_t)nv * 2 * sizeof(fx_vec3) + (size_t)nt * 3 * sizeof(uint32_t);
+    if (need > s->mesh_bytes) {
+        s->mesh_mem = fx_scene_alloc(sc, need);
+        if (!s->mesh_mem)
+            return fx_scene_error(sc, "out of scene memory for a mesh of %d vertices", nv);
+        s->mesh_bytes = need;
+    }
+    fx_mesh m;
+    m.pos = s->mesh_mem;
+    m.nrm = m.pos + nv;
+    m.tri = (uint32_t *)(m.nrm + nv);
+    m.cap_verts = nv;
+    m.cap_tris = nt;
+    TRY(fx_mesh_make(&m, p));
+    s->r.ctx = sc->ctx;
+    return fx3d_draw(&s->r, &m);
+}
+
+static int mesh_cmd(fx_scene *sc, fx_mesh_kind kind, int nfx, int nint)
+{
+    GET(s);
+    fx_mesh_params p = {kind, 0, 0, 0, 0, 0};
+    fx16 *f[3] = {&p.a, &p.b, &p.c};
+    int32_t *iv[2] = {&p.n, &p.k};
+    for (int i = 0; i < nfx; i++)
+        TRY(fx_scene_arg_fx16(sc, f[i]));
+    for (int i = 0; i < nint; i++)
+        TRY(fx_scene_arg_int(sc, iv[i]));
+    TRY(fx_scene_end(sc));
+    return draw_params(sc, s, &p);
+}
+
+static int cmd_cube(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_CUBE, 1, 0); }
+static int cmd_tetra(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_TETRAHEDRON, 1, 0); }
+static int cmd_octa(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_OCTAHEDRON, 1, 0); }
+static int cmd_dodeca(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_DODECAHEDRON, 1, 0); }
+static int cmd_icosa(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_ICOSAHEDRON, 1, 0); }
+static int cmd_sphere(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_SPHERE, 1, 2); }
+static int cmd_ellipsoid(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_ELLIPSOID, 3, 2); }
+static int cmd_torus(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_TORUS, 2, 2); }
+static int cmd_cone(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_CONE, 2, 1); }
+static int cmd_cylinder(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_CYLINDER, 2, 1); }
+static int cmd_teapot(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_TEAPOT, 1, 1); }
+static int cmd_floor(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_PLANE, 1, 1); }
+
+static int cmd_obj(fx_scene *sc)
+{
+    GET(s);
+    char path[256];
+    TRY(fx_scene_arg_string(sc, path, sizeof path));
+    TRY(fx_scene_end(sc));
+    if (!sc->host.load_file)
+        return fx_scene_error(sc, "files not available");
+    const uint8_t *data;
+    size_t len;
+    int e = sc->host.load_file(sc->host.user, path, &data, &len);
+    if (e < 0)
+        return fx_scene_error(sc, "cannot read '%s': %s", path, fx_strerror(e));
+    fx_obj_error err;
+    int32_t nv, nt;
+    if (fx_mesh_obj_size((const char *)data, len, &nv, &nt, &err) < 0)
+        return fx_scene_error(sc, "%s: %s", path, err.msg);
+    size_t need = (size_t)nv * 2 * sizeof(fx_vec3) + (size_t)nt * 3 * sizeof(uint32_t);
+    fx_vec3 *mem = fx_scene_alloc(sc, need);
+    if (!mem)
+        return fx_scene_error(sc, "out of scene memory for '%s' (%d vertices)", path, nv);
+    fx_mesh m = {mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt};
+    if (fx_mesh_obj_parse(&m, (const char *)data, len, &err) < 0)
+        return fx_scene_error(sc, "%s: %s", path, err.msg);
+    s->r.ctx = sc->ctx;
+    return fx3d_draw(&s->r, &m);
+}
+
+/* ---- shadows ---- */
+
+static int cmd_shadowplane(fx_scene *sc)
+{
+    GET(s);
+    if (fx_scene_more(sc)) {
+        char w[64];
+        int save = sc->pos;
+        if (fx_scene_arg_word(sc, w, sizeof w) >= 0 && w[0] == 'o' && w[1] == 'f' && w[2] == 'f' && !w[3]) {
+            TRY(fx_scene_end(sc));
+            fx3d_plane_shadow_off(&s->r);
+            return 0;
+        }
+        sc->pos = save;
+    }
+    fx16 p[4];
+    for (int i = 0; i < 4; i++)
+        TRY(fx_scene_arg_fx16(sc, &p[i]));
+    int32_t li;
+    fx_color c;
+    TRY(fx_scene_arg_int(sc, &li));
+    TRY(fx_scene_arg_color(sc, &c));
+    TRY(fx_scene_end(sc));
+    if (li < 0 || li >= FX3D_MAX_LIGHTS)
+        return fx_scene_error(sc, "light number %d out of range (0..%d)", li, FX3D_MAX_LIGHTS - 1);
+    fx3d_plane_shadow(&s->r, p, li, c);
+    return 0;
+}
+
+static int cmd_shadowmap(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"begin", "end", "off", NULL};
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    if (c != 0) {
+        TRY(fx_scene_end(sc));
+        if (c == 1) {
+            if (!s->r.sm)
+                return fx_scene_error(sc, "'shadowmap end' without 'shadowmap begin'");
+            fx3d_shadow_end(&s->r);
+        } else {
+            fx3d_shadow_off(&s->r);
+        }
+        return 0;
+    }
+    int32_t size, li;
+    fx16 v[6];
+    TRY(fx_scene_arg_int(sc, &size));
+    TRY(fx_scene_arg_int(sc, &li));
+    TRY(args_fx(sc, v, 6));
+    if (size < 16 || size > 4096)
+        return fx_scene_error(sc, "shadow map size %d out of range (16..4096)", size);
+    if (li < 0 || li >= FX3D_MAX_LIGHTS || s->r.light[li].type == FX3D_LIGHT_OFF ||
+        s->r.light[li].type == FX3D_LIGHT_DIRECTIONAL)
+        return fx_scene_error(sc, "the shadow map needs a point or spot light");
+    if (size > s->smsize) {
+        s->smbuf = fx_scene_alloc(sc, (size_t)size * (size_t)size * 4);
+        if (!s->smbuf)
+            return fx_scene_error(sc, "out of scene memory for a %dx%d shadow map", size, size);
+        s->smsize = size;
+    }
+    fx3d_shadow_init(&s->sm, s->smbuf, size, li);
+    if (v[3] <= 0 || v[3] >= 180 * FX16_ONE ||
+        fx3d_shadow_aim(&s->sm, s->r.light[li].pos, fx_vec3_make(v[0], v[1], v[2]),
+                        fx_angle_from_deg16(v[3]), v[4], v[5]) < 0)
+        return fx_scene_error(sc, "shadowmap: bad aim (target = light, or bad FOV/NEAR/FAR)");
+    fx3d_shadow_begin(&s->r, &s->sm);
+    return 0;
+}
+
+#define D FX_SCENE_DRAWS
 const fx_scene_cmd fx_scene_cmds_3d[] = {
+    {"viewport", cmd_viewport, "viewport X Y W H", D},
+    {"depth", cmd_depth, "depth 16|32|off", D},
+    {"cleardepth", cmd_cleardepth, "cleardepth", D},
+    {"painter", cmd_painter, "painter [MAXTRIANGLES]", D},
+    {"flush", cmd_flush, "flush", D},
+    {"camera", cmd_camera, "camera EX EY EZ LX LY LZ UX UY UZ", D},
+    {"slide", cmd_slide, "slide DU DV DN", D},
+    {"roll", cmd_roll, "roll DEG", D},
+    {"pitch", cmd_pitch, "pitch DEG", D},
+    {"yaw", cmd_yaw, "yaw DEG", D},
+    {"perspective", cmd_perspective, "perspective FOVY NEAR FAR", D},
+    {"ortho", cmd_ortho, "ortho L R B T NEAR FAR", D},
+    {"oblique", cmd_oblique, "oblique cavalier|cabinet ALPHA L R B T NEAR FAR", D},
+    {"identity", cmd_identity, "identity", D},
+    {"push", cmd_push, "push", D},
+    {"pop", cmd_pop, "pop", D},
+    {"translate", cmd_translate, "translate X Y Z", D},
+    {"scale", cmd_scale, "scale S | scale SX SY SZ", D},
+    {"rotate", cmd_rotate, "rotate DEG AX AY AZ", D},
+    {"rotatex", cmd_rotatex, "rotatex DEG", D},
+    {"rotatey", cmd_rotatey, "rotatey DEG", D},
+    {"rotatez", cmd_rotatez, "rotatez DEG", D},
+    {"shear", cmd_shear, "shear A B", D},
+    {"reflect", cmd_reflect, "reflect NX NY NZ D", D},
+    {"light", cmd_light,
+     "light I off | directional DX DY DZ #RGB | point X Y Z #RGB | spot X Y Z DX DY DZ CUTOFF EXP #RGB", D},
+    {"ambient", cmd_ambient, "ambient #RRGGBB", D},
+    {"material", cmd_material, "material #AMB #DIFF #SPEC SHININESS [#EMISSION]", D},
+    {"shading", cmd_shading, "shading flat|gouraud|phong", D},
+    {"cull", cmd_cull, "cull none|back|front", D},
+    {"polygon", cmd_polygon, "polygon fill|wire|hidden", D},
+    {"background", cmd_background, "background #RRGGBB", D},
+    {"cube", cmd_cube, "cube EDGE", D},
+    {"tetrahedron", cmd_tetra, "tetrahedron RADIUS", D},
+    {"octahedron", cmd_octa, "octahedron RADIUS", D},
+    {"dodecahedron", cmd_dodeca, "dodecahedron RADIUS", D},
+    {"icosahedron", cmd_icosa, "icosahedron RADIUS", D},
+    {"sphere", cmd_sphere, "sphere R SLICES STACKS", D},
+    {"ellipsoid", cmd_ellipsoid, "ellipsoid RX RY RZ SLICES STACKS", D},
+    {"torus", cmd_torus, "torus R r SIDES RINGS", D},
+    {"cone", cmd_cone, "cone R H SLICES", D},
+    {"cylinder", cmd_cylinder, "cylinder R H SLICES", D},
+    {"teapot", cmd_teapot, "teapot SIZE N", D},
+    {"floor", cmd_floor, "floor SIZE N", D},
+    {"obj", cmd_obj, "obj \"FILE\"", D},
+    {"shadowplane", cmd_shadowplane, "shadowplane A B C D LIGHT #RGB | shadowplane off", D},
+    {"shadowmap", cmd_shadowmap, "shadowmap begin SIZE LIGHT TX TY TZ FOV NEAR FAR | shadowmap end | shadowmap off", D},
     {0, 0, 0, 0},
 };

@@ -1,0 +1,87 @@
+/* fixel — triangle meshes: the solids of the course, the Utah teapot, and a
+ * Wavefront OBJ parser, all writing into caller-provided arrays.
+ *
+ * A mesh is positions, optional per-vertex unit normals and triangles as
+ * index triples, counter-clockwise seen from outside (the front face, as in
+ * OpenGL). Every generator has a size function that says how many vertices
+ * and triangles it will write for the given tessellation; the generator
+ * then fails with -FX_ENOSPC rather than write past the arrays the caller
+ * declared in m->cap_verts and m->cap_tris.
+ *
+ * Flat-faced solids (the five Platonic solids, the caps of cones and
+ * cylinders) repeat each corner once per face, so that smooth shading keeps
+ * their faces flat; curved surfaces share vertices and carry the analytic
+ * normal. All sizes are Q16.16 and the solids are centred on the origin
+ * (cone and cylinder stand on y = 0, axis +y; the teapot sits on y = 0).
+ */
+#ifndef FIXEL_MESH_H
+#define FIXEL_MESH_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "fixel/mat3d.h"
+
+typedef struct fx_mesh {
+    fx_vec3 *pos;
+    fx_vec3 *nrm;  /* NULL: faces are lit with their own (flat) normal */
+    uint32_t *tri; /* 3 indices per triangle */
+    int32_t nverts, ntris;
+    int32_t cap_verts, cap_tris; /* sizes of the arrays above */
+} fx_mesh;
+
+/* Tessellation parameters and their limits (-FX_EINVAL outside). */
+#define FX_MESH_MAX_SEG 256
+
+typedef enum fx_mesh_kind {
+    FX_MESH_CUBE,         /* edge a */
+    FX_MESH_TETRAHEDRON,  /* circumradius a */
+    FX_MESH_OCTAHEDRON,   /* circumradius a */
+    FX_MESH_DODECAHEDRON, /* circumradius a */
+    FX_MESH_ICOSAHEDRON,  /* circumradius a */
+    FX_MESH_SPHERE,       /* radius a; slices n (>= 3), stacks k (>= 2) */
+    FX_MESH_ELLIPSOID,    /* radii a, b, c; slices n, stacks k */
+    FX_MESH_TORUS,        /* ring radius a, tube radius b; sides n (>= 3), rings k (>= 3) */
+    FX_MESH_CONE,         /* base radius a, height b; slices n (>= 3) */
+    FX_MESH_CYLINDER,     /* radius a, height b; slices n (>= 3) */
+    FX_MESH_TEAPOT,       /* height scale a (1: Newell's size, 3.15 tall); n x n per patch */
+    FX_MESH_PLANE,        /* square of side a in y = 0, facing +y; n x n cells */
+    FX_MESH_KIND_COUNT
+} fx_mesh_kind;
+
+typedef struct fx_mesh_params {
+    fx_mesh_kind kind;
+    fx16 a, b, c;
+    int32_t n, k;
+} fx_mesh_params;
+
+/* How many vertices and triangles the generator writes. */
+int fx_mesh_size(const fx_mesh_params *p, int32_t *nverts, int32_t *ntris);
+/* Generate into m (pos, nrm, tri and the capacities set by the caller;
+ * nrm must not be NULL). */
+int fx_mesh_make(fx_mesh *m, const fx_mesh_params *p);
+/* Names as used by scripts ("cube", "teapot", ...); FX_MESH_KIND_COUNT if unknown. */
+fx_mesh_kind fx_mesh_kind_from_name(const char *name);
+
+/* ---- Wavefront OBJ ----
+ * Accepted: v x y z [w], vn, vt (ignored), f with v, v/vt, v//vn or
+ * v/vt/vn corners (negative indices count back from the end), polygons of
+ * 3+ corners (triangulated as fans), and the statements o, g, s, usemtl,
+ * mtllib, l, p (ignored). Numbers are decimal with an optional exponent
+ * ("1.5e-3"), rounded to nearest Q16.16; values beyond +-32767 are errors.
+ * Normals are rebuilt per vertex from the faces (area-weighted), since OBJ
+ * normals belong to face corners, not to vertices.
+ * Anything else is rejected: the return value is negative and err holds a
+ * message naming the line ("line 12: face index 40 out of range (1..36)"). */
+typedef struct fx_obj_error {
+    int line;
+    char msg[120];
+} fx_obj_error;
+
+int fx_mesh_obj_size(const char *text, size_t len, int32_t *nverts, int32_t *ntris,
+                     fx_obj_error *err);
+int fx_mesh_obj_parse(fx_mesh *m, const char *text, size_t len, fx_obj_error *err);
+
+/* Smooth per-vertex normals from the triangles (area-weighted average). */
+void fx_mesh_compute_normals(fx_mesh *m);
+
+#endif

@@ -1,0 +1,200 @@
+/* fixel — the 3D pipeline: transform, light, clip, project, rasterize.
+ *
+ * It follows the OpenGL 1.x fixed pipeline that the course teaches, with
+ * the state in one caller-owned struct (fx3d) instead of a global context:
+ *
+ *   object --model stack--> world --view (camera)--> eye --projection stack-->
+ *   clip --homogeneous clipping--> divide --viewport--> screen (24.8)
+ *
+ * The camera's view matrix is kept apart from the model stack (GL keeps both
+ * in one model-view matrix; loading the camera at the bottom of GL's stack
+ * is the same product). Lights are given in world coordinates.
+ *
+ * Clipping: triangles are clipped in homogeneous clip space against the
+ * near and far planes and against a guard band |x|, |y| <= G w (G chosen
+ * per viewport so that screen coordinates stay within +-2^14 pixels); the
+ * rasterizer scissors the rest. A triangle crossing the camera plane
+ * therefore renders exactly its visible part.
+ *
+ * Perspective division is integer: screen x = round((x + w) * W * 128 / w)
+ * in 24.8 (one division per vertex, exact rounding of the Q16.16 clip
+ * values, so the only error is the +-2^-17 rounding already in x and w,
+ * magnified by W / (2 w)); depth = floor((z + w) * 2^29 / w) in [0, 2^30].
+ *
+ * Rasterization: pixel (X, Y) is covered when its centre is inside the
+ * triangle, ties going to top and left edges; integer screen coordinates
+ * are pixel centres (the same rule as fill.h). Depth, colour, normal and
+ * position are interpolated affinely in screen space with 16 fraction bits
+ * per pixel step (Gouraud's original scheme; colours are not perspective
+ * corrected). A triangle thinner than the gradients can represent falls
+ * back to its average attributes.
+ */
+#ifndef FIXEL_RENDER3D_H
+#define FIXEL_RENDER3D_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "fixel/draw.h"
+#include "fixel/mat3d.h"
+#include "fixel/mesh.h"
+
+/* Linear colour, Q16.16 per channel (1.0 = full; light colours may exceed 1). */
+typedef struct fx3d_rgb {
+    fx16 r, g, b;
+} fx3d_rgb;
+fx3d_rgb fx3d_rgb_from_color(fx_color c);
+/* Clamp to [0, 1] and round to 8 bits per channel, opaque. */
+fx_color fx3d_rgb_to_color(fx3d_rgb c);
+
+typedef enum fx3d_light_type {
+    FX3D_LIGHT_OFF,
+    FX3D_LIGHT_DIRECTIONAL, /* pos = direction toward the light */
+    FX3D_LIGHT_POINT,
+    FX3D_LIGHT_SPOT         /* point light limited to a cone */
+} fx3d_light_type;
+
+/* The course's lighting model, per light and channel:
+ *   I = spot * (Ia ka + Id kd max(N.L, 0) + Is ks max(R.V, 0)^shininess)
+ * with R = 2 (N.L) N - L the reflection of L, V toward the viewer, and
+ * spot = max(-L.D, 0)^exponent inside the cut-off cone (0 outside), 1 for
+ * other lights. The total adds emission and global ambient * ka. No
+ * distance attenuation. */
+typedef struct fx3d_light {
+    fx3d_light_type type;
+    fx_vec3 pos;      /* world: position, or direction toward a directional light */
+    fx_vec3 spot_dir; /* world: where the spot points */
+    fx_angle cutoff;  /* half-angle of the spot cone (< 90 degrees) */
+    int32_t spot_exp; /* 0..128 */
+    fx3d_rgb ambient, diffuse, specular;
+} fx3d_light;
+
+typedef struct fx3d_material {
+    fx3d_rgb ambient, diffuse, specular, emission;
+    int32_t shininess; /* 0..128 */
+} fx3d_material;
+
+typedef enum fx3d_shading { FX3D_FLAT, FX3D_GOURAUD, FX3D_PHONG } fx3d_shading;
+typedef enum fx3d_cull { FX3D_CULL_NONE, FX3D_CULL_BACK, FX3D_CULL_FRONT } fx3d_cull;
+typedef enum fx3d_polymode {
+    FX3D_FILL,
+    FX3D_WIRE,        /* every edge, in ctx.color */
+    FX3D_HIDDEN_LINE  /* faces filled with .background, edges in ctx.color where visible */
+} fx3d_polymode;
+typedef enum fx3d_visibility {
+    FX3D_VIS_NONE,    /* draw in submission order */
+    FX3D_VIS_DEPTH,   /* depth buffer (fx3d_set_depth) */
+    FX3D_VIS_PAINTER  /* depth sort: buffered until fx3d_flush, then drawn far to near */
+} fx3d_visibility;
+
+/* A shadow buffer: a square depth map rendered from a light (see
+ * fx3d_shadow_begin). */
+typedef struct fx3d_shadowmap {
+    uint32_t *depth; /* size * size entries, from the caller */
+    int32_t size;
+    int light;       /* the light whose diffuse and specular the shadow removes */
+    fx_mat4 view_proj; /* world -> the light's clip space */
+    uint32_t bias;     /* depth tolerance against self-shadowing (depth units of 2^-30) */
+} fx3d_shadowmap;
+
+#define FX3D_MAX_LIGHTS 8
+
+typedef struct fx3d {
+    fx_ctx ctx;          /* surface, clip rectangle, wireframe colour */
+    fx_rect viewport;
+    fx_mat4 view;        /* world -> eye (fx_camera_view) */
+    fx_mat_stack model;  /* object -> world */
+    fx_mat_stack proj;   /* eye -> clip */
+    int parallel;        /* set by the projection helpers: viewer at infinity */
+    void *depth;         /* surface-sized depth buffer, 16 or 32 bits per pixel */
+    int depth_bits;
+    fx3d_shading shading;
+    fx3d_cull cull;
+    fx3d_polymode polymode;
+    fx3d_visibility visibility;
+    fx_color background; /* face colour in hidden-line mode */
+    fx3d_light light[FX3D_MAX_LIGHTS];
+    fx3d_rgb ambient;    /* global ambient light */
+    fx3d_material mat;
+    /* painter's mode */
+    void *pbuf;
+    int32_t pcap, pcount, pdropped;
+    /* planar projected shadows */
+    int plane_shadow;
+    fx16 plane[4];        /* world plane a x + b y + c z + d = 0 */
+    int plane_light;
+    fx_color plane_color;
+    /* shadow buffer */
+    fx3d_shadowmap *sm;
+    int sm_phase;         /* 0 off, 1 rendering the map, 2 using it */
+    /* statistics of the last fx3d_draw (for tests and benches) */
+    int32_t stat_culled, stat_drawn, stat_clipped;
+} fx3d;
+
+/* A pipeline on surface s: viewport = whole surface, identity matrices,
+ * Gouraud, back-face culling, fill, no depth buffer, light 0 a white
+ * directional light from (0, 0, 1), a grey plastic material. The stacks
+ * live in the caller's arrays (>= 1 slot each). */
+int fx3d_init(fx3d *r, const fx_surface *s, fx_mat4 *model_stack, int model_cap,
+              fx_mat4 *proj_stack, int proj_cap);
+void fx3d_viewport(fx3d *r, int32_t x, int32_t y, int32_t w, int32_t h);
+/* Bytes of a depth buffer for the surface (bits 16 or 32). */
+size_t fx3d_depth_bytes(const fx_surface *s, int bits);
+/* Attach (and clear) a depth buffer and switch to FX3D_VIS_DEPTH;
+ * buf == NULL detaches it. */
+int fx3d_set_depth(fx3d *r, void *buf, int bits);
+void fx3d_clear_depth(fx3d *r);
+
+/* Painter's mode: triangles are kept (up to what fits in mem) and drawn
+ * sorted by mean depth, farthest first, by fx3d_flush. Triangles beyond the
+ * buffer are counted in pdropped and lost. */
+size_t fx3d_painter_bytes(int32_t ntris);
+int fx3d_set_painter(fx3d *r, void *mem, size_t bytes);
+void fx3d_flush(fx3d *r);
+
+/* Projection helpers: load the current projection matrix (and note whether
+ * the viewer is at infinity, for specular highlights). */
+int fx3d_perspective(fx3d *r, fx_angle fovy, fx16 aspect, fx16 znear, fx16 zfar);
+int fx3d_ortho(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar);
+int fx3d_oblique(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar,
+                 fx_angle alpha, fx16 len);
+
+/* Draw a mesh with the current state. Returns 0 or a negative error. */
+int fx3d_draw(fx3d *r, const fx_mesh *m);
+
+/* Planar shadows: every later fx3d_draw also projects its front faces from
+ * light `light` (point or directional) onto the world plane
+ * a x + b y + c z + d = 0 and draws them in colour c, depth-tested just in
+ * front of the plane (needs the depth buffer to hide them behind things). */
+void fx3d_plane_shadow(fx3d *r, const fx16 plane[4], int light, fx_color c);
+void fx3d_plane_shadow_off(fx3d *r);
+
+/* Shadow buffer, in two passes like a GL program:
+ *   fx3d_shadow_aim(&sm, ...);     light's view and projection
+ *   fx3d_shadow_begin(r, &sm);     clears the map; draws now fill it
+ *   ... draw the shadow casters ...
+ *   fx3d_shadow_end(r);            draws now light with the map
+ *   ... draw the scene ...
+ *   fx3d_shadow_off(r);
+ * A pixel whose position, seen from the light, is farther than the map's
+ * depth (plus bias) gets no diffuse or specular from that light. */
+int fx3d_shadow_init(fx3d_shadowmap *sm, uint32_t *depth, int32_t size, int light);
+int fx3d_shadow_aim(fx3d_shadowmap *sm, fx_vec3 from, fx_vec3 at, fx_angle fov, fx16 znear,
+                    fx16 zfar);
+void fx3d_shadow_begin(fx3d *r, fx3d_shadowmap *sm);
+void fx3d_shadow_end(fx3d *r);
+void fx3d_shadow_off(fx3d *r);
+
+/* Lighting of one point (eye-space position and unit normal) with the
+ * current lights and material; what the renderer evaluates per vertex
+ * (Gouraud), per face (flat) or per pixel (Phong). */
+fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal);
+
+/* One frame of the benchmark scene: a Gouraud-shaded Utah teapot (8 x 8
+ * per patch, 4096 triangles) with a 32-bit depth buffer, two lights and a
+ * camera turned by `angle` about the teapot, drawn on s (any size; the
+ * bench uses 1920 x 1080). mem must hold fx3d_bench_teapot_bytes(s)
+ * bytes (8-byte aligned). Returns 0 or a negative error. */
+size_t fx3d_bench_teapot_bytes(const fx_surface *s);
+int fx3d_bench_teapot(const fx_surface *s, void *mem, size_t bytes, fx_angle angle);
+
+#endif
