@@ -438,20 +438,20 @@ int fx_mat4_ortho(fx_mat4 *m, fx16 l, fx16 r, fx16 b, fx16 t, fx16 zn, fx16 zf)
 }
 
 int fx_mat4_oblique(fx_mat4 *m, fx16 l, fx16 r, fx16 b, fx16 t, fx16 zn, fx16 zf,
-                    fx_angle alpha, fx16 len)
+                    fx_angle alpha, fx16 len, fx16 plane)
 {
     fx_mat4 o, h;
     int e = fx_mat4_ortho(&o, l, r, b, t, zn, zf);
     if (e < 0)
         return e;
-    /* Depth in front of the near plane is d = -z - near; the point slides
-     * by len * d along (cos alpha, sin alpha). */
+    /* Depth beyond the projection plane is d = -z - plane; the point
+     * slides by len * d along (cos alpha, sin alpha). */
     fx16 lc = fx16_mul(len, fx_cos(alpha)), ls = fx16_mul(len, fx_sin(alpha));
     fx_mat4_identity(&h);
     h.m[0][2] = -lc;
     h.m[1][2] = -ls;
-    h.m[0][3] = -fx16_mul(lc, zn);
-    h.m[1][3] = -fx16_mul(ls, zn);
+    h.m[0][3] = -fx16_mul(lc, plane);
+    h.m[1][3] = -fx16_mul(ls, plane);
     fx_mat4_mul(m, &o, &h);
     return 0;
 }

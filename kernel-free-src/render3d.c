@@ -38,7 +38,9 @@ typedef struct elight {
 
 /* What one triangle needs in the rasterizer. */
 typedef struct tri_mode {
-    uint8_t kind, na, ztest, zwrite, use_sm, outline;
+    uint8_t kind, na, ztest, zwrite, use_sm;
+    uint8_t outline;     /* 0 fill, 1 fill and edges, 2 edges only, 3 fill pushed back */
+    uint8_t lines_ztest; /* edges depth-tested */
     int32_t zbias;
     fx_color flat[2]; /* lit, shadowed */
 } tri_mode;
@@ -310,10 +312,10 @@ int fx3d_ortho(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 zn, fx16 zf)
 }
 
 int fx3d_oblique(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 zn, fx16 zf, fx_angle alpha,
-                 fx16 len)
+                 fx16 len, fx16 plane)
 {
     fx_mat4 m;
-    int e = fx_mat4_oblique(&m, l, rt, b, t, zn, zf, alpha, len);
+    int e = fx_mat4_oblique(&m, l, rt, b, t, zn, zf, alpha, len, plane);
     if (e < 0)
         return e;
     fx_mat_stack_load(&r->proj, &m);
@@ -509,6 +511,14 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
 
     plane_set ps;
     setup_planes(&ps, v0, v1, v2, m->na, area2);
+    int64_t zbias = m->zbias;
+    if (m->outline == 1 || m->outline == 3) {
+        /* Hidden-line faces are pushed back by their depth slope plus a
+         * constant (glPolygonOffset(1, 1)), so that their own edges, drawn
+         * on rounded pixel positions, stay in front of them. */
+        int64_t gx = ps.gx[0] < 0 ? -ps.gx[0] : ps.gx[0], gy = ps.gy[0] < 0 ? -ps.gy[0] : ps.gy[0];
+        zbias -= ((gx > gy ? gx : gy) >> 16) + (1 << 12);
+    }
     const fx_surface *s = pc->s;
     for (int32_t y = y0; y <= y1; y++) {
         int64_t py = (int64_t)y * 256;
@@ -532,7 +542,7 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
         uint32_t *z32 = pc->zbits == 32 ? (uint32_t *)pc->zb + (size_t)y * (size_t)pc->zstride : NULL;
         uint16_t *z16 = pc->zbits == 16 ? (uint16_t *)pc->zb + (size_t)y * (size_t)pc->zstride : NULL;
         for (int64_t x = xl; x <= xr; x++) {
-            int64_t zz = (val[0] >> 16) - m->zbias;
+            int64_t zz = (val[0] >> 16) - zbias;
             uint32_t z = zz < 0 ? 0 : zz > ((int64_t)1 << 30) ? (1u << 30) : (uint32_t)zz;
             int pass = 1;
             if (z32) {
@@ -584,14 +594,14 @@ static void raster_line(const pctx *pc, const svert *a, const svert *b, int ztes
     int64_t z = (int64_t)a->z << 16, dz = n ? (((int64_t)b->z - a->z) * 65536) / n : 0;
     int32_t err = (adx > ady ? adx : -ady) / 2;
     uint32_t native = fx_pack(pc->s->format, col);
-    const int32_t tol = 1 << 18;
+    const int32_t tol = 1 << 10;
     int32_t x = x0, y = y0;
     for (int32_t i = 0; i <= n; i++) {
         if (x >= pc->clip.x0 && x < pc->clip.x1 && y >= pc->clip.y0 && y < pc->clip.y1) {
             int ok = 1;
             uint32_t zz = (uint32_t)(z >> 16);
             if (ztest && pc->zbits == 32)
-                ok = zz <= ((uint32_t *)pc->zb)[(size_t)y * (size_t)pc->zstride + (size_t)x] + (uint32_t)tol;
+                ok = (int64_t)zz <= (int64_t)((uint32_t *)pc->zb)[(size_t)y * (size_t)pc->zstride + (size_t)x] + tol;
             else if (ztest && pc->zbits == 16)
                 ok = (zz >> 14) <= (uint32_t)((uint16_t *)pc->zb)[(size_t)y * (size_t)pc->zstride + (size_t)x] + (tol >> 14);
             if (ok)
@@ -735,9 +745,9 @@ static void draw_clipped(pctx *pc, cvert *v, const tri_mode *m)
             emit_tri(pc, &s[0], &s[i], &s[i + 1], m);
         return;
     }
-    if (m->outline == 2) { /* plain wireframe */
+    if (m->outline == 2) { /* edges only */
         for (int i = 0; i < n; i++)
-            raster_line(pc, &s[i], &s[(i + 1) % n], 0, pc->wire);
+            raster_line(pc, &s[i], &s[(i + 1) % n], m->lines_ztest, pc->wire);
         return;
     }
     for (int i = 1; i + 1 < n; i++)
@@ -842,6 +852,11 @@ static int draw_shadow_pass(fx3d *r, const fx_mesh *m)
             v[i].c[2] = c.z;
             v[i].c[3] = c.w;
         }
+        /* Only faces turned away from the light go into the map: the lit
+         * faces then compare against the far side of their own object and
+         * cannot shadow themselves ("acne"). */
+        if (facing(v) > 0)
+            continue;
         draw_clipped(&pc, v, &tm);
     }
     return 0;
@@ -911,106 +926,114 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
         tm.kind = K_FLAT;
         tm.use_sm = 0;
         tm.outline = r->polymode == FX3D_WIRE ? 2 : 1;
+        tm.lines_ztest = r->polymode == FX3D_HIDDEN_LINE && pc.zb != NULL;
         tm.flat[0] = tm.flat[1] = r->background;
     }
 
-    for (int32_t t = 0; t < m->ntris; t++) {
-        cvert v[3];
-        fx_vec3 ep[3], wp[3];
-        fx_memset(v, 0, sizeof v);
-        uint32_t idx[3];
-        for (int i = 0; i < 3; i++) {
-            idx[i] = m->tri[3 * t + i];
-            if (idx[i] >= (uint32_t)m->nverts)
-                return -FX_EINVAL;
-            fx_vec4 e = fx_mat4_apply_point(&mv, m->pos[idx[i]]);
-            ep[i] = fx_vec3_make(e.x, e.y, e.z);
-            fx_vec4 c = fx_mat4_apply(P, e);
-            v[i].c[0] = c.x;
-            v[i].c[1] = c.y;
-            v[i].c[2] = c.z;
-            v[i].c[3] = c.w;
-        }
-        int f = facing(v);
-        if (f == 0 || (r->cull == FX3D_CULL_BACK && f < 0) || (r->cull == FX3D_CULL_FRONT && f > 0)) {
-            r->stat_culled++;
-            continue;
-        }
-        r->stat_drawn++;
-        fx_vec3 fn = fx_vec3_cross(fx_vec3_sub(ep[1], ep[0]), fx_vec3_sub(ep[2], ep[0]));
-        if (fx_vec3_normalize(&fn) < 0) {
-            /* Too small for Q16.16 cross products: scale up and retry. */
-            fn = fx_vec3_cross(fx_vec3_scale(fx_vec3_sub(ep[1], ep[0]), 256 << 16),
-                               fx_vec3_sub(ep[2], ep[0]));
-            fx_vec3_normalize(&fn);
-        }
-        /* Back faces seen through openings are lit from their own side. */
-        int flip = f < 0;
-        if (flip)
-            fn = fx_vec3_make(-fn.x, -fn.y, -fn.z);
-        if (tm.use_sm) {
+    /* Hidden lines without the painter: all faces of the mesh first (depth
+     * and background), then all edges against that depth. */
+    int passes = r->polymode == FX3D_HIDDEN_LINE && r->visibility != FX3D_VIS_PAINTER ? 2 : 1;
+    for (int pass = 0; pass < passes; pass++) {
+        if (passes == 2)
+            tm.outline = pass == 0 ? 3 : 2;
+        for (int32_t t = 0; t < m->ntris; t++) {
+            cvert v[3];
+            fx_vec3 ep[3], wp[3];
+            fx_memset(v, 0, sizeof v);
+            uint32_t idx[3];
             for (int i = 0; i < 3; i++) {
-                fx_vec4 w4 = fx_mat4_apply_point(model, m->pos[idx[i]]);
-                wp[i] = fx_vec3_make(w4.x, w4.y, w4.z);
-                sm_coords(pc.sm, wp[i], &v[i].a[A_SM]);
+                idx[i] = m->tri[3 * t + i];
+                if (idx[i] >= (uint32_t)m->nverts)
+                    return -FX_EINVAL;
+                fx_vec4 e = fx_mat4_apply_point(&mv, m->pos[idx[i]]);
+                ep[i] = fx_vec3_make(e.x, e.y, e.z);
+                fx_vec4 c = fx_mat4_apply(P, e);
+                v[i].c[0] = c.x;
+                v[i].c[1] = c.y;
+                v[i].c[2] = c.z;
+                v[i].c[3] = c.w;
             }
-        }
-        if (r->polymode == FX3D_FILL) {
-            if (tm.kind == K_FLAT) {
-                fx_vec3 cen = fx_vec3_make(
-                    (fx16)(((int64_t)ep[0].x + ep[1].x + ep[2].x) / 3),
-                    (fx16)(((int64_t)ep[0].y + ep[1].y + ep[2].y) / 3),
-                    (fx16)(((int64_t)ep[0].z + ep[1].z + ep[2].z) / 3));
-                tm.flat[0] = fx3d_rgb_to_color(shade(r, pc.el, pc.nl, cen, fn, -1));
-                tm.flat[1] = tm.use_sm ? fx3d_rgb_to_color(shade(r, pc.el, pc.nl, cen, fn, pc.sm->light))
-                                       : tm.flat[0];
-            } else {
+            int f = facing(v);
+            if (f == 0 || (r->cull == FX3D_CULL_BACK && f < 0) || (r->cull == FX3D_CULL_FRONT && f > 0)) {
+                r->stat_culled++;
+                continue;
+            }
+            r->stat_drawn++;
+            fx_vec3 fn = fx_vec3_cross(fx_vec3_sub(ep[1], ep[0]), fx_vec3_sub(ep[2], ep[0]));
+            if (fx_vec3_normalize(&fn) < 0) {
+                /* Too small for Q16.16 cross products: scale up and retry. */
+                fn = fx_vec3_cross(fx_vec3_scale(fx_vec3_sub(ep[1], ep[0]), 256 << 16),
+                                   fx_vec3_sub(ep[2], ep[0]));
+                fx_vec3_normalize(&fn);
+            }
+            /* Back faces seen through openings are lit from their own side. */
+            int flip = f < 0;
+            if (flip)
+                fn = fx_vec3_make(-fn.x, -fn.y, -fn.z);
+            if (tm.use_sm) {
                 for (int i = 0; i < 3; i++) {
-                    fx_vec3 n = fn;
-                    if (smooth) {
-                        n = fx_mat4_apply_dir(&nm, m->nrm[idx[i]]);
-                        if (fx_vec3_normalize(&n) < 0)
-                            n = fn;
-                        else if (flip)
-                            n = fx_vec3_make(-n.x, -n.y, -n.z);
-                    }
-                    if (tm.kind == K_GOURAUD) {
-                        set_rgb(&v[i].a[A_COL], shade(r, pc.el, pc.nl, ep[i], n, -1));
-                        if (tm.use_sm)
-                            set_rgb(&v[i].a[A_POS], shade(r, pc.el, pc.nl, ep[i], n, pc.sm->light));
-                    } else {
-                        set_vec(&v[i].a[A_COL], n);
-                        set_vec(&v[i].a[A_POS], ep[i]);
+                    fx_vec4 w4 = fx_mat4_apply_point(model, m->pos[idx[i]]);
+                    wp[i] = fx_vec3_make(w4.x, w4.y, w4.z);
+                    sm_coords(pc.sm, wp[i], &v[i].a[A_SM]);
+                }
+            }
+            if (r->polymode == FX3D_FILL) {
+                if (tm.kind == K_FLAT) {
+                    fx_vec3 cen = fx_vec3_make(
+                        (fx16)(((int64_t)ep[0].x + ep[1].x + ep[2].x) / 3),
+                        (fx16)(((int64_t)ep[0].y + ep[1].y + ep[2].y) / 3),
+                        (fx16)(((int64_t)ep[0].z + ep[1].z + ep[2].z) / 3));
+                    tm.flat[0] = fx3d_rgb_to_color(shade(r, pc.el, pc.nl, cen, fn, -1));
+                    tm.flat[1] = tm.use_sm ? fx3d_rgb_to_color(shade(r, pc.el, pc.nl, cen, fn, pc.sm->light))
+                                           : tm.flat[0];
+                } else {
+                    for (int i = 0; i < 3; i++) {
+                        fx_vec3 n = fn;
+                        if (smooth) {
+                            n = fx_mat4_apply_dir(&nm, m->nrm[idx[i]]);
+                            if (fx_vec3_normalize(&n) < 0)
+                                n = fn;
+                            else if (flip)
+                                n = fx_vec3_make(-n.x, -n.y, -n.z);
+                        }
+                        if (tm.kind == K_GOURAUD) {
+                            set_rgb(&v[i].a[A_COL], shade(r, pc.el, pc.nl, ep[i], n, -1));
+                            if (tm.use_sm)
+                                set_rgb(&v[i].a[A_POS], shade(r, pc.el, pc.nl, ep[i], n, pc.sm->light));
+                        } else {
+                            set_vec(&v[i].a[A_COL], n);
+                            set_vec(&v[i].a[A_POS], ep[i]);
+                        }
                     }
                 }
             }
-        }
-        cvert keep[3];
-        if (plane_on && f > 0)
-            for (int i = 0; i < 3; i++)
-                keep[i] = v[i];
-        draw_clipped(&pc, v, &tm);
+            cvert keep[3];
+            if (plane_on && f > 0)
+                for (int i = 0; i < 3; i++)
+                    keep[i] = v[i];
+            draw_clipped(&pc, v, &tm);
 
-        if (plane_on && f > 0) {
-            tri_mode sm_mode;
-            fx_memset(&sm_mode, 0, sizeof sm_mode);
-            sm_mode.kind = K_FLAT;
-            sm_mode.flat[0] = sm_mode.flat[1] = r->plane_color;
-            sm_mode.ztest = pc.zb != NULL;
-            sm_mode.zbias = 1 << 15;
-            for (int i = 0; i < 3; i++) {
-                fx_vec4 e = {ep[i].x, ep[i].y, ep[i].z, FX16_ONE};
-                fx_vec4 q = fx_mat4_apply(&shadow, e);
-                if (q.w < 0) { /* the same projective point, w > 0 */
-                    q.x = -q.x, q.y = -q.y, q.z = -q.z, q.w = -q.w;
+            if (plane_on && f > 0) {
+                tri_mode sm_mode;
+                fx_memset(&sm_mode, 0, sizeof sm_mode);
+                sm_mode.kind = K_FLAT;
+                sm_mode.flat[0] = sm_mode.flat[1] = r->plane_color;
+                sm_mode.ztest = pc.zb != NULL;
+                sm_mode.zbias = 1 << 15;
+                for (int i = 0; i < 3; i++) {
+                    fx_vec4 e = {ep[i].x, ep[i].y, ep[i].z, FX16_ONE};
+                    fx_vec4 q = fx_mat4_apply(&shadow, e);
+                    if (q.w < 0) { /* the same projective point, w > 0 */
+                        q.x = -q.x, q.y = -q.y, q.z = -q.z, q.w = -q.w;
+                    }
+                    fx_vec4 c = fx_mat4_apply(P, q);
+                    keep[i].c[0] = c.x;
+                    keep[i].c[1] = c.y;
+                    keep[i].c[2] = c.z;
+                    keep[i].c[3] = c.w;
                 }
-                fx_vec4 c = fx_mat4_apply(P, q);
-                keep[i].c[0] = c.x;
-                keep[i].c[1] = c.y;
-                keep[i].c[2] = c.z;
-                keep[i].c[3] = c.w;
+                draw_clipped(&pc, keep, &sm_mode);
             }
-            draw_clipped(&pc, keep, &sm_mode);
         }
     }
     return 0;

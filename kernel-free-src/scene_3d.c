@@ -68,7 +68,7 @@ static int cmd_viewport(fx_scene *sc)
         TRY(fx_scene_arg_int(sc, &v[i]));
     TRY(fx_scene_end(sc));
     if (v[2] < 1 || v[3] < 1 || v[2] > 16384 || v[3] > 16384)
-        return fx_scene_error(sc, "viewport size %dx%d out of range (1..16384)", v[2], v[3]);
+        return fx_scene_error(sc, "viewport3d size %dx%d out of range (1..16384)", v[2], v[3]);
     fx3d_viewport(&s->r, v[0], v[1], v[2], v[3]);
     return 0;
 }
@@ -196,10 +196,15 @@ static int cmd_oblique(fx_scene *sc)
     static const char *const ch[] = {"cavalier", "cabinet", NULL};
     int c;
     TRY(c = fx_scene_arg_choice(sc, ch));
-    fx16 v[7];
-    TRY(args_fx(sc, v, 7));
+    fx16 v[8];
+    for (int i = 0; i < 7; i++)
+        TRY(fx_scene_arg_fx16(sc, &v[i]));
+    v[7] = v[5];
+    if (fx_scene_more(sc))
+        TRY(fx_scene_arg_fx16(sc, &v[7]));
+    TRY(fx_scene_end(sc));
     if (fx3d_oblique(&s->r, v[1], v[2], v[3], v[4], v[5], v[6], fx_angle_from_deg16(v[0]),
-                     c ? FX_OBLIQUE_CABINET : FX_OBLIQUE_CAVALIER) < 0)
+                     c ? FX_OBLIQUE_CABINET : FX_OBLIQUE_CAVALIER, v[7]) < 0)
         return fx_scene_error(sc, "oblique: empty view volume");
     return 0;
 }
@@ -230,7 +235,7 @@ static int cmd_pop(fx_scene *sc)
     GET(s);
     TRY(fx_scene_end(sc));
     if (fx_mat_stack_pop(&s->r.model) < 0)
-        return fx_scene_error(sc, "'pop' without a matching 'push'");
+        return fx_scene_error(sc, "'pop3d' without a matching 'push3d'");
     return 0;
 }
 
@@ -591,7 +596,7 @@ static int cmd_shadowmap(fx_scene *sc)
 
 #define D FX_SCENE_DRAWS
 const fx_scene_cmd fx_scene_cmds_3d[] = {
-    {"viewport", cmd_viewport, "viewport X Y W H", D},
+    {"viewport3d", cmd_viewport, "viewport3d X Y W H", D},
     {"depth", cmd_depth, "depth 16|32|off", D},
     {"cleardepth", cmd_cleardepth, "cleardepth", D},
     {"painter", cmd_painter, "painter [MAXTRIANGLES]", D},
@@ -603,25 +608,25 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
     {"yaw", cmd_yaw, "yaw DEG", D},
     {"perspective", cmd_perspective, "perspective FOVY NEAR FAR", D},
     {"ortho", cmd_ortho, "ortho L R B T NEAR FAR", D},
-    {"oblique", cmd_oblique, "oblique cavalier|cabinet ALPHA L R B T NEAR FAR", D},
-    {"identity", cmd_identity, "identity", D},
-    {"push", cmd_push, "push", D},
-    {"pop", cmd_pop, "pop", D},
-    {"translate", cmd_translate, "translate X Y Z", D},
-    {"scale", cmd_scale, "scale S | scale SX SY SZ", D},
-    {"rotate", cmd_rotate, "rotate DEG AX AY AZ", D},
+    {"oblique", cmd_oblique, "oblique cavalier|cabinet ALPHA L R B T NEAR FAR [PLANE]", D},
+    {"identity3d", cmd_identity, "identity3d", D},
+    {"push3d", cmd_push, "push3d", D},
+    {"pop3d", cmd_pop, "pop3d", D},
+    {"translate3d", cmd_translate, "translate3d X Y Z", D},
+    {"scale3d", cmd_scale, "scale3d S | scale3d SX SY SZ", D},
+    {"rotate3d", cmd_rotate, "rotate3d DEG AX AY AZ", D},
     {"rotatex", cmd_rotatex, "rotatex DEG", D},
     {"rotatey", cmd_rotatey, "rotatey DEG", D},
     {"rotatez", cmd_rotatez, "rotatez DEG", D},
-    {"shear", cmd_shear, "shear A B", D},
-    {"reflect", cmd_reflect, "reflect NX NY NZ D", D},
+    {"shear3d", cmd_shear, "shear3d A B", D},
+    {"reflect3d", cmd_reflect, "reflect3d NX NY NZ D", D},
     {"light", cmd_light,
      "light I off | directional DX DY DZ #RGB | point X Y Z #RGB | spot X Y Z DX DY DZ CUTOFF EXP #RGB", D},
     {"ambient", cmd_ambient, "ambient #RRGGBB", D},
     {"material", cmd_material, "material #AMB #DIFF #SPEC SHININESS [#EMISSION]", D},
     {"shading", cmd_shading, "shading flat|gouraud|phong", D},
     {"cull", cmd_cull, "cull none|back|front", D},
-    {"polygon", cmd_polygon, "polygon fill|wire|hidden", D},
+    {"polymode", cmd_polygon, "polymode fill|wire|hidden", D},
     {"background", cmd_background, "background #RRGGBB", D},
     {"cube", cmd_cube, "cube EDGE", D},
     {"tetrahedron", cmd_tetra, "tetrahedron RADIUS", D},

@@ -133,11 +133,13 @@ void fx_camera_view(const fx_camera *c, fx_mat4 *m);
 int fx_mat4_perspective(fx_mat4 *m, fx_angle fovy, fx16 aspect, fx16 znear, fx16 zfar);
 int fx_mat4_ortho(fx_mat4 *m, fx16 l, fx16 r, fx16 b, fx16 t, fx16 znear, fx16 zfar);
 /* Oblique parallel projection: a point at depth d = -z in front of the
- * camera moves by (L d cos alpha, L d sin alpha) before the orthographic
- * projection. L = 1 is cavalier, L = 1/2 cabinet; alpha is often 45 or 30
- * degrees. The shear is anchored at the near plane. */
+ * camera moves by (L (d - plane) cos alpha, L (d - plane) sin alpha)
+ * before the orthographic projection, so the plane at depth `plane` (the
+ * projection plane, usually through the object's front) is drawn true to
+ * size and receding edges slant up and to the side. L = 1 is cavalier,
+ * L = 1/2 cabinet; alpha is often 45 or 30 degrees. */
 int fx_mat4_oblique(fx_mat4 *m, fx16 l, fx16 r, fx16 b, fx16 t, fx16 znear, fx16 zfar,
-                    fx_angle alpha, fx16 len);
+                    fx_angle alpha, fx16 len, fx16 plane);
 #define FX_OBLIQUE_CAVALIER FX16_ONE
 #define FX_OBLIQUE_CABINET  FX16_HALF
 

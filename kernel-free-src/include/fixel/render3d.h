@@ -156,7 +156,7 @@ void fx3d_flush(fx3d *r);
 int fx3d_perspective(fx3d *r, fx_angle fovy, fx16 aspect, fx16 znear, fx16 zfar);
 int fx3d_ortho(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar);
 int fx3d_oblique(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar,
-                 fx_angle alpha, fx16 len);
+                 fx_angle alpha, fx16 len, fx16 plane);
 
 /* Draw a mesh with the current state. Returns 0 or a negative error. */
 int fx3d_draw(fx3d *r, const fx_mesh *m);
@@ -176,7 +176,10 @@ void fx3d_plane_shadow_off(fx3d *r);
  *   ... draw the scene ...
  *   fx3d_shadow_off(r);
  * A pixel whose position, seen from the light, is farther than the map's
- * depth (plus bias) gets no diffuse or specular from that light. */
+ * depth (plus bias) gets no diffuse or specular from that light. Only the
+ * faces turned away from the light are written to the map (the lit side
+ * then never shadows itself), so casters must be closed solids; a lone
+ * plane such as a floor receives shadows but casts none. */
 int fx3d_shadow_init(fx3d_shadowmap *sm, uint32_t *depth, int32_t size, int light);
 int fx3d_shadow_aim(fx3d_shadowmap *sm, fx_vec3 from, fx_vec3 at, fx_angle fov, fx16 znear,
                     fx16 zfar);
