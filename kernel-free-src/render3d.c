@@ -726,9 +726,13 @@ static void emit_tri(pctx *pc, const svert *a, const svert *b, const svert *c, c
 }
 
 /* Clip, project and draw one polygon (a triangle on entry). */
-static void draw_clipped(pctx *pc, cvert *v, const tri_mode *m)
+static void draw_clipped(pctx *pc, const cvert *tri, const tri_mode *m)
 {
-    cvert tmp[12];
+    /* Each of the six planes can add one vertex: at most 9. */
+    cvert v[12], tmp[12];
+    v[0] = tri[0];
+    v[1] = tri[1];
+    v[2] = tri[2];
     int n = clip_poly(pc, v, 3, tmp, m->na);
     if (n < 3)
         return;
