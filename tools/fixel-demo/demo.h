@@ -1,0 +1,57 @@
+/* fixel-demo — the gallery: one drawing function per page, shared by the
+ * headless renderer and the interactive loop. */
+#ifndef FIXEL_DEMO_H
+#define FIXEL_DEMO_H
+#include <stdint.h>
+#include "fixel/draw.h"
+#include "fixel/clip.h"
+
+#define DEMO_TAB_H 22
+
+typedef struct demo_state {
+    int page;
+    int interactive;    /* 0: headless, deterministic pictures */
+    int32_t w, h;
+    int32_t mx, my;     /* last pointer position */
+    /* clipping playground */
+    fx_rect win;
+    int32_t lx0, ly0, lx1, ly1;
+    int clipper;        /* FX_CLIP_COHEN, _LIANG or _NLN */
+    int drag;           /* 0 none, 1 start point, 2 end point, 3 window */
+    int32_t dragx, dragy;
+    /* fills: seed points clicked so far */
+    int nseeds;
+    int32_t seedx[16], seedy[16];
+    /* fractals */
+    int64_t mcre, mcim, mwidth; /* Mandelbrot view, fx56 */
+    int32_t julia_x, julia_y;   /* pointer position choosing c */
+    int koch_order;
+    /* colour page: chosen point on the wheel */
+    int32_t pick_x, pick_y;
+    /* animation */
+    uint32_t frame;
+} demo_state;
+
+typedef struct demo_page {
+    const char *name;  /* file name and tab label */
+    const char *title;
+    void (*draw)(fx_ctx *c, demo_state *st);
+} demo_page;
+
+extern const demo_page demo_pages[];
+extern const int demo_npages;
+
+void demo_state_init(demo_state *st, int32_t w, int32_t h);
+/* Draw page st->page with its tab bar into c's surface. */
+void demo_draw(fx_ctx *c, demo_state *st);
+/* Pointer input on the current page (down: 1 press, 0 move while pressed, -1 release). */
+void demo_pointer(demo_state *st, int32_t x, int32_t y, int down);
+/* A character key for the current page; returns 1 when it was used. */
+int demo_key(demo_state *st, int key);
+
+/* helpers */
+void demo_text(const fx_ctx *c, int32_t x, int32_t y, fx_color col, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+void demo_text_big(const fx_ctx *c, int32_t x, int32_t y, fx_color col, int scale, const char *s);
+
+#endif

@@ -1,0 +1,9 @@
+# fixel-demo: every gallery page rendered headless and compared with its
+# committed picture (in the plain and the sanitized build).
+TEST_SUITES += "$(BUILD)/bin/fixel-demo --golden tests/golden/demo" \
+               "build/asan/bin/fixel-demo --golden tests/golden/demo"
+
+.PHONY: demo-golden-update
+demo-golden-update: $(BUILD)/bin/fixel-demo
+	@mkdir -p tests/golden/demo
+	$(BUILD)/bin/fixel-demo --golden tests/golden/demo --update

@@ -1,0 +1,369 @@
+/* fixel-demo — the gallery of everything fixel draws (`make run`).
+ *
+ * With a display it is interactive (keys, mouse, touch, GPIO buttons); on a
+ * machine without one it renders every page into OUT/<page>.png. --golden
+ * compares those renders with committed pictures for `make test`. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "demo.h"
+#include "fixel/app.h"
+#include "fixel/display.h"
+#include "fixel/memfb.h"
+
+#define HEADLESS_W 800
+#define HEADLESS_H 480
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: fixel-demo [--headless] [--out DIR] [--page NAME] [--list]\n"
+            "       fixel-demo --golden DIR [--update]\n"
+            "  --headless    render pages to PNG files instead of opening a display\n"
+            "                (the default when no display is found)\n"
+            "  --out DIR     where headless pictures go (default out)\n"
+            "  --page NAME   only this page (headless) or start on it (interactive)\n"
+            "  --list        print the page names\n"
+            "  --golden DIR  render every page at 800x480 and compare with DIR/<page>.png;\n"
+            "                mismatches write DIR/<page>.actual.png; --update rewrites them\n"
+            "keys: right/left, PageDown/PageUp, n/p, Down/Up (GPIO buttons): next/previous page;\n"
+            "      c/l/n clipper (clipping page), 0-6 Koch order, r reset, q/Esc quit\n");
+}
+
+static int find_page(const char *name)
+{
+    for (int i = 0; i < demo_npages; i++)
+        if (!strcmp(demo_pages[i].name, name))
+            return i;
+    return -1;
+}
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static int render_page(fx_memfb *fb, int page)
+{
+    demo_state st;
+    demo_state_init(&st, fb->surf.w, fb->surf.h);
+    st.page = page;
+    fx_ctx c;
+    fx_ctx_init(&c, &fb->surf);
+    demo_draw(&c, &st);
+    return 0;
+}
+
+static int headless(const char *out, int only)
+{
+    fx_memfb fb;
+    if (fx_memfb_create(&fb, HEADLESS_W, HEADLESS_H, FX_FMT_XRGB8888) < 0) {
+        fprintf(stderr, "fixel-demo: out of memory\n");
+        return 1;
+    }
+    if (mkdir(out, 0777) < 0 && errno != EEXIST) {
+        fprintf(stderr, "fixel-demo: cannot create %s: %s\n", out, strerror(errno));
+        fx_memfb_destroy(&fb);
+        return 1;
+    }
+    double t0 = now_s();
+    int n = 0, rc = 0;
+    for (int i = 0; i < demo_npages; i++) {
+        if (only >= 0 && i != only)
+            continue;
+        double t = now_s();
+        render_page(&fb, i);
+        double dt = now_s() - t;
+        char path[4096];
+        snprintf(path, sizeof path, "%s/%s.png", out, demo_pages[i].name);
+        int e = fx_write_image(path, &fb.surf);
+        if (e < 0) {
+            fprintf(stderr, "fixel-demo: cannot write %s: %s\n", path, strerror(-e));
+            rc = 1;
+            continue;
+        }
+        printf("fixel-demo: %-10s -> %s (%.1f ms)\n", demo_pages[i].name, path, dt * 1e3);
+        n++;
+    }
+    printf("fixel-demo: no display here; rendered %d page%s headless (%dx%d) into %s/ in %.2f s\n", n,
+           n == 1 ? "" : "s", HEADLESS_W, HEADLESS_H, out, now_s() - t0);
+    fx_memfb_destroy(&fb);
+    return rc;
+}
+
+static int golden(const char *dir, int update)
+{
+    fx_memfb fb;
+    if (fx_memfb_create(&fb, HEADLESS_W, HEADLESS_H, FX_FMT_XRGB8888) < 0)
+        return 1;
+    int pass = 0, fail = 0;
+    uint8_t *row = malloc((size_t)HEADLESS_W * 3);
+    for (int i = 0; i < demo_npages && row; i++) {
+        render_page(&fb, i);
+        char path[4096];
+        snprintf(path, sizeof path, "%s/%s.png", dir, demo_pages[i].name);
+        if (update) {
+            if (fx_write_png(path, &fb.surf) < 0) {
+                printf("FAIL %s: cannot write\n", path);
+                fail++;
+            } else {
+                printf("wrote %s\n", path);
+                pass++;
+            }
+            continue;
+        }
+        uint8_t *rgb = NULL;
+        int32_t w = 0, h = 0;
+        int ok = fx_read_png_rgb(path, &rgb, &w, &h) == 0 && w == fb.surf.w && h == fb.surf.h;
+        int32_t bad = 0;
+        for (int32_t y = 0; ok && y < h; y++) {
+            fx_surface_row_to_rgb(&fb.surf, y, row);
+            for (int32_t x = 0; x < w * 3; x++)
+                bad += row[x] != rgb[(size_t)y * w * 3 + x];
+        }
+        free(rgb);
+        if (ok && !bad) {
+            pass++;
+            continue;
+        }
+        fail++;
+        char apath[4096];
+        snprintf(apath, sizeof apath, "%s/%s.actual.png", dir, demo_pages[i].name);
+        fx_write_png(apath, &fb.surf);
+        printf("FAIL demo page %s: %s (wrote %s)\n", demo_pages[i].name,
+               ok ? "pixels differ" : "golden missing or wrong size", apath);
+    }
+    free(row);
+    fx_memfb_destroy(&fb);
+    printf("demo: %d passed, %d failed\n", pass, fail);
+    return fail ? 1 : 0;
+}
+
+/* ---- interactive ---- */
+typedef struct demo_app {
+    fx_app *app;
+    demo_state st;
+    double last, frame_ms, fps_t0;
+    int frames;
+    double fps;
+    int pressed;
+} demo_app;
+
+static void redisplay(demo_app *d) { fx_app_post_redisplay(d->app); }
+
+static void on_display(void *user)
+{
+    demo_app *d = user;
+    double t0 = now_s();
+    fx_surface s = fx_app_surface(d->app);
+    fx_ctx c;
+    fx_ctx_init(&c, &s);
+    d->st.w = s.w;
+    d->st.h = s.h;
+    demo_draw(&c, &d->st);
+    d->frame_ms = (now_s() - t0) * 1e3;
+    demo_text(&c, s.w - 190, DEMO_TAB_H + 10, 0xFFFFFF80u, "%5.1f fps %6.2f ms", d->fps, d->frame_ms);
+    fx_app_present(d->app, NULL, 0);
+    d->frames++;
+    double t = now_s();
+    if (t - d->fps_t0 >= 1.0) {
+        d->fps = d->frames / (t - d->fps_t0);
+        d->frames = 0;
+        d->fps_t0 = t;
+    }
+}
+
+static void page_step(demo_app *d, int dir)
+{
+    d->st.page = (d->st.page + dir + demo_npages) % demo_npages;
+    redisplay(d);
+}
+
+static void on_key(void *user, unsigned char key, int x, int y)
+{
+    demo_app *d = user;
+    (void)x;
+    (void)y;
+    if (key == 'q' || key == 27) {
+        fx_app_quit(d->app);
+        return;
+    }
+    if (key == 'n' && d->st.page != find_page("clipping"))
+        page_step(d, 1);
+    else if (key == 'p' || key == ' ')
+        page_step(d, key == ' ' ? 1 : -1);
+    else if (key == 'r') {
+        int p = d->st.page;
+        demo_state_init(&d->st, d->st.w, d->st.h);
+        d->st.page = p;
+        d->st.interactive = 1;
+        d->st.nseeds = 0;
+    } else if (key == '\r' || key == '\n')
+        page_step(d, 1);
+    else
+        demo_key(&d->st, key);
+    redisplay(d);
+}
+
+static void on_special(void *user, int key, int x, int y)
+{
+    demo_app *d = user;
+    (void)x;
+    (void)y;
+    if (key == FX_KEY_RIGHT || key == FX_KEY_PAGE_DOWN || key == FX_KEY_DOWN)
+        page_step(d, 1);
+    else if (key == FX_KEY_LEFT || key == FX_KEY_PAGE_UP || key == FX_KEY_UP)
+        page_step(d, -1);
+}
+
+static void pointer(demo_app *d, int x, int y, int down)
+{
+    if (down == 1 && y < DEMO_TAB_H) {
+        int tw = d->st.w / demo_npages;
+        int p = tw ? x / tw : 0;
+        if (p >= 0 && p < demo_npages)
+            d->st.page = p;
+    } else {
+        demo_pointer(&d->st, x, y, down);
+    }
+    redisplay(d);
+}
+
+static void on_mouse(void *user, int button, int state, int x, int y)
+{
+    demo_app *d = user;
+    if (button == FX_BUTTON_RIGHT && state == FX_DOWN) {
+        demo_pointer(&d->st, x, y, 2);
+        redisplay(d);
+        return;
+    }
+    if (button != FX_BUTTON_LEFT)
+        return;
+    d->pressed = state == FX_DOWN;
+    pointer(d, x, y, state == FX_DOWN ? 1 : -1);
+}
+
+static void on_motion(void *user, int x, int y) { pointer(user, x, y, 0); }
+
+static void on_passive(void *user, int x, int y)
+{
+    demo_app *d = user;
+    d->st.mx = x;
+    d->st.my = y;
+    demo_pointer(&d->st, x, y, 3);
+    redisplay(d);
+}
+
+static void on_touch(void *user, int id, int x, int y, int phase)
+{
+    if (id != 0)
+        return;
+    pointer(user, x, y, phase == FX_TOUCH_DOWN ? 1 : phase == FX_TOUCH_UP ? -1 : 0);
+}
+
+static void tick(void *user, int value)
+{
+    demo_app *d = user;
+    (void)value;
+    d->st.frame++;
+    /* only the animated pages need a frame on every tick */
+    const char *n = demo_pages[d->st.page].name;
+    if (!strcmp(n, "3d") || !strcmp(n, "transforms"))
+        redisplay(d);
+    fx_app_timer(d->app, 33, tick, 0);
+}
+
+static int interactive(fx_app *app, int page)
+{
+    demo_app d;
+    memset(&d, 0, sizeof d);
+    d.app = app;
+    int32_t w, h;
+    fx_app_size(app, &w, &h);
+    demo_state_init(&d.st, w, h);
+    d.st.interactive = 1;
+    d.st.nseeds = 0;
+    d.st.page = page < 0 ? 0 : page;
+    d.fps_t0 = now_s();
+    fx_callbacks cb;
+    memset(&cb, 0, sizeof cb);
+    cb.display = on_display;
+    cb.keyboard = on_key;
+    cb.special = on_special;
+    cb.mouse = on_mouse;
+    cb.motion = on_motion;
+    cb.passive_motion = on_passive;
+    cb.touch = on_touch;
+    fx_app_set_callbacks(app, &cb, &d);
+    fx_app_timer(app, 33, tick, 0);
+    fx_app_post_redisplay(app);
+    int rc = fx_app_main_loop(app);
+    return rc < 0 ? 1 : 0;
+}
+
+static int have_display(void)
+{
+    const char *b = getenv("FIXEL_BACKEND");
+    if (b && *b)
+        return strcmp(b, "memory") != 0;
+    return access("/dev/dri", F_OK) == 0 || access("/dev/fb0", F_OK) == 0;
+}
+
+int main(int argc, char **argv)
+{
+    const char *out = "out", *gold = NULL, *page = NULL;
+    int force_headless = 0, update = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            usage(stdout);
+            return 0;
+        } else if (!strcmp(a, "--headless")) {
+            force_headless = 1;
+        } else if (!strcmp(a, "--update")) {
+            update = 1;
+        } else if (!strcmp(a, "--list")) {
+            for (int k = 0; k < demo_npages; k++)
+                printf("%s\n", demo_pages[k].name);
+            return 0;
+        } else if ((!strcmp(a, "--out") || !strcmp(a, "--page") || !strcmp(a, "--golden")) && i + 1 < argc) {
+            const char *v = argv[++i];
+            if (a[2] == 'o')
+                out = v;
+            else if (a[2] == 'p')
+                page = v;
+            else
+                gold = v;
+        } else {
+            fprintf(stderr, "fixel-demo: unknown or incomplete option '%s'\n", a);
+            usage(stderr);
+            return 2;
+        }
+    }
+    int only = -1;
+    if (page && (only = find_page(page)) < 0) {
+        fprintf(stderr, "fixel-demo: no page '%s' (try --list)\n", page);
+        return 2;
+    }
+    if (gold)
+        return golden(gold, update);
+    if (force_headless || !have_display())
+        return headless(out, only);
+    fx_app_options o;
+    fx_app_options_init(&o);
+    fx_app *app;
+    if (fx_app_open(&app, &o) < 0) {
+        fprintf(stderr, "fixel-demo: no usable display; rendering headless instead\n");
+        return headless(out, only);
+    }
+    int rc = interactive(app, only);
+    fx_app_close(app);
+    return rc;
+}

@@ -1,0 +1,916 @@
+/* fixel-demo pages: each draws a whole page from demo_state alone, so the
+ * headless pictures are a pure function of the state. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "demo.h"
+#include "fixel/circle.h"
+#include "fixel/colormap.h"
+#include "fixel/colour.h"
+#include "fixel/fill.h"
+#include "fixel/fixed.h"
+#include "fixel/font.h"
+#include "fixel/fractal.h"
+#include "fixel/ifs.h"
+#include "fixel/koch.h"
+#include "fixel/line.h"
+#include "fixel/texture.h"
+#include "fixel/viz.h"
+#include "fixel/xform.h"
+
+#define BG      0xFF101820u
+#define PANEL   0xFF18263Au
+#define INK     0xFFE8E8E8u
+#define DIM     0xFF7A8AA0u
+#define ACCENT  0xFFF2C14Eu
+#define ORANGE  0xFFF78154u
+#define BLUE    0xFF4D9DE0u
+#define GREEN   0xFF7BC96Fu
+#define RED     0xFFE15554u
+
+void demo_text(const fx_ctx *c, int32_t x, int32_t y, fx_color col, const char *fmt, ...)
+{
+    char buf[256];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    fx_ctx t = *c;
+    fx_ctx_set_color(&t, col);
+    fx_text(&t, x, y, buf);
+}
+
+void demo_text_big(const fx_ctx *c, int32_t x, int32_t y, fx_color col, int scale, const char *s)
+{
+    fx_text_style ts;
+    memset(&ts, 0, sizeof ts);
+    ts.scale = scale;
+    fx_ctx t = *c;
+    t.text_style = &ts;
+    fx_ctx_set_color(&t, col);
+    fx_text(&t, x, y, s);
+}
+
+static void color(fx_ctx *c, fx_color col) { fx_ctx_set_color(c, col); }
+
+static void panel(fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h, const char *label)
+{
+    color(c, PANEL);
+    fx_fill_rect(c, x, y, w, h);
+    color(c, 0xFF2E4A6Bu);
+    fx_rect_outline(c, x, y, w, h);
+    if (label)
+        demo_text(c, x + 6, y + 5, ACCENT, "%s", label);
+}
+
+/* ---- lines ---- */
+static void page_lines(fx_ctx *c, demo_state *st)
+{
+    (void)st;
+    int32_t top = DEMO_TAB_H + 8;
+    panel(c, 8, top, 300, 260, "Bresenham fan, every octant");
+    static const fx_color fan[8] = {ORANGE, ACCENT, GREEN, BLUE, 0xFFC77DFFu, RED, 0xFF5CE1E6u, INK};
+    int32_t cx = 158, cy = top + 140;
+    for (int i = 0; i < 48; i++) {
+        fx_angle a = (fx_angle)((uint32_t)i * (0x100000000ull / 48));
+        int32_t ex = cx + fx16_round(fx16_mul(fx_cos(a), fx16_from_int(110)));
+        int32_t ey = cy - fx16_round(fx16_mul(fx_sin(a), fx16_from_int(110)));
+        color(c, fan[i / 6]);
+        fx_line(c, cx, cy, ex, ey);
+    }
+    /* a clipped line whose ends are far outside the surface */
+    panel(c, 8, top + 268, 300, 176, "Clipped from +-100000, exactly");
+    fx_ctx k = *c;
+    fx_ctx_set_clip(&k, (fx_rect){9, top + 286, 307, top + 443});
+    for (int i = 0; i < 24; i++) {
+        fx_angle a = (fx_angle)((uint32_t)i * (0x80000000u / 24));
+        int32_t dx = fx16_round(fx16_mul(fx_cos(a), fx16_from_int(100000)));
+        int32_t dy = fx16_round(fx16_mul(fx_sin(a), fx16_from_int(100000)));
+        color(&k, fx_cmap_color(FX_CMAP_VIRIDIS, (uint32_t)(i * 2600 + 4000)));
+        fx_line(&k, 158 - dx, top + 364 - dy, 158 + dx, top + 364 + dy);
+    }
+
+    /* the course's example: (10,12) -> (15,15), each pixel a 30-px cell */
+    int32_t gx = 320, gy = top, cell = 30;
+    panel(c, gx, gy, 240, 260, "Zoomed: (10,12) -> (15,15)");
+    int32_t ox = gx + 15, oy = gy + 40;
+    fx_bres b;
+    fx_bres_init(&b, 10, 12, 15, 15);
+    for (int32_t yy = 11; yy <= 16; yy++)
+        for (int32_t xx = 9; xx <= 15; xx++) {
+            color(c, 0xFF22364Fu);
+            fx_fill_rect(c, ox + (xx - 9) * cell, oy + (yy - 11) * cell, cell - 1, cell - 1);
+        }
+    for (int32_t xx = 9; xx <= 15; xx++)
+        demo_text(c, ox + (xx - 9) * cell + 9, oy + 6 * cell + 4, DIM, "%d", xx);
+    for (int32_t yy = 11; yy <= 16; yy++)
+        demo_text(c, ox + 7 * cell + 4, oy + (yy - 11) * cell + 10, DIM, "%d", yy);
+    fx_bres it = b;
+    for (uint32_t k2 = 0; k2 <= b.major; k2++) {
+        color(c, ORANGE);
+        fx_fill_rect(c, ox + (it.x - 9) * cell + 2, oy + (it.y - 11) * cell + 2, cell - 5, cell - 5);
+        if (k2 < b.major)
+            fx_bres_step(&it);
+    }
+    /* the ideal line through the pixel centres */
+    color(c, INK);
+    fx_line(c, ox + 1 * cell + cell / 2, oy + 1 * cell + cell / 2, ox + 6 * cell + cell / 2,
+            oy + 4 * cell + cell / 2);
+
+    /* the decision table */
+    int32_t tx = 572;
+    panel(c, tx, top, 220, 260, "Decision table");
+    demo_text(c, tx + 8, top + 24, DIM, "dx=%u dy=%u", b.major, b.minor);
+    demo_text(c, tx + 8, top + 36, DIM, "p0=2dy-dx=%lld", (long long)b.p);
+    demo_text(c, tx + 8, top + 48, DIM, "2dy=%u 2dy-2dx=%d", 2 * b.minor,
+              (int)(2 * (int32_t)b.minor - 2 * (int32_t)b.major));
+    demo_text(c, tx + 8, top + 68, ACCENT, " k   p_k   next pixel");
+    it = b;
+    for (uint32_t k2 = 0; k2 < b.major; k2++) {
+        long long p = (long long)it.p;
+        fx_bres_step(&it);
+        demo_text(c, tx + 8, top + 84 + (int32_t)k2 * 14, INK, "%2u  %4lld   (%d,%d)", k2, p, it.x,
+                  it.y);
+    }
+    demo_text(c, tx + 8, top + 84 + (int32_t)b.major * 14 + 8, DIM, "p<0: keep y   p>=0: y+1");
+
+    /* line widths from parallel strokes, and colours */
+    panel(c, 320, top + 268, 472, 176, "Slopes and colours");
+    for (int i = 0; i < 16; i++) {
+        color(c, fx_cmap_color(FX_CMAP_HSV, (uint32_t)(i * 4096)));
+        fx_line(c, 352 + i * 27, top + 430, 352 + i * 27 + (i - 8) * 2, top + 300);
+    }
+    for (int i = 0; i < 8; i++) {
+        color(c, fx_cmap_color(FX_CMAP_HOT, (uint32_t)(20000 + i * 6000)));
+        fx_line(c, 336, top + 296 + i * 2, 776, top + 296 + i * 2 + i * 17);
+    }
+}
+
+/* ---- circles ---- */
+static void page_circles(fx_ctx *c, demo_state *st)
+{
+    (void)st;
+    int32_t top = DEMO_TAB_H + 8;
+    panel(c, 8, top, 256, 220, "Midpoint circles");
+    for (int r = 6; r <= 96; r += 10) {
+        color(c, fx_cmap_color(FX_CMAP_VIRIDIS, (uint32_t)(r * 650)));
+        fx_circle(c, 136, top + 118, r);
+    }
+    panel(c, 272, top, 256, 220, "Discs and anti-aliased");
+    color(c, BLUE);
+    fx_disc(c, 340, top + 110, 50);
+    color(c, ACCENT);
+    fx_disc(c, 380, top + 140, 30);
+    color(c, INK);
+    for (int r = 20; r <= 80; r += 20)
+        fx_aacircle(c, 460, top + 120, r / 2 + 10);
+    panel(c, 536, top, 256, 220, "Ellipses");
+    for (int i = 0; i < 6; i++) {
+        color(c, fx_cmap_color(FX_CMAP_HOT, (uint32_t)(16000 + i * 8000)));
+        fx_ellipse(c, 664, top + 120, 110 - i * 16, 20 + i * 14);
+    }
+    panel(c, 8, top + 228, 384, 216, "Arcs");
+    for (int i = 0; i < 8; i++) {
+        color(c, fx_cmap_color(FX_CMAP_HSV, (uint32_t)(i * 8192)));
+        fx_arc(c, 200, top + 340, 20 + i * 11, fx_angle_from_deg(i * 30), fx_angle_from_deg(i * 30 + 200));
+    }
+    panel(c, 400, top + 228, 392, 216, "Pies and filled ellipses");
+    static const int32_t share[5] = {90, 70, 100, 60, 40};
+    uint32_t a = 0;
+    for (int i = 0; i < 5; i++) {
+        color(c, fx_cmap_color(FX_CMAP_VIRIDIS, (uint32_t)(i * 15000 + 3000)));
+        fx_pie(c, 500, top + 340, 80, fx_angle_from_deg((int32_t)a), fx_angle_from_deg((int32_t)a + share[i]));
+        a += (uint32_t)share[i];
+    }
+    color(c, ORANGE);
+    fx_fill_ellipse(c, 690, top + 310, 80, 30);
+    color(c, BLUE);
+    fx_fill_ellipse(c, 690, top + 375, 40, 25);
+}
+
+/* ---- clipping playground ---- */
+static const char *clipper_name(int k)
+{
+    return k == FX_CLIP_COHEN ? "Cohen-Sutherland" : k == FX_CLIP_LIANG ? "Liang-Barsky" : "Nicholl-Lee-Nicholl";
+}
+
+static void code_str(unsigned code, char *s)
+{
+    /* TBRL, as in the course */
+    for (int i = 0; i < 4; i++)
+        s[i] = (code >> (3 - i)) & 1 ? '1' : '0';
+    s[4] = 0;
+}
+
+static void page_clipping(fx_ctx *c, demo_state *st)
+{
+    int32_t top = DEMO_TAB_H + 8;
+    fx_rect area = {8, top, 572, st->h - 8};
+    panel(c, area.x0, area.y0, area.x1 - area.x0, area.y1 - area.y0, NULL);
+    fx_rect w = st->win;
+    fx_ctx a = *c;
+    fx_ctx_set_clip(&a, (fx_rect){area.x0 + 1, area.y0 + 1, area.x1 - 1, area.y1 - 1});
+    /* the nine regions: the window's edges extended */
+    color(&a, 0xFF2E4A6Bu);
+    fx_line(&a, w.x0, area.y0, w.x0, area.y1);
+    fx_line(&a, w.x1 - 1, area.y0, w.x1 - 1, area.y1);
+    fx_line(&a, area.x0, w.y0, area.x1, w.y0);
+    fx_line(&a, area.x0, w.y1 - 1, area.x1, w.y1 - 1);
+    int32_t xs[3] = {(area.x0 + w.x0) / 2, (w.x0 + w.x1) / 2, (w.x1 + area.x1) / 2};
+    int32_t ys[3] = {(area.y0 + w.y0) / 2, (w.y0 + w.y1) / 2, (w.y1 + area.y1) / 2};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            char s[5];
+            code_str(fx_clip_region_code(w, xs[j], ys[i]), s);
+            demo_text(&a, xs[j] - 12, ys[i] - 5, 0xFF3F5F85u, "%s", s);
+        }
+    color(&a, 0xFF1E3A5Fu);
+    fx_fill_rect(&a, w.x0, w.y0, w.x1 - w.x0, w.y1 - w.y0);
+    color(&a, ACCENT);
+    fx_rect_outline(&a, w.x0, w.y0, w.x1 - w.x0, w.y1 - w.y0);
+    /* the whole line faint, the clipped part bright */
+    color(&a, 0xFF5A6478u);
+    fx_line(&a, st->lx0, st->ly0, st->lx1, st->ly1);
+    fx_ctx k = a;
+    k.line_clipper = (uint8_t)st->clipper;
+    fx_ctx_set_clip(&k, fx_rect_intersect(w, a.clip));
+    color(&k, ORANGE);
+    fx_line(&k, st->lx0, st->ly0, st->lx1, st->ly1);
+    color(&a, GREEN);
+    fx_disc(&a, st->lx0, st->ly0, 4);
+    color(&a, BLUE);
+    fx_disc(&a, st->lx1, st->ly1, 4);
+
+    /* the readouts */
+    int32_t px = 580;
+    panel(c, px, top, 212, st->h - 8 - top, "Clipping");
+    demo_text(c, px + 8, top + 24, INK, "%s", clipper_name(st->clipper));
+    demo_text(c, px + 8, top + 36, DIM, "keys c / l / n switch");
+    demo_text(c, px + 8, top + 56, DIM, "window (%d,%d)-(%d,%d)", w.x0, w.y0, w.x1 - 1, w.y1 - 1);
+    char s0[5], s1[5];
+    unsigned c0 = fx_clip_region_code(w, st->lx0, st->ly0), c1 = fx_clip_region_code(w, st->lx1, st->ly1);
+    code_str(c0, s0);
+    code_str(c1, s1);
+    demo_text(c, px + 8, top + 76, GREEN, "P0 (%d,%d)", st->lx0, st->ly0);
+    demo_text(c, px + 8, top + 88, GREEN, "   code %s", s0);
+    demo_text(c, px + 8, top + 104, BLUE, "P1 (%d,%d)", st->lx1, st->ly1);
+    demo_text(c, px + 8, top + 116, BLUE, "   code %s", s1);
+    demo_text(c, px + 8, top + 136, DIM, "codes: top bottom right left");
+    const char *verdict = (c0 | c1) == 0 ? "trivially accepted" : (c0 & c1) ? "trivially rejected" : "needs clipping";
+    demo_text(c, px + 8, top + 150, INK, "%s", verdict);
+    fx_clip_param p;
+    int vis = fx_clip_line_param(NULL, FX_CLIP_LIANG, w, st->lx0, st->ly0, st->lx1, st->ly1, &p);
+    demo_text(c, px + 8, top + 174, ACCENT, "Liang-Barsky parameters");
+    if (vis && p.u1_den && p.u2_den) {
+        demo_text(c, px + 8, top + 188, INK, "u1 = %lld/%lld", (long long)p.u1_num, (long long)p.u1_den);
+        demo_text(c, px + 8, top + 200, INK, "u2 = %lld/%lld", (long long)p.u2_num, (long long)p.u2_den);
+        demo_text(c, px + 8, top + 212, DIM, "   = %lld.%03lld .. %lld.%03lld",
+                  (long long)(p.u1_num / p.u1_den), (long long)(p.u1_num * 1000 / p.u1_den % 1000),
+                  (long long)(p.u2_num / p.u2_den), (long long)(p.u2_num * 1000 / p.u2_den % 1000));
+    } else {
+        demo_text(c, px + 8, top + 188, INK, "%s", vis ? "inside" : "outside: nothing drawn");
+    }
+    uint32_t k0, k1;
+    if (fx_clip_line_steps(NULL, (fx_line_clipper)st->clipper, w, st->lx0, st->ly0, st->lx1, st->ly1, &k0, &k1))
+        demo_text(c, px + 8, top + 236, INK, "visible steps %u..%u", k0, k1);
+    else
+        demo_text(c, px + 8, top + 236, INK, "no visible steps");
+    demo_text(c, px + 8, top + 270, DIM, "drag the dots to move");
+    demo_text(c, px + 8, top + 282, DIM, "the line, drag elsewhere");
+    demo_text(c, px + 8, top + 294, DIM, "to move the window");
+}
+
+/* Styled fills (patterns, shaders) go through fx_fill_span, which the
+ * polygon fills use; rectangles and discs are built from it here. */
+static void styled_rect(const fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h)
+{
+    for (int32_t r = y; r < y + h; r++)
+        fx_fill_span(c, r, x, x + w);
+}
+
+static void styled_disc(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r)
+{
+    for (int32_t dy = -r; dy <= r; dy++) {
+        int32_t hw = (int32_t)fx_isqrt32((uint32_t)(r * r - dy * dy));
+        fx_fill_span(c, cy + dy, cx - hw, cx + hw + 1);
+    }
+}
+
+/* ---- fills ---- */
+static const uint8_t pat_brick[8] = {0xFF, 0x80, 0x80, 0x80, 0xFF, 0x08, 0x08, 0x08};
+
+static void fill_shapes(fx_ctx *c, int32_t top)
+{
+    /* outlines the flood fill runs inside */
+    color(c, INK);
+    fx_circle(c, 110, top + 120, 80);
+    fx_circle(c, 110, top + 120, 40);
+    fx_line(c, 30, top + 120, 190, top + 120);
+    fx_rect_outline(c, 220, top + 40, 160, 160);
+    fx_line(c, 220, top + 40, 379, top + 199);
+    fx_line(c, 379, top + 40, 220, top + 199);
+}
+
+static void page_fills(fx_ctx *c, demo_state *st)
+{
+    int32_t top = DEMO_TAB_H + 8;
+    panel(c, 8, top, 392, 230, "Flood fill: click inside a region");
+    fill_shapes(c, top);
+    size_t need = fx_seed_work_size(c);
+    void *work = malloc(need);
+    static const fx_color seedcol[6] = {ORANGE, BLUE, GREEN, ACCENT, 0xFFC77DFFu, RED};
+    if (work)
+        for (int i = 0; i < st->nseeds; i++) {
+            fx_ctx f = *c;
+            fx_ctx_set_clip(&f, (fx_rect){9, top + 1, 399, top + 229});
+            color(&f, seedcol[i % 6]);
+            fx_flood_fill(&f, st->seedx[i], st->seedy[i], 4, work, need);
+        }
+    free(work);
+
+    panel(c, 408, top, 384, 230, "Even-odd and nonzero");
+    int32_t star[10];
+    for (int s = 0; s < 2; s++) {
+        int32_t cx = 500 + s * 196, cy = top + 125;
+        for (int i = 0; i < 5; i++) {
+            fx_angle a = (fx_angle)(FX_ANGLE_90 + (uint32_t)(i * 2) * (0x100000000ull / 5));
+            star[2 * i] = cx + fx16_round(fx16_mul(fx_cos(a), fx16_from_int(85)));
+            star[2 * i + 1] = cy - fx16_round(fx16_mul(fx_sin(a), fx16_from_int(85)));
+        }
+        color(c, s ? GREEN : BLUE);
+        fx_fill_poly(c, star, 5, s ? FX_FILL_NONZERO : FX_FILL_EVENODD);
+        demo_text(c, cx - 30, top + 214, DIM, "%s", s ? "nonzero" : "even-odd");
+    }
+
+    panel(c, 8, top + 238, 392, 206, "Gouraud triangles");
+    int32_t tri[6] = {30, top + 430, 200, top + 260, 380, top + 430};
+    fx_color tc[3] = {0xFFFF3030u, 0xFF30FF30u, 0xFF3030FFu};
+    fx_fill_tri_gouraud(c, tri, tc);
+
+    panel(c, 408, top + 238, 384, 206, "Pattern fills");
+    fx_fill_style fs;
+    memset(&fs, 0, sizeof fs);
+    fs.kind = FX_FILL_PATTERN;
+    fs.bits = pat_brick;
+    fs.w = 8;
+    fs.h = 8;
+    fs.stride = 1;
+    fs.bg = 0xFF5A2A1Eu;
+    fx_ctx p = *c;
+    p.fill_style = &fs;
+    color(&p, 0xFFC8B8A0u);
+    int32_t hex[12];
+    for (int i = 0; i < 6; i++) {
+        fx_angle a = (fx_angle)((uint32_t)i * (0x100000000ull / 6));
+        hex[2 * i] = 510 + fx16_round(fx16_mul(fx_cos(a), fx16_from_int(80)));
+        hex[2 * i + 1] = top + 345 - fx16_round(fx16_mul(fx_sin(a), fx16_from_int(80)));
+    }
+    fx_fill_poly(&p, hex, 6, FX_FILL_EVENODD);
+    static const uint8_t pat_dots[4] = {0x88, 0x00, 0x22, 0x00};
+    fs.bits = pat_dots;
+    fs.w = 8;
+    fs.h = 4;
+    fs.bg_transparent = 1;
+    color(&p, ACCENT);
+    styled_disc(&p, 690, top + 345, 80);
+    color(c, ACCENT);
+    fx_circle(c, 690, top + 345, 80);
+}
+
+
+/* ---- textures ---- */
+static void page_textures(fx_ctx *c, demo_state *st)
+{
+    (void)st;
+    int32_t top = DEMO_TAB_H + 8;
+    static const char *names[5] = {"fake sphere", "noise", "turbulence", "wood", "marble"};
+    static const fx_color c0[5] = {0xFF102040u, 0xFF000000u, 0xFF200818u, 0xFF5A3414u, 0xFF303038u};
+    static const fx_color c1[5] = {0xFF9FD0FFu, 0xFFFFFFFFu, 0xFFFFB040u, 0xFFD8A060u, 0xFFF0F0F0u};
+    for (int i = 0; i < 5; i++) {
+        int32_t x = 8 + i * 157;
+        panel(c, x, top, 150, 170, names[i]);
+        fx_proc_map m;
+        memset(&m, 0, sizeof m);
+        m.kind = i;
+        m.seed = 7;
+        m.x0 = i == 0 ? x + 75 - 100 : x + 7;
+        m.y0 = i == 0 ? top + 92 - 100 : top + 22;
+        m.size = i == 0 ? 200 : 68; /* the sphere has radius 0.3 units */
+        m.c0 = c0[i];
+        m.c1 = c1[i];
+        fx_fill_style fs;
+        memset(&fs, 0, sizeof fs);
+        fs.kind = FX_FILL_SHADER;
+        fs.shade = fx_proc_shade;
+        fs.user = &m;
+        fx_ctx s = *c;
+        s.fill_style = &fs;
+        styled_rect(&s, x + 7, top + 22, 136, 140);
+    }
+    /* a checkerboard texture mapped onto a quad */
+    static uint32_t texels[64 * 64];
+    for (int y = 0; y < 64; y++)
+        for (int x = 0; x < 64; x++)
+            texels[y * 64 + x] = ((x / 8 + y / 8) & 1) ? 0xFFF2C14Eu : 0xFF1E3A5Fu;
+    fx_texture tx;
+    memset(&tx, 0, sizeof tx);
+    fx_surface_init(&tx.img, texels, 64, 64, 64 * 4, FX_FMT_XRGB8888);
+    tx.wrap = FX_TEX_REPEAT;
+    tx.filter = FX_TEX_BILINEAR;
+    panel(c, 8, top + 178, 300, 266, "Texture mapped (bilinear)");
+    int32_t quad[8] = {40, top + 420, 90, top + 220, 250, top + 240, 290, top + 430};
+    fx16 st4[8] = {0, FX16_ONE * 2, 0, 0, FX16_ONE * 2, 0, FX16_ONE * 2, FX16_ONE * 2};
+    fx_fill_poly_tex(c, quad, st4, 4, &tx);
+
+    panel(c, 316, top + 178, 236, 266, "Linear gradient");
+    fx_gradient g;
+    memset(&g, 0, sizeof g);
+    g.x0 = 330;
+    g.y0 = top + 200;
+    g.x1 = 540;
+    g.y1 = top + 430;
+    g.nstops = 4;
+    g.stops[0] = 0xFF1E3A5Fu;
+    g.stops[1] = 0xFF4D9DE0u;
+    g.stops[2] = 0xFFF2C14Eu;
+    g.stops[3] = 0xFFF78154u;
+    fx_fill_style gs;
+    memset(&gs, 0, sizeof gs);
+    gs.kind = FX_FILL_SHADER;
+    gs.shade = fx_gradient_shade;
+    gs.user = &g;
+    fx_ctx s = *c;
+    s.fill_style = &gs;
+    styled_rect(&s, 324, top + 200, 220, 236);
+
+    panel(c, 560, top + 178, 232, 266, "Radial gradient");
+    fx_gradient r;
+    memset(&r, 0, sizeof r);
+    r.radial = 1;
+    r.x0 = 650;
+    r.y0 = top + 290;
+    r.r = 110;
+    r.nstops = 3;
+    r.stops[0] = 0xFFFFFFFFu;
+    r.stops[1] = 0xFFE15554u;
+    r.stops[2] = 0xFF18263Au;
+    gs.user = &r;
+    styled_disc(&s, 676, top + 316, 108);
+}
+
+/* ---- transforms ---- */
+/* a house with a chimney on the right, so reflections show */
+static const int32_t house[] = {-30, 40, 30, 40, 30, -10, 20, -20, 20, -36, 12, -36, 12, -28, 0, -40, -30, -10};
+#define HOUSE_N 9
+
+static void draw_xformed(fx_ctx *c, const fx_xform2 *m, int32_t cx, int32_t cy, fx_color fill)
+{
+    int32_t p[2 * HOUSE_N];
+    for (int i = 0; i < HOUSE_N; i++) {
+        fx_xform2_apply_int(m, house[2 * i], house[2 * i + 1], &p[2 * i], &p[2 * i + 1]);
+        p[2 * i] += cx;
+        p[2 * i + 1] += cy;
+    }
+    color(c, fill);
+    fx_fill_poly(c, p, HOUSE_N, FX_FILL_EVENODD);
+    color(c, INK);
+    fx_polygon(c, p, HOUSE_N);
+}
+
+static void page_transforms(fx_ctx *c, demo_state *st)
+{
+    int32_t top = DEMO_TAB_H + 8;
+    static const char *names[8] = {"original", "rotate 30", "scale 1.5 x 0.7", "shear x 0.5",
+                                   "reflect y axis", "rotate+scale", "reflect y=x", "animated"};
+    for (int i = 0; i < 8; i++) {
+        int32_t x = 8 + (i % 4) * 197, y = top + (i / 4) * 222;
+        panel(c, x, y, 189, 214, names[i]);
+        int32_t cx = x + 95, cy = y + 120;
+        /* the axes through the reference point */
+        color(c, 0xFF2E4A6Bu);
+        fx_line(c, x + 10, cy, x + 179, cy);
+        fx_line(c, cx, y + 24, cx, y + 204);
+        fx_xform2 m, t;
+        fx_xform2_identity(&m);
+        switch (i) {
+        case 1: fx_xform2_rotation(&m, fx_angle_from_deg(30), 0, 0); break;
+        case 2: fx_xform2_scaling(&m, FX16_ONE * 3 / 2, FX16_ONE * 7 / 10, 0, 0); break;
+        case 3: fx_xform2_shear_x(&m, FX16_ONE / 2, 0); break;
+        case 4: fx_xform2_reflection(&m, FX_REFLECT_Y_AXIS); break;
+        case 5:
+            fx_xform2_rotation(&m, fx_angle_from_deg(-45), 0, 0);
+            fx_xform2_scaling(&t, FX16_ONE * 6 / 5, FX16_ONE * 6 / 5, 0, 0);
+            fx_xform2_then(&m, &t);
+            break;
+        case 6: fx_xform2_reflection(&m, FX_REFLECT_DIAGONAL); break;
+        case 7: fx_xform2_rotation(&m, (fx_angle)(st->frame * 0x01000000u + FX_ANGLE_45 / 3), 0, 0); break;
+        default: break;
+        }
+        fx_xform2 id;
+        fx_xform2_identity(&id);
+        if (i)
+            draw_xformed(c, &id, cx, cy, 0xFF22364Fu);
+        draw_xformed(c, &m, cx, cy, i ? 0xC0F78154u : 0xFF4D9DE0u);
+    }
+}
+
+/* ---- colour models ---- */
+static void page_colour(fx_ctx *c, demo_state *st)
+{
+    int32_t top = DEMO_TAB_H + 8;
+    panel(c, 8, top, 440, 444, "HSV wheel (click to pick)");
+    int32_t cx = 228, cy = top + 232, R = 190;
+    for (int32_t y = -R; y <= R; y++)
+        for (int32_t x = -R; x <= R; x++) {
+            uint32_t d = fx_hypot(x, y);
+            if (d > (uint32_t)R)
+                continue;
+            fx_hsv h;
+            h.h = fx_angle_to_deg16(fx_atan2(-y, x));
+            h.s = (fx16)((int64_t)d * FX16_ONE / R);
+            h.v = FX16_ONE;
+            fx_surface_put(&c->surf, cx + x, cy + y, fx_hsv_to_rgb(h));
+        }
+    int32_t px = st->pick_x - cx, py = st->pick_y - cy;
+    if (fx_hypot(px, py) > (uint32_t)R)
+        px = py = 0;
+    fx_hsv h;
+    uint32_t d = fx_hypot(px, py);
+    h.h = fx_angle_to_deg16(fx_atan2(-py, px));
+    h.s = (fx16)((int64_t)d * FX16_ONE / R);
+    h.v = FX16_ONE;
+    fx_color col = fx_hsv_to_rgb(h);
+    color(c, 0xFF000000u);
+    fx_circle(c, cx + px, cy + py, 7);
+    color(c, 0xFFFFFFFFu);
+    fx_circle(c, cx + px, cy + py, 6);
+
+    int32_t x0 = 456;
+    panel(c, x0, top, 336, 444, "The chosen colour");
+    color(c, col);
+    fx_fill_rect(c, x0 + 12, top + 24, 312, 70);
+    uint32_t r = (col >> 16) & 255, g = (col >> 8) & 255, b = col & 255;
+    int32_t y = top + 110;
+    demo_text(c, x0 + 12, y, ACCENT, "RGB");
+    demo_text(c, x0 + 60, y, INK, "%3u %3u %3u   #%02X%02X%02X", r, g, b, r, g, b);
+    fx_cmy m = fx_rgb_to_cmy(col);
+    demo_text(c, x0 + 12, y + 20, ACCENT, "CMY");
+    demo_text(c, x0 + 60, y + 20, INK, "%3u %3u %3u", m.c, m.m, m.y);
+    fx_hsv hv = fx_rgb_to_hsv(col);
+    demo_text(c, x0 + 12, y + 40, ACCENT, "HSV");
+    demo_text(c, x0 + 60, y + 40, INK, "h %3d deg  s %3d%%  v %3d%%", fx16_round(hv.h),
+              fx16_round(hv.s * 100), fx16_round(hv.v * 100));
+    fx_hls hl = fx_rgb_to_hls(col);
+    demo_text(c, x0 + 12, y + 60, ACCENT, "HLS");
+    demo_text(c, x0 + 60, y + 60, INK, "h %3d deg  l %3d%%  s %3d%%", fx16_round(hl.h),
+              fx16_round(hl.l * 100), fx16_round(hl.s * 100));
+    fx_yiq q = fx_rgb_to_yiq(col);
+    demo_text(c, x0 + 12, y + 80, ACCENT, "YIQ");
+    demo_text(c, x0 + 60, y + 80, INK, "y %5d  i %5d  q %5d  (/1000)", (int)((int64_t)q.y * 1000 >> 16),
+              (int)((int64_t)q.i * 1000 / 65536), (int)((int64_t)q.q * 1000 / 65536));
+    /* bars of the model's channels */
+    demo_text(c, x0 + 12, y + 110, DIM, "value ramps at this hue");
+    for (int32_t i = 0; i < 312; i++) {
+        fx_hsv t = hv;
+        t.v = (fx16)(i * FX16_ONE / 311);
+        t.s = hv.s;
+        color(c, fx_hsv_to_rgb(t));
+        fx_fill_rect(c, x0 + 12 + i, y + 126, 1, 24);
+        fx_hls l2 = hl;
+        l2.l = (fx16)(i * FX16_ONE / 311);
+        color(c, fx_hls_to_rgb(l2));
+        fx_fill_rect(c, x0 + 12 + i, y + 156, 1, 24);
+    }
+    demo_text(c, x0 + 12, y + 186, DIM, "HSV value 0..1, HLS lightness 0..1");
+    demo_text(c, x0 + 12, y + 210, DIM, "colour maps");
+    static const fx_cmap maps[4] = {FX_CMAP_GREY, FX_CMAP_HOT, FX_CMAP_VIRIDIS, FX_CMAP_HSV};
+    for (int k = 0; k < 4; k++) {
+        for (int32_t i = 0; i < 240; i++) {
+            color(c, fx_cmap_color(maps[k], (uint32_t)(i * 65536 / 239)));
+            fx_fill_rect(c, x0 + 12 + i, y + 226 + k * 22, 1, 18);
+        }
+        demo_text(c, x0 + 260, y + 230 + k * 22, INK, "%s", fx_cmap_name(maps[k]));
+    }
+}
+
+/* ---- 3D: the mesh renderer is not on main yet; a cube from the 2D primitives ---- */
+static void page_3d(fx_ctx *c, demo_state *st)
+{
+    int32_t top = DEMO_TAB_H + 8;
+    panel(c, 8, top, 784, 444, "3D: Gouraud cube from 2D triangles (mesh renderer pending)");
+    static const int32_t v[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                    {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+    static const int f[6][4] = {{0, 1, 2, 3}, {5, 4, 7, 6}, {4, 0, 3, 7}, {1, 5, 6, 2}, {4, 5, 1, 0}, {3, 2, 6, 7}};
+    fx_angle ay = (fx_angle)(FX_ANGLE_45 / 2 * 3 + st->frame * 0x00800000u);
+    fx_angle ax = (fx_angle)(FX_ANGLE_45 / 2);
+    fx16 sy = fx_sin(ay), cyy = fx_cos(ay), sx = fx_sin(ax), cxx = fx_cos(ax);
+    int32_t px[8], py[8];
+    fx16 rz[8];
+    for (int i = 0; i < 8; i++) {
+        fx16 x = v[i][0] * FX16_ONE, y = v[i][1] * FX16_ONE, z = v[i][2] * FX16_ONE;
+        fx16 x1 = fx16_mul(x, cyy) + fx16_mul(z, sy), z1 = fx16_mul(z, cyy) - fx16_mul(x, sy);
+        fx16 y1 = fx16_mul(y, cxx) - fx16_mul(z1, sx), z2 = fx16_mul(y, sx) + fx16_mul(z1, cxx);
+        /* perspective: eye at z = -5 */
+        fx16 den = z2 + 5 * FX16_ONE;
+        px[i] = 400 + (int32_t)((int64_t)x1 * 600 / den);
+        py[i] = top + 230 + (int32_t)((int64_t)y1 * 600 / den);
+        rz[i] = z2;
+    }
+    for (int k = 0; k < 6; k++) {
+        int32_t ex0 = px[f[k][1]] - px[f[k][0]], ey0 = py[f[k][1]] - py[f[k][0]];
+        int32_t ex1 = px[f[k][2]] - px[f[k][0]], ey1 = py[f[k][2]] - py[f[k][0]];
+        if ((int64_t)ex0 * ey1 - (int64_t)ey0 * ex1 <= 0)
+            continue; /* back face */
+        int32_t q[8];
+        fx_color col[4];
+        for (int j = 0; j < 4; j++) {
+            q[2 * j] = px[f[k][j]];
+            q[2 * j + 1] = py[f[k][j]];
+            /* nearer corners brighter: a depth cue standing in for lighting */
+            int32_t l = 235 - (int32_t)(((int64_t)rz[f[k][j]] + 2 * FX16_ONE) * 150 / (4 * FX16_ONE));
+            fx_hsv h = {fx16_from_int(k * 60 + 10), FX16_ONE * 7 / 10, l * FX16_ONE / 255};
+            col[j] = fx_hsv_to_rgb(h);
+        }
+        fx_fill_poly_gouraud(c, q, col, 4);
+        color(c, 0xFF101820u);
+        fx_polygon(c, q, 4);
+    }
+}
+
+/* ---- fractals ---- */
+static void dwell_lut(uint32_t *lut, int n, fx_format f, fx_cmap m)
+{
+    /* a triangle wave over the map, so wrapping dwell bands meet smoothly;
+     * the darkest tenth is left out to keep the outside apart from the set */
+    for (int i = 0; i < n; i++) {
+        int32_t tri = i < n / 2 ? i : n - i;
+        lut[i] = fx_pack(f, fx_cmap_color(m, (uint32_t)(6554 + tri * 2 * 58982 / n)));
+    }
+}
+
+static const fx_ifs_map fern_maps[4] = {
+    {0, 0, 0, 10486, 0, 0, 655},
+    {55706, 2621, -2621, 55706, 0, 104858, 55706},
+    {13107, -17039, 15073, 14418, 0, 104858, 4588},
+    {-9830, 18350, 17039, 15729, 0, 28835, 4587},
+};
+
+static void page_fractals(fx_ctx *c, demo_state *st)
+{
+    int32_t top = DEMO_TAB_H + 8;
+    static uint32_t lut[64];
+    dwell_lut(lut, 64, c->surf.format, FX_CMAP_HOT);
+    fx_dwell_pal pal = {lut, 64, 65536, 1, fx_pack(c->surf.format, 0xFF000000u)};
+    /* Mandelbrot */
+    panel(c, 8, top, 388, 250, "Mandelbrot: click to zoom, right click out");
+    fx_rect mr = {14, top + 20, 390, top + 244};
+    fx_fractal_view mv = fx_mandel_view(st->mcre, st->mcim, st->mwidth, mr.x1 - mr.x0, mr.y1 - mr.y0, 192);
+    fx_surface ms = fx_surface_sub(c->surf, mr);
+    fx_fractal_render(&ms, (fx_rect){0, 0, ms.w, ms.h}, &mv, &pal);
+    /* Julia of the pointer's point in the Mandelbrot frame */
+    panel(c, 404, top, 388, 250, NULL);
+    int32_t jx = st->julia_x - mr.x0, jy = st->julia_y - mr.y0;
+    fx56 jre = fx_fractal_re(&mv, jx), jim = fx_fractal_im(&mv, jy);
+    fx_rect jr = {410, top + 20, 786, top + 244};
+    fx_fractal_view jv = fx_julia_view(0, 0, jre, jim, 3 * FX56_ONE, jr.x1 - jr.x0, jr.y1 - jr.y0, 192);
+    static uint32_t lut2[64];
+    dwell_lut(lut2, 64, c->surf.format, FX_CMAP_VIRIDIS);
+    fx_dwell_pal pal2 = {lut2, 64, 65536, 1, fx_pack(c->surf.format, 0xFF000000u)};
+    fx_surface js = fx_surface_sub(c->surf, jr);
+    fx_fractal_render(&js, (fx_rect){0, 0, js.w, js.h}, &jv, &pal2);
+    demo_text(c, 410, top + 5, ACCENT, "Julia c = %+.4f %+.4fi (follows the pointer)",
+              (double)jre / (double)FX56_ONE, (double)jim / (double)FX56_ONE);
+    color(c, 0xFFFFFFFFu);
+    fx_circle(c, st->julia_x, st->julia_y, 3);
+
+    /* Koch, fern, Hilbert */
+    panel(c, 8, top + 258, 256, 186, NULL);
+    demo_text(c, 14, top + 263, ACCENT, "Koch snowflake, order %d (keys 0-6)", st->koch_order);
+    color(c, 0xFF5CE1E6u);
+    fx_koch_snowflake(c, 136, top + 360, 80, (uint32_t)st->koch_order);
+    panel(c, 272, top + 258, 256, 186, "Barnsley fern (IFS)");
+    fx_ifs fern = {fern_maps, 4, -3 * FX16_ONE, 0, 3 * FX16_ONE, 10 * FX16_ONE};
+    color(c, GREEN);
+    fx_ifs_chaos(c, (fx_rect){330, top + 276, 470, top + 440}, &fern, 40000, 1);
+    panel(c, 536, top + 258, 256, 186, "Hilbert curve, order 5");
+    color(c, ORANGE);
+    fx_hilbert(c, 600, top + 278, 160, 5);
+}
+
+/* ---- visualization ---- */
+#define GW 41
+#define GH 31
+
+static int32_t field(int32_t x, int32_t y)
+{
+    /* two bumps and a dip, in integers (exp approximated by a rational bump) */
+    int32_t v = 0;
+    static const int32_t b[3][3] = {{12, 10, 1000}, {28, 20, 800}, {30, 8, -600}};
+    for (int i = 0; i < 3; i++) {
+        int32_t dx = x - b[i][0], dy = y - b[i][1];
+        v += b[i][2] * 64 / (64 + dx * dx + dy * dy);
+    }
+    return v;
+}
+
+static void page_viz(fx_ctx *c, demo_state *st)
+{
+    (void)st;
+    int32_t top = DEMO_TAB_H + 8;
+    static int32_t g[GW * GH], u[GW * GH], vv[GW * GH];
+    for (int y = 0; y < GH; y++)
+        for (int x = 0; x < GW; x++)
+            g[y * GW + x] = field(x, y);
+    for (int y = 0; y < GH; y++)
+        for (int x = 0; x < GW; x++) {
+            int xa = x > 0 ? x - 1 : x, xb = x < GW - 1 ? x + 1 : x;
+            int ya = y > 0 ? y - 1 : y, yb = y < GH - 1 ? y + 1 : y;
+            /* the gradient turned 90 degrees: flow along the contours */
+            u[y * GW + x] = -(g[yb * GW + x] - g[ya * GW + x]);
+            vv[y * GW + x] = g[y * GW + xb] - g[y * GW + xa];
+        }
+    fx_grid grid = {g, GW, GH, GW};
+    int32_t lo, hi;
+    fx_grid_range(&grid, &lo, &hi);
+
+    panel(c, 8, top, 388, 300, "Heat map and contours");
+    fx_rect hr = {16, top + 22, 356, top + 292};
+    fx_heatmap(c, hr, &grid, lo, hi, FX_CMAP_VIRIDIS);
+    color(c, 0xFFFFFFFFu);
+    for (int k = 1; k < 10; k++)
+        fx_contour(c, hr, &grid, lo + (hi - lo) * k / 10);
+    fx_colorbar(c, (fx_rect){364, top + 22, 388, top + 292}, FX_CMAP_VIRIDIS, 5);
+
+    panel(c, 404, top, 388, 300, "Vector field and streamlines");
+    fx_rect vr = {412, top + 22, 784, top + 292};
+    color(c, 0xFF2E4A6Bu);
+    fx_rect_outline(c, vr.x0, vr.y0, vr.x1 - vr.x0, vr.y1 - vr.y0);
+    fx_vgrid vg = {u, vv, GW, GH, GW};
+    color(c, DIM);
+    fx_quiver(c, vr, &vg, 2);
+    for (int i = 0; i < 8; i++) {
+        color(c, fx_cmap_color(FX_CMAP_HOT, (uint32_t)(20000 + i * 5000)));
+        fx_streamline(c, vr, &vg, vr.x0 + 20 + i * 44, vr.y0 + 30 + (i % 3) * 90, FX16_ONE, 600);
+    }
+
+    panel(c, 8, top + 308, 784, 136, "Hot colour map of the same field, heights as bars");
+    for (int x = 0; x < GW; x++) {
+        int32_t val = g[15 * GW + x];
+        int32_t hgt = (int32_t)((int64_t)(val - lo) * 100 / (hi - lo ? hi - lo : 1));
+        color(c, fx_cmap_color(FX_CMAP_HOT, (uint32_t)((int64_t)(val - lo) * 65535 / (hi - lo ? hi - lo : 1))));
+        fx_fill_rect(c, 20 + x * 18, top + 434 - hgt, 14, hgt + 1);
+    }
+}
+
+const demo_page demo_pages[] = {
+    {"lines", "Lines", page_lines},
+    {"circles", "Circles", page_circles},
+    {"clipping", "Clipping", page_clipping},
+    {"fills", "Fills", page_fills},
+    {"textures", "Textures", page_textures},
+    {"transforms", "Transforms", page_transforms},
+    {"colour", "Colour", page_colour},
+    {"3d", "3D", page_3d},
+    {"fractals", "Fractals", page_fractals},
+    {"viz", "Viz", page_viz},
+};
+const int demo_npages = (int)(sizeof demo_pages / sizeof demo_pages[0]);
+
+void demo_state_init(demo_state *st, int32_t w, int32_t h)
+{
+    memset(st, 0, sizeof *st);
+    st->w = w;
+    st->h = h;
+    st->win = (fx_rect){180, 150, 420, 330};
+    st->lx0 = 60;
+    st->ly0 = 400;
+    st->lx1 = 520;
+    st->ly1 = 90;
+    st->clipper = FX_CLIP_LIANG;
+    /* headless pictures show a few fills already made */
+    st->nseeds = 5;
+    int32_t top = DEMO_TAB_H + 8;
+    int32_t sx[5] = {110, 60, 300, 240, 350}, sy[5] = {top + 60, top + 140, top + 60, top + 120, top + 170};
+    memcpy(st->seedx, sx, sizeof sx);
+    memcpy(st->seedy, sy, sizeof sy);
+    st->mcre = -FX56_ONE / 2;
+    st->mcim = 0;
+    st->mwidth = 3 * FX56_ONE;
+    st->julia_x = 14 + 140;
+    st->julia_y = top + 20 + 150;
+    st->koch_order = 4;
+    st->pick_x = 228 + 120;
+    st->pick_y = top + 232 + 60;
+}
+
+void demo_draw(fx_ctx *c, demo_state *st)
+{
+    fx_ctx_reset_clip(c);
+    color(c, BG);
+    fx_clear(c);
+    /* the tab bar */
+    int32_t tw = st->w / demo_npages;
+    for (int i = 0; i < demo_npages; i++) {
+        color(c, i == st->page ? 0xFF2E4A6Bu : 0xFF16202Eu);
+        fx_fill_rect(c, i * tw, 0, tw - 1, DEMO_TAB_H);
+        int64_t ww, hh;
+        fx_text_extent(NULL, demo_pages[i].title, &ww, &hh);
+        demo_text(c, i * tw + (tw - (int32_t)ww) / 2, (DEMO_TAB_H - (int32_t)hh) / 2,
+                  i == st->page ? ACCENT : DIM, "%s", demo_pages[i].title);
+    }
+    demo_pages[st->page].draw(c, st);
+}
+
+static int near(int32_t x, int32_t y, int32_t px, int32_t py)
+{
+    return fx_hypot(x - px, y - py) <= 10;
+}
+
+void demo_pointer(demo_state *st, int32_t x, int32_t y, int down)
+{
+    const char *name = demo_pages[st->page].name;
+    int32_t top = DEMO_TAB_H + 8;
+    st->mx = x;
+    st->my = y;
+    if (!strcmp(name, "clipping")) {
+        if (down == 1) {
+            st->drag = near(x, y, st->lx0, st->ly0) ? 1 : near(x, y, st->lx1, st->ly1) ? 2 : x < 572 ? 3 : 0;
+            st->dragx = x;
+            st->dragy = y;
+        } else if (down == 0 && st->drag) {
+            int32_t dx = x - st->dragx, dy = y - st->dragy;
+            st->dragx = x;
+            st->dragy = y;
+            if (st->drag == 1) {
+                st->lx0 = x;
+                st->ly0 = y;
+            } else if (st->drag == 2) {
+                st->lx1 = x;
+                st->ly1 = y;
+            } else {
+                st->win.x0 += dx;
+                st->win.x1 += dx;
+                st->win.y0 += dy;
+                st->win.y1 += dy;
+            }
+        } else if (down == -1) {
+            st->drag = 0;
+        }
+    } else if (!strcmp(name, "fills")) {
+        if (down == 1 && x > 8 && x < 400 && y > top && y < top + 230) {
+            if (st->nseeds == 16) {
+                memmove(st->seedx, st->seedx + 1, 15 * sizeof st->seedx[0]);
+                memmove(st->seedy, st->seedy + 1, 15 * sizeof st->seedy[0]);
+                st->nseeds--;
+            }
+            st->seedx[st->nseeds] = x;
+            st->seedy[st->nseeds++] = y;
+        }
+    } else if (!strcmp(name, "colour")) {
+        if (down >= 0 && down <= 1) {
+            st->pick_x = x;
+            st->pick_y = y;
+        }
+    } else if (!strcmp(name, "fractals")) {
+        fx_rect mr = {14, top + 20, 390, top + 244};
+        int inside = x >= mr.x0 && x < mr.x1 && y >= mr.y0 && y < mr.y1;
+        if (inside && (down == 0 || down == 3)) {
+            st->julia_x = x;
+            st->julia_y = y;
+        }
+        if (inside && (down == 1 || down == 2)) {
+            fx_fractal_view v = fx_mandel_view(st->mcre, st->mcim, st->mwidth, mr.x1 - mr.x0, mr.y1 - mr.y0, 192);
+            st->mcre = fx_fractal_re(&v, x - mr.x0);
+            st->mcim = fx_fractal_im(&v, y - mr.y0);
+            if (down == 1 && st->mwidth > (FX56_ONE >> 40))
+                st->mwidth /= 4;
+            else if (down == 2 && st->mwidth < 4 * FX56_ONE)
+                st->mwidth *= 4;
+            st->julia_x = (mr.x0 + mr.x1) / 2;
+            st->julia_y = (mr.y0 + mr.y1) / 2;
+        }
+    }
+}
+
+int demo_key(demo_state *st, int key)
+{
+    const char *name = demo_pages[st->page].name;
+    if (!strcmp(name, "clipping")) {
+        if (key == 'c')
+            st->clipper = FX_CLIP_COHEN;
+        else if (key == 'l')
+            st->clipper = FX_CLIP_LIANG;
+        else if (key == 'n')
+            st->clipper = FX_CLIP_NLN;
+        else
+            return 0;
+        return 1;
+    }
+    if (!strcmp(name, "fractals") && key >= '0' && key <= '6') {
+        st->koch_order = key - '0';
+        return 1;
+    }
+    return 0;
+}
