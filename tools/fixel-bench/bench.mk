@@ -21,6 +21,11 @@ $(BUILD)/obj/tools/fixel-bench/%.o: PKG_CFLAGS += -DBENCH_NO_PEERS
 TOOL_LIBS_fixel-bench := -lm
 endif
 
+# Functions that join an existing header are detected here (the C side can
+# only test for headers).
+BENCH_API_DEFS := $(shell grep -qs 'fx_aaline' kernel-free-src/include/fixel/line.h && echo -DBENCH_HAVE_AALINE)
+$(BUILD)/obj/tools/fixel-bench/%.o: PKG_CFLAGS += $(BENCH_API_DEFS)
+
 # The W9 reference is measured at exactly the flags WORKLOADS.md names, whatever
 # OPT and CPU_FLAGS the project is built with; ref-native is the same source at
 # -O3 -march=native. Both are plain C (no fixel), so sanitizers stay off here.

@@ -74,6 +74,20 @@ static void fx_w3(void *ctx, int n)
     }
 }
 
+/* fx_aaline joins line.h, which exists already: bench.mk defines
+ * BENCH_HAVE_AALINE when the header declares it. */
+#ifdef BENCH_HAVE_AALINE
+static void fx_w4(void *ctx, int n)
+{
+    struct fxb *b = ctx;
+    const struct wl_line *l = WL->lines;
+    for (int i = 0; i < n; i++) {
+        fx_ctx_set_color(&b->c, OPAQUE(l[i].c));
+        fx_aaline(&b->c, l[i].x0, l[i].y0, l[i].x1, l[i].y1);
+    }
+}
+#endif
+
 #ifdef HAVE_CIRCLE
 static void fx_w5(void *ctx, int n)
 {
@@ -160,6 +174,9 @@ const struct peer peer_fixel = {
             [W1_CLEAR] = fx_w1,
             [W2_RECTS] = fx_w2,
             [W3_LINES] = fx_w3,
+#ifdef BENCH_HAVE_AALINE
+            [W4_AALINES] = fx_w4,
+#endif
 #ifdef HAVE_CIRCLE
             [W5_CIRCLES] = fx_w5,
             [W6_DISCS] = fx_w6,
