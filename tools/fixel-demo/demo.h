@@ -5,6 +5,7 @@
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/clip.h"
+#include "fixel/mat3d.h"
 
 #define DEMO_TAB_H 22
 
@@ -28,6 +29,9 @@ typedef struct demo_state {
     int koch_order;
     /* colour page: chosen point on the wheel */
     int32_t pick_x, pick_y;
+    /* 3D */
+    fx_camera cam;
+    int shading;        /* fx3d_shading */
     /* animation */
     uint32_t frame;
 } demo_state;

@@ -16,6 +16,9 @@
 #include "fixel/ifs.h"
 #include "fixel/koch.h"
 #include "fixel/line.h"
+#include "fixel/mat3d.h"
+#include "fixel/mesh.h"
+#include "fixel/render3d.h"
 #include "fixel/texture.h"
 #include "fixel/viz.h"
 #include "fixel/xform.h"
@@ -595,48 +598,78 @@ static void page_colour(fx_ctx *c, demo_state *st)
     }
 }
 
-/* ---- 3D: the mesh renderer is not on main yet; a cube from the 2D primitives ---- */
+/* ---- 3D: the mesh renderer on two objects, one camera ---- */
+static const char *shading_name(int s)
+{
+    return s == FX3D_FLAT ? "flat" : s == FX3D_GOURAUD ? "Gouraud" : "Phong";
+}
+
+static void draw_object(fx_ctx *c, demo_state *st, fx_rect r, fx_mesh_kind kind, fx_color col, fx_angle spin)
+{
+    fx_surface s = fx_surface_sub(c->surf, r);
+    fx_mesh_params mp = {kind, FX16_ONE * 7 / 10, 0, 0, 8, 0};
+    if (kind == FX_MESH_TORUS)
+        mp = (fx_mesh_params){kind, FX16_ONE + FX16_HALF, FX16_ONE / 2 + FX16_ONE / 8, 0, 20, 32};
+    int32_t nv, nt;
+    if (fx_mesh_size(&mp, &nv, &nt) < 0)
+        return;
+    fx_mesh m;
+    memset(&m, 0, sizeof m);
+    m.pos = malloc((size_t)nv * 2 * sizeof(fx_vec3));
+    m.tri = malloc((size_t)nt * 3 * sizeof(uint32_t));
+    void *z = malloc(fx3d_depth_bytes(&s, 32));
+    fx3d *rd = malloc(sizeof *rd);
+    fx_mat4 ms[4], ps[2];
+    if (m.pos && m.tri && z && rd) {
+        m.nrm = m.pos + nv;
+        m.cap_verts = nv;
+        m.cap_tris = nt;
+        if (fx_mesh_make(&m, &mp) == 0 && fx3d_init(rd, &s, ms, 4, ps, 2) == 0) {
+            fx3d_set_depth(rd, z, 32);
+            fx_camera_view(&st->cam, &rd->view);
+            fx3d_perspective(rd, fx_angle_from_deg(40), fx16_from_ratio(s.w, s.h), FX16_ONE / 2, 50 * FX16_ONE);
+            rd->light[0].type = FX3D_LIGHT_DIRECTIONAL;
+            rd->light[0].pos = fx_vec3_make(FX16_ONE, FX16_ONE, FX16_ONE);
+            rd->light[1].type = FX3D_LIGHT_POINT;
+            rd->light[1].pos = fx_vec3_make(-4 * FX16_ONE, 5 * FX16_ONE, 3 * FX16_ONE);
+            rd->light[1].diffuse = rd->light[1].specular = fx3d_rgb_from_color(0x6080FF);
+            rd->mat.ambient = rd->mat.diffuse = fx3d_rgb_from_color(col);
+            rd->mat.specular = fx3d_rgb_from_color(0xFFFFFF);
+            rd->mat.shininess = 40;
+            rd->shading = (fx3d_shading)st->shading;
+            fx_mat4 *top = fx_mat_stack_top(&rd->model);
+            if (kind == FX_MESH_TORUS) {
+                fx_mat4_translate(top, 0, FX16_ONE + FX16_HALF, 0);
+                fx_mat4_rotate_x(top, (fx_angle)(FX_ANGLE_90 / 3 + spin));
+                fx_mat4_rotate_y(top, spin);
+            } else {
+                fx_mat4_rotate_y(top, spin);
+                fx_mat4_translate(top, 0, -FX16_ONE / 8, 0);
+            }
+            fx3d_draw(rd, &m);
+        }
+    }
+    free(rd);
+    free(z);
+    free(m.tri);
+    free(m.pos);
+}
+
 static void page_3d(fx_ctx *c, demo_state *st)
 {
     int32_t top = DEMO_TAB_H + 8;
-    panel(c, 8, top, 784, 444, "3D: Gouraud cube from 2D triangles (mesh renderer pending)");
-    static const int32_t v[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                                    {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-    static const int f[6][4] = {{0, 1, 2, 3}, {5, 4, 7, 6}, {4, 0, 3, 7}, {1, 5, 6, 2}, {4, 5, 1, 0}, {3, 2, 6, 7}};
-    fx_angle ay = (fx_angle)(FX_ANGLE_45 / 2 * 3 + st->frame * 0x00800000u);
-    fx_angle ax = (fx_angle)(FX_ANGLE_45 / 2);
-    fx16 sy = fx_sin(ay), cyy = fx_cos(ay), sx = fx_sin(ax), cxx = fx_cos(ax);
-    int32_t px[8], py[8];
-    fx16 rz[8];
-    for (int i = 0; i < 8; i++) {
-        fx16 x = v[i][0] * FX16_ONE, y = v[i][1] * FX16_ONE, z = v[i][2] * FX16_ONE;
-        fx16 x1 = fx16_mul(x, cyy) + fx16_mul(z, sy), z1 = fx16_mul(z, cyy) - fx16_mul(x, sy);
-        fx16 y1 = fx16_mul(y, cxx) - fx16_mul(z1, sx), z2 = fx16_mul(y, sx) + fx16_mul(z1, cxx);
-        /* perspective: eye at z = -5 */
-        fx16 den = z2 + 5 * FX16_ONE;
-        px[i] = 400 + (int32_t)((int64_t)x1 * 600 / den);
-        py[i] = top + 230 + (int32_t)((int64_t)y1 * 600 / den);
-        rz[i] = z2;
-    }
-    for (int k = 0; k < 6; k++) {
-        int32_t ex0 = px[f[k][1]] - px[f[k][0]], ey0 = py[f[k][1]] - py[f[k][0]];
-        int32_t ex1 = px[f[k][2]] - px[f[k][0]], ey1 = py[f[k][2]] - py[f[k][0]];
-        if ((int64_t)ex0 * ey1 - (int64_t)ey0 * ex1 <= 0)
-            continue; /* back face */
-        int32_t q[8];
-        fx_color col[4];
-        for (int j = 0; j < 4; j++) {
-            q[2 * j] = px[f[k][j]];
-            q[2 * j + 1] = py[f[k][j]];
-            /* nearer corners brighter: a depth cue standing in for lighting */
-            int32_t l = 235 - (int32_t)(((int64_t)rz[f[k][j]] + 2 * FX16_ONE) * 150 / (4 * FX16_ONE));
-            fx_hsv h = {fx16_from_int(k * 60 + 10), FX16_ONE * 7 / 10, l * FX16_ONE / 255};
-            col[j] = fx_hsv_to_rgb(h);
-        }
-        fx_fill_poly_gouraud(c, q, col, 4);
-        color(c, 0xFF101820u);
-        fx_polygon(c, q, 4);
-    }
+    panel(c, 8, top, 388, 400, NULL);
+    panel(c, 404, top, 388, 400, NULL);
+    fx_angle spin = (fx_angle)(st->frame * 0x00800000u);
+    draw_object(c, st, (fx_rect){9, top + 1, 395, top + 399}, FX_MESH_TEAPOT, 0xFFC04020u, spin);
+    draw_object(c, st, (fx_rect){405, top + 1, 791, top + 399}, FX_MESH_TORUS, 0xFF2080C0u, spin);
+    demo_text(c, 14, top + 5, ACCENT, "Teapot, %s shading", shading_name(st->shading));
+    demo_text(c, 410, top + 5, ACCENT, "Torus, %s shading", shading_name(st->shading));
+    panel(c, 8, top + 408, 784, 36, NULL);
+    demo_text(c, 16, top + 414, INK, "s: flat / Gouraud / Phong    camera: u/d slide up/down, f/b forward/back,");
+    demo_text(c, 16, top + 428, INK, "h/j slide left/right, y/Y yaw, t/T pitch, o/O roll    eye (%d.%02d, %d.%02d, %d.%02d)",
+              st->cam.eye.x >> 16, (st->cam.eye.x & 0xFFFF) * 100 >> 16, st->cam.eye.y >> 16,
+              (st->cam.eye.y & 0xFFFF) * 100 >> 16, st->cam.eye.z >> 16, (st->cam.eye.z & 0xFFFF) * 100 >> 16);
 }
 
 /* ---- fractals ---- */
@@ -790,9 +823,10 @@ void demo_state_init(demo_state *st, int32_t w, int32_t h)
     st->ly1 = 90;
     st->clipper = FX_CLIP_LIANG;
     /* headless pictures show a few fills already made */
-    st->nseeds = 5;
+    st->nseeds = 6;
     int32_t top = DEMO_TAB_H + 8;
-    int32_t sx[5] = {110, 60, 300, 240, 350}, sy[5] = {top + 60, top + 140, top + 60, top + 120, top + 170};
+    int32_t sx[6] = {110, 60, 300, 240, 360, 300};
+    int32_t sy[6] = {top + 60, top + 140, top + 60, top + 120, top + 120, top + 185};
     memcpy(st->seedx, sx, sizeof sx);
     memcpy(st->seedy, sy, sizeof sy);
     st->mcre = -FX56_ONE / 2;
@@ -803,6 +837,9 @@ void demo_state_init(demo_state *st, int32_t w, int32_t h)
     st->koch_order = 4;
     st->pick_x = 228 + 120;
     st->pick_y = top + 232 + 60;
+    fx_camera_set(&st->cam, fx_vec3_make(0, 3 * FX16_ONE, 7 * FX16_ONE), fx_vec3_make(0, FX16_ONE, 0),
+                  fx_vec3_make(0, FX16_ONE, 0));
+    st->shading = FX3D_GOURAUD;
 }
 
 void demo_draw(fx_ctx *c, demo_state *st)
@@ -906,6 +943,27 @@ int demo_key(demo_state *st, int key)
             st->clipper = FX_CLIP_NLN;
         else
             return 0;
+        return 1;
+    }
+    if (!strcmp(name, "3d")) {
+        fx16 d = FX16_ONE / 4;
+        fx_angle a = FX_ANGLE_45 / 9;
+        switch (key) {
+        case 's': st->shading = (st->shading + 1) % 3; break;
+        case 'u': fx_camera_slide(&st->cam, 0, d, 0); break;
+        case 'd': fx_camera_slide(&st->cam, 0, -d, 0); break;
+        case 'f': fx_camera_slide(&st->cam, 0, 0, -d); break;
+        case 'b': fx_camera_slide(&st->cam, 0, 0, d); break;
+        case 'h': fx_camera_slide(&st->cam, -d, 0, 0); break;
+        case 'j': fx_camera_slide(&st->cam, d, 0, 0); break;
+        case 'y': fx_camera_yaw(&st->cam, a); break;
+        case 'Y': fx_camera_yaw(&st->cam, (fx_angle)-a); break;
+        case 't': fx_camera_pitch(&st->cam, a); break;
+        case 'T': fx_camera_pitch(&st->cam, (fx_angle)-a); break;
+        case 'o': fx_camera_roll(&st->cam, a); break;
+        case 'O': fx_camera_roll(&st->cam, (fx_angle)-a); break;
+        default: return 0;
+        }
         return 1;
     }
     if (!strcmp(name, "fractals") && key >= '0' && key <= '6') {
