@@ -32,7 +32,11 @@ static void usage(FILE *f)
             "  --golden DIR  render every page at 800x480 and compare with DIR/<page>.png;\n"
             "                mismatches write DIR/<page>.actual.png; --update rewrites them\n"
             "keys: right/left, PageDown/PageUp, n/p, Down/Up (GPIO buttons): next/previous page;\n"
-            "      c/l/n clipper (clipping page), 0-6 Koch order, r reset, q/Esc quit\n");
+            "      tab bar: click or touch; r reset the page, q/Esc quit\n"
+            "clipping: drag the line's ends or the window; c/l/n Cohen-Sutherland/Liang-Barsky/NLN\n"
+            "fills: click to flood-fill   colour: click the wheel\n"
+            "fractals: click zooms in, right click out, the Julia set follows the pointer, 0-6 Koch order\n"
+            "3d: s shading; camera u/d up/down, f/b forward/back, h/j left/right, y/Y yaw, t/T pitch, o/O roll\n");
 }
 
 static int find_page(const char *name)

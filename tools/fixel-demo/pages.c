@@ -699,7 +699,11 @@ static void page_fractals(fx_ctx *c, demo_state *st)
     /* Mandelbrot */
     panel(c, 8, top, 388, 250, "Mandelbrot: click to zoom, right click out");
     fx_rect mr = {14, top + 20, 390, top + 244};
-    fx_fractal_view mv = fx_mandel_view(st->mcre, st->mcim, st->mwidth, mr.x1 - mr.x0, mr.y1 - mr.y0, 192);
+    /* deeper zooms need more iterations before points near the set escape */
+    uint32_t maxiter = 192;
+    for (int64_t w = 3 * FX56_ONE; w > st->mwidth && maxiter < 2048; w /= 4)
+        maxiter += 96;
+    fx_fractal_view mv = fx_mandel_view(st->mcre, st->mcim, st->mwidth, mr.x1 - mr.x0, mr.y1 - mr.y0, maxiter);
     fx_surface ms = fx_surface_sub(c->surf, mr);
     fx_fractal_render(&ms, (fx_rect){0, 0, ms.w, ms.h}, &mv, &pal);
     /* Julia of the pointer's point in the Mandelbrot frame */
@@ -715,6 +719,9 @@ static void page_fractals(fx_ctx *c, demo_state *st)
     fx_fractal_render(&js, (fx_rect){0, 0, js.w, js.h}, &jv, &pal2);
     demo_text(c, 410, top + 5, ACCENT, "Julia c = %+.4f %+.4fi (follows the pointer)",
               (double)jre / (double)FX56_ONE, (double)jim / (double)FX56_ONE);
+    if (st->mwidth != 3 * FX56_ONE)
+        demo_text(c, 20, top + 230, 0xFFFFFFFFu, "width %.3g, %u iterations", (double)st->mwidth / (double)FX56_ONE,
+                  maxiter);
     color(c, 0xFFFFFFFFu);
     fx_circle(c, st->julia_x, st->julia_y, 3);
 
