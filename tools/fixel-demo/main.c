@@ -173,7 +173,10 @@ static void on_display(void *user)
     d->st.h = s.h;
     demo_draw(&c, &d->st);
     d->frame_ms = (now_s() - t0) * 1e3;
-    demo_text(&c, s.w - 190, DEMO_TAB_H + 10, 0xFFFFFF80u, "%5.1f fps %6.2f ms", d->fps, d->frame_ms);
+    /* on its own dark box so it stays legible over any page */
+    fx_ctx_set_color(&c, 0xFF000000u);
+    fx_fill_rect(&c, s.w - 156, DEMO_TAB_H, 156, 13);
+    demo_text(&c, s.w - 152, DEMO_TAB_H + 2, 0xFFFFFF80u, "%5.1f fps %6.2f ms", d->fps, d->frame_ms);
     fx_app_present(d->app, NULL, 0);
     d->frames++;
     double t = now_s();
