@@ -213,6 +213,11 @@ void fx_line(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 {
     fx_bres b;
     uint32_t k0, k1;
+    if (!fx_line_style_is_plain(c->line_style)) { /* dashed or thick: stroke.c */
+        int32_t xy[4] = {x0, y0, x1, y1};
+        fx_polyline(c, xy, 2);
+        return;
+    }
     if (c->line_clipper != FX_CLIP_DIRECT || c->exterior) {
         fx_clip_draw_line(c, x0, y0, x1, y1); /* same pixels; the chosen algorithm's steps */
         return;

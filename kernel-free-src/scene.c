@@ -67,9 +67,10 @@ int fx_scene_surface(fx_scene *sc)
     if (r < 0)
         return fx_scene_error(sc, "cannot create a %dx%d %s surface: %s", sc->w, sc->h,
                               fx_format_get(sc->format)->name, fx_strerror(r));
-    fx_color color = sc->ctx.color;
+    fx_ctx keep = sc->ctx; /* colour and styles set before the surface existed */
     fx_ctx_init(&sc->ctx, &s);
-    fx_ctx_set_color(&sc->ctx, color);
+    fx_ctx_set_color(&sc->ctx, keep.color);
+    sc->ctx.line_style = keep.line_style;
     sc->ctx.trace = sc->host.trace;
     sc->ctx.trace_user = sc->host.user;
     sc->have_surface = 1;
