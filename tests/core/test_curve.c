@@ -25,13 +25,13 @@ static void collect(void *u, int64_t x, int64_t y)
     p->n++;
 }
 
-/* de Casteljau in long double, in 1/256 px */
-static void eval(const int64_t *c, int n, long double t, long double *x, long double *y)
+/* de Casteljau in double, in 1/256 px (exact enough: values < 2^20) */
+static void eval(const int64_t *c, int n, double t, double *x, double *y)
 {
-    long double bx[9], by[9];
+    double bx[9], by[9];
     for (int i = 0; i < n; i++) {
-        bx[i] = (long double)c[2 * i];
-        by[i] = (long double)c[2 * i + 1];
+        bx[i] = (double)c[2 * i];
+        by[i] = (double)c[2 * i + 1];
     }
     for (int k = 1; k < n; k++)
         for (int i = 0; i < n - k; i++) {
@@ -42,23 +42,23 @@ static void eval(const int64_t *c, int n, long double t, long double *x, long do
     *y = by[0];
 }
 
-static long double dist_to_seg(long double px, long double py, const int64_t *a, const int64_t *b)
+static double dist_to_seg(double px, double py, const int64_t *a, const int64_t *b)
 {
-    long double ax = (long double)a[0], ay = (long double)a[1];
-    long double dx = (long double)b[0] - ax, dy = (long double)b[1] - ay, l2 = dx * dx + dy * dy;
-    long double t = l2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0;
+    double ax = (double)a[0], ay = (double)a[1];
+    double dx = (double)b[0] - ax, dy = (double)b[1] - ay, l2 = dx * dx + dy * dy;
+    double t = l2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0;
     t = t < 0 ? 0 : t > 1 ? 1 : t;
-    long double qx = ax + t * dx - px, qy = ay + t * dy - py;
-    return sqrtl(qx * qx + qy * qy);
+    double qx = ax + t * dx - px, qy = ay + t * dy - py;
+    return sqrt(qx * qx + qy * qy);
 }
 
 FX_TEST(bezier_flattening_keeps_endpoints_and_tolerance)
 {
     uint32_t s = 12;
-    for (int i = 0; i < 700; i++) {
+    for (int i = 0; i < 240; i++) {
         int n = 3 + i % 7; /* degree 2..8 */
         int64_t c[18];
-        int64_t range = i % 3 == 0 ? 256 * 100 : i % 3 == 1 ? 256 * 3000 : 256 * 20;
+        int64_t range = i % 3 == 0 ? 256 * 100 : i % 3 == 1 ? 256 * 600 : 256 * 20;
         for (int j = 0; j < 2 * n; j++)
             c[j] = (int64_t)(fx_test_rand(&s) % (uint32_t)(2 * range)) - range;
         uint32_t tol = 8 + fx_test_rand(&s) % 200;
@@ -70,19 +70,19 @@ FX_TEST(bezier_flattening_keeps_endpoints_and_tolerance)
         FX_CHECK(p.xy[2 * p.n - 2] == c[2 * n - 2] && p.xy[2 * p.n - 1] == c[2 * n - 1]);
         /* every vertex is a curve point (up to fixed-point rounding) and
          * every curve point is within tol of the polyline */
-        long double worst = 0;
-        for (int k = 0; k <= 2000; k++) {
-            long double x, y, best = 1e30L;
-            eval(c, n, (long double)k / 2000, &x, &y);
+        double worst = 0;
+        for (int k = 0; k <= 400; k++) {
+            double x, y, best = 1e30;
+            eval(c, n, (double)k / 400, &x, &y);
             for (int q = 0; q + 1 < p.n; q++) {
-                long double d = dist_to_seg(x, y, &p.xy[2 * q], &p.xy[2 * q + 2]);
+                double d = dist_to_seg(x, y, &p.xy[2 * q], &p.xy[2 * q + 2]);
                 if (d < best)
                     best = d;
             }
             if (best > worst)
                 worst = best;
         }
-        FX_CHECK_MSG(worst <= tol + 1.0L, "degree %d tol %u: %Lf", n - 1, tol, worst);
+        FX_CHECK_MSG(worst <= tol + 1.0, "degree %d tol %u: %f", n - 1, tol, worst);
         free(p.xy);
     }
 }
