@@ -4,6 +4,7 @@
 #include "fixel/error.h"
 #include "fixel/line.h"
 #include "fixel/scene.h"
+#include "fixel/xform.h"
 #include "fx_internal.h"
 
 #define TRY(x)                   \
@@ -39,11 +40,21 @@ static raster_state *state(fx_scene *sc)
     if (!r)                                                       \
         return fx_scene_error(sc, "scene arena full (line style)")
 
+/* n points, mapped through the current transform (affine maps commute
+ * with Bézier and B-spline evaluation, so control points map exactly). */
+static void map_points(fx_scene *sc, int32_t *xy, int n)
+{
+    for (int i = 0; i < n; i++)
+        fx_ctx_map(&sc->ctx, xy[2 * i], xy[2 * i + 1], &xy[2 * i], &xy[2 * i + 1]);
+}
+
 static int ints(fx_scene *sc, int32_t *v, int n)
 {
     for (int i = 0; i < n; i++)
         TRY(fx_scene_arg_int(sc, &v[i]));
-    return fx_scene_end(sc);
+    TRY(fx_scene_end(sc));
+    map_points(sc, v, n / 2);
+    return 0;
 }
 
 static int cmd_dda(fx_scene *sc)
@@ -76,6 +87,7 @@ static int points(fx_scene *sc, int32_t *xy, int min, int max, int *n)
     TRY(fx_scene_end(sc));
     if (k < min)
         return fx_scene_error(sc, "needs at least %d points, got %d", min, k);
+    map_points(sc, xy, k);
     *n = k;
     return 0;
 }
