@@ -178,9 +178,9 @@ static int cmd_linewidth(fx_scene *sc)
 {
     int32_t w;
     TRY(fx_scene_arg_int(sc, &w));
-    TRY(fx_scene_end(sc));
     if (w < 1 || w > FX_LINE_MAX_WIDTH)
         return fx_scene_error(sc, "line width %d out of range (1..%d)", w, FX_LINE_MAX_WIDTH);
+    TRY(fx_scene_end(sc));
     STATE(r);
     r->st.width = w;
     return 0;
@@ -219,9 +219,9 @@ static int cmd_curvetol(fx_scene *sc)
 {
     int32_t t;
     TRY(fx_scene_arg_int(sc, &t));
-    TRY(fx_scene_end(sc));
     if (t < 1 || t > 65536)
         return fx_scene_error(sc, "tolerance %d out of range (1..65536, in 1/256 pixel)", t);
+    TRY(fx_scene_end(sc));
     STATE(r);
     r->tol = (uint32_t)t;
     return 0;
