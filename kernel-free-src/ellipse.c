@@ -126,7 +126,8 @@ static void ellipse_walk(const conic_sink *k, int64_t cx, int64_t cy, int64_t rx
     int64_t run0 = 0, runy = ry;
     if (trace) {
         fx_trace(c, "midpoint ellipse rx=%lld ry=%lld, region 1 (step x; keep y while "
-                 "p = rx^2(2y-1)^2 + 4ry^2x^2 - 4rx^2ry^2 < 0):",
+                 "p_k = 4[ry^2(x_k+1)^2 + rx^2(y_k-1/2)^2 - rx^2ry^2] < 0, the course's p1_k "
+                 "times 4, exact):",
                  (long long)rx, (long long)ry);
         fx_trace(c, "%-4s %-16s %s", "k", "p_k", "(x_k+1, y_k+1)");
     }
@@ -154,7 +155,7 @@ static void ellipse_walk(const conic_sink *k, int64_t cx, int64_t cy, int64_t rx
     /* Region 2: q = ry^2 (2x-1)^2 + 4 rx^2 Y^2 - 4 rx^2 ry^2 < 0 keeps x. */
     if (trace) {
         fx_trace(c, "region 2 (from (rx, 0) up to y=%lld; keep x while "
-                 "p = ry^2(2x-1)^2 + 4rx^2y^2 - 4rx^2ry^2 < 0):",
+                 "p_k = 4[ry^2(x-1/2)^2 + rx^2y^2 - rx^2ry^2] < 0):",
                  (long long)(ye - 1));
         fx_trace(c, "%-4s %-16s %s", "k", "p_k", "(x_k, y_k)");
     }

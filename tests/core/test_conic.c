@@ -602,3 +602,43 @@ FX_TEST(conic_aacircle_coverage)
     }
     free(g.mem);
 }
+
+/* The textbook ellipse example rx = 8, ry = 6: region 1 lights (0,6) (1,6)
+ * (2,6) (3,6) (4,5) (5,5) (6,4), region 2 (7,3) (8,2) (8,1) (8,0) in each
+ * quadrant, and --trace prints both regions' tables with those points. */
+FX_TEST(conic_ellipse_course_example_8_6)
+{
+    gray g = gray_make(40, 40);
+    fx_ctx c;
+    fx_ctx_init(&c, &g.s);
+    c.trace = tr_collect;
+    fx_ellipse(&c, 20, 20, 8, 6);
+    static const int q[][2] = {{0, 6}, {1, 6}, {2, 6}, {3, 6}, {4, 5}, {5, 5},
+                               {6, 4}, {7, 3}, {8, 2}, {8, 1}, {8, 0}};
+    uint8_t want[40 * 40] = {0};
+    for (int i = 0; i < 11; i++)
+        for (int sx = -1; sx <= 1; sx += 2)
+            for (int sy = -1; sy <= 1; sy += 2)
+                want[(20 + sy * q[i][1]) * 40 + 20 + sx * q[i][0]] = 1;
+    int bad = 0;
+    for (int i = 0; i < 40 * 40; i++)
+        bad += (g.mem[i] != 0) != want[i];
+    FX_CHECK_EQ(bad, 0);
+    /* trace: header, column titles, 6 region-1 rows, header, titles, 4 region-2 rows */
+    FX_CHECK_EQ(tr_n, 2 + 6 + 2 + 4);
+    int seen = 0;
+    for (int i = 0; i < tr_n; i++) {
+        int k, x, y;
+        long long p;
+        if (sscanf(tr_lines[i], "%d %lld (%d, %d)", &k, &p, &x, &y) == 4) {
+            int found = 0;
+            for (int j = 0; j < 11; j++)
+                found |= q[j][0] == x && q[j][1] == y;
+            FX_CHECK_MSG(found, "trace point (%d, %d)", x, y);
+            seen++;
+        }
+    }
+    FX_CHECK_EQ(seen, 10);
+    tr_free();
+    free(g.mem);
+}
