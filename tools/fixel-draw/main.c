@@ -4,7 +4,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef FX_DRAW_ZLIB /* set by tools/fixel-draw/zlib.mk when the target links zlib */
 #include <zlib.h>
+#endif
 
 #include "fixel/error.h"
 #include "fixel/memfb.h"
@@ -78,7 +80,15 @@ static int read_all(FILE *f, uint8_t **data, size_t *len)
 }
 
 /* gzip data (fonts as .psf.gz) is inflated here, on the tool side: the core
- * only ever sees plain bytes. Output is capped at 64 MiB. */
+ * only ever sees plain bytes. Output is capped at 64 MiB. Builds without
+ * zlib (bare cross sysroots) refuse gzip files instead. */
+#ifndef FX_DRAW_ZLIB
+static int gunzip(uint8_t **buf, size_t *len)
+{
+    (void)buf, (void)len;
+    return -FX_ENOTSUP;
+}
+#else
 static int gunzip(uint8_t **buf, size_t *len)
 {
     size_t cap = *len * 4 + 4096, n = 0;
@@ -119,6 +129,7 @@ static int gunzip(uint8_t **buf, size_t *len)
     *len = n;
     return 0;
 }
+#endif
 
 static int load_file(void *u, const char *path, const uint8_t **data, size_t *len)
 {
