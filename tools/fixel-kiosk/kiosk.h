@@ -1,0 +1,81 @@
+/* fixel-kiosk — the pure half: config and data-line parsers and the
+ * fixed-size model they fill. No I/O and no allocation here, so the unit
+ * tests and the fuzz target feed it memory buffers directly. */
+#ifndef FIXEL_KIOSK_H
+#define FIXEL_KIOSK_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define KIOSK_MAX_WIDGETS 32
+#define KIOSK_MAX_SOURCES 32
+#define KIOSK_NAME_MAX 32   /* source names, including the NUL */
+#define KIOSK_TEXT_MAX 64   /* labels, units, text values, including the NUL */
+#define KIOSK_HIST_MAX 256  /* ring buffer length per source */
+#define KIOSK_LINE_MAX 256  /* longer data lines are bad lines */
+
+typedef enum kiosk_type {
+    KIOSK_NUMBER, KIOSK_GAUGE, KIOSK_BAR, KIOSK_SPARK, KIOSK_TEXT, KIOSK_CLOCK
+} kiosk_type;
+
+typedef struct kiosk_widget {
+    kiosk_type type;
+    int source;                /* index into sources, -1 for the clock */
+    int col, row, w, h;        /* grid cells */
+    int decimals;              /* 0..3 */
+    int64_t min, max;          /* milli-units; min == max: automatic (spark) */
+    uint32_t color;            /* 0xAARRGGBB accent */
+    char label[KIOSK_TEXT_MAX];
+    char unit[KIOSK_TEXT_MAX];
+} kiosk_widget;
+
+typedef struct kiosk_source {
+    char name[KIOSK_NAME_MAX];
+    int64_t value;             /* milli-units */
+    int has_value;
+    char text[KIOSK_TEXT_MAX]; /* the raw value as received */
+    int64_t last_ms;           /* time of the last update */
+    int64_t hist[KIOSK_HIST_MAX];
+    uint32_t head, count;      /* ring buffer: next slot, valid entries */
+    uint32_t updates;
+} kiosk_source;
+
+typedef struct kiosk_config {
+    int cols, rows;
+    int width, height;         /* 0: the display's size */
+    int stale_ms;              /* a source silent this long is marked stale */
+    int history;               /* ring buffer entries shown (<= KIOSK_HIST_MAX) */
+    uint32_t bg, panel, fg;
+    char title[KIOSK_TEXT_MAX];
+    int nwidgets, nsources;
+    kiosk_widget widgets[KIOSK_MAX_WIDGETS];
+    kiosk_source sources[KIOSK_MAX_SOURCES];
+} kiosk_config;
+
+/* Parse a config in buf[0..len). On error returns -1 and writes "line N:
+ * reason" into err (size errsize); 0 on success. */
+int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, size_t errsize);
+
+/* Parse a decimal "[-+]digits[.digits]" of exactly len characters into
+ * milli-units (rounded half away from zero). Returns 0 or -1. */
+int kiosk_parse_milli(const char *s, size_t len, int64_t *out);
+
+typedef enum kiosk_line_result {
+    KIOSK_LINE_OK = 0,      /* a value was stored */
+    KIOSK_LINE_IGNORED = 1, /* blank, comment, or a name no widget shows */
+    KIOSK_LINE_BAD = -1     /* malformed: counted and shown, never fatal */
+} kiosk_line_result;
+
+/* One data line (no newline) "name=value" or "name,value" at time now_ms.
+ * Sources feeding number/gauge/bar/spark widgets need a number; text
+ * widgets take any printable value. Returns a kiosk_line_result; on OK
+ * *src is the source index updated. */
+int kiosk_data_line(kiosk_config *k, const char *line, size_t len, int64_t now_ms, int *src);
+
+/* History entry i of source s, 0 = oldest of the last n (n <= count). */
+int64_t kiosk_hist_at(const kiosk_source *s, uint32_t n, uint32_t i);
+
+/* Format milli-units with d decimals (rounded) into buf. */
+void kiosk_format_milli(char *buf, size_t size, int64_t v, int d);
+
+#endif

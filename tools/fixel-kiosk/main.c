@@ -1,0 +1,589 @@
+/* fixel-kiosk — a dashboard for wall and panel displays.
+ *
+ * A config file (see examples/kiosk-*.conf and docs/tools.md) lays widgets
+ * out on a grid; "name=value" lines on stdin, a named pipe or a growing file
+ * update them. Everything lives in fixed arrays (kiosk.h): a kiosk that runs
+ * for months holds the same memory as one that just started. Only widgets
+ * whose picture changed are redrawn and presented (damage rectangles).
+ */
+#include "kiosk.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "fixel/app.h"
+#include "fixel/circle.h"
+#include "fixel/draw.h"
+#include "fixel/fill.h"
+#include "fixel/fixed.h"
+#include "fixel/font.h"
+#include "fixel/line.h"
+#include "fixel/memfb.h"
+
+#define TITLE_H 22
+#define STATUS_H 14
+#define GAP 4
+#define DIM 0xFF8A94A3u
+#define STALE_FG 0xFF6B7280u
+#define AMBER 0xFFFFB300u
+#define BAD_RED 0xFFEF5350u
+
+typedef struct kiosk {
+    kiosk_config cfg;
+    fx_app *app;
+    int headless;
+    int64_t now_ms;
+    uint32_t lines, bad, ignored;
+    uint8_t dirty[KIOSK_MAX_WIDGETS];
+    uint8_t stale[KIOSK_MAX_WIDGETS];
+    int status_dirty, full;
+    int64_t clock_sec;
+    int fd;
+    char line[KIOSK_LINE_MAX + 1];
+    size_t linelen;
+    int overlong;
+    int frame_end; /* headless: an "@frame" line ended the frame */
+    int64_t frame_step;
+    int32_t W, H;
+    int always_full; /* --full: redraw everything each frame (tests check damage against it) */
+} kiosk;
+
+static int64_t mono_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (int64_t)ts.tv_sec * 1000 + ts.tv_nsec / 1000000;
+}
+
+/* ---- data ---- */
+
+static void mark_source(kiosk *k, int s)
+{
+    for (int i = 0; i < k->cfg.nwidgets; i++)
+        if (k->cfg.widgets[i].source == s) k->dirty[i] = 1;
+}
+
+static void end_line(kiosk *k)
+{
+    const char *l = k->line;
+    size_t n = k->linelen;
+    k->linelen = 0;
+    if (k->overlong) {
+        k->overlong = 0;
+        k->lines++;
+        k->bad++;
+        k->status_dirty = 1;
+        return;
+    }
+    /* "@frame [MS]": frame boundary of a scripted (headless) stream; live
+     * streams may carry it too and it is harmless there. */
+    if (n >= 6 && memcmp(l, "@frame", 6) == 0) {
+        int64_t ms = 1000;
+        if (n > 7) {
+            size_t a = 7;
+            while (a < n && l[a] == ' ') a++;
+            if (kiosk_parse_milli(l + a, n - a, &ms) == 0) ms /= 1000;
+            else ms = 1000;
+        }
+        k->frame_step = ms < 0 ? 0 : ms;
+        k->frame_end = 1;
+        return;
+    }
+    int s = -1;
+    int r = kiosk_data_line(&k->cfg, l, n, k->now_ms, &s);
+    if (r == KIOSK_LINE_IGNORED && (n == 0 || l[0] == '#')) return;
+    k->lines++;
+    k->status_dirty = 1;
+    if (r == KIOSK_LINE_BAD) k->bad++;
+    else if (r == KIOSK_LINE_IGNORED) k->ignored++;
+    else mark_source(k, s);
+}
+
+static void feed(kiosk *k, const char *buf, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        if (buf[i] == '\n') { end_line(k); continue; }
+        if (k->linelen < KIOSK_LINE_MAX) k->line[k->linelen++] = buf[i];
+        else k->overlong = 1;
+    }
+}
+
+/* Headless: read until an "@frame" line or the end of the stream. */
+static void feed_frame(kiosk *k)
+{
+    char c;
+    k->frame_end = 0;
+    k->frame_step = 1000;
+    while (!k->frame_end && k->fd >= 0) {
+        ssize_t r = read(k->fd, &c, 1);
+        if (r <= 0) {
+            if (k->linelen || k->overlong) end_line(k);
+            if (k->fd > 0) close(k->fd);
+            k->fd = -1;
+            break;
+        }
+        feed(k, &c, 1);
+    }
+}
+
+/* Live: whatever is there now; a regular file is followed as it grows. */
+static void feed_available(kiosk *k)
+{
+    char buf[4096];
+    for (int rounds = 0; rounds < 64 && k->fd >= 0; rounds++) {
+        ssize_t r = read(k->fd, buf, sizeof buf);
+        if (r > 0) { feed(k, buf, (size_t)r); continue; }
+        if (r < 0 && errno == EINTR) continue;
+        break;
+    }
+}
+
+static void update_stale(kiosk *k)
+{
+    int64_t sec = k->now_ms / 1000;
+    for (int i = 0; i < k->cfg.nwidgets; i++) {
+        const kiosk_widget *w = &k->cfg.widgets[i];
+        uint8_t st = 0;
+        if (w->source >= 0) {
+            const kiosk_source *s = &k->cfg.sources[w->source];
+            /* never heard from counts as stale too, once the grace time passed */
+            st = s->updates ? k->now_ms - s->last_ms > k->cfg.stale_ms : k->now_ms > k->cfg.stale_ms;
+        } else if (sec != k->clock_sec)
+            k->dirty[i] = 1;
+        if (st != k->stale[i]) { k->stale[i] = st; k->dirty[i] = 1; k->status_dirty = 1; }
+    }
+    k->clock_sec = sec;
+}
+
+/* ---- drawing ---- */
+
+static fx_rect widget_rect(const kiosk *k, const kiosk_widget *w)
+{
+    int32_t top = k->cfg.title[0] ? TITLE_H : 0;
+    int32_t gw = k->W, gh = k->H - top - STATUS_H;
+    fx_rect r;
+    r.x0 = w->col * gw / k->cfg.cols + GAP;
+    r.x1 = (w->col + w->w) * gw / k->cfg.cols - GAP / 2;
+    r.y0 = top + w->row * gh / k->cfg.rows + GAP;
+    r.y1 = top + (w->row + w->h) * gh / k->cfg.rows - GAP / 2;
+    return r;
+}
+
+static void text_at(fx_ctx *c, int32_t x, int32_t y, int32_t scale, fx_color col, const char *s)
+{
+    fx_text_style st = {0};
+    st.scale = scale;
+    fx_ctx t = *c;
+    t.text_style = &st;
+    fx_ctx_set_color(&t, col);
+    fx_text(&t, x, y, s);
+}
+
+static int32_t text_w(const char *s, int32_t scale)
+{
+    fx_text_style st = {0};
+    int64_t w, h;
+    st.scale = scale;
+    fx_text_extent(&st, s, &w, &h);
+    return (int32_t)w;
+}
+
+/* The largest scale (1..maxs) at which s fits w x h pixels. */
+static int32_t fit_scale(const char *s, int32_t w, int32_t h, int32_t maxs)
+{
+    int32_t sc = maxs;
+    while (sc > 1 && (text_w(s, sc) > w || 10 * sc > h)) sc--;
+    return sc;
+}
+
+static void fill(fx_ctx *c, fx_color col, int32_t x, int32_t y, int32_t w, int32_t h)
+{
+    fx_ctx t = *c;
+    fx_ctx_set_color(&t, col);
+    fx_fill_rect(&t, x, y, w, h);
+}
+
+static int64_t frac_permille(const kiosk_widget *w, int64_t v)
+{
+    if (w->max <= w->min) return 0;
+    if (v <= w->min) return 0;
+    if (v >= w->max) return 1000;
+    return (v - w->min) * 1000 / (w->max - w->min);
+}
+
+static void value_text(const kiosk *k, const kiosk_widget *w, char *buf, size_t size)
+{
+    const kiosk_source *s = &k->cfg.sources[w->source];
+    if (w->type == KIOSK_TEXT) snprintf(buf, size, "%s", s->updates ? s->text : "--");
+    else if (!s->has_value) snprintf(buf, size, "--");
+    else kiosk_format_milli(buf, size, s->value, w->decimals);
+}
+
+static void draw_gauge(kiosk *k, fx_ctx *c, const kiosk_widget *w, fx_rect r, fx_color acc, int stale)
+{
+    const kiosk_source *s = &k->cfg.sources[w->source];
+    int32_t rw = r.x1 - r.x0, rh = r.y1 - r.y0;
+    int32_t rad = (rw - 16) / 2, avail = rh - 18 - 22;
+    if (rad > avail * 10 / 17) rad = avail * 10 / 17; /* the 270 degree dial is ~1.7 r tall */
+    if (rad < 8) return;
+    int32_t cx = r.x0 + rw / 2, cy = r.y0 + 18 + rad;
+    int32_t thick = rad / 5 < 4 ? 4 : rad / 5;
+    fx_ctx t = *c;
+    fx_ctx_set_color(&t, 0xFF374151u);
+    fx_pie(&t, cx, cy, rad, fx_angle_from_deg(315), fx_angle_from_deg(225));
+    int64_t f = s->has_value ? frac_permille(w, s->value) : 0;
+    fx_angle a225 = fx_angle_from_deg(225);
+    fx_angle av = a225 - (fx_angle)((uint64_t)0xC0000000u * (uint64_t)f / 1000);
+    if (f > 0) {
+        fx_ctx_set_color(&t, acc);
+        fx_pie(&t, cx, cy, rad, av, a225);
+    }
+    fx_ctx_set_color(&t, k->cfg.panel);
+    fx_disc(&t, cx, cy, rad - thick);
+    if (s->has_value) {
+        int32_t nx = cx + (int32_t)(((int64_t)(rad - 2) * fx_cos(av)) >> 16);
+        int32_t ny = cy - (int32_t)(((int64_t)(rad - 2) * fx_sin(av)) >> 16);
+        fx_ctx_set_color(&t, stale ? STALE_FG : k->cfg.fg);
+        for (int d = -1; d <= 1; d++) {
+            fx_line(&t, cx + d, cy, nx + d, ny);
+            fx_line(&t, cx, cy + d, nx, ny + d);
+        }
+        fx_disc(&t, cx, cy, 3);
+    }
+    char v[48], line[96];
+    value_text(k, w, v, sizeof v);
+    snprintf(line, sizeof line, "%s%s%s", v, w->unit[0] ? " " : "", w->unit);
+    int32_t sc = fit_scale(line, rw - 12, r.y1 - (cy + rad / 2) - 4, 3);
+    text_at(c, cx - text_w(line, sc) / 2, r.y1 - 10 * sc - 6, sc, stale ? STALE_FG : k->cfg.fg, line);
+}
+
+static void draw_spark(kiosk *k, fx_ctx *c, const kiosk_widget *w, fx_rect r, fx_color acc, int stale)
+{
+    const kiosk_source *s = &k->cfg.sources[w->source];
+    uint32_t hist = (uint32_t)k->cfg.history, n = s->count < hist ? s->count : hist;
+    int32_t x0 = r.x0 + 6, x1 = r.x1 - 7, y0 = r.y0 + 20, y1 = r.y1 - 7;
+    char v[48], line[96];
+    value_text(k, w, v, sizeof v);
+    snprintf(line, sizeof line, "%s%s", v, w->unit);
+    text_at(c, r.x1 - 6 - text_w(line, 1), r.y0 + 5, 1, stale ? STALE_FG : k->cfg.fg, line);
+    if (x1 - x0 < 4 || y1 - y0 < 4) return;
+    fx_ctx t = *c;
+    fx_ctx_set_color(&t, 0xFF2A3441u);
+    fx_line(&t, x0, y1, x1, y1);
+    fx_line(&t, x0, (y0 + y1) / 2, x1, (y0 + y1) / 2);
+    fx_line(&t, x0, y0, x1, y0);
+    if (n == 0) return;
+    int64_t lo = w->min, hi = w->max;
+    if (lo >= hi) {
+        lo = hi = kiosk_hist_at(s, n, 0);
+        for (uint32_t i = 1; i < n; i++) {
+            int64_t h = kiosk_hist_at(s, n, i);
+            if (h < lo) lo = h;
+            if (h > hi) hi = h;
+        }
+        if (lo == hi) { lo -= 1000; hi += 1000; }
+    }
+    int32_t px = 0, py = 0;
+    fx_ctx_set_color(&t, stale ? STALE_FG : acc);
+    for (uint32_t i = 0; i < n; i++) {
+        int64_t h = kiosk_hist_at(s, n, i);
+        if (h < lo) h = lo;
+        if (h > hi) h = hi;
+        int32_t x = x0 + (int32_t)((int64_t)(i + hist - n) * (x1 - x0) / (hist - 1));
+        int32_t y = y1 - (int32_t)((h - lo) * (y1 - y0) / (hi - lo));
+        if (i) { fx_line(&t, px, py, x, y); fx_line(&t, px, py - 1, x, y - 1); }
+        px = x; py = y;
+    }
+    fx_disc(&t, px, py, 2);
+}
+
+static void draw_widget(kiosk *k, fx_ctx *base, int i)
+{
+    const kiosk_widget *w = &k->cfg.widgets[i];
+    fx_rect r = widget_rect(k, w);
+    fx_ctx c = *base;
+    fx_ctx_set_clip(&c, r);
+    int stale = k->stale[i];
+    fx_color acc = stale ? STALE_FG : w->color, fgc = stale ? STALE_FG : k->cfg.fg;
+    int32_t rw = r.x1 - r.x0, rh = r.y1 - r.y0;
+    fill(&c, k->cfg.panel, r.x0, r.y0, rw, rh);
+    fill(&c, acc, r.x0, r.y0, 3, rh);
+    text_at(&c, r.x0 + 8, r.y0 + 5, 1, DIM, w->label);
+    if (stale) {
+        const char *m = "STALE";
+        int32_t tw = text_w(m, 1);
+        fill(&c, AMBER, r.x1 - tw - 10, r.y0 + 3, tw + 6, 13);
+        text_at(&c, r.x1 - tw - 7, r.y0 + 5, 1, 0xFF111111u, m);
+    }
+    char v[48], buf[96];
+    switch (w->type) {
+    case KIOSK_NUMBER:
+    case KIOSK_TEXT: {
+        value_text(k, w, v, sizeof v);
+        int32_t us = 1, sc = fit_scale(v, rw - 16, rh - 24, w->type == KIOSK_TEXT ? 4 : 12);
+        int32_t uw = 0;
+        if (w->unit[0]) {
+            us = sc / 2 < 1 ? 1 : sc / 2;
+            /* shrink together until value and unit share the width */
+            while (sc > 1 && text_w(v, sc) + text_w(w->unit, us) + 4 > rw - 16) {
+                sc--;
+                us = sc / 2 < 1 ? 1 : sc / 2;
+            }
+            uw = text_w(w->unit, us) + 4;
+        }
+        int32_t tw = text_w(v, sc) + uw;
+        int32_t x = r.x0 + (rw - tw) / 2, y = r.y0 + 14 + (rh - 14 - 10 * sc) / 2;
+        text_at(&c, x, y, sc, fgc, v);
+        if (w->unit[0]) text_at(&c, x + tw - uw + 4, y + 10 * sc - 10 * us - sc, us, stale ? STALE_FG : DIM, w->unit);
+        break;
+    }
+    case KIOSK_GAUGE: draw_gauge(k, &c, w, r, acc, stale); break;
+    case KIOSK_BAR: {
+        const kiosk_source *s = &k->cfg.sources[w->source];
+        int32_t bh = rh / 4 < 8 ? 8 : rh / 4 > 28 ? 28 : rh / 4;
+        int32_t bx = r.x0 + 10, bw = rw - 20, by = r.y0 + 18 + (rh - 18 - bh - 14) / 2;
+        int64_t f = s->has_value ? frac_permille(w, s->value) : 0;
+        fill(&c, 0xFF374151u, bx, by, bw, bh);
+        fill(&c, acc, bx, by, (int32_t)(bw * f / 1000), bh);
+        value_text(k, w, v, sizeof v);
+        snprintf(buf, sizeof buf, "%s%s%s", v, w->unit[0] ? " " : "", w->unit);
+        int32_t sc = fit_scale(buf, bw, r.y1 - (by + bh) - 4, 2);
+        text_at(&c, bx, by + bh + 4, sc, fgc, buf);
+        kiosk_format_milli(v, sizeof v, w->max, w->decimals);
+        text_at(&c, bx + bw - text_w(v, 1), by + bh + 4, 1, DIM, v);
+        break;
+    }
+    case KIOSK_SPARK: draw_spark(k, &c, w, r, acc, stale); break;
+    case KIOSK_CLOCK: {
+        int64_t sec;
+        if (k->headless) sec = k->now_ms / 1000; /* virtual time: reproducible frames */
+        else {
+            time_t now = time(NULL);
+            struct tm tmv;
+            localtime_r(&now, &tmv);
+            sec = tmv.tm_hour * 3600 + tmv.tm_min * 60 + tmv.tm_sec;
+        }
+        snprintf(buf, sizeof buf, "%02d:%02d:%02d", (int)(sec / 3600 % 24), (int)(sec / 60 % 60), (int)(sec % 60));
+        int32_t sc = fit_scale(buf, rw - 16, rh - 24, 8);
+        text_at(&c, r.x0 + (rw - text_w(buf, sc)) / 2, r.y0 + 14 + (rh - 14 - 10 * sc) / 2, sc, w->color, buf);
+        break;
+    }
+    }
+}
+
+static fx_rect status_rect(const kiosk *k) { return (fx_rect){0, k->H - STATUS_H, k->W, k->H}; }
+
+static void draw_status(kiosk *k, fx_ctx *base)
+{
+    fx_rect r = status_rect(k);
+    fx_ctx c = *base;
+    fx_ctx_set_clip(&c, r);
+    fill(&c, k->cfg.bg, r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
+    int nstale = 0;
+    for (int i = 0; i < k->cfg.nwidgets; i++) nstale += k->stale[i];
+    char buf[128];
+    snprintf(buf, sizeof buf, "lines %u", k->lines);
+    text_at(&c, 6, r.y0 + 2, 1, DIM, buf);
+    int32_t x = 6 + text_w(buf, 1) + 12;
+    snprintf(buf, sizeof buf, "bad %u", k->bad);
+    text_at(&c, x, r.y0 + 2, 1, k->bad ? BAD_RED : DIM, buf);
+    x += text_w(buf, 1) + 12;
+    snprintf(buf, sizeof buf, "stale %d", nstale);
+    text_at(&c, x, r.y0 + 2, 1, nstale ? AMBER : DIM, buf);
+}
+
+/* Draw what changed and present exactly those rectangles. */
+static void render(kiosk *k)
+{
+    fx_surface s = fx_app_surface(k->app);
+    fx_ctx c;
+    fx_rect dmg[KIOSK_MAX_WIDGETS + 2];
+    int n = 0;
+    fx_ctx_init(&c, &s);
+    if (k->full || k->always_full) {
+        fx_surface_clear(&s, k->cfg.bg);
+        if (k->cfg.title[0]) text_at(&c, 8, 4, 2, k->cfg.fg, k->cfg.title);
+        for (int i = 0; i < k->cfg.nwidgets; i++) k->dirty[i] = 1;
+        k->status_dirty = 1;
+    }
+    for (int i = 0; i < k->cfg.nwidgets; i++)
+        if (k->dirty[i]) {
+            draw_widget(k, &c, i);
+            k->dirty[i] = 0;
+            dmg[n++] = widget_rect(k, &k->cfg.widgets[i]);
+        }
+    if (k->status_dirty) {
+        draw_status(k, &c);
+        k->status_dirty = 0;
+        dmg[n++] = status_rect(k);
+    }
+    if (k->full || k->always_full) fx_app_present(k->app, NULL, 0);
+    else if (n) fx_app_present(k->app, dmg, n);
+    k->full = 0;
+}
+
+/* ---- live mode ---- */
+
+static void on_display(void *user) { render(user); }
+
+static void on_key(void *user, unsigned char key, int x, int y)
+{
+    kiosk *k = user;
+    (void)x; (void)y;
+    if (key == 'q' || key == 27) fx_app_quit(k->app);
+}
+
+static void on_reshape(void *user, int w, int h)
+{
+    kiosk *k = user;
+    k->W = w;
+    k->H = h;
+    k->full = 1;
+}
+
+static int any_dirty(const kiosk *k)
+{
+    if (k->full || k->status_dirty) return 1;
+    for (int i = 0; i < k->cfg.nwidgets; i++)
+        if (k->dirty[i]) return 1;
+    return 0;
+}
+
+static kiosk *g_kiosk; /* the timer callback's only way back to the state */
+
+static void on_tick(void *user, int value)
+{
+    kiosk *k = g_kiosk;
+    (void)user; (void)value;
+    k->now_ms = mono_ms();
+    feed_available(k);
+    update_stale(k);
+    if (any_dirty(k)) fx_app_post_redisplay(k->app);
+    fx_app_timer(k->app, 100, on_tick, 0);
+}
+
+/* ---- main ---- */
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: fixel-kiosk [options] CONFIG\n"
+            "A dashboard: widgets laid out by CONFIG, fed by \"name=value\" (or \"name,value\") lines.\n"
+            "  --data FILE|-     data source: a file (followed as it grows), a named pipe, or - for\n"
+            "                    stdin (default -)\n"
+            "  --headless        draw into memory instead of a display (tests, previews)\n"
+            "  --frames N        headless: frames to draw (default 1); each frame reads the data up\n"
+            "                    to the next \"@frame [MS]\" line, then the clock advances MS (1000)\n"
+            "  --out DIR         headless: write DIR/frame-NNNN.png for every frame\n"
+            "  --last            headless: write only the last frame (DIR/last.png)\n"
+            "  --full            redraw every widget each frame (default: only changed ones)\n"
+            "  --size WxH        headless surface size (default: the config's size, else 480x320)\n"
+            "  --help            this text\n"
+            "Bad data lines are counted on screen, never fatal. Keys: q or Esc quits.\n"
+            "Config reference: docs/tools.md; examples: examples/kiosk-*.conf\n");
+}
+
+int main(int argc, char **argv)
+{
+    static kiosk K; /* static: the model is large and constant-size */
+    kiosk *k = &K;
+    const char *cfgpath = NULL, *data = "-", *out = NULL;
+    int frames = 1, last_only = 0, sw = 0, sh = 0;
+    k->fd = -1;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { usage(stdout); return 0; }
+        else if (!strcmp(a, "--headless")) k->headless = 1;
+        else if (!strcmp(a, "--last")) last_only = 1;
+        else if (!strcmp(a, "--full")) k->always_full = 1;
+        else if (!strcmp(a, "--data") && i + 1 < argc) data = argv[++i];
+        else if (!strcmp(a, "--out") && i + 1 < argc) out = argv[++i];
+        else if (!strcmp(a, "--frames") && i + 1 < argc) frames = atoi(argv[++i]);
+        else if (!strcmp(a, "--size") && i + 1 < argc) {
+            if (sscanf(argv[++i], "%dx%d", &sw, &sh) != 2 || sw < 16 || sh < 16 || sw > 8192 || sh > 8192) {
+                fprintf(stderr, "fixel-kiosk: --size wants WxH\n");
+                return 2;
+            }
+        } else if (a[0] == '-' && a[1]) { fprintf(stderr, "fixel-kiosk: unknown option %s\n", a); usage(stderr); return 2; }
+        else cfgpath = a;
+    }
+    if (!cfgpath) { usage(stderr); return 2; }
+    if (frames < 1) frames = 1;
+
+    static char cbuf[65536];
+    FILE *cf = fopen(cfgpath, "rb");
+    if (!cf) { fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, strerror(errno)); return 1; }
+    size_t clen = fread(cbuf, 1, sizeof cbuf, cf);
+    int toolong = !feof(cf);
+    fclose(cf);
+    if (toolong) { fprintf(stderr, "fixel-kiosk: %s: larger than %zu bytes\n", cfgpath, sizeof cbuf); return 1; }
+    char err[160];
+    if (kiosk_config_parse(&k->cfg, cbuf, clen, err, sizeof err) < 0) {
+        fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, err);
+        return 1;
+    }
+
+    if (!strcmp(data, "-")) k->fd = 0;
+    else if ((k->fd = open(data, O_RDONLY | O_NONBLOCK | O_CLOEXEC)) < 0) {
+        fprintf(stderr, "fixel-kiosk: %s: %s\n", data, strerror(errno));
+        return 1;
+    }
+
+    fx_app_options o;
+    fx_app_options_init(&o);
+    if (k->headless) {
+        o.display.backend = FX_BACKEND_MEMORY;
+        o.display.memory_w = sw ? sw : k->cfg.width ? k->cfg.width : 480;
+        o.display.memory_h = sh ? sh : k->cfg.height ? k->cfg.height : 320;
+        o.input = 0;
+        /* blocking reads: a scripted stream is consumed frame by frame */
+        fcntl(k->fd, F_SETFL, fcntl(k->fd, F_GETFL) & ~O_NONBLOCK);
+    } else
+        fcntl(k->fd, F_SETFL, fcntl(k->fd, F_GETFL) | O_NONBLOCK);
+    if (fx_app_open(&k->app, &o) < 0) return 1;
+    fx_app_size(k->app, &k->W, &k->H);
+    k->full = 1;
+
+    int rc = 0;
+    if (k->headless) {
+        k->now_ms = 0;
+        for (int f = 0; f < frames; f++) {
+            feed_frame(k);
+            update_stale(k);
+            render(k);
+            if (out && (!last_only || f == frames - 1)) {
+                char path[4096];
+                if (last_only) snprintf(path, sizeof path, "%s/last.png", out);
+                else snprintf(path, sizeof path, "%s/frame-%04d.png", out, f);
+                fx_surface s = fx_app_surface(k->app);
+                if (fx_write_image(path, &s) < 0) {
+                    fprintf(stderr, "fixel-kiosk: cannot write %s\n", path);
+                    rc = 1;
+                    break;
+                }
+            }
+            k->now_ms += k->frame_step;
+        }
+        printf("fixel-kiosk: %d frames, %u lines, %u bad, %u ignored\n", frames, k->lines, k->bad, k->ignored);
+    } else {
+        fx_callbacks cb = {.display = on_display, .keyboard = on_key, .reshape = on_reshape};
+        g_kiosk = k;
+        k->now_ms = mono_ms();
+        /* stale timing starts now, not at the monotonic clock's origin */
+        for (int i = 0; i < k->cfg.nsources; i++) k->cfg.sources[i].last_ms = k->now_ms;
+        k->clock_sec = -1;
+        fx_app_set_callbacks(k->app, &cb, k);
+        fx_app_post_redisplay(k->app);
+        fx_app_timer(k->app, 100, on_tick, 0);
+        rc = fx_app_main_loop(k->app) < 0;
+    }
+    fx_app_close(k->app);
+    if (k->fd > 0) close(k->fd);
+    return rc;
+}
