@@ -4,22 +4,30 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
+#include <unistd.h>
 #ifdef FX_DRAW_ZLIB /* set by tools/fixel-draw/zlib.mk when the target links zlib */
 #include <zlib.h>
 #endif
 
+#include "fixel/app.h"
 #include "fixel/error.h"
 #include "fixel/memfb.h"
 #include "fixel/scene.h"
 
 static const char usage[] =
     "usage: fixel-draw [-o OUT.png|OUT.ppm] [-s WxH] [-f FORMAT] [--trace] [SCRIPT|-]\n"
-    "Render a fixel scene script headless into a PNG or PPM file.\n"
+    "       fixel-draw --display [--hold] [SCRIPT|-]\n"
+    "Render a fixel scene script headless into a PNG or PPM file, or onto the display.\n"
     "  -o FILE      output image (default out.png; .ppm writes binary PPM)\n"
     "  -s WxH       surface size, overriding the script's 'size'\n"
     "  -f FORMAT    pixel format, overriding the script's 'format'\n"
     "  --trace      print each algorithm's steps (decision tables) on stdout\n"
     "  --commands   list every script command and exit\n"
+    "  --display    show the result on the display (DRM, fbdev) instead of writing a file;\n"
+    "               with the script on stdin ('-') lines run as they arrive and a line\n"
+    "               'present' shows the frame so far (streaming)\n"
+    "  --hold       with --display: keep showing the last frame until q, Esc or a signal\n"
     "  -h, --help   this text\n"
     "The script is read from SCRIPT, or from standard input with '-' or no argument.\n";
 
@@ -164,6 +172,94 @@ static void trace_line(void *u, const char *line)
     puts(line);
 }
 
+/* ---- --display: the rendered surface goes to the display through the app API ---- */
+static fx_app *g_app;
+static const fx_surface *g_shown;
+
+static void show(const fx_surface *s)
+{
+    if (!g_app) {
+        fx_app_options o;
+        fx_app_options_init(&o);
+        o.display.memory_w = s->w;
+        o.display.memory_h = s->h;
+        if (fx_app_open(&g_app, &o) < 0) {
+            g_app = NULL;
+            return;
+        }
+    }
+    fx_surface d = fx_app_surface(g_app);
+    /* a script smaller than the screen sits top-left on black */
+    if (d.w > s->w || d.h > s->h) fx_surface_clear(&d, 0xFF000000u);
+    fx_blit(&d, 0, 0, s);
+    fx_app_present(g_app, NULL, 0);
+    g_shown = s;
+}
+
+static void hold_display(void *u) { (void)u; if (g_shown) show(g_shown); }
+static void hold_key(void *u, unsigned char k, int x, int y)
+{
+    (void)u; (void)x; (void)y;
+    if (k == 'q' || k == 27) fx_app_quit(g_app);
+}
+
+/* Per-line progress on stderr for long renders, only on a terminal and only
+ * once a script has run for a while, so pipes and tests stay quiet. */
+static long long now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (long long)t.tv_sec * 1000 + t.tv_nsec / 1000000;
+}
+
+static int run_lines(fx_scene *sc, const char *text, size_t len, const host *H, int display)
+{
+    int tty = isatty(2), lines = 0, lineno = 1, shown = 0;
+    long long t0 = now_ms(), last = t0;
+    for (size_t i = 0; i < len; i++) lines += text[i] == '\n';
+    for (size_t i = 0; i < len; lineno++) {
+        size_t e = i;
+        while (e < len && text[e] != '\n') e++;
+        size_t n = e - i;
+        while (n && (text[i + n - 1] == '\r' || text[i + n - 1] == ' ')) n--;
+        if (display && n == 7 && !memcmp(text + i, "present", 7)) {
+            if (fx_scene_surface(sc) < 0) return -1;
+            show(&H->fb.surf);
+        } else if (fx_scene_exec_line(sc, text + i, e - i, lineno) < 0)
+            return -1;
+        i = e + 1;
+        long long t = now_ms();
+        if (tty && t - t0 > 500 && t - last > 100) {
+            fprintf(stderr, "\rfixel-draw: line %d/%d (%3d%%) %llds", lineno, lines,
+                    lines ? lineno * 100 / lines : 100, (t - t0) / 1000);
+            last = t;
+            shown = 1;
+        }
+    }
+    if (shown) fprintf(stderr, "\r\033[K");
+    return fx_scene_surface(sc);
+}
+
+/* Streaming: each stdin line runs as it arrives; "present" shows the frame. */
+static int run_stream(fx_scene *sc, const host *H)
+{
+    char *line = NULL;
+    size_t cap = 0;
+    ssize_t n;
+    int lineno = 1, r = 0;
+    while ((n = getline(&line, &cap, stdin)) >= 0 && r >= 0) {
+        while (n && (line[n - 1] == '\n' || line[n - 1] == '\r' || line[n - 1] == ' ')) n--;
+        if (n == 7 && !memcmp(line, "present", 7)) {
+            r = fx_scene_surface(sc);
+            if (r >= 0) show(&H->fb.surf);
+        } else
+            r = fx_scene_exec_line(sc, line, (size_t)n, lineno);
+        lineno++;
+    }
+    free(line);
+    return r < 0 ? r : fx_scene_surface(sc);
+}
+
 static void list_commands(void)
 {
     for (int t = 0; fx_scene_tables[t]; t++)
@@ -174,7 +270,7 @@ static void list_commands(void)
 int main(int argc, char **argv)
 {
     const char *out = "out.png", *script = "-";
-    int trace = 0, w = 0, h = 0;
+    int trace = 0, w = 0, h = 0, display = 0, hold = 0;
     fx_format fmt = FX_FMT_COUNT;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -184,6 +280,10 @@ int main(int argc, char **argv)
         } else if (!strcmp(a, "--commands")) {
             list_commands();
             return 0;
+        } else if (!strcmp(a, "--display")) {
+            display = 1;
+        } else if (!strcmp(a, "--hold")) {
+            hold = 1;
         } else if (!strcmp(a, "--trace")) {
             trace = 1;
         } else if (!strcmp(a, "-o") && i + 1 < argc) {
@@ -209,15 +309,16 @@ int main(int argc, char **argv)
         }
     }
 
-    FILE *in = strcmp(script, "-") ? fopen(script, "rb") : stdin;
-    if (!in) {
+    int streaming = display && !strcmp(script, "-");
+    FILE *in = streaming ? NULL : strcmp(script, "-") ? fopen(script, "rb") : stdin;
+    if (!in && !streaming) {
         fprintf(stderr, "fixel-draw: cannot open %s: %s\n", script, strerror(errno));
         return 1;
     }
-    uint8_t *text;
-    size_t len;
-    int r = read_all(in, &text, &len);
-    if (in != stdin)
+    uint8_t *text = NULL;
+    size_t len = 0;
+    int r = streaming ? 0 : read_all(in, &text, &len);
+    if (in && in != stdin)
         fclose(in);
     if (r < 0) {
         fprintf(stderr, "fixel-draw: cannot read %s: %s\n", script, fx_strerror(r));
@@ -239,12 +340,21 @@ int main(int argc, char **argv)
         fx_scene_fix_size(&sc, w, h);
     if (fmt != FX_FMT_COUNT)
         fx_scene_fix_format(&sc, fmt);
-    r = fx_scene_run(&sc, (const char *)text, len);
+    r = streaming ? run_stream(&sc, &H) : run_lines(&sc, (const char *)text, len, &H, display);
     int status = 0;
     if (r < 0) {
         fprintf(stderr, "%s:%d:%d: %s\n", strcmp(script, "-") ? script : "<stdin>", sc.err_line,
                 sc.err_col, sc.err);
         status = 1;
+    } else if (display) {
+        show(&H.fb.surf);
+        if (!g_app) {
+            status = 3;
+        } else if (hold) {
+            fx_callbacks cb = {.display = hold_display, .keyboard = hold_key};
+            fx_app_set_callbacks(g_app, &cb, NULL);
+            fx_app_main_loop(g_app);
+        }
     } else {
         fflush(stdout);
         r = fx_write_image(out, &H.fb.surf);
@@ -253,6 +363,8 @@ int main(int argc, char **argv)
             status = 3;
         }
     }
+    if (g_app)
+        fx_app_close(g_app);
     if (H.have_fb)
         fx_memfb_destroy(&H.fb);
     while (H.files) {

@@ -1,0 +1,292 @@
+/* fixel-info — what this machine offers fixel: DRM cards, fbdev devices,
+ * input devices (classified as fixel classifies them), GPIO chips, and the
+ * display fixel would open. Missing hardware is a "none found" line, never
+ * an error: the tool is for finding out why a board shows nothing. */
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/ioctl.h>
+#include <unistd.h>
+#include <linux/fb.h>
+
+#include "fixel/display.h"
+#include "fixel/input.h"
+#include "../../boards/linux/display_int.h"
+
+#ifdef FX_INFO_HAVE_OPT
+#include <gpiod.h>
+#include <libevdev/libevdev.h>
+#include <xf86drm.h>
+#include <xf86drmMode.h>
+#endif
+
+/* Sorted device nodes of dir whose names start with prefix. */
+static int list_nodes(const char *dir, const char *prefix, char names[][64], int max)
+{
+    DIR *d = opendir(dir);
+    int n = 0;
+    if (!d) return 0;
+    struct dirent *e;
+    while ((e = readdir(d)) && n < max)
+        if (!strncmp(e->d_name, prefix, strlen(prefix)) && strlen(e->d_name) < 64)
+            snprintf(names[n++], 64, "%s", e->d_name);
+    closedir(d);
+    /* natural order: card0 < card1 < card10 */
+    for (int i = 1; i < n; i++)
+        for (int j = i; j > 0; j--) {
+            size_t a = strlen(names[j - 1]), b = strlen(names[j]);
+            if (a > b || (a == b && strcmp(names[j - 1], names[j]) > 0)) {
+                char t[64];
+                memcpy(t, names[j], 64);
+                memcpy(names[j], names[j - 1], 64);
+                memcpy(names[j - 1], t, 64);
+            } else break;
+        }
+    return n;
+}
+
+static void fourcc(uint32_t f, char out[5])
+{
+    for (int i = 0; i < 4; i++) {
+        char c = (char)(f >> (8 * i));
+        out[i] = c >= 32 && c < 127 ? c : '?';
+    }
+    out[4] = 0;
+}
+
+static void drm_section(void)
+{
+    char names[32][64];
+    printf("DRM cards (/dev/dri):\n");
+    int n = list_nodes("/dev/dri", "card", names, 32);
+    if (n == 0) { printf("  none found\n"); return; }
+#ifdef FX_INFO_HAVE_OPT
+    for (int i = 0; i < n; i++) {
+        char path[128];
+        snprintf(path, sizeof path, "/dev/dri/%.63s", names[i]);
+        int fd = open(path, O_RDWR | O_CLOEXEC);
+        if (fd < 0) {
+            printf("  %s: cannot open (%s)%s\n", path, strerror(errno),
+                   errno == EACCES ? " - add the user to group video" : "");
+            continue;
+        }
+        drmVersionPtr v = drmGetVersion(fd);
+        printf("  %s: driver %s (%s)\n", path, v ? v->name : "?", v ? v->desc : "?");
+        if (v) drmFreeVersion(v);
+        uint64_t dumb = 0;
+        drmGetCap(fd, DRM_CAP_DUMB_BUFFER, &dumb);
+        printf("    dumb buffers: %s\n", dumb ? "yes" : "no (fixel cannot draw here)");
+        drmSetClientCap(fd, DRM_CLIENT_CAP_UNIVERSAL_PLANES, 1);
+        drmModeResPtr r = drmModeGetResources(fd);
+        if (!r) { printf("    no KMS resources (a render-only GPU?)\n"); close(fd); continue; }
+        for (int c = 0; c < r->count_connectors; c++) {
+            drmModeConnectorPtr con = drmModeGetConnector(fd, r->connectors[c]);
+            if (!con) continue;
+            const char *st = con->connection == DRM_MODE_CONNECTED ? "connected"
+                           : con->connection == DRM_MODE_DISCONNECTED ? "disconnected" : "unknown";
+            printf("    connector %u %s-%u: %s, %d modes\n", con->connector_id,
+                   drmModeGetConnectorTypeName(con->connector_type) ? drmModeGetConnectorTypeName(con->connector_type) : "?",
+                   con->connector_type_id, st, con->count_modes);
+            for (int m = 0; m < con->count_modes && m < 12; m++)
+                printf("      %s %ux%u@%u%s\n", con->modes[m].name, con->modes[m].hdisplay, con->modes[m].vdisplay,
+                       con->modes[m].vrefresh, con->modes[m].type & DRM_MODE_TYPE_PREFERRED ? " preferred" : "");
+            if (con->count_modes > 12) printf("      ... %d more\n", con->count_modes - 12);
+            drmModeFreeConnector(con);
+        }
+        for (int c = 0; c < r->count_crtcs; c++) {
+            drmModeCrtcPtr cr = drmModeGetCrtc(fd, r->crtcs[c]);
+            if (!cr) continue;
+            if (cr->mode_valid) printf("    crtc %u: %ux%u, fb %u\n", cr->crtc_id, cr->mode.hdisplay, cr->mode.vdisplay, cr->buffer_id);
+            else printf("    crtc %u: off\n", cr->crtc_id);
+            drmModeFreeCrtc(cr);
+        }
+        drmModePlaneResPtr pr = drmModeGetPlaneResources(fd);
+        for (uint32_t p = 0; pr && p < pr->count_planes; p++) {
+            drmModePlanePtr pl = drmModeGetPlane(fd, pr->planes[p]);
+            if (!pl) continue;
+            printf("    plane %u: crtcs 0x%x, formats", pl->plane_id, pl->possible_crtcs);
+            for (uint32_t f = 0; f < pl->count_formats; f++) {
+                char cc[5];
+                fourcc(pl->formats[f], cc);
+                printf(" %s", cc);
+            }
+            printf("\n");
+            drmModeFreePlane(pl);
+        }
+        if (pr) drmModeFreePlaneResources(pr);
+        drmModeFreeResources(r);
+        close(fd);
+    }
+#else
+    for (int i = 0; i < n; i++) printf("  /dev/dri/%s (built without libdrm: no details)\n", names[i]);
+#endif
+}
+
+static void fbdev_section(void)
+{
+    char names[32][64];
+    printf("fbdev devices (/dev/fb*):\n");
+    int n = list_nodes("/dev", "fb", names, 32), shown = 0;
+    for (int i = 0; i < n; i++) {
+        char path[128];
+        if (names[i][2] < '0' || names[i][2] > '9') continue;
+        snprintf(path, sizeof path, "/dev/%.63s", names[i]);
+        shown++;
+        int fd = open(path, O_RDONLY | O_CLOEXEC);
+        if (fd < 0) {
+            printf("  %s: cannot open (%s)%s\n", path, strerror(errno), errno == EACCES ? " - add the user to group video" : "");
+            continue;
+        }
+        struct fb_var_screeninfo v;
+        struct fb_fix_screeninfo f;
+        if (ioctl(fd, FBIOGET_VSCREENINFO, &v) < 0 || ioctl(fd, FBIOGET_FSCREENINFO, &f) < 0) {
+            printf("  %s: not a framebuffer (%s)\n", path, strerror(errno));
+            close(fd);
+            continue;
+        }
+        fx_fb_bitfields b = {v.bits_per_pixel, v.grayscale, v.red.offset, v.red.length, v.green.offset,
+                             v.green.length, v.blue.offset, v.blue.length, v.transp.offset, v.transp.length,
+                             f.visual == FB_VISUAL_MONO01};
+        fx_format fmt = fx_fb_format_from_bitfields(&b);
+        const fx_format_info *fi = fmt < FX_FMT_COUNT ? fx_format_get(fmt) : NULL;
+        printf("  %s: %s, %ux%u (virtual %ux%u), %u bpp, stride %u, r%u:%u g%u:%u b%u:%u a%u:%u -> %s\n", path,
+               f.id, v.xres, v.yres, v.xres_virtual, v.yres_virtual, v.bits_per_pixel, f.line_length, v.red.offset,
+               v.red.length, v.green.offset, v.green.length, v.blue.offset, v.blue.length, v.transp.offset,
+               v.transp.length, fi ? fi->name : "no fixel format");
+        close(fd);
+    }
+    if (!shown) printf("  none found\n");
+}
+
+static void input_section(void)
+{
+    char names[64][64];
+    printf("input devices (/dev/input):\n");
+    int n = list_nodes("/dev/input", "event", names, 64);
+    if (n == 0) { printf("  none found\n"); return; }
+#ifdef FX_INFO_HAVE_OPT
+    for (int i = 0; i < n; i++) {
+        char path[128];
+        snprintf(path, sizeof path, "/dev/input/%.63s", names[i]);
+        int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+        struct libevdev *d = NULL;
+        if (fd < 0 || libevdev_new_from_fd(fd, &d) < 0) {
+            printf("  %s: cannot open (%s)%s\n", path, strerror(errno), errno == EACCES ? " - add the user to group input" : "");
+            if (fd >= 0) close(fd);
+            continue;
+        }
+        /* the same tests as boards/linux/evdev.c classify() */
+        unsigned cls = 0;
+        if (libevdev_has_event_code(d, EV_KEY, KEY_A) || libevdev_has_event_code(d, EV_KEY, KEY_ENTER) ||
+            libevdev_has_event_code(d, EV_KEY, KEY_UP))
+            cls |= FX_DEV_KEYBOARD;
+        if (libevdev_has_event_code(d, EV_REL, REL_X) && libevdev_has_event_code(d, EV_REL, REL_Y)) cls |= FX_DEV_MOUSE;
+        int direct = libevdev_has_property(d, INPUT_PROP_DIRECT);
+        if (libevdev_has_event_code(d, EV_ABS, ABS_X) && libevdev_has_event_code(d, EV_ABS, ABS_Y)) {
+            if (libevdev_has_event_code(d, EV_KEY, BTN_TOOL_PEN)) cls |= FX_DEV_TABLET;
+            else if (direct || libevdev_has_event_code(d, EV_KEY, BTN_TOUCH)) cls |= FX_DEV_TOUCH;
+            else cls |= FX_DEV_TABLET;
+        }
+        if (libevdev_has_event_code(d, EV_ABS, ABS_MT_SLOT) && libevdev_has_event_code(d, EV_ABS, ABS_MT_POSITION_X))
+            cls |= FX_DEV_MT | (direct ? FX_DEV_TOUCH : 0u);
+        printf("  %s: \"%s\":%s%s%s%s%s%s\n", path, libevdev_get_name(d), cls & FX_DEV_KEYBOARD ? " keyboard" : "",
+               cls & FX_DEV_MOUSE ? " mouse" : "", cls & FX_DEV_TOUCH ? " touchscreen" : "",
+               cls & FX_DEV_MT ? " multitouch" : "", cls & FX_DEV_TABLET ? " tablet" : "",
+               cls ? "" : " ignored by fixel");
+        libevdev_free(d);
+        close(fd);
+    }
+#else
+    for (int i = 0; i < n; i++) printf("  /dev/input/%s (built without libevdev: no details)\n", names[i]);
+#endif
+}
+
+static void gpio_section(void)
+{
+    printf("GPIO chips:\n");
+#ifdef FX_INFO_HAVE_OPT
+    char names[32][64];
+    int n = list_nodes("/dev", "gpiochip", names, 32);
+    if (n == 0) { printf("  none found\n"); return; }
+    for (int i = 0; i < n; i++) {
+        struct gpiod_chip *c = gpiod_chip_open_by_name(names[i]);
+        if (!c) {
+            printf("  /dev/%s: cannot open (%s)%s\n", names[i], strerror(errno), errno == EACCES ? " - add the user to group gpio" : "");
+            continue;
+        }
+        unsigned nl = gpiod_chip_num_lines(c);
+        printf("  /dev/%s: %s, %u lines\n", gpiod_chip_name(c), gpiod_chip_label(c), nl);
+        for (unsigned l = 0; l < nl; l++) {
+            struct gpiod_line *line = gpiod_chip_get_line(c, l);
+            if (!line) continue;
+            const char *nm = gpiod_line_name(line), *cons = gpiod_line_consumer(line);
+            printf("    %3u %-20s %s%s%s%s\n", l, nm ? nm : "-",
+                   gpiod_line_direction(line) == GPIOD_LINE_DIRECTION_OUTPUT ? "output" : "input",
+                   gpiod_line_active_state(line) == GPIOD_LINE_ACTIVE_STATE_LOW ? " active-low" : "",
+                   gpiod_line_is_used(line) ? " used by " : "", gpiod_line_is_used(line) && cons ? cons : "");
+        }
+        gpiod_chip_close(c);
+    }
+#else
+    printf("  (built without libgpiod)\n");
+#endif
+}
+
+static void choice_section(void)
+{
+    printf("fixel's choice (FX_BACKEND_AUTO: FIXEL_BACKEND, else DRM, fbdev, memory):\n");
+    const char *env[] = {"FIXEL_BACKEND", "FIXEL_DRM_DEVICE", "FIXEL_FB_DEVICE", "FIXEL_CONNECTOR", "FIXEL_MODE",
+                         "FIXEL_ROTATION", "FIXEL_BUTTONS"};
+    for (size_t i = 0; i < sizeof env / sizeof env[0]; i++)
+        if (getenv(env[i])) printf("  %s=%s\n", env[i], getenv(env[i]));
+    fx_display_options o;
+    fx_display_options_init(&o);
+    o.console = 0; /* only looking: leave the VT and its keyboard alone */
+    o.signals = 0;
+    fx_display *d = NULL;
+    fflush(stdout);
+    if (fx_display_open(&d, &o) < 0) {
+        printf("  nothing opened (the reasons are logged above on stderr)\n");
+        return;
+    }
+    fx_display_info in;
+    fx_display_get_info(d, &in);
+    const fx_format_info *fi = fx_format_get(in.format);
+    printf("  backend %s, device \"%s\"%s%s, %dx%d", fx_backend_name(in.backend),
+           in.backend == FX_BACKEND_MEMORY ? "" : in.device,
+           in.connector[0] ? ", connector " : "", in.connector, in.width, in.height);
+    if (in.refresh_mhz) printf("@%d.%03d", in.refresh_mhz / 1000, in.refresh_mhz % 1000);
+    printf(", %s, %d buffer%s, rotation %d\n", fi ? fi->name : "?", in.buffers, in.buffers == 1 ? "" : "s", in.rotation);
+    if (in.backend == FX_BACKEND_MEMORY)
+        printf("  why: no usable DRM card or fbdev device here, so programs draw into memory (headless)\n");
+    else if (in.backend == FX_BACKEND_FBDEV)
+        printf("  why: no DRM card with a connected connector and dumb buffers; fbdev works\n");
+    else
+        printf("  why: a DRM card with a connected connector (preferred over fbdev)\n");
+    fx_display_close(d);
+}
+
+int main(int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            printf("usage: fixel-info\n"
+                   "Lists DRM cards (driver, connectors and modes, CRTCs, planes and formats), fbdev\n"
+                   "devices and their pixel formats, input devices as fixel classifies them, GPIO\n"
+                   "chips and lines, and the display fixel would open here and why.\n"
+                   "Missing hardware prints \"none found\"; the exit status is 0 unless an option is wrong.\n");
+            return 0;
+        }
+        fprintf(stderr, "fixel-info: unknown argument %s (try --help)\n", argv[i]);
+        return 2;
+    }
+    drm_section();
+    fbdev_section();
+    input_section();
+    gpio_section();
+    choice_section();
+    return 0;
+}
