@@ -116,12 +116,14 @@ void fx_rect_outline(const fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h
     if (w <= 0 || h <= 0)
         return;
     fx_rect r = rect_from(x, y, w, h);
+    if (fx_rect_empty(r)) /* saturated at INT32_MAX: nothing representable */
+        return;
     int32_t top = r.y0, bottom = r.y1 - 1;
     span_clipped(c, top, r.x0, r.x1);
     if (bottom != top)
         span_clipped(c, bottom, r.x0, r.x1);
     /* Only the visible rows of the sides: bounded by the clip, not by h. */
-    int32_t y0 = FX_MAX(top + 1, c->clip.y0), y1 = FX_MIN(bottom, c->clip.y1);
+    int32_t y0 = (int32_t)FX_MAX((int64_t)top + 1, c->clip.y0), y1 = FX_MIN(bottom, c->clip.y1);
     for (int32_t yy = y0; yy < y1; yy++) {
         fx_plot(c, r.x0, yy);
         if (r.x1 - 1 != r.x0)

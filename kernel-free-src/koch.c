@@ -356,7 +356,7 @@ static uint32_t sfc_draw(const fx_ctx *c, int32_t x, int32_t y, int32_t size, ui
     }
     sfc s = {c, base, n, x, y, size, cells, d2xy, 0, 0, 0, 0};
     if (n == 0) {
-        fx_plot(c, x + size / 2, y + size / 2);
+        fx_plot(c, fx_sat32((int64_t)x + size / 2), fx_sat32((int64_t)y + size / 2));
         return 0;
     }
     sfc_block(&s, 0, cells * cells, cells);

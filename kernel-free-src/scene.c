@@ -295,7 +295,7 @@ const fx_scene_cmd *fx_scene_find(const char *name, size_t len)
     for (int t = 0; fx_scene_tables[t]; t++)
         for (const fx_scene_cmd *c = fx_scene_tables[t]; c->name; c++) {
             size_t i = 0;
-            while (i < len && c->name[i] == name[i])
+            while (i < len && c->name[i] && c->name[i] == name[i]) /* a NUL in the script must not run past the name */
                 i++;
             if (i == len && !c->name[i])
                 return c;

@@ -96,3 +96,15 @@ FX_TEST(scene_argument_helpers)
     FX_CHECK(a && b && ((uintptr_t)b & 7) == 0 && (uint8_t *)b - (uint8_t *)a == 16);
     FX_CHECK(fx_scene_alloc(&sc, 1000) == NULL);
 }
+
+FX_TEST(scene_command_names_with_nul_bytes)
+{
+    /* found by fuzz_scene: a NUL inside a command word read past the name */
+    fx_scene sc;
+    static const char text[] = "size 8 8\nline\0xyz 1 2 3 4\n";
+    static uint8_t arena[256];
+    fx_scene_host h = {NULL, make, NULL, NULL, NULL};
+    fx_scene_init(&sc, &h, arena, sizeof arena);
+    FX_CHECK_EQ(fx_scene_run(&sc, text, sizeof text - 1), -FX_EINVAL);
+    FX_CHECK_EQ(sc.err_line, 2);
+}

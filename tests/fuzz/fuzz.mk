@@ -1,0 +1,32 @@
+# Fuzzing with libFuzzer (clang, ASan + UBSan): tests/fuzz/README.md.
+#   make fuzz                 each target for FUZZ_SECONDS (default 60) on its corpus
+#   make test                 each target over its seed corpus plus FUZZ_RUNS new inputs
+# The library sources are compiled into each target by clang with the same
+# sanitizers (the gcc-built libfixel.a is not instrumented for coverage).
+EXTRA_DEB_PKGS += clang libclang-rt-14-dev
+FUZZ_CC      ?= clang
+FUZZ_BUILD   := build/fuzz
+FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
+FUZZ_FLAGS   := -std=c11 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
+                -D_GNU_SOURCE -Ikernel-free-src/include -Iboards/include -Itests/fuzz
+FUZZ_LIBSRC  := $(wildcard kernel-free-src/*.c)
+FUZZ_SECONDS ?= 60
+FUZZ_RUNS    ?= 3000
+
+$(FUZZ_BUILD)/%: tests/fuzz/%.c $(FUZZ_LIBSRC) tests/fuzz/guard.h $(wildcard kernel-free-src/include/fixel/*.h)
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(FUZZ_LIBSRC) $(FUZZ_EXTRA_$*) -o $@
+
+fuzz-build: $(FUZZ_TARGETS:%=$(FUZZ_BUILD)/%)
+
+fuzz: fuzz-build
+	@for t in $(FUZZ_TARGETS); do \
+	  mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
+	  echo "== $$t ($(FUZZ_SECONDS) s)"; \
+	  $(FUZZ_BUILD)/$$t -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/ \
+	    $(FUZZ_BUILD)/corpus/$$t tests/fuzz/corpus/$${t#fuzz_} 2>&1 | grep -E 'stat::number_of_executed_units|ERROR|SUMMARY' ; \
+	done
+
+TEST_SUITES += "sh tests/fuzz/run-short.sh $(FUZZ_RUNS)"
+
+.PHONY: fuzz fuzz-build
