@@ -11,7 +11,8 @@ done
 if [ "$(id -u)" -eq 0 ]; then
     echo "deps: installing$missing"
     export DEBIAN_FRONTEND=noninteractive
-    apt-get -o DPkg::Lock::Timeout=300 update -qq &&
+    # a mirror mid-sync can fail one index; the others still serve
+    apt-get -o DPkg::Lock::Timeout=300 update -qq || apt-get -o DPkg::Lock::Timeout=300 update -qq || true
     apt-get -o DPkg::Lock::Timeout=300 install -y -qq --no-install-recommends $missing >/dev/null ||
         { echo "deps: apt-get failed"; exit 1; }
 else

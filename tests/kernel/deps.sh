@@ -35,7 +35,7 @@ done
 
 if [ -n "$need" ] || [ "$updated" = no ]; then
     as_root
-    $APT update >/dev/null
+    $APT update >/dev/null 2>&1 || $APT update >/dev/null 2>&1 || echo "deps.sh: apt-get update reported errors (mirror mid-sync?); trying anyway"
     if [ -n "$need" ]; then
         echo "deps.sh: installing$need"
         $APT install $need >/dev/null
