@@ -3,6 +3,12 @@
 #include "fixel/error.h"
 #include "fx_internal.h"
 
+/* Pixel words are stored little-endian (DRM fourcc order); the span fills
+ * build byte patterns on that assumption. */
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+#error "fixel supports little-endian targets only"
+#endif
+
 #define FOURCC(a, b, c, d) \
     ((uint32_t)(a) | ((uint32_t)(b) << 8) | ((uint32_t)(c) << 16) | ((uint32_t)(d) << 24))
 
@@ -217,25 +223,80 @@ static void mono_span(uint8_t *row, int32_t b0, int32_t b1, int on)
     }
 }
 
+/* n bytes of a repeating 8-byte pattern from p: aligned 64-bit stores,
+ * four per iteration. memcpy keeps the stores free of aliasing questions and
+ * compiles to single moves. pat must already be rotated so that byte 0 of
+ * pat lands on p. */
+static void fill_pattern64(uint8_t *p, size_t n, uint64_t pat)
+{
+    uint8_t *end = p + n;
+    uint64_t *w;
+    while (((uintptr_t)p & 7) && p < end) {
+        *p++ = (uint8_t)pat;
+        pat = pat >> 8 | pat << 56; /* the next byte of the pattern comes first */
+    }
+    w = (uint64_t *)(void *)p;
+    size_t words = (size_t)(end - p) >> 3;
+    for (; words >= 4; words -= 4, w += 4) {
+        fx_memcpy(w, &pat, 8);
+        fx_memcpy(w + 1, &pat, 8);
+        fx_memcpy(w + 2, &pat, 8);
+        fx_memcpy(w + 3, &pat, 8);
+    }
+    for (; words; words--, w++)
+        fx_memcpy(w, &pat, 8);
+    p = (uint8_t *)w;
+    while (p < end) {
+        *p++ = (uint8_t)pat;
+        pat >>= 8;
+    }
+}
+
 void fx_span_fill(const fx_surface *s, int32_t y, int32_t x0, int32_t x1, uint32_t v)
 {
     uint8_t *row = fx_row(s, y);
     int32_t n = x1 - x0;
+    if (n <= 0)
+        return;
     switch (formats[s->format].bits_per_pixel) {
-    case 32: {
-        uint32_t *p = (uint32_t *)row + x0;
-        while (n--)
-            *p++ = v;
+    case 32:
+        if (n < 8) {
+            uint32_t *p = (uint32_t *)(void *)row + x0;
+            while (n--)
+                *p++ = v;
+        } else {
+            /* little-endian byte pattern of two pixels; the pixel memory is
+             * 4-byte aligned, so any 8-byte boundary falls between pixels */
+            uint8_t b[8];
+            for (int i = 0; i < 8; i++)
+                b[i] = (uint8_t)(v >> (8 * (i & 3)));
+            uint64_t pat;
+            fx_memcpy(&pat, b, 8);
+            fill_pattern64(row + (size_t)x0 * 4, (size_t)n * 4, pat);
+        }
         break;
-    }
-    case 16: {
-        uint16_t *p = (uint16_t *)row + x0;
-        while (n--)
-            *p++ = (uint16_t)v;
+    case 16:
+        if (n < 8) {
+            uint16_t *p = (uint16_t *)(void *)row + x0;
+            while (n--)
+                *p++ = (uint16_t)v;
+        } else {
+            uint8_t b[8];
+            for (int i = 0; i < 8; i++)
+                b[i] = (uint8_t)(v >> (8 * (i & 1)));
+            uint64_t pat;
+            fx_memcpy(&pat, b, 8);
+            fill_pattern64(row + (size_t)x0 * 2, (size_t)n * 2, pat);
+        }
         break;
-    }
     case 24: {
-        uint8_t *p = row + x0 * 3, b0 = (uint8_t)v, b1 = (uint8_t)(v >> 8), b2 = (uint8_t)(v >> 16);
+        uint8_t *p = row + (size_t)x0 * 3, b0 = (uint8_t)v, b1 = (uint8_t)(v >> 8), b2 = (uint8_t)(v >> 16);
+        /* eight pixels are 24 bytes: three words of a fixed pattern */
+        uint8_t pat[24];
+        for (int i = 0; i < 24; i += 3)
+            pat[i] = b0, pat[i + 1] = b1, pat[i + 2] = b2;
+        for (; n >= 8; n -= 8, p += 24)
+            fx_memcpy(p, pat, 24);
         while (n--) {
             p[0] = b0;
             p[1] = b1;
