@@ -13,7 +13,9 @@ for t in build/fuzz/fuzz_*; do
     name=${t##*/fuzz_}
     corpus=tests/fuzz/corpus/$name
     log=build/fuzz/$name.log
-    if [ -d "$corpus" ]; then set -- "$corpus"; else set --; fi
+    # new inputs go to the first directory: keep them out of the repository
+    mkdir -p "build/fuzz/corpus-$name"
+    if [ -d "$corpus" ]; then set -- "build/fuzz/corpus-$name" "$corpus"; else set -- "build/fuzz/corpus-$name"; fi
     if "$t" -runs="$runs" -seed=1 -max_len=4096 -artifact_prefix=build/fuzz/ "$@" > "$log" 2>&1; then
         echo "ok   fuzz $name ($(grep -c . "$log") log lines, $runs runs)"; P=$((P + 1))
     else
