@@ -48,3 +48,15 @@ test-kernel: kernel-guests
 	@sh $(KT_DIR)/rig.sh $(KT_CACHE) $(KT_BUILD)
 
 .PHONY: test-kernel kernel-guests
+
+# `make deps` (CI's first step) also installs the rig's packages.
+deps-kernel:
+	sh $(KT_DIR)/deps.sh
+deps: deps-kernel
+
+# Part of `make test`; FIXEL_SKIP_KERNEL=1 leaves it out (a machine without
+# apt access or the time for a first download).
+ifneq ($(FIXEL_SKIP_KERNEL),1)
+TEST_SUITES += "$(MAKE) --no-print-directory -s test-kernel"
+endif
+.PHONY: deps-kernel
