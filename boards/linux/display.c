@@ -116,7 +116,7 @@ static int mem_fd(const fx_display *d) { (void)d; return -1; }
 static void mem_close(fx_display *d) { free(d->memory_mem); d->memory_mem = NULL; }
 
 static const struct fx_backend_ops mem_ops = {mem_show, mem_wait, mem_dispatch, mem_fd, mem_close,
-                                              NULL, NULL};
+                                              NULL, NULL, NULL};
 
 static int memory_open(fx_display *d)
 {
@@ -161,6 +161,34 @@ static void reset_backend(fx_display *d)
     d->nbuf = 0;
 }
 
+static int alloc_shadow(fx_display *d)
+{
+    int32_t lw, lh;
+    fx_rotated_size(d->opt.rotation, d->info.width, d->info.height, &lw, &lh);
+    int32_t stride = (fx_format_min_stride(d->info.format, lw) + 15) & ~15;
+    free(d->shadow_mem);
+    d->shadow_mem = calloc((size_t)lh, (size_t)stride);
+    if (!d->shadow_mem)
+        return -FX_ENOMEM;
+    return fx_surface_init(&d->shadow, d->shadow_mem, lw, lh, stride, d->info.format);
+}
+
+int fx_display_resized(fx_display *d)
+{
+    int r = 0;
+    if (d->info.present == FX_PRESENT_SHADOW)
+        r = alloc_shadow(d);
+    fx_damage_reset(&d->prev);
+    d->repair = 0;
+    d->info.reshapes++;
+    int32_t lw, lh;
+    fx_rotated_size(d->opt.rotation, d->info.width, d->info.height, &lw, &lh);
+    fx_display_log(d, FX_LOG_INFO, "display is now %dx%d", d->info.width, d->info.height);
+    if (d->reshape_cb)
+        d->reshape_cb(d, lw, lh, d->reshape_user);
+    return r;
+}
+
 static int choose_present(fx_display *d)
 {
     fx_present_mode m = d->opt.present;
@@ -194,18 +222,8 @@ static int choose_present(fx_display *d)
                        m == FX_PRESENT_DIRECT ? "direct" : "shadow", why);
     }
     d->info.present = m;
-    if (m == FX_PRESENT_SHADOW) {
-        int32_t lw, lh;
-        fx_rotated_size(d->opt.rotation, d->info.width, d->info.height, &lw, &lh);
-        int32_t stride = fx_format_min_stride(d->info.format, lw);
-        stride = (stride + 15) & ~15;
-        d->shadow_mem = calloc((size_t)lh, (size_t)stride);
-        if (!d->shadow_mem)
-            return -FX_ENOMEM;
-        int r = fx_surface_init(&d->shadow, d->shadow_mem, lw, lh, stride, d->info.format);
-        if (r < 0)
-            return r;
-    }
+    if (m == FX_PRESENT_SHADOW)
+        return alloc_shadow(d);
     return 0;
 }
 
@@ -286,6 +304,8 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
     }
     d->info.backend = b == FX_BACKEND_AUTO ? d->info.backend : b;
     d->info.rotation = d->opt.rotation;
+    if (d->info.backend != FX_BACKEND_DRM)
+        d->info.connected = 1;
     d->info.buffers = d->nbuf;
     d->info.device = d->device;
     d->info.connector = d->connector;
@@ -311,12 +331,12 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
         fx_signals_register(d);
     d->info.vt = fx_vt_number(d->vt);
 
-    /* One fd for event loops: flip events and VT switch requests. */
-    int fds[2] = {d->ops->fd(d), fx_vt_event_fd(d->vt)};
+    /* One fd for event loops: flip events, hotplug and VT switch requests. */
+    int fds[3] = {d->ops->fd(d), fx_vt_event_fd(d->vt), d->ops->hotplug_fd ? d->ops->hotplug_fd(d) : -1};
     d->epoll_fd = -1;
-    if (fds[0] >= 0 || fds[1] >= 0) {
+    if (fds[0] >= 0 || fds[1] >= 0 || fds[2] >= 0) {
         d->epoll_fd = epoll_create1(EPOLL_CLOEXEC);
-        for (int i = 0; i < 2 && d->epoll_fd >= 0; i++) {
+        for (int i = 0; i < 3 && d->epoll_fd >= 0; i++) {
             struct epoll_event ev = {.events = EPOLLIN, .data.fd = fds[i]};
             if (fds[i] >= 0 && epoll_ctl(d->epoll_fd, EPOLL_CTL_ADD, fds[i], &ev) < 0)
                 fx_display_log(d, FX_LOG_ERROR, "epoll_ctl: %s", strerror(errno));
@@ -479,6 +499,13 @@ void fx_display_vt_acquire(fx_display *d)
     fx_display_log(d, FX_LOG_DEBUG, "back on our VT: display retaken");
     if (d->vt_cb)
         d->vt_cb(d, 1, d->vt_user);
+}
+
+void fx_display_set_reshape_callback(fx_display *d, void (*cb)(fx_display *, int32_t, int32_t, void *),
+                                     void *user)
+{
+    d->reshape_cb = cb;
+    d->reshape_user = user;
 }
 
 void fx_display_set_vt_callback(fx_display *d, void (*cb)(fx_display *, int, void *), void *user)

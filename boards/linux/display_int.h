@@ -61,6 +61,18 @@ fx_rect fx_rect_rotate(fx_rect r, int rotation, int32_t phys_w, int32_t phys_h);
  * r must lie inside src. Every format is supported, MONO1 included. */
 void fx_copy_rotated(const fx_surface *dst, const fx_surface *src, fx_rect r, int rotation);
 
+/* ---- blocking calls with a timeout (waiter.c) ---- */
+
+typedef struct fx_waiter fx_waiter;
+/* A helper thread (all signals blocked) that runs fn(arg) on request. */
+int fx_waiter_create(fx_waiter **w, int (*fn)(void *arg), void *arg);
+/* Run fn and wait at most timeout_ms: 0 when it returned (its value in
+ * *result), 1 when it is still running (a later run waits for that same
+ * call instead of starting another). */
+int fx_waiter_run(fx_waiter *w, int timeout_ms, int *result);
+/* Stop the thread; one stuck in fn is left to free everything itself. */
+void fx_waiter_destroy(fx_waiter *w);
+
 /* ---- the display object ---- */
 
 struct fx_backend_ops {
@@ -75,6 +87,8 @@ struct fx_backend_ops {
     int (*suspend)(fx_display *d);
     /* VT back: take it again and show buffer d->shown as it is. */
     int (*resume)(fx_display *d);
+    /* A second fd for the event loop (DRM: kernel uevents), or -1. */
+    int (*hotplug_fd)(const fx_display *d);
 };
 
 typedef struct fx_vt fx_vt;
@@ -111,7 +125,13 @@ struct fx_display {
     int away;               /* our VT is not on screen */
     void (*vt_cb)(fx_display *d, int active, void *user);
     void *vt_user;
+    void (*reshape_cb)(fx_display *d, int32_t w, int32_t h, void *user);
+    void *reshape_user;
 };
+
+/* Backends call this after replacing scan[] with buffers of a new size
+ * (d->info.width/height updated): the shadow follows, the program is told. */
+int fx_display_resized(fx_display *d);
 
 void fx_display_logv(const fx_display *d, fx_log_priority p, const char *fmt, va_list ap);
 /* Called by backends when a flip completes. */

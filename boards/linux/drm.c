@@ -13,6 +13,8 @@
 #include <string.h>
 #include <sys/ioctl.h>
 #include <sys/mman.h>
+#include <sys/socket.h>
+#include <linux/netlink.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -38,6 +40,10 @@ struct drm_priv {
     int nbuf;
     int flip_ok;
     int dirty;                       /* -1 untried, 0 refused, 1 accepted */
+    int uevent_fd;                   /* kernel uevents (hotplug), -1 if unavailable */
+    char card[64];                   /* "card0": matches DEVNAME=dri/card0 */
+    int connected;
+    int reprobe_pending;             /* a hotplug arrived while our VT was away */
     /* Pre-built for the signal path, which may not allocate. */
     struct drm_mode_crtc emergency;
     uint32_t emergency_conn;
@@ -219,10 +225,49 @@ static void on_flip(int fd, unsigned seq, unsigned sec, unsigned usec, void *dat
     fx_display_flip_done(data);
 }
 
+static void reprobe(fx_display *d);
+
+/* Kernel uevents are "ACTION@DEVPATH" then NUL-separated KEY=VALUE pairs.
+ * Any change event of our card re-probes the connector: cheap, and it also
+ * covers drivers that announce hotplug without HOTPLUG=1. */
+static void read_uevents(fx_display *d)
+{
+    struct drm_priv *p = d->priv;
+    char buf[4096], devname[96];
+    ssize_t n;
+    int ours = 0;
+    snprintf(devname, sizeof devname, "DEVNAME=dri/%s", p->card);
+    while ((n = recv(p->uevent_fd, buf, sizeof buf - 1, 0)) > 0) {
+        buf[n] = 0;
+        int drm = 0, dev = 0, change = 0;
+        for (char *k = buf; k < buf + n; k += strlen(k) + 1) {
+            drm |= !strcmp(k, "SUBSYSTEM=drm");
+            dev |= !strcmp(k, devname);
+            change |= !strcmp(k, "ACTION=change");
+        }
+        ours |= drm && dev && change;
+    }
+    if (ours) {
+        d->info.hotplugs++;
+        if (d->away)
+            p->reprobe_pending = 1;
+        else
+            reprobe(d);
+    }
+}
+
+static int drm_hotplug_fd(const fx_display *d)
+{
+    const struct drm_priv *p = d->priv;
+    return p->uevent_fd;
+}
+
 static int drm_dispatch(fx_display *d)
 {
     struct drm_priv *p = d->priv;
     struct pollfd pfd = {.fd = p->fd, .events = POLLIN};
+    if (p->uevent_fd >= 0)
+        read_uevents(d);
     drmEventContext ev = {.version = 2, .page_flip_handler = on_flip};
     /* drmHandleEvent reads, which would block on an empty queue. */
     if (poll(&pfd, 1, 0) <= 0)
@@ -346,6 +391,8 @@ static void drm_close(fx_display *d)
     }
     for (int i = 0; i < 2; i++)
         destroy_buf(p->fd, &p->buf[i]);
+    if (p->uevent_fd >= 0)
+        close(p->uevent_fd);
     if (p->fd >= 0) {
         drmDropMaster(p->fd);
         close(p->fd);
@@ -379,11 +426,64 @@ static int drm_resume(fx_display *d)
         fx_display_log(d, FX_LOG_ERROR, "SetCrtc after VT switch: %s", strerror(errno));
         return neg_errno();
     }
+    if (p->reprobe_pending) {
+        p->reprobe_pending = 0;
+        reprobe(d);
+    }
     return 0;
 }
 
+/* Our connector after a hotplug: gone (wait for it), back or with another
+ * preferred mode (modeset again, new buffers when the size changed). */
+static void reprobe(fx_display *d)
+{
+    struct drm_priv *p = d->priv;
+    drmModeConnectorPtr c = drmModeGetConnector(p->fd, p->conn_id);
+    int now = c && c->connection == DRM_MODE_CONNECTED && c->count_modes > 0;
+    drmModeModeInfo m;
+    if (!now || pick_mode(d, c, &m) < 0) {
+        if (p->connected)
+            fx_display_log(d, FX_LOG_INFO, "%s disconnected; waiting for it to come back", d->connector);
+        p->connected = d->info.connected = 0;
+        drmModeFreeConnector(c);
+        return;
+    }
+    drmModeFreeConnector(c);
+    int same_size = m.hdisplay == p->mode.hdisplay && m.vdisplay == p->mode.vdisplay;
+    int same_mode = same_size && m.clock == p->mode.clock && m.vrefresh == p->mode.vrefresh;
+    if (p->connected && same_mode)
+        return;
+    fx_display_log(d, FX_LOG_INFO, "%s %s: %ux%u@%u", d->connector,
+                   p->connected ? "changed mode" : "connected", m.hdisplay, m.vdisplay, m.vrefresh);
+    drm_wait(d, 200);
+    if (!same_size) {
+        fx_format f = d->info.format;
+        const fx_format_info *fi = fx_format_get(f);
+        for (int i = 0; i < p->nbuf; i++) {
+            destroy_buf(p->fd, &p->buf[i]);
+            if (create_buf(p->fd, &p->buf[i], m.hdisplay, m.vdisplay, fi->drm_fourcc, fi->bits_per_pixel) < 0) {
+                fx_display_log(d, FX_LOG_ERROR, "%s: no buffer for %ux%u", d->device, m.hdisplay, m.vdisplay);
+                destroy_buf(p->fd, &p->buf[i]);
+                p->connected = d->info.connected = 0;
+                return;
+            }
+            fx_surface_init(&d->scan[i], p->buf[i].map, m.hdisplay, m.vdisplay, (int32_t)p->buf[i].pitch, f);
+        }
+        d->shown = 0;
+        d->back = p->nbuf == 2 ? 1 : 0;
+        d->info.width = m.hdisplay;
+        d->info.height = m.vdisplay;
+    }
+    p->mode = m;
+    if (set_crtc(p, d->shown < 0 ? 0 : d->shown) < 0)
+        fx_display_log(d, FX_LOG_ERROR, "modeset after hotplug failed: %s", strerror(errno));
+    p->connected = d->info.connected = 1;
+    if (!same_size)
+        fx_display_resized(d);
+}
+
 static const struct fx_backend_ops drm_ops = {drm_show, drm_wait, drm_dispatch, drm_fd, drm_close,
-                                              drm_suspend, drm_resume};
+                                              drm_suspend, drm_resume, drm_hotplug_fd};
 
 /* ---- open --------------------------------------------------------------- */
 
@@ -463,6 +563,7 @@ int fx_drm_open(fx_display *d)
         return -FX_ENOMEM;
     }
     p->fd = fd;
+    p->uevent_fd = -1;
     p->dirty = -1;
     p->flip_ok = 1;
     d->priv = p;
@@ -577,6 +678,18 @@ int fx_drm_open(fx_display *d)
     d->nbuf = p->nbuf;
     d->shown = 0;
     d->back = p->nbuf == 2 ? 1 : 0;
+    p->connected = d->info.connected = 1;
+    const char *slash = strrchr(d->device, '/');
+    snprintf(p->card, sizeof p->card, "%s", slash ? slash + 1 : d->device);
+    p->uevent_fd = socket(AF_NETLINK, SOCK_DGRAM | SOCK_CLOEXEC | SOCK_NONBLOCK, NETLINK_KOBJECT_UEVENT);
+    if (p->uevent_fd >= 0) {
+        struct sockaddr_nl a = {.nl_family = AF_NETLINK, .nl_groups = 1}; /* kernel events */
+        if (bind(p->uevent_fd, (struct sockaddr *)&a, sizeof a) < 0) {
+            fx_display_log(d, FX_LOG_DEBUG, "no uevents (%s): hotplug is not followed", strerror(errno));
+            close(p->uevent_fd);
+            p->uevent_fd = -1;
+        }
+    }
     d->info.width = (int32_t)w;
     d->info.height = (int32_t)h;
     d->info.format = f;

@@ -13,15 +13,14 @@
 #include <string.h>
 #include <sys/ioctl.h>
 #include <sys/mman.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "display_int.h"
 #include "fixel/error.h"
 
-/* A vsync wait longer than this means the driver's own timeout fired (it
- * never signals); stop asking so frames are not throttled to its timeout. */
-#define VSYNC_GIVE_UP_MS 200
+/* Longer than any real frame (10 Hz panels included): a wait that takes
+ * this long means the driver never signals vblank. */
+#define VSYNC_TIMEOUT_MS 150
 
 struct fb_priv {
     int fd;
@@ -29,31 +28,35 @@ struct fb_priv {
     struct fb_fix_screeninfo fix;
     uint8_t *map;
     size_t map_len;
-    int vsync;       /* 1: try FBIO_WAITFORVSYNC, 0: unsupported or too slow */
+    int vsync;       /* 1: try FBIO_WAITFORVSYNC, 0: unsupported or never signals */
+    fx_waiter *vsync_waiter;
+    int vsync_stuck; /* its call timed out and may still be inside the driver */
     int restore_var; /* we changed the virtual size or the pan offset */
 };
 
-static int64_t now_ms(void)
+static int vsync_call(void *arg)
 {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (int64_t)t.tv_sec * 1000 + t.tv_nsec / 1000000;
+    struct fb_priv *p = arg;
+    uint32_t crtc = 0;
+    return ioctl(p->fd, FBIO_WAITFORVSYNC, &crtc) < 0 ? -errno : 0;
 }
 
 static void wait_vsync(fx_display *d, struct fb_priv *p)
 {
+    int result = 0;
     if (!p->vsync)
         return;
-    uint32_t crtc = 0;
-    int64_t t0 = now_ms();
-    int r = ioctl(p->fd, FBIO_WAITFORVSYNC, &crtc);
-    int64_t dt = now_ms() - t0;
-    if (r < 0) {
-        fx_display_log(d, FX_LOG_DEBUG, "FBIO_WAITFORVSYNC unsupported (%s)", strerror(errno));
+    if (!p->vsync_waiter && fx_waiter_create(&p->vsync_waiter, vsync_call, p) < 0) {
         p->vsync = 0;
-    } else if (dt > VSYNC_GIVE_UP_MS) {
-        fx_display_log(d, FX_LOG_INFO, "FBIO_WAITFORVSYNC took %lld ms; no longer waiting for vsync",
-                       (long long)dt);
+        return;
+    }
+    if (fx_waiter_run(p->vsync_waiter, VSYNC_TIMEOUT_MS, &result) != 0) {
+        fx_display_log(d, FX_LOG_INFO, "FBIO_WAITFORVSYNC did not return within %d ms; "
+                       "presenting without waiting for vsync", VSYNC_TIMEOUT_MS);
+        p->vsync = 0;
+        p->vsync_stuck = 1;
+    } else if (result < 0) {
+        fx_display_log(d, FX_LOG_DEBUG, "FBIO_WAITFORVSYNC unsupported (%s)", strerror(-result));
         p->vsync = 0;
     }
 }
@@ -102,6 +105,12 @@ static void fb_close(fx_display *d)
     }
     if (p->map)
         munmap(p->map, p->map_len);
+    fx_waiter_destroy(p->vsync_waiter);
+    if (p->vsync_stuck) {
+        /* The stuck call still uses p and its fd: leave both to it. */
+        d->priv = NULL;
+        return;
+    }
     if (p->fd >= 0)
         close(p->fd);
     free(p);
@@ -123,7 +132,7 @@ static int fb_resume(fx_display *d)
 }
 
 static const struct fx_backend_ops fb_ops = {fb_show, fb_wait, fb_dispatch, fb_fd, fb_close, NULL,
-                                             fb_resume};
+                                             fb_resume, NULL};
 
 static int try_double_buffer(struct fb_priv *p)
 {

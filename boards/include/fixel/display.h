@@ -111,7 +111,7 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n);
 int fx_display_wait(fx_display *d, int timeout_ms);
 
 /* The fd to poll (readable) for the display's events: page-flip completion
- * (DRM) and VT switch requests. -1 when there is none (memory backend). */
+ * and hotplug uevents (DRM), VT switch requests. -1 when there is none (memory backend). */
 int fx_display_fd(const fx_display *d);
 /* Handle pending events of fx_display_fd(); never blocks. fx_display_surface
  * and fx_display_present also handle pending VT switches themselves. */
@@ -135,6 +135,14 @@ int fx_display_active(const fx_display *d);
  * while the console keyboard is muted. Returns 0 or an error. */
 int fx_display_switch_vt(fx_display *d, int n);
 
+/* Called after the display changed size: the monitor was replaced or its
+ * preferred mode changed (DRM hotplug, seen through kernel uevents). w and h
+ * are the new logical size; the next fx_display_surface has it, cleared to
+ * black: redraw everything and present it. */
+void fx_display_set_reshape_callback(fx_display *d,
+                                     void (*cb)(fx_display *d, int32_t w, int32_t h, void *user),
+                                     void *user);
+
 typedef struct fx_display_info {
     fx_backend backend;
     fx_present_mode present;  /* the mode in use (never AUTO) */
@@ -149,6 +157,9 @@ typedef struct fx_display_info {
     uint32_t flips, fallbacks; /* page flips completed, SetCrtc used instead */
     int vt;                   /* the VT held in graphics mode, 0 when none */
     uint32_t vt_away, vt_back, vt_refused; /* VT switch events handled */
+    uint32_t hotplugs;        /* DRM hotplug uevents for our card handled */
+    int connected;            /* DRM: our connector is connected (1 elsewhere) */
+    uint32_t reshapes;        /* size changes after hotplug */
 } fx_display_info;
 
 void fx_display_get_info(const fx_display *d, fx_display_info *info);
