@@ -67,8 +67,8 @@ typedef struct fx_waiter fx_waiter;
 /* A helper thread (all signals blocked) that runs fn(arg) on request. */
 int fx_waiter_create(fx_waiter **w, int (*fn)(void *arg), void *arg);
 /* Run fn and wait at most timeout_ms: 0 when it returned (its value in
- * *result), 1 when it is still running (a later run waits for that same
- * call instead of starting another). */
+ * *result), 1 when it is still running (a later run waits for, or collects,
+ * that same call instead of starting another). */
 int fx_waiter_run(fx_waiter *w, int timeout_ms, int *result);
 /* Stop the thread; one stuck in fn is left to free everything itself. */
 void fx_waiter_destroy(fx_waiter *w);

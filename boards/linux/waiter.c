@@ -100,9 +100,9 @@ int fx_waiter_run(fx_waiter *w, int timeout_ms, int *result)
         end.tv_nsec -= 1000000000L;
     }
     pthread_mutex_lock(&w->lock);
-    if (!w->running && !w->requested) {
-        /* A call still stuck from an earlier timeout is not queued twice. */
-        w->done = 0;
+    /* A call that timed out earlier is not queued twice: this run waits for
+     * it, or collects it when it has finished meanwhile. */
+    if (!w->running && !w->requested && !w->done) {
         w->requested = 1;
         pthread_cond_broadcast(&w->cond);
     }

@@ -18,6 +18,10 @@ KT_CFLAGS := -std=c11 -O2 -g0 -Wall -Wextra \
 	-Ikernel-free-src/include -Iboards/include -Ikernel-free-src -I$(KT_DIR)/guest \
 	-I/usr/include/libdrm -I/usr/include/libevdev-1.0
 KT_LDLIBS := -static -ldrm -levdev -lgpiod
+# Header dependencies: a struct that changes in display_int.h must rebuild
+# every object using it, or the guests link mismatched layouts.
+KT_DEPFLAGS := -MMD -MP
+-include $(shell find $(KT_BUILD) -name '*.d' 2>/dev/null)
 
 # Installs qemu, cross compiler, arm64 -dev packages (root; no-op when present).
 $(KT_BUILD)/deps.stamp: $(KT_DIR)/deps.sh
@@ -28,13 +32,13 @@ $(KT_BUILD)/deps.stamp: $(KT_DIR)/deps.sh
 define KT_ARCH_RULES
 $(KT_BUILD)/$(1)/obj/%.o: %.c | $(KT_BUILD)/deps.stamp
 	@mkdir -p $$(@D)
-	$(KT_CC_$(1)) $(KT_CFLAGS) -c $$< -o $$@
+	$(KT_CC_$(1)) $(KT_CFLAGS) $(KT_DEPFLAGS) -c $$< -o $$@
 $(KT_BUILD)/$(1)/libfixel.a: $(patsubst %.c,$(KT_BUILD)/$(1)/obj/%.o,$(KT_LIBSRC))
 	@rm -f $$@
 	$(if $(filter aarch64,$(1)),aarch64-linux-gnu-ar,ar) rcs $$@ $$^
 $(KT_BUILD)/$(1)/tests/%: $(KT_DIR)/guest/%.c $(KT_BUILD)/$(1)/libfixel.a $(wildcard $(KT_DIR)/guest/*.h) | $(KT_BUILD)/deps.stamp
 	@mkdir -p $$(@D)
-	$(KT_CC_$(1)) $(KT_CFLAGS) $$< -o $$@ $(KT_BUILD)/$(1)/libfixel.a $(KT_LDLIBS)
+	$(KT_CC_$(1)) $(KT_CFLAGS) $(KT_DEPFLAGS) $$< -o $$@ $(KT_BUILD)/$(1)/libfixel.a $(KT_LDLIBS)
 KT_GUESTS += $(patsubst $(KT_DIR)/guest/%.c,$(KT_BUILD)/$(1)/tests/%,$(KT_GUESTSRC))
 endef
 $(foreach a,$(KT_ARCHES),$(eval $(call KT_ARCH_RULES,$(a))))
