@@ -48,6 +48,7 @@ static int list_nodes(const char *dir, const char *prefix, char names[][64], int
     return n;
 }
 
+__attribute__((unused)) /* only the DRM and fbdev sections use it */
 static void fourcc(uint32_t f, char out[5])
 {
     for (int i = 0; i < 4; i++) {
