@@ -183,7 +183,8 @@ static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec
             rgb_madd(&c, rgb_mul(e->diff, m->diffuse), ndl);
             if (m->specular.r | m->specular.g | m->specular.b) {
                 if (!have_v) {
-                    V = fx_vec3_make(-P.x, -P.y, -P.z);
+                    V = fx_vec3_make(fx_sat32(-(int64_t)P.x), fx_sat32(-(int64_t)P.y),
+                                     fx_sat32(-(int64_t)P.z)); /* P may sit at INT32_MIN */
                     if (fx_vec3_normalize(&V) < 0)
                         V = fx_vec3_make(0, 0, FX16_ONE);
                     have_v = 1;
@@ -430,8 +431,10 @@ static void setup_planes(plane_set *ps, const svert *v0, const svert *v1, const 
          * gives 16 fraction bits per pixel. */
         int64_t nx = (d1 * dy2 - d2 * dy1) >> sh, ny = (d2 * dx1 - d1 * dx2) >> sh;
         int64_t gx = fx_mul64_shift(nx, inv, 38), gy = fx_mul64_shift(ny, inv, 38);
-        if (gx > GRAD_LIMIT || gx < -GRAD_LIMIT || gy > GRAD_LIMIT || gy < -GRAD_LIMIT)
-            flat = 1;
+        if (gx > GRAD_LIMIT || gx < -GRAD_LIMIT || gy > GRAD_LIMIT || gy < -GRAD_LIMIT) {
+            flat = 1; /* the base below would overflow; the flat set replaces it all */
+            break;
+        }
         ps->gx[k] = gx;
         ps->gy[k] = gy;
         ps->base[k] = q0 * 65536 + ((gx * ox + gy * oy) >> 8);
@@ -660,10 +663,12 @@ static int clip_poly(const pctx *pc, cvert *v, int n, cvert *tmp, int na)
             if ((d[i] < 0) != (d[j] < 0)) {
                 int64_t t = (d[i] * ((int64_t)1 << 28)) / (d[i] - d[j]);
                 cvert *o = &tmp[m++];
+                /* summed in 64 bits: the step alone may exceed int32 when the
+                 * ends have opposite signs; the result lies between them */
                 for (int k = 0; k < 4; k++)
-                    o->c[k] = v[i].c[k] + (int32_t)((((int64_t)v[j].c[k] - v[i].c[k]) * t) >> 28);
+                    o->c[k] = (int32_t)(v[i].c[k] + ((((int64_t)v[j].c[k] - v[i].c[k]) * t) >> 28));
                 for (int k = 0; k < na; k++)
-                    o->a[k] = v[i].a[k] + (int32_t)((((int64_t)v[j].a[k] - v[i].a[k]) * t) >> 28);
+                    o->a[k] = (int32_t)(v[i].a[k] + ((((int64_t)v[j].a[k] - v[i].a[k]) * t) >> 28));
             }
         }
         n = m;
