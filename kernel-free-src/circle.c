@@ -83,6 +83,23 @@ static void trace_circle(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r)
     }
 }
 
+/* The clip rectangle in an octant's own coordinates: offsets b along its
+ * walking axis in [*lo, *hi] and a across it in [*a0, *a1], before the
+ * octant's own limits are applied (a >= 0 is the only one they share).
+ * b = 0 is left to the positive side. */
+static void octant_window(const fx_rect *cl, int64_t cx, int64_t cy, int swap, int sx, int sy,
+                          int64_t *lo, int64_t *hi, int64_t *a0, int64_t *a1)
+{
+    int64_t bc = swap ? cx : cy, ac = swap ? cy : cx;
+    int bs = swap ? sx : sy, as = swap ? sy : sx;
+    int64_t bmin_c = swap ? cl->x0 : cl->y0, bmax_c = (int64_t)(swap ? cl->x1 : cl->y1) - 1;
+    int64_t amin_c = swap ? cl->y0 : cl->x0, amax_c = (int64_t)(swap ? cl->y1 : cl->x1) - 1;
+    *lo = FX_MAX(bs > 0 ? bmin_c - bc : bc - bmax_c, bs < 0 ? 1 : 0);
+    *hi = bs > 0 ? bmax_c - bc : bc - bmin_c;
+    *a0 = FX_MAX(as > 0 ? amin_c - ac : ac - amax_c, 0);
+    *a1 = as > 0 ? amax_c - ac : ac - amin_c;
+}
+
 /* One octant: the points (cx + sx*a(b), cy + sy*b) (swap = 0) or
  * (cx + sx*b, cy + sy*a(b)) (swap = 1) for b in [0, bmax], restricted to
  * the clip rectangle before walking. The seams are split so each pixel is
@@ -91,29 +108,9 @@ static void trace_circle(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r)
 static void octant(const conic_sink *k, int64_t cx, int64_t cy, uint32_t r, uint32_t bmax, int swap,
                    int sx, int sy, const sector *sec)
 {
-    const fx_rect *cl = &k->c->clip;
-    int64_t bc = swap ? cx : cy, ac = swap ? cy : cx;
-    int bs = swap ? sx : sy, as = swap ? sy : sx;
-    int64_t bmin_c = swap ? cl->x0 : cl->y0, bmax_c = (int64_t)(swap ? cl->x1 : cl->y1) - 1;
-    int64_t amin_c = swap ? cl->y0 : cl->x0, amax_c = (int64_t)(swap ? cl->y1 : cl->x1) - 1;
     int64_t lo, hi, A0, A1;
-    if (bs > 0) {
-        lo = bmin_c - bc;
-        hi = bmax_c - bc;
-    } else {
-        lo = bc - bmax_c;
-        hi = bc - bmin_c;
-    }
-    if (as > 0) {
-        A0 = amin_c - ac;
-        A1 = amax_c - ac;
-    } else {
-        A0 = ac - amax_c;
-        A1 = ac - amin_c;
-    }
-    lo = FX_MAX(lo, bs < 0 ? 1 : 0);
+    octant_window(&k->c->clip, cx, cy, swap, sx, sy, &lo, &hi, &A0, &A1);
     hi = FX_MIN(hi, (int64_t)bmax);
-    A0 = FX_MAX(A0, 0);
     A1 = FX_MIN(A1, (int64_t)r);
     if (lo > hi || A0 > A1)
         return;
@@ -383,29 +380,9 @@ static void aa_put(const fx_ctx *c, int64_t x, int64_t y, uint32_t cov)
 static void aa_octant(const fx_ctx *c, int64_t cx, int64_t cy, uint32_t r, uint32_t bend, int swap,
                       int sx, int sy)
 {
-    const fx_rect *cl = &c->clip;
-    int64_t bc = swap ? cx : cy, ac = swap ? cy : cx;
-    int bs = swap ? sx : sy, as = swap ? sy : sx;
-    int64_t bmin_c = swap ? cl->x0 : cl->y0, bmax_c = (int64_t)(swap ? cl->x1 : cl->y1) - 1;
-    int64_t amin_c = swap ? cl->y0 : cl->x0, amax_c = (int64_t)(swap ? cl->y1 : cl->x1) - 1;
     int64_t lo, hi, A0, A1;
-    if (bs > 0) {
-        lo = bmin_c - bc;
-        hi = bmax_c - bc;
-    } else {
-        lo = bc - bmax_c;
-        hi = bc - bmin_c;
-    }
-    if (as > 0) {
-        A0 = amin_c - ac;
-        A1 = amax_c - ac;
-    } else {
-        A0 = ac - amax_c;
-        A1 = ac - amin_c;
-    }
-    lo = FX_MAX(lo, bs < 0 ? 1 : 0);
+    octant_window(&c->clip, cx, cy, swap, sx, sy, &lo, &hi, &A0, &A1);
     hi = FX_MIN(hi, (int64_t)bend);
-    A0 = FX_MAX(A0, 0);
     A1 = FX_MIN(A1, (int64_t)r + 1);
     if (lo > hi || A0 > A1)
         return;
