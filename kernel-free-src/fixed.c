@@ -268,14 +268,17 @@ const char *fx_strerror(int err)
         err = -err;
     switch (err) {
     case FX_OK: return "success";
-    case FX_ENOENT: return "no such file or device";
+    case FX_ENOENT: return "no such file or directory";
     case FX_EIO: return "input/output error";
     case FX_E2BIG: return "too many items";
     case FX_ENOMEM: return "not enough memory";
     case FX_EACCES: return "permission denied";
     case FX_EBUSY: return "device busy";
     case FX_ENODEV: return "no such device";
+    case FX_ENOTDIR: return "not a directory";
+    case FX_EISDIR: return "is a directory";
     case FX_EINVAL: return "invalid argument";
+    case FX_EFBIG: return "file too large";
     case FX_ENOSPC: return "out of caller-provided space";
     case FX_EDOM: return "argument out of domain";
     case FX_ERANGE: return "value out of range";

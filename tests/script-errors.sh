@@ -28,6 +28,7 @@ check() { # description, expected exit code, args...
     else echo "FAIL $d: exit $rc (wanted $code), stderr: $(cat "$out/err.txt")"; F=$((F + 1)); fi
 }
 check "missing script" 1 -o "$out/cli.png" /nonexistent/script.fxs
+check "script is a directory" 1 -o "$out/cli.png" tests
 check "bad format" 2 -o "$out/cli.png" -f RGB999 tests/script-errors/unknown-command.fxs
 check "bad size" 2 -o "$out/cli.png" -s 0x10 tests/script-errors/unknown-command.fxs
 check "unknown option" 2 -o "$out/cli.png" --frobnicate

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 #ifdef FX_DRAW_ZLIB /* set by tools/fixel-draw/zlib.mk when the target links zlib */
@@ -52,7 +53,12 @@ static int make_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surface *
     return 0;
 }
 
-static int read_all(FILE *f, uint8_t **data, size_t *len)
+#define SCRIPT_MAX ((size_t)256 << 20)
+#define FILE_MAX ((size_t)64 << 20) /* fonts and OBJ meshes, as gunzip's cap */
+
+/* Reads f to its end, refusing more than max bytes (a script naming
+ * /dev/zero as a font must fail quickly, not allocate gigabytes). */
+static int read_all(FILE *f, size_t max, uint8_t **data, size_t *len)
 {
     size_t cap = 1 << 16, n = 0;
     uint8_t *buf = malloc(cap + 1);
@@ -60,17 +66,19 @@ static int read_all(FILE *f, uint8_t **data, size_t *len)
         return -FX_ENOMEM;
     for (;;) {
         if (n == cap) {
-            if (cap > ((size_t)1 << 30)) {
+            if (cap >= max) {
+                if (fgetc(f) == EOF)
+                    break; /* exactly max bytes */
                 free(buf);
-                return -FX_E2BIG;
+                return -FX_EFBIG;
             }
-            uint8_t *nb = realloc(buf, cap * 2 + 1);
+            cap = cap * 2 > max ? max : cap * 2;
+            uint8_t *nb = realloc(buf, cap + 1);
             if (!nb) {
                 free(buf);
                 return -FX_ENOMEM;
             }
             buf = nb;
-            cap *= 2;
         }
         size_t got = fread(buf + n, 1, cap - n, f);
         n += got;
@@ -139,14 +147,36 @@ static int gunzip(uint8_t **buf, size_t *len)
 }
 #endif
 
+/* The scene reports failures with fx_strerror, which knows the fx codes
+ * only: map the errno values that opening a user's path can give. */
+static int fx_code(int e)
+{
+    switch (e) {
+    case ENOENT: return -FX_ENOENT;
+    case EACCES:
+    case EPERM: return -FX_EACCES;
+    case EISDIR: return -FX_EISDIR;
+    case ENOTDIR: return -FX_ENOTDIR;
+    case ENOMEM: return -FX_ENOMEM;
+    case ENAMETOOLONG: return -FX_ERANGE;
+    default: return -FX_EIO;
+    }
+}
+
 static int load_file(void *u, const char *path, const uint8_t **data, size_t *len)
 {
     host *H = u;
     FILE *f = fopen(path, "rb");
     if (!f)
-        return -errno;
+        return fx_code(errno);
+    /* fopen succeeds on a directory; say so rather than "input/output error" */
+    struct stat st;
+    if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
+        fclose(f);
+        return -FX_EISDIR;
+    }
     uint8_t *buf;
-    int r = read_all(f, &buf, len);
+    int r = read_all(f, FILE_MAX, &buf, len);
     fclose(f);
     if (r < 0)
         return r;
@@ -315,9 +345,15 @@ int main(int argc, char **argv)
         fprintf(stderr, "fixel-draw: cannot open %s: %s\n", script, strerror(errno));
         return 1;
     }
+    struct stat st;
+    if (in && fstat(fileno(in), &st) == 0 && S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "fixel-draw: cannot read %s: it is a directory\n", script);
+        fclose(in);
+        return 1;
+    }
     uint8_t *text = NULL;
     size_t len = 0;
-    int r = streaming ? 0 : read_all(in, &text, &len);
+    int r = streaming ? 0 : read_all(in, SCRIPT_MAX, &text, &len);
     if (in && in != stdin)
         fclose(in);
     if (r < 0) {
