@@ -3,6 +3,7 @@
  * against long double), the exact grid, the 64-bit path against a plain
  * fx56_mul loop, symmetry of K_c, tiles == whole, and W9 colouring. */
 #include <float.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -15,7 +16,15 @@
 /* Where long double is wider than double (x86: 64-bit mantissa, aarch64:
  * 113) it is the reference that double cannot be at deep zooms; on 32-bit
  * ARM it is double itself and the tests that need more are not built. */
-#define WIDE_LD (LDBL_MANT_DIG > DBL_MANT_DIG)
+#define WIDE_LD (LDBL_MANT_DIG > DBL_MANT_DIG && wide_ld_at_run_time())
+
+/* Valgrind runs x87 code in 64-bit doubles: long double is then no wider
+ * than double whatever LDBL_MANT_DIG says, and cannot be the reference. */
+static int wide_ld_at_run_time(void)
+{
+    volatile long double one = 1.0L, tiny = 1.0L / 1152921504606846976.0L; /* 2^-60 */
+    return one + tiny != one;
+}
 
 /* The course's loop in long double on the exact pixel coordinates the view
  * uses (long double holds every fx56 exactly on x86). */
@@ -168,7 +177,10 @@ FX_TEST(fractal_deep_zoom_64bit)
     int64_t a = same * 100000 / (w * h);
     /* measured 98.2 %: Q8.56 keeps 8 bits fewer than long double, and a
      * pixel here is only ~75 units of 2^-56 */
-    FX_CHECK_MSG(a >= 97000, "deep zoom agreement %lld/100000", (long long)a);
+    if (WIDE_LD)
+        FX_CHECK_MSG(a >= 97000, "deep zoom agreement %lld/100000", (long long)a);
+    else
+        printf("     (long double is not wider than double here: agreement not checked)\n");
     FX_CHECK_MSG(distinct >= 64 && lo < hi, "only %d distinct dwells (%u..%u)", distinct, lo, hi);
 }
 
