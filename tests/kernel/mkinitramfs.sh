@@ -38,4 +38,8 @@ echo gpio-sim-oot.ko >> "$S/modules.load"
 for t in "$BINS"/*; do
     [ -x "$t" ] && cp "$t" "$S/tests/"
 done
+# Tools the tests run as commands (tools.mk builds them into BINS/../bin).
+for t in "$BINS"/../bin/*; do
+    [ -f "$t" ] && [ -x "$t" ] && cp "$t" "$S/bin/"
+done
 (cd "$S" && find . | cpio -o -H newc --quiet) | gzip -1 > "$OUT"

@@ -11,6 +11,7 @@ usage: run.py --render BIN --work DIR GUEST... where GUEST is
 Prints one line per check and a closing "N passed, N failed".
 """
 import argparse
+import base64
 import json
 import os
 import select
@@ -19,6 +20,7 @@ import subprocess
 import sys
 import threading
 import time
+import zlib
 
 QEMU = {
     "x86_64": lambda k, i: [
@@ -173,6 +175,7 @@ class Guest:
         self.arch, self.kernel, self.initrd = arch, kernel, initrd
         self.r, self.work, self.report, self.timeout = renderer, work, report, timeout
         self.log = open(os.path.join(work, "serial-%s.log" % arch), "w")
+        self.image = None  # an IMAGE being received
 
     def check(self, name, ok, detail=""):
         self.report("%s/%s" % (self.arch, name), ok, detail)
@@ -212,6 +215,45 @@ class Guest:
         self.check(name, False, detail + " (after %d dumps; %s)" % (tries, path))
         return False
 
+    # IMAGE <name> <W> <H> <spec> <chars>, then "IMG <base64>" lines holding
+    # <chars> characters of zlib-compressed 8-bit RGB: a picture the guest
+    # has in a file (a fixel-shot screenshot), compared with the render of
+    # spec like a SCREEN. Answered with ACK PASS|FAIL once complete.
+    def image_start(self, args):
+        self.image = {"name": args[0], "w": int(args[1]), "h": int(args[2]), "spec": args[3],
+                      "left": int(args[4]), "b64": []}
+
+    def image_line(self, data):
+        im = self.image
+        im["b64"].append(data)
+        im["left"] -= len(data)
+        if im["left"] > 0:
+            return None
+        self.image = None
+        name, w, h, spec = im["name"], im["w"], im["h"], im["spec"]
+        try:
+            got = zlib.decompress(base64.b64decode("".join(im["b64"])))
+        except (ValueError, zlib.error) as e:
+            self.check(name, False, "undecodable image: %s" % e)
+            return "FAIL"
+        want = self.r.expected(spec, w, h)
+        if got == want:
+            self.check(name, True, "%d pixels equal (%s)" % (w * h, spec))
+            return "PASS"
+        path = os.path.join(self.work, "image-%s-%s" % (self.arch, name))
+        for suffix, px in ((".ppm", got), (".expected.ppm", want)):
+            with open(path + suffix, "wb") as f:
+                f.write(b"P6\n%d %d\n255\n" % (w, h) + px)
+        if len(got) != len(want):
+            detail = "%d bytes, want %d" % (len(got), len(want))
+        else:
+            bad = [i for i in range(0, len(want), 3) if got[i:i + 3] != want[i:i + 3]]
+            i = bad[0] // 3
+            detail = "%d of %d pixels differ, first at (%d,%d) got %s want %s" % (
+                len(bad), w * h, i % w, i // w, got[bad[0]:bad[0] + 3].hex(), want[bad[0]:bad[0] + 3].hex())
+        self.check(name, False, "%s (%s.ppm)" % (detail, path))
+        return "FAIL"
+
     def run(self):
         sock = os.path.join(self.work, "qmp-%s.sock" % self.arch)
         if os.path.exists(sock):
@@ -246,7 +288,11 @@ class Guest:
                     if not words:
                         continue
                     ack = None
-                    if words[0] == "CHECK" and len(words) >= 3:
+                    if self.image is not None and words[0] == "IMG" and len(words) == 2:
+                        ack = self.image_line(words[1])
+                    elif words[0] == "IMAGE" and len(words) == 6:
+                        self.image_start(words[1:])
+                    elif words[0] == "CHECK" and len(words) >= 3:
                         self.check(words[1], words[2] == "PASS", " ".join(words[3:]))
                     elif words[0] == "SCREEN" and len(words) == 6:
                         ack = "PASS" if self.screen(qmp, words[1:]) else "FAIL"

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/ioctl.h>
 #include <unistd.h>
 #include <linux/fb.h>
@@ -15,6 +16,14 @@
 #include "fixel/display.h"
 #include "fixel/input.h"
 #include "../../boards/linux/display_int.h"
+
+#ifndef FX_BOARD_BACKEND
+#define FX_BOARD_BACKEND "auto" /* as boards/linux/display.c */
+#endif
+
+/* A display device exists that this user may not open: the reason to give
+ * when fixel falls back to memory. */
+static int display_denied;
 
 #ifdef FX_INFO_HAVE_OPT
 #include <gpiod.h>
@@ -70,6 +79,7 @@ static void drm_section(void)
         snprintf(path, sizeof path, "/dev/dri/%.63s", names[i]);
         int fd = open(path, O_RDWR | O_CLOEXEC);
         if (fd < 0) {
+            display_denied |= errno == EACCES;
             printf("  %s: cannot open (%s)%s\n", path, strerror(errno),
                    errno == EACCES ? " - add the user to group video" : "");
             continue;
@@ -138,6 +148,7 @@ static void fbdev_section(void)
         shown++;
         int fd = open(path, O_RDONLY | O_CLOEXEC);
         if (fd < 0) {
+            display_denied |= errno == EACCES;
             printf("  %s: cannot open (%s)%s\n", path, strerror(errno), errno == EACCES ? " - add the user to group video" : "");
             continue;
         }
@@ -251,6 +262,8 @@ static void choice_section(void)
     fflush(stdout);
     if (fx_display_open(&d, &o) < 0) {
         printf("  nothing opened (the reasons are logged above on stderr)\n");
+        if (display_denied)
+            printf("  why: permission denied on the display devices listed above\n");
         return;
     }
     fx_display_info in;
@@ -261,7 +274,15 @@ static void choice_section(void)
            in.connector[0] ? ", connector " : "", in.connector, in.width, in.height);
     if (in.refresh_mhz) printf("@%d.%03d", in.refresh_mhz / 1000, in.refresh_mhz % 1000);
     printf(", %s, %d buffer%s, rotation %d\n", fi ? fi->name : "?", in.buffers, in.buffers == 1 ? "" : "s", in.rotation);
-    if (in.backend == FX_BACKEND_MEMORY)
+    const char *forced = getenv("FIXEL_BACKEND");
+    if (forced && *forced && strcasecmp(forced, "auto"))
+        printf("  why: FIXEL_BACKEND=%s asks for it\n", forced);
+    else if (strcasecmp(FX_BOARD_BACKEND, "auto"))
+        printf("  why: the board profile's default backend (%s)\n", FX_BOARD_BACKEND);
+    else if (in.backend == FX_BACKEND_MEMORY && display_denied)
+        printf("  why: permission denied on the display devices listed above (add the user to group video), "
+               "so programs draw into memory (headless)\n");
+    else if (in.backend == FX_BACKEND_MEMORY)
         printf("  why: no usable DRM card or fbdev device here, so programs draw into memory (headless)\n");
     else if (in.backend == FX_BACKEND_FBDEV)
         printf("  why: no DRM card with a connected connector and dumb buffers; fbdev works\n");

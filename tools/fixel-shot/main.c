@@ -16,7 +16,6 @@
 #include "../../boards/linux/display_int.h"
 
 #ifdef FX_SHOT_HAVE_DRM
-#include <drm_fourcc.h>
 #include <xf86drm.h>
 #include <xf86drmMode.h>
 #endif
@@ -80,6 +79,10 @@ static int shot_fbdev(const char *dev, const char *out)
 }
 
 #ifdef FX_SHOT_HAVE_DRM
+/* shot_drm's result when it may not map the buffer and a program other than
+ * the console owns the card: /dev/fb0 then holds the console's picture. */
+enum { SHOT_DRM_OWNED = 3 };
+
 static int shot_drm(const char *dev, const char *out)
 {
     int fd = open(dev, O_RDWR | O_CLOEXEC);
@@ -88,6 +91,9 @@ static int shot_drm(const char *dev, const char *out)
                 errno == EACCES ? " (add the user to group video)" : "");
         return 1;
     }
+    /* The first opener of a card nobody owns becomes its master; anyone
+     * else is not, so this tells whether a program drives the screen. */
+    int owned_by_other = !drmIsMaster(fd);
     drmModeResPtr r = drmModeGetResources(fd);
     int rc = 1, found = 0;
     for (int c = 0; r && c < r->count_crtcs && !found; c++) {
@@ -97,23 +103,27 @@ static int shot_drm(const char *dev, const char *out)
             found = 1;
             drmModeFB2Ptr fb = drmModeGetFB2(fd, cr->buffer_id);
             fx_format f = FX_FMT_COUNT;
-            if (fb) {
-                if (fb->pixel_format == DRM_FORMAT_XRGB8888) f = FX_FMT_XRGB8888;
-                else if (fb->pixel_format == DRM_FORMAT_ARGB8888) f = FX_FMT_ARGB8888;
-                else if (fb->pixel_format == DRM_FORMAT_XBGR8888) f = FX_FMT_XBGR8888;
-                else if (fb->pixel_format == DRM_FORMAT_RGB565) f = FX_FMT_RGB565;
-                else if (fb->pixel_format == DRM_FORMAT_BGR565) f = FX_FMT_BGR565;
-            }
+            for (int k = 0; fb && k < FX_FMT_COUNT; k++)
+                if (fx_format_get((fx_format)k)->drm_fourcc == fb->pixel_format && fb->pixel_format) f = (fx_format)k;
             if (!fb)
                 fprintf(stderr, "fixel-shot: %s: crtc %u: cannot read framebuffer %u (%s)\n", dev, cr->crtc_id,
                         cr->buffer_id, strerror(errno));
-            else if (!fb->handles[0])
+            else if (!fb->handles[0]) {
                 /* the kernel hands buffer handles only to root/the DRM master */
                 fprintf(stderr, "fixel-shot: %s: not allowed to map the scanout buffer: run as root "
-                                "(CAP_SYS_ADMIN), or use the fbdev device\n", dev);
-            else if (f == FX_FMT_COUNT || fb->modifier != 0)
-                fprintf(stderr, "fixel-shot: %s: scanout format 0x%08x (modifier 0x%llx) is not supported\n", dev,
-                        fb->pixel_format, (unsigned long long)fb->modifier);
+                                "(CAP_SYS_ADMIN)%s\n", dev, owned_by_other ? "" : ", or use the fbdev device");
+                if (owned_by_other) rc = SHOT_DRM_OWNED;
+            }
+            else if (f == FX_FMT_COUNT || fb->modifier != 0) {
+                char cc[5];
+                for (int k = 0; k < 4; k++) {
+                    char ch = (char)(fb->pixel_format >> (8 * k));
+                    cc[k] = ch >= 32 && ch < 127 ? ch : '?';
+                }
+                cc[4] = 0;
+                fprintf(stderr, "fixel-shot: %s: scanout format %s (modifier 0x%llx) is not supported: fixel reads "
+                                "linear buffers in its own formats only\n", dev, cc, (unsigned long long)fb->modifier);
+            }
             else {
                 struct drm_mode_map_dumb md = {.handle = fb->handles[0]};
                 size_t size = (size_t)fb->pitches[0] * fb->height + fb->offsets[0];
@@ -162,7 +172,7 @@ int main(int argc, char **argv)
     if (dev) {
         if (!strncmp(dev, "/dev/dri/", 9)) {
 #ifdef FX_SHOT_HAVE_DRM
-            return shot_drm(dev, out);
+            return shot_drm(dev, out) ? 1 : 0;
 #else
             fprintf(stderr, "fixel-shot: built without libdrm\n");
             return 1;
@@ -175,7 +185,13 @@ int main(int argc, char **argv)
         char p[32];
         snprintf(p, sizeof p, "/dev/dri/card%d", i);
         if (access(p, F_OK) == 0) {
-            if (shot_drm(p, out) == 0) return 0;
+            int r = shot_drm(p, out);
+            if (r == 0) return 0;
+            if (r == SHOT_DRM_OWNED) {
+                fprintf(stderr, "fixel-shot: another program owns the display through %s; /dev/fb0 holds the "
+                                "console's picture, not what is on screen, so it is not saved instead\n", p);
+                return 1;
+            }
         }
     }
 #endif
