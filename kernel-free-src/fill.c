@@ -176,58 +176,12 @@ static inline void edge_step(fx_tri_edge *g)
 
 /* ---- span loops ---- */
 
-/* 32- and 16-bit runs with 16-byte stores through GCC's generic vectors
- * (SSE2/NEON registers where the target has them, plain 64-bit stores
- * under -mgeneral-regs-only): the compiler's -O2 leaves the plain loops at
- * one store per pixel. */
-typedef uint32_t fx_v4u32 __attribute__((vector_size(16)));
-typedef uint16_t fx_v8u16 __attribute__((vector_size(16)));
-
-static inline void run32(uint32_t *p, int32_t n, uint32_t v)
-{
-    if (n < 4 || ((uintptr_t)p & 3)) {
-        while (n-- > 0)
-            *p++ = v;
-        return;
-    }
-    /* unaligned head and tail (overlapping is fine), aligned body */
-    fx_v4u32 q = {v, v, v, v};
-    fx_memcpy(p, &q, 16);
-    fx_memcpy(p + n - 4, &q, 16);
-    uint32_t *a = (uint32_t *)(((uintptr_t)p + 16) & ~(uintptr_t)15), *e = p + n - 4;
-    for (; a + 8 <= e; a += 8) {
-        *(fx_v4u32 *)a = q;
-        *(fx_v4u32 *)(a + 4) = q;
-    }
-    for (; a < e; a += 4)
-        *(fx_v4u32 *)a = q;
-}
-
-static inline void run16(uint16_t *p, int32_t n, uint16_t v)
-{
-    if (n < 8 || ((uintptr_t)p & 1)) {
-        while (n-- > 0)
-            *p++ = v;
-        return;
-    }
-    fx_v8u16 q = {v, v, v, v, v, v, v, v};
-    fx_memcpy(p, &q, 16);
-    fx_memcpy(p + n - 8, &q, 16);
-    uint16_t *a = (uint16_t *)(((uintptr_t)p + 16) & ~(uintptr_t)15), *e = p + n - 8;
-    for (; a + 16 <= e; a += 16) {
-        *(fx_v8u16 *)a = q;
-        *(fx_v8u16 *)(a + 8) = q;
-    }
-    for (; a < e; a += 8)
-        *(fx_v8u16 *)a = q;
-}
-
 static inline void run_native(const fx_surface *s, int bpp, int32_t y, int32_t x0, int32_t x1, uint32_t v)
 {
     if (bpp == 32)
-        run32((uint32_t *)fx_row(s, y) + x0, x1 - x0, v);
+        fx_run32((uint32_t *)fx_row(s, y) + x0, x1 - x0, v);
     else if (bpp == 16)
-        run16((uint16_t *)fx_row(s, y) + x0, x1 - x0, (uint16_t)v);
+        fx_run16((uint16_t *)fx_row(s, y) + x0, x1 - x0, (uint16_t)v);
     else
         fx_span_fill(s, y, x0, x1, v);
 }
@@ -460,9 +414,9 @@ static int monotone_fill(const fx_ctx *c, const int32_t *xy, int32_t n, unsigned
         int32_t xa = (int32_t)clamp64(lo, cx0, cx1), xb = (int32_t)clamp64(hi, cx0, cx1);
         if (xa < xb) {
             if (bpp == 32)
-                run32((uint32_t *)fx_row(&c->surf, y) + xa, xb - xa, c->native);
+                fx_run32((uint32_t *)fx_row(&c->surf, y) + xa, xb - xa, c->native);
             else if (bpp == 16)
-                run16((uint16_t *)fx_row(&c->surf, y) + xa, xb - xa, (uint16_t)c->native);
+                fx_run16((uint16_t *)fx_row(&c->surf, y) + xa, xb - xa, (uint16_t)c->native);
             else if (fast)
                 fx_span_fill(&c->surf, y, xa, xb, c->native);
             else
@@ -549,7 +503,7 @@ int fx_fill_path(const fx_ctx *c, const int32_t *xy, const int32_t *counts, int3
                 int32_t xa = (int32_t)clamp64(edges[i].g.x, cx0, cx1);
                 int32_t xb = (int32_t)clamp64(edges[i + 1].g.x, cx0, cx1);
                 if (xa < xb)
-                    run32(row + xa, xb - xa, c->native);
+                    fx_run32(row + xa, xb - xa, c->native);
             }
         } else {
             fill_row_spans(c, y, edges, nact, rule, fast);
@@ -750,8 +704,8 @@ int fx_tri_next_span(fx_tri *t, fx_tri_span *s) { return tri_next(t, s); }
         }                                                                                        \
         pl->x = lx, pl->e = le, pr->x = rx, pr->e = re;                                          \
     }
-TRI_PART(uint32_t, run32)
-TRI_PART(uint16_t, run16)
+TRI_PART(uint32_t, fx_run32)
+TRI_PART(uint16_t, fx_run16)
 
 static void tri_flat(const fx_ctx *c, const fx8 *xy)
 {

@@ -223,35 +223,6 @@ static void mono_span(uint8_t *row, int32_t b0, int32_t b1, int on)
     }
 }
 
-/* n bytes of a repeating 8-byte pattern from p: aligned 64-bit stores,
- * four per iteration. memcpy keeps the stores free of aliasing questions and
- * compiles to single moves. pat must already be rotated so that byte 0 of
- * pat lands on p. */
-static void fill_pattern64(uint8_t *p, size_t n, uint64_t pat)
-{
-    uint8_t *end = p + n;
-    uint64_t *w;
-    while (((uintptr_t)p & 7) && p < end) {
-        *p++ = (uint8_t)pat;
-        pat = pat >> 8 | pat << 56; /* the next byte of the pattern comes first */
-    }
-    w = (uint64_t *)(void *)p;
-    size_t words = (size_t)(end - p) >> 3;
-    for (; words >= 4; words -= 4, w += 4) {
-        fx_memcpy(w, &pat, 8);
-        fx_memcpy(w + 1, &pat, 8);
-        fx_memcpy(w + 2, &pat, 8);
-        fx_memcpy(w + 3, &pat, 8);
-    }
-    for (; words; words--, w++)
-        fx_memcpy(w, &pat, 8);
-    p = (uint8_t *)w;
-    while (p < end) {
-        *p++ = (uint8_t)pat;
-        pat >>= 8;
-    }
-}
-
 void fx_span_fill(const fx_surface *s, int32_t y, int32_t x0, int32_t x1, uint32_t v)
 {
     uint8_t *row = fx_row(s, y);
@@ -259,36 +230,8 @@ void fx_span_fill(const fx_surface *s, int32_t y, int32_t x0, int32_t x1, uint32
     if (n <= 0)
         return;
     switch (formats[s->format].bits_per_pixel) {
-    case 32:
-        if (n < 8) {
-            uint32_t *p = (uint32_t *)(void *)row + x0;
-            while (n--)
-                *p++ = v;
-        } else {
-            /* little-endian byte pattern of two pixels; the pixel memory is
-             * 4-byte aligned, so any 8-byte boundary falls between pixels */
-            uint8_t b[8];
-            for (int i = 0; i < 8; i++)
-                b[i] = (uint8_t)(v >> (8 * (i & 3)));
-            uint64_t pat;
-            fx_memcpy(&pat, b, 8);
-            fill_pattern64(row + (size_t)x0 * 4, (size_t)n * 4, pat);
-        }
-        break;
-    case 16:
-        if (n < 8) {
-            uint16_t *p = (uint16_t *)(void *)row + x0;
-            while (n--)
-                *p++ = (uint16_t)v;
-        } else {
-            uint8_t b[8];
-            for (int i = 0; i < 8; i++)
-                b[i] = (uint8_t)(v >> (8 * (i & 1)));
-            uint64_t pat;
-            fx_memcpy(&pat, b, 8);
-            fill_pattern64(row + (size_t)x0 * 2, (size_t)n * 2, pat);
-        }
-        break;
+    case 32: fx_run32((uint32_t *)(void *)row + x0, n, v); break;
+    case 16: fx_run16((uint16_t *)(void *)row + x0, n, (uint16_t)v); break;
     case 24: {
         uint8_t *p = row + (size_t)x0 * 3, b0 = (uint8_t)v, b1 = (uint8_t)(v >> 8), b2 = (uint8_t)(v >> 16);
         /* eight pixels are 24 bytes: three words of a fixed pattern */
@@ -312,8 +255,33 @@ void fx_span_fill(const fx_surface *s, int32_t y, int32_t x0, int32_t x1, uint32
 
 void fx_rect_fill_native(const fx_surface *s, fx_rect r, uint32_t v)
 {
-    for (int32_t y = r.y0; y < r.y1; y++)
-        fx_span_fill(s, y, r.x0, r.x1, v);
+    int bpp = formats[s->format].bits_per_pixel;
+    int32_t w = r.x1 - r.x0, h = r.y1 - r.y0;
+    if (w <= 0 || h <= 0)
+        return;
+    /* Whole rows of an unpadded buffer are one run: a clear is a single
+     * loop with no per-row head and tail. */
+    if (bpp >= 8 && r.x0 == 0 && r.x1 == s->w && s->stride == (int64_t)s->w * (bpp / 8) &&
+        (int64_t)w * h <= INT32_MAX) {
+        w *= h;
+        h = 1;
+    }
+    /* The format is chosen once per rectangle; rows advance by the stride. */
+    uint8_t *row = fx_row(s, r.y0);
+    switch (bpp) {
+    case 32:
+        for (row += (size_t)r.x0 * 4; h--; row += s->stride)
+            fx_run32((uint32_t *)(void *)row, w, v);
+        break;
+    case 16:
+        for (row += (size_t)r.x0 * 2; h--; row += s->stride)
+            fx_run16((uint16_t *)(void *)row, w, (uint16_t)v);
+        break;
+    default:
+        for (int32_t y = r.y0; y < r.y1; y++)
+            fx_span_fill(s, y, r.x0, r.x1, v);
+        break;
+    }
 }
 
 void fx_surface_fill(const fx_surface *s, fx_rect r, fx_color c)
