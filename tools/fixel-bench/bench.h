@@ -10,6 +10,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #define BW 1920
 #define BH 1080
@@ -107,5 +108,11 @@ static inline uint32_t pack565(uint32_t c)
 {
     return ((c >> 19 & 0x1F) << 11) | ((c >> 10 & 0x3F) << 5) | (c >> 3 & 0x1F);
 }
+
+/* TABLE 4 (extras.c): presentation, teapot, deep zoom, idle loop. only:
+ * the -w list (NULL: all); fmt_mask: bit per FMT_*. */
+void extras_run(const char *only, int fmt_mask, int trials, double min_s, int quiet,
+                int (*listed)(const char *, const char *));
+void extras_print(FILE *o);
 
 #endif

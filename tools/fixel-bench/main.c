@@ -313,7 +313,7 @@ static const struct peer *PEERS[] = {
 /* ---- options -------------------------------------------------------------- */
 
 static double opt_F = 1.0, opt_S = 0.25, opt_m = 0.2, opt_cal = 0.020;
-static int opt_t = 7, opt_peers, opt_check, opt_quiet, opt_x;
+static int opt_t = 7, opt_peers, opt_check, opt_quiet, opt_x, opt_noextras;
 static const char *opt_w, *opt_p, *opt_f, *opt_md;
 
 static int listed(const char *list, const char *name)
@@ -396,6 +396,13 @@ static void calibrate(const struct peer *p, void *ctx, int w, struct cell *c)
     double t;
     for (;;) {
         t = time_once(p, ctx, w, n);
+        /* On a loaded box one preempted call of a tiny prefix looked like
+         * 20 ms and sent W3 to N/32768: a long time counts only if two
+         * more calls agree (the fastest of three is kept). */
+        for (int r = 0; r < 2 && t >= opt_cal && n < N; r++) {
+            double t2 = time_once(p, ctx, w, n);
+            t = t2 < t ? t2 : t;
+        }
         if (t >= opt_cal || n == N)
             break;
         n = n * 2 > N ? N : n * 2;
@@ -841,9 +848,11 @@ static void usage(void)
     fprintf(stderr,
             "usage: fixel-bench [--peers] [--check] [-w W2,W3..] [-p fixel,cairo..] [-f xrgb8888|rgb565]\n"
             "                   [-t trials] [-m min_trial_s] [-F full_limit_s] [-S prefix_target_s]\n"
-            "                   [-o table.txt] [-q] [-x]\n"
+            "                   [-o table.txt] [-q] [-x] [--no-extras]\n"
             "  default: fixel with the libc and ref ceilings; --peers adds cairo, pixman, sdl2, sdlgfx\n"
             "  -q: no progress on stderr; -x: skip the reference-picture comparison (TABLE 3)\n"
+            "  TABLE 4 (presentation, teapot, deep zoom, idle loop) runs unless --no-extras;\n"
+            "  -w present,teapot,deepzoom,idle picks parts of it\n"
             "  --check: verify nominal counts, checksums and W9 agreement only, then exit\n");
     exit(2);
 }
@@ -861,6 +870,8 @@ int main(int argc, char **argv)
             opt_x = 1;
         else if (!strcmp(a, "-q"))
             opt_quiet = 1;
+        else if (!strcmp(a, "--no-extras"))
+            opt_noextras = 1;
         else if (v && !strcmp(a, "-w"))
             opt_w = argv[++i];
         else if (v && !strcmp(a, "-p"))
@@ -914,11 +925,19 @@ int main(int argc, char **argv)
     }
     if (!opt_quiet)
         fprintf(stderr, "\n");
+    if (!opt_noextras) {
+        int fm = 0;
+        for (int f = 0; f < FMT_COUNT; f++)
+            if (!opt_f || listed(opt_f, FMT_NAME[f]))
+                fm |= 1 << f;
+        extras_run(opt_w, fm, opt_t, opt_m, opt_quiet, listed);
+    }
     machine(stdout);
     printf("\n");
     print_table(stdout, 0);
     print_table(stdout, 1);
     print_diffs(stdout);
+    extras_print(stdout);
     if (opt_md) {
         FILE *o = fopen(opt_md, "w");
         if (o) {
@@ -927,6 +946,7 @@ int main(int argc, char **argv)
             print_table(o, 0);
             print_table(o, 1);
             print_diffs(o);
+            extras_print(o);
             fclose(o);
         }
     }
