@@ -44,9 +44,9 @@ void fx_copy_rotated(const fx_surface *dst, const fx_surface *src, fx_rect r, in
 
 struct xrow {
     char name[48];
-    char unit[16];      /* of the primary value */
-    double ops;         /* frames (or calls) per rep, for the primary metric */
-    double bytes;       /* scanout bytes written per rep, 0: no GB/s column */
+    char unit[16]; /* of the primary value */
+    double ops;    /* frames (or calls) per rep, for the primary metric */
+    double bytes;  /* scanout bytes written per rep, 0: no GB/s column */
     double vals[64];
     int nv;
     double med, spread; /* seconds per rep */
@@ -82,8 +82,7 @@ static struct xrow *new_row(const char *unit, double bytes, const char *fmt, ...
     __attribute__((format(printf, 3, 4)));
 static struct xrow *new_row(const char *unit, double bytes, const char *fmt, ...)
 {
-    if (NROWS >= XMAX)
-        abort();
+    if (NROWS >= XMAX) abort();
     struct xrow *r = &ROWS[NROWS++];
     memset(r, 0, sizeof *r);
     va_list ap;
@@ -103,8 +102,7 @@ static void run_jobs(struct xjob *j, int n, int trials, double min_s, int quiet)
         /* calibration doubles as the warm-up: trials come after it */
         double t0 = xnow();
         int k = 0;
-        do
-            j[i].fn(j[i].arg, ++k);
+        do j[i].fn(j[i].arg, ++k);
         while (xnow() - t0 < min_s / 4);
         double per = (xnow() - t0) / k;
         j[i].reps = per > 0 ? (int)(min_s / per) + 1 : 1;
@@ -113,12 +111,10 @@ static void run_jobs(struct xjob *j, int n, int trials, double min_s, int quiet)
         for (int q = 0; q < n; q++) {
             struct xjob *x = &j[(q + t) % n];
             double t0 = xnow();
-            for (int k = 0; k < x->reps; k++)
-                x->fn(x->arg, k);
+            for (int k = 0; k < x->reps; k++) x->fn(x->arg, k);
             x->row->vals[x->row->nv++] = (xnow() - t0) / x->reps;
         }
-        if (!quiet)
-            fprintf(stderr, ".");
+        if (!quiet) fprintf(stderr, ".");
     }
     for (int i = 0; i < n; i++) {
         struct xrow *r = j[i].row;
@@ -181,8 +177,7 @@ static fx_display *open_memory(fx_format f, fx_present_mode m, int rotation)
     o.signals = 0;
     o.log = quiet_log;
     fx_display *d = NULL;
-    if (fx_display_open(&d, &o) < 0)
-        return NULL;
+    if (fx_display_open(&d, &o) < 0) return NULL;
     return d;
 }
 
@@ -228,7 +223,8 @@ static void present_group(int fmt, int trials, double min_s, int quiet)
         fx_display_info info;
         fx_display_get_info(ds[i], &info);
         if (info.present != cases[i].m) {
-            fprintf(stderr, "fixel-bench: memory display %s: wrong presentation mode\n", cases[i].label);
+            fprintf(stderr, "fixel-bench: memory display %s: wrong presentation mode\n",
+                    cases[i].label);
             continue;
         }
         pa[i].d = ds[i];
@@ -265,8 +261,7 @@ static void present_group(int fmt, int trials, double min_s, int quiet)
     snprintf(r->note, sizeof r->note, "ceiling: libc memcpy of the frame");
     jobs[n++] = (struct xjob){r, rep_memcpy, &ca[2], 0};
     run_jobs(jobs, n, trials, min_s, quiet);
-    for (int i = 0; i < 5; i++)
-        fx_display_close(ds[i]);
+    for (int i = 0; i < 5; i++) fx_display_close(ds[i]);
     free(m0);
     free(m1);
 }
@@ -283,8 +278,7 @@ static void rep_teapot(void *arg, int rep)
 {
     struct teapot_arg *t = arg;
     /* the camera moves 1/64 turn per frame, as a spinning demo would */
-    if (fx3d_bench_teapot(&t->s, t->mem, t->bytes, (fx_angle)((uint32_t)rep << 26)) < 0)
-        abort();
+    if (fx3d_bench_teapot(&t->s, t->mem, t->bytes, (fx_angle)((uint32_t)rep << 26)) < 0) abort();
 }
 
 static void teapot_group(int trials, double min_s, int quiet, int fmt_mask)
@@ -293,14 +287,15 @@ static void teapot_group(int trials, double min_s, int quiet, int fmt_mask)
     struct xjob jobs[FMT_COUNT];
     int n = 0;
     for (int f = 0; f < FMT_COUNT; f++) {
-        if (!(fmt_mask & (1 << f)))
-            continue;
+        if (!(fmt_mask & (1 << f))) continue;
         int bpp = f == FMT_XRGB8888 ? 4 : 2;
         void *px = aligned_alloc(64, (size_t)BW * BH * 4);
-        fx_surface_init(&ta[f].s, px, BW, BH, BW * bpp, f == FMT_XRGB8888 ? FX_FMT_XRGB8888 : FX_FMT_RGB565);
+        fx_surface_init(&ta[f].s, px, BW, BH, BW * bpp,
+                        f == FMT_XRGB8888 ? FX_FMT_XRGB8888 : FX_FMT_RGB565);
         ta[f].bytes = fx3d_bench_teapot_bytes(&ta[f].s);
         ta[f].mem = aligned_alloc(64, (ta[f].bytes + 63) & ~(size_t)63);
-        struct xrow *r = new_row("frames/s", 0, "teapot.gouraud.1920x1080.%s", f ? "rgb565" : "xrgb8888");
+        struct xrow *r =
+            new_row("frames/s", 0, "teapot.gouraud.1920x1080.%s", f ? "rgb565" : "xrgb8888");
         snprintf(r->note, sizeof r->note, "clear + z-buffer + mesh + Gouraud, 1 thread");
         jobs[n++] = (struct xjob){r, rep_teapot, &ta[f], 0};
     }
@@ -346,7 +341,8 @@ static void mandel_group(int trials, double min_s, int quiet)
          * so the Q8.56 path runs. About 288 iterations per pixel (6 % of
          * the frame inside the set at maxiter 1024); deeper frames here are
          * nearly all inside at this maxiter and only measure the cap. */
-        ma[i].v = fx_mandel_view(-53585189320909768, 9499057488910446, FX56_ONE >> 16, BW, BH, 1024);
+        ma[i].v =
+            fx_mandel_view(-53585189320909768, 9499057488910446, FX56_ONE >> 16, BW, BH, 1024);
         for (int k = 0; k < 256; k++)
             ma[i].lut[k] = (uint32_t)(k * 0x010101) ^ (uint32_t)((k & 7) << 21);
         ma[i].pal = (fx_dwell_pal){ma[i].lut, 256, 65536, 1, 0};
@@ -354,7 +350,8 @@ static void mandel_group(int trials, double min_s, int quiet)
     }
     int prec = fx_fractal_precision(&ma[0].v);
     struct xrow *r = new_row("frames/s", 0, "mandel.deep.2^-16.xrgb8888");
-    snprintf(r->note, sizeof r->note, "path Q%s, maxiter 1024, 1 thread", prec == 64 ? "8.56" : "4.28 (!)");
+    snprintf(r->note, sizeof r->note, "path Q%s, maxiter 1024, 1 thread",
+             prec == 64 ? "8.56" : "4.28 (!)");
     jobs[0] = (struct xjob){r, rep_mandel, &ma[0], 0};
     r = new_row("frames/s", 0, "mandel.deep.2^-16.mt.xrgb8888");
     snprintf(r->note, sizeof r->note, "fx_fractal_render_mt, %d threads", ncpu);
@@ -409,7 +406,8 @@ static void idle_group(void)
     r->med = wall;
     r->vals[0] = cpu;
     r->nv = -1; /* marks the idle row */
-    snprintf(r->note, sizeof r->note, "%.3f ms CPU in %.2f s wall (getrusage, user+sys)", cpu * 1e3, wall);
+    snprintf(r->note, sizeof r->note, "%.3f ms CPU in %.2f s wall (getrusage, user+sys)", cpu * 1e3,
+             wall);
 }
 
 /* ---- driver and table ---- */
@@ -417,19 +415,14 @@ static void idle_group(void)
 void extras_run(const char *only, int fmt_mask, int trials, double min_s, int quiet,
                 int (*listed)(const char *, const char *))
 {
-    if (!quiet)
-        fprintf(stderr, "extras ");
+    if (!quiet) fprintf(stderr, "extras ");
     for (int f = 0; f < FMT_COUNT; f++)
         if ((fmt_mask & (1 << f)) && (!only || listed(only, "present")))
             present_group(f, trials, min_s, quiet);
-    if (!only || listed(only, "teapot"))
-        teapot_group(trials, min_s, quiet, fmt_mask);
-    if ((fmt_mask & 1) && (!only || listed(only, "deepzoom")))
-        mandel_group(trials, min_s, quiet);
-    if (!only || listed(only, "idle"))
-        idle_group();
-    if (!quiet)
-        fprintf(stderr, "\n");
+    if (!only || listed(only, "teapot")) teapot_group(trials, min_s, quiet, fmt_mask);
+    if ((fmt_mask & 1) && (!only || listed(only, "deepzoom"))) mandel_group(trials, min_s, quiet);
+    if (!only || listed(only, "idle")) idle_group();
+    if (!quiet) fprintf(stderr, "\n");
 }
 
 static void num(char *o, size_t sz, double v)
@@ -444,18 +437,20 @@ static void num(char *o, size_t sz, double v)
 
 void extras_print(FILE *o)
 {
-    if (!NROWS)
-        return;
-    fprintf(o, "\nTABLE 4  presentation, 3D and deep-zoom frames, idle loop  (median; ~ spread>15%%)\n");
-    fprintf(o, "%-40s %10s %10s %9s %7s  %s\n", "measurement", "frames/s", "ms/frame", "GB/s", "spread",
-            "note");
-    fprintf(o, "%.*s\n", 120, "----------------------------------------------------------------------------"
-                                "--------------------------------------------");
+    if (!NROWS) return;
+    fprintf(
+        o,
+        "\nTABLE 4  presentation, 3D and deep-zoom frames, idle loop  (median; ~ spread>15%%)\n");
+    fprintf(o, "%-40s %10s %10s %9s %7s  %s\n", "measurement", "frames/s", "ms/frame", "GB/s",
+            "spread", "note");
+    fprintf(o, "%.*s\n", 120,
+            "----------------------------------------------------------------------------"
+            "--------------------------------------------");
     for (int i = 0; i < NROWS; i++) {
         const struct xrow *r = &ROWS[i];
         if (r->nv < 0) {
-            fprintf(o, "%-40s %10s %10s %9s %7s  idle CPU %.3f %% of one core: %s\n", r->name, "-", "-", "-",
-                    "-", r->med > 0 ? 100.0 * r->vals[0] / r->med : 0.0, r->note);
+            fprintf(o, "%-40s %10s %10s %9s %7s  idle CPU %.3f %% of one core: %s\n", r->name, "-",
+                    "-", "-", "-", r->med > 0 ? 100.0 * r->vals[0] / r->med : 0.0, r->note);
             continue;
         }
         if (r->nv == 0) {
@@ -469,7 +464,7 @@ void extras_print(FILE *o)
             snprintf(gbs, sizeof gbs, "%.3g", r->bytes / r->med / 1e9);
         else
             snprintf(gbs, sizeof gbs, "-");
-        fprintf(o, "%-40s %9s%s %10s %9s %6.0f%%  %s\n", r->name, fps, r->spread > 0.15 ? "~" : " ", ms, gbs,
-                100 * r->spread, r->note);
+        fprintf(o, "%-40s %9s%s %10s %9s %6.0f%%  %s\n", r->name, fps, r->spread > 0.15 ? "~" : " ",
+                ms, gbs, 100 * r->spread, r->note);
     }
 }
