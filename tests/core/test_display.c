@@ -221,8 +221,15 @@ static fx_surface make_surface(fx_format f, int32_t w, int32_t h, uint32_t *seed
 FX_TEST(rotated_copies_land_every_pixel_in_every_format)
 {
     uint32_t seed = 99;
-    const int32_t lw = 13, lh = 7;
-    for (size_t fi = 0; fi < sizeof all_formats / sizeof all_formats[0]; fi++) {
+    /* The second size spans several of the copy's 16 x 16 tiles, with
+     * partial tiles on every side of the rectangle. */
+    static const struct {
+        int32_t lw, lh;
+        fx_rect r;
+    } sizes[] = {{13, 7, {2, 1, 11, 5}}, {53, 41, {3, 2, 50, 39}}};
+    for (size_t n = 0; n < sizeof all_formats / sizeof all_formats[0] * 2; n++) {
+        size_t fi = n / 2, si = n % 2;
+        const int32_t lw = sizes[si].lw, lh = sizes[si].lh;
         fx_format f = all_formats[fi];
         for (size_t ri = 0; ri < 4; ri++) {
             int rot = rotations[ri];
@@ -238,7 +245,7 @@ FX_TEST(rotated_copies_land_every_pixel_in_every_format)
                 for (int32_t x = 0; x < pw; x++)
                     old[y * pw + x] = fx_surface_get_native(&dst, x, y);
 
-            fx_rect r = R(2, 1, 11, 5);
+            fx_rect r = sizes[si].r;
             fx_copy_rotated(&dst, &src, r, rot);
             fx_rect pr = fx_rect_rotate(r, rot, pw, ph);
             int64_t changed_area = 0;
