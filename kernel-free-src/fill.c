@@ -164,14 +164,14 @@ static void edge_setup(fx_tri_edge *g, int64_t x0, int64_t y0, int64_t x1, int64
     g->rs = r * ((int64_t)1 << s);
 }
 
+/* Branch-free: whether the error wraps is close to random from row to row
+ * on a sloped edge, and the edges of a row do not depend on each other, so
+ * a mask costs less than the mispredicted branches. */
 static inline void edge_step(fx_tri_edge *g)
 {
-    g->x += g->qs;
-    g->e -= g->rs;
-    if (g->e < 0) {
-        g->e += g->d;
-        g->x++;
-    }
+    int64_t e = g->e - g->rs, m = -(int64_t)(e < 0);
+    g->e = e + (g->d & m);
+    g->x += g->qs - m;
 }
 
 /* ---- span loops ---- */
@@ -689,18 +689,14 @@ int fx_tri_next_span(fx_tri *t, fx_tri_span *s) { return tri_next(t, s); }
             int64_t a = lx < cx0 ? cx0 : lx, b = rx > cx1 ? cx1 : rx;                            \
             if (a < b)                                                                           \
                 RUN((TYPE *)row + a, (int32_t)(b - a), (TYPE)v);                                 \
-            lx += lq;                                                                            \
+            /* branch-free, as edge_step */                                                     \
             le -= lr;                                                                            \
-            if (le < 0) {                                                                        \
-                le += ld;                                                                        \
-                lx++;                                                                            \
-            }                                                                                    \
-            rx += rq;                                                                            \
             re -= rr;                                                                            \
-            if (re < 0) {                                                                        \
-                re += rd;                                                                        \
-                rx++;                                                                            \
-            }                                                                                    \
+            int64_t lm = -(int64_t)(le < 0), rm = -(int64_t)(re < 0);                            \
+            le += ld & lm;                                                                       \
+            re += rd & rm;                                                                       \
+            lx += lq - lm;                                                                       \
+            rx += rq - rm;                                                                       \
         }                                                                                        \
         pl->x = lx, pl->e = le, pr->x = rx, pr->e = re;                                          \
     }
