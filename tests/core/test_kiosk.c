@@ -122,3 +122,124 @@ FX_TEST(kiosk_ring_buffer_is_bounded)
     FX_CHECK_EQ(kiosk_hist_at(s, 10, 0), (int64_t)(last - 9) * 1000);
     FX_CHECK_EQ(kiosk_hist_at(s, KIOSK_HIST_MAX, 0), (int64_t)(last - KIOSK_HIST_MAX + 1) * 1000);
 }
+
+FX_TEST(kiosk_heat_config)
+{
+    char err[128];
+    FX_CHECK_EQ(cfg("grid 2x1\nwidget heat m cells=4x3 min=-5 max=5 cmap=hot smooth=1\n", err), 0);
+    FX_CHECK_EQ(K.sources[0].kind, KIOSK_KIND_HEAT);
+    FX_CHECK_EQ(K.sources[0].gw, 4);
+    FX_CHECK_EQ(K.sources[0].gh, 3);
+    FX_CHECK_EQ(K.widgets[0].cmap, (int)FX_CMAP_HOT);
+    FX_CHECK_EQ(K.widgets[0].smooth, 1);
+    FX_CHECK_EQ(K.sources[0].cells[11], KIOSK_CELL_NONE);
+    FX_CHECK_EQ(cfg("widget heat m\n", err), -1);
+    FX_CHECK(strstr(err, "cells=CxR") != NULL);
+    FX_CHECK_EQ(cfg("widget heat m cells=17x1\n", err), -1);
+    FX_CHECK_EQ(cfg("widget heat m cells=4x4 cmap=plasma\n", err), -1);
+    FX_CHECK_EQ(cfg("widget heat m cells=4x4 max=3000000\n", err), -1);
+    FX_CHECK_EQ(cfg("widget number m cells=4x4\n", err), -1); /* heat keys on other widgets */
+    FX_CHECK_EQ(cfg("grid 2x1\nwidget heat m cells=4x4\nwidget heat m col=1 cells=4x3\n", err), -1);
+    FX_CHECK(strstr(err, "same cells") != NULL);
+    FX_CHECK_EQ(cfg("grid 2x1\nwidget heat m cells=4x4\nwidget number m col=1\n", err), -1);
+    FX_CHECK_EQ(cfg("grid 2x1\nwidget image m\nwidget gauge m col=1\n", err), -1);
+    FX_CHECK_EQ(cfg("grid 2x1\nwidget text m\nwidget gauge m col=1\n", err), 0);
+    FX_CHECK_EQ(K.sources[0].kind, KIOSK_KIND_NUMBER);
+}
+
+FX_TEST(kiosk_heat_lines)
+{
+    char err[128];
+    FX_CHECK_EQ(cfg("grid 2x1\nwidget heat m cells=3x2\nwidget number t col=1\n", err), 0);
+    FX_CHECK_EQ(line("m[1]=7,8,9.5", 5), KIOSK_LINE_OK);
+    FX_CHECK_EQ(K.changed, 1u);
+    FX_CHECK_EQ(K.sources[0].cells[0], KIOSK_CELL_NONE); /* row 0 not sent yet */
+    FX_CHECK_EQ(K.sources[0].cells[3], 7000);
+    FX_CHECK_EQ(K.sources[0].cells[5], 9500);
+    FX_CHECK_EQ(line(" m = 1, 2,3 ,4,-5,6 ", 6), KIOSK_LINE_OK);
+    FX_CHECK_EQ(K.sources[0].cells[0], 1000);
+    FX_CHECK_EQ(K.sources[0].cells[4], -5000);
+    FX_CHECK_EQ(K.sources[0].last_ms, 6);
+    FX_CHECK_EQ(line("m=1,2,3,4,5", 7), KIOSK_LINE_BAD);      /* one short */
+    FX_CHECK_EQ(line("m=1,2,3,4,5,6,7", 7), KIOSK_LINE_BAD);  /* one over */
+    FX_CHECK_EQ(line("m[2]=1,2,3", 7), KIOSK_LINE_BAD);       /* no row 2 */
+    FX_CHECK_EQ(line("m[0]=1,x,3", 7), KIOSK_LINE_BAD);
+    FX_CHECK_EQ(line("m[0=1,2,3", 7), KIOSK_LINE_BAD);
+    FX_CHECK_EQ(line("m[]=1,2,3", 7), KIOSK_LINE_BAD);
+    FX_CHECK_EQ(line("t[0]=1", 7), KIOSK_LINE_BAD);          /* rows belong to heat maps */
+    FX_CHECK_EQ(line("m[0]=1,,3", 7), KIOSK_LINE_BAD);
+    FX_CHECK_EQ(K.sources[0].cells[1], 2000);                /* bad lines changed nothing */
+    FX_CHECK_EQ(K.sources[0].last_ms, 6);
+    /* out-of-range values saturate and never become the "unset" marker */
+    FX_CHECK_EQ(line("m[0]=-9999999,9999999,0", 8), KIOSK_LINE_OK);
+    FX_CHECK_EQ(K.sources[0].cells[0], INT32_MIN + 1);
+    FX_CHECK_EQ(K.sources[0].cells[1], INT32_MAX);
+}
+
+FX_TEST(kiosk_image_paths)
+{
+    char err[128], l[400];
+    FX_CHECK_EQ(cfg("widget image cam path=\"/srv/cam now.png\" filter=nearest\n", err), 0);
+    FX_CHECK(strcmp(K.sources[0].path, "/srv/cam now.png") == 0);
+    FX_CHECK_EQ(K.sources[0].kind, KIOSK_KIND_IMAGE);
+    FX_CHECK_EQ(K.widgets[0].smooth, 0);
+    uint32_t g = K.sources[0].path_gen;
+    FX_CHECK_EQ(line("cam=/tmp/a.ppm", 1), KIOSK_LINE_OK);
+    FX_CHECK(strcmp(K.sources[0].path, "/tmp/a.ppm") == 0);
+    FX_CHECK_EQ(line("cam=/tmp/a.ppm", 2), KIOSK_LINE_OK); /* the same path again: a reload */
+    FX_CHECK_EQ(K.sources[0].path_gen, g + 2);
+    memset(l, 0, sizeof l);
+    memcpy(l, "cam=/", 5);
+    memset(l + 5, 'a', KIOSK_PATH_MAX - 2); /* 4 + 1 + 254 = a 255-byte path fits */
+    FX_CHECK_EQ(line(l, 3), KIOSK_LINE_OK);
+    FX_CHECK_EQ(strlen(K.sources[0].path), (size_t)KIOSK_PATH_MAX - 1);
+    l[5 + KIOSK_PATH_MAX - 2] = 'a'; /* one more does not */
+    FX_CHECK_EQ(line(l, 4), KIOSK_LINE_BAD);
+    FX_CHECK_EQ(line("cam=a\"b", 4), KIOSK_LINE_BAD);
+    FX_CHECK_EQ(K.sources[0].path_gen, g + 3);
+    FX_CHECK_EQ(cfg("widget image cam filter=cubic\n", err), -1);
+}
+
+FX_TEST(kiosk_csv_header)
+{
+    char err[128];
+    FX_CHECK_EQ(cfg("grid 2x2\nwidget number temp\nwidget number hum col=1\nwidget text state row=1\n"
+                    "widget image cam col=1 row=1\n", err), 0);
+    FX_CHECK_EQ(line("time,temp,hum", 1), KIOSK_LINE_HEADER);
+    FX_CHECK_EQ(K.ncols, 3);
+    FX_CHECK_EQ(line("12:00,21.5,40", 2), KIOSK_LINE_OK);
+    FX_CHECK_EQ(K.sources[0].value, 21500);
+    FX_CHECK_EQ(K.sources[1].value, 40000);
+    FX_CHECK_EQ(K.changed, 3u);
+    FX_CHECK_EQ(line("12:01,,41", 3), KIOSK_LINE_OK); /* an empty field leaves its source alone */
+    FX_CHECK_EQ(K.sources[0].last_ms, 2);
+    FX_CHECK_EQ(K.sources[1].value, 41000);
+    FX_CHECK_EQ(K.changed, 2u);
+    FX_CHECK_EQ(line("12:02,22,wet", 4), KIOSK_LINE_BAD); /* all or nothing */
+    FX_CHECK_EQ(K.sources[0].value, 21500);
+    FX_CHECK_EQ(line("12:02,,", 4), KIOSK_LINE_IGNORED);
+    FX_CHECK_EQ(line("temp,19", 5), KIOSK_LINE_OK); /* other field counts: name,value as before */
+    FX_CHECK_EQ(K.sources[0].value, 19000);
+    FX_CHECK_EQ(line("temp=18", 5), KIOSK_LINE_OK);
+    FX_CHECK_EQ(line("a,b,c,d", 6), KIOSK_LINE_HEADER); /* a new header replaces the old one */
+    FX_CHECK_EQ(line("12:00,21.5,40", 7), KIOSK_LINE_BAD);
+    FX_CHECK_EQ(line("state,cam,temp,x", 8), KIOSK_LINE_HEADER);
+    FX_CHECK_EQ(line("pump on,/img/1.png,20,?", 9), KIOSK_LINE_OK);
+    FX_CHECK(strcmp(K.sources[2].text, "pump on") == 0);
+    FX_CHECK(strcmp(K.sources[3].path, "/img/1.png") == 0);
+    FX_CHECK_EQ(K.changed, 0xDu);
+    /* not all names, so no header: "1a" is read as an unknown name,value */
+    FX_CHECK_EQ(line("1a,b,c", 9), KIOSK_LINE_IGNORED);
+    FX_CHECK_EQ(K.ncols, 4);
+    /* a two-column CSV needs its header in the config */
+    FX_CHECK_EQ(cfg("grid 2x1\ncolumns when,temp\nwidget number temp\n", err), 0);
+    FX_CHECK_EQ(K.ncols, 2);
+    FX_CHECK_EQ(line("08:15,3.25", 1), KIOSK_LINE_OK);
+    FX_CHECK_EQ(K.sources[0].value, 3250);
+    FX_CHECK_EQ(cfg("columns a,1b\n", err), -1);
+    FX_CHECK_EQ(cfg("columns t,m\nwidget heat m cells=2x2\n", err), -1);
+    FX_CHECK(strstr(err, "heat") != NULL);
+    FX_CHECK_EQ(cfg("widget heat m cells=2x2\n", err), 0);
+    FX_CHECK_EQ(line("t,m,x", 1), KIOSK_LINE_BAD); /* heat maps take no CSV column */
+    FX_CHECK_EQ(K.ncols, 0);
+}

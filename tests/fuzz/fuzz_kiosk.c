@@ -1,5 +1,7 @@
-/* libFuzzer target: fixel-kiosk's config and data-line parsers. The input
- * is split at the first NUL: config before it, data lines after. */
+/* libFuzzer target: fixel-kiosk's config and data-line parsers, every
+ * widget type and data form (name=value, name,value, heat maps whole and by
+ * row, image paths, CSV headers and rows). The input is split at the first
+ * NUL: config before it, data lines after. Seeds: tests/fuzz/corpus/kiosk. */
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
@@ -26,8 +28,20 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (kiosk_data_line(&k, q, (size_t)(eol - q), t++, &s) == KIOSK_LINE_OK &&
             (s < 0 || s >= k.nsources))
             __builtin_trap();
-        for (int i = 0; i < k.nsources; i++)
-            if (k.sources[i].count > KIOSK_HIST_MAX) __builtin_trap();
+        if (k.nsources < 32 && (k.changed >> k.nsources)) __builtin_trap(); /* only real sources change */
+        if (k.ncols < 0 || k.ncols > KIOSK_CSV_MAX) __builtin_trap();
+        for (int i = 0; i < k.ncols; i++)
+            if (!memchr(k.colname[i], 0, KIOSK_NAME_MAX)) __builtin_trap();
+        for (int i = 0; i < k.nsources; i++) {
+            const kiosk_source *so = &k.sources[i];
+            if (so->count > KIOSK_HIST_MAX) __builtin_trap();
+            if (!memchr(so->path, 0, KIOSK_PATH_MAX) || !memchr(so->text, 0, KIOSK_TEXT_MAX)) __builtin_trap();
+            if (so->kind == KIOSK_KIND_HEAT) {
+                if (so->gw < 1 || so->gh < 1 || so->gw * so->gh > KIOSK_HEAT_MAX) __builtin_trap();
+                for (int c = so->gw * so->gh; c < KIOSK_HEAT_MAX; c++)
+                    if (so->cells[c] != KIOSK_CELL_NONE) __builtin_trap(); /* no write past the map */
+            }
+        }
         q = eol + 1;
     }
     return 0;

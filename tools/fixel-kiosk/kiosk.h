@@ -12,11 +12,25 @@
 #define KIOSK_NAME_MAX 32   /* source names, including the NUL */
 #define KIOSK_TEXT_MAX 64   /* labels, units, text values, including the NUL */
 #define KIOSK_HIST_MAX 256  /* ring buffer length per source */
-#define KIOSK_LINE_MAX 256  /* longer data lines are bad lines */
+#define KIOSK_LINE_MAX 1024 /* longer data lines are bad lines (a 16x16 heat map fits) */
+#define KIOSK_HEAT_MAX 256  /* cells of one heat map source (cells=CxR, C*R <= this) */
+#define KIOSK_HEAT_DIM 16   /* C, R <= this */
+#define KIOSK_PATH_MAX 256  /* image paths, including the NUL */
+#define KIOSK_CSV_MAX 32    /* columns of a CSV header */
+#define KIOSK_CELL_NONE INT32_MIN /* a heat map cell no line has set yet */
 
 typedef enum kiosk_type {
-    KIOSK_NUMBER, KIOSK_GAUGE, KIOSK_BAR, KIOSK_SPARK, KIOSK_TEXT, KIOSK_CLOCK
+    KIOSK_NUMBER, KIOSK_GAUGE, KIOSK_BAR, KIOSK_SPARK, KIOSK_TEXT, KIOSK_CLOCK, KIOSK_HEAT, KIOSK_IMAGE,
+    KIOSK_NTYPES
 } kiosk_type;
+
+/* What a source carries, fixed by the widgets that show it. */
+typedef enum kiosk_kind {
+    KIOSK_KIND_TEXT = 0, /* only text widgets: any printable value */
+    KIOSK_KIND_NUMBER,   /* number gauge bar spark (text widgets may share it) */
+    KIOSK_KIND_HEAT,     /* heat: a list of numbers, one per cell */
+    KIOSK_KIND_IMAGE     /* image: a file path */
+} kiosk_kind;
 
 typedef struct kiosk_widget {
     kiosk_type type;
@@ -25,6 +39,8 @@ typedef struct kiosk_widget {
     int decimals;              /* 0..3 */
     int64_t min, max;          /* milli-units; min == max: automatic (spark) */
     uint32_t color;            /* 0xAARRGGBB accent */
+    int cmap;                  /* heat: an fx_cmap */
+    int smooth;                /* heat: bilinear between cell centres; image: bilinear scaling */
     char label[KIOSK_TEXT_MAX];
     char unit[KIOSK_TEXT_MAX];
 } kiosk_widget;
@@ -38,6 +54,11 @@ typedef struct kiosk_source {
     int64_t hist[KIOSK_HIST_MAX];
     uint32_t head, count;      /* ring buffer: next slot, valid entries */
     uint32_t updates;
+    kiosk_kind kind;
+    int gw, gh;                /* heat: cells across and down */
+    int32_t cells[KIOSK_HEAT_MAX]; /* heat: milli-units, row-major, KIOSK_CELL_NONE unset */
+    char path[KIOSK_PATH_MAX]; /* image: the file shown */
+    uint32_t path_gen;         /* image: bumped by every line naming a path (forces a reload) */
 } kiosk_source;
 
 typedef struct kiosk_config {
@@ -47,6 +68,9 @@ typedef struct kiosk_config {
     int history;               /* ring buffer entries shown (<= KIOSK_HIST_MAX) */
     uint32_t bg, panel, fg;
     char title[KIOSK_TEXT_MAX];
+    int ncols;                 /* CSV header in force (0: none); from "columns" or a data line */
+    char colname[KIOSK_CSV_MAX][KIOSK_NAME_MAX]; /* the source each column feeds, by name */
+    uint32_t changed;          /* sources (bit i = source i) the last data line updated */
     int nwidgets, nsources;
     kiosk_widget widgets[KIOSK_MAX_WIDGETS];
     kiosk_source sources[KIOSK_MAX_SOURCES];
@@ -63,13 +87,19 @@ int kiosk_parse_milli(const char *s, size_t len, int64_t *out);
 typedef enum kiosk_line_result {
     KIOSK_LINE_OK = 0,      /* a value was stored */
     KIOSK_LINE_IGNORED = 1, /* blank, comment, or a name no widget shows */
+    KIOSK_LINE_HEADER = 2,  /* a CSV header: it names the columns of the rows after it */
     KIOSK_LINE_BAD = -1     /* malformed: counted and shown, never fatal */
 } kiosk_line_result;
 
-/* One data line (no newline) "name=value" or "name,value" at time now_ms.
- * Sources feeding number/gauge/bar/spark widgets need a number; text
- * widgets take any printable value. Returns a kiosk_line_result; on OK
- * *src is the source index updated. */
+/* One data line (no newline) at time now_ms; docs/kiosk.md has the full
+ * grammar. "name=value" or "name,value": sources feeding number/gauge/bar/
+ * spark widgets need a number, text widgets take any printable value, image
+ * widgets a path. "name=v1,v2,..." sets every cell of a heat map (row-major),
+ * "name[R]=v1,..." one row. A line of three or more comma-separated names is
+ * a CSV header; while one is in force, a line with that many fields and no
+ * '=' is a CSV row, column i feeding the source named by header field i.
+ * Returns a kiosk_line_result; on OK *src is one source updated and
+ * k->changed has a bit for every source updated. */
 int kiosk_data_line(kiosk_config *k, const char *line, size_t len, int64_t now_ms, int *src);
 
 /* History entry i of source s, 0 = oldest of the last n (n <= count). */

@@ -6,6 +6,8 @@
 
 #include <string.h>
 
+#include "fixel/colormap.h"
+
 static int is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 static int is_name_char(char c)
 {
@@ -153,7 +155,33 @@ static int find_source(const kiosk_config *k, const char *s, size_t n)
     return -1;
 }
 
-static const char *const type_names[] = {"number", "gauge", "bar", "spark", "text", "clock"};
+static const char *const type_names[KIOSK_NTYPES] = {"number", "gauge", "bar", "spark",
+                                                      "text",   "clock", "heat", "image"};
+
+/* A path: printable, no quotes (one pair around it is stripped). */
+static int parse_path(tok t, char *dst)
+{
+    if (t.n >= 2 && t.s[0] == '"' && t.s[t.n - 1] == '"') { t.s++; t.n -= 2; }
+    if (t.n == 0 || t.n >= KIOSK_PATH_MAX) return -1;
+    for (size_t i = 0; i < t.n; i++)
+        if ((unsigned char)t.s[i] < 0x20 || t.s[i] == 0x7f || t.s[i] == '"') return -1;
+    copy_str(dst, KIOSK_PATH_MAX, t.s, t.n);
+    return 0;
+}
+
+static int parse_cmap(tok t, int *out)
+{
+    char name[16];
+    if (t.n == 0 || t.n >= sizeof name) return -1;
+    copy_str(name, sizeof name, t.s, t.n);
+    fx_cmap m = fx_cmap_from_name(name);
+    if (m == FX_CMAP_COUNT) return -1;
+    *out = (int)m;
+    return 0;
+}
+
+static int parse_header(kiosk_config *k, const char *l, size_t a, size_t b, int min_fields);
+static int header_has_heat(const kiosk_config *k);
 
 static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
 {
@@ -163,15 +191,18 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
     memset(w, 0, sizeof *w);
     if (next_tok(&p, end, &t) != 1) return "widget needs a type";
     int ty = -1;
-    for (int i = 0; i < 6; i++)
+    for (int i = 0; i < KIOSK_NTYPES; i++)
         if (tok_is(t, type_names[i])) ty = i;
-    if (ty < 0) return "unknown widget type (number gauge bar spark text clock)";
+    if (ty < 0) return "unknown widget type (number gauge bar spark text clock heat image)";
     w->type = (kiosk_type)ty;
     w->source = -1;
     w->w = w->h = 1;
     w->max = 100000;
     w->color = 0xFF4FC3F7u;
     if (w->type == KIOSK_SPARK) w->max = 0; /* automatic range */
+    if (w->type == KIOSK_IMAGE) w->smooth = 1;
+    if (w->type == KIOSK_HEAT) w->cmap = FX_CMAP_VIRIDIS;
+    int cw = 0, ch = 0;
     if (w->type != KIOSK_CLOCK) {
         if (next_tok(&p, end, &t) != 1) return "widget needs a source name";
         for (size_t i = 0; i < t.n; i++)
@@ -204,14 +235,45 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
         else if (tok_is(key, "color")) bad = parse_color(val, &w->color);
         else if (tok_is(key, "label")) bad = parse_text(val, w->label);
         else if (tok_is(key, "unit")) bad = parse_text(val, w->unit);
-        else return "unknown widget key (col row w h decimals min max color label unit)";
+        else if (tok_is(key, "cells") && w->type == KIOSK_HEAT) bad = parse_pair(val, 1, KIOSK_HEAT_DIM, &cw, &ch);
+        else if (tok_is(key, "cmap") && w->type == KIOSK_HEAT) bad = parse_cmap(val, &w->cmap);
+        else if (tok_is(key, "smooth") && w->type == KIOSK_HEAT) bad = parse_int(val, 0, 1, &w->smooth);
+        else if (tok_is(key, "filter") && w->type == KIOSK_IMAGE)
+            bad = tok_is(val, "nearest") ? (w->smooth = 0, 0) : tok_is(val, "bilinear") ? (w->smooth = 1, 0) : -1;
+        else if (tok_is(key, "path") && w->type == KIOSK_IMAGE) bad = parse_path(val, k->sources[w->source].path);
+        else return "unknown widget key (col row w h decimals min max color label unit; heat: cells cmap smooth; "
+                    "image: path filter)";
         if (bad) return "bad widget value";
     }
     if (r < 0) return "unterminated quote";
     if (w->min > w->max || (w->min == w->max && w->type != KIOSK_SPARK && w->type != KIOSK_NUMBER &&
-                            w->type != KIOSK_TEXT && w->type != KIOSK_CLOCK))
+                            w->type != KIOSK_TEXT && w->type != KIOSK_CLOCK && w->type != KIOSK_IMAGE))
         return "min must be below max";
     if (w->max - w->min > INT64_MAX / 4096) return "range too large";
+    if (w->type == KIOSK_HEAT && (w->min < -2000000000 || w->max > 2000000000))
+        return "heat min/max must lie within +-2000000";
+    if (w->source >= 0) {
+        kiosk_source *so = &k->sources[w->source];
+        kiosk_kind want = w->type == KIOSK_HEAT ? KIOSK_KIND_HEAT : w->type == KIOSK_IMAGE ? KIOSK_KIND_IMAGE
+                        : w->type == KIOSK_TEXT ? KIOSK_KIND_TEXT : KIOSK_KIND_NUMBER;
+        int shown = 0;
+        for (int i = 0; i < k->nwidgets; i++) shown |= k->widgets[i].source == w->source;
+        kiosk_kind have = shown ? so->kind : want;
+        /* text widgets may show a number's text; any other mix has no common value */
+        if (have != want && !((have == KIOSK_KIND_TEXT && want == KIOSK_KIND_NUMBER) ||
+                              (have == KIOSK_KIND_NUMBER && want == KIOSK_KIND_TEXT)))
+            return "source shown by widgets wanting different values (heat, image, other)";
+        if (have == KIOSK_KIND_TEXT && want == KIOSK_KIND_NUMBER) have = want;
+        so->kind = have;
+        if (w->type == KIOSK_HEAT) {
+            if (!cw) return "heat needs cells=CxR";
+            if (cw * ch > KIOSK_HEAT_MAX) return "heat has too many cells";
+            if (shown && (so->gw != cw || so->gh != ch)) return "heat widgets of one source need the same cells";
+            so->gw = cw;
+            so->gh = ch;
+            for (int i = 0; i < KIOSK_HEAT_MAX; i++) so->cells[i] = KIOSK_CELL_NONE;
+        }
+    }
     k->nwidgets++;
     return NULL;
 }
@@ -263,7 +325,9 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
             else if (tok_is(t, "bg")) msg = parse_color(v, &k->bg) ? "bad colour (#rrggbb)" : NULL;
             else if (tok_is(t, "panel")) msg = parse_color(v, &k->panel) ? "bad colour (#rrggbb)" : NULL;
             else if (tok_is(t, "fg")) msg = parse_color(v, &k->fg) ? "bad colour (#rrggbb)" : NULL;
-            else msg = "unknown directive (title grid size stale history bg panel fg widget)";
+            else if (tok_is(t, "columns"))
+                msg = parse_header(k, v.s, 0, v.n, 2) ? "columns wants name,name,... (up to 32, no heat sources)" : NULL;
+            else msg = "unknown directive (title grid size stale history bg panel fg columns widget)";
             if (!msg && next_tok(&q, eol, &extra) != 0) msg = "extra text after value";
         }
         if (msg) {
@@ -284,6 +348,13 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
         }
         p = eol < end ? eol + 1 : end;
     }
+    if (k->ncols && header_has_heat(k)) {
+        const char *m = "columns names a heat source (heat maps take name=v1,v2,... lines)";
+        size_t o = 0;
+        for (; err && m[o] && o + 1 < errsize; o++) err[o] = m[o];
+        if (err && errsize) err[o] = 0;
+        return -1;
+    }
     for (int i = 0; i < k->nwidgets; i++) {
         const kiosk_widget *w = &k->widgets[i];
         if (w->col + w->w > k->cols || w->row + w->h > k->rows) {
@@ -301,49 +372,180 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
 
 /* ---- data ---- */
 
-static int source_numeric(const kiosk_config *k, int s)
+static int is_name_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+
+/* Split [a, b) at commas into at most max fields, spaces trimmed. Returns
+ * the number of fields, or -1 when there are more than max. */
+static int split_fields(const char *l, size_t a, size_t b, size_t *fs, size_t *fe, int max)
 {
-    for (int i = 0; i < k->nwidgets; i++)
-        if (k->widgets[i].source == s && k->widgets[i].type != KIOSK_TEXT) return 1;
+    int n = 0;
+    for (size_t p = a;;) {
+        size_t q = p;
+        while (q < b && l[q] != ',') q++;
+        if (n == max) return -1;
+        size_t x = p, y = q;
+        while (x < y && is_space(l[x])) x++;
+        while (y > x && is_space(l[y - 1])) y--;
+        fs[n] = x;
+        fe[n] = y;
+        n++;
+        if (q == b) return n;
+        p = q + 1;
+    }
+}
+
+static int header_has_heat(const kiosk_config *k)
+{
+    for (int i = 0; i < k->ncols; i++) {
+        int s = find_source(k, k->colname[i], strlen(k->colname[i]));
+        if (s >= 0 && k->sources[s].kind == KIOSK_KIND_HEAT) return 1;
+    }
     return 0;
+}
+
+/* A CSV header: min_fields or more names, each starting with a letter or
+ * '_'. Installs it and returns 0; -1 (nothing changed) when l is not one. */
+static int parse_header(kiosk_config *k, const char *l, size_t a, size_t b, int min_fields)
+{
+    size_t fs[KIOSK_CSV_MAX], fe[KIOSK_CSV_MAX];
+    int n = split_fields(l, a, b, fs, fe, KIOSK_CSV_MAX);
+    if (n < min_fields) return -1;
+    for (int i = 0; i < n; i++) {
+        if (fe[i] == fs[i] || fe[i] - fs[i] >= KIOSK_NAME_MAX || !is_name_start(l[fs[i]])) return -1;
+        for (size_t c = fs[i]; c < fe[i]; c++)
+            if (!is_name_char(l[c])) return -1;
+    }
+    for (int i = 0; i < n; i++) copy_str(k->colname[i], KIOSK_NAME_MAX, l + fs[i], fe[i] - fs[i]);
+    k->ncols = n;
+    return 0;
+}
+
+static void touch(kiosk_config *k, int s, const char *v, size_t n, int64_t now_ms)
+{
+    kiosk_source *so = &k->sources[s];
+    copy_str(so->text, KIOSK_TEXT_MAX, v, n);
+    so->last_ms = now_ms;
+    so->updates++;
+    k->changed |= 1u << s;
+}
+
+/* Is value v[0..n) acceptable for source s (row: a heat row index or -1)? */
+static int value_ok(const kiosk_config *k, int s, const char *v, size_t n)
+{
+    int64_t x;
+    switch (k->sources[s].kind) {
+    case KIOSK_KIND_NUMBER: return kiosk_parse_milli(v, n, &x) == 0;
+    case KIOSK_KIND_TEXT: return n > 0 && n < KIOSK_TEXT_MAX;
+    case KIOSK_KIND_IMAGE: return n > 0 && n < KIOSK_PATH_MAX && memchr(v, '"', n) == NULL;
+    default: return 0;
+    }
+}
+
+/* Store a value value_ok accepted. */
+static void store(kiosk_config *k, int s, const char *v, size_t n, int64_t now_ms)
+{
+    kiosk_source *so = &k->sources[s];
+    int64_t x;
+    touch(k, s, v, n, now_ms);
+    if (so->kind == KIOSK_KIND_IMAGE) {
+        copy_str(so->path, KIOSK_PATH_MAX, v, n);
+        so->path_gen++;
+        return;
+    }
+    if (kiosk_parse_milli(v, n, &x) == 0) {
+        so->value = x;
+        so->has_value = 1;
+        so->hist[so->head] = x;
+        so->head = (so->head + 1) % KIOSK_HIST_MAX;
+        if (so->count < KIOSK_HIST_MAX) so->count++;
+    }
+}
+
+/* "v1,v2,..." into heat source s: all cells (row < 0) or one row. */
+static int store_heat(kiosk_config *k, int s, int row, const char *l, size_t a, size_t b, int64_t now_ms)
+{
+    kiosk_source *so = &k->sources[s];
+    size_t fs[KIOSK_HEAT_MAX], fe[KIOSK_HEAT_MAX];
+    int32_t v[KIOSK_HEAT_MAX];
+    int want = row < 0 ? so->gw * so->gh : so->gw;
+    if (row >= so->gh) return KIOSK_LINE_BAD;
+    if (split_fields(l, a, b, fs, fe, KIOSK_HEAT_MAX) != want) return KIOSK_LINE_BAD;
+    for (int i = 0; i < want; i++) {
+        int64_t x;
+        if (kiosk_parse_milli(l + fs[i], fe[i] - fs[i], &x)) return KIOSK_LINE_BAD;
+        /* KIOSK_CELL_NONE stays reserved for "unset" */
+        v[i] = x > INT32_MAX ? INT32_MAX : x <= INT32_MIN ? INT32_MIN + 1 : (int32_t)x;
+    }
+    memcpy(so->cells + (row < 0 ? 0 : row * so->gw), v, (size_t)want * sizeof v[0]);
+    so->has_value = 1;
+    touch(k, s, l + a, b - a, now_ms);
+    return KIOSK_LINE_OK;
+}
+
+static int csv_row(kiosk_config *k, const char *l, size_t a, size_t b, int64_t now_ms, int *src)
+{
+    size_t fs[KIOSK_CSV_MAX], fe[KIOSK_CSV_MAX];
+    int idx[KIOSK_CSV_MAX];
+    int n = split_fields(l, a, b, fs, fe, KIOSK_CSV_MAX), used = 0;
+    /* all or nothing: a row with one bad field changes no source */
+    for (int i = 0; i < n; i++) {
+        idx[i] = fe[i] > fs[i] ? find_source(k, k->colname[i], strlen(k->colname[i])) : -1;
+        if (idx[i] >= 0 && !value_ok(k, idx[i], l + fs[i], fe[i] - fs[i])) return KIOSK_LINE_BAD;
+    }
+    for (int i = 0; i < n; i++)
+        if (idx[i] >= 0) {
+            store(k, idx[i], l + fs[i], fe[i] - fs[i], now_ms);
+            if (src) *src = idx[i];
+            used++;
+        }
+    return used ? KIOSK_LINE_OK : KIOSK_LINE_IGNORED;
 }
 
 int kiosk_data_line(kiosk_config *k, const char *line, size_t len, int64_t now_ms, int *src)
 {
     size_t a = 0, b = len, sep;
+    k->changed = 0;
     while (a < b && is_space(line[a])) a++;
     while (b > a && (is_space(line[b - 1]) || line[b - 1] == '\n')) b--;
     if (a == b || line[a] == '#') return KIOSK_LINE_IGNORED;
     if (len > KIOSK_LINE_MAX) return KIOSK_LINE_BAD;
+    for (size_t i = a; i < b; i++)
+        if ((unsigned char)line[i] < 0x20 || line[i] == 0x7f) return KIOSK_LINE_BAD;
+    if (!memchr(line + a, '=', b - a)) {
+        int commas = 0;
+        for (size_t i = a; i < b; i++) commas += line[i] == ',';
+        if (commas >= 2 && parse_header(k, line, a, b, 3) == 0)
+            return header_has_heat(k) ? (k->ncols = 0, KIOSK_LINE_BAD) : KIOSK_LINE_HEADER;
+        if (k->ncols >= 2 && commas + 1 == k->ncols) return csv_row(k, line, a, b, now_ms, src);
+    }
     for (sep = a; sep < b && line[sep] != '=' && line[sep] != ','; sep++)
-        if (!is_name_char(line[sep]) && !is_space(line[sep])) return KIOSK_LINE_BAD;
+        if (!is_name_char(line[sep]) && !is_space(line[sep]) && line[sep] != '[' && line[sep] != ']')
+            return KIOSK_LINE_BAD;
     if (sep == b) return KIOSK_LINE_BAD;
     size_t ne = sep, vs = sep + 1;
+    int row = -1;
     while (ne > a && is_space(line[ne - 1])) ne--;
     while (vs < b && is_space(line[vs])) vs++;
+    if (ne > a && line[ne - 1] == ']') { /* name[R]: one row of a heat map */
+        size_t lb = ne - 1;
+        while (lb > a && line[lb] != '[') lb--;
+        if (line[lb] != '[' || parse_int((tok){line + lb + 1, ne - 2 - lb}, 0, KIOSK_HEAT_DIM - 1, &row))
+            return KIOSK_LINE_BAD;
+        ne = lb;
+    }
     if (ne == a || ne - a >= KIOSK_NAME_MAX) return KIOSK_LINE_BAD;
     for (size_t i = a; i < ne; i++)
         if (!is_name_char(line[i])) return KIOSK_LINE_BAD;
-    if (vs == b || b - vs >= KIOSK_TEXT_MAX) return KIOSK_LINE_BAD;
-    for (size_t i = vs; i < b; i++)
-        if ((unsigned char)line[i] < 0x20 || line[i] == 0x7f) return KIOSK_LINE_BAD;
+    if (vs == b) return KIOSK_LINE_BAD;
     int s = find_source(k, line + a, ne - a);
-    int64_t v = 0;
-    int numeric = s >= 0 ? source_numeric(k, s) : 0;
-    int parsed = kiosk_parse_milli(line + vs, b - vs, &v) == 0;
-    if (s < 0) return parsed || !numeric ? KIOSK_LINE_IGNORED : KIOSK_LINE_BAD;
-    if (numeric && !parsed) return KIOSK_LINE_BAD;
-    kiosk_source *so = &k->sources[s];
-    copy_str(so->text, KIOSK_TEXT_MAX, line + vs, b - vs);
-    so->last_ms = now_ms;
-    so->updates++;
-    if (parsed) {
-        so->value = v;
-        so->has_value = 1;
-        so->hist[so->head] = v;
-        so->head = (so->head + 1) % KIOSK_HIST_MAX;
-        if (so->count < KIOSK_HIST_MAX) so->count++;
+    if (s < 0) return KIOSK_LINE_IGNORED;
+    if (k->sources[s].kind == KIOSK_KIND_HEAT) {
+        int r = store_heat(k, s, row, line, vs, b, now_ms);
+        if (r == KIOSK_LINE_OK && src) *src = s;
+        return r;
     }
+    if (row >= 0 || !value_ok(k, s, line + vs, b - vs)) return KIOSK_LINE_BAD;
+    store(k, s, line + vs, b - vs, now_ms);
     if (src) *src = s;
     return KIOSK_LINE_OK;
 }

@@ -1,15 +1,18 @@
 /* fixel-kiosk — a dashboard for wall and panel displays.
  *
- * A config file (see examples/kiosk-*.conf and docs/tools.md) lays widgets
- * out on a grid; "name=value" lines on stdin, a named pipe or a growing file
- * update them. Everything lives in fixed arrays (kiosk.h): a kiosk that runs
- * for months holds the same memory as one that just started. Only widgets
- * whose picture changed are redrawn and presented (damage rectangles).
+ * A config file (see examples/kiosk-*.conf and docs/kiosk.md) lays widgets
+ * out on a grid; "name=value" or CSV lines on stdin, a named pipe or a
+ * growing file update them. Everything lives in fixed arrays (kiosk.h) except
+ * decoded images, one bounded buffer per image widget, freed before the next
+ * load: a kiosk that runs for months holds the same memory as one that just
+ * started (make kiosk-soak measures it). Only widgets whose picture changed
+ * are redrawn and presented (damage rectangles).
  */
 #include "kiosk.h"
 
 #include <errno.h>
 #include <fcntl.h>
+#include <malloc.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,12 +22,19 @@
 
 #include "fixel/app.h"
 #include "fixel/circle.h"
+#include "fixel/colormap.h"
 #include "fixel/draw.h"
 #include "fixel/fill.h"
 #include "fixel/fixed.h"
 #include "fixel/font.h"
 #include "fixel/line.h"
 #include "fixel/memfb.h"
+#include "fixel/texture.h"
+#include "fixel/viz.h"
+
+#ifndef FX_NO_PNG
+#include <png.h>
+#endif
 
 #define TITLE_H 22
 #define STATUS_H 14
@@ -33,6 +43,27 @@
 #define STALE_FG 0xFF6B7280u
 #define AMBER 0xFFFFB300u
 #define BAD_RED 0xFFEF5350u
+#define EMPTY_CELL 0xFF2A3441u
+
+/* Images larger than this are refused before any pixel memory is taken:
+ * 2048x2048 RGB is 12 MiB, plenty for a panel a few hundred pixels wide. */
+#define IMG_MAX_DIM 4096
+#define IMG_MAX_PIXELS (2048 * 2048)
+
+enum { IMG_NONE, IMG_OK, IMG_MISSING, IMG_BAD, IMG_HUGE };
+
+typedef struct kimg {
+    uint8_t *rgb;    /* decoded R, G, B bytes, w*h*3 */
+    int32_t w, h;
+    int state, tried;
+    char path[KIOSK_PATH_MAX]; /* what the last attempt read */
+    uint32_t gen;
+    int have_id;     /* the file existed at the last attempt */
+    dev_t dev;
+    ino_t ino;
+    off_t size;
+    struct timespec mtim;
+} kimg;
 
 typedef struct kiosk {
     kiosk_config cfg;
@@ -52,6 +83,8 @@ typedef struct kiosk {
     int64_t frame_step;
     int32_t W, H;
     int always_full; /* --full: redraw everything each frame (tests check damage against it) */
+    kimg img[KIOSK_MAX_WIDGETS];
+    uint32_t img_errors;  /* image loads that failed (missing, corrupt, too large) */
 } kiosk;
 
 static int64_t mono_ms(void)
@@ -63,10 +96,10 @@ static int64_t mono_ms(void)
 
 /* ---- data ---- */
 
-static void mark_source(kiosk *k, int s)
+static void mark_sources(kiosk *k, uint32_t mask)
 {
     for (int i = 0; i < k->cfg.nwidgets; i++)
-        if (k->cfg.widgets[i].source == s) k->dirty[i] = 1;
+        if (k->cfg.widgets[i].source >= 0 && (mask >> k->cfg.widgets[i].source & 1)) k->dirty[i] = 1;
 }
 
 static void end_line(kiosk *k)
@@ -102,7 +135,7 @@ static void end_line(kiosk *k)
     k->status_dirty = 1;
     if (r == KIOSK_LINE_BAD) k->bad++;
     else if (r == KIOSK_LINE_IGNORED) k->ignored++;
-    else mark_source(k, s);
+    else if (r == KIOSK_LINE_OK) mark_sources(k, k->cfg.changed);
 }
 
 static void feed(kiosk *k, const char *buf, size_t n)
@@ -141,6 +174,131 @@ static void feed_available(kiosk *k)
         if (r > 0) { feed(k, buf, (size_t)r); continue; }
         if (r < 0 && errno == EINTR) continue;
         break;
+    }
+}
+
+/* ---- images ---- */
+
+/* The next PPM header number; '#' comments run to the end of the line. */
+static int ppm_num(FILE *f, int32_t *out)
+{
+    int c = fgetc(f);
+    for (;;) {
+        while (c == ' ' || c == '\t' || c == '\n' || c == '\r') c = fgetc(f);
+        if (c != '#') break;
+        while (c != EOF && c != '\n') c = fgetc(f);
+    }
+    int32_t v = 0, n = 0;
+    for (; c >= '0' && c <= '9'; c = fgetc(f), n++) {
+        if (n == 7) return -1;
+        v = v * 10 + (c - '0');
+    }
+    /* exactly one whitespace byte ends the number (the last one before the pixels) */
+    if (n == 0 || !(c == ' ' || c == '\t' || c == '\n' || c == '\r')) return -1;
+    *out = v;
+    return 0;
+}
+
+static int dims_ok(int64_t w, int64_t h)
+{
+    return w >= 1 && h >= 1 && w <= IMG_MAX_DIM && h <= IMG_MAX_DIM && w * h <= IMG_MAX_PIXELS;
+}
+
+static int load_ppm(FILE *f, kimg *m)
+{
+    int32_t w, h, maxval;
+    if (fgetc(f) != 'P' || fgetc(f) != '6' || ppm_num(f, &w) || ppm_num(f, &h) || ppm_num(f, &maxval) ||
+        maxval != 255)
+        return IMG_BAD;
+    if (!dims_ok(w, h)) return IMG_HUGE;
+    size_t bytes = (size_t)w * (size_t)h * 3;
+    if (!(m->rgb = malloc(bytes))) return IMG_HUGE;
+    if (fread(m->rgb, 1, bytes, f) != bytes) return IMG_BAD;
+    m->w = w;
+    m->h = h;
+    return IMG_OK;
+}
+
+static int load_png(FILE *f, kimg *m)
+{
+#ifndef FX_NO_PNG
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_stdio(&img, f)) return IMG_BAD;
+    /* the header is read, no pixel memory taken yet: refuse absurd sizes here */
+    if (!dims_ok(img.width, img.height)) { png_image_free(&img); return IMG_HUGE; }
+    img.format = PNG_FORMAT_RGB;
+    if (!(m->rgb = malloc(PNG_IMAGE_SIZE(img)))) { png_image_free(&img); return IMG_HUGE; }
+    if (!png_image_finish_read(&img, NULL, m->rgb, 0, NULL)) { png_image_free(&img); return IMG_BAD; }
+    m->w = (int32_t)img.width;
+    m->h = (int32_t)img.height;
+    return IMG_OK;
+#else
+    (void)f;
+    (void)m;
+    return IMG_BAD; /* built without libpng: PPM only */
+#endif
+}
+
+static int load_image(const char *path, kimg *m)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return IMG_MISSING;
+    unsigned char magic[8];
+    size_t n = fread(magic, 1, sizeof magic, f);
+    int r = IMG_BAD;
+    rewind(f);
+    if (n == 8 && !memcmp(magic, "\x89PNG\r\n\x1a\n", 8)) r = load_png(f, m);
+    else if (n >= 2 && magic[0] == 'P' && magic[1] == '6') r = load_ppm(f, m);
+    fclose(f);
+    if (r != IMG_OK) {
+        free(m->rgb);
+        m->rgb = NULL;
+    }
+    return r;
+}
+
+/* Reload every image whose path was named again or whose file changed
+ * (device, inode, size or mtime): a writer that replaces the file by
+ * rename and one that rewrites it in place are both seen. */
+static void check_images(kiosk *k)
+{
+    for (int i = 0; i < k->cfg.nwidgets; i++) {
+        const kiosk_widget *w = &k->cfg.widgets[i];
+        if (w->type != KIOSK_IMAGE) continue;
+        const kiosk_source *so = &k->cfg.sources[w->source];
+        kimg *m = &k->img[i];
+        struct stat st;
+        int have = so->path[0] && stat(so->path, &st) == 0;
+        if (m->tried && m->gen == so->path_gen && !strcmp(m->path, so->path) && have == m->have_id &&
+            (!have || (st.st_dev == m->dev && st.st_ino == m->ino && st.st_size == m->size &&
+                       st.st_mtim.tv_sec == m->mtim.tv_sec && st.st_mtim.tv_nsec == m->mtim.tv_nsec)))
+            continue;
+        m->tried = 1;
+        m->gen = so->path_gen;
+        snprintf(m->path, sizeof m->path, "%s", so->path);
+        m->have_id = have;
+        if (have) {
+            m->dev = st.st_dev;
+            m->ino = st.st_ino;
+            m->size = st.st_size;
+            m->mtim = st.st_mtim;
+        }
+        free(m->rgb);
+        m->rgb = NULL;
+        m->state = !so->path[0] ? IMG_NONE : load_image(so->path, m);
+        if (m->state != IMG_OK && m->state != IMG_NONE) k->img_errors++;
+        k->dirty[i] = 1;
+        k->status_dirty = 1;
+    }
+}
+
+static void free_images(kiosk *k)
+{
+    for (int i = 0; i < KIOSK_MAX_WIDGETS; i++) {
+        free(k->img[i].rgb);
+        k->img[i].rgb = NULL;
     }
 }
 
@@ -303,6 +461,104 @@ static void draw_spark(kiosk *k, fx_ctx *c, const kiosk_widget *w, fx_rect r, fx
     fx_disc(&t, px, py, 2);
 }
 
+static void draw_heat(kiosk *k, fx_ctx *c, const kiosk_widget *w, fx_rect r, int stale)
+{
+    const kiosk_source *s = &k->cfg.sources[w->source];
+    fx_cmap m = stale ? FX_CMAP_GREY : (fx_cmap)w->cmap;
+    fx_rect a = {r.x0 + 8, r.y0 + 18, r.x1 - 20, r.y1 - 6};
+    fx_rect bar = {r.x1 - 14, r.y0 + 18, r.x1 - 6, r.y1 - 6};
+    if (a.x1 - a.x0 < s->gw || a.y1 - a.y0 < s->gh) return;
+    fx_ctx t = *c;
+    fx_ctx_set_color(&t, DIM);
+    fx_colorbar(&t, bar, m, 0);
+    int full = s->has_value;
+    for (int i = 0; i < s->gw * s->gh; i++) full &= s->cells[i] != KIOSK_CELL_NONE;
+    int32_t lo = (int32_t)w->min, hi = (int32_t)w->max; /* the parser keeps them in int32 */
+    if (w->smooth && full && s->gw >= 2 && s->gh >= 2) {
+        fx_grid g = {s->cells, s->gw, s->gh, s->gw};
+        fx_heatmap(c, a, &g, lo, hi, m);
+        return;
+    }
+    /* blocks, quantised to fx_heatmap's 256 steps so both modes agree on a cell's colour */
+    fx_color tab[256];
+    fx_cmap_table(m, tab, 256);
+    int64_t range = (int64_t)hi - lo;
+    for (int y = 0; y < s->gh; y++)
+        for (int x = 0; x < s->gw; x++) {
+            int32_t x0 = a.x0 + (a.x1 - a.x0) * x / s->gw, x1 = a.x0 + (a.x1 - a.x0) * (x + 1) / s->gw;
+            int32_t y0 = a.y0 + (a.y1 - a.y0) * y / s->gh, y1 = a.y0 + (a.y1 - a.y0) * (y + 1) / s->gh;
+            int32_t v = s->cells[y * s->gw + x];
+            fx_color col = EMPTY_CELL;
+            if (v != KIOSK_CELL_NONE) {
+                int64_t idx = ((int64_t)v - lo) * 255;
+                idx = idx < 0 ? 0 : (idx + range / 2) / range;
+                col = tab[idx > 255 ? 255 : idx];
+            }
+            fill(c, col, x0, y0, x1 - x0, y1 - y0);
+        }
+}
+
+/* Texture coordinates for the image's box: pixel (x, y) samples at its centre. */
+typedef struct img_map {
+    fx_texture tx;
+    int32_t ox, oy, dw, dh;
+} img_map;
+
+static void img_shade(const void *user, int32_t y, int32_t x, int32_t n, fx_color *out)
+{
+    const img_map *m = user;
+    fx16 t = (fx16)((((int64_t)(y - m->oy) * 2 + 1) << 16) / (2 * m->dh));
+    for (int32_t i = 0; i < n; i++) {
+        fx16 s = (fx16)((((int64_t)(x + i - m->ox) * 2 + 1) << 16) / (2 * m->dw));
+        out[i] = fx_tex_sample(&m->tx, s, t);
+    }
+}
+
+static void draw_image(kiosk *k, fx_ctx *c, int i, fx_rect r)
+{
+    const kimg *m = &k->img[i];
+    fx_rect a = {r.x0 + 8, r.y0 + 18, r.x1 - 6, r.y1 - 6};
+    int32_t aw = a.x1 - a.x0, ah = a.y1 - a.y0;
+    if (aw < 2 || ah < 2) return;
+    if (m->state == IMG_OK && m->rgb) {
+        /* fit inside the box, keeping the aspect ratio */
+        img_map im;
+        memset(&im, 0, sizeof im);
+        im.dw = aw;
+        im.dh = (int32_t)((int64_t)m->h * aw / m->w);
+        if (im.dh > ah) { im.dh = ah; im.dw = (int32_t)((int64_t)m->w * ah / m->h); }
+        if (im.dw < 1) im.dw = 1;
+        if (im.dh < 1) im.dh = 1;
+        im.ox = a.x0 + (aw - im.dw) / 2;
+        im.oy = a.y0 + (ah - im.dh) / 2;
+        if (fx_surface_init(&im.tx.img, m->rgb, m->w, m->h, m->w * 3, FX_FMT_BGR888) < 0) return;
+        im.tx.wrap = FX_TEX_CLAMP;
+        im.tx.filter = k->cfg.widgets[i].smooth ? FX_TEX_BILINEAR : FX_TEX_NEAREST;
+        fx_fill_style st;
+        memset(&st, 0, sizeof st);
+        st.kind = FX_FILL_SHADER;
+        st.shade = img_shade;
+        st.user = &im;
+        fx_ctx t = *c;
+        t.fill_style = &st;
+        for (int32_t y = im.oy; y < im.oy + im.dh; y++) fx_fill_span(&t, y, im.ox, im.ox + im.dw);
+        return;
+    }
+    /* the placeholder: a crossed box saying why */
+    const char *why = m->state == IMG_MISSING ? "missing" : m->state == IMG_BAD ? "bad image"
+                    : m->state == IMG_HUGE ? "too large" : "no image";
+    fx_color col = m->state == IMG_NONE ? DIM : BAD_RED;
+    fx_ctx t = *c;
+    fill(c, EMPTY_CELL, a.x0, a.y0, aw, ah);
+    fx_ctx_set_color(&t, 0xFF374151u);
+    fx_line(&t, a.x0, a.y0, a.x1 - 1, a.y1 - 1);
+    fx_line(&t, a.x0, a.y1 - 1, a.x1 - 1, a.y0);
+    int32_t sc = fit_scale(why, aw - 8, ah, 2);
+    int32_t tw = text_w(why, sc);
+    fill(c, k->cfg.panel, a.x0 + (aw - tw) / 2 - 3, a.y0 + (ah - 10 * sc) / 2 - 3, tw + 6, 10 * sc + 4);
+    text_at(c, a.x0 + (aw - tw) / 2, a.y0 + (ah - 10 * sc) / 2, sc, col, why);
+}
+
 static void draw_widget(kiosk *k, fx_ctx *base, int i)
 {
     const kiosk_widget *w = &k->cfg.widgets[i];
@@ -360,6 +616,9 @@ static void draw_widget(kiosk *k, fx_ctx *base, int i)
         break;
     }
     case KIOSK_SPARK: draw_spark(k, &c, w, r, acc, stale); break;
+    case KIOSK_HEAT: draw_heat(k, &c, w, r, stale); break;
+    case KIOSK_IMAGE: draw_image(k, &c, i, r); break;
+    case KIOSK_NTYPES: break;
     case KIOSK_CLOCK: {
         int64_t sec;
         if (k->headless) sec = k->now_ms / 1000; /* virtual time: reproducible frames */
@@ -396,6 +655,11 @@ static void draw_status(kiosk *k, fx_ctx *base)
     x += text_w(buf, 1) + 12;
     snprintf(buf, sizeof buf, "stale %d", nstale);
     text_at(&c, x, r.y0 + 2, 1, nstale ? AMBER : DIM, buf);
+    if (k->img_errors) {
+        x += text_w(buf, 1) + 12;
+        snprintf(buf, sizeof buf, "image errors %u", k->img_errors);
+        text_at(&c, x, r.y0 + 2, 1, BAD_RED, buf);
+    }
 }
 
 /* Draw what changed and present exactly those rectangles. */
@@ -463,6 +727,7 @@ static void on_tick(void *user, int value)
     (void)user; (void)value;
     k->now_ms = mono_ms();
     feed_available(k);
+    check_images(k); /* a stat() per image widget: cheap at 10 Hz */
     update_stale(k);
     if (any_dirty(k)) fx_app_post_redisplay(k->app);
     fx_app_timer(k->app, 100, on_tick, 0);
@@ -470,11 +735,31 @@ static void on_tick(void *user, int value)
 
 /* ---- main ---- */
 
+/* Resident set and heap in use, for the soak test (make kiosk-soak). */
+static void mem_report(const char *when, int frame)
+{
+    long rss_kb = -1, pages, res;
+    FILE *f = fopen("/proc/self/statm", "r");
+    if (f) {
+        if (fscanf(f, "%ld %ld", &pages, &res) == 2) rss_kb = res * (sysconf(_SC_PAGESIZE) / 1024);
+        fclose(f);
+    }
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+    struct mallinfo2 mi = mallinfo2();
+    unsigned long long heap = (unsigned long long)mi.uordblks + mi.hblkhd;
+#else
+    unsigned long long heap = 0; /* no mallinfo2 here: RSS only */
+#endif
+    printf("fixel-kiosk: mem %s frame %d rss_kb %ld heap_bytes %llu\n", when, frame, rss_kb, heap);
+    fflush(stdout);
+}
+
 static void usage(FILE *f)
 {
     fprintf(f,
             "usage: fixel-kiosk [options] CONFIG\n"
-            "A dashboard: widgets laid out by CONFIG, fed by \"name=value\" (or \"name,value\") lines.\n"
+            "A dashboard: widgets laid out by CONFIG, fed by \"name=value\", \"name,value\" or CSV lines\n"
+            "(a header line \"a,b,c\" names the columns of the rows after it).\n"
             "  --data FILE|-     data source: a file (followed as it grows), a named pipe, or - for\n"
             "                    stdin (default -)\n"
             "  --headless        draw into memory instead of a display (tests, previews)\n"
@@ -483,10 +768,12 @@ static void usage(FILE *f)
             "  --out DIR         headless: write DIR/frame-NNNN.png for every frame\n"
             "  --last            headless: write only the last frame (DIR/last.png)\n"
             "  --full            redraw every widget each frame (default: only changed ones)\n"
+            "  --mem-report N    headless: print RSS and heap in use after frame N and at the end\n"
             "  --size WxH        headless surface size (default: the config's size, else 480x320)\n"
             "  --help            this text\n"
             "Bad data lines are counted on screen, never fatal. Keys: q or Esc quits.\n"
-            "Config reference: docs/tools.md; examples: examples/kiosk-*.conf\n");
+            "Widgets: number gauge bar spark text clock heat image.\n"
+            "Config and data reference: docs/kiosk.md; examples: examples/kiosk-*.conf\n");
 }
 
 int main(int argc, char **argv)
@@ -494,7 +781,7 @@ int main(int argc, char **argv)
     static kiosk K; /* static: the model is large and constant-size */
     kiosk *k = &K;
     const char *cfgpath = NULL, *data = "-", *out = NULL;
-    int frames = 1, last_only = 0, sw = 0, sh = 0;
+    int frames = 1, last_only = 0, sw = 0, sh = 0, mem_frame = -1;
     k->fd = -1;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -505,6 +792,7 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--data") && i + 1 < argc) data = argv[++i];
         else if (!strcmp(a, "--out") && i + 1 < argc) out = argv[++i];
         else if (!strcmp(a, "--frames") && i + 1 < argc) frames = atoi(argv[++i]);
+        else if (!strcmp(a, "--mem-report") && i + 1 < argc) mem_frame = atoi(argv[++i]);
         else if (!strcmp(a, "--size") && i + 1 < argc) {
             if (sscanf(argv[++i], "%dx%d", &sw, &sh) != 2 || sw < 16 || sh < 16 || sw > 8192 || sh > 8192) {
                 fprintf(stderr, "fixel-kiosk: --size wants WxH\n");
@@ -555,8 +843,10 @@ int main(int argc, char **argv)
         k->now_ms = 0;
         for (int f = 0; f < frames; f++) {
             feed_frame(k);
+            check_images(k);
             update_stale(k);
             render(k);
+            if (f == mem_frame) mem_report("warm", f);
             if (out && (!last_only || f == frames - 1)) {
                 char path[4096];
                 if (last_only) snprintf(path, sizeof path, "%s/last.png", out);
@@ -570,7 +860,9 @@ int main(int argc, char **argv)
             }
             k->now_ms += k->frame_step;
         }
-        printf("fixel-kiosk: %d frames, %u lines, %u bad, %u ignored\n", frames, k->lines, k->bad, k->ignored);
+        if (mem_frame >= 0) mem_report("end", frames - 1);
+        printf("fixel-kiosk: %d frames, %u lines, %u bad, %u ignored, %u image errors\n", frames, k->lines, k->bad,
+               k->ignored, k->img_errors);
     } else {
         fx_callbacks cb = {.display = on_display, .keyboard = on_key, .reshape = on_reshape};
         g_kiosk = k;
@@ -584,6 +876,7 @@ int main(int argc, char **argv)
         rc = fx_app_main_loop(k->app) < 0;
     }
     fx_app_close(k->app);
+    free_images(k);
     if (k->fd > 0) close(k->fd);
     return rc;
 }
