@@ -68,7 +68,7 @@ mkfifo "$d/fifo"
 "$bin" --headless --frames 3 --out "$d/f" --data "$d/fifo" "$d/conf" > "$d/log" 2>&1 &
 kpid=$!
 exec 3>"$d/fifo"
-wait_frame() { i=0; while [ ! -f "$d/f/frame-$1.png" ] && [ $i -lt 200 ]; do sleep 0.05; i=$((i + 1)); done; }
+wait_frame() { i=0; while [ ! -f "$d/f/frame-$1.png" ] && [ $i -lt 1200 ]; do sleep 0.05; i=$((i + 1)); done; }
 printf 'x=1\n@frame 1000\n' >&3; wait_frame 0000
 cp tests/kiosk/img/checker.ppm "$d/img.new"; mv "$d/img.new" "$d/img"
 printf '@frame 1000\n' >&3; wait_frame 0001
