@@ -83,5 +83,14 @@ printf 'x=1\n' | "$bin" --headless --frames 1 --last --out "$d" --data - "$d/con
 if cmp -s "$d/last.png" "$d/f/frame-0001.png"; then ok; else bad "live: reloaded image differs from a fresh start"; fi
 if cmp -s "$d/f/frame-0000.png" "$d/f/frame-0001.png"; then bad "live: image not reloaded"; else ok; fi
 if cmp -s "$d/f/frame-0001.png" "$d/f/frame-0002.png"; then bad "live: corrupt rewrite not noticed"; else ok; fi
+# hostile image files: a PPM whose header claims 9999999 x 9999999 pixels,
+# one cut short, a FIFO and a directory: each a counted error, none fatal,
+# none blocking (the FIFO has no writer)
+mkfifo "$d/pipe.png"
+for img in tests/kiosk/img/huge.ppm tests/kiosk/img/short.ppm "$d/pipe.png" tests/kiosk; do
+    printf 'size 160x120\ngrid 1x1\nwidget image cam path=%s\n' "$img" > "$d/h.conf"
+    r=$(timeout 60 "$bin" --headless --frames 2 --data /dev/null "$d/h.conf" 2>/dev/null)
+    case "$r" in *"0 bad, 0 ignored, 1 image errors"*) ok ;; *) bad "image $img: $r" ;; esac
+done
 echo "kiosk: $P passed, $F failed"
 [ "$F" -eq 0 ]

@@ -287,7 +287,9 @@ static void check_images(kiosk *k)
         }
         free(m->rgb);
         m->rgb = NULL;
-        m->state = !so->path[0] ? IMG_NONE : load_image(so->path, m);
+        /* only regular files: opening a FIFO or a device could block the kiosk */
+        m->state = !so->path[0] ? IMG_NONE : !have ? IMG_MISSING : !S_ISREG(st.st_mode) ? IMG_BAD
+                 : load_image(so->path, m);
         if (m->state != IMG_OK && m->state != IMG_NONE) k->img_errors++;
         k->dirty[i] = 1;
         k->status_dirty = 1;
