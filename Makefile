@@ -35,7 +35,8 @@ INCLUDES := -Ikernel-free-src/include -Iboards/include
 CPU_FLAGS ?=
 # Board defaults compiled in (boards/<name>.mk); environment variables override them at run time.
 BOARD_DEFS := -DFX_BOARD_ROTATION=$(or $(BOARD_ROTATION),0) -DFX_BOARD_BACKEND='"$(or $(BOARD_BACKEND),auto)"' \
-              -DFX_BOARD_GPIO_BUTTONS='"$(BOARD_GPIO_BUTTONS)"'
+              -DFX_BOARD_GPIO_BUTTONS='"$(BOARD_GPIO_BUTTONS)"' \
+              $(if $(filter RGB565,$(BOARD_DRM_FORMAT)),-DFX_BOARD_DRM_FORMAT_RGB565)
 BASEFLAGS := $(CSTD) $(WARN) $(OPT) -g $(CPU_FLAGS) $(BOARD_DEFS) $(SANFLAGS) -fPIC -MMD -MP $(INCLUDES)
 
 # Libraries the boards side and the tools use (installed by `make deps`).

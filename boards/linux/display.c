@@ -159,12 +159,14 @@ static void reset_backend(fx_display *d)
     memset(d->scan, 0, sizeof d->scan);
     memset(&d->info, 0, sizeof d->info);
     d->nbuf = 0;
+    d->sw_rotation = d->opt.rotation;
+    d->rotation_why = NULL;
 }
 
 static int alloc_shadow(fx_display *d)
 {
     int32_t lw, lh;
-    fx_rotated_size(d->opt.rotation, d->info.width, d->info.height, &lw, &lh);
+    fx_rotated_size(d->sw_rotation, d->info.width, d->info.height, &lw, &lh);
     int32_t stride = (fx_format_min_stride(d->info.format, lw) + 15) & ~15;
     free(d->shadow_mem);
     d->shadow_mem = calloc((size_t)lh, (size_t)stride);
@@ -182,7 +184,7 @@ int fx_display_resized(fx_display *d)
     d->repair = 0;
     d->info.reshapes++;
     int32_t lw, lh;
-    fx_rotated_size(d->opt.rotation, d->info.width, d->info.height, &lw, &lh);
+    fx_rotated_size(d->sw_rotation, d->info.width, d->info.height, &lw, &lh);
     fx_display_log(d, FX_LOG_INFO, "display is now %dx%d", d->info.width, d->info.height);
     if (d->reshape_cb)
         d->reshape_cb(d, lw, lh, d->reshape_user);
@@ -202,13 +204,13 @@ static int choose_present(fx_display *d)
         else
             fx_display_log(d, FX_LOG_ERROR, "FIXEL_PRESENT=%s ignored (direct or shadow)", env);
     }
-    if (m == FX_PRESENT_DIRECT && d->opt.rotation != 0) {
+    if (m == FX_PRESENT_DIRECT && d->sw_rotation != 0) {
         fx_display_log(d, FX_LOG_INFO, "rotation %d needs a back buffer: shadow presentation",
-                       d->opt.rotation);
+                       d->sw_rotation);
         m = FX_PRESENT_SHADOW;
     }
     if (m == FX_PRESENT_AUTO) {
-        if (d->opt.rotation != 0) {
+        if (d->sw_rotation != 0) {
             m = FX_PRESENT_SHADOW;
             why = "software rotation";
         } else if (d->nbuf < 2 && d->info.backend != FX_BACKEND_MEMORY) {
@@ -255,6 +257,8 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
         free(d);
         return -FX_EINVAL;
     }
+    /* Backends that rotate in hardware set it to 0. */
+    d->sw_rotation = d->opt.rotation;
 
     fx_backend b = d->opt.backend;
     char reasons[256] = "";
@@ -304,6 +308,9 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
     }
     d->info.backend = b == FX_BACKEND_AUTO ? d->info.backend : b;
     d->info.rotation = d->opt.rotation;
+    d->info.rotation_hw = d->opt.rotation != d->sw_rotation;
+    if (!d->rotation_why)
+        d->rotation_why = "in software";
     if (d->info.backend != FX_BACKEND_DRM)
         d->info.connected = 1;
     d->info.buffers = d->nbuf;
@@ -315,12 +322,15 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
         fx_display_close(d);
         return r;
     }
-    fx_display_log(d, FX_LOG_INFO, "%s %s%s%s %dx%d %s, %s, %d buffer%s, rotation %d (%s)",
+    fx_display_info pi;
+    fx_display_get_info(d, &pi);
+    fx_display_log(d, FX_LOG_INFO, "%s %s%s%s %dx%d %s, %s, %d buffer%s, rotation %d%s%s (%s)",
                    fx_backend_name(d->info.backend), d->device, d->connector[0] ? " " : "",
-                   d->connector, d->info.width, d->info.height,
+                   d->connector, pi.width, pi.height,
                    fx_format_get(d->info.format)->name,
                    d->info.present == FX_PRESENT_DIRECT ? "direct" : "shadow", d->nbuf,
-                   d->nbuf == 1 ? "" : "s", d->opt.rotation, why);
+                   d->nbuf == 1 ? "" : "s", d->opt.rotation,
+                   d->opt.rotation ? " " : "", d->opt.rotation ? d->rotation_why : "", why);
 
     if (d->info.backend != FX_BACKEND_MEMORY && d->opt.console) {
         r = fx_vt_enter(d, &d->vt);
@@ -437,10 +447,10 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n)
                 fx_damage_add(&todo, d->prev.r[i], bounds);
         }
         for (int i = 0; i < todo.n; i++)
-            fx_copy_rotated(&d->scan[target], &d->shadow, todo.r[i], d->opt.rotation);
+            fx_copy_rotated(&d->scan[target], &d->shadow, todo.r[i], d->sw_rotation);
     }
     for (int i = 0; i < cur.n; i++)
-        phys[i] = fx_rect_rotate(cur.r[i], d->opt.rotation, d->info.width, d->info.height);
+        phys[i] = fx_rect_rotate(cur.r[i], d->sw_rotation, d->info.width, d->info.height);
     /* DRM buffers are ours even while away: keep the bookkeeping as if
      * shown, so the return puts the latest frame up. */
     r = d->away ? 0 : d->ops->show(d, target, phys, cur.n);
@@ -493,7 +503,7 @@ void fx_display_vt_acquire(fx_display *d)
     if (d->ops->resume && d->ops->resume(d) < 0)
         fx_display_log(d, FX_LOG_ERROR, "back on our VT but the display could not be retaken");
     if (d->info.backend == FX_BACKEND_FBDEV && d->info.present == FX_PRESENT_SHADOW && d->shown >= 0)
-        fx_copy_rotated(&d->scan[d->shown], &d->shadow, fx_surface_rect(&d->shadow), d->opt.rotation);
+        fx_copy_rotated(&d->scan[d->shown], &d->shadow, fx_surface_rect(&d->shadow), d->sw_rotation);
     d->away = 0;
     d->info.vt_back++;
     fx_display_log(d, FX_LOG_DEBUG, "back on our VT: display retaken");
@@ -543,4 +553,9 @@ void fx_display_set_flip_callback(fx_display *d, void (*cb)(fx_display *, void *
 void fx_display_get_info(const fx_display *d, fx_display_info *info)
 {
     *info = d->info;
+    if (d->info.rotation_hw && (d->info.rotation == 90 || d->info.rotation == 270)) {
+        /* The plane turns the logical-size buffer: report the screen. */
+        info->width = d->info.height;
+        info->height = d->info.width;
+    }
 }

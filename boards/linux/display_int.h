@@ -61,6 +61,34 @@ fx_rect fx_rect_rotate(fx_rect r, int rotation, int32_t phys_w, int32_t phys_h);
  * r must lie inside src. Every format is supported, MONO1 included. */
 void fx_copy_rotated(const fx_surface *dst, const fx_surface *src, fx_rect r, int rotation);
 
+/* A DRM plane's "rotation" property: its enum entries as the kernel lists
+ * them (struct drm_mode_property_enum). Values of a bitmask property are
+ * ORs of 1 << entry value. */
+typedef struct fx_prop_enum {
+    uint64_t value;
+    char name[32];
+} fx_prop_enum;
+#define FX_PLANE_ROTATE_0 (1u << 0) /* DRM_MODE_ROTATE_*: counter-clockwise */
+#define FX_PLANE_ROTATE_90 (1u << 1)
+#define FX_PLANE_ROTATE_180 (1u << 2)
+#define FX_PLANE_ROTATE_270 (1u << 3)
+
+/* The DRM rotation bits the entries offer (names and bit numbers must both
+ * match the kernel's, or the entry is ignored). */
+uint32_t fx_plane_rotation_mask(const fx_prop_enum *e, int n);
+/* The DRM bit that shows fixel's clockwise rotation (0/90/180/270), 0 for
+ * other angles. */
+uint32_t fx_plane_rotation_bit(int rotation);
+/* 1 when the plane should rotate: rotation != 0, not forced to software,
+ * the property exists and offers the angle. *why explains the choice. */
+int fx_plane_rotation_choose(int rotation, int has_property, uint32_t mask, int force_software,
+                             const char **why);
+/* The scanout format for a DRM plane: want is FX_FMT_XRGB8888, FX_FMT_RGB565
+ * or FX_FMT_COUNT (automatic: XRGB8888 unless only RGB565 is offered); a
+ * requested format the plane lacks falls back to the other. FX_FMT_COUNT
+ * when nothing usable is offered or want is another format. */
+fx_format fx_drm_format_choose(fx_format want, int has_xrgb, int has_565, const char **why);
+
 /* ---- blocking calls with a timeout (waiter.c) ---- */
 
 typedef struct fx_waiter fx_waiter;
@@ -105,13 +133,17 @@ struct fx_display {
     char device[64];
     char connector[32];
 
-    fx_surface scan[2];     /* scanout buffers (physical size) */
+    fx_surface scan[2];     /* scanout buffers (physical size, logical when the plane rotates);
+                               info.width/height hold their size until get_info */
     int nbuf;
     int back;               /* index of the off-screen buffer */
     int shown;              /* index on screen, -1 before the first present */
     int flip_pending;
     int repair;             /* direct mode: copy prev damage front->back before drawing */
     fx_damage prev;         /* logical damage of the last presented frame */
+
+    int sw_rotation;        /* rotation done by copying (0 when the plane rotates) */
+    const char *rotation_why; /* how the rotation is done, for the log line */
 
     fx_surface shadow;      /* shadow mode: logical back buffer */
     void *shadow_mem;

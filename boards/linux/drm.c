@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/ioctl.h>
 #include <sys/mman.h>
 #include <sys/socket.h>
@@ -44,9 +45,16 @@ struct drm_priv {
     char card[64];                   /* "card0": matches DEVNAME=dri/card0 */
     int connected;
     int reprobe_pending;             /* a hotplug arrived while our VT was away */
+    /* Plane rotation: the primary plane's "rotation" property, the value
+     * found and the one we set (rot_apply: they differ, restore on exit). */
+    uint32_t plane_id, rot_prop;
+    uint64_t rot_saved, rot_want;
+    int rot_apply;
     /* Pre-built for the signal path, which may not allocate. */
     struct drm_mode_crtc emergency;
     uint32_t emergency_conn;
+    struct drm_mode_crtc emergency_off;
+    struct drm_mode_obj_set_property emergency_rot;
 };
 
 static int neg_errno(void)
@@ -138,20 +146,30 @@ static uint32_t pick_crtc(int fd, drmModeResPtr res, drmModeConnectorPtr c, int 
     return 0;
 }
 
-/* Does the primary plane of CRTC index ci scan out fourcc? 1 yes, 0 no,
- * -1 unknown (no plane API): callers then just try. */
-static int plane_supports(int fd, int ci, uint32_t fourcc)
+/* What the primary plane of CRTC index ci offers: formats and rotation. */
+struct plane_info {
+    int known;          /* 0: no plane API, formats unknown (callers just try) */
+    uint32_t id;
+    int has_xrgb, has_565;
+    uint32_t rot_prop;  /* 0: no rotation property */
+    uint32_t rot_mask;
+    uint64_t rot_value;
+};
+
+static void probe_plane(int fd, int ci, struct plane_info *pi)
 {
+    memset(pi, 0, sizeof *pi);
     drmModePlaneResPtr pr = drmModeGetPlaneResources(fd);
-    int result = -1;
     if (!pr)
-        return -1;
-    for (uint32_t i = 0; i < pr->count_planes && result != 1; i++) {
+        return;
+    for (uint32_t i = 0; i < pr->count_planes && !pi->known; i++) {
         drmModePlanePtr p = drmModeGetPlane(fd, pr->planes[i]);
         if (!p)
             continue;
         if (p->possible_crtcs & (1u << ci)) {
             int primary = 0;
+            uint32_t rot_prop = 0, rot_mask = 0;
+            uint64_t rot_value = 0;
             drmModeObjectPropertiesPtr props =
                 drmModeObjectGetProperties(fd, p->plane_id, DRM_MODE_OBJECT_PLANE);
             for (uint32_t k = 0; props && k < props->count_props; k++) {
@@ -159,20 +177,37 @@ static int plane_supports(int fd, int ci, uint32_t fourcc)
                 if (prop && !strcmp(prop->name, "type") &&
                     props->prop_values[k] == DRM_PLANE_TYPE_PRIMARY)
                     primary = 1;
+                if (prop && !strcmp(prop->name, "rotation") && (prop->flags & DRM_MODE_PROP_BITMASK) &&
+                    prop->count_enums > 0) {
+                    fx_prop_enum e[16];
+                    int n = prop->count_enums < 16 ? prop->count_enums : 16;
+                    for (int j = 0; j < n; j++) {
+                        e[j].value = prop->enums[j].value;
+                        memcpy(e[j].name, prop->enums[j].name, sizeof e[j].name);
+                        e[j].name[sizeof e[j].name - 1] = 0;
+                    }
+                    rot_prop = prop->prop_id;
+                    rot_mask = fx_plane_rotation_mask(e, n);
+                    rot_value = props->prop_values[k];
+                }
                 drmModeFreeProperty(prop);
             }
             drmModeFreeObjectProperties(props);
             if (primary) {
-                result = 0;
-                for (uint32_t f = 0; f < p->count_formats; f++)
-                    if (p->formats[f] == fourcc)
-                        result = 1;
+                pi->known = 1;
+                pi->id = p->plane_id;
+                for (uint32_t f = 0; f < p->count_formats; f++) {
+                    pi->has_xrgb |= p->formats[f] == DRM_FORMAT_XRGB8888;
+                    pi->has_565 |= p->formats[f] == DRM_FORMAT_RGB565;
+                }
+                pi->rot_prop = rot_prop;
+                pi->rot_mask = rot_mask;
+                pi->rot_value = rot_value;
             }
         }
         drmModeFreePlane(p);
     }
     drmModeFreePlaneResources(pr);
-    return result;
 }
 
 /* ---- buffers ------------------------------------------------------------ */
@@ -322,6 +357,31 @@ static int set_crtc(struct drm_priv *p, int buf)
     return drmModeSetCrtc(p->fd, p->crtc_id, p->buf[buf].fb_id, 0, 0, &p->conn_id, 1, &p->mode);
 }
 
+/* Set the plane's rotation, then the mode. The kernel checks a rotated
+ * plane's fb against the swapped mode size, so the property cannot change
+ * while an fb of the other orientation is shown: switch the CRTC off first
+ * when the direct attempt is refused. Also used on return to our VT, where
+ * the console has put its own rotation back. */
+static int modeset(struct drm_priv *p, int buf)
+{
+    if (p->rot_apply &&
+        drmModeObjectSetProperty(p->fd, p->plane_id, DRM_MODE_OBJECT_PLANE, p->rot_prop, p->rot_want) < 0) {
+        drmModeSetCrtc(p->fd, p->crtc_id, 0, 0, 0, NULL, 0, NULL);
+        if (drmModeObjectSetProperty(p->fd, p->plane_id, DRM_MODE_OBJECT_PLANE, p->rot_prop,
+                                     p->rot_want) < 0)
+            return -1;
+    }
+    return set_crtc(p, buf);
+}
+
+static void restore_rotation(struct drm_priv *p)
+{
+    if (!p->rot_apply)
+        return;
+    drmModeSetCrtc(p->fd, p->crtc_id, 0, 0, 0, NULL, 0, NULL);
+    drmModeObjectSetProperty(p->fd, p->plane_id, DRM_MODE_OBJECT_PLANE, p->rot_prop, p->rot_saved);
+}
+
 static int drm_show(fx_display *d, int buf, const fx_rect *phys, int n)
 {
     struct drm_priv *p = d->priv;
@@ -380,6 +440,7 @@ static void drm_close(fx_display *d)
     struct drm_priv *p = d->priv;
     if (!p)
         return;
+    restore_rotation(p);
     if (p->saved) {
         /* Give the screen back as found (fbcon, a splash, another mode). */
         if (p->saved->mode_valid && p->saved->buffer_id)
@@ -404,6 +465,10 @@ static void drm_close(fx_display *d)
 void fx_drm_emergency_restore(void *priv)
 {
     struct drm_priv *p = priv;
+    if (p && p->fd >= 0 && p->rot_apply) {
+        ioctl(p->fd, DRM_IOCTL_MODE_SETCRTC, &p->emergency_off);
+        ioctl(p->fd, DRM_IOCTL_MODE_OBJ_SETPROPERTY, &p->emergency_rot);
+    }
     if (p && p->fd >= 0 && p->emergency.crtc_id)
         ioctl(p->fd, DRM_IOCTL_MODE_SETCRTC, &p->emergency);
 }
@@ -422,7 +487,7 @@ static int drm_resume(fx_display *d)
         fx_display_log(d, FX_LOG_ERROR, "%s: cannot retake DRM master: %s", d->device, strerror(errno));
         return neg_errno();
     }
-    if (set_crtc(p, d->shown < 0 ? 0 : d->shown) < 0) {
+    if (modeset(p, d->shown < 0 ? 0 : d->shown) < 0) {
         fx_display_log(d, FX_LOG_ERROR, "SetCrtc after VT switch: %s", strerror(errno));
         return neg_errno();
     }
@@ -450,6 +515,9 @@ static void reprobe(fx_display *d)
     }
     drmModeFreeConnector(c);
     int same_size = m.hdisplay == p->mode.hdisplay && m.vdisplay == p->mode.vdisplay;
+    /* A plane rotated by 90/270 scans out an fb of the swapped size. */
+    int swap = d->opt.rotation != d->sw_rotation && (d->opt.rotation == 90 || d->opt.rotation == 270);
+    uint32_t bw = swap ? m.vdisplay : m.hdisplay, bh = swap ? m.hdisplay : m.vdisplay;
     int same_mode = same_size && m.clock == p->mode.clock && m.vrefresh == p->mode.vrefresh;
     if (p->connected && same_mode)
         return;
@@ -461,18 +529,18 @@ static void reprobe(fx_display *d)
         const fx_format_info *fi = fx_format_get(f);
         for (int i = 0; i < p->nbuf; i++) {
             destroy_buf(p->fd, &p->buf[i]);
-            if (create_buf(p->fd, &p->buf[i], m.hdisplay, m.vdisplay, fi->drm_fourcc, fi->bits_per_pixel) < 0) {
+            if (create_buf(p->fd, &p->buf[i], bw, bh, fi->drm_fourcc, fi->bits_per_pixel) < 0) {
                 fx_display_log(d, FX_LOG_ERROR, "%s: no buffer for %ux%u", d->device, m.hdisplay, m.vdisplay);
                 destroy_buf(p->fd, &p->buf[i]);
                 p->connected = d->info.connected = 0;
                 return;
             }
-            fx_surface_init(&d->scan[i], p->buf[i].map, m.hdisplay, m.vdisplay, (int32_t)p->buf[i].pitch, f);
+            fx_surface_init(&d->scan[i], p->buf[i].map, (int32_t)bw, (int32_t)bh, (int32_t)p->buf[i].pitch, f);
         }
         d->shown = 0;
         d->back = p->nbuf == 2 ? 1 : 0;
-        d->info.width = m.hdisplay;
-        d->info.height = m.vdisplay;
+        d->info.width = (int32_t)bw;
+        d->info.height = (int32_t)bh;
     }
     p->mode = m;
     if (set_crtc(p, d->shown < 0 ? 0 : d->shown) < 0)
@@ -617,25 +685,58 @@ int fx_drm_open(fx_display *d)
     if (r < 0)
         return r;
 
-    fx_format f = d->opt.format == FX_FMT_COUNT ? FX_FMT_XRGB8888 : d->opt.format;
-    if (f != FX_FMT_XRGB8888 && f != FX_FMT_RGB565) {
-        fx_display_log(d, FX_LOG_ERROR, "DRM backend draws XRGB8888 or RGB565, not %s",
-                       fx_format_get(f)->name);
+    fx_format fwant = d->opt.format;
+    const char *fenv = getenv("FIXEL_DRM_FORMAT");
+    if (fwant == FX_FMT_COUNT && fenv && *fenv && strcasecmp(fenv, "auto")) {
+        if (!strcasecmp(fenv, "XRGB8888"))
+            fwant = FX_FMT_XRGB8888;
+        else if (!strcasecmp(fenv, "RGB565"))
+            fwant = FX_FMT_RGB565;
+        else
+            fx_display_log(d, FX_LOG_ERROR, "FIXEL_DRM_FORMAT=%s ignored (XRGB8888 or RGB565)", fenv);
+    }
+#ifdef FX_BOARD_DRM_FORMAT_RGB565
+    if (fwant == FX_FMT_COUNT)
+        fwant = FX_FMT_RGB565; /* the board profile's 16-bit panel */
+#endif
+    struct plane_info pl;
+    probe_plane(fd, ci, &pl);
+    const char *fwhy;
+    fx_format f = fx_drm_format_choose(fwant, !pl.known || pl.has_xrgb, !pl.known || pl.has_565, &fwhy);
+    if (f == FX_FMT_COUNT) {
+        fx_display_log(d, FX_LOG_ERROR, "%s: %s", d->device, fwhy);
         return -FX_ENOTSUP;
     }
-    if (plane_supports(fd, ci, fx_format_get(f)->drm_fourcc) == 0) {
-        fx_format other = f == FX_FMT_XRGB8888 ? FX_FMT_RGB565 : FX_FMT_XRGB8888;
-        if (plane_supports(fd, ci, fx_format_get(other)->drm_fourcc) != 1) {
-            fx_display_log(d, FX_LOG_ERROR, "%s: primary plane takes neither XRGB8888 nor RGB565",
-                           d->device);
-            return -FX_ENOTSUP;
-        }
-        fx_display_log(d, FX_LOG_INFO, "primary plane has no %s; using %s",
-                       fx_format_get(f)->name, fx_format_get(other)->name);
-        f = other;
+    if (fwant != FX_FMT_COUNT && f != fwant)
+        fx_display_log(d, FX_LOG_INFO, "primary plane has no %s; using %s", fx_format_get(fwant)->name,
+                       fx_format_get(f)->name);
+
+    const char *sw = getenv("FIXEL_SW_ROTATION");
+    int force_sw = d->opt.sw_rotation || (sw && *sw && strcmp(sw, "0"));
+    int hw = fx_plane_rotation_choose(d->opt.rotation, pl.rot_prop != 0, pl.rot_mask, force_sw,
+                                      &d->rotation_why);
+    if (pl.rot_prop) {
+        p->plane_id = pl.id;
+        p->rot_prop = pl.rot_prop;
+        p->rot_saved = pl.rot_value;
+        /* Without plane rotation the plane must not be left rotated by
+         * someone else either: rotate-0 is then the fwanted value. */
+        p->rot_want = hw ? fx_plane_rotation_bit(d->opt.rotation) : FX_PLANE_ROTATE_0;
+        p->rot_apply = (pl.rot_mask & p->rot_want) && p->rot_want != p->rot_saved;
+        p->emergency_off.crtc_id = p->crtc_id;
+        p->emergency_rot.value = p->rot_saved;
+        p->emergency_rot.prop_id = p->rot_prop;
+        p->emergency_rot.obj_id = p->plane_id;
+        p->emergency_rot.obj_type = DRM_MODE_OBJECT_PLANE;
     }
+    if (hw)
+        d->sw_rotation = 0;
     const fx_format_info *fi = fx_format_get(f);
     uint32_t w = p->mode.hdisplay, h = p->mode.vdisplay;
+    if (hw && (d->opt.rotation == 90 || d->opt.rotation == 270)) {
+        w = p->mode.vdisplay; /* the fb has the logical size */
+        h = p->mode.hdisplay;
+    }
 
     for (int i = 0; i < 2; i++) {
         r = create_buf(fd, &p->buf[i], w, h, fi->drm_fourcc, fi->bits_per_pixel);
@@ -669,10 +770,11 @@ int fx_drm_open(fx_display *d)
         }
     }
 
-    if (set_crtc(p, 0) < 0) {
+    if (modeset(p, 0) < 0) {
         int e = errno;
-        fx_display_log(d, FX_LOG_ERROR, "%s: modeset %ux%u on %s failed: %s", d->device, w, h,
-                       d->connector, strerror(e));
+        fx_display_log(d, FX_LOG_ERROR, "%s: modeset %ux%u on %s failed: %s%s", d->device, w, h,
+                       d->connector, strerror(e),
+                       hw ? " (with plane rotation; FIXEL_SW_ROTATION=1 rotates in software)" : "");
         return -e;
     }
     d->nbuf = p->nbuf;

@@ -308,3 +308,97 @@ void fx_copy_rotated(const fx_surface *dst, const fx_surface *src, fx_rect r, in
         }
     }
 }
+
+/* ---- plane rotation and pixel format choice --------------------------- */
+
+/* The names the kernel gives the bits of a plane's "rotation" bitmask
+ * (drm_plane_create_rotation_property); index = bit number. */
+static const char *const rot_names[] = {"rotate-0", "rotate-90", "rotate-180", "rotate-270",
+                                        "reflect-x", "reflect-y"};
+
+uint32_t fx_plane_rotation_mask(const fx_prop_enum *e, int n)
+{
+    uint32_t mask = 0;
+    for (int i = 0; e && i < n; i++) {
+        for (uint32_t b = 0; b < sizeof rot_names / sizeof rot_names[0]; b++) {
+            /* A value that disagrees with the name is not a rotation
+             * property this code understands: ignore the entry. */
+            if (!strncmp(e[i].name, rot_names[b], sizeof e[i].name) && e[i].value == b)
+                mask |= 1u << b;
+        }
+    }
+    return mask;
+}
+
+uint32_t fx_plane_rotation_bit(int rotation)
+{
+    /* fixel turns the picture clockwise; DRM's rotate-N is counter-clockwise. */
+    switch (rotation) {
+    case 0: return FX_PLANE_ROTATE_0;
+    case 90: return FX_PLANE_ROTATE_270;
+    case 180: return FX_PLANE_ROTATE_180;
+    case 270: return FX_PLANE_ROTATE_90;
+    default: return 0;
+    }
+}
+
+int fx_plane_rotation_choose(int rotation, int has_property, uint32_t mask, int force_software,
+                             const char **why)
+{
+    uint32_t bit = fx_plane_rotation_bit(rotation);
+    const char *w;
+    int hw = 0;
+    if (rotation == 0)
+        w = "none needed";
+    else if (force_software)
+        w = "in software (forced)";
+    else if (!has_property)
+        w = "in software (no plane rotation property)";
+    else if (!bit || !(mask & bit))
+        w = "in software (the plane cannot rotate by this angle)";
+    else {
+        w = "by the plane";
+        hw = 1;
+    }
+    if (why)
+        *why = w;
+    return hw;
+}
+
+fx_format fx_drm_format_choose(fx_format want, int has_xrgb, int has_565, const char **why)
+{
+    const char *w;
+    fx_format f;
+    if (want != FX_FMT_COUNT && want != FX_FMT_XRGB8888 && want != FX_FMT_RGB565) {
+        f = FX_FMT_COUNT;
+        w = "DRM draws XRGB8888 or RGB565";
+    } else if (want == FX_FMT_COUNT) {
+        /* XRGB8888 is exact for every colour; 16 bits only when forced. */
+        if (has_xrgb) {
+            f = FX_FMT_XRGB8888;
+            w = "default";
+        } else if (has_565) {
+            f = FX_FMT_RGB565;
+            w = "plane offers no XRGB8888";
+        } else {
+            f = FX_FMT_COUNT;
+            w = "plane takes neither XRGB8888 nor RGB565";
+        }
+    } else {
+        int have = want == FX_FMT_XRGB8888 ? has_xrgb : has_565;
+        int other = want == FX_FMT_XRGB8888 ? has_565 : has_xrgb;
+        if (have) {
+            f = want;
+            w = "requested";
+        } else if (other) {
+            f = want == FX_FMT_XRGB8888 ? FX_FMT_RGB565 : FX_FMT_XRGB8888;
+            w = "requested format not offered by the plane";
+        } else {
+            f = FX_FMT_COUNT;
+            w = "plane takes neither XRGB8888 nor RGB565";
+        }
+    }
+    if (why)
+        *why = w;
+    return f;
+}

@@ -124,4 +124,38 @@ for a in amd64 arm64; do
     rm -rf "$D/build-$a"
 done
 
+# --- vkms, both arches ---------------------------------------------------
+# Debian 6.1 has CONFIG_DRM_VKMS off; the virtual KMS driver is built out of
+# tree like gpio-sim. It offers RGB565 on its primary plane and computes CRCs
+# of every composed frame (debugfs): the rig's proof of 16-bit scanout.
+if [ ! -f "$D/vkms-src.stamp" ]; then
+    dl "linux-source-$KSER"
+    rm -rf "$D/src" "$D/vkms"; mkdir -p "$D/src" "$D/vkms"
+    tarball=$(dpkg-deb -c "$(deb "linux-source-$KSER")" | awk '{print $NF}' | grep 'linux-source-.*\.tar\.xz$' | head -1)
+    top=$(basename "$tarball" .tar.xz)
+    dpkg-deb --fsys-tarfile "$(deb "linux-source-$KSER")" | tar -xO "$tarball" |
+        tar -xJ -C "$D/src" "$top/drivers/gpu/drm/vkms"
+    cp "$D/src/$top"/drivers/gpu/drm/vkms/*.[ch] "$D/vkms/"
+    rm -rf "$D/src" "$D"/debs/linux-source-*.deb
+    objs=$(cd "$D/vkms" && ls *.c | sed 's/\.c$/.o/' | tr '\n' ' ')
+    printf 'obj-m := vkms.o\nvkms-y := %s\n' "$objs" > "$D/vkms/Kbuild"
+    touch "$D/vkms-src.stamp"
+fi
+for a in amd64 arm64; do
+    ko="$D/$a/vkms.ko"
+    [ -f "$ko" ] && continue
+    log "building vkms for $a"
+    # A cache copied from another directory still names the old place in the
+    # headers' one-line Makefile: point it here again.
+    sed -i "s#^include .*/linux-headers-$ABI-common/Makefile\$#include $D/kbuild/usr/src/linux-headers-$ABI-common/Makefile#" \
+        "$D/kbuild/usr/src/linux-headers-$ABI-$a/Makefile"
+    rm -rf "$D/vkms-build-$a"; cp -r "$D/vkms" "$D/vkms-build-$a"
+    extra=""
+    [ $a = arm64 ] && extra="ARCH=arm64 CROSS_COMPILE=aarch64-linux-gnu-"
+    make -s -C "$D/kbuild/usr/src/linux-headers-$ABI-$a" M="$D/vkms-build-$a" $extra modules >"$D/vkms-build-$a.log" 2>&1 ||
+        { cat "$D/vkms-build-$a.log" >&2; exit 1; }
+    cp "$D/vkms-build-$a/vkms.ko" "$ko"
+    rm -rf "$D/vkms-build-$a"
+done
+
 echo "$D"

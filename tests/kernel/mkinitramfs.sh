@@ -34,6 +34,25 @@ for m in "$@"; do
 done
 cp "$GPIOSIM" "$S/lib/modules/gpio-sim-oot.ko"
 echo gpio-sim-oot.ko >> "$S/modules.load"
+# Optional modules: copied with their dependencies but not loaded at boot;
+# the guest program needing them insmods /modules.optional in order.
+# OPTIONAL_MODULES="name..." (from the image), OPTIONAL_KO="file.ko..."
+: > "$S/modules.optional"
+for m in ${OPTIONAL_MODULES:-}; do
+    modprobe -d "$KROOT" -S "$KVER" --show-depends "$m" | while read -r cmd path _; do
+        [ "$cmd" = insmod ] || continue
+        rel=${path#"$KROOT"/lib/modules/"$KVER"/}
+        grep -qx "$rel" "$S/modules.load" "$S/modules.optional" && continue
+        mkdir -p "$S/lib/modules/$(dirname "$rel")"
+        cp "$path" "$S/lib/modules/$rel"
+        echo "$rel" >> "$S/modules.optional"
+    done
+done
+for k in ${OPTIONAL_KO:-}; do
+    [ -f "$k" ] || continue
+    cp "$k" "$S/lib/modules/"
+    basename "$k" >> "$S/modules.optional"
+done
 
 for t in "$BINS"/*; do
     [ -x "$t" ] && cp "$t" "$S/tests/"

@@ -14,6 +14,9 @@
  *
  * AUTO picks direct when the device can double-buffer and no software rotation
  * is needed, shadow otherwise; the choice and its reason are logged once.
+ * Rotation is done by the DRM primary plane when it has a "rotation"
+ * property offering the angle (the program then draws straight into the
+ * scanout buffer), by copying otherwise.
  *
  * The program sees the rotated logical size: with rotation 90 or 270 a
  * 800x480 panel is drawn as 480x800. Rotation is clockwise: the logical
@@ -78,6 +81,8 @@ typedef struct fx_display_options {
     const char *mode;      /* "WxH" or "WxH@Hz"; NULL: FIXEL_MODE or the preferred mode */
     fx_format format;      /* FX_FMT_XRGB8888 or FX_FMT_RGB565 for DRM; FX_FMT_COUNT = default */
     int rotation;          /* 0, 90, 180, 270; -1 = FIXEL_ROTATION or 0 */
+    int sw_rotation;       /* 1: rotate in software even where the DRM plane has a rotation
+                              property (also FIXEL_SW_ROTATION=1); 0: the plane rotates when it can */
     int console;           /* 1: KD_GRAPHICS + keyboard off while open (default); 0: leave the VT alone */
     int signals;           /* 1: restore the console/CRTC on fatal and terminating signals (default) */
     fx_vt_switch vt_switch; /* VT switching policy (needs console = 1; uses SIGUSR1/SIGUSR2
@@ -152,6 +157,7 @@ typedef struct fx_display_info {
     int32_t refresh_mhz;      /* mode refresh in millihertz, 0 when unknown */
     fx_format format;         /* format of scanout memory */
     int rotation;
+    int rotation_hw;          /* 1: the DRM plane rotates (no software copy), 0: software or none */
     int buffers;              /* scanout buffers: 2 when flipping/panning, else 1 */
     int dirtyfb;              /* DRM: 1 when the driver accepted DIRTYFB, 0 refused, -1 not tried */
     uint32_t flips, fallbacks; /* page flips completed, SetCrtc used instead */
