@@ -79,7 +79,9 @@ typedef struct fx_display_options {
     const char *device;
     const char *connector; /* DRM connector name ("HDMI-A-1"); NULL: FIXEL_CONNECTOR or first connected */
     const char *mode;      /* "WxH" or "WxH@Hz"; NULL: FIXEL_MODE or the preferred mode */
-    fx_format format;      /* FX_FMT_XRGB8888 or FX_FMT_RGB565 for DRM; FX_FMT_COUNT = default */
+    fx_format format;      /* FX_FMT_XRGB8888 or FX_FMT_RGB565 for DRM (a plane lacking it gets the
+                              other); FX_FMT_COUNT = FIXEL_DRM_FORMAT=XRGB8888|RGB565, else the board
+                              profile's BOARD_DRM_FORMAT, else XRGB8888 unless the plane has only RGB565 */
     int rotation;          /* 0, 90, 180, 270; -1 = FIXEL_ROTATION or 0 */
     int sw_rotation;       /* 1: rotate in software even where the DRM plane has a rotation
                               property (also FIXEL_SW_ROTATION=1); 0: the plane rotates when it can */
