@@ -282,6 +282,14 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
         d->info.backend = b;
         r = open_backend(d, b);
         if (r < 0) {
+            /* Backends say nothing at error level about a device that is
+             * not there (auto probing expects that): say it here. */
+            if (r == -FX_ENOENT || r == -FX_ENODEV)
+                fx_display_log(d, FX_LOG_ERROR,
+                               "no %s display found (%s%s%s): is its driver loaded? "
+                               "FIXEL_BACKEND=memory runs headless",
+                               fx_backend_name(b), d->device[0] ? d->device : "",
+                               d->device[0] ? ": " : "", fx_strerror(r));
             reset_backend(d);
             free(d);
             return r;

@@ -591,6 +591,7 @@ static int find_card(fx_display *d, int *fd_out)
     if (!want)
         want = getenv("FIXEL_DRM_DEVICE");
     if (want && *want) {
+        snprintf(d->device, sizeof d->device, "%s", want); /* named in errors */
         int fd = open_card(d, want, 0);
         if (fd < 0)
             return fd;

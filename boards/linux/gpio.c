@@ -98,10 +98,24 @@ void fx_gpio_read(fx_app *a, int i)
     struct gpiod_line_event ev;
     /* The event fd blocks: poll() announced one event, read exactly one. */
     if (gpiod_line_event_read_fd(g->fd, &ev) < 0) {
-        fx_display_log(a->disp, FX_LOG_ERROR, "gpio: line %u vanished (%s); button dropped",
-                       gpiod_line_offset(g->line), strerror(errno));
-        close_in(g);
-        a->gpio[i] = a->gpio[--a->ngpio];
+        /* A chip that goes away (unbound driver, removed expander) fails
+         * every line at once: drop them all with one message instead of one
+         * per line as each fd reports in. */
+        int e = errno;
+        char chip[32];
+        struct gpiod_chip *c = gpiod_line_get_chip(g->line);
+        snprintf(chip, sizeof chip, "%s", c && gpiod_chip_name(c) ? gpiod_chip_name(c) : "?");
+        int dropped = 0;
+        for (int k = a->ngpio - 1; k >= 0; k--) {
+            struct gpiod_chip *ck = gpiod_line_get_chip(a->gpio[k].line);
+            if (k != i && !(e == ENODEV && ck && gpiod_chip_name(ck) && !strcmp(gpiod_chip_name(ck), chip)))
+                continue;
+            close_in(&a->gpio[k]);
+            a->gpio[k] = a->gpio[--a->ngpio];
+            dropped++;
+        }
+        fx_display_log(a->disp, FX_LOG_ERROR, "gpio: %s vanished (%s); %d button%s dropped",
+                       chip, strerror(e), dropped, dropped == 1 ? "" : "s");
         return;
     }
     /* Timed on our monotonic clock, not ev.ts: older kernels stamp v1 line

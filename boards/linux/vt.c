@@ -26,6 +26,7 @@
 
 struct fx_vt {
     int fd;
+    char path[16];  /* /dev/ttyN, reopened when fd was hung up */
     int num;        /* N of /dev/ttyN */
     int old_mode;   /* KD_TEXT or KD_GRAPHICS as found */
     int old_kbmode; /* K_XLATE, K_UNICODE, ... as found */
@@ -199,6 +200,8 @@ int fx_vt_enter(fx_display *d, fx_vt **out)
     }
     vt->fd = fd;
     vt->num = vt_num_of(fd);
+    if (vt->num)
+        snprintf(vt->path, sizeof vt->path, "/dev/tty%d", vt->num);
     vt->pipe_r = -1;
     if (ioctl(fd, KDGETMODE, &vt->old_mode) < 0 || ioctl(fd, KDGKBMODE, &vt->old_kbmode) < 0) {
         int e = errno;
@@ -223,15 +226,29 @@ int fx_vt_enter(fx_display *d, fx_vt **out)
     return 0;
 }
 
+static int restore_on(const fx_vt *vt, int fd)
+{
+    if (vt->switching)
+        ioctl(fd, VT_SETMODE, &vt->old_vtmode);
+    if (vt->kb_changed)
+        ioctl(fd, KDSKBMODE, vt->old_kbmode);
+    return ioctl(fd, KDSETMODE, vt->old_mode);
+}
+
 void fx_vt_emergency_restore(fx_vt *vt)
 {
     if (!vt)
         return;
-    if (vt->switching)
-        ioctl(vt->fd, VT_SETMODE, &vt->old_vtmode);
-    if (vt->kb_changed)
-        ioctl(vt->fd, KDSKBMODE, vt->old_kbmode);
-    ioctl(vt->fd, KDSETMODE, vt->old_mode);
+    /* When the session leader on the VT dies (the shell that started us was
+     * killed) the kernel hangs the tty up, and every ioctl on our old file
+     * fails with EIO: open the VT again (open is async-signal-safe). */
+    if (restore_on(vt, vt->fd) < 0 && errno == EIO && vt->path[0]) {
+        int fd = open(vt->path, O_RDWR | O_CLOEXEC | O_NOCTTY);
+        if (fd >= 0) {
+            restore_on(vt, fd);
+            close(fd);
+        }
+    }
 }
 
 void fx_vt_leave(fx_vt *vt)
