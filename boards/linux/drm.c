@@ -721,7 +721,7 @@ int fx_drm_open(fx_display *d)
         p->rot_prop = pl.rot_prop;
         p->rot_saved = pl.rot_value;
         /* Without plane rotation the plane must not be left rotated by
-         * someone else either: rotate-0 is then the fwanted value. */
+         * someone else either: rotate-0 is then the wanted value. */
         p->rot_want = hw ? fx_plane_rotation_bit(d->opt.rotation) : FX_PLANE_ROTATE_0;
         p->rot_apply = (pl.rot_mask & p->rot_want) && p->rot_want != p->rot_saved;
         p->emergency_off.crtc_id = p->crtc_id;
