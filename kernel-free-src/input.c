@@ -169,9 +169,18 @@ static void frame(fx_input *in, fx_input_dev *d, uint64_t t, fx_emit_fn emit, vo
      *    before this frame's button changes (as GLUT does) */
     int moved = 0;
     if (d->rel[0] || d->rel[1]) {
-        int32_t dx = d->rel[0], dy = d->rel[1];
-        int32_t nx = clamp((int64_t)in->px + dx, 0, in->phys_w - 1);
-        int32_t ny = clamp((int64_t)in->py + dy, 0, in->phys_h - 1);
+        /* A mouse moves the pointer across the picture the user looks at
+         * (logical), however the panel is mounted: turn the step into
+         * physical pixels. 64-bit so negating a saturated step is defined. */
+        int64_t dx = d->rel[0], dy = d->rel[1], pdx, pdy;
+        switch (in->rotation) {
+        case 90: pdx = -dy; pdy = dx; break;
+        case 180: pdx = -dx; pdy = -dy; break;
+        case 270: pdx = dy; pdy = -dx; break;
+        default: pdx = dx; pdy = dy; break;
+        }
+        int32_t nx = clamp((int64_t)in->px + pdx, 0, in->phys_w - 1);
+        int32_t ny = clamp((int64_t)in->py + pdy, 0, in->phys_h - 1);
         moved = nx != in->px || ny != in->py;
         in->px = nx;
         in->py = ny;

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/signalfd.h>
 #include <sys/timerfd.h>
 #include <time.h>
@@ -35,7 +36,65 @@ uint64_t fx_app_now_us(void)
 void fx_app_emit(void *u, const fx_event *e)
 {
     fx_app *a = u;
+    /* A touchscreen's pointing (BTN_TOUCH comes as mouse events too) hides
+     * the pointer; a mouse or tablet brings it back. */
+    if (e->type == FX_EVENT_TOUCH || (a->feeding_cls & FX_DEV_TOUCH))
+        a->pointer_touch_hidden = 1;
+    else if ((a->feeding_cls & (FX_DEV_MOUSE | FX_DEV_TABLET)) &&
+             (e->type == FX_EVENT_MOUSE || e->type == FX_EVENT_MOTION ||
+              e->type == FX_EVENT_PASSIVE || e->type == FX_EVENT_WHEEL))
+        a->pointer_touch_hidden = 0;
     fx_dispatch(&a->cb, a->user, e);
+}
+
+void fx_app_feed(fx_app *a, fx_input_dev *d, const fx_raw_event *ev)
+{
+    a->feeding_cls = d->cls;
+    fx_input_feed(&a->in, d, ev, fx_app_emit, a);
+    a->feeding_cls = 0;
+}
+
+int fx_app_pointer_visible(const fx_app *a)
+{
+    if (a->pointer_mode == FX_POINTER_OFF || a->pointer_touch_hidden)
+        return 0;
+    if (a->pointer_mode == FX_POINTER_ON)
+        return 1;
+    for (int i = 0; i < a->ndevs; i++)
+        if (a->devs[i]->st.cls & (FX_DEV_MOUSE | FX_DEV_TABLET))
+            return 1;
+    return 0;
+}
+
+void fx_app_pointer_sync(fx_app *a)
+{
+    int32_t x, y;
+    fx_input_to_logical(&a->in, a->in.px, a->in.py, &x, &y);
+    fx_display_set_pointer(a->disp, fx_app_pointer_visible(a), x, y);
+}
+
+void fx_app_set_pointer(fx_app *a, fx_pointer_mode mode)
+{
+    a->pointer_mode = mode;
+    fx_app_pointer_sync(a);
+}
+
+int fx_app_set_pointer_sprite(fx_app *a, const fx_sprite *s)
+{
+    return fx_display_set_pointer_sprite(a->disp, s);
+}
+
+static fx_pointer_mode pointer_mode_from_env(fx_app *a)
+{
+    const char *e = getenv("FIXEL_POINTER");
+    if (!e || !*e || !strcasecmp(e, "auto"))
+        return FX_POINTER_AUTO;
+    if (!strcasecmp(e, "on") || !strcmp(e, "1"))
+        return FX_POINTER_ON;
+    if (!strcasecmp(e, "off") || !strcmp(e, "0"))
+        return FX_POINTER_OFF;
+    fx_display_log(a->disp, FX_LOG_ERROR, "FIXEL_POINTER=%s ignored (on, off or auto)", e);
+    return FX_POINTER_AUTO;
 }
 
 void fx_app_options_init(fx_app_options *o)
@@ -119,6 +178,8 @@ int fx_app_open(fx_app **out, const fx_app_options *o)
      * normally and fx_app_close restores the console. */
     sigprocmask(SIG_BLOCK, &set, NULL);
     a->sfd = signalfd(-1, &set, SFD_NONBLOCK | SFD_CLOEXEC);
+    a->pointer_mode = o->pointer != FX_POINTER_AUTO ? o->pointer : pointer_mode_from_env(a);
+    fx_app_pointer_sync(a); /* drawn with the first frame */
     current = a;
     *out = a;
     return 0;
@@ -289,6 +350,9 @@ int fx_app_main_loop(fx_app *a)
             if (p[i_gpio + k].revents & (POLLIN | POLLHUP | POLLERR))
                 if (k < a->ngpio && a->gpio[k].fd == p[i_gpio + k].fd)
                     fx_gpio_read(a, k);
+        /* Once per pass, not per event: a burst of mouse reports costs one
+         * repaint of the sprite. */
+        fx_app_pointer_sync(a);
     }
     return 0;
 }

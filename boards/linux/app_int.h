@@ -64,10 +64,20 @@ struct fx_app {
     } timers[FX_APP_MAX_TIMERS];
 
     int redisplay, quit, started;
+
+    /* software pointer policy (app.c) */
+    fx_pointer_mode pointer_mode; /* resolved: never AUTO from the environment */
+    int pointer_touch_hidden;     /* the last pointing was a touch */
+    unsigned feeding_cls;         /* class of the device whose events are being fed */
 };
 
 uint64_t fx_app_now_us(void);
 void fx_app_emit(void *app, const fx_event *e);
+/* Feed one raw event of device d (its class decides pointer hiding). */
+void fx_app_feed(fx_app *a, fx_input_dev *d, const fx_raw_event *ev);
+/* Show, hide or move the software pointer to match the policy and the
+ * input state; cheap when nothing changed (the loop calls it every pass). */
+void fx_app_pointer_sync(fx_app *a);
 
 /* evdev.c */
 void fx_evdev_scan(fx_app *a);

@@ -182,6 +182,10 @@ int fx_display_resized(fx_display *d)
         r = alloc_shadow(d);
     fx_damage_reset(&d->prev);
     d->repair = 0;
+    /* New buffers: nothing of ours is drawn in them. */
+    for (int i = 0; i < 2; i++)
+        d->ptr.save[i].r = (fx_rect){0, 0, 0, 0};
+    d->ptr.drawing = 0;
     d->info.reshapes++;
     int32_t lw, lh;
     fx_rotated_size(d->sw_rotation, d->info.width, d->info.height, &lw, &lh);
@@ -246,6 +250,11 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
     d->log_priority = opt->log_priority ? opt->log_priority : env_log_priority();
     d->shown = -1;
     d->epoll_fd = -1;
+    d->ptr.sprite = *fx_sprite_arrow();
+    for (int i = 0; i < 2; i++) {
+        d->ptr.save[i].mem = d->ptr.mem[i];
+        d->ptr.save[i].cap = FX_SPRITE_MAX * FX_SPRITE_MAX;
+    }
 
     if (d->opt.rotation < 0) {
         const char *e = getenv("FIXEL_ROTATION");
@@ -382,6 +391,84 @@ void fx_display_close(fx_display *d)
     free(d);
 }
 
+/* ---- software pointer ---------------------------------------------------- */
+
+static const fx_rect no_rect = {0, 0, 0, 0};
+
+/* Take buffer buf's sprite out; returns the physical rectangle touched. */
+static fx_rect ptr_undraw(fx_display *d, int buf)
+{
+    return fx_sprite_restore(&d->scan[buf], &d->ptr.save[buf]);
+}
+
+/* Draw the sprite into buffer buf (which must hold none); returns the
+ * physical rectangle touched. Shadow buffers are physical and rotated;
+ * direct buffers are the program's unrotated surface. */
+static fx_rect ptr_draw(fx_display *d, int buf)
+{
+    if (!d->ptr.visible)
+        return no_rect;
+    int rot = d->info.present == FX_PRESENT_SHADOW ? d->sw_rotation : 0;
+    if (fx_sprite_draw(&d->scan[buf], rot, &d->ptr.sprite, d->ptr.x, d->ptr.y, &d->ptr.save[buf]) < 0)
+        return no_rect;
+    return d->ptr.save[buf].r;
+}
+
+/* Bring the buffer on screen up to the pointer state: old and new sprite
+ * rectangles only, no frame. */
+static void ptr_refresh(fx_display *d)
+{
+    int b = d->shown;
+    /* Before the first frame, while away, or while the program is drawing
+     * into the only buffer, the next present draws the pointer. */
+    if (b < 0 || d->away || d->ptr.drawing)
+        return;
+    fx_rect phys[2];
+    int n = 0;
+    phys[0] = ptr_undraw(d, b);
+    phys[1] = ptr_draw(d, b);
+    if (!fx_rect_empty(phys[0]))
+        n++;
+    if (!fx_rect_empty(phys[1]))
+        phys[n++] = phys[1];
+    if (n == 0)
+        return;
+    d->info.pointer_updates++;
+    d->ops->show(d, b, phys, n); /* the buffer on screen: DIRTYFB at most, never a flip */
+}
+
+void fx_display_set_pointer(fx_display *d, int visible, int32_t x, int32_t y)
+{
+    visible = visible != 0;
+    if (visible == d->ptr.visible && (!visible || (x == d->ptr.x && y == d->ptr.y)))
+        return;
+    d->ptr.visible = visible;
+    d->ptr.x = x;
+    d->ptr.y = y;
+    ptr_refresh(d);
+}
+
+int fx_display_set_pointer_sprite(fx_display *d, const fx_sprite *s)
+{
+    if (!s)
+        s = fx_sprite_arrow();
+    if (fx_sprite_check(s) < 0)
+        return -FX_EINVAL;
+    d->ptr.sprite = *s;
+    if (s != fx_sprite_arrow()) {
+        memcpy(d->ptr.image, s->pixels, (size_t)s->w * (size_t)s->h * sizeof *s->pixels);
+        d->ptr.sprite.pixels = d->ptr.image;
+    }
+    if (d->ptr.visible)
+        ptr_refresh(d);
+    return 0;
+}
+
+fx_surface fx_display_screen(const fx_display *d)
+{
+    return d->scan[d->shown >= 0 ? d->shown : 0];
+}
+
 /* ---- frames ------------------------------------------------------------ */
 
 void fx_display_flip_done(fx_display *d)
@@ -404,14 +491,23 @@ fx_surface fx_display_surface(fx_display *d)
     if (d->info.present == FX_PRESENT_SHADOW)
         return d->shadow;
     wait_flip(d);
+    int b = d->nbuf == 2 ? d->back : 0;
+    /* No longer on screen (or about to be drawn over): the program gets its
+     * own pixels back. */
+    ptr_undraw(d, b);
     if (d->repair && d->nbuf == 2) {
         /* The back buffer holds the frame before last: bring it up to the
          * picture on screen by copying what the last frame changed. */
         for (int i = 0; i < d->prev.n; i++)
             fx_copy_rotated(&d->scan[d->back], &d->scan[d->back ^ 1], d->prev.r[i], 0);
+        /* The copy may have carried the front's sprite along; the front's
+         * save holds the picture under it, which is the back's picture now. */
+        fx_sprite_save_apply(&d->scan[b], &d->ptr.save[b ^ 1]);
     }
     d->repair = 0;
-    return d->scan[d->nbuf == 2 ? d->back : 0];
+    if (d->nbuf == 1)
+        d->ptr.drawing = 1;
+    return d->scan[b];
 }
 
 int fx_display_present(fx_display *d, const fx_rect *damage, int n)
@@ -444,6 +540,11 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n)
         return 0;
     wait_flip(d);
     int target = d->nbuf == 2 ? d->back : 0;
+    fx_rect ptr_old = d->shown >= 0 ? d->ptr.save[d->shown].r : no_rect;
+    /* Shadow: the target's pixels under its old sprite are stale picture the
+     * copy below brings up to date. Direct: normally already out (taken at
+     * fx_display_surface). */
+    ptr_undraw(d, target);
     if (d->info.present == FX_PRESENT_SHADOW) {
         /* A flipped-to buffer last received the frame before the previous
          * one: it needs this frame's damage and the previous frame's. */
@@ -457,11 +558,24 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n)
         for (int i = 0; i < todo.n; i++)
             fx_copy_rotated(&d->scan[target], &d->shadow, todo.r[i], d->sw_rotation);
     }
+    d->ptr.drawing = 0;
+    fx_rect ptr_new = ptr_draw(d, target);
+    /* Physical damage: the frame's, and both sprite rectangles (for DIRTYFB
+     * drivers). Rotation keeps the logical list's non-overlap and merge
+     * costs, so without a pointer this is the rotated list itself. */
+    fx_damage pd;
+    fx_rect pbounds = {0, 0, d->info.width, d->info.height};
+    fx_damage_reset(&pd);
     for (int i = 0; i < cur.n; i++)
-        phys[i] = fx_rect_rotate(cur.r[i], d->sw_rotation, d->info.width, d->info.height);
+        fx_damage_add(&pd, fx_rect_rotate(cur.r[i], d->sw_rotation, d->info.width, d->info.height),
+                      pbounds);
+    fx_damage_add(&pd, ptr_old, pbounds);
+    fx_damage_add(&pd, ptr_new, pbounds);
+    for (int i = 0; i < pd.n; i++)
+        phys[i] = pd.r[i];
     /* DRM buffers are ours even while away: keep the bookkeeping as if
      * shown, so the return puts the latest frame up. */
-    r = d->away ? 0 : d->ops->show(d, target, phys, cur.n);
+    r = d->away ? 0 : d->ops->show(d, target, phys, pd.n);
     if (r < 0)
         return r;
     d->shown = target;
@@ -513,6 +627,7 @@ void fx_display_vt_acquire(fx_display *d)
     if (d->info.backend == FX_BACKEND_FBDEV && d->info.present == FX_PRESENT_SHADOW && d->shown >= 0)
         fx_copy_rotated(&d->scan[d->shown], &d->shadow, fx_surface_rect(&d->shadow), d->sw_rotation);
     d->away = 0;
+    ptr_refresh(d); /* moves while away, or a console that painted over it */
     d->info.vt_back++;
     fx_display_log(d, FX_LOG_DEBUG, "back on our VT: display retaken");
     if (d->vt_cb)

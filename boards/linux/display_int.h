@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include "fixel/display.h"
+#include "fixel/sprite.h"
 #include "fixel/surface.h"
 
 /* ---- pure helpers (present.c: no OS headers, no allocation) ---- */
@@ -159,6 +160,19 @@ struct fx_display {
     void *vt_user;
     void (*reshape_cb)(fx_display *d, int32_t w, int32_t h, void *user);
     void *reshape_user;
+
+    /* Software pointer: drawn only into scanout buffers, never into the
+     * program's surface (direct mode takes it out again before handing the
+     * buffer over). save[i] holds what buffer i has under its sprite. */
+    struct {
+        int visible;
+        int32_t x, y;           /* logical hotspot position */
+        int drawing;            /* direct, one buffer: the program holds the surface */
+        fx_sprite sprite;
+        uint32_t image[FX_SPRITE_MAX * FX_SPRITE_MAX];
+        fx_sprite_save save[2];
+        uint32_t mem[2][FX_SPRITE_MAX * FX_SPRITE_MAX];
+    } ptr;
 };
 
 /* Backends call this after replacing scan[] with buffers of a new size

@@ -146,13 +146,13 @@ void fx_evdev_read(fx_app *a, int i)
         if (r == LIBEVDEV_READ_STATUS_SYNC && flag == LIBEVDEV_READ_FLAG_NORMAL) {
             /* SYN_DROPPED: forget the partial frame, then take libevdev's
              * resynchronised state as ordinary events. */
-            fx_input_feed(&a->in, &e->st, &raw, fx_app_emit, a);
+            fx_app_feed(a, &e->st, &raw);
             fx_raw_event rep = {raw.time_us, FX_IN_SYN, FX_IN_SYN_REPORT, 0};
-            fx_input_feed(&a->in, &e->st, &rep, fx_app_emit, a);
+            fx_app_feed(a, &e->st, &rep);
             flag = LIBEVDEV_READ_FLAG_SYNC;
             continue;
         }
-        fx_input_feed(&a->in, &e->st, &raw, fx_app_emit, a);
+        fx_app_feed(a, &e->st, &raw);
     }
 }
 

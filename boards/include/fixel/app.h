@@ -22,6 +22,15 @@
  * comes from a tslib pointercal file (FIXEL_POINTERCAL, else /etc/pointercal
  * when present), and FIXEL_TOUCH=swap,invertx,inverty adjusts the axes.
  * Coordinates follow the display rotation.
+ *
+ * Software pointer: an arrow (or a sprite set with fx_app_set_pointer_sprite)
+ * drawn over the picture at the mouse position, following the display
+ * rotation. It is never part of the program's surface (see
+ * fx_display_set_pointer), and a move without a new frame repaints only the
+ * old and new sprite rectangles. FX_POINTER_AUTO (the default) shows it
+ * while a relative mouse or a tablet is connected, so touch-only systems
+ * have none; FIXEL_POINTER=on|off|auto overrides AUTO. It hides on touch
+ * input and comes back on the next mouse motion.
  */
 #ifndef FIXEL_APP_H
 #define FIXEL_APP_H
@@ -31,6 +40,12 @@
 #include "fixel/surface.h"
 
 typedef struct fx_app fx_app;
+
+typedef enum fx_pointer_mode {
+    FX_POINTER_AUTO, /* FIXEL_POINTER=on|off|auto, else on while a mouse or tablet is present */
+    FX_POINTER_ON,   /* shown (still hidden by touch input until the mouse moves) */
+    FX_POINTER_OFF,
+} fx_pointer_mode;
 
 /* A GPIO push button. */
 typedef struct fx_gpio_button {
@@ -52,6 +67,7 @@ typedef struct fx_app_options {
     const fx_gpio_button *buttons; /* NULL: FIXEL_BUTTONS, else the board's default map
                                     * (see fx_gpio_parse_buttons) */
     int nbuttons;
+    fx_pointer_mode pointer; /* software pointer policy (default AUTO) */
 } fx_app_options;
 
 void fx_app_options_init(fx_app_options *o);
@@ -76,6 +92,13 @@ fx_display *fx_app_display(fx_app *a);
 void fx_app_size(const fx_app *a, int32_t *w, int32_t *h);
 /* Drive a GPIO output line (LED, backlight): requested on first use. */
 int fx_app_gpio_output(fx_app *a, const char *chip, int offset, int value);
+/* Software pointer policy (FX_POINTER_AUTO here means the automatic rule,
+ * not the environment), and its image (copied; NULL: the built-in arrow).
+ * set_pointer_sprite returns 0 or -FX_EINVAL (see fx_sprite_check). */
+void fx_app_set_pointer(fx_app *a, fx_pointer_mode mode);
+int fx_app_set_pointer_sprite(fx_app *a, const fx_sprite *s);
+/* 1 while the pointer is meant to be on screen. */
+int fx_app_pointer_visible(const fx_app *a);
 /* Number of input devices and GPIO buttons open now. */
 int fx_app_input_count(const fx_app *a);
 

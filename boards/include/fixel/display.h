@@ -37,6 +37,7 @@
 #include <stdarg.h>
 #include <stdint.h>
 
+#include "fixel/sprite.h"
 #include "fixel/surface.h"
 
 typedef struct fx_display fx_display;
@@ -168,9 +169,28 @@ typedef struct fx_display_info {
     uint32_t hotplugs;        /* DRM hotplug uevents for our card handled */
     int connected;            /* DRM: our connector is connected (1 elsewhere) */
     uint32_t reshapes;        /* size changes after hotplug */
+    uint32_t pointer_updates; /* pointer moves shown without a frame (old + new rectangles only) */
 } fx_display_info;
 
 void fx_display_get_info(const fx_display *d, fx_display_info *info);
+
+/* A software pointer drawn over the picture (fx_app drives it from the mouse;
+ * see fixel/app.h). It lives only in scanout memory: the program's surface
+ * never contains it, so reading pixels back gives the program's own drawing.
+ * Shadow presentation draws it after the damaged-row copy; direct
+ * presentation saves the pixels under it and puts them back before handing
+ * the buffer to the program. A move between frames repaints only the old and
+ * new sprite rectangles of the buffer on screen (plus DIRTYFB for them).
+ * (x, y) is the hotspot in logical pixels; hidden by default. With one
+ * direct buffer the pointer is off screen from fx_display_surface until the
+ * frame is presented. */
+void fx_display_set_pointer(fx_display *d, int visible, int32_t x, int32_t y);
+/* Replace the sprite (copied; NULL: the built-in arrow). Returns 0 or
+ * -FX_EINVAL (see fx_sprite_check). */
+int fx_display_set_pointer_sprite(fx_display *d, const fx_sprite *s);
+/* What the scanout buffer on screen holds now (physical size, the pointer
+ * included): for tests and screenshots of the memory backend. */
+fx_surface fx_display_screen(const fx_display *d);
 const char *fx_backend_name(fx_backend b);
 
 /* Log through the display's log function (used by other board modules). */

@@ -6,8 +6,10 @@
 #ifndef FIXEL_GUEST_SCENES_H
 #define FIXEL_GUEST_SCENES_H
 
+#include <stdlib.h>
 #include <string.h>
 
+#include "fixel/sprite.h"
 #include "fixel/surface.h"
 
 static void scene_bars(const fx_surface *s)
@@ -46,9 +48,27 @@ static void scene_checker(const fx_surface *s)
     fx_surface_fill(s, mark, 0xFFFF3300);
 }
 
-/* Returns 0, or -1 for an unknown scene name. */
+/* Returns 0, or -1 for an unknown scene name. "SCENE@X.Y" is SCENE with
+ * the default pointer arrow's hotspot at logical (X, Y) (guest/pointer.c). */
 static int scene_draw(const char *name, const fx_surface *s)
 {
+    const char *at = strchr(name, '@');
+    if (at) {
+        char base[32];
+        size_t n = (size_t)(at - name);
+        char *end;
+        long x = strtol(at + 1, &end, 10), y = *end == '.' ? strtol(end + 1, &end, 10) : 0;
+        if (n >= sizeof base || *end)
+            return -1;
+        memcpy(base, name, n);
+        base[n] = 0;
+        uint32_t mem[FX_SPRITE_MAX * FX_SPRITE_MAX];
+        fx_sprite_save sv = {{0, 0, 0, 0}, mem, FX_SPRITE_MAX * FX_SPRITE_MAX};
+        if (scene_draw(base, s) < 0 ||
+            fx_sprite_draw(s, 0, fx_sprite_arrow(), (int32_t)x, (int32_t)y, &sv) < 0)
+            return -1;
+        return 0;
+    }
     if (!strcmp(name, "bars"))
         scene_bars(s);
     else if (!strcmp(name, "checker"))
