@@ -185,6 +185,7 @@ int fx_display_resized(fx_display *d)
     /* New buffers: nothing of ours is drawn in them. */
     for (int i = 0; i < 2; i++)
         d->ptr.save[i].r = (fx_rect){0, 0, 0, 0};
+    d->ptr.undrawn = (fx_rect){0, 0, 0, 0};
     d->ptr.drawing = 0;
     d->info.reshapes++;
     int32_t lw, lh;
@@ -494,7 +495,9 @@ fx_surface fx_display_surface(fx_display *d)
     int b = d->nbuf == 2 ? d->back : 0;
     /* No longer on screen (or about to be drawn over): the program gets its
      * own pixels back. */
-    ptr_undraw(d, b);
+    fx_rect gone = ptr_undraw(d, b);
+    if (d->nbuf == 1 && !fx_rect_empty(gone))
+        d->ptr.undrawn = gone;
     if (d->repair && d->nbuf == 2) {
         /* The back buffer holds the frame before last: bring it up to the
          * picture on screen by copying what the last frame changed. */
@@ -570,7 +573,9 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n)
         fx_damage_add(&pd, fx_rect_rotate(cur.r[i], d->sw_rotation, d->info.width, d->info.height),
                       pbounds);
     fx_damage_add(&pd, ptr_old, pbounds);
+    fx_damage_add(&pd, d->ptr.undrawn, pbounds);
     fx_damage_add(&pd, ptr_new, pbounds);
+    d->ptr.undrawn = no_rect;
     for (int i = 0; i < pd.n; i++)
         phys[i] = pd.r[i];
     /* DRM buffers are ours even while away: keep the bookkeeping as if

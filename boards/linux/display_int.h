@@ -168,6 +168,8 @@ struct fx_display {
         int visible;
         int32_t x, y;           /* logical hotspot position */
         int drawing;            /* direct, one buffer: the program holds the surface */
+        fx_rect undrawn;        /* direct, one buffer: where it was taken out, still to be
+                                 * reported with the frame (DIRTYFB) */
         fx_sprite sprite;
         uint32_t image[FX_SPRITE_MAX * FX_SPRITE_MAX];
         fx_sprite_save save[2];

@@ -62,7 +62,15 @@ static void on_display(void *u)
     p->dirty_reads += !surf_equal(&s, &p->ref.surf);
     picture(&s, p);
     picture(&p->ref.surf, p);
-    fx_app_present(p->app, NULL, 0);
+    /* After the first frame only the newest mark changes: presenting just
+     * it makes the display add the pointer's rectangles itself. */
+    if (p->frames == 0 || p->nmarks == 0) {
+        fx_app_present(p->app, NULL, 0);
+    } else {
+        const int *m = p->marks[p->nmarks - 1];
+        fx_rect r = {m[0] - 3, m[1] - 3, m[0] + 4, m[1] + 4};
+        fx_app_present(p->app, &r, 1);
+    }
     p->frames++;
 }
 
@@ -164,6 +172,38 @@ typedef struct config {
     int goldens;
 } config;
 
+/* The backend's show calls, recorded: which buffer and which physical
+ * rectangles a present or a pointer move reported (DIRTYFB's clip list). */
+static struct {
+    const struct fx_backend_ops *real;
+    struct fx_backend_ops ops;
+    int calls, buf, n;
+    fx_rect r[FX_DAMAGE_MAX];
+} shows;
+
+static int record_show(fx_display *d, int buf, const fx_rect *phys, int n)
+{
+    shows.calls++;
+    shows.buf = buf;
+    shows.n = n;
+    memcpy(shows.r, phys, (size_t)n * sizeof *phys);
+    return shows.real->show(d, buf, phys, n);
+}
+
+/* 1 when every pixel of want lies in one of the shown rectangles. */
+static int shown_covers(fx_rect want)
+{
+    for (int32_t y = want.y0; y < want.y1; y++)
+        for (int32_t x = want.x0; x < want.x1; x++) {
+            int in = 0;
+            for (int i = 0; i < shows.n && !in; i++)
+                in = x >= shows.r[i].x0 && x < shows.r[i].x1 && y >= shows.r[i].y0 && y < shows.r[i].y1;
+            if (!in)
+                return 0;
+        }
+    return 1;
+}
+
 static void quiet(fx_log_priority p, void *u, const char *fmt, va_list ap)
 {
     (void)p, (void)u, (void)fmt, (void)ap;
@@ -186,6 +226,11 @@ static fx_app *open_app(int32_t w, int32_t h, int rot, const config *cf, fx_poin
     fx_app *a = NULL;
     if (fx_app_open(&a, &o) < 0)
         return NULL;
+    fx_display *disp = fx_app_display(a);
+    shows.real = disp->ops;
+    shows.ops = *disp->ops;
+    shows.ops.show = record_show;
+    disp->ops = &shows.ops;
     *second = NULL;
     if (cf->buffers == 2) {
         fx_display *d = fx_app_display(a);
@@ -230,7 +275,7 @@ static void step(prog *p, const char *where)
     fx_blit(&snap.surf, 0, 0, &scr);
     int shown = d->shown;
     fx_rect old = shown >= 0 ? d->ptr.save[shown].r : (fx_rect){0, 0, 0, 0};
-    int frames = p->frames;
+    int frames = p->frames, calls = shows.calls;
 
     fx_app_pointer_sync(a);
     if (!redraw && shown >= 0) {
@@ -252,10 +297,30 @@ static void step(prog *p, const char *where)
                      outside);
         FX_CHECK_MSG(!changed || after.pointer_updates == before.pointer_updates + 1,
                      "%s: the move was not one pointer update", where);
+        /* Shown as the old and new rectangles of the buffer on screen. */
+        if (changed) {
+            FX_CHECK_MSG(shows.calls == calls + 1 && shows.buf == d->shown, "%s: %d show calls",
+                         where, shows.calls - calls);
+            FX_CHECK_MSG(shows.n <= 2 && shown_covers(old) && shown_covers(now),
+                         "%s: damage misses a sprite rectangle", where);
+            int64_t area = 0, want = 0;
+            for (int i = 0; i < shows.n; i++)
+                area += (int64_t)(shows.r[i].x1 - shows.r[i].x0) * (shows.r[i].y1 - shows.r[i].y0);
+            want = (int64_t)(old.x1 - old.x0) * (old.y1 - old.y0) +
+                   (int64_t)(now.x1 - now.x0) * (now.y1 - now.y0);
+            FX_CHECK_MSG(area <= want, "%s: damage %lld pixels for sprites of %lld", where,
+                         (long long)area, (long long)want);
+        }
     }
     if (a->redisplay && a->cb.display) {
+        /* On screen before the frame (after this pass's move). */
+        fx_rect before_frame = d->shown >= 0 ? d->ptr.save[d->shown].r : (fx_rect){0, 0, 0, 0};
         a->redisplay = 0;
         a->cb.display(a->user);
+        /* The frame's damage names where the pointer was and is. */
+        fx_rect now = d->ptr.save[d->shown].r;
+        FX_CHECK_MSG(shown_covers(before_frame) && shown_covers(now),
+                     "%s: the frame's damage misses a pointer rectangle", where);
     }
     FX_CHECK_MSG(p->frames == frames + redraw, "%s: frames %d -> %d", where, frames, p->frames);
     fx_memfb_destroy(&snap);
@@ -468,5 +533,46 @@ FX_TEST(pointer_custom_sprite)
     FX_CHECK_EQ_HEX(fx_surface_get(&scr, 20, 15), 0xFF000000u); /* arrow tip: black */
     FX_CHECK_EQ_HEX(fx_surface_get(&scr, 21, 17), 0xFFFFFFFFu); /* white body */
     FX_CHECK_EQ_HEX(fx_surface_get(&scr, 19, 15), 0xFF000000u); /* no cross left */
+    close_app(a, second);
+}
+
+/* One direct buffer: the program's surface is the scanout itself. Taking it
+ * takes the pointer off; a move meanwhile waits for the present, which
+ * reports both the rectangle the pointer left and the one it entered even
+ * when the program's own damage is elsewhere. */
+FX_TEST(pointer_single_direct_buffer_defers_and_reports_damage)
+{
+    const config cf = {FX_FMT_XRGB8888, FX_PRESENT_DIRECT, 1, 0};
+    void *second;
+    fx_app *a = open_app(80, 60, 0, &cf, FX_POINTER_OFF, &second);
+    FX_CHECK(a != NULL);
+    if (!a)
+        return;
+    fx_display *d = fx_app_display(a);
+    fx_surface s = fx_display_surface(d);
+    fx_surface_clear(&s, 0xFF204060u);
+    FX_CHECK_EQ(fx_display_present(d, NULL, 0), 0);
+    int calls = shows.calls;
+    fx_display_set_pointer(d, 1, 20, 20);
+    fx_rect at20 = fx_sprite_phys_rect(&s, 0, fx_sprite_arrow(), 20, 20);
+    FX_CHECK_EQ(shows.calls, calls + 1);
+    FX_CHECK(shown_covers(at20));
+    FX_CHECK_EQ_HEX(fx_surface_get(&s, 20, 20), 0xFF000000u);
+
+    s = fx_display_surface(d); /* the program draws: pointer out */
+    FX_CHECK_EQ_HEX(fx_surface_get(&s, 20, 20), 0xFF204060u);
+    calls = shows.calls;
+    fx_display_set_pointer(d, 1, 50, 30);
+    FX_CHECK_EQ(shows.calls, calls); /* deferred: nothing drawn into the program's surface */
+    FX_CHECK_EQ_HEX(fx_surface_get(&s, 50, 30), 0xFF204060u);
+    fx_rect mine = {0, 50, 10, 60};
+    fx_surface_fill(&s, mine, 0xFFFFFFFFu);
+    FX_CHECK_EQ(fx_display_present(d, &mine, 1), 0);
+    fx_rect at50 = fx_sprite_phys_rect(&s, 0, fx_sprite_arrow(), 50, 30);
+    FX_CHECK(shown_covers(mine));
+    FX_CHECK(shown_covers(at20)); /* where it was taken out */
+    FX_CHECK(shown_covers(at50)); /* where it is now */
+    FX_CHECK_EQ_HEX(fx_surface_get(&s, 20, 20), 0xFF204060u);
+    FX_CHECK_EQ_HEX(fx_surface_get(&s, 50, 30), 0xFF000000u);
     close_app(a, second);
 }

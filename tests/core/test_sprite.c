@@ -84,10 +84,12 @@ static int one_case(fx_format f, int rot, int32_t W, int32_t H, int32_t x, int32
     int any = 0;
     for (int32_t sy = 0; sy < test_sprite.h; sy++)
         for (int32_t sx = 0; sx < test_sprite.w; sx++) {
-            int32_t lx = x - test_sprite.hot_x + sx, ly = y - test_sprite.hot_y + sy, px, py;
+            /* 64-bit: the far-away cases would overflow int32 here. */
+            int64_t lx = (int64_t)x - test_sprite.hot_x + sx, ly = (int64_t)y - test_sprite.hot_y + sy;
+            int32_t px, py;
             if (lx < 0 || ly < 0 || lx >= LW || ly >= LH)
                 continue;
-            phys_of(rot, W, H, lx, ly, &px, &py);
+            phys_of(rot, W, H, (int32_t)lx, (int32_t)ly, &px, &py);
             if (!any)
                 want = (fx_rect){px, py, px + 1, py + 1}, any = 1;
             want.x0 = px < want.x0 ? px : want.x0;
@@ -160,7 +162,7 @@ FX_TEST(sprite_small_save_buffer_draws_nothing)
     test_surf a = make(FX_FMT_XRGB8888, 20, 20, 0);
     uint8_t *orig = malloc(a.size);
     memcpy(orig, a.mem, a.size);
-    uint32_t mem[19];
+    uint32_t mem[20];
     fx_sprite_save sv = {{0, 0, 0, 0}, mem, 19}; /* one short of 5 x 4 */
     FX_CHECK_EQ(fx_sprite_draw(&a.s, 0, &test_sprite, 5, 5, &sv), -FX_ENOSPC);
     FX_CHECK(fx_rect_empty(sv.r));
