@@ -76,7 +76,7 @@ TOOL_BINS  := $(TOOLS:%=$(BUILD)/bin/%)
 
 # Test suites: each entry is a command that prints a final "N passed, N failed".
 # test_display exercises boards/linux, which needs the board libraries.
-TEST_SRC   := $(sort $(filter-out $(if $(HAVE_OPT),,tests/core/test_display.c),$(wildcard tests/core/*.c)))
+TEST_SRC   := $(sort $(filter-out $(if $(HAVE_OPT),,tests/core/test_display.c tests/core/test_pointer.c),$(wildcard tests/core/*.c)))
 # 32-bit targets have no __int128: test files whose reference arithmetic
 # needs it unguarded run on 64-bit hosts only (tests/arm/test-arm.sh says so).
 ifeq ($(shell echo '__int128 x;' | $(CC) -x c -c -o /dev/null - 2>/dev/null && echo y),)

@@ -336,6 +336,7 @@ static void replay(const char *stream, const config *cf)
         return;
     prog p;
     memset(&p, 0, sizeof p);
+    unsetenv("FIXEL_POINTER"); /* the streams check the automatic rule */
     void *second = NULL;
     fx_evdev *dev[4] = {0};
     int rot = 0, lineno = 0;
