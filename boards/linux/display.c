@@ -161,6 +161,9 @@ static void reset_backend(fx_display *d)
     d->nbuf = 0;
     d->sw_rotation = d->opt.rotation;
     d->rotation_why = NULL;
+    /* else the next backend's log line names the device that failed */
+    d->device[0] = 0;
+    d->connector[0] = 0;
 }
 
 static int alloc_shadow(fx_display *d)
@@ -342,8 +345,9 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
     }
     fx_display_info pi;
     fx_display_get_info(d, &pi);
-    fx_display_log(d, FX_LOG_INFO, "%s %s%s%s %dx%d %s, %s, %d buffer%s, rotation %d%s%s (%s)",
-                   fx_backend_name(d->info.backend), d->device, d->connector[0] ? " " : "",
+    fx_display_log(d, FX_LOG_INFO, "%s%s%s%s%s %dx%d %s, %s, %d buffer%s, rotation %d%s%s (%s)",
+                   fx_backend_name(d->info.backend), d->device[0] ? " " : "", d->device,
+                   d->connector[0] ? " " : "",
                    d->connector, pi.width, pi.height,
                    fx_format_get(d->info.format)->name,
                    d->info.present == FX_PRESENT_DIRECT ? "direct" : "shadow", d->nbuf,
