@@ -31,18 +31,6 @@
 
 /* ---- helpers ------------------------------------------------------------ */
 
-static char logbuf[4096];
-
-static void capture_log(fx_log_priority p, void *user, const char *fmt, va_list ap)
-{
-    (void)user;
-    char line[512];
-    vsnprintf(line, sizeof line, fmt, ap);
-    printf("  log(%d): %s\n", (int)p, line);
-    size_t l = strlen(logbuf);
-    snprintf(logbuf + l, sizeof logbuf - l, "%s\n", line);
-}
-
 static void opts(fx_display_options *o, fx_backend b, fx_present_mode pm, int rot)
 {
     fx_display_options_init(o);
@@ -51,12 +39,6 @@ static void opts(fx_display_options *o, fx_backend b, fx_present_mode pm, int ro
     o->rotation = rot;
     o->log = capture_log;
     o->log_priority = FX_LOG_DEBUG;
-}
-
-static void msleep(int ms)
-{
-    struct timespec t = {ms / 1000, (long)(ms % 1000) * 1000000L};
-    nanosleep(&t, NULL);
 }
 
 /* Run fn in a child; returns its wait status. */

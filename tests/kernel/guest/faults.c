@@ -32,27 +32,6 @@
 #include "guest.h"
 #include "scenes.h"
 
-static char logbuf[8192];
-static int log_errors;
-
-static void capture_log(fx_log_priority p, void *user, const char *fmt, va_list ap)
-{
-    (void)user;
-    char line[512];
-    vsnprintf(line, sizeof line, fmt, ap);
-    printf("  log(%d): %s\n", (int)p, line);
-    size_t l = strlen(logbuf);
-    snprintf(logbuf + l, sizeof logbuf - l, "%s\n", line);
-    if (p == FX_LOG_ERROR)
-        log_errors++;
-}
-
-static void msleep(int ms)
-{
-    struct timespec t = {ms / 1000, (long)(ms % 1000) * 1000000L};
-    nanosleep(&t, NULL);
-}
-
 static int count(const char *hay, const char *needle)
 {
     int n = 0;

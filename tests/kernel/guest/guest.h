@@ -6,7 +6,10 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
+
+#include "fixel/display.h"
 
 static int guest_failed;
 
@@ -43,6 +46,31 @@ static int guest_request(const char *fmt, ...)
             return !strncmp(line + 4, "PASS", 4) || !strncmp(line + 4, "OK", 2);
     }
     return 0;
+}
+
+/* The library's log: echoed to the console (the serial log shows it) and
+ * kept in logbuf for checks on what it said; errors are counted. */
+static char logbuf[8192] __attribute__((unused));
+static int log_errors __attribute__((unused));
+static void capture_log(fx_log_priority p, void *user, const char *fmt, va_list ap)
+    __attribute__((unused));
+static void capture_log(fx_log_priority p, void *user, const char *fmt, va_list ap)
+{
+    (void)user;
+    char line[512];
+    vsnprintf(line, sizeof line, fmt, ap);
+    printf("  log(%d): %s\n", (int)p, line);
+    size_t l = strlen(logbuf);
+    snprintf(logbuf + l, sizeof logbuf - l, "%s\n", line);
+    if (p == FX_LOG_ERROR)
+        log_errors++;
+}
+
+static void msleep(int ms) __attribute__((unused));
+static void msleep(int ms)
+{
+    struct timespec t = {ms / 1000, (long)(ms % 1000) * 1000000L};
+    nanosleep(&t, NULL);
 }
 
 #endif

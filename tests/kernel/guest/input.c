@@ -26,24 +26,6 @@
 #include "fixel/error.h"
 #include "guest.h"
 
-static char logbuf[8192];
-static void capture_log(fx_log_priority p, void *user, const char *fmt, va_list ap)
-{
-    (void)p;
-    (void)user;
-    char line[512];
-    vsnprintf(line, sizeof line, fmt, ap);
-    printf("  log: %s\n", line);
-    size_t l = strlen(logbuf);
-    snprintf(logbuf + l, sizeof logbuf - l, "%s\n", line);
-}
-
-static void msleep(int ms)
-{
-    struct timespec t = {ms / 1000, (long)(ms % 1000) * 1000000L};
-    nanosleep(&t, NULL);
-}
-
 /* ---- recording callbacks ---- */
 typedef struct rec {
     char ev[64][64];

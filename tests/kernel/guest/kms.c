@@ -33,18 +33,6 @@
 #include "fixel/error.h"
 #include "guest.h"
 
-static char logbuf[8192];
-
-static void capture_log(fx_log_priority p, void *user, const char *fmt, va_list ap)
-{
-    (void)user;
-    char line[512];
-    vsnprintf(line, sizeof line, fmt, ap);
-    printf("  log(%d): %s\n", (int)p, line);
-    size_t l = strlen(logbuf);
-    snprintf(logbuf + l, sizeof logbuf - l, "%s\n", line);
-}
-
 static void opts(fx_display_options *o, const char *device, int rotation)
 {
     fx_display_options_init(o);

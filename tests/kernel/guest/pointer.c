@@ -23,12 +23,6 @@
 #include "guest.h"
 #include "scenes.h"
 
-static void msleep(int ms)
-{
-    struct timespec t = {ms / 1000, (long)(ms % 1000) * 1000000L};
-    nanosleep(&t, NULL);
-}
-
 static void quiet(fx_log_priority p, void *u, const char *fmt, va_list ap)
 {
     (void)p, (void)u;

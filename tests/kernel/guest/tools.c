@@ -41,12 +41,6 @@
 
 static char out[1 << 16], err[1 << 13];
 
-static void msleep(int ms)
-{
-    struct timespec t = {ms / 1000, (long)(ms % 1000) * 1000000L};
-    nanosleep(&t, NULL);
-}
-
 /* Elapsed time in the log, to keep this program's share of the rig small. */
 static void stamp(const char *what)
 {
