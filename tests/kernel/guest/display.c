@@ -455,16 +455,6 @@ static void on_reshape(fx_display *d, int32_t w, int32_t h, void *user)
     reshapes_seen++;
 }
 
-static int write_file(const char *path, const char *text)
-{
-    int fd = open(path, O_WRONLY);
-    if (fd < 0)
-        return -errno;
-    ssize_t n = write(fd, text, strlen(text));
-    close(fd);
-    return n < 0 ? -errno : 0;
-}
-
 static void pump_ms(fx_display *d, int ms)
 {
     for (int t = 0; t < ms; t += 10) {

@@ -226,30 +226,6 @@ static void parent_killed_case(const struct vt_state *before)
 
 /* ---- GPIO chip removed at run time ------------------------------------- */
 
-static int write_file(const char *path, const char *s)
-{
-    int fd = open(path, O_WRONLY);
-    if (fd < 0)
-        return -errno;
-    ssize_t n = write(fd, s, strlen(s));
-    close(fd);
-    return n == (ssize_t)strlen(s) ? 0 : -EIO;
-}
-
-static int read_file(const char *path, char *buf, size_t n)
-{
-    int fd = open(path, O_RDONLY);
-    if (fd < 0)
-        return -errno;
-    ssize_t r = read(fd, buf, n - 1);
-    close(fd);
-    if (r < 0)
-        return -errno;
-    buf[r] = 0;
-    buf[strcspn(buf, "\n")] = 0;
-    return 0;
-}
-
 #define SIM "/sys/kernel/config/gpio-sim/fxfault"
 
 struct gpio_run {
@@ -282,7 +258,7 @@ static void gpio_vanish_case(void)
     mkdir(SIM, 0755);
     mkdir(SIM "/bank0", 0755);
     write_file(SIM "/bank0/num_lines", "2");
-    if (write_file(SIM "/live", "1") < 0 || read_file(SIM "/bank0/chip_name", chip, sizeof chip) < 0 || !chip[0]) {
+    if (write_file(SIM "/live", "1") < 0 || read_line(SIM "/bank0/chip_name", chip, sizeof chip) < 0 || !chip[0]) {
         guest_check("gpio-chip-vanished", 0, "could not create a gpio-sim chip");
         return;
     }

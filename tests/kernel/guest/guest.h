@@ -3,6 +3,8 @@
 #ifndef FIXEL_GUEST_H
 #define FIXEL_GUEST_H
 
+#include <errno.h>
+#include <fcntl.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -71,6 +73,47 @@ static void msleep(int ms)
 {
     struct timespec t = {ms / 1000, (long)(ms % 1000) * 1000000L};
     nanosleep(&t, NULL);
+}
+
+/* Small sysfs/configfs helpers: 0 or -errno (-EIO for a short write). */
+static int write_file(const char *path, const char *s) __attribute__((unused));
+static int write_file(const char *path, const char *s)
+{
+    int fd = open(path, O_WRONLY);
+    if (fd < 0)
+        return -errno;
+    ssize_t n = write(fd, s, strlen(s));
+    int e = errno;
+    close(fd);
+    if (n < 0)
+        return -e;
+    return n == (ssize_t)strlen(s) ? 0 : -EIO;
+}
+
+/* The whole file (up to n - 1 bytes); buf is "" when it cannot be read. */
+static int read_file(const char *path, char *buf, size_t n) __attribute__((unused));
+static int read_file(const char *path, char *buf, size_t n)
+{
+    buf[0] = 0;
+    int fd = open(path, O_RDONLY);
+    if (fd < 0)
+        return -errno;
+    ssize_t r = read(fd, buf, n - 1);
+    int e = errno;
+    close(fd);
+    if (r < 0)
+        return -e;
+    buf[r] = 0;
+    return 0;
+}
+
+/* The first line of a file, as sysfs attributes are read. */
+static int read_line(const char *path, char *buf, size_t n) __attribute__((unused));
+static int read_line(const char *path, char *buf, size_t n)
+{
+    int r = read_file(path, buf, n);
+    buf[strcspn(buf, "\n")] = 0;
+    return r;
 }
 
 #endif

@@ -251,28 +251,6 @@ static void tap_steps(rec *r, int k)
 
 /* ---- gpio-sim ---- */
 static char sim_dev[64], sim_chip[64];
-static int write_file(const char *path, const char *s)
-{
-    int fd = open(path, O_WRONLY);
-    if (fd < 0)
-        return -errno;
-    ssize_t n = write(fd, s, strlen(s));
-    close(fd);
-    return n == (ssize_t)strlen(s) ? 0 : -EIO;
-}
-static int read_file(const char *path, char *buf, size_t n)
-{
-    int fd = open(path, O_RDONLY);
-    if (fd < 0)
-        return -errno;
-    ssize_t r = read(fd, buf, n - 1);
-    close(fd);
-    if (r < 0)
-        return -errno;
-    buf[r] = 0;
-    buf[strcspn(buf, "\n")] = 0;
-    return 0;
-}
 static int gpio_sim_setup(void)
 {
     const char *b = "/sys/kernel/config/gpio-sim/fx";
@@ -293,9 +271,9 @@ static int gpio_sim_setup(void)
     if (write_file(p, "1") < 0)
         return -1;
     snprintf(p, sizeof p, "%s/dev_name", b);
-    read_file(p, sim_dev, sizeof sim_dev);
+    read_line(p, sim_dev, sizeof sim_dev);
     snprintf(p, sizeof p, "%s/bank0/chip_name", b);
-    read_file(p, sim_chip, sizeof sim_chip);
+    read_line(p, sim_chip, sizeof sim_chip);
     printf("  gpio-sim: %s %s\n", sim_dev, sim_chip);
     return sim_chip[0] ? 0 : -1;
 }
@@ -445,10 +423,10 @@ int main(void)
             char p[256], v[16] = "";
             snprintf(p, sizeof p, "/sys/devices/platform/%s/%s/sim_gpio1/value", sim_dev, sim_chip);
             int r1 = fx_app_gpio_output(r.app, sim_chip, 1, 1);
-            read_file(p, v, sizeof v);
+            read_line(p, v, sizeof v);
             int on = r1 == 0 && !strcmp(v, "1");
             fx_app_gpio_output(r.app, sim_chip, 1, 0);
-            read_file(p, v, sizeof v);
+            read_line(p, v, sizeof v);
             guest_check("gpio-led-output", on && !strcmp(v, "0"), "set %d, value now %s", r1, v);
             fx_app_close(r.app);
         }

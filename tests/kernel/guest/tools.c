@@ -52,38 +52,6 @@ static void stamp(const char *what)
     printf("  t=%ldms %s\n", (long)((t.tv_sec - t0.tv_sec) * 1000 + (t.tv_nsec - t0.tv_nsec) / 1000000), what);
 }
 
-static int read_file(const char *path, char *buf, size_t n)
-{
-    buf[0] = 0;
-    int fd = open(path, O_RDONLY);
-    if (fd < 0)
-        return -errno;
-    ssize_t r = read(fd, buf, n - 1);
-    close(fd);
-    if (r < 0)
-        return -errno;
-    buf[r] = 0;
-    return 0;
-}
-
-/* First line of a sysfs attribute. */
-static int read_attr(const char *path, char *buf, size_t n)
-{
-    int r = read_file(path, buf, n);
-    buf[strcspn(buf, "\n")] = 0;
-    return r;
-}
-
-static int write_file(const char *path, const char *s)
-{
-    int fd = open(path, O_WRONLY);
-    if (fd < 0)
-        return -errno;
-    ssize_t n = write(fd, s, strlen(s));
-    close(fd);
-    return n == (ssize_t)strlen(s) ? 0 : -EIO;
-}
-
 enum { ROOT, USER_NO_GROUPS, USER_VIDEO_INPUT };
 
 /* Runs a tool with stdout and stderr captured into out and err, as root or
@@ -220,7 +188,7 @@ static int sim_create(void)
     }
     if (write_file(SIM "/live", "1") < 0)
         return -1;
-    read_attr(SIM "/bank0/chip_name", sim_chip, sizeof sim_chip);
+    read_line(SIM "/bank0/chip_name", sim_chip, sizeof sim_chip);
     return sim_chip[0] ? 0 : -1;
 }
 
@@ -282,7 +250,7 @@ static void check_drm(void)
             const char *conn = all[k] + cl + 1;
             char st[32], pat[96];
             snprintf(path, sizeof path, "/sys/class/drm/%s/status", all[k]);
-            if (read_attr(path, st, sizeof st) < 0)
+            if (read_line(path, st, sizeof st) < 0)
                 continue;
             snprintf(path, sizeof path, "/sys/class/drm/%s/modes", all[k]);
             read_file(path, buf, sizeof buf);
@@ -376,16 +344,16 @@ static void check_fbdev(void)
         char id[64], vs[32], bpp[16], stride[16], mode[64];
         int vw = 0, vh = 0, w = 0, h = 0;
         snprintf(path, sizeof path, "/sys/class/graphics/%s/name", fbs[i]);
-        read_attr(path, id, sizeof id);
+        read_line(path, id, sizeof id);
         snprintf(path, sizeof path, "/sys/class/graphics/%s/virtual_size", fbs[i]);
-        read_attr(path, vs, sizeof vs);
+        read_line(path, vs, sizeof vs);
         sscanf(vs, "%d,%d", &vw, &vh);
         snprintf(path, sizeof path, "/sys/class/graphics/%s/bits_per_pixel", fbs[i]);
-        read_attr(path, bpp, sizeof bpp);
+        read_line(path, bpp, sizeof bpp);
         snprintf(path, sizeof path, "/sys/class/graphics/%s/stride", fbs[i]);
-        read_attr(path, stride, sizeof stride);
+        read_line(path, stride, sizeof stride);
         snprintf(path, sizeof path, "/sys/class/graphics/%s/modes", fbs[i]); /* "U:800x480p-0" */
-        read_attr(path, mode, sizeof mode);
+        read_line(path, mode, sizeof mode);
         sscanf(mode, "%*[^:]:%dx%d", &w, &h);
         snprintf(want, sizeof want, "/dev/%s: %s, %dx%d (virtual %dx%d), %s bpp, stride %s, ", fbs[i], id, w, h, vw,
                  vh, bpp, stride);
@@ -417,7 +385,7 @@ static void check_input(void)
     char missing[400] = "";
     for (int i = 0; i < n; i++) {
         snprintf(path, sizeof path, "/sys/class/input/%s/device/name", ev[i]);
-        read_attr(path, devname, sizeof devname);
+        read_line(path, devname, sizeof devname);
         snprintf(want, sizeof want, "/dev/input/%s: \"%s\":", ev[i], devname);
         const char *at = line_with(out, want, line, sizeof line);
         if (at)
@@ -501,9 +469,9 @@ static void check_choice(void)
     int rc = run(ROOT, env, info_argv);
     char vs[32], mode[64];
     int w = 0, h = 0;
-    read_attr("/sys/class/graphics/fb0/modes", mode, sizeof mode);
+    read_line("/sys/class/graphics/fb0/modes", mode, sizeof mode);
     sscanf(mode, "%*[^:]:%dx%d", &w, &h);
-    read_attr("/sys/class/graphics/fb0/virtual_size", vs, sizeof vs);
+    read_line("/sys/class/graphics/fb0/virtual_size", vs, sizeof vs);
     snprintf(want, sizeof want, "  backend fbdev, device \"/dev/fb0\", %dx%d, ", w, h);
     at = strstr(out, want);
     why = at ? line_with(at, "  why: ", line, sizeof line) : NULL;
