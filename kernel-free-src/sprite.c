@@ -75,23 +75,8 @@ static int rotation_ok(int rotation)
 fx_rect fx_sprite_phys_rect(const fx_surface *dst, int rotation, const fx_sprite *s, int32_t x,
                             int32_t y)
 {
-    fx_rect r = fx_sprite_rect(s, x, y), o;
-    int32_t Wd = dst->w, Hd = dst->h;
-    switch (rotation) {
-    case 90:
-        o.x0 = Wd - r.y1; o.x1 = Wd - r.y0; o.y0 = r.x0; o.y1 = r.x1;
-        break;
-    case 180:
-        o.x0 = Wd - r.x1; o.x1 = Wd - r.x0; o.y0 = Hd - r.y1; o.y1 = Hd - r.y0;
-        break;
-    case 270:
-        o.x0 = r.y0; o.x1 = r.y1; o.y0 = Hd - r.x1; o.y1 = Hd - r.x0;
-        break;
-    default:
-        o = r;
-        break;
-    }
-    return fx_rect_intersect(o, fx_surface_rect(dst));
+    return fx_rect_intersect(fx_rect_rotate(fx_sprite_rect(s, x, y), rotation, dst->w, dst->h),
+                             fx_surface_rect(dst));
 }
 
 int fx_sprite_draw(const fx_surface *dst, int rotation, const fx_sprite *s, int32_t x, int32_t y,

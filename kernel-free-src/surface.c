@@ -78,6 +78,26 @@ fx_rect fx_rect_intersect(fx_rect a, fx_rect b)
     return r;
 }
 
+fx_rect fx_rect_rotate(fx_rect r, int rotation, int32_t W, int32_t H)
+{
+    fx_rect o;
+    switch (rotation) {
+    case 90:
+        o.x0 = W - r.y1; o.x1 = W - r.y0; o.y0 = r.x0; o.y1 = r.x1;
+        break;
+    case 180:
+        o.x0 = W - r.x1; o.x1 = W - r.x0; o.y0 = H - r.y1; o.y1 = H - r.y0;
+        break;
+    case 270:
+        o.x0 = r.y0; o.x1 = r.y1; o.y0 = H - r.x1; o.y1 = H - r.x0;
+        break;
+    default:
+        o = r;
+        break;
+    }
+    return o;
+}
+
 fx_surface fx_surface_sub(fx_surface s, fx_rect r)
 {
     r = fx_rect_intersect(r, fx_surface_rect(&s));

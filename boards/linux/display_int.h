@@ -51,11 +51,6 @@ int64_t fx_damage_area(const fx_damage *d);
  * 270 swap the sides. */
 void fx_rotated_size(int rotation, int32_t w, int32_t h, int32_t *rw, int32_t *rh);
 
-/* The physical rectangle covered by logical rectangle r; phys_w/phys_h are the
- * physical surface's size. Mapping of a logical pixel (x, y), W x H physical:
- *    0: (x, y)          90: (W-1-y, x)
- *  180: (W-1-x, H-1-y) 270: (y, H-1-x)                                    */
-fx_rect fx_rect_rotate(fx_rect r, int rotation, int32_t phys_w, int32_t phys_h);
 
 /* Copy logical rectangle r of src into dst under rotation. src and dst have
  * the same format; dst is the physical surface (sides swapped for 90/270);

@@ -190,26 +190,6 @@ void fx_rotated_size(int rotation, int32_t w, int32_t h, int32_t *rw, int32_t *r
     }
 }
 
-fx_rect fx_rect_rotate(fx_rect r, int rotation, int32_t W, int32_t H)
-{
-    fx_rect o;
-    switch (rotation) {
-    case 90:
-        o.x0 = W - r.y1; o.x1 = W - r.y0; o.y0 = r.x0; o.y1 = r.x1;
-        break;
-    case 180:
-        o.x0 = W - r.x1; o.x1 = W - r.x0; o.y0 = H - r.y1; o.y1 = H - r.y0;
-        break;
-    case 270:
-        o.x0 = r.y0; o.x1 = r.y1; o.y0 = H - r.x1; o.y1 = H - r.x0;
-        break;
-    default:
-        o = r;
-        break;
-    }
-    return o;
-}
-
 static int bpp_of(fx_format f)
 {
     return fx_format_get(f)->bits_per_pixel;

@@ -108,6 +108,11 @@ void fx_surface_row_to_rgb(const fx_surface *s, int32_t y, uint8_t *rgb);
 
 /* Rectangle helpers. */
 fx_rect fx_rect_intersect(fx_rect a, fx_rect b);
+/* The physical rectangle covered by logical rectangle r; phys_w/phys_h are the
+ * physical surface's size. Mapping of a logical pixel (x, y), W x H physical:
+ *    0: (x, y)          90: (W-1-y, x)
+ *  180: (W-1-x, H-1-y) 270: (y, H-1-x)                                    */
+fx_rect fx_rect_rotate(fx_rect r, int rotation, int32_t phys_w, int32_t phys_h);
 static inline int fx_rect_empty(fx_rect r) { return r.x0 >= r.x1 || r.y0 >= r.y1; }
 static inline fx_rect fx_surface_rect(const fx_surface *s)
 {
