@@ -31,6 +31,21 @@ static inline uint8_t *fx_row(const struct fx_surface *s, int32_t y)
 typedef uint32_t fx_v4u32 __attribute__((vector_size(16)));
 typedef uint16_t fx_v8u16 __attribute__((vector_size(16)));
 
+/* Long runs on x86-64 go to the string-store microcode: with ERMS/FSRM it
+ * writes whole cache lines at the widest store the core has (AVX-512 on
+ * recent parts), which a 16-byte loop cannot reach and -mgeneral-regs-only
+ * cannot name. rep stosq repeats any 64-bit pattern, so it serves 16- and
+ * 32-bit pixels alike. Below about 2 KiB its start-up cost loses to the
+ * vector loop (glibc's memset picks the same threshold). The vector loop
+ * stays the reference on every other architecture and for short runs. */
+#if defined(__x86_64__)
+#define FX_STOS_MIN_BYTES 2048
+static inline void fx_stosq(void *p, size_t words, uint64_t pattern)
+{
+    __asm__ volatile("rep stosq" : "+D"(p), "+c"(words) : "a"(pattern) : "memory");
+}
+#endif
+
 static inline void fx_run32(uint32_t *p, int32_t n, uint32_t v)
 {
     if (n < 4 || ((uintptr_t)p & 3)) {
@@ -38,6 +53,18 @@ static inline void fx_run32(uint32_t *p, int32_t n, uint32_t v)
             *p++ = v;
         return;
     }
+#if defined(__x86_64__)
+    if ((size_t)n * 4 >= FX_STOS_MIN_BYTES) {
+        if ((uintptr_t)p & 4) {
+            *p++ = v;
+            n--;
+        }
+        fx_stosq(p, (size_t)n / 2, v | (uint64_t)v << 32);
+        if (n & 1)
+            p[n - 1] = v;
+        return;
+    }
+#endif
     fx_v4u32 q = {v, v, v, v};
     fx_memcpy(p, &q, 16);
     fx_memcpy(p + n - 4, &q, 16);
@@ -57,6 +84,16 @@ static inline void fx_run16(uint16_t *p, int32_t n, uint16_t v)
             *p++ = v;
         return;
     }
+#if defined(__x86_64__)
+    if ((size_t)n * 2 >= FX_STOS_MIN_BYTES) {
+        for (; (uintptr_t)p & 7; n--)
+            *p++ = v;
+        fx_stosq(p, (size_t)n / 4, v * 0x0001000100010001ull);
+        for (int32_t i = n & ~3; i < n; i++)
+            p[i] = v;
+        return;
+    }
+#endif
     fx_v8u16 q = {v, v, v, v, v, v, v, v};
     fx_memcpy(p, &q, 16);
     fx_memcpy(p + n - 8, &q, 16);
