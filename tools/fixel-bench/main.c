@@ -816,6 +816,17 @@ static void print_table(FILE *o, int which)
             }
             fprintf(o, "\n");
         }
+    /* The issue asks for W9 "close to linear in cores": say it in numbers. */
+    for (int i = 0; which == 0 && i < NPEERS; i++) {
+        const struct cell *one = &CELLS[W9_MANDEL][FMT_XRGB8888][0];
+        const struct cell *mt = &CELLS[W9_MANDEL][FMT_XRGB8888][i];
+        long nt = sysconf(_SC_NPROCESSORS_ONLN);
+        if (PEERS[i] != &peer_fixel_mt || !shown(i) || one->state != 1 || mt->state != 1 || nt < 1)
+            continue;
+        double r = primary(W9_MANDEL, mt) / primary(W9_MANDEL, one);
+        fprintf(o, "W9 threads: fixel-mt / fixel = %.2f with %ld threads (%.0f %% of linear)\n", r,
+                nt, 100 * r / (double)nt);
+    }
     fprintf(o, "\n");
 }
 
