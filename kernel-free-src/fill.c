@@ -428,6 +428,168 @@ static int monotone_fill(const fx_ctx *c, const int32_t *xy, int32_t n, unsigned
     return 1;
 }
 
+/* ---- small polygons: 32-bit edges, rows in bands ----
+ * The common polygon has a handful of edges a few hundred pixels long. Its
+ * edges are stepped as 32-bit records (five values, no yend test per row),
+ * and the rows are taken in bands between the rows where an edge starts or
+ * ends, so the active list changes only at band ends; within a band only a
+ * crossing of two edges reorders it, which the stepping pass catches by
+ * comparing neighbours. Same walkers as the edge table, so same pixels. */
+#define SMALL_EDGES 16
+#define SMALL_XLIM ((int64_t)1 << 28) /* |vertex x|: x + qs + 1 fits int32 */
+#define SMALL_DLIM ((int64_t)1 << 30) /* dy << s: e - rs and e + d fit */
+
+typedef struct {
+    int32_t x, e, d, rs, qs, yend, dir, pad_;
+} small_edge;
+
+/* Solid runs for the band loops, p aligned to its pixel: two unaligned
+ * 16-byte stores at each end and an aligned loop between them, so a run of
+ * 2L pixels or more takes one loop exit (fx_run32 has a second loop and a
+ * length test that mispredict often on the varied spans of a polygon). */
+#define SMALL_RUN(NAME, T, V, L)                                                                   \
+    static inline void NAME(T *p, int32_t n, V q, T v)                                             \
+    {                                                                                              \
+        if (n < 2 * L) {                                                                           \
+            if (n >= L) {                                                                          \
+                fx_memcpy(p, &q, 16);                                                              \
+                fx_memcpy(p + n - L, &q, 16);                                                      \
+            } else {                                                                               \
+                for (int32_t i = 0; i < n; i++)                                                    \
+                    p[i] = v;                                                                      \
+            }                                                                                      \
+            return;                                                                                \
+        }                                                                                          \
+        T *e = p + n - 2 * L, *a = (T *)(((uintptr_t)p + 32) & ~(uintptr_t)15);                    \
+        fx_memcpy(p, &q, 16);                                                                      \
+        fx_memcpy(p + L, &q, 16);                                                                  \
+        for (; a < e; a += 2 * L) {                                                                \
+            *(V *)(void *)a = q;                                                                   \
+            *(V *)(void *)(a + L) = q;                                                             \
+        }                                                                                          \
+        fx_memcpy(e, &q, 16);                                                                      \
+        fx_memcpy(e + L, &q, 16);                                                                  \
+    }
+SMALL_RUN(small_run32, uint32_t, fx_v4u32, 4)
+SMALL_RUN(small_run16, uint16_t, fx_v8u16, 8)
+
+/* Rows [y, yb) with the active edges a[0, m) fixed and sorted by x. The
+ * constant arguments of the callers below select the loops at compile time:
+ * bpp 32 or 16 with clampx == 0 is the W7-style polygon inside the clip. */
+static inline __attribute__((always_inline)) void small_band(const fx_ctx *c, small_edge *a, int32_t m,
+                                                             int32_t y, int32_t yb, int evenodd, int bpp,
+                                                             int clampx, int fast)
+{
+    const fx_surface *sf = &c->surf;
+    int32_t cx0 = c->clip.x0, cx1 = c->clip.x1;
+    uint32_t v = c->native;
+    fx_v4u32 q32 = {v, v, v, v};
+    uint16_t v16 = (uint16_t)v;
+    fx_v8u16 q16 = {v16, v16, v16, v16, v16, v16, v16, v16};
+    uint8_t *row = bpp ? fx_row(sf, y) : 0;
+    for (; y < yb; y++) {
+        int32_t w = 0, xs = 0;
+        for (int32_t i = 0; i < m; i++) {
+            int32_t xa, xb;
+            if (evenodd) {
+                if (i + 1 >= m)
+                    break;
+                xa = a[i].x;
+                xb = a[++i].x;
+            } else {
+                int32_t was = w;
+                w += a[i].dir;
+                if (was == 0)
+                    xs = a[i].x;
+                if (was == 0 || w != 0)
+                    continue;
+                xa = xs;
+                xb = a[i].x;
+            }
+            if (clampx) {
+                xa = xa < cx0 ? cx0 : xa > cx1 ? cx1 : xa;
+                xb = xb < cx0 ? cx0 : xb > cx1 ? cx1 : xb;
+            }
+            if (xa < xb) {
+                if (bpp == 32)
+                    small_run32((uint32_t *)row + xa, xb - xa, q32, v);
+                else if (bpp == 16)
+                    small_run16((uint16_t *)row + xa, xb - xa, q16, v16);
+                else if (fast)
+                    fx_span_fill(sf, y, xa, xb, v);
+                else
+                    fx_fill_span(c, y, xa, xb);
+            }
+        }
+        if (bpp)
+            row += sf->stride;
+        /* step as edge_step, keeping a[0, k] sorted as we go */
+        for (int32_t k = 0; k < m; k++) {
+            int32_t e = a[k].e - a[k].rs, msk = -(int32_t)(e < 0);
+            a[k].e = e + (a[k].d & msk);
+            a[k].x += a[k].qs - msk;
+            if (k > 0 && a[k - 1].x > a[k].x) {
+                small_edge t = a[k];
+                int32_t j = k;
+                while (j > 0 && a[j - 1].x > t.x) {
+                    a[j] = a[j - 1];
+                    j--;
+                }
+                a[j] = t;
+            }
+        }
+    }
+}
+
+/* edges[0, n): sorted by ystart, every value within the SMALL_ limits. */
+static void small_fill(const fx_ctx *c, const fx_fill_edge *edges, int32_t n, fx_fill_rule rule, int clampx)
+{
+    small_edge a[SMALL_EDGES];
+    int fast = plain_solid(c);
+    int bpp = fast ? fx_format_get(c->surf.format)->bits_per_pixel : 0;
+    /* the runs need pixel-aligned rows; others take fx_span_fill */
+    if ((bpp == 32 || bpp == 16) && (((uintptr_t)c->surf.pixels | (uintptr_t)c->surf.stride) & (unsigned)(bpp / 8 - 1)))
+        bpp = 0;
+    int evenodd = rule == FX_FILL_EVENODD;
+    int32_t m = 0, pend = 0, y = edges[0].ystart;
+    while (m > 0 || pend < n) {
+        if (m == 0 && edges[pend].ystart > y)
+            y = edges[pend].ystart;
+        for (; pend < n && edges[pend].ystart == y; pend++) {
+            const fx_fill_edge *f = &edges[pend];
+            small_edge t = {(int32_t)f->g.x, (int32_t)f->g.e, (int32_t)f->g.d, (int32_t)f->g.rs,
+                            (int32_t)f->g.qs, f->yend, f->dir, 0};
+            int32_t j = m++;
+            while (j > 0 && a[j - 1].x > t.x) {
+                a[j] = a[j - 1];
+                j--;
+            }
+            a[j] = t;
+        }
+        int32_t yb = pend < n ? edges[pend].ystart : INT32_MAX;
+        for (int32_t k = 0; k < m; k++)
+            yb = FX_MIN(yb, a[k].yend);
+        if (evenodd && !clampx && bpp == 32)
+            small_band(c, a, m, y, yb, 1, 32, 0, 1);
+        else if (evenodd && !clampx && bpp == 16)
+            small_band(c, a, m, y, yb, 1, 16, 0, 1);
+        else if (!evenodd && !clampx && bpp == 32)
+            small_band(c, a, m, y, yb, 0, 32, 0, 1);
+        else if (!evenodd && !clampx && bpp == 16)
+            small_band(c, a, m, y, yb, 0, 16, 0, 1);
+        else if (bpp == 32 || bpp == 16)
+            small_band(c, a, m, y, yb, evenodd, bpp, 1, 1);
+        else
+            small_band(c, a, m, y, yb, evenodd, 0, 1, fast);
+        y = yb;
+        int32_t k = 0;
+        for (int32_t i = 0; i < m; i++)
+            if (a[i].yend > y)
+                a[k++] = a[i];
+        m = k;
+    }
+}
+
 int fx_fill_path(const fx_ctx *c, const int32_t *xy, const int32_t *counts, int32_t ncontours,
                  unsigned frac_bits, fx_fill_rule rule, fx_fill_edge *edges, int32_t max_edges)
 {
@@ -441,6 +603,8 @@ int fx_fill_path(const fx_ctx *c, const int32_t *xy, const int32_t *counts, int3
     if (ncontours == 1 && counts[0] >= 4 && monotone_fill(c, xy, counts[0], s))
         return 0;
     int32_t n = 0;
+    int small = 1;
+    int64_t xmin = INT64_MAX, xmax = INT64_MIN;
     const int32_t *p = xy;
     for (int32_t k = 0; k < ncontours; k++) {
         int32_t cnt = counts[k];
@@ -472,12 +636,21 @@ int fx_fill_path(const fx_ctx *c, const int32_t *xy, const int32_t *counts, int3
             e->yend = (int32_t)ye;
             e->dir = dir;
             e->pad_ = 0;
+            small &= ax > -SMALL_XLIM && ax < SMALL_XLIM && bx > -SMALL_XLIM && bx < SMALL_XLIM &&
+                     ((by - ay) << s) < SMALL_DLIM;
+            xmin = FX_MIN(xmin, FX_MIN(ax, bx));
+            xmax = FX_MAX(xmax, FX_MAX(ax, bx));
         }
         p += 2 * cnt;
     }
     if (n == 0)
         return 0;
     sort_by_ystart(edges, n);
+    if (small && n <= SMALL_EDGES) {
+        /* every crossing pixel lies between those of the extreme vertices */
+        small_fill(c, edges, n, rule, ceil_shift(xmin, s) < clip.x0 || ceil_shift(xmax, s) > clip.x1);
+        return 0;
+    }
     int fast = plain_solid(c);
     int fast32 = fast && rule == FX_FILL_EVENODD && fx_format_get(c->surf.format)->bits_per_pixel == 32;
     int32_t cx0 = clip.x0, cx1 = clip.x1;

@@ -503,3 +503,154 @@ FX_TEST(fill_monotone_fast_path_matches_reference)
             return;
     }
 }
+
+/* The small-polygon path (at most 16 edges, |x| < 2^28, dy << s < 2^30)
+ * against the general edge table on the same shapes. Repeating every
+ * contour an odd number of times leaves both rules' pixels unchanged (the
+ * crossing parity stays, the winding number is multiplied by K) but gives
+ * more than 16 edges, which only the general table takes. */
+#define SMALL_COPIES 17
+
+static int draw_path(fx_ctx *c, const int32_t *xy, const int32_t *counts, int nc, unsigned s, int nonzero, int copies)
+{
+    static int32_t bigxy[2 * 16 * SMALL_COPIES], bigcounts[4 * SMALL_COPIES];
+    static fx_fill_edge edges[16 * SMALL_COPIES];
+    int nv = 0, k = 0;
+    for (int i = 0; i < nc; i++)
+        nv += counts[i];
+    for (int r = 0; r < copies; r++) {
+        memcpy(bigxy + 2 * nv * r, xy, sizeof(int32_t) * 2 * (size_t)nv);
+        for (int i = 0; i < nc; i++)
+            bigcounts[k++] = counts[i];
+    }
+    return fx_fill_path(c, bigxy, bigcounts, k, s, nonzero ? FX_FILL_NONZERO : FX_FILL_EVENODD, edges,
+                        (int32_t)(sizeof edges / sizeof edges[0]));
+}
+
+FX_TEST(fill_small_path_matches_general_path_and_reference)
+{
+    static const fx_format fmts[] = {FX_FMT_XRGB8888, FX_FMT_RGB565, FX_FMT_RGB888};
+    static uint8_t fa[W * H * 4], fb[W * H * 4];
+    uint32_t seed = 4242;
+    int checked_ref = 0;
+    for (int iter = 0; iter < 1500; iter++) {
+        unsigned s = iter % 3 == 2 ? 8 : 0;
+        int one = s ? 256 : 1, nonzero = (iter >> 1) & 1;
+        int nc = iter % 5 == 4 ? 2 : 1, counts[2] = {0, 0}, nv = 0;
+        int32_t xy[32];
+        int64_t xs[16], ys[16];
+        for (int k = 0; k < nc; k++) {
+            counts[k] = (nc == 1 ? 4 : 3) + (int)(fx_test_rand(&seed) % (nc == 1 ? 5 : 3));
+            /* a W7-like box, partly outside the surface when clipped */
+            int32_t bx = (int32_t)(fx_test_rand(&seed) % 40) - 10, by = (int32_t)(fx_test_rand(&seed) % 30) - 8;
+            int32_t bw = 10 + (int32_t)(fx_test_rand(&seed) % 50), bh = 8 + (int32_t)(fx_test_rand(&seed) % 40);
+            for (int i = 0; i < counts[k]; i++, nv++) {
+                int32_t vx = (bx + (int32_t)(fx_test_rand(&seed) % (uint32_t)bw)) * one +
+                             (int32_t)(fx_test_rand(&seed) % (uint32_t)one);
+                int32_t vy = (by + (int32_t)(fx_test_rand(&seed) % (uint32_t)bh)) * one +
+                             (int32_t)(fx_test_rand(&seed) % (uint32_t)one);
+                uint32_t kind = fx_test_rand(&seed) % 16;
+                if (i > 0 && kind == 0) /* horizontal edge */
+                    vy = xy[2 * nv - 1];
+                else if (i > 0 && kind == 1) { /* zero-length edge */
+                    vx = xy[2 * nv - 2];
+                    vy = xy[2 * nv - 1];
+                } else if (kind == 2) /* far outside, still within the small limits */
+                    vx = (fx_test_rand(&seed) & 1 ? 1 : -1) * (int32_t)(fx_test_rand(&seed) % (1u << 27));
+                else if (kind == 3) /* at the limits: one side of each takes the general path */
+                    vx = (fx_test_rand(&seed) & 1 ? 1 : -1) * ((1 << 28) - 1 + (int32_t)(fx_test_rand(&seed) % 3));
+                else if (kind == 4 && s == 0)
+                    vy = (fx_test_rand(&seed) & 1 ? 1 : -1) * ((1 << 29) - 1 + (int32_t)(fx_test_rand(&seed) % 3));
+                else if (kind == 5 && s == 8)
+                    vy = (fx_test_rand(&seed) & 1 ? 1 : -1) * ((1 << 21) - 1 + (int32_t)(fx_test_rand(&seed) % 3));
+                else if (kind == 6) /* edges too tall for 32-bit records */
+                    vy = (fx_test_rand(&seed) & 1 ? 1 : -1) *
+                         ((1 << (s ? 23 : 30)) + (int32_t)(fx_test_rand(&seed) % (1u << (s ? 22 : 29))));
+                else if (kind == 7) /* edges too wide for 32-bit records */
+                    vx = (fx_test_rand(&seed) & 1 ? 1 : -1) * ((1 << 30) + (int32_t)(fx_test_rand(&seed) % (1u << 30)));
+                xs[nv] = xy[2 * nv] = vx;
+                ys[nv] = xy[2 * nv + 1] = vy;
+            }
+        }
+        fx_format f = fmts[iter % 3 == 1 ? 1 : (iter % 7 == 0 ? 2 : 0)];
+        fx_rect clip = {0, 0, W, H};
+        if (iter % 4 == 3)
+            clip = (fx_rect){3 + (int32_t)(fx_test_rand(&seed) % 20), 2 + (int32_t)(fx_test_rand(&seed) % 15), 0, 0};
+        if (iter % 4 == 3) {
+            clip.x1 = clip.x0 + 1 + (int32_t)(fx_test_rand(&seed) % (uint32_t)(W - clip.x0));
+            clip.y1 = clip.y0 + 1 + (int32_t)(fx_test_rand(&seed) % (uint32_t)(H - clip.y0));
+        }
+        int32_t stride = fx_format_min_stride(f, W);
+        fx_surface sa, sb;
+        memset(fa, 0x5A, sizeof fa);
+        memset(fb, 0x5A, sizeof fb);
+        FX_CHECK_EQ(fx_surface_init(&sa, fa, W, H, stride, f), 0);
+        FX_CHECK_EQ(fx_surface_init(&sb, fb, W, H, stride, f), 0);
+        fx_ctx ca, cb;
+        fx_ctx_init(&ca, &sa);
+        fx_ctx_init(&cb, &sb);
+        fx_ctx_set_clip(&ca, clip);
+        fx_ctx_set_clip(&cb, clip);
+        fx_ctx_set_color(&ca, 0xFF8040C0u);
+        fx_ctx_set_color(&cb, 0xFF8040C0u);
+        FX_CHECK_EQ(draw_path(&ca, xy, counts, nc, s, nonzero, 1), 0);
+        FX_CHECK_EQ(draw_path(&cb, xy, counts, nc, s, nonzero, SMALL_COPIES), 0);
+        int same = memcmp(fa, fb, sizeof fa) == 0;
+        FX_CHECK_MSG(same, "iter %d (nv %d, contours %d, s %u, nonzero %d, format %d): small and general paths differ",
+                     iter, nv, nc, s, nonzero, (int)f);
+        if (!same)
+            return;
+        if (f == FX_FMT_XRGB8888 && nc == 1) { /* and both against the definition */
+            uint32_t *img32 = img;
+            for (int y = 0; y < H; y++)
+                memcpy(img32 + y * W, fa + (size_t)y * (size_t)stride, 4 * W);
+            memset(cover_ref, 0, sizeof cover_ref);
+            ref_fill(cover_ref, xs, ys, nv, s, nonzero, clip);
+            int bad = 0;
+            for (int i = 0; i < W * H; i++)
+                bad += ((img32[i] & 0xFFFFFF) == 0x8040C0) != (cover_ref[i] != 0);
+            FX_CHECK_MSG(bad == 0, "iter %d: %d pixels differ from the reference", iter, bad);
+            if (bad)
+                return;
+            checked_ref++;
+        }
+    }
+    FX_CHECK(checked_ref > 300);
+}
+
+FX_TEST(fill_small_path_spans_at_every_alignment_and_length)
+{
+    /* two contours (so not the monotone walker): a one-row bar of every
+     * start and length, and a far square; 32- and 16-bit runs against the
+     * surface's own span writer, guard pixels around the bar untouched */
+    enum { N = 4 * 200 * 4 + 8 };
+    static uint32_t a32[N / 4], b32[N / 4];
+    uint8_t *a = (uint8_t *)a32, *b = (uint8_t *)b32;
+    static const fx_format fmts[] = {FX_FMT_XRGB8888, FX_FMT_RGB565};
+    for (int fi = 0; fi < 2; fi++) {
+        fx_format f = fmts[fi];
+        int32_t stride = fx_format_min_stride(f, 200);
+        int bad = 0;
+        for (int x0 = 0; x0 < 24; x0++)
+            for (int len = 0; len < 150; len += (len < 40 ? 1 : 5)) {
+                memset(a, 0x5A, N);
+                memset(b, 0x5A, N);
+                fx_surface sa, sb;
+                FX_CHECK_EQ(fx_surface_init(&sa, a, 200, 4, stride, f), 0);
+                FX_CHECK_EQ(fx_surface_init(&sb, b, 200, 4, stride, f), 0);
+                fx_ctx c;
+                fx_ctx_init(&c, &sa);
+                fx_ctx_set_color(&c, 0xFF123456u + (uint32_t)len);
+                int32_t q[16] = {x0, 1, x0 + len, 1, x0 + len, 2, x0, 2, 190, 0, 195, 0, 195, 3, 190, 3};
+                int32_t counts[2] = {4, 4};
+                fx_fill_edge edges[8];
+                FX_CHECK_EQ(fx_fill_path(&c, q, counts, 2, 0, FX_FILL_EVENODD, edges, 8), 0);
+                if (len)
+                    fx_span_fill(&sb, 1, x0, x0 + len, c.native);
+                for (int y = 0; y < 3; y++)
+                    fx_span_fill(&sb, y, 190, 195, c.native);
+                bad += memcmp(a, b, N) != 0;
+            }
+        FX_CHECK_MSG(bad == 0, "format %d: %d spans differ", (int)f, bad);
+    }
+}
