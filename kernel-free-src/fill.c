@@ -443,10 +443,12 @@ typedef struct {
     int32_t x, e, d, rs, qs, yend, dir, pad_;
 } small_edge;
 
-/* Solid runs for the band loops, p aligned to its pixel: two unaligned
- * 16-byte stores at each end and an aligned loop between them, so a run of
- * 2L pixels or more takes one loop exit (fx_run32 has a second loop and a
- * length test that mispredict often on the varied spans of a polygon). */
+/* Solid runs for the band loops, p aligned to its pixel. A polygon's runs
+ * are of every length, mostly short, so each length class is one straight
+ * sequence of overlapping stores (8-byte ones for fewer than L pixels) and
+ * long runs take an aligned loop of four stores between two overlapping
+ * pairs at each end: a single loop exit per run. fx_run32's byte loop,
+ * second loop and length tests mispredicted often here. */
 #define SMALL_RUN(NAME, T, V, L)                                                                   \
     static inline void NAME(T *p, int32_t n, V q, T v)                                             \
     {                                                                                              \
@@ -454,18 +456,29 @@ typedef struct {
             if (n >= L) {                                                                          \
                 fx_memcpy(p, &q, 16);                                                              \
                 fx_memcpy(p + n - L, &q, 16);                                                      \
+            } else if (n >= L / 2) {                                                               \
+                fx_memcpy(p, &q, 8);                                                               \
+                fx_memcpy(p + n - L / 2, &q, 8);                                                   \
             } else {                                                                               \
-                for (int32_t i = 0; i < n; i++)                                                    \
-                    p[i] = v;                                                                      \
+                p[0] = v;                                                                          \
+                p[n >> 1] = v;                                                                     \
+                p[n - 1] = v;                                                                      \
             }                                                                                      \
             return;                                                                                \
         }                                                                                          \
-        T *e = p + n - 2 * L, *a = (T *)(((uintptr_t)p + 32) & ~(uintptr_t)15);                    \
+        T *e = p + n - 2 * L;                                                                      \
         fx_memcpy(p, &q, 16);                                                                      \
         fx_memcpy(p + L, &q, 16);                                                                  \
-        for (; a < e; a += 2 * L) {                                                                \
-            *(V *)(void *)a = q;                                                                   \
-            *(V *)(void *)(a + L) = q;                                                             \
+        if (n > 4 * L) {                                                                           \
+            T *a = (T *)(((uintptr_t)p + 32) & ~(uintptr_t)15), *f = e - 2 * L;                    \
+            for (; a < f; a += 4 * L) {                                                            \
+                *(V *)(void *)a = q;                                                               \
+                *(V *)(void *)(a + L) = q;                                                         \
+                *(V *)(void *)(a + 2 * L) = q;                                                     \
+                *(V *)(void *)(a + 3 * L) = q;                                                     \
+            }                                                                                      \
+            fx_memcpy(e - 2 * L, &q, 16);                                                          \
+            fx_memcpy(e - L, &q, 16);                                                              \
         }                                                                                          \
         fx_memcpy(e, &q, 16);                                                                      \
         fx_memcpy(e + L, &q, 16);                                                                  \
@@ -541,6 +554,91 @@ static inline __attribute__((always_inline)) void small_band(const fx_ctx *c, sm
     }
 }
 
+/* Bands of two or four edges, the usual case, keep the walkers in
+ * registers in fixed slots: each row sorts a copy of the crossings with a
+ * min/max network instead of reordering the records, so the loop has no
+ * branch but the runs'. Inside the clip, 32- or 16-bit pixels; four edges
+ * for even-odd, two for both rules (closed contours cross every row up as
+ * often as down, so two crossings always wind +1 and -1). */
+#define SMALL_STEP(x, e, d, r, q)                                                                  \
+    do {                                                                                           \
+        int32_t t_ = (e) - (r), m_ = -(int32_t)(t_ < 0);                                           \
+        (e) = t_ + ((d) & m_);                                                                     \
+        (x) += (q) - m_;                                                                           \
+    } while (0)
+#define SMALL_SORT2(a, b)                                                                          \
+    do {                                                                                           \
+        int32_t lo_ = (a) < (b) ? (a) : (b), hi_ = (a) < (b) ? (b) : (a);                          \
+        (a) = lo_;                                                                                 \
+        (b) = hi_;                                                                                 \
+    } while (0)
+
+static inline __attribute__((always_inline)) void small_band24(const fx_ctx *c, small_edge *a, int32_t m,
+                                                               int32_t y, int32_t yb, int bpp)
+{
+    const fx_surface *sf = &c->surf;
+    uint32_t v = c->native;
+    fx_v4u32 q32 = {v, v, v, v};
+    uint16_t v16 = (uint16_t)v;
+    fx_v8u16 q16 = {v16, v16, v16, v16, v16, v16, v16, v16};
+    uint8_t *row = fx_row(sf, y);
+    ptrdiff_t stride = sf->stride;
+    int32_t x0 = a[0].x, e0 = a[0].e, x1 = a[1].x, e1 = a[1].e;
+    const int32_t d0 = a[0].d, r0 = a[0].rs, q0 = a[0].qs, d1 = a[1].d, r1 = a[1].rs, q1 = a[1].qs;
+    if (m == 2) {
+        for (; y < yb; y++, row += stride) {
+            int32_t s0 = x0, s1 = x1;
+            SMALL_SORT2(s0, s1);
+            if (s0 < s1) {
+                if (bpp == 32)
+                    small_run32((uint32_t *)row + s0, s1 - s0, q32, v);
+                else
+                    small_run16((uint16_t *)row + s0, s1 - s0, q16, v16);
+            }
+            SMALL_STEP(x0, e0, d0, r0, q0);
+            SMALL_STEP(x1, e1, d1, r1, q1);
+        }
+    } else {
+        int32_t x2 = a[2].x, e2 = a[2].e, x3 = a[3].x, e3 = a[3].e;
+        const int32_t d2 = a[2].d, r2 = a[2].rs, q2 = a[2].qs, d3 = a[3].d, r3 = a[3].rs, q3 = a[3].qs;
+        for (; y < yb; y++, row += stride) {
+            int32_t s0 = x0, s1 = x1, s2 = x2, s3 = x3;
+            SMALL_SORT2(s0, s1);
+            SMALL_SORT2(s2, s3);
+            SMALL_SORT2(s0, s2);
+            SMALL_SORT2(s1, s3);
+            SMALL_SORT2(s1, s2);
+            if (bpp == 32) {
+                if (s0 < s1)
+                    small_run32((uint32_t *)row + s0, s1 - s0, q32, v);
+                if (s2 < s3)
+                    small_run32((uint32_t *)row + s2, s3 - s2, q32, v);
+            } else {
+                if (s0 < s1)
+                    small_run16((uint16_t *)row + s0, s1 - s0, q16, v16);
+                if (s2 < s3)
+                    small_run16((uint16_t *)row + s2, s3 - s2, q16, v16);
+            }
+            SMALL_STEP(x0, e0, d0, r0, q0);
+            SMALL_STEP(x1, e1, d1, r1, q1);
+            SMALL_STEP(x2, e2, d2, r2, q2);
+            SMALL_STEP(x3, e3, d3, r3, q3);
+        }
+        a[2].x = x2, a[2].e = e2, a[3].x = x3, a[3].e = e3;
+    }
+    a[0].x = x0, a[0].e = e0, a[1].x = x1, a[1].e = e1;
+    /* back in x order for the band's end */
+    for (int32_t k = 1; k < m; k++) {
+        small_edge t = a[k];
+        int32_t j = k;
+        while (j > 0 && a[j - 1].x > t.x) {
+            a[j] = a[j - 1];
+            j--;
+        }
+        a[j] = t;
+    }
+}
+
 /* edges[0, n): sorted by ystart, every value within the SMALL_ limits. */
 static void small_fill(const fx_ctx *c, const fx_fill_edge *edges, int32_t n, fx_fill_rule rule, int clampx)
 {
@@ -569,7 +667,12 @@ static void small_fill(const fx_ctx *c, const fx_fill_edge *edges, int32_t n, fx
         int32_t yb = pend < n ? edges[pend].ystart : INT32_MAX;
         for (int32_t k = 0; k < m; k++)
             yb = FX_MIN(yb, a[k].yend);
-        if (evenodd && !clampx && bpp == 32)
+        if (!clampx && (bpp == 32 || bpp == 16) && (m == 2 || (m == 4 && evenodd))) {
+            if (bpp == 32)
+                small_band24(c, a, m, y, yb, 32);
+            else
+                small_band24(c, a, m, y, yb, 16);
+        } else if (evenodd && !clampx && bpp == 32)
             small_band(c, a, m, y, yb, 1, 32, 0, 1);
         else if (evenodd && !clampx && bpp == 16)
             small_band(c, a, m, y, yb, 1, 16, 0, 1);

@@ -544,12 +544,17 @@ FX_TEST(fill_small_path_matches_general_path_and_reference)
             /* a W7-like box, partly outside the surface when clipped */
             int32_t bx = (int32_t)(fx_test_rand(&seed) % 40) - 10, by = (int32_t)(fx_test_rand(&seed) % 30) - 8;
             int32_t bw = 10 + (int32_t)(fx_test_rand(&seed) % 50), bh = 8 + (int32_t)(fx_test_rand(&seed) % 40);
+            if (iter % 3 == 0) { /* wholly inside: the unclamped bands */
+                bx = (int32_t)(fx_test_rand(&seed) % (uint32_t)(W - bw));
+                by = (int32_t)(fx_test_rand(&seed) % (uint32_t)(H - bh / 2));
+                bh /= 2;
+            }
             for (int i = 0; i < counts[k]; i++, nv++) {
                 int32_t vx = (bx + (int32_t)(fx_test_rand(&seed) % (uint32_t)bw)) * one +
                              (int32_t)(fx_test_rand(&seed) % (uint32_t)one);
                 int32_t vy = (by + (int32_t)(fx_test_rand(&seed) % (uint32_t)bh)) * one +
                              (int32_t)(fx_test_rand(&seed) % (uint32_t)one);
-                uint32_t kind = fx_test_rand(&seed) % 16;
+                uint32_t kind = fx_test_rand(&seed) % (iter % 3 == 0 ? 64 : 16);
                 if (i > 0 && kind == 0) /* horizontal edge */
                     vy = xy[2 * nv - 1];
                 else if (i > 0 && kind == 1) { /* zero-length edge */
@@ -572,7 +577,8 @@ FX_TEST(fill_small_path_matches_general_path_and_reference)
                 ys[nv] = xy[2 * nv + 1] = vy;
             }
         }
-        fx_format f = fmts[iter % 3 == 1 ? 1 : (iter % 7 == 0 ? 2 : 0)];
+        static const int fsel[4] = {0, 1, 0, 2};
+        fx_format f = fmts[fsel[(iter / 3) % 4]];
         fx_rect clip = {0, 0, W, H};
         if (iter % 4 == 3)
             clip = (fx_rect){3 + (int32_t)(fx_test_rand(&seed) % 20), 2 + (int32_t)(fx_test_rand(&seed) % 15), 0, 0};
