@@ -67,6 +67,7 @@ int fx_surface_init(fx_surface *s, void *pixels, int32_t w, int32_t h, int32_t s
     s->stride = stride;
     s->format = format;
     s->bit_offset = 0;
+    s->fill_isa = fx_x86_fill_level();
     return 0;
 }
 
@@ -288,6 +289,20 @@ void fx_rect_fill_native(const fx_surface *s, fx_rect r, uint32_t v)
     }
     /* The format is chosen once per rectangle; rows advance by the stride. */
     uint8_t *row = fx_row(s, r.y0);
+#if FX_X86_FILL
+    if (s->fill_isa && (bpp == 32 || bpp == 16)) {
+        size_t bytes = (size_t)bpp / 8;
+        uint8_t *first = row + (size_t)r.x0 * bytes;
+        if (!(((uintptr_t)first | (uintptr_t)(intptr_t)s->stride) & (bytes - 1))) {
+            uint32_t p = bpp == 32 ? v : (v & 0xFFFF) * 0x10001u;
+            if (s->fill_isa == FX_FILL_AVX512)
+                fx_rect_fill_avx512(first, (size_t)w * bytes, h, s->stride, p);
+            else
+                fx_rect_fill_avx(first, (size_t)w * bytes, h, s->stride, p);
+            return;
+        }
+    }
+#endif
     switch (bpp) {
     case 32:
         for (row += (size_t)r.x0 * 4; h--; row += s->stride)

@@ -55,6 +55,10 @@ typedef struct fx_surface {
     int32_t stride;     /* bytes from one row to the next; may be negative */
     fx_format format;
     uint8_t bit_offset; /* MONO1 only: bit of pixel 0 within its byte (0..7) */
+    /* Set by fx_surface_init: the widest vector stores this CPU and OS allow
+     * for solid rectangles (0: the portable loops, always safe). A surface
+     * set up field by field must zero it. */
+    uint8_t fill_isa;
 } fx_surface;
 
 /* Half-open rectangle [x0, x1) x [y0, y1); empty when x0 >= x1 or y0 >= y1. */

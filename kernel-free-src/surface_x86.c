@@ -1,0 +1,120 @@
+/* fixel — solid rectangles with AVX / AVX-512 stores, for x86-64 CPUs that
+ * have them (see fx_internal.h for why this is decided at run time). */
+#include "fx_internal.h"
+
+#if FX_X86_FILL
+
+static void cpuid(uint32_t leaf, uint32_t r[4])
+{
+    __asm__ volatile("cpuid" : "=a"(r[0]), "=b"(r[1]), "=c"(r[2]), "=d"(r[3]) : "a"(leaf), "c"(0));
+}
+
+uint8_t fx_x86_fill_level(void)
+{
+    uint32_t r[4];
+    cpuid(0, r);
+    uint32_t max = r[0];
+    if (max < 1)
+        return FX_FILL_PORTABLE;
+    cpuid(1, r);
+    /* AVX instructions need the CPU (ECX bit 28) and the OS saving the
+     * ymm state (OSXSAVE, bit 27, then XCR0 bits 1-2). */
+    if (!(r[2] >> 27 & 1) || !(r[2] >> 28 & 1))
+        return FX_FILL_PORTABLE;
+    uint32_t xcr0, hi;
+    __asm__ volatile("xgetbv" : "=a"(xcr0), "=d"(hi) : "c"(0));
+    if ((xcr0 & 0x6) != 0x6)
+        return FX_FILL_PORTABLE;
+    if (max >= 7) {
+        cpuid(7, r);
+        /* AVX512F (EBX bit 16) and the opmask/zmm state (XCR0 bits 5-7). */
+        if ((r[1] >> 16 & 1) && (xcr0 & 0xE0) == 0xE0)
+            return FX_FILL_AVX512;
+    }
+    return FX_FILL_AVX;
+}
+
+typedef uint32_t v4u32 __attribute__((vector_size(16)));
+typedef uint32_t v8u32 __attribute__((vector_size(32)));
+typedef uint32_t v16u32 __attribute__((vector_size(64)));
+
+/* Rows narrower than one wide store: two stores of the largest size that
+ * fits, overlapping in the middle (every row has the same width, so the
+ * choice is made once per rectangle). */
+#define NARROW_ROWS(row, nb, h, stride, p)                                   \
+    do {                                                                     \
+        if (nb >= 16) {                                                      \
+            v4u32 q4 = {p, p, p, p};                                         \
+            for (; h--; row += stride) {                                     \
+                fx_memcpy(row, &q4, 16);                                     \
+                fx_memcpy(row + nb - 16, &q4, 16);                           \
+            }                                                                \
+        } else if (nb >= 8) {                                                \
+            uint64_t p8 = p * 0x100000001ull;                                \
+            for (; h--; row += stride) {                                     \
+                fx_memcpy(row, &p8, 8);                                      \
+                fx_memcpy(row + nb - 8, &p8, 8);                             \
+            }                                                                \
+        } else if (nb >= 4) {                                                \
+            for (; h--; row += stride) {                                     \
+                fx_memcpy(row, &p, 4);                                       \
+                fx_memcpy(row + nb - 4, &p, 4);                              \
+            }                                                                \
+        } else {                                                             \
+            uint16_t p2 = (uint16_t)p;                                       \
+            for (; h--; row += stride)                                       \
+                fx_memcpy(row, &p2, 2);                                      \
+        }                                                                    \
+    } while (0)
+
+/* Wide rows: an unaligned store at each end, aligned ones in between (a
+ * store that crosses a cache line costs two). */
+__attribute__((target("avx"))) void fx_rect_fill_avx(uint8_t *row, size_t nb, int32_t h,
+                                                     ptrdiff_t stride, uint32_t p)
+{
+    if (nb < 32) {
+        NARROW_ROWS(row, nb, h, stride, p);
+        return;
+    }
+    v8u32 q = {p, p, p, p, p, p, p, p};
+    for (; h--; row += stride) {
+        uint8_t *e = row + nb - 32;
+        uint8_t *a = (uint8_t *)(((uintptr_t)row + 32) & ~(uintptr_t)31);
+        fx_memcpy(row, &q, 32);
+        for (; a < e; a += 32)
+            fx_memcpy(__builtin_assume_aligned(a, 32), &q, 32);
+        fx_memcpy(e, &q, 32);
+    }
+}
+
+__attribute__((target("avx512f"))) void fx_rect_fill_avx512(uint8_t *row, size_t nb, int32_t h,
+                                                            ptrdiff_t stride, uint32_t p)
+{
+    if (nb < 32) {
+        NARROW_ROWS(row, nb, h, stride, p);
+        return;
+    }
+    if (nb < 64) {
+        v8u32 q8 = {p, p, p, p, p, p, p, p};
+        for (; h--; row += stride) {
+            fx_memcpy(row, &q8, 32);
+            fx_memcpy(row + nb - 32, &q8, 32);
+        }
+        return;
+    }
+    v16u32 q = {p, p, p, p, p, p, p, p, p, p, p, p, p, p, p, p};
+    for (; h--; row += stride) {
+        uint8_t *e = row + nb - 64;
+        uint8_t *a = (uint8_t *)(((uintptr_t)row + 64) & ~(uintptr_t)63);
+        fx_memcpy(row, &q, 64);
+        for (; a < e; a += 64)
+            fx_memcpy(__builtin_assume_aligned(a, 64), &q, 64);
+        fx_memcpy(e, &q, 64);
+    }
+}
+
+#else
+
+uint8_t fx_x86_fill_level(void) { return FX_FILL_PORTABLE; }
+
+#endif
