@@ -56,7 +56,7 @@ static void check_format(fx_format f, int bytes, int stride_pad, int flip)
     int32_t w = MAXW + 64 / bytes + 1;
     int32_t stride = w * bytes + stride_pad;
     size_t size = (size_t)stride * ROWS;
-    uint8_t *mem = aligned_alloc(64, size + 64), *ref = malloc(size);
+    uint8_t *mem = aligned_alloc(64, (size + 63) & ~(size_t)63), *ref = malloc(size);
     FX_CHECK(mem && ref);
     if (!mem || !ref) {
         free(mem);

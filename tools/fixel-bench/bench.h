@@ -103,6 +103,10 @@ void ref_native_mandel(uint32_t *dst);
 /* A plain scalar store loop filling the surface, built like ref_mandel. */
 void ref_clear(const struct target *t, uint32_t native);
 void ref_native_clear(const struct target *t, uint32_t native);
+/* W2 with nothing but clipping and stores: ref one store per pixel, ref-native
+ * the widest vector stores of the build machine (the access pattern's ceiling). */
+void ref_rects(const struct target *t, int n);
+void ref_native_rects(const struct target *t, int n);
 
 static inline uint32_t pack565(uint32_t c)
 {
