@@ -290,7 +290,8 @@ void fx_rect_fill_native(const fx_surface *s, fx_rect r, uint32_t v)
     /* The format is chosen once per rectangle; rows advance by the stride. */
     uint8_t *row = fx_row(s, r.y0);
 #if FX_X86_FILL
-    if (s->fill_isa && (bpp == 32 || bpp == 16)) {
+    /* Runs long enough for rep stosq (a clear) stay with fx_run32/16. */
+    if (s->fill_isa && (bpp == 32 || bpp == 16) && (size_t)w * (size_t)bpp / 8 < FX_STOS_MIN_BYTES) {
         size_t bytes = (size_t)bpp / 8;
         uint8_t *first = row + (size_t)r.x0 * bytes;
         if (!(((uintptr_t)first | (uintptr_t)(intptr_t)s->stride) & (bytes - 1))) {

@@ -51,9 +51,9 @@ static int levels(uint8_t out[3])
 
 /* Fills every width and start column at each level; stride_pad shifts the
  * alignment from row to row, flip walks rows backwards in memory. */
-static void check_format(fx_format f, int bytes, int stride_pad, int flip)
+static void check_widths(fx_format f, int bytes, int stride_pad, int flip, int32_t n_lo, int32_t n_hi)
 {
-    int32_t w = MAXW + 64 / bytes + 1;
+    int32_t w = n_hi + 64 / bytes + 1;
     int32_t stride = w * bytes + stride_pad;
     size_t size = (size_t)stride * ROWS;
     uint8_t *mem = aligned_alloc(64, (size + 63) & ~(size_t)63), *ref = malloc(size);
@@ -73,7 +73,7 @@ static void check_format(fx_format f, int bytes, int stride_pad, int flip)
     for (int l = 0; l < nl && !bad; l++) {
         s.fill_isa = lv[l];
         for (int32_t x0 = 0; x0 < 64 / bytes && !bad; x0++)
-            for (int32_t n = 1; n <= MAXW && !bad; n++) {
+            for (int32_t n = n_lo; n <= n_hi && !bad; n++) {
                 for (size_t i = 0; i < size; i++)
                     mem[i] = (uint8_t)next();
                 memcpy(ref, mem, size);
@@ -93,6 +93,11 @@ static void check_format(fx_format f, int bytes, int stride_pad, int flip)
     free(ref);
 }
 
+static void check_format(fx_format f, int bytes, int stride_pad, int flip)
+{
+    check_widths(f, bytes, stride_pad, flip, 1, MAXW);
+}
+
 FX_TEST(rect_fill_matches_plain_loop_32bit)
 {
     check_format(FX_FMT_XRGB8888, 4, 0, 0);
@@ -105,6 +110,13 @@ FX_TEST(rect_fill_matches_plain_loop_16bit)
     check_format(FX_FMT_RGB565, 2, 0, 0);
     check_format(FX_FMT_RGB565, 2, 2, 0);
     check_format(FX_FMT_BGR565, 2, 6, 1);
+}
+
+/* Rows of FX_STOS_MIN_BYTES and more leave the vector path for rep stosq. */
+FX_TEST(rect_fill_matches_plain_loop_around_the_long_run_switch)
+{
+    check_widths(FX_FMT_XRGB8888, 4, 4, 0, 2048 / 4 - 3, 2048 / 4 + 3);
+    check_widths(FX_FMT_RGB565, 2, 2, 0, 2048 / 2 - 5, 2048 / 2 + 5);
 }
 
 /* fx_surface_init records what the CPU offers; the compiler's own CPU model
