@@ -130,8 +130,101 @@ static void trace_header(const fx_ctx *c, const fx_bres *b, int32_t x0, int32_t 
     fx_trace(c, "%-4s %-12s %s", "k", "p_k", "(x_k+1, y_k+1)");
 }
 
-/* Walk steps [k0, k1] (inside the clip) writing native pixels: the pointer
- * moves by precomputed byte offsets, no per-pixel multiplies or checks. */
+/* ---- the fast walk: a DDA whose minor coordinate is exactly Bresenham's ----
+ * Bresenham's error branch is taken in a slope-dependent pattern that the
+ * branch predictor cannot learn for arbitrary slopes, and its error term is
+ * a loop-carried dependency. Here the minor offset of step k is computed on
+ * its own as m_k = floor(acc_k / 2^32) with acc_k = k*S + 2^31 and
+ * S = ceil(minor * 2^32 / major): no branch, and the steps of an unrolled
+ * loop are independent.
+ *
+ * Why it equals fx_bres_minor_at(k) = floor(X_k), X_k = k*minor/major + 1/2:
+ * write S = minor*2^32/major + eps with 0 <= eps < 1; then
+ * acc_k / 2^32 = X_k + k*eps/2^32. X_k is a multiple of 1/(2*major), so its
+ * fractional part is at most 1 - 1/(2*major) (ties, fraction 0, stay put:
+ * the error is never negative). The floor is unchanged as long as
+ * k*eps/2^32 < 1/(2*major), which holds for every k <= major when
+ * 2*major^2 < 2^32, i.e. major <= 46340 (2*46340^2 = 4294635200).
+ * Longer lines (only huge clipped ones: a visible piece is at most a few
+ * thousand steps) take the Bresenham walk.
+ *
+ * A walk starting at step k0 keeps only the fraction of acc_k0: adding a
+ * multiple of 2^32 shifts every floor by the same integer, so
+ * floor((frac + j*S) / 2^32) = m_{k0+j} - m_{k0}, the offset from the pixel
+ * fx_bres_seek found. */
+#define FX_DDA_WALK_MAX 46340u
+
+#define FX_POS(i) ((ptrdiff_t)(i))
+#define FX_NEG(i) (-(ptrdiff_t)(i))
+
+/* y-major: row j of the walk is base + j*st; its column moves by
+ * SX(m_j) pixels. Byte offsets (not pointers) run ahead of the last pixel
+ * so no pointer is ever formed outside the surface. */
+#define FX_DDA_YMAJOR(T, SX)                                                                \
+    do {                                                                                    \
+        ptrdiff_t o = 0, st2 = 2 * st, st3 = 3 * st, st4 = 4 * st;                          \
+        for (; n >= 4; n -= 4, o += st4, a += S4) {                                         \
+            ((T *)(void *)(base + o))[SX(a >> 32)] = (T)v;                                  \
+            ((T *)(void *)(base + o + st))[SX((a + S) >> 32)] = (T)v;                       \
+            ((T *)(void *)(base + o + st2))[SX((a + S2) >> 32)] = (T)v;                     \
+            ((T *)(void *)(base + o + st3))[SX((a + S3) >> 32)] = (T)v;                     \
+        }                                                                                   \
+        for (; n > 0; n--, o += st, a += S)                                                 \
+            ((T *)(void *)(base + o))[SX(a >> 32)] = (T)v;                                  \
+    } while (0)
+
+/* x-major: pixel j is SX(j) pixels along the row of step k0, m_j rows down
+ * (st is signed). */
+#define FX_DDA_XMAJOR(T, SX)                                                                \
+    do {                                                                                    \
+        ptrdiff_t o = 0;                                                                    \
+        for (; n >= 4; n -= 4, o += SX(4 * sizeof(T)), a += S4) {                          \
+            *(T *)(void *)(base + o + (ptrdiff_t)(a >> 32) * st) = (T)v;                    \
+            *(T *)(void *)(base + o + SX(sizeof(T)) + (ptrdiff_t)((a + S) >> 32) * st) =    \
+                (T)v;                                                                       \
+            *(T *)(void *)(base + o + SX(2 * sizeof(T)) + (ptrdiff_t)((a + S2) >> 32) * st) = \
+                (T)v;                                                                       \
+            *(T *)(void *)(base + o + SX(3 * sizeof(T)) + (ptrdiff_t)((a + S3) >> 32) * st) = \
+                (T)v;                                                                       \
+        }                                                                                   \
+        for (; n > 0; n--, o += SX(sizeof(T)), a += S)                                      \
+            *(T *)(void *)(base + o + (ptrdiff_t)(a >> 32) * st) = (T)v;                    \
+    } while (0)
+
+#define FX_DDA_WALK(T)                                 \
+    do {                                               \
+        if (b->ymajor) {                               \
+            if (b->sx >= 0)                            \
+                FX_DDA_YMAJOR(T, FX_POS);              \
+            else                                       \
+                FX_DDA_YMAJOR(T, FX_NEG);              \
+        } else {                                       \
+            if (b->sx >= 0)                            \
+                FX_DDA_XMAJOR(T, FX_POS);              \
+            else                                       \
+                FX_DDA_XMAJOR(T, FX_NEG);              \
+        }                                              \
+    } while (0)
+
+/* Steps [k0, k0 + n) of b (seeked to k0, major <= FX_DDA_WALK_MAX), all
+ * inside the clip, in native pixels of bytes 4, 2 or 1. */
+static void walk_dda(const fx_ctx *c, const fx_bres *b, uint32_t n, unsigned bytes)
+{
+    uint64_t S = b->major ? (((uint64_t)b->minor << 32) + b->major - 1) / b->major : 0;
+    uint64_t a = (uint32_t)((uint64_t)b->k * S + (1u << 31)); /* the fraction of acc_k0 */
+    uint64_t S2 = 2 * S, S3 = 3 * S, S4 = 4 * S;
+    ptrdiff_t st = b->sy * (ptrdiff_t)c->surf.stride; /* one step along y, in bytes */
+    uint8_t *base = fx_row(&c->surf, b->y) + (ptrdiff_t)b->x * (ptrdiff_t)bytes;
+    uint32_t v = c->native;
+    if (bytes == 4)
+        FX_DDA_WALK(uint32_t);
+    else if (bytes == 2)
+        FX_DDA_WALK(uint16_t);
+    else
+        FX_DDA_WALK(uint8_t);
+}
+
+/* Walk steps [k0, k1] (inside the clip) writing native pixels. */
 static void walk(const fx_ctx *c, fx_bres *b, uint32_t k0, uint32_t k1)
 {
     fx_bres_seek(b, k0);
@@ -154,6 +247,12 @@ static void walk(const fx_ctx *c, fx_bres *b, uint32_t k0, uint32_t k1)
         }
         return;
     }
+    if (b->major <= FX_DDA_WALK_MAX) {
+        walk_dda(c, b, n, bpp / 8);
+        return;
+    }
+    /* The Bresenham walk for the rest: the pointer moves by precomputed
+     * byte offsets, no per-pixel multiplies or checks. */
     ptrdiff_t bytes = (ptrdiff_t)(bpp / 8);
     ptrdiff_t step_x = b->sx * bytes, step_y = b->sy * (ptrdiff_t)c->surf.stride;
     ptrdiff_t step_major = b->ymajor ? step_y : step_x, step_minor = b->ymajor ? step_x : step_y;
