@@ -206,6 +206,104 @@ static void trace_header(const fx_ctx *c, const fx_bres *b, int32_t x0, int32_t 
         }                                              \
     } while (0)
 
+/* ---- shallow lines as horizontal runs ----
+ * An x-major line whose major/minor ratio is at least 4 lights runs of at
+ * least 4 pixels per row; a run is one or two wide stores instead of a
+ * store per pixel.
+ *
+ * Row m (1 <= m <= minor) starts at the first step whose minor offset
+ * reaches m: m_k >= m <=> 2k*minor + major >= 2m*major, so
+ * k_m = ceil(T_m), T_m = (2m - 1)*major / (2*minor). T_m is a multiple of
+ * 1/(2*minor), hence k_m = floor(U_m) with U_m = T_m + 1 - 1/(2*minor),
+ * again a multiple of 1/(2*minor) (fraction at most 1 - 1/(2*minor)).
+ * With R = ceil(major*2^32/minor) and C = ceil((2*minor - 1 - major)*2^32 /
+ * (2*minor)), m*R + C = U_m*2^32 + e, 0 <= e < m + 1 <= minor + 1, so
+ * floor((m*R + C) / 2^32) = k_m while (minor + 1)*2*minor <= 2^32, true for
+ * every minor < major <= FX_DDA_WALK_MAX. At m = minor + 1 (past the last
+ * row) the value only overestimates, so it is > k_minor, which is all the
+ * loop below asks of it. Interior rows (0 < m < minor) hold
+ * floor(major/minor) or that + 1 pixels, so with W pixels per store,
+ * W <= floor(major/minor) < 2W, a store at each end of the row covers it
+ * exactly; the first and last rows (and rows cut by the clip) are filled
+ * as plain runs. */
+#define FX_RUNS_MIN_RATIO 4u
+
+static void fill_run(uint8_t *lo, uint32_t len, uint32_t v, unsigned bytes)
+{
+    if (bytes == 4)
+        fx_run32((uint32_t *)(void *)lo, (int32_t)len, v);
+    else if (bytes == 2)
+        fx_run16((uint16_t *)(void *)lo, (int32_t)len, (uint16_t)v);
+    else
+        fx_memset(lo, (int)(v & 0xFF), len);
+}
+
+/* The lowest address of steps [ka, kb) on the row at byte offset row. */
+#define FX_RUN_LO(ka, kb)                                                             \
+    (base + row +                                                                     \
+     (b->sx > 0 ? (ptrdiff_t)((ka) - k0) : (ptrdiff_t)k0 + 1 - (ptrdiff_t)(kb)) *     \
+         (ptrdiff_t)bytes)
+
+/* Whole interior rows, both ends stored with one WB-byte pattern. */
+#define FX_RUNS_PAIR(WB, PAT)                                                  \
+    for (; (kn = (uint32_t)(acc >> 32)) <= kend; acc += R) {                   \
+        uint8_t *lo = FX_RUN_LO(k, kn);                                        \
+        fx_memcpy(lo, &PAT, WB);                                               \
+        fx_memcpy(lo + (ptrdiff_t)(kn - k) * (ptrdiff_t)bytes - WB, &PAT, WB); \
+        k = kn;                                                                \
+        row += st;                                                             \
+    }
+
+/* Steps [k0, k0 + n) of an x-major line with minor >= 1 and
+ * major >= FX_RUNS_MIN_RATIO * minor; S is the slope of walk_dda. */
+static void walk_runs(const fx_ctx *c, const fx_bres *b, uint32_t k0, uint32_t n, unsigned bytes,
+                      uint64_t S)
+{
+    uint32_t major = b->major, minor = b->minor, k1 = k0 + (n - 1);
+    uint32_t M = (uint32_t)(((uint64_t)k0 * S + (1u << 31)) >> 32); /* the row of step k0 */
+    ptrdiff_t st = b->sy * (ptrdiff_t)c->surf.stride, row = 0;
+    uint8_t *base = fx_row(&c->surf, b->y) + (ptrdiff_t)b->x * (ptrdiff_t)bytes;
+    uint32_t v = c->native, k = k0;
+    if (M == minor) {
+        fill_run(FX_RUN_LO(k0, k1 + 1), n, v, bytes);
+        return;
+    }
+    uint64_t R = (((uint64_t)major << 32) + minor - 1) / minor;
+    int64_t num = ((int64_t)2 * minor - 1 - (int64_t)major) * ((int64_t)1 << 32), d = 2 * (int64_t)minor;
+    uint64_t C = (uint64_t)(num >= 0 ? (num + d - 1) / d : -(-num / d)); /* mod 2^64 */
+    uint64_t acc = (uint64_t)(M + 1) * R + C; /* k_{M+1} in the high half */
+    uint32_t klast = (uint32_t)(((uint64_t)minor * R + C) >> 32);
+    uint32_t kend = k1 < klast ? k1 + 1 : klast; /* rows ending by kend are whole interior rows */
+    uint32_t kn = (uint32_t)(acc >> 32);
+    if (kn > k1) {
+        fill_run(FX_RUN_LO(k0, k1 + 1), n, v, bytes);
+        return;
+    }
+    fill_run(FX_RUN_LO(k0, kn), kn - k0, v, bytes);
+    k = kn;
+    row = st;
+    acc += R;
+    uint32_t w = major / minor * bytes; /* bytes of the shortest interior row */
+    uint32_t v32 = bytes == 4 ? v : bytes == 2 ? (v & 0xFFFFu) * 0x10001u : (v & 0xFFu) * 0x01010101u;
+    if (w >= 32) {
+        for (; (kn = (uint32_t)(acc >> 32)) <= kend; acc += R) {
+            fill_run(FX_RUN_LO(k, kn), kn - k, v, bytes);
+            k = kn;
+            row += st;
+        }
+    } else if (w >= 16) {
+        fx_v4u32 q = {v32, v32, v32, v32};
+        FX_RUNS_PAIR(16, q)
+    } else if (w >= 8) {
+        uint64_t q = v32 | (uint64_t)v32 << 32;
+        FX_RUNS_PAIR(8, q)
+    } else {
+        FX_RUNS_PAIR(4, v32) /* 8-bit pixels, rows of 4..7 */
+    }
+    if (k <= k1)
+        fill_run(FX_RUN_LO(k, k1 + 1), k1 + 1 - k, v, bytes);
+}
+
 /* Steps [k0, k0 + n) of b (seeked to k0, major <= FX_DDA_WALK_MAX), all
  * inside the clip, in native pixels of bytes 4, 2 or 1. */
 static void walk_dda(const fx_ctx *c, const fx_bres *b, uint32_t n, unsigned bytes)
@@ -216,6 +314,10 @@ static void walk_dda(const fx_ctx *c, const fx_bres *b, uint32_t n, unsigned byt
     ptrdiff_t st = b->sy * (ptrdiff_t)c->surf.stride; /* one step along y, in bytes */
     uint8_t *base = fx_row(&c->surf, b->y) + (ptrdiff_t)b->x * (ptrdiff_t)bytes;
     uint32_t v = c->native;
+    if (!b->ymajor && b->minor && b->major / b->minor >= FX_RUNS_MIN_RATIO) {
+        walk_runs(c, b, b->k, n, bytes, S);
+        return;
+    }
     if (bytes == 4)
         FX_DDA_WALK(uint32_t);
     else if (bytes == 2)

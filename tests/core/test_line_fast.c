@@ -281,3 +281,40 @@ FX_TEST(fast_walk_longest_dda_lines_whole)
     FX_CHECK_EQ(n_bad, 0);
     FX_CHECK_EQ(n_lines, 30);
 }
+
+/* Shallow x-major lines (major/minor >= 4) are drawn as horizontal runs:
+ * ratios around the store-width changes (4, 8, 16, 32 pixels), both x
+ * directions, visible pieces starting and ending anywhere inside a run,
+ * and pieces lying on the first or last row only. */
+FX_TEST(fast_walk_shallow_runs)
+{
+    uint32_t s = 0x5151u;
+    n_lines = n_bad = 0;
+    for (size_t f = 0; f < FX_ARRAY_LEN_T(formats); f++) {
+        canvas c = make(211, 37, formats[f], 8, f == 2);
+        for (int i = 0; i < 600; i++) {
+            uint32_t minor = 1 + fx_test_rand(&s) % 30, ratio = 3 + fx_test_rand(&s) % 36;
+            uint32_t major = minor * ratio + fx_test_rand(&s) % minor;
+            int32_t sx = i & 1 ? -1 : 1, sy = i & 2 ? -1 : 1;
+            int32_t x0 = (int32_t)(fx_test_rand(&s) % 211), y0 = (int32_t)(fx_test_rand(&s) % 37);
+            if (i & 4) { /* start outside so the line crosses the surface */
+                x0 -= sx * (int32_t)(fx_test_rand(&s) % (major + 1));
+                y0 -= sy * (int32_t)(fx_test_rand(&s) % (minor + 1));
+            }
+            int32_t x1 = x0 + sx * (int32_t)major, y1 = y0 + sy * (int32_t)minor;
+            uint32_t col = colour_of(fx_test_rand(&s));
+            check(&c, x0, y0, x1, y1, 0, UINT32_MAX, 0, col);
+            uint32_t k0 = fx_test_rand(&s) % (major + 1), k1 = k0 + fx_test_rand(&s) % (major + 1);
+            check(&c, x0, y0, x1, y1, k0, k1, 0, col);
+            check(&c, x0, y0, x1, y1, k0, k1, 1, col);
+            /* the first and the last row alone */
+            uint32_t half = major / (2 * minor);
+            check(&c, x0, y0, x1, y1, 0, half, 1, col);
+            check(&c, x0, y0, x1, y1, major - half, major, 1, col);
+            check(&c, x0, y0, x1, y1, major - half - 1, major, 0, col);
+        }
+        drop(&c);
+    }
+    FX_CHECK_EQ(n_bad, 0);
+    FX_CHECK_EQ(n_lines, 3 * 600 * 6);
+}
