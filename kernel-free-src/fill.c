@@ -450,8 +450,9 @@ typedef struct {
  * pairs at each end: a single loop exit per run. fx_run32's byte loop,
  * second loop and length tests mispredicted often here. */
 #define SMALL_RUN(NAME, T, V, L)                                                                   \
-    static inline void NAME(T *p, int32_t n, V q, T v)                                             \
+    static inline void NAME(T *p, int32_t n, T v)                                                  \
     {                                                                                              \
+        V q = (V){0} + v; /* broadcast here: aarch64 cannot pass vectors without SIMD */           \
         if (n < 2 * L) {                                                                           \
             if (n >= L) {                                                                          \
                 fx_memcpy(p, &q, 16);                                                              \
@@ -496,9 +497,7 @@ static inline __attribute__((always_inline)) void small_band(const fx_ctx *c, sm
     const fx_surface *sf = &c->surf;
     int32_t cx0 = c->clip.x0, cx1 = c->clip.x1;
     uint32_t v = c->native;
-    fx_v4u32 q32 = {v, v, v, v};
     uint16_t v16 = (uint16_t)v;
-    fx_v8u16 q16 = {v16, v16, v16, v16, v16, v16, v16, v16};
     uint8_t *row = bpp ? fx_row(sf, y) : 0;
     for (; y < yb; y++) {
         int32_t w = 0, xs = 0;
@@ -525,9 +524,9 @@ static inline __attribute__((always_inline)) void small_band(const fx_ctx *c, sm
             }
             if (xa < xb) {
                 if (bpp == 32)
-                    small_run32((uint32_t *)row + xa, xb - xa, q32, v);
+                    small_run32((uint32_t *)row + xa, xb - xa, v);
                 else if (bpp == 16)
-                    small_run16((uint16_t *)row + xa, xb - xa, q16, v16);
+                    small_run16((uint16_t *)row + xa, xb - xa, v16);
                 else if (fast)
                     fx_span_fill(sf, y, xa, xb, v);
                 else
@@ -578,9 +577,7 @@ static inline __attribute__((always_inline)) void small_band24(const fx_ctx *c, 
 {
     const fx_surface *sf = &c->surf;
     uint32_t v = c->native;
-    fx_v4u32 q32 = {v, v, v, v};
     uint16_t v16 = (uint16_t)v;
-    fx_v8u16 q16 = {v16, v16, v16, v16, v16, v16, v16, v16};
     uint8_t *row = fx_row(sf, y);
     ptrdiff_t stride = sf->stride;
     int32_t x0 = a[0].x, e0 = a[0].e, x1 = a[1].x, e1 = a[1].e;
@@ -591,9 +588,9 @@ static inline __attribute__((always_inline)) void small_band24(const fx_ctx *c, 
             SMALL_SORT2(s0, s1);
             if (s0 < s1) {
                 if (bpp == 32)
-                    small_run32((uint32_t *)row + s0, s1 - s0, q32, v);
+                    small_run32((uint32_t *)row + s0, s1 - s0, v);
                 else
-                    small_run16((uint16_t *)row + s0, s1 - s0, q16, v16);
+                    small_run16((uint16_t *)row + s0, s1 - s0, v16);
             }
             SMALL_STEP(x0, e0, d0, r0, q0);
             SMALL_STEP(x1, e1, d1, r1, q1);
@@ -610,14 +607,14 @@ static inline __attribute__((always_inline)) void small_band24(const fx_ctx *c, 
             SMALL_SORT2(s1, s2);
             if (bpp == 32) {
                 if (s0 < s1)
-                    small_run32((uint32_t *)row + s0, s1 - s0, q32, v);
+                    small_run32((uint32_t *)row + s0, s1 - s0, v);
                 if (s2 < s3)
-                    small_run32((uint32_t *)row + s2, s3 - s2, q32, v);
+                    small_run32((uint32_t *)row + s2, s3 - s2, v);
             } else {
                 if (s0 < s1)
-                    small_run16((uint16_t *)row + s0, s1 - s0, q16, v16);
+                    small_run16((uint16_t *)row + s0, s1 - s0, v16);
                 if (s2 < s3)
-                    small_run16((uint16_t *)row + s2, s3 - s2, q16, v16);
+                    small_run16((uint16_t *)row + s2, s3 - s2, v16);
             }
             SMALL_STEP(x0, e0, d0, r0, q0);
             SMALL_STEP(x1, e1, d1, r1, q1);
