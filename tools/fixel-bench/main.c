@@ -740,6 +740,30 @@ static double primary(int w, const struct cell *c)
     return WD[w].whole ? c->med_mpix : c->med_ops;
 }
 
+static int is_ceiling(const struct peer *p) { return p == &peer_libc || p == &peer_ref || p == &peer_ref_native; }
+
+/* The fastest shown peer with a number for w.f: a library (libs) or a ceiling. */
+static int best_of(int w, int f, int libs)
+{
+    int best = -1;
+    for (int i = 1; i < NPEERS; i++)
+        if (shown(i) && PEERS[i] != &peer_fixel_mt && is_ceiling(PEERS[i]) != libs &&
+            CELLS[w][f][i].state == 1 &&
+            (best < 0 || primary(w, &CELLS[w][f][i]) > primary(w, &CELLS[w][f][best])))
+            best = i;
+    return best;
+}
+
+static void print_ratio(FILE *o, int w, int f, int peer)
+{
+    const struct cell *fx = &CELLS[w][f][0];
+    char t[48] = "-";
+    if (fx->state == 1 && peer >= 0)
+        snprintf(t, sizeof t, "%5.2f x %s", primary(w, fx) / primary(w, &CELLS[w][f][peer]),
+                 PEERS[peer]->name);
+    fprintf(o, "  %-20s", t);
+}
+
 static void print_table(FILE *o, int which)
 {
     int ratio = 1;
@@ -756,8 +780,8 @@ static void print_table(FILE *o, int which)
             width += 12;
         }
     if (which == 0 && ratio) {
-        fprintf(o, "  %-s", "fixel/best");
-        width += 20;
+        fprintf(o, "  %-20s  %-s", "fixel/best peer", "fixel/ceiling");
+        width += 42;
     }
     fprintf(o, "\n");
     for (int i = 0; i < width; i++)
@@ -802,17 +826,13 @@ static void print_table(FILE *o, int which)
                 fprintf(o, "%12s", t);
             }
             if (which == 0 && ratio) {
-                const struct cell *fx = &CELLS[w][f][0];
-                int best = -1;
-                for (int i = 1; i < NPEERS; i++)
-                    if (shown(i) && PEERS[i] != &peer_fixel_mt && CELLS[w][f][i].state == 1 &&
-                        (best < 0 || primary(w, &CELLS[w][f][i]) > primary(w, &CELLS[w][f][best])))
-                        best = i;
-                if (fx->state == 1 && best >= 0)
-                    fprintf(o, "  %5.2f x %s", primary(w, fx) / primary(w, &CELLS[w][f][best]),
-                            PEERS[best]->name);
-                else
-                    fprintf(o, "  %5s", "-");
+                /* Peers are the libraries; libc, ref and ref-native are
+                 * ceilings (memset, memcpy, the best hand loop), except
+                 * for W9, which no library draws: there the double
+                 * reference is the peer to beat. */
+                int lib = best_of(w, f, 1), ceil = best_of(w, f, 0);
+                print_ratio(o, w, f, lib >= 0 ? lib : ceil);
+                print_ratio(o, w, f, lib >= 0 ? ceil : -1);
             }
             fprintf(o, "\n");
         }
