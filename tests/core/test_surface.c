@@ -231,14 +231,17 @@ FX_TEST(blit_converts_clips_and_handles_overlap)
 }
 
 /* Long runs take another store path on some targets (rep stosq on x86-64
- * from 2 KiB): every length around the switch, at every alignment of the
- * start within 8 bytes, fills exactly its pixels with the exact pattern. */
+ * from 2 KiB, in 512 KiB pieces): every length around the switch and one
+ * over a piece, at every alignment of the start within 8 bytes, fills
+ * exactly its pixels with the exact pattern. */
 FX_TEST(long_runs_fill_exactly_their_pixels_at_every_alignment)
 {
     static const int32_t lens[] = {1, 7, 8, 9, 255, 511, 512, 513, 1023, 1024, 1025, 1026, 1027,
-                                   1029, 2047, 2048, 2049, 3000, 4099};
+                                   1029, 2047, 2048, 2049, 3000, 4099,
+                                   /* over 512 KiB: rep stosq in pieces */
+                                   262147};
     static const fx_format fmts[] = {FX_FMT_XRGB8888, FX_FMT_RGB565};
-    enum { GUARD = 8, MAXN = 4099 };
+    enum { GUARD = 8, MAXN = 262147 };
     static uint8_t mem[(MAXN + 2 * GUARD + 8) * 4];
     for (size_t f = 0; f < 2; f++) {
         int bytes = fx_format_get(fmts[f])->bits_per_pixel / 8;
