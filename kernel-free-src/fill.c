@@ -443,6 +443,18 @@ typedef struct {
     int32_t x, e, d, rs, qs, yend, dir, pad_;
 } small_edge;
 
+/* a[0, k) sorted by x: move a[k] down to its place (insertion sort's step). */
+static inline void small_sink(small_edge *a, int32_t k)
+{
+    small_edge t = a[k];
+    int32_t j = k;
+    while (j > 0 && a[j - 1].x > t.x) {
+        a[j] = a[j - 1];
+        j--;
+    }
+    a[j] = t;
+}
+
 /* Solid runs for the band loops, p aligned to its pixel. A polygon's runs
  * are of every length, mostly short, so each length class is one straight
  * sequence of overlapping stores (8-byte ones for fewer than L pixels) and
@@ -540,15 +552,8 @@ static inline __attribute__((always_inline)) void small_band(const fx_ctx *c, sm
             int32_t e = a[k].e - a[k].rs, msk = -(int32_t)(e < 0);
             a[k].e = e + (a[k].d & msk);
             a[k].x += a[k].qs - msk;
-            if (k > 0 && a[k - 1].x > a[k].x) {
-                small_edge t = a[k];
-                int32_t j = k;
-                while (j > 0 && a[j - 1].x > t.x) {
-                    a[j] = a[j - 1];
-                    j--;
-                }
-                a[j] = t;
-            }
+            if (k > 0 && a[k - 1].x > a[k].x)
+                small_sink(a, k);
         }
     }
 }
@@ -625,15 +630,8 @@ static inline __attribute__((always_inline)) void small_band24(const fx_ctx *c, 
     }
     a[0].x = x0, a[0].e = e0, a[1].x = x1, a[1].e = e1;
     /* back in x order for the band's end */
-    for (int32_t k = 1; k < m; k++) {
-        small_edge t = a[k];
-        int32_t j = k;
-        while (j > 0 && a[j - 1].x > t.x) {
-            a[j] = a[j - 1];
-            j--;
-        }
-        a[j] = t;
-    }
+    for (int32_t k = 1; k < m; k++)
+        small_sink(a, k);
 }
 
 /* edges[0, n): sorted by ystart, every value within the SMALL_ limits. */

@@ -54,6 +54,21 @@ static inline void fx_stosq(void *p, size_t words, uint64_t pattern)
         __asm__ volatile("rep stosq" : "+D"(p), "+c"(c) : "a"(pattern) : "memory");
     }
 }
+
+/* nbytes of pixels from a pixel-aligned p, pattern holding whole pixels
+ * (2 or 4 bytes, which divide 8): the head up to an 8-byte boundary and the
+ * tail are the pattern's first bytes, which start on a pixel (x86 is
+ * little-endian), so one helper serves both sizes. */
+static inline void fx_stos_run(void *dst, size_t nbytes, uint64_t pattern)
+{
+    uint8_t *p = (uint8_t *)dst;
+    size_t head = (size_t)(-(uintptr_t)p & 7);
+    fx_memcpy(p, &pattern, head);
+    p += head;
+    nbytes -= head;
+    fx_stosq(p, nbytes / 8, pattern);
+    fx_memcpy(p + (nbytes & ~(size_t)7), &pattern, nbytes & 7);
+}
 #endif
 
 static inline void fx_run32(uint32_t *p, int32_t n, uint32_t v)
@@ -65,13 +80,7 @@ static inline void fx_run32(uint32_t *p, int32_t n, uint32_t v)
     }
 #if defined(__x86_64__)
     if ((size_t)n * 4 >= FX_STOS_MIN_BYTES) {
-        if ((uintptr_t)p & 4) {
-            *p++ = v;
-            n--;
-        }
-        fx_stosq(p, (size_t)n / 2, v | (uint64_t)v << 32);
-        if (n & 1)
-            p[n - 1] = v;
+        fx_stos_run(p, (size_t)n * 4, v | (uint64_t)v << 32);
         return;
     }
 #endif
@@ -96,11 +105,7 @@ static inline void fx_run16(uint16_t *p, int32_t n, uint16_t v)
     }
 #if defined(__x86_64__)
     if ((size_t)n * 2 >= FX_STOS_MIN_BYTES) {
-        for (; (uintptr_t)p & 7; n--)
-            *p++ = v;
-        fx_stosq(p, (size_t)n / 4, v * 0x0001000100010001ull);
-        for (int32_t i = n & ~3; i < n; i++)
-            p[i] = v;
+        fx_stos_run(p, (size_t)n * 2, v * 0x0001000100010001ull);
         return;
     }
 #endif

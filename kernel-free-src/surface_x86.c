@@ -67,8 +67,19 @@ typedef uint32_t v16u32 __attribute__((vector_size(64)));
         }                                                                    \
     } while (0)
 
-/* Wide rows: an unaligned store at each end, aligned ones in between (a
- * store that crosses a cache line costs two). */
+/* Wide rows (nb >= W): an unaligned store of the W-byte vector q at each
+ * end, aligned ones in between (a store that crosses a cache line costs
+ * two). A macro, because each body must be compiled for its own target. */
+#define WIDE_ROWS(row, nb, h, stride, q, W)                                  \
+    for (; h--; row += stride) {                                             \
+        uint8_t *e_ = row + nb - (W);                                        \
+        uint8_t *a_ = (uint8_t *)(((uintptr_t)row + (W)) & ~(uintptr_t)((W)-1)); \
+        fx_memcpy(row, &q, W);                                               \
+        for (; a_ < e_; a_ += (W))                                           \
+            fx_memcpy(__builtin_assume_aligned(a_, W), &q, W);               \
+        fx_memcpy(e_, &q, W);                                                \
+    }
+
 __attribute__((target("avx"))) void fx_rect_fill_avx(uint8_t *row, size_t nb, int32_t h,
                                                      ptrdiff_t stride, uint32_t p)
 {
@@ -77,14 +88,7 @@ __attribute__((target("avx"))) void fx_rect_fill_avx(uint8_t *row, size_t nb, in
         return;
     }
     v8u32 q = {p, p, p, p, p, p, p, p};
-    for (; h--; row += stride) {
-        uint8_t *e = row + nb - 32;
-        uint8_t *a = (uint8_t *)(((uintptr_t)row + 32) & ~(uintptr_t)31);
-        fx_memcpy(row, &q, 32);
-        for (; a < e; a += 32)
-            fx_memcpy(__builtin_assume_aligned(a, 32), &q, 32);
-        fx_memcpy(e, &q, 32);
-    }
+    WIDE_ROWS(row, nb, h, stride, q, 32);
 }
 
 __attribute__((target("avx512f"))) void fx_rect_fill_avx512(uint8_t *row, size_t nb, int32_t h,
@@ -103,14 +107,7 @@ __attribute__((target("avx512f"))) void fx_rect_fill_avx512(uint8_t *row, size_t
         return;
     }
     v16u32 q = {p, p, p, p, p, p, p, p, p, p, p, p, p, p, p, p};
-    for (; h--; row += stride) {
-        uint8_t *e = row + nb - 64;
-        uint8_t *a = (uint8_t *)(((uintptr_t)row + 64) & ~(uintptr_t)63);
-        fx_memcpy(row, &q, 64);
-        for (; a < e; a += 64)
-            fx_memcpy(__builtin_assume_aligned(a, 64), &q, 64);
-        fx_memcpy(e, &q, 64);
-    }
+    WIDE_ROWS(row, nb, h, stride, q, 64);
 }
 
 #else
