@@ -58,7 +58,7 @@ ifeq ($(STATIC),1)
 endif
 LDLIBS   := $(PKG_LIBS) -lpthread -lm
 
-CORE_SRC   := $(sort $(wildcard kernel-free-src/*.c))
+CORE_SRC   := $(sort $(wildcard kernel-free-src/*/*.c))
 BOARD_SRC  := $(sort $(wildcard boards/memory/*.c) boards/linux/present.c boards/linux/buttons.c \
                      $(if $(HAVE_OPT),$(wildcard boards/linux/*.c)))
 LIB_SRC    := $(CORE_SRC) $(BOARD_SRC)

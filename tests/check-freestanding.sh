@@ -18,7 +18,7 @@ for src in "$@"; do
     fi
 done
 bad=$(grep -nE '#include *<(linux/|sys/|stdio|stdlib|math\.h|unistd|fcntl|errno|pthread|time\.h|signal)' \
-      kernel-free-src/*.c kernel-free-src/*.h kernel-free-src/include/fixel/*.h)
+      $(find kernel-free-src -name "*.[ch]"))
 if [ -n "$bad" ]; then echo "FAIL forbidden include in the core:"; echo "$bad"; F=$((F + 1)); else P=$((P + 1)); fi
 undef=$($nm -u "$out"/*.o | awk 'NF == 2 && $1 == "U" {print $2} NF == 1 && $1 !~ /:$/ {print $1}' | sort -u)
 defined=$($nm --defined-only "$out"/*.o | awk 'NF == 3 {print $3}' | sort -u)

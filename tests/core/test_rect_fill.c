@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../../kernel-free-src/fx_internal.h"
+#include "../../kernel-free-src/base/fx_internal.h"
 #include "fixel/surface.h"
 #include "fx_test.h"
 

@@ -1,4 +1,4 @@
-/* The software pointer sprite (kernel-free-src/sprite.c): every pixel format
+/* The software pointer sprite (kernel-free-src/raster/sprite.c): every pixel format
  * and rotation, clipping at each screen edge, exact save/restore. The
  * expectation is built independently: walk the sprite's logical pixels and
  * map each through the documented logical -> physical rotation. */

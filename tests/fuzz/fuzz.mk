@@ -9,7 +9,7 @@ FUZZ_BUILD   := build/fuzz
 FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 FUZZ_FLAGS   := -std=c11 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
                 -D_GNU_SOURCE -Ikernel-free-src/include -Iboards/include -Itests/fuzz
-FUZZ_LIBSRC  := $(wildcard kernel-free-src/*.c)
+FUZZ_LIBSRC  := $(wildcard kernel-free-src/*/*.c)
 FUZZ_SECONDS ?= 60
 FUZZ_RUNS    ?= 3000
 

@@ -10,7 +10,7 @@ KT_BUILD := build/kernel
 KT_ARCHES := x86_64 aarch64
 KT_CC_x86_64  := gcc
 KT_CC_aarch64 := aarch64-linux-gnu-gcc
-KT_LIBSRC := $(wildcard kernel-free-src/*.c) $(wildcard boards/linux/*.c)
+KT_LIBSRC := $(wildcard kernel-free-src/*/*.c) $(wildcard boards/linux/*.c)
 KT_GUESTSRC := $(wildcard $(KT_DIR)/guest/*.c)
 # No -Werror here: the main build enforces it, and a cross compiler's extra
 # warning must not stop the rig.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Constants of kernel-free-src/colour.c: the sRGB decoding table and the
+"""Constants of kernel-free-src/base/colour.c: the sRGB decoding table and the
 inverse matrices, computed exactly (fractions) from the Q16 forward matrices
 so that integer round trips are as tight as the forward rounding allows."""
 from fractions import Fraction as F

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Generate kernel-free-src/font_builtin.c: fixel's own 6x10 bitmap font.
+"""Generate kernel-free-src/text/font_builtin.c: fixel's own 6x10 bitmap font.
 
 Each glyph is drawn below as rows of 5 pixels ('#' set), starting at cell
 row 1; capitals and digits use rows 1-7, lower case x-height rows 3-7,
@@ -203,4 +203,4 @@ if __name__ == '__main__':
         psf1(os.path.join(d, 'fixel-8x10.psf'))
         psf2(os.path.join(d, 'fixel-12x14.psf'))
     else:
-        write_c(sys.argv[1] if len(sys.argv) > 1 else 'kernel-free-src/font_builtin.c')
+        write_c(sys.argv[1] if len(sys.argv) > 1 else 'kernel-free-src/text/font_builtin.c')

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Generates kernel-free-src/fixed_tables.c: the constant tables behind
+"""Generates kernel-free-src/base/fixed_tables.c: the constant tables behind
 fx_sin30 and fx_atan2. Floating point is allowed here (it runs once, at
 development time, on the host); the core only ever sees the integers."""
 import math
@@ -21,4 +21,4 @@ vals = [round(math.atan(2.0 ** -i) / (2 * math.pi) * (1 << 32)) for i in range(3
 for i in range(0, 32, 4):
     out.append("    " + " ".join("%du," % v for v in vals[i:i + 4]))
 out.append("};")
-open("kernel-free-src/fixed_tables.c", "w").write("\n".join(out) + "\n")
+open("kernel-free-src/base/fixed_tables.c", "w").write("\n".join(out) + "\n")

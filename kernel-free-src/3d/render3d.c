@@ -1,0 +1,1103 @@
+/* fixel — the 3D pipeline: per-triangle transform and lighting, homogeneous
+ * clipping, integer perspective division and a depth-buffered triangle
+ * rasterizer with depth, colour, normal and position interpolation.
+ * All drawing of 3D primitives to the surface happens in this file. */
+#include "fixel/render3d.h"
+#include "fixel/error.h"
+#include "../base/fx_internal.h"
+
+/* Interpolated attributes after the depth: 0-2 colour (or normal for Phong),
+ * 3-5 the colour without the shadow light (or eye position for Phong), 6-8
+ * the light's screen position and depth for the shadow buffer. */
+#define NA 9
+#define A_COL 0
+#define A_POS 3
+#define A_SM  6
+
+typedef struct cvert { /* clip space */
+    int32_t c[4];      /* x, y, z, w in Q16.16 */
+    int32_t a[NA];
+} cvert;
+
+typedef struct svert { /* screen space */
+    int32_t x, y;      /* 24.8, integer values at pixel centres */
+    int32_t z;         /* depth, 0 (near) .. 2^30 (far) */
+    int32_t a[NA];
+} svert;
+
+enum { K_DEPTH, K_FLAT, K_GOURAUD, K_PHONG };
+
+/* Eye-space lights, prepared once per draw. */
+typedef struct elight {
+    int type;
+    fx_vec3 pos, dir;
+    fx16 cos_cut;
+    int32_t exp;
+    fx3d_rgb amb, diff, spec;
+} elight;
+
+/* What one triangle needs in the rasterizer. */
+typedef struct tri_mode {
+    uint8_t kind, na, ztest, zwrite, use_sm;
+    uint8_t outline;     /* 0 fill, 1 fill and edges, 2 edges only, 3 fill pushed back */
+    uint8_t lines_ztest; /* edges depth-tested */
+    int32_t zbias;
+    fx_color flat[2]; /* lit, shadowed */
+} tri_mode;
+
+typedef struct pctx { /* per-draw state */
+    fx3d *r;
+    const fx_surface *s;
+    fx_rect clip;
+    void *zb;
+    int zbits;
+    int32_t zstride;
+    int32_t vx, vy, vw, vh; /* viewport */
+    int32_t guard;          /* G of the guard band */
+    elight el[FX3D_MAX_LIGHTS];
+    int nl;
+    fx_color wire;
+    const fx3d_shadowmap *sm;
+} pctx;
+
+typedef struct ptri { /* a triangle kept for the painter's sort */
+    svert v[3];
+    tri_mode m;
+    int64_t key;
+} ptri;
+
+/* ------------------------------------------------------------------ */
+/* colour                                                               */
+
+fx3d_rgb fx3d_rgb_from_color(fx_color c)
+{
+    fx3d_rgb o;
+    o.r = fx16_from_ratio((c >> 16) & 255, 255);
+    o.g = fx16_from_ratio((c >> 8) & 255, 255);
+    o.b = fx16_from_ratio(c & 255, 255);
+    return o;
+}
+
+static uint32_t chan8(fx16 v)
+{
+    if (v <= 0)
+        return 0;
+    if (v >= FX16_ONE)
+        return 255;
+    return (uint32_t)(((int64_t)v * 255 + 0x8000) >> 16);
+}
+
+fx_color fx3d_rgb_to_color(fx3d_rgb c)
+{
+    return 0xFF000000u | chan8(c.r) << 16 | chan8(c.g) << 8 | chan8(c.b);
+}
+
+static fx3d_rgb rgb_mul(fx3d_rgb a, fx3d_rgb b)
+{
+    fx3d_rgb o = {fx16_mul(a.r, b.r), fx16_mul(a.g, b.g), fx16_mul(a.b, b.b)};
+    return o;
+}
+
+static void rgb_madd(fx3d_rgb *acc, fx3d_rgb a, fx16 s)
+{
+    acc->r = fx_sat32((int64_t)acc->r + fx16_mul(a.r, s));
+    acc->g = fx_sat32((int64_t)acc->g + fx16_mul(a.g, s));
+    acc->b = fx_sat32((int64_t)acc->b + fx16_mul(a.b, s));
+}
+
+/* x^n for x in [0, 1] by square-and-multiply. */
+static fx16 fx_pow_int(fx16 x, int32_t n)
+{
+    fx16 r = FX16_ONE;
+    while (n > 0) {
+        if (n & 1)
+            r = fx16_mul(r, x);
+        x = fx16_mul(x, x);
+        n >>= 1;
+    }
+    return r;
+}
+
+/* ------------------------------------------------------------------ */
+/* lighting                                                             */
+
+static void prepare_lights(const fx3d *r, elight *el, int *nl)
+{
+    int n = 0;
+    for (int i = 0; i < FX3D_MAX_LIGHTS; i++) {
+        const fx3d_light *l = &r->light[i];
+        elight *e = &el[i];
+        e->type = l->type;
+        if (l->type == FX3D_LIGHT_OFF)
+            continue;
+        n = i + 1;
+        if (l->type == FX3D_LIGHT_DIRECTIONAL) {
+            e->pos = fx_mat4_apply_dir(&r->view, l->pos);
+            fx_vec3_normalize(&e->pos);
+        } else {
+            fx_vec4 p = fx_mat4_apply_point(&r->view, l->pos);
+            e->pos = fx_vec3_make(p.x, p.y, p.z);
+        }
+        e->dir = fx_mat4_apply_dir(&r->view, l->spot_dir);
+        fx_vec3_normalize(&e->dir);
+        e->cos_cut = fx_cos(l->cutoff);
+        e->exp = l->spot_exp;
+        e->amb = l->ambient;
+        e->diff = l->diffuse;
+        e->spec = l->specular;
+    }
+    *nl = n;
+}
+
+/* The lighting model of render3d.h at eye-space point P with unit normal
+ * N; light `skip` (the one in whose shadow P lies, or -1) contributes its
+ * ambient term only. */
+static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec3 N, int skip)
+{
+    const fx3d_material *m = &r->mat;
+    fx3d_rgb acc = m->emission;
+    fx3d_rgb ga = rgb_mul(r->ambient, m->ambient);
+    rgb_madd(&acc, ga, FX16_ONE);
+    fx_vec3 V = fx_vec3_make(0, 0, FX16_ONE);
+    int have_v = r->parallel;
+    for (int i = 0; i < nl; i++) {
+        const elight *e = &el[i];
+        if (e->type == FX3D_LIGHT_OFF)
+            continue;
+        fx_vec3 L = e->pos;
+        if (e->type != FX3D_LIGHT_DIRECTIONAL) {
+            L = fx_vec3_sub(e->pos, P);
+            if (fx_vec3_normalize(&L) < 0)
+                continue;
+        }
+        fx16 sf = FX16_ONE;
+        if (e->type == FX3D_LIGHT_SPOT) {
+            fx16 sd = -fx_vec3_dot(L, e->dir);
+            if (sd < e->cos_cut)
+                continue;
+            sf = fx_pow_int(sd, e->exp);
+        }
+        fx3d_rgb c = rgb_mul(e->amb, m->ambient);
+        fx16 ndl = fx_vec3_dot(N, L);
+        if (ndl > 0 && i != skip) {
+            rgb_madd(&c, rgb_mul(e->diff, m->diffuse), ndl);
+            if (m->specular.r | m->specular.g | m->specular.b) {
+                if (!have_v) {
+                    V = fx_vec3_make(fx_sat32(-(int64_t)P.x), fx_sat32(-(int64_t)P.y),
+                                     fx_sat32(-(int64_t)P.z)); /* P may sit at INT32_MIN */
+                    if (fx_vec3_normalize(&V) < 0)
+                        V = fx_vec3_make(0, 0, FX16_ONE);
+                    have_v = 1;
+                }
+                fx_vec3 R = fx_vec3_sub(fx_vec3_scale(N, 2 * ndl), L);
+                fx16 rv = fx_vec3_dot(R, V);
+                if (rv > 0) {
+                    if (rv > FX16_ONE)
+                        rv = FX16_ONE;
+                    rgb_madd(&c, rgb_mul(e->spec, m->specular), fx_pow_int(rv, m->shininess));
+                }
+            }
+        }
+        rgb_madd(&acc, c, sf);
+    }
+    return acc;
+}
+
+fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal)
+{
+    elight el[FX3D_MAX_LIGHTS];
+    int nl;
+    prepare_lights(r, el, &nl);
+    return shade(r, el, nl, eye_pos, eye_normal, -1);
+}
+
+/* ------------------------------------------------------------------ */
+/* set-up                                                               */
+
+int fx3d_init(fx3d *r, const fx_surface *s, fx_mat4 *model_stack, int model_cap,
+              fx_mat4 *proj_stack, int proj_cap)
+{
+    fx_memset(r, 0, sizeof *r);
+    int e = fx_mat_stack_init(&r->model, model_stack, model_cap);
+    if (e < 0)
+        return e;
+    e = fx_mat_stack_init(&r->proj, proj_stack, proj_cap);
+    if (e < 0)
+        return e;
+    fx_ctx_init(&r->ctx, s);
+    r->viewport = fx_surface_rect(s);
+    fx_mat4_identity(&r->view);
+    r->shading = FX3D_GOURAUD;
+    r->cull = FX3D_CULL_BACK;
+    r->polymode = FX3D_FILL;
+    r->visibility = FX3D_VIS_NONE;
+    r->background = 0xFF000000u;
+    r->light[0].type = FX3D_LIGHT_DIRECTIONAL;
+    r->light[0].pos = fx_vec3_make(0, 0, FX16_ONE);
+    r->light[0].diffuse = fx3d_rgb_from_color(0xFFFFFF);
+    r->light[0].specular = fx3d_rgb_from_color(0xFFFFFF);
+    r->ambient = fx3d_rgb_from_color(0x333333);
+    r->mat.ambient = fx3d_rgb_from_color(0xC0C0C0);
+    r->mat.diffuse = fx3d_rgb_from_color(0xC0C0C0);
+    r->mat.specular = fx3d_rgb_from_color(0x808080);
+    r->mat.shininess = 32;
+    return 0;
+}
+
+void fx3d_viewport(fx3d *r, int32_t x, int32_t y, int32_t w, int32_t h)
+{
+    fx_rect v = {x, y, x + (w > 0 ? w : 1), y + (h > 0 ? h : 1)};
+    r->viewport = v;
+}
+
+size_t fx3d_depth_bytes(const fx_surface *s, int bits)
+{
+    return (size_t)s->w * (size_t)s->h * (bits == 16 ? 2u : 4u);
+}
+
+void fx3d_clear_depth(fx3d *r)
+{
+    if (r->depth)
+        fx_memset(r->depth, 0xFF, fx3d_depth_bytes(&r->ctx.surf, r->depth_bits));
+}
+
+int fx3d_set_depth(fx3d *r, void *buf, int bits)
+{
+    if (buf && bits != 16 && bits != 32)
+        return -FX_EINVAL;
+    r->depth = buf;
+    r->depth_bits = buf ? bits : 0;
+    if (buf) {
+        r->visibility = FX3D_VIS_DEPTH;
+        fx3d_clear_depth(r);
+    } else if (r->visibility == FX3D_VIS_DEPTH) {
+        r->visibility = FX3D_VIS_NONE;
+    }
+    return 0;
+}
+
+size_t fx3d_painter_bytes(int32_t ntris) { return (size_t)(ntris > 0 ? ntris : 0) * sizeof(ptri); }
+
+int fx3d_set_painter(fx3d *r, void *mem, size_t bytes)
+{
+    if (!mem || bytes < sizeof(ptri))
+        return -FX_EINVAL;
+    r->pbuf = mem;
+    r->pcap = (int32_t)FX_MIN(bytes / sizeof(ptri), (size_t)INT32_MAX);
+    r->pcount = 0;
+    r->pdropped = 0;
+    r->visibility = FX3D_VIS_PAINTER;
+    return 0;
+}
+
+int fx3d_perspective(fx3d *r, fx_angle fovy, fx16 aspect, fx16 zn, fx16 zf)
+{
+    fx_mat4 m;
+    int e = fx_mat4_perspective(&m, fovy, aspect, zn, zf);
+    if (e < 0)
+        return e;
+    fx_mat_stack_load(&r->proj, &m);
+    r->parallel = 0;
+    return 0;
+}
+
+int fx3d_ortho(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 zn, fx16 zf)
+{
+    fx_mat4 m;
+    int e = fx_mat4_ortho(&m, l, rt, b, t, zn, zf);
+    if (e < 0)
+        return e;
+    fx_mat_stack_load(&r->proj, &m);
+    r->parallel = 1;
+    return 0;
+}
+
+int fx3d_oblique(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 zn, fx16 zf, fx_angle alpha,
+                 fx16 len, fx16 plane)
+{
+    fx_mat4 m;
+    int e = fx_mat4_oblique(&m, l, rt, b, t, zn, zf, alpha, len, plane);
+    if (e < 0)
+        return e;
+    fx_mat_stack_load(&r->proj, &m);
+    r->parallel = 1;
+    return 0;
+}
+
+void fx3d_plane_shadow(fx3d *r, const fx16 plane[4], int light, fx_color c)
+{
+    for (int i = 0; i < 4; i++)
+        r->plane[i] = plane[i];
+    r->plane_light = light;
+    r->plane_color = c;
+    r->plane_shadow = light >= 0 && light < FX3D_MAX_LIGHTS;
+}
+
+void fx3d_plane_shadow_off(fx3d *r) { r->plane_shadow = 0; }
+
+int fx3d_shadow_init(fx3d_shadowmap *sm, uint32_t *depth, int32_t size, int light)
+{
+    if (!depth || size < 1 || size > 8192 || light < 0 || light >= FX3D_MAX_LIGHTS)
+        return -FX_EINVAL;
+    sm->depth = depth;
+    sm->size = size;
+    sm->light = light;
+    sm->bias = 1u << 21;
+    fx_mat4_identity(&sm->view_proj);
+    return 0;
+}
+
+int fx3d_shadow_aim(fx3d_shadowmap *sm, fx_vec3 from, fx_vec3 at, fx_angle fov, fx16 zn, fx16 zf)
+{
+    fx_camera c;
+    fx_vec3 up = fx_vec3_make(0, FX16_ONE, 0);
+    if (fx_camera_set(&c, from, at, up) < 0 &&
+        fx_camera_set(&c, from, at, fx_vec3_make(0, 0, FX16_ONE)) < 0)
+        return -FX_EDOM;
+    fx_mat4 v, p;
+    int e = fx_mat4_perspective(&p, fov, FX16_ONE, zn, zf);
+    if (e < 0)
+        return e;
+    fx_camera_view(&c, &v);
+    fx_mat4_mul(&sm->view_proj, &p, &v);
+    return 0;
+}
+
+void fx3d_shadow_begin(fx3d *r, fx3d_shadowmap *sm)
+{
+    r->sm = sm;
+    r->sm_phase = 1;
+    fx_memset(sm->depth, 0xFF, (size_t)sm->size * (size_t)sm->size * 4);
+}
+
+void fx3d_shadow_end(fx3d *r)
+{
+    if (r->sm)
+        r->sm_phase = 2;
+}
+
+void fx3d_shadow_off(fx3d *r)
+{
+    r->sm = NULL;
+    r->sm_phase = 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* rasterizer                                                           */
+
+static int64_t floor_div(int64_t a, int64_t b) /* b > 0 */
+{
+    int64_t q = a / b;
+    return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+static int64_t ceil_div(int64_t a, int64_t b) /* b > 0 */
+{
+    return -floor_div(-a, b);
+}
+
+/* Per-pixel step of a quantity q over the triangle, with 16 fraction
+ * bits: the plane through (x_i, y_i, q_i). Gradients beyond 2^45 (a sliver
+ * narrower than the attribute's resolution) report failure. */
+#define GRAD_LIMIT ((int64_t)1 << 45)
+
+typedef struct plane_set {
+    int n;                /* 1 + attributes */
+    int64_t base[1 + NA]; /* value at pixel (bx, by), 16 fraction bits */
+    int64_t gx[1 + NA], gy[1 + NA];
+    int32_t bx, by;
+} plane_set;
+
+static void setup_planes(plane_set *ps, const svert *v0, const svert *v1, const svert *v2, int na,
+                         int64_t area2)
+{
+    int64_t dx1 = (int64_t)v1->x - v0->x, dy1 = (int64_t)v1->y - v0->y;
+    int64_t dx2 = (int64_t)v2->x - v0->x, dy2 = (int64_t)v2->y - v0->y;
+    /* Keep 31 significant bits of the area for the reciprocal. */
+    int sh = 0;
+    while ((area2 >> sh) >= ((int64_t)1 << 31))
+        sh++;
+    int64_t inv = ((int64_t)1 << 62) / (area2 >> sh);
+    ps->n = 1 + na;
+    ps->bx = (int32_t)(((int64_t)v0->x + 128) >> 8);
+    ps->by = (int32_t)(((int64_t)v0->y + 128) >> 8);
+    int64_t ox = (int64_t)ps->bx * 256 - v0->x, oy = (int64_t)ps->by * 256 - v0->y;
+    int flat = 0;
+    for (int k = 0; k < ps->n; k++) {
+        int64_t q0 = k ? v0->a[k - 1] : v0->z, q1 = k ? v1->a[k - 1] : v1->z,
+                q2 = k ? v2->a[k - 1] : v2->z;
+        int64_t d1 = q1 - q0, d2 = q2 - q0;
+        /* dq/dx = (d1 dy2 - d2 dy1) / area2, per 24.8 unit; times 2^24
+         * gives 16 fraction bits per pixel. */
+        int64_t nx = (d1 * dy2 - d2 * dy1) >> sh, ny = (d2 * dx1 - d1 * dx2) >> sh;
+        int64_t gx = fx_mul64_shift(nx, inv, 38), gy = fx_mul64_shift(ny, inv, 38);
+        if (gx > GRAD_LIMIT || gx < -GRAD_LIMIT || gy > GRAD_LIMIT || gy < -GRAD_LIMIT) {
+            flat = 1; /* the base below would overflow; the flat set replaces it all */
+            break;
+        }
+        ps->gx[k] = gx;
+        ps->gy[k] = gy;
+        ps->base[k] = q0 * 65536 + ((gx * ox + gy * oy) >> 8);
+    }
+    if (flat)
+        for (int k = 0; k < ps->n; k++) {
+            int64_t q0 = k ? v0->a[k - 1] : v0->z, q1 = k ? v1->a[k - 1] : v1->z,
+                    q2 = k ? v2->a[k - 1] : v2->z;
+            ps->gx[k] = ps->gy[k] = 0;
+            ps->base[k] = (q0 + q1 + q2) * 65536 / 3;
+        }
+}
+
+static inline int sm_shadowed(const pctx *pc, const int64_t *val)
+{
+    const fx3d_shadowmap *sm = pc->sm;
+    int32_t lx = (int32_t)((val[1 + A_SM] >> 16) + 128) >> 8;
+    int32_t ly = (int32_t)((val[1 + A_SM + 1] >> 16) + 128) >> 8;
+    if (lx < 0 || ly < 0 || lx >= sm->size || ly >= sm->size)
+        return 0;
+    int64_t d = val[1 + A_SM + 2] >> 16;
+    return d > (int64_t)sm->depth[(size_t)ly * (size_t)sm->size + (size_t)lx] + sm->bias;
+}
+
+static void put_px(const fx_surface *s, uint8_t *row, int32_t x, int32_t y, uint32_t native)
+{
+    switch (s->format) {
+    case FX_FMT_XRGB8888:
+    case FX_FMT_ARGB8888:
+    case FX_FMT_XBGR8888:
+        ((uint32_t *)row)[x] = native;
+        break;
+    case FX_FMT_RGB565:
+    case FX_FMT_BGR565:
+        ((uint16_t *)row)[x] = (uint16_t)native;
+        break;
+    default:
+        fx_surface_put_native(s, x, y, native);
+        break;
+    }
+}
+
+/* Fill triangle v0 v1 v2 (either orientation) with mode m. */
+static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const svert *v2,
+                       const tri_mode *m)
+{
+    int64_t area2 = ((int64_t)v1->x - v0->x) * ((int64_t)v2->y - v0->y) -
+                    ((int64_t)v2->x - v0->x) * ((int64_t)v1->y - v0->y);
+    if (area2 == 0)
+        return;
+    if (area2 < 0) {
+        const svert *t = v1;
+        v1 = v2;
+        v2 = t;
+        area2 = -area2;
+    }
+    /* Edge functions E(p) = A (px - xa) + B (py - ya), >= 0 inside. Ties
+     * (E == 0) count for left edges (A > 0) and top edges (A == 0, B > 0). */
+    const svert *ea[3] = {v1, v2, v0}, *eb[3] = {v2, v0, v1};
+    int64_t A[3], B[3], C[3];
+    for (int i = 0; i < 3; i++) {
+        A[i] = -((int64_t)eb[i]->y - ea[i]->y);
+        B[i] = (int64_t)eb[i]->x - ea[i]->x;
+        int tl = A[i] > 0 || (A[i] == 0 && B[i] > 0);
+        C[i] = -A[i] * ea[i]->x - B[i] * ea[i]->y - (tl ? 0 : 1);
+    }
+    int32_t miny = FX_MIN(FX_MIN(v0->y, v1->y), v2->y), maxy = FX_MAX(FX_MAX(v0->y, v1->y), v2->y);
+    int32_t minx = FX_MIN(FX_MIN(v0->x, v1->x), v2->x), maxx = FX_MAX(FX_MAX(v0->x, v1->x), v2->x);
+    int32_t y0 = (int32_t)ceil_div(miny, 256), y1 = (int32_t)floor_div(maxy, 256);
+    int32_t bx0 = (int32_t)ceil_div(minx, 256), bx1 = (int32_t)floor_div(maxx, 256);
+    y0 = FX_MAX(y0, pc->clip.y0);
+    y1 = FX_MIN(y1, pc->clip.y1 - 1);
+    bx0 = FX_MAX(bx0, pc->clip.x0);
+    bx1 = FX_MIN(bx1, pc->clip.x1 - 1);
+    if (y0 > y1 || bx0 > bx1)
+        return;
+
+    plane_set ps;
+    setup_planes(&ps, v0, v1, v2, m->na, area2);
+    int64_t zbias = m->zbias;
+    if (m->outline == 1 || m->outline == 3) {
+        /* Hidden-line faces are pushed back by their depth slope plus a
+         * constant (glPolygonOffset(1, 1)), so that their own edges, drawn
+         * on rounded pixel positions, stay in front of them. */
+        int64_t gx = ps.gx[0] < 0 ? -ps.gx[0] : ps.gx[0], gy = ps.gy[0] < 0 ? -ps.gy[0] : ps.gy[0];
+        zbias -= ((gx > gy ? gx : gy) >> 16) + (1 << 12);
+    }
+    const fx_surface *s = pc->s;
+    for (int32_t y = y0; y <= y1; y++) {
+        int64_t py = (int64_t)y * 256;
+        int64_t xl = bx0, xr = bx1;
+        for (int i = 0; i < 3; i++) {
+            /* A (256 X) + (B py + C) >= 0 */
+            int64_t a = A[i] * 256, c = B[i] * py + C[i];
+            if (a > 0)
+                xl = FX_MAX(xl, ceil_div(-c, a));
+            else if (a < 0)
+                xr = FX_MIN(xr, floor_div(c, -a));
+            else if (c < 0)
+                xr = xl - 1;
+        }
+        if (xl > xr)
+            continue;
+        int64_t val[1 + NA];
+        for (int k = 0; k < ps.n; k++)
+            val[k] = ps.base[k] + ps.gx[k] * (xl - ps.bx) + ps.gy[k] * (y - ps.by);
+        uint8_t *row = s ? fx_row(s, y) : NULL;
+        uint32_t *z32 = pc->zbits == 32 ? (uint32_t *)pc->zb + (size_t)y * (size_t)pc->zstride : NULL;
+        uint16_t *z16 = pc->zbits == 16 ? (uint16_t *)pc->zb + (size_t)y * (size_t)pc->zstride : NULL;
+        for (int64_t x = xl; x <= xr; x++) {
+            int64_t zz = (val[0] >> 16) - zbias;
+            uint32_t z = zz < 0 ? 0 : zz > ((int64_t)1 << 30) ? (1u << 30) : (uint32_t)zz;
+            int pass = 1;
+            if (z32) {
+                if (m->ztest && z >= z32[x])
+                    pass = 0;
+                else if (m->zwrite)
+                    z32[x] = z;
+            } else if (z16) {
+                uint16_t z1 = (uint16_t)FX_MIN(z >> 14, 0xFFFEu);
+                if (m->ztest && z1 >= z16[x])
+                    pass = 0;
+                else if (m->zwrite)
+                    z16[x] = z1;
+            }
+            if (pass && m->kind != K_DEPTH) {
+                int sh = m->use_sm && sm_shadowed(pc, val);
+                fx_color col;
+                if (m->kind == K_FLAT) {
+                    col = m->flat[sh];
+                } else if (m->kind == K_GOURAUD) {
+                    int o = 1 + (sh ? A_POS : A_COL);
+                    fx3d_rgb c = {(fx16)(val[o] >> 16), (fx16)(val[o + 1] >> 16), (fx16)(val[o + 2] >> 16)};
+                    col = fx3d_rgb_to_color(c);
+                } else {
+                    fx_vec3 N = fx_vec3_make((fx16)(val[1] >> 16), (fx16)(val[2] >> 16), (fx16)(val[3] >> 16));
+                    fx_vec3 P = fx_vec3_make((fx16)(val[4] >> 16), (fx16)(val[5] >> 16), (fx16)(val[6] >> 16));
+                    fx_vec3_normalize(&N);
+                    col = fx3d_rgb_to_color(shade(pc->r, pc->el, pc->nl, P, N, sh ? pc->sm->light : -1));
+                }
+                put_px(s, row, (int32_t)x, y, fx_pack(s->format, col));
+            }
+            for (int k = 0; k < ps.n; k++)
+                val[k] += ps.gx[k];
+        }
+    }
+}
+
+/* A depth-interpolated line between two screen vertices (rounded to pixel
+ * centres), lighting max(|dx|, |dy|) + 1 pixels like fx_line; depth-tested
+ * with a small tolerance so that edges win over the faces they bound. */
+static void raster_line(const pctx *pc, const svert *a, const svert *b, int ztest, fx_color col)
+{
+    int32_t x0 = (int32_t)(((int64_t)a->x + 128) >> 8), y0 = (int32_t)(((int64_t)a->y + 128) >> 8);
+    int32_t x1 = (int32_t)(((int64_t)b->x + 128) >> 8), y1 = (int32_t)(((int64_t)b->y + 128) >> 8);
+    int32_t dx = x1 - x0, dy = y1 - y0;
+    int32_t adx = dx < 0 ? -dx : dx, ady = dy < 0 ? -dy : dy;
+    int32_t n = FX_MAX(adx, ady);
+    int32_t sx = dx < 0 ? -1 : 1, sy = dy < 0 ? -1 : 1;
+    int64_t z = (int64_t)a->z << 16, dz = n ? (((int64_t)b->z - a->z) * 65536) / n : 0;
+    int32_t err = (adx > ady ? adx : -ady) / 2;
+    uint32_t native = fx_pack(pc->s->format, col);
+    const int32_t tol = 1 << 10;
+    int32_t x = x0, y = y0;
+    for (int32_t i = 0; i <= n; i++) {
+        if (x >= pc->clip.x0 && x < pc->clip.x1 && y >= pc->clip.y0 && y < pc->clip.y1) {
+            int ok = 1;
+            uint32_t zz = (uint32_t)(z >> 16);
+            if (ztest && pc->zbits == 32)
+                ok = (int64_t)zz <= (int64_t)((uint32_t *)pc->zb)[(size_t)y * (size_t)pc->zstride + (size_t)x] + tol;
+            else if (ztest && pc->zbits == 16)
+                ok = (zz >> 14) <= (uint32_t)((uint16_t *)pc->zb)[(size_t)y * (size_t)pc->zstride + (size_t)x] + (tol >> 14);
+            if (ok)
+                put_px(pc->s, fx_row(pc->s, y), x, y, native);
+        }
+        int32_t e2 = err;
+        if (e2 > -adx) {
+            err -= ady;
+            x += sx;
+        }
+        if (e2 < ady) {
+            err += adx;
+            y += sy;
+        }
+        z += dz;
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* clipping and projection                                              */
+
+/* Distance of c to clip plane p (>= 0 inside). */
+static int64_t plane_dist(const pctx *pc, const cvert *v, int p)
+{
+    int64_t x = v->c[0], y = v->c[1], z = v->c[2], w = v->c[3], g = pc->guard;
+    switch (p) {
+    case 0: return z + w;     /* near */
+    case 1: return w - z;     /* far */
+    case 2: return g * w + x; /* guard band */
+    case 3: return g * w - x;
+    case 4: return g * w + y;
+    default: return g * w - y;
+    }
+}
+
+/* Sutherland-Hodgman in homogeneous space; n in, returns n out (<= 9). The
+ * crossing parameter t = d0 / (d0 - d1) is kept in Q28 (distances stay
+ * below 2^34), so a new vertex lies on its plane to within the Q16.16
+ * rounding of its coordinates. */
+static int clip_poly(const pctx *pc, cvert *v, int n, cvert *tmp, int na)
+{
+    for (int p = 0; p < 6 && n >= 3; p++) {
+        int64_t d[12];
+        int out = 0;
+        for (int i = 0; i < n; i++) {
+            d[i] = plane_dist(pc, &v[i], p);
+            out |= d[i] < 0;
+        }
+        if (!out)
+            continue;
+        int m = 0;
+        for (int i = 0; i < n; i++) {
+            int j = i + 1 == n ? 0 : i + 1;
+            if (d[i] >= 0)
+                tmp[m++] = v[i];
+            if ((d[i] < 0) != (d[j] < 0)) {
+                int64_t t = (d[i] * ((int64_t)1 << 28)) / (d[i] - d[j]);
+                cvert *o = &tmp[m++];
+                /* summed in 64 bits: the step alone may exceed int32 when the
+                 * ends have opposite signs; the result lies between them */
+                for (int k = 0; k < 4; k++)
+                    o->c[k] = (int32_t)(v[i].c[k] + ((((int64_t)v[j].c[k] - v[i].c[k]) * t) >> 28));
+                for (int k = 0; k < na; k++)
+                    o->a[k] = (int32_t)(v[i].a[k] + ((((int64_t)v[j].a[k] - v[i].a[k]) * t) >> 28));
+            }
+        }
+        n = m;
+        for (int i = 0; i < n; i++)
+            v[i] = tmp[i];
+    }
+    return n;
+}
+
+static void project(const pctx *pc, const cvert *c, svert *s, int na)
+{
+    int64_t x = c->c[0], y = c->c[1], z = c->c[2], w = c->c[3];
+    if (w <= 0)
+        w = 1;
+    int64_t hx = (int64_t)pc->vw * 128, hy = (int64_t)pc->vh * 128;
+    int64_t nx = (x + w) * hx, ny = (w - y) * hy;
+    s->x = (int32_t)((int64_t)pc->vx * 256 - 128 + (nx >= 0 ? nx + w / 2 : nx - w / 2) / w);
+    s->y = (int32_t)((int64_t)pc->vy * 256 - 128 + (ny >= 0 ? ny + w / 2 : ny - w / 2) / w);
+    int64_t d = ((z + w) * ((int64_t)1 << 29)) / w;
+    s->z = (int32_t)(d < 0 ? 0 : d > ((int64_t)1 << 30) ? ((int64_t)1 << 30) : d);
+    for (int k = 0; k < na; k++)
+        s->a[k] = c->a[k];
+}
+
+/* The light-space screen position and depth of a world point, for the
+ * shadow buffer (written into attributes A_SM..A_SM+2). */
+static void sm_coords(const fx3d_shadowmap *sm, fx_vec3 world, int32_t *a)
+{
+    fx_vec4 c = fx_mat4_apply_point(&sm->view_proj, world);
+    int64_t w = c.w;
+    if (w <= 0 || c.z < -c.w) {
+        a[0] = a[1] = -(1 << 24); /* behind the light: outside the map, lit */
+        a[2] = 0;
+        return;
+    }
+    int64_t h = (int64_t)sm->size * 128;
+    a[0] = (int32_t)(((int64_t)c.x + w) * h / w - 128);
+    a[1] = (int32_t)((w - (int64_t)c.y) * h / w - 128);
+    int64_t d = (((int64_t)c.z + w) * ((int64_t)1 << 29)) / w;
+    a[2] = (int32_t)(d > ((int64_t)1 << 30) ? ((int64_t)1 << 30) : d);
+}
+
+static void emit_tri(pctx *pc, const svert *a, const svert *b, const svert *c, const tri_mode *m)
+{
+    fx3d *r = pc->r;
+    if (r->visibility == FX3D_VIS_PAINTER && r->sm_phase != 1) {
+        if (r->pcount >= r->pcap) {
+            r->pdropped++;
+            return;
+        }
+        ptri *t = (ptri *)r->pbuf + r->pcount++;
+        t->v[0] = *a;
+        t->v[1] = *b;
+        t->v[2] = *c;
+        t->m = *m;
+        t->key = (int64_t)a->z + b->z + c->z;
+        return;
+    }
+    raster_tri(pc, a, b, c, m);
+}
+
+/* Clip, project and draw one polygon (a triangle on entry). */
+static void draw_clipped(pctx *pc, const cvert *tri, const tri_mode *m)
+{
+    /* Each of the six planes can add one vertex: at most 9. */
+    cvert v[12], tmp[12];
+    v[0] = tri[0];
+    v[1] = tri[1];
+    v[2] = tri[2];
+    int n = clip_poly(pc, v, 3, tmp, m->na);
+    if (n < 3)
+        return;
+    if (n > 3)
+        pc->r->stat_clipped++;
+    svert s[12];
+    for (int i = 0; i < n; i++)
+        project(pc, &v[i], &s[i], m->na);
+    if (m->outline == 1 && pc->r->visibility == FX3D_VIS_PAINTER && pc->r->sm_phase != 1) {
+        /* Painter's hidden-line: each fan triangle is kept with an outline
+         * flag and outlined when drawn (a polygon cut by the near plane
+         * thus also shows its fan diagonals). */
+        for (int i = 1; i + 1 < n; i++)
+            emit_tri(pc, &s[0], &s[i], &s[i + 1], m);
+        return;
+    }
+    if (m->outline == 2) { /* edges only */
+        for (int i = 0; i < n; i++)
+            raster_line(pc, &s[i], &s[(i + 1) % n], m->lines_ztest, pc->wire);
+        return;
+    }
+    for (int i = 1; i + 1 < n; i++)
+        emit_tri(pc, &s[0], &s[i], &s[i + 1], m);
+    if (m->outline == 1)
+        for (int i = 0; i < n; i++)
+            raster_line(pc, &s[i], &s[(i + 1) % n], pc->zb != NULL, pc->wire);
+}
+
+/* ------------------------------------------------------------------ */
+/* drawing                                                              */
+
+static void pctx_init(pctx *pc, fx3d *r)
+{
+    pc->r = r;
+    pc->s = &r->ctx.surf;
+    pc->clip = fx_rect_intersect(r->ctx.clip, r->viewport);
+    pc->zb = r->visibility == FX3D_VIS_DEPTH ? r->depth : NULL;
+    pc->zbits = pc->zb ? r->depth_bits : 0;
+    pc->zstride = r->ctx.surf.w;
+    pc->vx = r->viewport.x0;
+    pc->vy = r->viewport.y0;
+    pc->vw = r->viewport.x1 - r->viewport.x0;
+    pc->vh = r->viewport.y1 - r->viewport.y0;
+    int32_t big = FX_MAX(FX_MAX(pc->vw, pc->vh), 1);
+    pc->guard = FX_MAX(1, FX_MIN(4, (1 << 13) / big));
+    prepare_lights(r, pc->el, &pc->nl);
+    pc->wire = r->ctx.color;
+    pc->sm = r->sm_phase == 2 ? r->sm : NULL;
+}
+
+/* Homogeneous facing: the sign of det[x y w] of the three clip vertices is
+ * the sign of N . (P0 - centre of projection) in eye space, valid for any
+ * w (no division, no clipping needed). Values are scaled to 20 bits first
+ * so the triple products fit. */
+static int facing(const cvert *v)
+{
+    int32_t m = 0;
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 4; k += (k == 1 ? 2 : 1)) {
+            int32_t a = v[i].c[k] < 0 ? -(v[i].c[k] + 1) : v[i].c[k];
+            m |= a;
+        }
+    int sh = 0;
+    while ((m >> sh) >= (1 << 20))
+        sh++;
+    int64_t x[3], y[3], w[3];
+    for (int i = 0; i < 3; i++) {
+        x[i] = v[i].c[0] >> sh;
+        y[i] = v[i].c[1] >> sh;
+        w[i] = v[i].c[3] >> sh;
+    }
+    int64_t d = x[0] * (y[1] * w[2] - w[1] * y[2]) - y[0] * (x[1] * w[2] - w[1] * x[2]) +
+                w[0] * (x[1] * y[2] - y[1] * x[2]);
+    return d > 0 ? 1 : d < 0 ? -1 : 0;
+}
+
+static void set_rgb(int32_t *a, fx3d_rgb c)
+{
+    a[0] = c.r;
+    a[1] = c.g;
+    a[2] = c.b;
+}
+
+static void set_vec(int32_t *a, fx_vec3 v)
+{
+    a[0] = v.x;
+    a[1] = v.y;
+    a[2] = v.z;
+}
+
+/* The shadow-buffer pass: depth from the light into sm->depth. */
+static int draw_shadow_pass(fx3d *r, const fx_mesh *m)
+{
+    fx3d_shadowmap *sm = r->sm;
+    pctx pc;
+    fx_memset(&pc, 0, sizeof pc);
+    pc.r = r;
+    pc.s = NULL;
+    fx_rect all = {0, 0, sm->size, sm->size};
+    pc.clip = all;
+    pc.zb = sm->depth;
+    pc.zbits = 32;
+    pc.zstride = sm->size;
+    pc.vw = pc.vh = sm->size;
+    pc.guard = FX_MAX(1, FX_MIN(4, (1 << 13) / sm->size));
+    fx_mat4 mvp;
+    fx_mat4_mul(&mvp, &sm->view_proj, fx_mat_stack_top(&r->model));
+    tri_mode tm;
+    fx_memset(&tm, 0, sizeof tm);
+    tm.kind = K_DEPTH;
+    tm.ztest = tm.zwrite = 1;
+    for (int32_t t = 0; t < m->ntris; t++) {
+        cvert v[3];
+        for (int i = 0; i < 3; i++) {
+            uint32_t idx = m->tri[3 * t + i];
+            if (idx >= (uint32_t)m->nverts)
+                return -FX_EINVAL;
+            fx_vec4 c = fx_mat4_apply_point(&mvp, m->pos[idx]);
+            v[i].c[0] = c.x;
+            v[i].c[1] = c.y;
+            v[i].c[2] = c.z;
+            v[i].c[3] = c.w;
+        }
+        /* Only faces turned away from the light go into the map: the lit
+         * faces then compare against the far side of their own object and
+         * cannot shadow themselves ("acne"). */
+        if (facing(v) > 0)
+            continue;
+        draw_clipped(&pc, v, &tm);
+    }
+    return 0;
+}
+
+int fx3d_draw(fx3d *r, const fx_mesh *m)
+{
+    if (!m || !m->pos || !m->tri || m->ntris < 0 || m->nverts < 0)
+        return -FX_EINVAL;
+    r->stat_culled = r->stat_drawn = r->stat_clipped = 0;
+    if (r->sm_phase == 1 && r->sm)
+        return draw_shadow_pass(r, m);
+
+    pctx pc;
+    pctx_init(&pc, r);
+    const fx_mat4 *model = fx_mat_stack_top(&r->model);
+    const fx_mat4 *P = fx_mat_stack_top(&r->proj);
+    fx_mat4 mv, nm, inv;
+    fx_mat4_mul(&mv, &r->view, model);
+    /* Normals go through the inverse transpose, so that non-uniform scales
+     * and shears keep them perpendicular to the surface. */
+    if (fx_mat4_invert(&inv, &mv) == 0)
+        fx_mat4_transpose(&nm, &inv);
+    else
+        nm = mv;
+
+    /* The planar-shadow matrix in eye space: S = (p . l) I - l p^T with the
+     * plane p and the light l (w = 0 for a directional light). */
+    fx_mat4 shadow;
+    int plane_on = r->plane_shadow && r->light[r->plane_light].type != FX3D_LIGHT_OFF;
+    if (plane_on) {
+        const fx3d_light *L = &r->light[r->plane_light];
+        fx_vec4 l;
+        if (L->type == FX3D_LIGHT_DIRECTIONAL) {
+            fx_vec3 d = fx_mat4_apply_dir(&r->view, L->pos);
+            l.x = d.x, l.y = d.y, l.z = d.z, l.w = 0;
+        } else {
+            l = fx_mat4_apply_point(&r->view, L->pos);
+        }
+        /* The world plane in eye space: p_eye = inverse(view)^T p_world. */
+        fx_mat4 vi, vit;
+        fx_vec4 pw = {r->plane[0], r->plane[1], r->plane[2], r->plane[3]};
+        if (fx_mat4_invert(&vi, &r->view) < 0)
+            plane_on = 0;
+        fx_mat4_transpose(&vit, &vi);
+        fx_vec4 p = fx_mat4_apply(&vit, pw);
+        fx16 pl = fx_sat32(((int64_t)p.x * l.x + (int64_t)p.y * l.y + (int64_t)p.z * l.z +
+                            (int64_t)p.w * l.w + 0x8000) >> 16);
+        fx16 pv[4] = {p.x, p.y, p.z, p.w}, lv[4] = {l.x, l.y, l.z, l.w};
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 4; j++)
+                shadow.m[i][j] = (i == j ? pl : 0) - fx16_mul(lv[i], pv[j]);
+    }
+
+    int smooth = m->nrm != NULL;
+    tri_mode tm;
+    fx_memset(&tm, 0, sizeof tm);
+    tm.ztest = tm.zwrite = pc.zb != NULL;
+    tm.use_sm = pc.sm != NULL;
+    tm.na = 0;
+    if (r->polymode == FX3D_FILL) {
+        tm.kind = r->shading == FX3D_FLAT ? K_FLAT : r->shading == FX3D_GOURAUD ? K_GOURAUD : K_PHONG;
+        tm.na = tm.kind == K_FLAT ? 0 : 6;
+        if (tm.use_sm)
+            tm.na = NA;
+    } else {
+        tm.kind = K_FLAT;
+        tm.use_sm = 0;
+        tm.outline = r->polymode == FX3D_WIRE ? 2 : 1;
+        tm.lines_ztest = r->polymode == FX3D_HIDDEN_LINE && pc.zb != NULL;
+        tm.flat[0] = tm.flat[1] = r->background;
+    }
+
+    /* Hidden lines without the painter: all faces of the mesh first (depth
+     * and background), then all edges against that depth. */
+    int passes = r->polymode == FX3D_HIDDEN_LINE && r->visibility != FX3D_VIS_PAINTER ? 2 : 1;
+    for (int pass = 0; pass < passes; pass++) {
+        if (passes == 2)
+            tm.outline = pass == 0 ? 3 : 2;
+        for (int32_t t = 0; t < m->ntris; t++) {
+            cvert v[3];
+            fx_vec3 ep[3], wp[3];
+            fx_memset(v, 0, sizeof v);
+            uint32_t idx[3];
+            for (int i = 0; i < 3; i++) {
+                idx[i] = m->tri[3 * t + i];
+                if (idx[i] >= (uint32_t)m->nverts)
+                    return -FX_EINVAL;
+                fx_vec4 e = fx_mat4_apply_point(&mv, m->pos[idx[i]]);
+                ep[i] = fx_vec3_make(e.x, e.y, e.z);
+                fx_vec4 c = fx_mat4_apply(P, e);
+                v[i].c[0] = c.x;
+                v[i].c[1] = c.y;
+                v[i].c[2] = c.z;
+                v[i].c[3] = c.w;
+            }
+            int f = facing(v);
+            if (f == 0 || (r->cull == FX3D_CULL_BACK && f < 0) || (r->cull == FX3D_CULL_FRONT && f > 0)) {
+                r->stat_culled++;
+                continue;
+            }
+            r->stat_drawn++;
+            fx_vec3 fn = fx_vec3_cross(fx_vec3_sub(ep[1], ep[0]), fx_vec3_sub(ep[2], ep[0]));
+            if (fx_vec3_normalize(&fn) < 0) {
+                /* Too small for Q16.16 cross products: scale up and retry. */
+                fn = fx_vec3_cross(fx_vec3_scale(fx_vec3_sub(ep[1], ep[0]), 256 << 16),
+                                   fx_vec3_sub(ep[2], ep[0]));
+                fx_vec3_normalize(&fn);
+            }
+            /* Back faces seen through openings are lit from their own side. */
+            int flip = f < 0;
+            if (flip)
+                fn = fx_vec3_make(-fn.x, -fn.y, -fn.z);
+            if (tm.use_sm) {
+                for (int i = 0; i < 3; i++) {
+                    fx_vec4 w4 = fx_mat4_apply_point(model, m->pos[idx[i]]);
+                    wp[i] = fx_vec3_make(w4.x, w4.y, w4.z);
+                    sm_coords(pc.sm, wp[i], &v[i].a[A_SM]);
+                }
+            }
+            if (r->polymode == FX3D_FILL) {
+                if (tm.kind == K_FLAT) {
+                    fx_vec3 cen = fx_vec3_make(
+                        (fx16)(((int64_t)ep[0].x + ep[1].x + ep[2].x) / 3),
+                        (fx16)(((int64_t)ep[0].y + ep[1].y + ep[2].y) / 3),
+                        (fx16)(((int64_t)ep[0].z + ep[1].z + ep[2].z) / 3));
+                    tm.flat[0] = fx3d_rgb_to_color(shade(r, pc.el, pc.nl, cen, fn, -1));
+                    tm.flat[1] = tm.use_sm ? fx3d_rgb_to_color(shade(r, pc.el, pc.nl, cen, fn, pc.sm->light))
+                                           : tm.flat[0];
+                } else {
+                    for (int i = 0; i < 3; i++) {
+                        fx_vec3 n = fn;
+                        if (smooth) {
+                            n = fx_mat4_apply_dir(&nm, m->nrm[idx[i]]);
+                            if (fx_vec3_normalize(&n) < 0)
+                                n = fn;
+                            else if (flip)
+                                n = fx_vec3_make(-n.x, -n.y, -n.z);
+                        }
+                        if (tm.kind == K_GOURAUD) {
+                            set_rgb(&v[i].a[A_COL], shade(r, pc.el, pc.nl, ep[i], n, -1));
+                            if (tm.use_sm)
+                                set_rgb(&v[i].a[A_POS], shade(r, pc.el, pc.nl, ep[i], n, pc.sm->light));
+                        } else {
+                            set_vec(&v[i].a[A_COL], n);
+                            set_vec(&v[i].a[A_POS], ep[i]);
+                        }
+                    }
+                }
+            }
+            cvert keep[3];
+            if (plane_on && f > 0)
+                for (int i = 0; i < 3; i++)
+                    keep[i] = v[i];
+            draw_clipped(&pc, v, &tm);
+
+            if (plane_on && f > 0) {
+                tri_mode sm_mode;
+                fx_memset(&sm_mode, 0, sizeof sm_mode);
+                sm_mode.kind = K_FLAT;
+                sm_mode.flat[0] = sm_mode.flat[1] = r->plane_color;
+                sm_mode.ztest = pc.zb != NULL;
+                sm_mode.zbias = 1 << 15;
+                for (int i = 0; i < 3; i++) {
+                    fx_vec4 e = {ep[i].x, ep[i].y, ep[i].z, FX16_ONE};
+                    fx_vec4 q = fx_mat4_apply(&shadow, e);
+                    if (q.w < 0) { /* the same projective point, w > 0 */
+                        q.x = -q.x, q.y = -q.y, q.z = -q.z, q.w = -q.w;
+                    }
+                    fx_vec4 c = fx_mat4_apply(P, q);
+                    keep[i].c[0] = c.x;
+                    keep[i].c[1] = c.y;
+                    keep[i].c[2] = c.z;
+                    keep[i].c[3] = c.w;
+                }
+                draw_clipped(&pc, keep, &sm_mode);
+            }
+        }
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* painter's sort                                                       */
+
+static void ptri_swap(ptri *a, ptri *b)
+{
+    ptri t = *a;
+    *a = *b;
+    *b = t;
+}
+
+/* Heap sort, deepest first: O(n log n) without extra memory. */
+static void sift(ptri *t, int32_t i, int32_t n)
+{
+    for (;;) {
+        int32_t c = 2 * i + 1;
+        if (c >= n)
+            return;
+        /* min-heap on key, so that the sorted array descends */
+        if (c + 1 < n && t[c + 1].key < t[c].key)
+            c++;
+        if (t[i].key <= t[c].key)
+            return;
+        ptri_swap(&t[i], &t[c]);
+        i = c;
+    }
+}
+
+void fx3d_flush(fx3d *r)
+{
+    if (!r->pbuf || r->pcount == 0)
+        return;
+    ptri *t = r->pbuf;
+    int32_t n = r->pcount;
+    for (int32_t i = n / 2 - 1; i >= 0; i--)
+        sift(t, i, n);
+    for (int32_t e = n - 1; e > 0; e--) {
+        ptri_swap(&t[0], &t[e]);
+        sift(t, 0, e);
+    }
+    pctx pc;
+    pctx_init(&pc, r);
+    pc.zb = NULL;
+    pc.zbits = 0;
+    for (int32_t i = 0; i < n; i++) {
+        tri_mode m = t[i].m;
+        m.ztest = m.zwrite = 0;
+        raster_tri(&pc, &t[i].v[0], &t[i].v[1], &t[i].v[2], &m);
+        if (m.outline == 1)
+            for (int k = 0; k < 3; k++)
+                raster_line(&pc, &t[i].v[k], &t[i].v[(k + 1) % 3], 0, pc.wire);
+    }
+    r->pcount = 0;
+}
