@@ -65,14 +65,3 @@ int fx_fractal_render_mt(const fx_surface *s, fx_rect r, const fx_fractal_view *
     int e = atomic_load(&j.err);
     return e < 0 ? e : spawn_err;
 }
-
-int fx_mandel_w9_mt(const fx_surface *s, int nthreads)
-{
-    if (!s)
-        return -FX_EINVAL;
-    uint32_t lut[65];
-    fx_dwell_pal pal;
-    fx_dwell_pal_w9(&pal, lut, s->format);
-    fx_fractal_view v = fx_mandel_view(-(FX56_ONE / 2), 0, 3 * FX56_ONE, s->w, s->h, 256);
-    return fx_fractal_render_mt(s, fx_surface_rect(s), &v, &pal, nthreads);
-}

@@ -472,14 +472,3 @@ void fx_dwell_pal_w9(fx_dwell_pal *pal, uint32_t lut[65], fx_format f)
     pal->wrap = 0;
     pal->inside = fx_pack(f, 0xFF000000u);
 }
-
-int fx_mandel_w9(const fx_surface *s)
-{
-    if (!s)
-        return -FX_EINVAL;
-    uint32_t lut[65];
-    fx_dwell_pal pal;
-    fx_dwell_pal_w9(&pal, lut, s->format);
-    fx_fractal_view v = fx_mandel_view(-(FX56_ONE / 2), 0, 3 * FX56_ONE, s->w, s->h, 256);
-    return fx_fractal_render(s, fx_surface_rect(s), &v, &pal);
-}

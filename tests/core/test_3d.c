@@ -7,6 +7,7 @@
 #include "fixel/error.h"
 #include "fixel/render3d.h"
 #include "fx_test.h"
+#include "../../tools/fixel-bench/workloads.h"
 
 #define ONE FX16_ONE
 
@@ -476,10 +477,10 @@ FX_TEST(render3d_bench_frame_draws_the_teapot)
     fx_surface s;
     static uint32_t pix[192 * 108];
     FX_CHECK_EQ(fx_surface_init(&s, pix, 192, 108, 192 * 4, FX_FMT_XRGB8888), 0);
-    size_t n = fx3d_bench_teapot_bytes(&s);
+    size_t n = bench_teapot_bytes(&s);
     void *mem = malloc(n);
-    FX_CHECK_EQ(fx3d_bench_teapot(&s, mem, n - 8, 0), -FX_EINVAL);
-    FX_CHECK_EQ(fx3d_bench_teapot(&s, mem, n, 0), 0);
+    FX_CHECK_EQ(bench_teapot(&s, mem, n - 8, 0), -FX_EINVAL);
+    FX_CHECK_EQ(bench_teapot(&s, mem, n, 0), 0);
     int teapot = 0;
     for (int i = 0; i < 192 * 108; i++)
         teapot += (pix[i] & 0xFFFFFF) != 0x182028;

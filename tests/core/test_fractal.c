@@ -12,6 +12,7 @@
 #include "fixel/fractal.h"
 #include "fixel/scene.h"
 #include "fx_test.h"
+#include "../../tools/fixel-bench/workloads.h"
 
 /* Where long double is wider than double (x86: 64-bit mantissa, aarch64:
  * 113) it is the reference that double cannot be at deep zooms; on 32-bit
@@ -77,7 +78,7 @@ FX_TEST(fractal_w9_agrees_with_double)
     uint32_t *px = malloc((size_t)w * h * 4);
     fx_surface s;
     fx_surface_init(&s, px, w, h, w * 4, FX_FMT_XRGB8888);
-    FX_CHECK_EQ(fx_mandel_w9(&s), 0);
+    FX_CHECK_EQ(bench_mandel_w9(&s), 0);
     fx_fractal_view v = fx_mandel_view(-(FX56_ONE / 2), 0, 3 * FX56_ONE, w, h, 256);
     FX_CHECK_EQ(fx_fractal_precision(&v), 32);
     const double st = 3.0 / 1920;
@@ -369,7 +370,7 @@ FX_TEST(fractal_w9_colours)
     uint32_t *px = calloc((size_t)w * h, 4), *d = calloc((size_t)w * h, 4);
     fx_surface s;
     fx_surface_init(&s, px, w, h, w * 4, FX_FMT_XRGB8888);
-    FX_CHECK_EQ(fx_mandel_w9(&s), 0);
+    FX_CHECK_EQ(bench_mandel_w9(&s), 0);
     fx_fractal_view v = fx_mandel_view(-(FX56_ONE / 2), 0, 3 * FX56_ONE, w, h, 256);
     fx_rect r = {0, 0, w, h};
     FX_CHECK_EQ(fx_fractal_dwell(&v, r, d, w), 0);
@@ -463,7 +464,7 @@ FX_TEST(fractal_script_commands)
     static uint32_t want[192 * 108];
     fx_surface s;
     fx_surface_init(&s, want, 192, 108, 192 * 4, FX_FMT_XRGB8888);
-    FX_CHECK_EQ(fx_mandel_w9(&s), 0);
+    FX_CHECK_EQ(bench_mandel_w9(&s), 0);
     FX_CHECK_EQ(scene_run("size 192 108\nmandelbrot -0.5 0 3.0 256\n"), 0);
     FX_CHECK(memcmp(want, scene_mem, sizeof want) == 0);
     /* a Julia set in a colour map with a period and an inside colour */

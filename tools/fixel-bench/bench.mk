@@ -50,3 +50,7 @@ TEST_SUITES += "$(BUILD)/bin/fixel-bench --check"
 
 # Keep the objects (chained pattern rules would delete them as intermediates).
 .SECONDARY: $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/fixel-bench/*.c))
+
+# The workload frames (workloads.c) are benchmark code, not library API; the
+# unit tests that check them (tests/core/test_3d.c, test_fractal.c) link them in.
+TEST_OBJ += $(BUILD)/obj/tools/fixel-bench/workloads.o

@@ -20,6 +20,7 @@
 #define _GNU_SOURCE
 #endif
 #include "bench.h"
+#include "workloads.h"
 
 #include <fixel/app.h>
 #include <fixel/display.h>
@@ -278,7 +279,7 @@ static void rep_teapot(void *arg, int rep)
 {
     struct teapot_arg *t = arg;
     /* the camera moves 1/64 turn per frame, as a spinning demo would */
-    if (fx3d_bench_teapot(&t->s, t->mem, t->bytes, (fx_angle)((uint32_t)rep << 26)) < 0) abort();
+    if (bench_teapot(&t->s, t->mem, t->bytes, (fx_angle)((uint32_t)rep << 26)) < 0) abort();
 }
 
 static void teapot_group(int trials, double min_s, int quiet, int fmt_mask)
@@ -292,7 +293,7 @@ static void teapot_group(int trials, double min_s, int quiet, int fmt_mask)
         void *px = aligned_alloc(64, (size_t)BW * BH * 4);
         fx_surface_init(&ta[f].s, px, BW, BH, BW * bpp,
                         f == FMT_XRGB8888 ? FX_FMT_XRGB8888 : FX_FMT_RGB565);
-        ta[f].bytes = fx3d_bench_teapot_bytes(&ta[f].s);
+        ta[f].bytes = bench_teapot_bytes(&ta[f].s);
         ta[f].mem = aligned_alloc(64, (ta[f].bytes + 63) & ~(size_t)63);
         struct xrow *r =
             new_row("frames/s", 0, "teapot.gouraud.1920x1080.%s", f ? "rgb565" : "xrgb8888");

@@ -22,6 +22,7 @@
 #endif
 #if __has_include(<fixel/fractal.h>)
 #include <fixel/fractal.h>
+#include "workloads.h"
 #define HAVE_FRACTAL 1
 #endif
 
@@ -153,7 +154,7 @@ static void fx_w9(void *ctx, int n)
 {
     struct fxb *b = ctx;
     (void)n;
-    fx_mandel_w9(&b->s);
+    bench_mandel_w9(&b->s);
 }
 #endif
 

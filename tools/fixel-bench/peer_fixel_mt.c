@@ -53,7 +53,7 @@ static void mt_w9(void *ctx, int n)
     (void)n;
     long nt = sysconf(_SC_NPROCESSORS_ONLN);
     nt = nt < 1 ? 1 : nt > MAX_THREADS ? MAX_THREADS : nt;
-    /* the same view and palette fx_mandel_w9 uses */
+    /* the same view and palette bench_mandel_w9 uses */
     fx_dwell_pal_w9(&m->pal, m->lut, FX_FMT_XRGB8888);
     m->v = fx_mandel_view(-(FX56_ONE / 2), 0, 3 * FX56_ONE, BW, BH, 256);
     atomic_store(&m->next, 0);

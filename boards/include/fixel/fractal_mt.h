@@ -16,7 +16,4 @@
 int fx_fractal_render_mt(const fx_surface *s, fx_rect r, const fx_fractal_view *v,
                          const fx_dwell_pal *pal, int nthreads);
 
-/* W9 (fx_mandel_w9) on nthreads threads. */
-int fx_mandel_w9_mt(const fx_surface *s, int nthreads);
-
 #endif

@@ -97,8 +97,4 @@ int fx_fractal_render(const fx_surface *s, fx_rect r, const fx_fractal_view *v,
  * black inside) packed for format f: fills lut[0..64] (65 entries) and *pal. */
 void fx_dwell_pal_w9(fx_dwell_pal *pal, uint32_t lut[65], fx_format f);
 
-/* The benchmark's W9 picture on the whole of s: centre -0.5 + 0i, width 3.0,
- * 256 iterations, the W9 palette, pixel centres. Returns 0 or -FX_EINVAL. */
-int fx_mandel_w9(const fx_surface *s);
-
 #endif

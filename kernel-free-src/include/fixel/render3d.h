@@ -192,12 +192,4 @@ void fx3d_shadow_off(fx3d *r);
  * (Gouraud), per face (flat) or per pixel (Phong). */
 fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal);
 
-/* One frame of the benchmark scene: a Gouraud-shaded Utah teapot (8 x 8
- * per patch, 4096 triangles) with a 32-bit depth buffer, two lights and a
- * camera turned by `angle` about the teapot, drawn on s (any size; the
- * bench uses 1920 x 1080). mem must hold fx3d_bench_teapot_bytes(s)
- * bytes (8-byte aligned). Returns 0 or a negative error. */
-size_t fx3d_bench_teapot_bytes(const fx_surface *s);
-int fx3d_bench_teapot(const fx_surface *s, void *mem, size_t bytes, fx_angle angle);
-
 #endif

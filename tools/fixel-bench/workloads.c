@@ -1,37 +1,41 @@
-/* fixel — the 3D benchmark frame: a Gouraud teapot on a surface of any
- * size, everything in caller memory (see fx3d_bench_teapot in render3d.h). */
-#include "fixel/error.h"
-#include "fixel/render3d.h"
-#include "../base/fx_internal.h"
+/* fixel-bench — the teapot frame and the W9 picture (see workloads.h),
+ * everything in caller memory, through the public API. */
+#include "workloads.h"
 
-#define BENCH_N 8
+#include <stdint.h>
 
-typedef struct bench_mem {
+#include <fixel/error.h>
+#include <fixel/fractal_mt.h>
+#include <fixel/mesh.h>
+
+#define TEAPOT_N 8
+
+typedef struct teapot_mem {
     fx_mat4 ms[4], ps[2];
     fx3d r;
-} bench_mem;
+} teapot_mem;
 
 static size_t align8(size_t n) { return (n + 7) & ~(size_t)7; }
 
-size_t fx3d_bench_teapot_bytes(const fx_surface *s)
+size_t bench_teapot_bytes(const fx_surface *s)
 {
-    fx_mesh_params p = {FX_MESH_TEAPOT, FX16_ONE, 0, 0, BENCH_N, 0};
+    fx_mesh_params p = {FX_MESH_TEAPOT, FX16_ONE, 0, 0, TEAPOT_N, 0};
     int32_t nv, nt;
     fx_mesh_size(&p, &nv, &nt);
-    return align8(sizeof(bench_mem)) + align8(fx3d_depth_bytes(s, 32)) +
+    return align8(sizeof(teapot_mem)) + align8(fx3d_depth_bytes(s, 32)) +
            align8((size_t)nv * 2 * sizeof(fx_vec3)) + align8((size_t)nt * 3 * sizeof(uint32_t));
 }
 
-int fx3d_bench_teapot(const fx_surface *s, void *mem, size_t bytes, fx_angle angle)
+int bench_teapot(const fx_surface *s, void *mem, size_t bytes, fx_angle angle)
 {
-    if (!mem || bytes < fx3d_bench_teapot_bytes(s) || ((uintptr_t)mem & 7))
+    if (!mem || bytes < bench_teapot_bytes(s) || ((uintptr_t)mem & 7))
         return -FX_EINVAL;
     uint8_t *p = mem;
-    bench_mem *b = (bench_mem *)p;
+    teapot_mem *b = (teapot_mem *)p;
     p += align8(sizeof *b);
     void *z = p;
     p += align8(fx3d_depth_bytes(s, 32));
-    fx_mesh_params mp = {FX_MESH_TEAPOT, FX16_ONE, 0, 0, BENCH_N, 0};
+    fx_mesh_params mp = {FX_MESH_TEAPOT, FX16_ONE, 0, 0, TEAPOT_N, 0};
     int32_t nv, nt;
     fx_mesh_size(&mp, &nv, &nt);
     fx_mesh m;
@@ -69,4 +73,31 @@ int fx3d_bench_teapot(const fx_surface *s, void *mem, size_t bytes, fx_angle ang
     r->mat.shininess = 40;
     r->shading = FX3D_GOURAUD;
     return fx3d_draw(r, &m);
+}
+
+static fx_fractal_view w9_view(const fx_surface *s)
+{
+    return fx_mandel_view(-(FX56_ONE / 2), 0, 3 * FX56_ONE, s->w, s->h, 256);
+}
+
+int bench_mandel_w9(const fx_surface *s)
+{
+    if (!s)
+        return -FX_EINVAL;
+    uint32_t lut[65];
+    fx_dwell_pal pal;
+    fx_dwell_pal_w9(&pal, lut, s->format);
+    fx_fractal_view v = w9_view(s);
+    return fx_fractal_render(s, fx_surface_rect(s), &v, &pal);
+}
+
+int bench_mandel_w9_mt(const fx_surface *s, int nthreads)
+{
+    if (!s)
+        return -FX_EINVAL;
+    uint32_t lut[65];
+    fx_dwell_pal pal;
+    fx_dwell_pal_w9(&pal, lut, s->format);
+    fx_fractal_view v = w9_view(s);
+    return fx_fractal_render_mt(s, fx_surface_rect(s), &v, &pal, nthreads);
 }
