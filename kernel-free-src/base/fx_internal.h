@@ -16,6 +16,16 @@
 #define FX_MAX(a, b) ((a) > (b) ? (a) : (b))
 #define FX_ARRAY_LEN(a) (sizeof(a) / sizeof((a)[0]))
 
+/* Return a negative error code from the enclosing function: the one TRY of
+ * the core. Token for token the copies in the scene files, so a file may include
+ * this header and keep its own copy while those are being removed. */
+#define TRY(x)                   \
+    do {                         \
+        int r_ = (x);            \
+        if (r_ < 0)              \
+            return r_;           \
+    } while (0)
+
 static inline uint8_t *fx_row(const struct fx_surface *s, int32_t y)
 {
     return s->pixels + (ptrdiff_t)y * s->stride;
