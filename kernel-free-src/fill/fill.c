@@ -9,112 +9,7 @@
 #include "fixel/fill.h"
 #include "fixel/error.h"
 #include "../base/fx_internal.h"
-
-/* ---- 128-bit helpers (set-up only; no __int128 so 32-bit ARM works) ---- */
-
-typedef struct {
-    uint64_t hi, lo; /* two's complement */
-} s128;
-
-static s128 s128_mul(int64_t a, int64_t b)
-{
-    int64_t hi;
-    uint64_t lo;
-    fx_smul64_wide(a, b, &hi, &lo);
-    s128 r = {(uint64_t)hi, lo};
-    return r;
-}
-
-static s128 s128_add(s128 a, s128 b)
-{
-    s128 r = {a.hi + b.hi, a.lo + b.lo};
-    r.hi += r.lo < a.lo;
-    return r;
-}
-
-static s128 s128_neg(s128 a)
-{
-    s128 r = {~a.hi, ~a.lo + 1};
-    r.hi += r.lo == 0;
-    return r;
-}
-
-static s128 s128_sub(s128 a, s128 b) { return s128_add(a, s128_neg(b)); }
-static int s128_isneg(s128 a) { return (int64_t)a.hi < 0; }
-
-static s128 s128_shl(s128 a, unsigned n) /* 0 < n < 64 */
-{
-    s128 r = {(a.hi << n) | (a.lo >> (64 - n)), a.lo << n};
-    return r;
-}
-
-/* (u1:u0) / v for u1 < v, v != 0 (Hacker's Delight divlu on 32-bit digits). */
-static uint64_t udiv128(uint64_t u1, uint64_t u0, uint64_t v, uint64_t *rem)
-{
-    const uint64_t b = (uint64_t)1 << 32;
-    unsigned s = (unsigned)__builtin_clzll(v);
-    v <<= s;
-    uint64_t vn1 = v >> 32, vn0 = v & 0xFFFFFFFFu;
-    uint64_t un32 = (u1 << s) | (s ? u0 >> (64 - s) : 0), un10 = u0 << s;
-    uint64_t un1 = un10 >> 32, un0 = un10 & 0xFFFFFFFFu;
-    uint64_t q1 = un32 / vn1, rhat = un32 - q1 * vn1;
-    while (q1 >= b || q1 * vn0 > b * rhat + un1) {
-        q1--;
-        rhat += vn1;
-        if (rhat >= b)
-            break;
-    }
-    uint64_t un21 = un32 * b + un1 - q1 * v;
-    uint64_t q0 = un21 / vn1;
-    rhat = un21 - q0 * vn1;
-    while (q0 >= b || q0 * vn0 > b * rhat + un0) {
-        q0--;
-        rhat += vn1;
-        if (rhat >= b)
-            break;
-    }
-    *rem = (un21 * b + un0 - q0 * v) >> s;
-    return q1 * b + q0;
-}
-
-/* floor(n / d) and n - d*q for d > 0, when the quotient fits in int64. */
-static void s128_divfloor(s128 n, int64_t d, int64_t *q, int64_t *r)
-{
-    int neg = s128_isneg(n);
-    s128 m = neg ? s128_neg(n) : n;
-    uint64_t rem, uq = udiv128(m.hi, m.lo, (uint64_t)d, &rem);
-    if (!neg) {
-        *q = (int64_t)uq;
-        *r = (int64_t)rem;
-    } else if (rem == 0) {
-        *q = -(int64_t)uq;
-        *r = 0;
-    } else {
-        *q = -(int64_t)uq - 1;
-        *r = d - (int64_t)rem;
-    }
-}
-
-/* round(n / d) to nearest, ties up, saturated to int64; d != 0. */
-static int64_t s128_divround_sat(s128 n, int64_t d)
-{
-    if (d < 0) {
-        n = s128_neg(n);
-        d = -d;
-    }
-    /* floor((2n + d) / 2d) */
-    s128 t = s128_add(s128_shl(n, 1), s128_mul(d, 1));
-    int neg = s128_isneg(t);
-    s128 m = neg ? s128_neg(t) : t;
-    uint64_t d2 = (uint64_t)d * 2;
-    if (m.hi >= d2)
-        return neg ? INT64_MIN : INT64_MAX;
-    uint64_t rem, uq = udiv128(m.hi, m.lo, d2, &rem);
-    if (!neg)
-        return uq > (uint64_t)INT64_MAX ? INT64_MAX : (int64_t)uq;
-    uint64_t fq = uq + (rem != 0); /* floor of a negative quotient */
-    return fq > (uint64_t)INT64_MAX ? INT64_MIN : -(int64_t)fq;
-}
+#include "../base/fx_wide.h"
 
 static int64_t ceil_shift(int64_t v, unsigned s) { return (v + (((int64_t)1 << s) - 1)) >> s; }
 
@@ -151,7 +46,7 @@ static void edge_setup(fx_tri_edge *g, int64_t x0, int64_t y0, int64_t x1, int64
     if (t < ((int64_t)1 << 31) && adx < ((int64_t)1 << 31))
         floordivmod(t * dx, dy, &qa, &ra);
     else
-        s128_divfloor(s128_mul(t, dx), dy, &qa, &ra);
+        fx_w_floordivmod(fx_w_mul(t, dx), dy, &qa, &ra);
     int64_t m = x0 + qa;
     int64_t x = (m + (ra > 0) + (((int64_t)1 << s) - 1)) >> s;
     g->x = x;
@@ -905,13 +800,13 @@ int fx_tri_begin(fx_tri *t, fx_rect clip, const fx8 *xy, const int32_t *attr, in
         int64_t area = e1x * e2y - e1y * e2x;
         for (int32_t k = 0; k < nattr; k++) {
             int64_t a0 = attr[k], da1 = (int64_t)attr[nattr + k] - a0, da2 = (int64_t)attr[2 * nattr + k] - a0;
-            s128 nx = s128_sub(s128_mul(da1, e2y), s128_mul(da2, e1y));
-            s128 ny = s128_sub(s128_mul(da2, e1x), s128_mul(da1, e2x));
-            int64_t gx = s128_divround_sat(s128_shl(nx, 40), area);
-            int64_t gy = s128_divround_sat(s128_shl(ny, 40), area);
+            fx_s128 nx = fx_w_sub(fx_w_mul(da1, e2y), fx_w_mul(da2, e1y));
+            fx_s128 ny = fx_w_sub(fx_w_mul(da2, e1x), fx_w_mul(da1, e2x));
+            int64_t gx = fx_w_rounddiv_up(fx_w_shl(nx, 40), area);
+            int64_t gy = fx_w_rounddiv_up(fx_w_shl(ny, 40), area);
             /* c = a0 * 2^32 - round((gx*px + gy*py) / 256), modulo 2^64 */
-            s128 sum = s128_add(s128_add(s128_mul(gx, px), s128_mul(gy, py)), s128_mul(128, 1));
-            uint64_t shifted = (sum.lo >> 8) | (sum.hi << 56);
+            fx_s128 sum = fx_w_add(fx_w_add(fx_w_mul(gx, px), fx_w_mul(gy, py)), fx_w_from(128));
+            uint64_t shifted = (sum.lo >> 8) | ((uint64_t)sum.hi << 56);
             t->c[k] = ((uint64_t)a0 << 32) - shifted;
             t->gx[k] = (uint64_t)gx;
             t->gy[k] = (uint64_t)gy;

@@ -76,7 +76,7 @@ void fx_xform2_reflection_line(fx_xform2 *o, fx16 px, fx16 py, fx_angle a)
     affine(o, c, s, about(px, c, py, -s), s, -c, about(py, -c, px, -s));
 }
 
-static int64_t rdiv64(int64_t n, int64_t d) { return fx_w_rounddiv(fx_w_from(n), d); }
+static int64_t rdiv64(int64_t n, int64_t d) { return fx_w_rounddiv_away(fx_w_from(n), d); }
 
 int fx_xform2_window_viewport(fx_xform2 *o, fx16 wx0, fx16 wy0, fx16 wx1, fx16 wy1, fx16 vx0,
                               fx16 vy0, fx16 vx1, fx16 vy1, int keep_aspect)
@@ -97,8 +97,8 @@ int fx_xform2_window_viewport(fx_xform2 *o, fx16 wx0, fx16 wy0, fx16 wx1, fx16 w
     /* centre onto centre: t = (v0 + v1)/2 - s (w0 + w1)/2 */
     fx_s128 nx = fx_w_sub(fx_w_mul((int64_t)vx0 + vx1, ONE), fx_w_mul(fsx, (int64_t)wx0 + wx1));
     fx_s128 ny = fx_w_sub(fx_w_mul((int64_t)vy0 + vy1, ONE), fx_w_mul(fsy, (int64_t)wy0 + wy1));
-    affine(o, fsx, 0, fx_sat32(fx_w_rounddiv(nx, 2 * ONE)), 0, fsy,
-           fx_sat32(fx_w_rounddiv(ny, 2 * ONE)));
+    affine(o, fsx, 0, fx_sat32(fx_w_rounddiv_away(nx, 2 * ONE)), 0, fsy,
+           fx_sat32(fx_w_rounddiv_away(ny, 2 * ONE)));
     return 0;
 }
 
@@ -152,14 +152,14 @@ int fx_xform2_invert(fx_xform2 *out, const fx_xform2 *in)
         return -FX_ERANGE; /* |det| >= 2^31: entries of the inverse round to 0 */
     int64_t det = (int64_t)det128.lo;
     /* A^-1 = adj(A) / det; entries in Q16 are adj * 2^32 / det. */
-    int64_t ia = fx_w_rounddiv(fx_w_mul(d, ONE * ONE), det);
-    int64_t ib = fx_w_rounddiv(fx_w_mul(-b, ONE * ONE), det);
-    int64_t ic = fx_w_rounddiv(fx_w_mul(-c, ONE * ONE), det);
-    int64_t id = fx_w_rounddiv(fx_w_mul(a, ONE * ONE), det);
+    int64_t ia = fx_w_rounddiv_away(fx_w_mul(d, ONE * ONE), det);
+    int64_t ib = fx_w_rounddiv_away(fx_w_mul(-b, ONE * ONE), det);
+    int64_t ic = fx_w_rounddiv_away(fx_w_mul(-c, ONE * ONE), det);
+    int64_t id = fx_w_rounddiv_away(fx_w_mul(a, ONE * ONE), det);
     /* t' = -A^-1 t = -(d tx - b ty, a ty - c tx) / det, exact until rounding */
     fx_s128 nx = fx_w_sub(fx_w_mul(b, ty), fx_w_mul(d, tx));
     fx_s128 ny = fx_w_sub(fx_w_mul(c, tx), fx_w_mul(a, ty));
-    int64_t itx = fx_w_rounddiv(shl16(nx), det), ity = fx_w_rounddiv(shl16(ny), det);
+    int64_t itx = fx_w_rounddiv_away(shl16(nx), det), ity = fx_w_rounddiv_away(shl16(ny), det);
     if (!fits32(ia) || !fits32(ib) || !fits32(ic) || !fits32(id) || !fits32(itx) || !fits32(ity))
         return -FX_ERANGE;
     affine(out, (fx16)ia, (fx16)ib, (fx16)itx, (fx16)ic, (fx16)id, (fx16)ity);
