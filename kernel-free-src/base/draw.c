@@ -3,6 +3,7 @@
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
 #include "fx_internal.h"
+#include "fx_span.h"
 
 void fx_ctx_init(fx_ctx *c, const fx_surface *s)
 {
@@ -54,26 +55,7 @@ static void span_in_clip(const fx_ctx *c, int32_t y, int32_t x0, int32_t x1)
     fx_span_fill(&c->surf, y, x0, x1, c->native);
 }
 
-static void span_clipped(const fx_ctx *c, int32_t y, int32_t x0, int32_t x1)
-{
-    if (y < c->clip.y0 || y >= c->clip.y1)
-        return;
-    x0 = FX_MAX(x0, c->clip.x0);
-    x1 = FX_MIN(x1, c->clip.x1);
-    if (x0 >= x1)
-        return;
-    if (c->exterior && y >= c->exterior_rect.y0 && y < c->exterior_rect.y1) {
-        int32_t a = FX_MIN(x1, c->exterior_rect.x0), b = FX_MAX(x0, c->exterior_rect.x1);
-        if (x0 < a)
-            span_in_clip(c, y, x0, a);
-        if (b < x1)
-            span_in_clip(c, y, b, x1);
-        return;
-    }
-    span_in_clip(c, y, x0, x1);
-}
-
-void fx_hspan(const fx_ctx *c, int32_t y, int32_t x0, int32_t x1) { span_clipped(c, y, x0, x1); }
+void fx_hspan(const fx_ctx *c, int32_t y, int32_t x0, int32_t x1) { fx_clip_span(c, y, x0, x1, span_in_clip); }
 
 void fx_plot(const fx_ctx *c, int32_t x, int32_t y)
 {
@@ -108,7 +90,7 @@ void fx_fill_rect(const fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h)
         return;
     }
     for (int32_t yy = r.y0; yy < r.y1; yy++)
-        span_clipped(c, yy, r.x0, r.x1);
+        fx_hspan(c, yy, r.x0, r.x1);
 }
 
 void fx_rect_outline(const fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h)
@@ -119,9 +101,9 @@ void fx_rect_outline(const fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h
     if (fx_rect_empty(r)) /* saturated at INT32_MAX: nothing representable */
         return;
     int32_t top = r.y0, bottom = r.y1 - 1;
-    span_clipped(c, top, r.x0, r.x1);
+    fx_hspan(c, top, r.x0, r.x1);
     if (bottom != top)
-        span_clipped(c, bottom, r.x0, r.x1);
+        fx_hspan(c, bottom, r.x0, r.x1);
     /* Only the visible rows of the sides: bounded by the clip, not by h. */
     int32_t y0 = (int32_t)FX_MAX((int64_t)top + 1, c->clip.y0), y1 = FX_MIN(bottom, c->clip.y1);
     for (int32_t yy = y0; yy < y1; yy++) {

@@ -9,6 +9,7 @@
 #include "fixel/fill.h"
 #include "fixel/error.h"
 #include "../base/fx_internal.h"
+#include "../base/fx_span.h"
 #include "../base/fx_wide.h"
 
 static int64_t ceil_shift(int64_t v, unsigned s) { return (v + (((int64_t)1 << s) - 1)) >> s; }
@@ -154,21 +155,7 @@ static void styled_span(const fx_ctx *c, int32_t y, int32_t x0, int32_t x1)
 
 void fx_fill_span(const fx_ctx *c, int32_t y, int32_t x0, int32_t x1)
 {
-    if (y < c->clip.y0 || y >= c->clip.y1)
-        return;
-    x0 = FX_MAX(x0, c->clip.x0);
-    x1 = FX_MIN(x1, c->clip.x1);
-    if (x0 >= x1)
-        return;
-    if (c->exterior && y >= c->exterior_rect.y0 && y < c->exterior_rect.y1) {
-        int32_t a = FX_MIN(x1, c->exterior_rect.x0), b = FX_MAX(x0, c->exterior_rect.x1);
-        if (x0 < a)
-            styled_span(c, y, x0, a);
-        if (b < x1)
-            styled_span(c, y, b, x1);
-        return;
-    }
-    styled_span(c, y, x0, x1);
+    fx_clip_span(c, y, x0, x1, styled_span);
 }
 
 /* Spans already clipped to c->clip: the fast loops when no style, exterior

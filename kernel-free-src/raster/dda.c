@@ -1,6 +1,7 @@
 /* fixel — the fixed-point DDA line, clipped exactly, with its trace. */
 #include "fixel/line.h"
 #include "../base/fx_internal.h"
+#include "line_internal.h"
 
 void fx_dda_init(fx_dda_iter *d, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 {
@@ -49,65 +50,12 @@ void fx_dda_point(const fx_dda_iter *d, uint32_t k, int32_t *x, int32_t *y)
     }
 }
 
-/* Steps whose coordinate start + s*k lies in [lo, hi]. */
-static int axis_range(int32_t start, int32_t s, int64_t lo, int64_t hi, int64_t *a, int64_t *b)
-{
-    if (s > 0) {
-        *a = lo - start;
-        *b = hi - start;
-    } else if (s < 0) {
-        *a = start - hi;
-        *b = start - lo;
-    } else {
-        if (start < lo || start > hi)
-            return 0;
-        *a = INT64_MIN;
-        *b = INT64_MAX;
-    }
-    return *a <= *b;
-}
-
-static uint32_t first_k_with_minor(const fx_dda_iter *d, uint32_t m)
-{
-    uint32_t lo = 0, hi = d->major;
-    while (lo < hi) {
-        uint32_t mid = lo + (hi - lo) / 2;
-        if (minor_at(d, mid) >= m)
-            hi = mid;
-        else
-            lo = mid + 1;
-    }
-    return lo;
-}
+static uint32_t dda_minor_at(const void *d, uint32_t k) { return minor_at(d, k); }
 
 static int dda_clip(const fx_dda_iter *d, fx_rect clip, uint32_t *k0, uint32_t *k1)
 {
-    if (fx_rect_empty(clip))
-        return 0;
-    int64_t lo = 0, hi = d->major, a0, a1, m0, m1;
-    int32_t ma_start = d->ymajor ? d->y0 : d->x0, ma_s = d->ymajor ? d->sy : d->sx;
-    int32_t mi_start = d->ymajor ? d->x0 : d->y0, mi_s = d->ymajor ? d->sx : d->sy;
-    int64_t ma_lo = d->ymajor ? clip.y0 : clip.x0, ma_hi = (d->ymajor ? clip.y1 : clip.x1) - 1;
-    int64_t mi_lo = d->ymajor ? clip.x0 : clip.y0, mi_hi = (d->ymajor ? clip.x1 : clip.y1) - 1;
-    if (!axis_range(ma_start, ma_s, ma_lo, ma_hi, &a0, &a1))
-        return 0;
-    lo = FX_MAX(lo, a0);
-    hi = FX_MIN(hi, a1);
-    if (lo > hi || !axis_range(mi_start, mi_s, mi_lo, mi_hi, &m0, &m1))
-        return 0;
-    if (mi_s != 0) {
-        if (m1 < 0 || m0 > d->minor)
-            return 0;
-        if (m0 > 0)
-            lo = FX_MAX(lo, (int64_t)first_k_with_minor(d, (uint32_t)m0));
-        if (m1 < d->minor)
-            hi = FX_MIN(hi, (int64_t)first_k_with_minor(d, (uint32_t)m1 + 1) - 1);
-    }
-    if (lo > hi)
-        return 0;
-    *k0 = (uint32_t)lo;
-    *k1 = (uint32_t)hi;
-    return 1;
+    fx_line_axes g = {d->x0, d->y0, d->sx, d->sy, d->major, d->minor, d->ymajor, dda_minor_at, d};
+    return fx_line_axes_clip(&g, clip, k0, k1);
 }
 
 /* "start +- off/2^32" as a decimal with 4 places, for the trace. */
@@ -201,22 +149,5 @@ void fx_dda(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
     if (d.inc >> 32) /* diagonal: every step moves both axes */
         step_major += step_minor;
     uint32_t n = k1 - k0 + 1, v = c->native;
-#define FX_WALK(T)                          \
-    for (;;) {                              \
-        *(T *)(void *)p = (T)v;             \
-        if (--n == 0)                       \
-            break;                          \
-        p += step_major;                    \
-        uint32_t nf = frac + inc_lo;        \
-        if (nf < frac)                      \
-            p += step_minor;                \
-        frac = nf;                          \
-    }
-    if (bpp == 32)
-        FX_WALK(uint32_t)
-    else if (bpp == 16)
-        FX_WALK(uint16_t)
-    else
-        FX_WALK(uint8_t)
-#undef FX_WALK
+    FX_LINE_WALK_BPP(bpp, 1, fx_carry32(&frac, inc_lo), (void)0);
 }

@@ -14,6 +14,7 @@
 #include "fixel/line.h"
 #include "../base/fx_internal.h"
 #include "../base/fx_wide.h"
+#include "line_internal.h"
 
 void fx_line_style_init(fx_line_style *s)
 {
@@ -88,28 +89,7 @@ static void bres_pattern(const fx_stroker *s, int32_t x0, int32_t y0, int32_t x1
     uint8_t *p = fx_row(&c->surf, b.y) + (ptrdiff_t)b.x * bytes;
     int64_t e = b.p, inc1 = 2 * (int64_t)b.minor, inc2 = inc1 - 2 * (int64_t)b.major;
     uint32_t v = c->native;
-#define FX_WALK(T)                         \
-    for (;;) {                             \
-        if (pat >> bit & 1)                \
-            *(T *)(void *)p = (T)v;        \
-        if (--n == 0)                      \
-            break;                         \
-        p += step_major;                   \
-        if (e >= 0) {                      \
-            p += step_minor;               \
-            e += inc2;                     \
-        } else {                           \
-            e += inc1;                     \
-        }                                  \
-        NEXT_UNIT();                       \
-    }
-    if (bpp == 32)
-        FX_WALK(uint32_t)
-    else if (bpp == 16)
-        FX_WALK(uint16_t)
-    else
-        FX_WALK(uint8_t)
-#undef FX_WALK
+    FX_LINE_WALK_BPP(bpp, pat >> bit & 1, fx_bres_err_step(&e, inc1, inc2), NEXT_UNIT());
 #undef NEXT_UNIT
 }
 
