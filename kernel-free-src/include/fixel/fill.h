@@ -154,7 +154,13 @@ int fx_flood_fill(const fx_ctx *c, int32_t x, int32_t y, int conn, void *work, s
 int fx_boundary_fill(const fx_ctx *c, int32_t x, int32_t y, fx_color boundary, int conn, void *work,
                      size_t size);
 
-/* ---- triangle set-up and span stepping (for the 3D renderer) ----
+/* ---- triangle set-up and span stepping ----
+ *
+ * The one 2D triangle set-up: fx_fill_tri*, the Gouraud fills and the
+ * textured triangles (texture.h) all walk it, and a caller with its own
+ * per-pixel work can use it too. The 3D renderer has its own rasterizer
+ * (render3d.c), for reasons render3d.h gives under "Why a second
+ * triangle rasterizer".
  *
  * fx_tri_begin sets up a triangle with fx8 vertices (|coordinate| < 2^30) and
  * up to FX_TRI_MAX_ATTR int32 attributes per vertex (|value| < 2^30), clipped

@@ -28,6 +28,18 @@
  * per pixel step (Gouraud's original scheme; colours are not perspective
  * corrected). A triangle thinner than the gradients can represent falls
  * back to its average attributes.
+ *
+ * Why a second triangle rasterizer (render3d.c rather than fx_tri_begin of
+ * fill.h): the coverage rule is the same, the attribute arithmetic is not.
+ * The 3D triangle carries depth plus 9 attributes (colour or normal, eye
+ * position, shadow-map position and depth), more than FX_TRI_MAX_ATTR = 8;
+ * its planes use one reciprocal of the area per triangle and 16 fraction
+ * bits (fx_tri_begin divides exactly, in 128 bits, per attribute, into
+ * Q32.32), which is what makes a 4096-triangle frame affordable; slivers
+ * fall back to flat attributes (GRAD_LIMIT) where fx_tri_begin stays exact;
+ * and the span loop interleaves the depth test and shadow lookups per pixel.
+ * Its pictures (golden images, the teapot frame) are defined by that
+ * arithmetic, so moving it onto fx_tri_begin would change pixels.
  */
 #ifndef FIXEL_RENDER3D_H
 #define FIXEL_RENDER3D_H
