@@ -8,7 +8,7 @@
  * "the midpoint lies inside"), so every octant can be entered at any b in
  * O(1): a clipped circle lights exactly the pixels of the unclipped one that
  * fall in the clip rectangle, in time proportional to the visible pixels.
- * The pixel set equals the reference loop of WORKLOADS.md W5:
+ * The pixel set equals the reference loop of workload W5 (docs/BENCHMARK.md):
  *   x=r; y=0; d=1-r; while (y<=x) { plot8(x,y); y++;
  *                                   if (d<0) d+=2y+1; else { x--; d+=2(y-x)+1; } }
  * Every pixel is written once (the octant seams are shared, not repeated),

@@ -6,7 +6,7 @@
  * Windows are half-open fx_rect like the context's clip: [x0, x1) x [y0, y1)
  * holds the pixels x0..x1-1, y0..y1-1 (so in the course's inclusive terms
  * xwmin = x0, xwmax = x1 - 1). Integer coordinates are pixel centres
- * (DESIGN.md); the continuous region the line clippers clip against is the
+ * (docs/CONVENTIONS.md); the continuous region the line clippers clip against is the
  * union of the window's pixel squares, [xwmin - 1/2, xwmax + 1/2] x
  * [ywmin - 1/2, ywmax + 1/2]. Every Bresenham pixel inside the window has its
  * ideal point in that region (the minor axis rounds by at most 1/2), so the

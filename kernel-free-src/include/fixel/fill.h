@@ -1,9 +1,8 @@
 /* fixel — area fills: polygons (even-odd and nonzero), triangles, Gouraud
- * shading, fill styles (patterns, shaders) and the triangle set-up that the
- * 3D renderer builds on.
+ * shading, fill styles (patterns, shaders) and the 2D triangle set-up.
  *
- * Coverage rule (the one of DESIGN.md and of the benchmark's WORKLOADS.md
- * section 3). Integer vertices are pixel centres: vertex (X, Y) lies on the
+ * Coverage rule (the pixel model and coverage rule of docs/CONVENTIONS.md;
+ * the benchmark's workloads, docs/BENCHMARK.md, are defined with it). Integer vertices are pixel centres: vertex (X, Y) lies on the
  * centre of pixel (X, Y), so pixel (x, y) is sampled at vertex coordinates
  * (x, y). 24.8 vertices (fx8) use the same frame scaled by 256. On row y an
  * edge counts iff min(y0, y1) <= y < max(y0, y1) (so horizontal edges never

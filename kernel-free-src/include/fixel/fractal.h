@@ -93,8 +93,10 @@ int fx_fractal_dwell(const fx_fractal_view *v, fx_rect r, uint32_t *out, int32_t
 int fx_fractal_render(const fx_surface *s, fx_rect r, const fx_fractal_view *v,
                       const fx_dwell_pal *pal);
 
-/* The W9 palette of WORKLOADS.md for maxiter 256 (pal[n] = min(255, 4n) grey,
- * black inside) packed for format f: fills lut[0..64] (65 entries) and *pal. */
+/* The W9 palette of docs/BENCHMARK.md for maxiter 256 (pal[n] = min(255, 4n) grey,
+ * black inside) packed for format f: fills lut[0..64] (65 entries) and *pal.
+ * Library API rather than benchmark code: the scene's default Mandelbrot
+ * colouring and `colormap w9` use it. */
 void fx_dwell_pal_w9(fx_dwell_pal *pal, uint32_t lut[65], fx_format f);
 
 #endif
