@@ -315,7 +315,7 @@ static uint32_t dwell_at(const job *j, int64_t re, int64_t im)
 
 /* ---- sinks ---- */
 
-static uint32_t colour_of(const fx_dwell_pal *p, uint32_t d, uint32_t max)
+static uint32_t color_of(const fx_dwell_pal *p, uint32_t d, uint32_t max)
 {
     if (d >= max)
         return p->inside;
@@ -343,19 +343,19 @@ static void sink_row(const job *j, int32_t y, int32_t x0, int32_t n, const uint3
     case FX_FMT_XBGR8888: {
         uint32_t *p = (uint32_t *)(void *)row + x0;
         for (int32_t i = 0; i < n; i++)
-            p[i] = colour_of(j->pal, d[i], max);
+            p[i] = color_of(j->pal, d[i], max);
         break;
     }
     case FX_FMT_RGB565:
     case FX_FMT_BGR565: {
         uint16_t *p = (uint16_t *)(void *)row + x0;
         for (int32_t i = 0; i < n; i++)
-            p[i] = (uint16_t)colour_of(j->pal, d[i], max);
+            p[i] = (uint16_t)color_of(j->pal, d[i], max);
         break;
     }
     default:
         for (int32_t i = 0; i < n; i++)
-            fx_surface_put_native(s, x0 + i, y, colour_of(j->pal, d[i], max));
+            fx_surface_put_native(s, x0 + i, y, color_of(j->pal, d[i], max));
     }
 }
 

@@ -92,48 +92,6 @@ uint64_t fx_koch_snowflake(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r, u
 
 /* ---- random fractals ---- */
 
-uint32_t fx_rand32(uint32_t *state)
-{
-    uint32_t x = *state ? *state : 0x9E3779B9u;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    return *state = x;
-}
-
-fx16 fx_gauss16(uint32_t *state)
-{
-    int32_t s = 0;
-    for (int i = 0; i < 12; i++)
-        s += (int32_t)(fx_rand32(state) >> 16);
-    return s - 6 * 65536;
-}
-
-/* 2^(2^-i) in Q2.30, i = 1..16: 2^f is the product over the set bits of f. */
-static const uint32_t exp2_bits[16] = {
-    1518500250, 1276901417, 1170923762, 1121280436, 1097253708, 1085434106,
-    1079572136, 1076653033, 1075196443, 1074468888, 1074105294, 1073923544,
-    1073832680, 1073787251, 1073764537, 1073753181,
-};
-
-fx16 fx16_exp2(fx16 x)
-{
-    int32_t ip = x >> 16;
-    uint32_t f = (uint32_t)x & 0xFFFF;
-    if (ip >= 15)
-        return FX16_MAX;
-    if (ip < -17)
-        return 0;
-    uint64_t m = (uint64_t)1 << 30; /* Q2.30 */
-    for (int i = 0; i < 16; i++)
-        if (f & (0x8000u >> i))
-            m = (m * exp2_bits[i] + ((uint64_t)1 << 29)) >> 30;
-    /* m in [1, 2) Q2.30 -> Q16.16 * 2^ip */
-    int sh = 14 - ip;
-    uint64_t r = sh > 0 ? (m + ((uint64_t)1 << (sh - 1))) >> sh : m << -sh;
-    return r > (uint64_t)FX16_MAX ? FX16_MAX : (fx16)r;
-}
-
 typedef struct fract_job {
     const fx_ctx *c;
     fx16 factor;

@@ -114,6 +114,15 @@ static inline fx56 fx56_from_int(int32_t i)
 }
 static inline fx56 fx56_from_fx16(fx16 a) { return (fx56)a * ((fx56)1 << 40); }
 
+/* ---- exponentials and pseudo-random numbers (caller-held state) ---- */
+/* xorshift32 (a zero state is replaced by a fixed non-zero one). */
+uint32_t fx_rand32(uint32_t *state);
+/* A standard normal variate in Q16.16 (range +-6). */
+fx16 fx_gauss16(uint32_t *state);
+/* 2^x for x in Q16.16, result in Q16.16, rounded (x in [-16, 14]; outside,
+ * saturates to 0 or FX16_MAX). Exact at integers. */
+fx16 fx16_exp2(fx16 x);
+
 /* Exact decimal parsing without floating point: "-0.743643887037151",
  * "3", "+.5", "1e-3" is not accepted. The value is rounded to nearest in the
  * target type. Returns the number of characters consumed (> 0), or a negative

@@ -40,13 +40,8 @@ uint64_t fx_koch(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1
  * up, bumps pointing outward. Returns the segments drawn (3 * 4^n). */
 uint64_t fx_koch_snowflake(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r, uint32_t order);
 
-/* xorshift32 (a zero state is replaced by a fixed non-zero one). */
-uint32_t fx_rand32(uint32_t *state);
-/* A standard normal variate in Q16.16 (range +-6). */
-fx16 fx_gauss16(uint32_t *state);
-/* 2^x for x in Q16.16, result in Q16.16, rounded (x in [-16, 14]; outside,
- * saturates to 0 or FX16_MAX). Exact at integers. */
-fx16 fx16_exp2(fx16 x);
+/* fx_rand32, fx_gauss16 and fx16_exp2, which the random fractals use, are
+ * general helpers: see fixed.h. */
 
 typedef struct fx_fract_params {
     fx16 beta;      /* spectral exponent, typically 1.2 .. 1.8 */
