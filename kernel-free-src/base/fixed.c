@@ -22,39 +22,28 @@ static int32_t div_round_sat(int64_t num, int64_t den)
 fx16 fx16_div(fx16 a, fx16 b) { return div_round_sat((int64_t)a * FX16_ONE, b); }
 fx16 fx16_from_ratio(int32_t p, int32_t q) { return div_round_sat((int64_t)p * FX16_ONE, q); }
 
-uint32_t fx_isqrt64(uint64_t n)
-{
-    uint64_t r = 0, bit = (uint64_t)1 << 62;
-    while (bit > n)
-        bit >>= 2;
-    while (bit) {
-        if (n >= r + bit) {
-            n -= r + bit;
-            r = (r >> 1) + bit;
-        } else {
-            r >>= 1;
-        }
-        bit >>= 2;
-    }
-    return (uint32_t)r;
-}
+/* Digit-by-digit square root on T, from the highest even bit TOP down (the
+ * one loop of both widths, so each stays in its own register size). */
+#define ISQRT_BODY(T, TOP)                  \
+    do {                                    \
+        T r = 0, bit = (T)1 << (TOP);       \
+        while (bit > n)                     \
+            bit >>= 2;                      \
+        while (bit) {                       \
+            if (n >= r + bit) {             \
+                n -= r + bit;               \
+                r = (r >> 1) + bit;         \
+            } else {                        \
+                r >>= 1;                    \
+            }                               \
+            bit >>= 2;                      \
+        }                                   \
+        return (uint32_t)r;                 \
+    } while (0)
 
-uint32_t fx_isqrt32(uint32_t n)
-{
-    uint32_t r = 0, bit = (uint32_t)1 << 30;
-    while (bit > n)
-        bit >>= 2;
-    while (bit) {
-        if (n >= r + bit) {
-            n -= r + bit;
-            r = (r >> 1) + bit;
-        } else {
-            r >>= 1;
-        }
-        bit >>= 2;
-    }
-    return r;
-}
+uint32_t fx_isqrt64(uint64_t n) { ISQRT_BODY(uint64_t, 62); }
+uint32_t fx_isqrt32(uint32_t n) { ISQRT_BODY(uint32_t, 30); }
+#undef ISQRT_BODY
 
 fx16 fx16_sqrt(fx16 a) { return a <= 0 ? 0 : (fx16)fx_isqrt64((uint64_t)a << 16); }
 

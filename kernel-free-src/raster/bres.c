@@ -8,15 +8,7 @@
 
 void fx_bres_init(fx_bres *b, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 {
-    int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
-    uint32_t adx = (uint32_t)(dx < 0 ? -dx : dx), ady = (uint32_t)(dy < 0 ? -dy : dy);
-    b->x0 = x0;
-    b->y0 = y0;
-    b->sx = dx > 0 ? 1 : dx < 0 ? -1 : 0;
-    b->sy = dy > 0 ? 1 : dy < 0 ? -1 : 0;
-    b->ymajor = ady > adx;
-    b->major = b->ymajor ? ady : adx;
-    b->minor = b->ymajor ? adx : ady;
+    FX_LINE_AXES_INIT(b, x0, y0, x1, y1);
     fx_bres_seek(b, 0);
 }
 

@@ -229,15 +229,23 @@ void fx_circle(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r)
     circle_pixels(c, cx, cy, r, 0);
 }
 
-void fx_arc(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r, fx_angle a0, fx_angle a1)
+/* draw() on the sector from a0 to a1; equal angles mean the whole turn. */
+static inline void draw_sector(void (*draw)(const fx_ctx *, int32_t, int32_t, int32_t, const sector *),
+                               const fx_ctx *c, int32_t cx, int32_t cy, int32_t r, fx_angle a0,
+                               fx_angle a1)
 {
     if (a0 == a1) {
-        circle_pixels(c, cx, cy, r, 0);
+        draw(c, cx, cy, r, 0);
         return;
     }
     sector s;
     sector_init(&s, a0, a1);
-    circle_pixels(c, cx, cy, r, &s);
+    draw(c, cx, cy, r, &s);
+}
+
+void fx_arc(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r, fx_angle a0, fx_angle a1)
+{
+    draw_sector(circle_pixels, c, cx, cy, r, a0, a1);
 }
 
 /* ---- discs and pie slices ---- */
@@ -334,13 +342,7 @@ void fx_disc(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r) { disc_rows(c, 
 
 void fx_pie(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r, fx_angle a0, fx_angle a1)
 {
-    if (a0 == a1) {
-        disc_rows(c, cx, cy, r, 0);
-        return;
-    }
-    sector s;
-    sector_init(&s, a0, a1);
-    disc_rows(c, cx, cy, r, &s);
+    draw_sector(disc_rows, c, cx, cy, r, a0, a1);
 }
 
 /* ---- antialiased circle ---- */

@@ -5,15 +5,7 @@
 
 void fx_dda_init(fx_dda_iter *d, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 {
-    int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
-    uint32_t adx = (uint32_t)(dx < 0 ? -dx : dx), ady = (uint32_t)(dy < 0 ? -dy : dy);
-    d->x0 = x0;
-    d->y0 = y0;
-    d->sx = dx > 0 ? 1 : dx < 0 ? -1 : 0;
-    d->sy = dy > 0 ? 1 : dy < 0 ? -1 : 0;
-    d->ymajor = ady > adx;
-    d->major = d->ymajor ? ady : adx;
-    d->minor = d->ymajor ? adx : ady;
+    FX_LINE_AXES_INIT(d, x0, y0, x1, y1);
     int neg = (d->ymajor ? d->sx : d->sy) < 0;
     d->inc = 0;
     if (d->major) {

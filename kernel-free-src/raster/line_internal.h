@@ -24,6 +24,22 @@ typedef struct fx_line_axes {
     const void *it;
 } fx_line_axes;
 
+/* The axes of the line (x0, y0) -> (x1, y1) into *p, any struct with the
+ * fields of fx_line_axes (fx_bres, fx_dda_iter): start, signs of the steps,
+ * which axis is major, and the extents along both. */
+#define FX_LINE_AXES_INIT(p, X0, Y0, X1, Y1)                                                \
+    do {                                                                                 \
+        int64_t dx_ = (int64_t)(X1) - (X0), dy_ = (int64_t)(Y1) - (Y0);                  \
+        uint32_t adx_ = (uint32_t)(dx_ < 0 ? -dx_ : dx_), ady_ = (uint32_t)(dy_ < 0 ? -dy_ : dy_); \
+        (p)->x0 = (X0);                                                                  \
+        (p)->y0 = (Y0);                                                                  \
+        (p)->sx = dx_ > 0 ? 1 : dx_ < 0 ? -1 : 0;                                        \
+        (p)->sy = dy_ > 0 ? 1 : dy_ < 0 ? -1 : 0;                                        \
+        (p)->ymajor = ady_ > adx_;                                                       \
+        (p)->major = (p)->ymajor ? ady_ : adx_;                                          \
+        (p)->minor = (p)->ymajor ? adx_ : ady_;                                          \
+    } while (0)
+
 /* The steps [*k0, *k1] of the line whose pixels lie inside clip, exactly:
  * the major axis gives a range of steps directly, the minor axis a range of
  * offsets turned into steps by binary search on minor_at. 0 when none. */
