@@ -192,6 +192,21 @@ static inline int32_t to28(int64_t v)
  * |Re z|, |Im z|, |Re c|, |Im c| <= 2, so every later z has components of at
  * most 6 and nothing overflows. An orbit that returns exactly to a saved
  * point is periodic and never escapes (Brent's doubling checkpoints). */
+/* Brent's cycle check of both escape loops: z is compared with a saved
+ * value re-saved at doubling intervals, and a repeat means z never escapes
+ * (the loop returns max). A macro, so each loop keeps its own types. */
+#define BRENT_CHECK()              \
+    do {                           \
+        if (zr == sr && zi == si)  \
+            return max;            \
+        if (++lap == len) {        \
+            sr = zr;               \
+            si = zi;               \
+            lap = 0;               \
+            len += len;            \
+        }                          \
+    } while (0)
+
 static uint32_t esc32(int32_t zr, int32_t zi, int32_t cr, int32_t ci, uint32_t n, uint32_t max)
 {
     int32_t sr = zr, si = zi;
@@ -203,14 +218,7 @@ static uint32_t esc32(int32_t zr, int32_t zi, int32_t cr, int32_t ci, uint32_t n
         int64_t ri = (int64_t)zr * zi;
         zi = (int32_t)((ri + ((int64_t)1 << 26)) >> 27) + ci;
         zr = (int32_t)((rr - ii + ((int64_t)1 << 27)) >> 28) + cr;
-        if (zr == sr && zi == si)
-            return max;
-        if (++lap == len) {
-            sr = zr;
-            si = zi;
-            lap = 0;
-            len += len;
-        }
+        BRENT_CHECK();
     }
     return n;
 }
@@ -231,14 +239,7 @@ static uint32_t esc64(int64_t zr, int64_t zi, int64_t cr, int64_t ci, uint32_t n
         int64_t ri2 = mulsh(zr, zi, 55);
         zi = ri2 + ci;
         zr = rr - ii + cr;
-        if (zr == sr && zi == si)
-            return max;
-        if (++lap == len) {
-            sr = zr;
-            si = zi;
-            lap = 0;
-            len += len;
-        }
+        BRENT_CHECK();
     }
     return n;
 }

@@ -132,30 +132,60 @@ int fx_bezier(const fx_ctx *c, const int32_t *xy, int n, uint32_t tol)
 /* nearest v / 6 */
 static int64_t div6(int64_t v) { return v >= 0 ? (v + 3) / 6 : -((-v + 3) / 6); }
 
-int fx_bspline(const fx_ctx *c, const int32_t *xy, int n, uint32_t tol)
+/* The cubic pieces 0 .. npieces-1 of a spline through xy, each turned into
+ * a Bézier by piece(), stroked as one path. */
+static void stroke_pieces(const fx_ctx *c, const int32_t *xy, int n, uint32_t tol, int npieces,
+                          void (*piece)(bez *b, const int32_t *xy, int n, int i))
 {
-    if (n < 4)
-        return -FX_EINVAL;
     fx_stroker s;
     fx_stroke_begin(&s, c);
     sink k = {to_stroker, &s, 0};
     int64_t t16 = tol16_of(tol);
-    for (int i = 0; i + 3 < n; i++) {
-        /* Uniform cubic B-spline piece to Bézier: the classic 1-4-1 / 4-2 /
-         * 2-4 / 1-4-1 sixths of the control points. */
+    for (int i = 0; i < npieces; i++) {
         bez b;
-        for (int a = 0; a < 2; a++) {
-            int64_t p0 = c16(xy[2 * i + a]), p1 = c16(xy[2 * i + 2 + a]);
-            int64_t p2 = c16(xy[2 * i + 4 + a]), p3 = c16(xy[2 * i + 6 + a]);
-            int64_t *d = a ? b.y : b.x;
-            d[0] = div6(p0 + 4 * p1 + p2);
-            d[1] = div6(4 * p1 + 2 * p2);
-            d[2] = div6(2 * p1 + 4 * p2);
-            d[3] = div6(p1 + 4 * p2 + p3);
-        }
+        piece(&b, xy, n, i);
         flatten16(&b, 3, t16, i == 0, &k);
     }
     fx_stroke_end(&s);
+}
+
+/* Uniform cubic B-spline piece to Bézier: the classic 1-4-1 / 4-2 / 2-4 /
+ * 1-4-1 sixths of the control points. */
+static void bspline_piece(bez *b, const int32_t *xy, int n, int i)
+{
+    (void)n;
+    for (int a = 0; a < 2; a++) {
+        int64_t p0 = c16(xy[2 * i + a]), p1 = c16(xy[2 * i + 2 + a]);
+        int64_t p2 = c16(xy[2 * i + 4 + a]), p3 = c16(xy[2 * i + 6 + a]);
+        int64_t *d = a ? b->y : b->x;
+        d[0] = div6(p0 + 4 * p1 + p2);
+        d[1] = div6(4 * p1 + 2 * p2);
+        d[2] = div6(2 * p1 + 4 * p2);
+        d[3] = div6(p1 + 4 * p2 + p3);
+    }
+}
+
+/* Catmull-Rom: tangent at P_i is (P_{i+1} - P_{i-1}) / 2, so the Bézier
+ * handles are P_i + that / 3; ends repeat their point. */
+static void catmull_piece(bez *b, const int32_t *xy, int n, int i)
+{
+    int im = i ? i - 1 : 0, ip = i + 2 < n ? i + 2 : n - 1;
+    for (int a = 0; a < 2; a++) {
+        int64_t pm = c16(xy[2 * im + a]), p0 = c16(xy[2 * i + a]);
+        int64_t p1 = c16(xy[2 * i + 2 + a]), pp = c16(xy[2 * ip + a]);
+        int64_t *d = a ? b->y : b->x;
+        d[0] = p0;
+        d[1] = p0 + div6(p1 - pm);
+        d[2] = p1 - div6(pp - p0);
+        d[3] = p1;
+    }
+}
+
+int fx_bspline(const fx_ctx *c, const int32_t *xy, int n, uint32_t tol)
+{
+    if (n < 4)
+        return -FX_EINVAL;
+    stroke_pieces(c, xy, n, tol, n - 3, bspline_piece);
     return 0;
 }
 
@@ -163,26 +193,6 @@ int fx_spline(const fx_ctx *c, const int32_t *xy, int n, uint32_t tol)
 {
     if (n < 2)
         return -FX_EINVAL;
-    fx_stroker s;
-    fx_stroke_begin(&s, c);
-    sink k = {to_stroker, &s, 0};
-    int64_t t16 = tol16_of(tol);
-    for (int i = 0; i + 1 < n; i++) {
-        /* Catmull-Rom: tangent at P_i is (P_{i+1} - P_{i-1}) / 2, so the
-         * Bézier handles are P_i + that / 3; ends repeat their point. */
-        int im = i ? i - 1 : 0, ip = i + 2 < n ? i + 2 : n - 1;
-        bez b;
-        for (int a = 0; a < 2; a++) {
-            int64_t pm = c16(xy[2 * im + a]), p0 = c16(xy[2 * i + a]);
-            int64_t p1 = c16(xy[2 * i + 2 + a]), pp = c16(xy[2 * ip + a]);
-            int64_t *d = a ? b.y : b.x;
-            d[0] = p0;
-            d[1] = p0 + div6(p1 - pm);
-            d[2] = p1 - div6(pp - p0);
-            d[3] = p1;
-        }
-        flatten16(&b, 3, t16, i == 0, &k);
-    }
-    fx_stroke_end(&s);
+    stroke_pieces(c, xy, n, tol, n - 1, catmull_piece);
     return 0;
 }
