@@ -1,6 +1,6 @@
 /* fixel — polygon clipping against a rectangular window: Sutherland-Hodgman,
- * Weiler-Atherton (separate pieces for concave polygons), and an exact
- * pixel-centre fill of Q16.16 pieces.
+ * Weiler-Atherton (separate pieces for concave polygons). The pieces are
+ * filled by fx_poly_fill16 (fill.h, fill/fill.c).
  *
  * Exactness where it matters: an intersection with the window border is a
  * rational that Q16.16 cannot always hold, and rounding it tilts the clipped
@@ -352,58 +352,4 @@ int fx_clip_poly_pieces(fx_rect wr, const fx_pt16 *in, int n, fx_pt16 *out, int 
     }
     starts[pieces] = m;
     return pieces;
-}
-
-/* ---- pixel-centre fill of Q16.16 pieces ---- */
-
-int fx_poly_fill16(const fx_ctx *c, const fx_pt16 *pts, const int *starts, int npieces)
-{
-    int total = npieces > 0 ? starts[npieces] - starts[0] : 0;
-    if (total > FX_POLY_FILL_MAX)
-        return -FX_E2BIG;
-    if (total < 3)
-        return 0;
-    int64_t ymin = INT64_MAX, ymax = INT64_MIN;
-    for (int i = starts[0]; i < starts[npieces]; i++) {
-        ymin = FX_MIN(ymin, (int64_t)pts[i].y);
-        ymax = FX_MAX(ymax, (int64_t)pts[i].y);
-    }
-    /* Rows whose centre Y satisfies ymin <= Y < ymax, inside the clip. */
-    int64_t r0 = -((-ymin) >> 16), r1 = -((-ymax) >> 16); /* ceil */
-    r0 = FX_MAX(r0, (int64_t)c->clip.y0);
-    r1 = FX_MIN(r1, (int64_t)c->clip.y1);
-    int64_t xs[FX_POLY_FILL_MAX];
-    for (int64_t y = r0; y < r1; y++) {
-        int64_t Y = y * ONE;
-        int nx = 0;
-        for (int pc = 0; pc < npieces; pc++) {
-            int a = starts[pc], cnt = starts[pc + 1] - a;
-            for (int i = 0; i < cnt; i++) {
-                fx_pt16 p = pts[a + i], q = pts[a + (i + 1) % cnt];
-                if (p.y == q.y)
-                    continue;
-                if (p.y > q.y) {
-                    fx_pt16 t = p;
-                    p = q;
-                    q = t;
-                }
-                if (Y < p.y || Y >= q.y) /* top row in, bottom row out */
-                    continue;
-                /* ceil of the crossing in pixels: x = p.x + (Y - p.y) dx / dy */
-                int64_t dy = (int64_t)q.y - p.y, dx = (int64_t)q.x - p.x;
-                fx_s128 num = fx_w_add(fx_w_mul(p.x, dy), fx_w_mul(Y - p.y, dx));
-                int64_t xc = fx_w_ceildiv(num, dy * ONE);
-                int j = nx++;
-                while (j > 0 && xs[j - 1] > xc) {
-                    xs[j] = xs[j - 1];
-                    j--;
-                }
-                xs[j] = xc;
-            }
-        }
-        for (int i = 0; i + 1 < nx; i += 2)
-            if (xs[i] < xs[i + 1])
-                fx_hspan(c, (int32_t)y, fx_sat32(xs[i]), fx_sat32(xs[i + 1]));
-    }
-    return 0;
 }

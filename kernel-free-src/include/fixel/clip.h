@@ -27,6 +27,7 @@
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
+#include "fixel/fill.h"  /* fx_poly_fill16 */
 #include "fixel/xform.h" /* fx_pt16 */
 
 /* ctx->line_clipper. Every choice lights the same pixels; they differ in the
@@ -127,21 +128,6 @@ size_t fx_clip_poly_work_size(int n);
 int fx_clip_poly_pieces(fx_rect w, const fx_pt16 *in, int n, fx_pt16 *out, int cap, int *starts,
                         int max_pieces, void *work, size_t work_size);
 
-/* Fill pieces (npieces polygons, piece i = pts[starts[i] .. starts[i+1]-1])
- * as one even-odd region: the pixels whose centres are inside, top-left rule
- * on ties (a centre on a left or top edge is in, on a right or bottom edge
- * out), through c's clip and exterior. Work is bounded by the visible rows.
- * At most FX_POLY_FILL_MAX vertices in all (-FX_E2BIG beyond).
- *
- * Polygon fill proper is fill.h's (fx_fill_path: the edge table, both
- * rules, fill styles, the fast paths). This one is kept for the coverage of
- * clipped or transformed Q16.16 pieces (xform.h rectangles, the scene's
- * clipped polygons): fill.h's pixel-centre rule on Q16.16 vertices, written in the
- * context's colour only (fx_hspan, fill style ignored), for up to
- * FX_POLY_FILL_MAX vertices in 4 KB of stack; fill.c's edge table holds
- * every edge at once at 56 bytes each (28 KB for 512), too much for a
- * kernel-sized stack. */
-#define FX_POLY_FILL_MAX 512
-int fx_poly_fill16(const fx_ctx *c, const fx_pt16 *pts, const int *starts, int npieces);
+/* The pieces are filled with fx_poly_fill16 (fill.h, included above). */
 
 #endif

@@ -1,8 +1,11 @@
 /* fixel — area fills: polygons (even-odd and nonzero), triangles, Gouraud
  * shading, fill styles (patterns, shaders) and the 2D triangle set-up.
+ * Every polygon filler of the core is here (fill/fill.c): fx_fill_path's
+ * edge table and fx_poly_fill16 for clipped Q16.16 pieces.
  *
  * Coverage rule (the pixel model and coverage rule of docs/CONVENTIONS.md;
- * the benchmark's workloads, docs/BENCHMARK.md, are defined with it). Integer vertices are pixel centres: vertex (X, Y) lies on the
+ * the benchmark's workloads, docs/BENCHMARK.md, are defined with it).
+ * Integer vertices are pixel centres: vertex (X, Y) lies on the
  * centre of pixel (X, Y), so pixel (x, y) is sampled at vertex coordinates
  * (x, y). 24.8 vertices (fx8) use the same frame scaled by 256. On row y an
  * edge counts iff min(y0, y1) <= y < max(y0, y1) (so horizontal edges never
@@ -39,6 +42,7 @@
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
+#include "fixel/xform.h" /* fx_pt16 */
 
 typedef enum fx_fill_rule { FX_FILL_EVENODD = 0, FX_FILL_NONZERO = 1 } fx_fill_rule;
 
@@ -98,6 +102,22 @@ typedef struct fx_fill_edge {
  * FX_FILL_STACK_EDGES non-horizontal edges: use fx_fill_path). */
 int fx_fill_poly(const fx_ctx *c, const int32_t *xy, int32_t n, fx_fill_rule rule);
 int fx_fill_poly8(const fx_ctx *c, const fx8 *xy, int32_t n, fx_fill_rule rule);
+
+/* Fill pieces (npieces polygons, piece i = pts[starts[i] .. starts[i+1]-1])
+ * as one even-odd region: the pixels whose centres are inside, top-left rule
+ * on ties (a centre on a left or top edge is in, on a right or bottom edge
+ * out), through c's clip and exterior. Work is bounded by the visible rows.
+ * At most FX_POLY_FILL_MAX vertices in all (-FX_E2BIG beyond).
+ *
+ * Why a second entry beside fx_fill_path: it fills the clipped or
+ * transformed Q16.16 pieces (clip.h's fx_clip_poly_pieces, xform.h's
+ * rectangles, the scene's clipped polygons) with the coverage rule above on
+ * Q16.16 vertices, in the context's colour only (fx_hspan: fill style
+ * ignored), for up to FX_POLY_FILL_MAX vertices in 4 KB of stack. The edge
+ * table holds every edge at once at 56 bytes each (28 KB for 512), too much
+ * for a kernel-sized stack, so it walks rows and divides per crossing. */
+#define FX_POLY_FILL_MAX 512
+int fx_poly_fill16(const fx_ctx *c, const fx_pt16 *pts, const int *starts, int npieces);
 
 /* Several closed contours filled together (holes, glyphs): contour k has
  * counts[k] vertices, taken in order from xy. frac_bits is 0 (integer
