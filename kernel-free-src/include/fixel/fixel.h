@@ -57,7 +57,7 @@
  * colour.h and colormap.h. Benchmark-only code is not library API: it lives
  * in tools/fixel-bench/.
  *
- * Known exception, kept for API stability: fx_poly_fill16 (clip.h) reads
+ * Known exception, kept for API stability: fx_poly_fill16 (fill.h) reads
  * object-verb where the rule says fx_fill_<shape>16.
  */
 #ifndef FIXEL_FIXEL_H
