@@ -1,4 +1,5 @@
-/* The pure logic of the display backends (boards/linux/present.c) on fake
+/* The pure logic of the display backends (boards/display/present.c and
+ * boards/linux/display/formats.c) on fake
  * device state: pixel format from fbdev bitfields, mode strings, damage
  * merging, software rotation in every format; and the presentation path of
  * the display object on the memory backend (shadow, rotation, damage). */
@@ -8,7 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "../../boards/linux/display_int.h"
+#include "../../boards/display/display_int.h"
 #include "fixel/display.h"
 #include "fixel/error.h"
 #include "fixel/surface.h"

@@ -18,8 +18,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../../boards/linux/app_int.h"
-#include "../../boards/linux/display_int.h"
+#include "../../boards/app/app_int.h"
+#include "../../boards/display/display_int.h"
 #include "fixel/draw.h"
 #include "fixel/error.h"
 #include "fixel/memfb.h"

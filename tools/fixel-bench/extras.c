@@ -4,7 +4,7 @@
  * direct), the Gouraud teapot frame, a deep-zoom Mandelbrot frame on the
  * Q8.56 path, and the CPU an idle event loop uses.
  *
- * The display is the memory backend of boards/linux: the same
+ * The display is the memory backend of boards/memory: the same
  * fx_display_present code a DRM or fbdev display runs, with ordinary memory
  * standing in for scanout memory (real scanout memory is often uncached or
  * write-combined, so a board's copy is slower than this one). The memory
@@ -36,7 +36,7 @@
 #include <unistd.h>
 #include <sys/resource.h>
 
-/* The pure copy behind both presentation modes (boards/linux/present.c;
+/* The pure copy behind both presentation modes (boards/display/present.c;
  * declared in the boards' internal display_int.h). */
 void fx_copy_rotated(const fx_surface *dst, const fx_surface *src, fx_rect r, int rotation);
 

@@ -15,10 +15,10 @@
 
 #include "fixel/display.h"
 #include "fixel/input.h"
-#include "../../boards/linux/display_int.h"
+#include "../../boards/display/display_int.h"
 
 #ifndef FX_BOARD_BACKEND
-#define FX_BOARD_BACKEND "auto" /* as boards/linux/display.c */
+#define FX_BOARD_BACKEND "auto" /* as boards/display/display.c */
 #endif
 
 /* A display device exists that this user may not open: the reason to give
@@ -190,7 +190,7 @@ static void input_section(void)
             if (fd >= 0) close(fd);
             continue;
         }
-        /* the same tests as boards/linux/evdev.c classify() */
+        /* the same tests as boards/linux/input/evdev.c classify() */
         unsigned cls = 0;
         if (libevdev_has_event_code(d, EV_KEY, KEY_A) || libevdev_has_event_code(d, EV_KEY, KEY_ENTER) ||
             libevdev_has_event_code(d, EV_KEY, KEY_UP))

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "app_int.h"
+#include "../../app/app_int.h"
 #include "fixel/error.h"
 
 static int open_line(fx_app *a, const char *chipname, int offset, const char *name,

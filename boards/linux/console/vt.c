@@ -21,7 +21,7 @@
 #include <termios.h>
 #include <unistd.h>
 
-#include "display_int.h"
+#include "../../display/display_int.h"
 #include "fixel/error.h"
 
 struct fx_vt {

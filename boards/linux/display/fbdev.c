@@ -15,7 +15,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
-#include "display_int.h"
+#include "../../display/display_int.h"
 #include "fixel/error.h"
 
 /* Longer than any real frame (10 Hz panels included): a wait that takes

@@ -23,7 +23,7 @@
 #include <xf86drm.h>
 #include <xf86drmMode.h>
 
-#include "display_int.h"
+#include "../../display/display_int.h"
 #include "fixel/error.h"
 
 struct drm_buf {

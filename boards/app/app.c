@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "app_int.h"
-#include "display_int.h"
+#include "../display/display_int.h"
 #include "fixel/error.h"
 
 #ifndef FX_BOARD_GPIO_BUTTONS

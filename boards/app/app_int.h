@@ -1,5 +1,5 @@
-/* Internal to boards/linux: the app object shared by app.c, evdev.c and
- * gpio.c. Not installed. */
+/* Internal to boards/: the app object shared by boards/app/app.c and the
+ * input backends (boards/linux/input, boards/linux/absent). Not installed. */
 #ifndef FIXEL_APP_INT_H
 #define FIXEL_APP_INT_H
 

@@ -13,8 +13,8 @@
 #include <sys/inotify.h>
 #include <unistd.h>
 
-#include "app_int.h"
-#include "display_int.h"
+#include "../../app/app_int.h"
+#include "../../display/display_int.h"
 #include "fixel/error.h"
 
 static unsigned classify(struct libevdev *d)

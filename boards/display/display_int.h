@@ -1,6 +1,8 @@
-/* Internal to boards/linux: the display object shared by display.c, drm.c,
- * fbdev.c and vt.c, and the pure helpers of present.c (which tests/core
- * exercises through this header, libevdev style). Not installed. */
+/* Internal to boards/: the display object shared by the front end
+ * (boards/display/display.c), the backends (boards/memory, boards/linux/display,
+ * boards/linux/drm) and the console (boards/linux/console), and the pure
+ * helpers of present.c and formats.c (which tests/core exercises through this
+ * header, libevdev style). Not installed. */
 #ifndef FIXEL_DISPLAY_INT_H
 #define FIXEL_DISPLAY_INT_H
 
@@ -184,6 +186,7 @@ void fx_display_flip_done(fx_display *d);
  * logged reason. */
 int fx_drm_open(fx_display *d);
 int fx_fbdev_open(fx_display *d);
+int fx_memory_open(fx_display *d);
 
 /* For the emergency (signal) path: restore what the backend changed using
  * only async-signal-safe calls. */

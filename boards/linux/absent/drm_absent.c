@@ -1,0 +1,16 @@
+/* Built instead of boards/linux/drm/ when libdrm is not there (a board
+ * toolchain without the target's libraries): the DRM backend reports
+ * itself unavailable, so the automatic order goes on to fbdev and memory. */
+#include "../../display/display_int.h"
+#include "fixel/error.h"
+
+int fx_drm_open(fx_display *d)
+{
+    fx_display_log(d, FX_LOG_DEBUG, "drm: this build has no libdrm");
+    return -FX_ENOTSUP;
+}
+
+void fx_drm_emergency_restore(void *priv)
+{
+    (void)priv;
+}
