@@ -12,6 +12,7 @@
 #include <sys/epoll.h>
 #include <unistd.h>
 
+#include "../linux/console/console_int.h"
 #include "display_int.h"
 #include "fixel/error.h"
 
@@ -24,15 +25,6 @@
 #endif
 
 /* ---- logging ----------------------------------------------------------- */
-
-static void default_log(fx_log_priority p, void *user, const char *fmt, va_list ap)
-{
-    (void)p;
-    (void)user;
-    char line[512];
-    vsnprintf(line, sizeof line, fmt, ap);
-    fprintf(stderr, "fixel: %s\n", line);
-}
 
 static int env_log_priority(void)
 {
@@ -48,18 +40,11 @@ static int env_log_priority(void)
     return FX_LOG_INFO;
 }
 
-void fx_display_logv(const fx_display *d, fx_log_priority p, const char *fmt, va_list ap)
-{
-    if ((int)p > d->log_priority)
-        return;
-    d->log(p, d->log_user, fmt, ap);
-}
-
 void fx_display_log(const fx_display *d, fx_log_priority p, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    fx_display_logv(d, p, fmt, ap);
+    fx_logv(&d->log, p, fmt, ap);
     va_end(ap);
 }
 
@@ -105,6 +90,19 @@ static int parse_backend(const char *s, fx_backend *b)
 
 /* ---- open / close ------------------------------------------------------ */
 
+static int vt_release(void *user);
+static void vt_acquire(void *user);
+
+/* The signal path (async-signal-safe): the backend's restore, then the
+ * console's. */
+static void emergency_restore(void *user)
+{
+    fx_display *d = user;
+    if (d->ops && d->ops->emergency_restore)
+        d->ops->emergency_restore(d);
+    fx_vt_emergency_restore(d->vt);
+}
+
 static int open_backend(fx_display *d, fx_backend b)
 {
     switch (b) {
@@ -142,7 +140,7 @@ static int alloc_shadow(fx_display *d)
     return fx_surface_init(&d->shadow, d->shadow_mem, lw, lh, stride, d->info.format);
 }
 
-int fx_display_resized(fx_display *d)
+static int display_resized(fx_display *d)
 {
     int r = 0;
     if (d->info.present == FX_PRESENT_SHADOW)
@@ -213,9 +211,10 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
     if (!d)
         return -FX_ENOMEM;
     d->opt = *opt;
-    d->log = opt->log ? opt->log : default_log;
-    d->log_user = opt->log_user;
-    d->log_priority = opt->log_priority ? opt->log_priority : env_log_priority();
+    d->log.fn = opt->log ? opt->log : fx_log_stderr;
+    d->log.user = opt->log_user;
+    d->log.priority = opt->log_priority ? opt->log_priority : env_log_priority();
+    d->resized = display_resized;
     d->shown = -1;
     d->epoll_fd = -1;
     d->ptr.sprite = *fx_sprite_arrow();
@@ -319,12 +318,18 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
                    d->opt.rotation ? " " : "", d->opt.rotation ? d->rotation_why : "", why);
 
     if (d->info.backend != FX_BACKEND_MEMORY && d->opt.console) {
-        r = fx_vt_enter(d, &d->vt);
+        const char *e = getenv("FIXEL_VT_SWITCH");
+        if (e && !strcasecmp(e, "deny"))
+            d->opt.vt_switch = FX_VT_SWITCH_DENY;
+        else if (e && !strcasecmp(e, "allow"))
+            d->opt.vt_switch = FX_VT_SWITCH_ALLOW;
+        fx_vt_hooks hooks = {vt_release, vt_acquire, d};
+        r = fx_vt_enter(&d->vt, &d->log, d->opt.vt_switch == FX_VT_SWITCH_DENY, &hooks);
         if (r < 0)
             d->vt = NULL; /* logged; a display without a VT (ssh, serial) still works */
     }
     if (d->opt.signals && d->info.backend != FX_BACKEND_MEMORY)
-        fx_signals_register(d);
+        fx_signals_register(emergency_restore, d);
     d->info.vt = fx_vt_number(d->vt);
 
     /* One fd for event loops: flip events, hotplug and VT switch requests. */
@@ -349,7 +354,7 @@ void fx_display_close(fx_display *d)
     if (d->ops && d->flip_pending)
         d->ops->wait(d, 200);
     if (d->opt.signals && d->info.backend != FX_BACKEND_MEMORY)
-        fx_signals_unregister(d);
+        fx_signals_unregister(emergency_restore, d);
     if (d->ops)
         d->ops->close(d);
     if (d->vt)
@@ -440,14 +445,6 @@ fx_surface fx_display_screen(const fx_display *d)
 
 /* ---- frames ------------------------------------------------------------ */
 
-void fx_display_flip_done(fx_display *d)
-{
-    d->flip_pending = 0;
-    d->info.flips++;
-    if (d->flip_cb)
-        d->flip_cb(d, d->flip_user);
-}
-
 static void wait_flip(fx_display *d)
 {
     if (d->flip_pending)
@@ -456,7 +453,7 @@ static void wait_flip(fx_display *d)
 
 fx_surface fx_display_surface(fx_display *d)
 {
-    fx_vt_handle_events(d);
+    fx_vt_handle_events(d->vt);
     if (d->info.present == FX_PRESENT_SHADOW)
         return d->shadow;
     wait_flip(d);
@@ -504,7 +501,7 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n)
     if (cur.n == 0)
         return 0;
 
-    fx_vt_handle_events(d);
+    fx_vt_handle_events(d->vt);
     /* Switched away, fbdev memory shows another VT's console: leave it
      * alone; the return to our VT redraws from the shadow. */
     if (d->away && d->info.backend == FX_BACKEND_FBDEV)
@@ -569,14 +566,15 @@ int fx_display_fd(const fx_display *d)
 
 int fx_display_dispatch(fx_display *d)
 {
-    fx_vt_handle_events(d);
+    fx_vt_handle_events(d->vt);
     return d->ops->dispatch(d);
 }
 
 /* ---- VT switching ------------------------------------------------------- */
 
-int fx_display_vt_release(fx_display *d)
+static int vt_release(void *user)
 {
+    fx_display *d = user;
     if (d->opt.vt_switch == FX_VT_SWITCH_DENY) {
         d->info.vt_refused++;
         fx_display_log(d, FX_LOG_DEBUG, "VT switch refused (kiosk policy)");
@@ -593,8 +591,9 @@ int fx_display_vt_release(fx_display *d)
     return 1;
 }
 
-void fx_display_vt_acquire(fx_display *d)
+static void vt_acquire(void *user)
 {
+    fx_display *d = user;
     if (d->ops->resume && d->ops->resume(d) < 0)
         fx_display_log(d, FX_LOG_ERROR, "back on our VT but the display could not be retaken");
     if (d->info.backend == FX_BACKEND_FBDEV && d->info.present == FX_PRESENT_SHADOW && d->shown >= 0)

@@ -8,6 +8,7 @@
 
 #include <stdint.h>
 
+#include "../posix/posix_int.h"
 #include "fixel/display.h"
 #include "fixel/sprite.h"
 #include "fixel/surface.h"
@@ -87,18 +88,6 @@ int fx_plane_rotation_choose(int rotation, int has_property, uint32_t mask, int 
  * when nothing usable is offered or want is another format. */
 fx_format fx_drm_format_choose(fx_format want, int has_xrgb, int has_565, const char **why);
 
-/* ---- blocking calls with a timeout (waiter.c) ---- */
-
-typedef struct fx_waiter fx_waiter;
-/* A helper thread (all signals blocked) that runs fn(arg) on request. */
-int fx_waiter_create(fx_waiter **w, int (*fn)(void *arg), void *arg);
-/* Run fn and wait at most timeout_ms: 0 when it returned (its value in
- * *result), 1 when it is still running (a later run waits for, or collects,
- * that same call instead of starting another). */
-int fx_waiter_run(fx_waiter *w, int timeout_ms, int *result);
-/* Stop the thread; one stuck in fn is left to free everything itself. */
-void fx_waiter_destroy(fx_waiter *w);
-
 /* ---- the display object ---- */
 
 struct fx_backend_ops {
@@ -115,15 +104,15 @@ struct fx_backend_ops {
     int (*resume)(fx_display *d);
     /* A second fd for the event loop (DRM: kernel uevents), or -1. */
     int (*hotplug_fd)(const fx_display *d);
+    /* From a fatal or terminating signal: put back what the backend changed
+     * (CRTC, plane rotation) with async-signal-safe calls only; NULL when
+     * there is nothing to restore. */
+    void (*emergency_restore)(fx_display *d);
 };
-
-typedef struct fx_vt fx_vt;
 
 struct fx_display {
     fx_display_options opt;
-    fx_log_func log;
-    void *log_user;
-    int log_priority;
+    fx_logger log;          /* the program's log function and level */
 
     const struct fx_backend_ops *ops;
     void *priv;
@@ -150,13 +139,17 @@ struct fx_display {
     void (*flip_cb)(fx_display *d, void *user);
     void *flip_user;
 
-    fx_vt *vt;
+    struct fx_vt *vt;       /* the console (boards/linux/console), NULL when none */
     int epoll_fd;           /* DRM fd + VT signal pipe, for event loops */
     int away;               /* our VT is not on screen */
     void (*vt_cb)(fx_display *d, int active, void *user);
     void *vt_user;
     void (*reshape_cb)(fx_display *d, int32_t w, int32_t h, void *user);
     void *reshape_user;
+    /* Set by the front end: backends call it after replacing scan[] with
+     * buffers of a new size (d->info.width/height updated); the shadow
+     * follows, the program is told. */
+    int (*resized)(fx_display *d);
 
     /* Software pointer: drawn only into scanout buffers, never into the
      * program's surface (direct mode takes it out again before handing the
@@ -174,46 +167,20 @@ struct fx_display {
     } ptr;
 };
 
-/* Backends call this after replacing scan[] with buffers of a new size
- * (d->info.width/height updated): the shadow follows, the program is told. */
-int fx_display_resized(fx_display *d);
-
-void fx_display_logv(const fx_display *d, fx_log_priority p, const char *fmt, va_list ap);
-/* Called by backends when a flip completes. */
-void fx_display_flip_done(fx_display *d);
+/* Backends call this when a flip completes. */
+static inline void fx_display_flip_done(fx_display *d)
+{
+    d->flip_pending = 0;
+    d->info.flips++;
+    if (d->flip_cb)
+        d->flip_cb(d, d->flip_user);
+}
 
 /* Backends: fill d->scan[], d->nbuf, d->info and d->ops, or fail with a
- * logged reason. */
+ * logged reason. The front end calls them (boards/memory,
+ * boards/linux/display, boards/linux/drm or boards/linux/absent). */
 int fx_drm_open(fx_display *d);
 int fx_fbdev_open(fx_display *d);
 int fx_memory_open(fx_display *d);
-
-/* For the emergency (signal) path: restore what the backend changed using
- * only async-signal-safe calls. */
-void fx_drm_emergency_restore(void *priv);
-
-/* Console: switch to graphics and mute the keyboard; restore. */
-int fx_vt_enter(fx_display *d, fx_vt **out);
-void fx_vt_leave(fx_vt *vt);
-/* VT_PROCESS switching: the fd that becomes readable when a switch is
- * requested (-1 when switching is not handled), and the handler that reads
- * it and calls back into display.c (fx_display_vt_release/acquire). */
-int fx_vt_event_fd(const fx_vt *vt);
-void fx_vt_handle_events(fx_display *d);
-int fx_vt_number(const fx_vt *vt);
-int fx_vt_activate(fx_vt *vt, int n);
-/* display.c: leave or retake the screen; release returns 1 to allow. */
-int fx_display_vt_release(fx_display *d);
-void fx_display_vt_acquire(fx_display *d);
-
-/* Fatal/terminating-signal restoration: each open display registers its
- * backend restore and console. */
-void fx_signals_register(fx_display *d);
-void fx_signals_unregister(fx_display *d);
-/* The emergency path for one display (async-signal-safe). */
-void fx_vt_emergency_restore(fx_vt *vt);
-
-/* When open() on path fails with EACCES, name the group that owns the node. */
-void fx_log_access_hint(const fx_display *d, const char *path);
 
 #endif

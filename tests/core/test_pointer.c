@@ -244,8 +244,8 @@ static fx_app *open_app(int32_t w, int32_t h, int rot, const config *cf, fx_poin
 
 static void close_app(fx_app *a, void *second)
 {
-    while (a->ndevs)
-        free(a->devs[--a->ndevs]); /* ours, without fds */
+    while (a->ev.ndevs)
+        free(a->ev.devs[--a->ev.ndevs]); /* ours, without fds */
     fx_app_close(a);
     free(second);
 }
@@ -379,7 +379,7 @@ static void replay(const char *stream, const config *cf)
                 dev[N]->st.abs_min[1] = atoi(w[6]);
                 dev[N]->st.abs_max[1] = atoi(w[7]);
             }
-            p.app->devs[p.app->ndevs++] = dev[N];
+            p.app->ev.devs[p.app->ev.ndevs++] = dev[N];
         } else if ((!strcmp(w[0], "ev") && n >= 5) || (!strcmp(w[0], "syn") && n >= 2)) {
             int N = atoi(w[1]) & 3;
             fx_raw_event ev = {0, 0, 0, 0};
@@ -455,7 +455,7 @@ static fx_evdev *add_dev(fx_app *a, unsigned cls)
     fx_evdev *e = calloc(1, sizeof *e);
     e->fd = -1;
     fx_input_dev_init(&e->st, cls);
-    a->devs[a->ndevs++] = e;
+    a->ev.devs[a->ev.ndevs++] = e;
     return e;
 }
 

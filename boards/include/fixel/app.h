@@ -35,6 +35,7 @@
 #ifndef FIXEL_APP_H
 #define FIXEL_APP_H
 
+#include "fixel/buttons.h"
 #include "fixel/display.h"
 #include "fixel/event.h"
 #include "fixel/surface.h"
@@ -46,17 +47,6 @@ typedef enum fx_pointer_mode {
     FX_POINTER_ON,   /* shown (still hidden by touch input until the mouse moves) */
     FX_POINTER_OFF,
 } fx_pointer_mode;
-
-/* A GPIO push button. */
-typedef struct fx_gpio_button {
-    const char *chip;     /* "gpiochip0", "0" or a path; NULL: search every chip for name */
-    int offset;           /* line offset, or -1 to look the line up by name */
-    const char *name;     /* line name (used when offset < 0) */
-    int active_low;       /* 1: pressed pulls the line low */
-    unsigned debounce_ms; /* 0: 20 ms */
-    int key;              /* character (keyboard callback) or, with special = 1, FX_KEY_* */
-    int special;
-} fx_gpio_button;
 
 typedef struct fx_app_options {
     fx_display_options display;
@@ -105,13 +95,5 @@ int fx_app_input_count(const fx_app *a);
 /* GLUT-style calls on the most recently opened app. */
 void fx_post_redisplay(void);
 int fx_main_loop(void);
-
-/* Parse "CHIP:LINE=KEY[/low][@MS],..." (LINE: offset or line name; an empty
- * CHIP searches every chip for the line name; /low: active low with the
- * pull-up enabled; @MS: debounce time; KEY: a
- * single character, or up, down, left, right, pageup, pagedown, home, end,
- * insert, f1..f12, enter, esc, space, tab). Names point into buf, which is
- * modified. Returns the number of buttons, or -FX_EINVAL. */
-int fx_gpio_parse_buttons(char *buf, fx_gpio_button *out, int max);
 
 #endif

@@ -37,6 +37,7 @@
 #include <stdarg.h>
 #include <stdint.h>
 
+#include "fixel/log.h"
 #include "fixel/sprite.h"
 #include "fixel/surface.h"
 
@@ -62,15 +63,6 @@ typedef enum fx_vt_switch {
                            while away (DRM master released), redraw on return */
     FX_VT_SWITCH_DENY,  /* kiosk: refuse every switch away from the program's VT */
 } fx_vt_switch;
-
-/* Lower is more important, as in syslog. */
-typedef enum fx_log_priority {
-    FX_LOG_ERROR = 10,
-    FX_LOG_INFO = 20,
-    FX_LOG_DEBUG = 30,
-} fx_log_priority;
-
-typedef void (*fx_log_func)(fx_log_priority priority, void *user, const char *fmt, va_list args);
 
 typedef struct fx_display_options {
     fx_backend backend;

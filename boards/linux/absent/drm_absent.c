@@ -6,11 +6,6 @@
 
 int fx_drm_open(fx_display *d)
 {
-    fx_display_log(d, FX_LOG_DEBUG, "drm: this build has no libdrm");
+    fx_log(&d->log, FX_LOG_DEBUG, "drm: this build has no libdrm");
     return -FX_ENOTSUP;
-}
-
-void fx_drm_emergency_restore(void *priv)
-{
-    (void)priv;
 }
