@@ -62,7 +62,7 @@ CORE_SRC   := $(sort $(wildcard kernel-free-src/*/*.c))
 # boards/: every .c of these folders; the folders that need libdrm, libevdev
 # and libgpiod only when they are there (boards/linux/absent/ stands in for
 # them otherwise, so the memory backend and fx_app still link).
-BOARD_DIRS     := posix memory display app linux/display linux/console
+BOARD_DIRS     := posix memory display app env linux/display linux/console
 BOARD_LIB_DIRS := linux/drm linux/input
 BOARD_SRC  := $(sort $(foreach d,$(BOARD_DIRS) $(if $(HAVE_OPT),$(BOARD_LIB_DIRS),linux/absent),\
                                  $(wildcard boards/$(d)/*.c)))

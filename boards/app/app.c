@@ -105,19 +105,6 @@ int fx_app_set_pointer_sprite(fx_app *a, const fx_sprite *s)
     return fx_display_set_pointer_sprite(a->disp, s);
 }
 
-static fx_pointer_mode pointer_mode_from_env(fx_app *a)
-{
-    const char *e = getenv("FIXEL_POINTER");
-    if (!e || !*e || !strcasecmp(e, "auto"))
-        return FX_POINTER_AUTO;
-    if (!strcasecmp(e, "on") || !strcmp(e, "1"))
-        return FX_POINTER_ON;
-    if (!strcasecmp(e, "off") || !strcmp(e, "0"))
-        return FX_POINTER_OFF;
-    fx_display_log(a->disp, FX_LOG_ERROR, "FIXEL_POINTER=%s ignored (on, off or auto)", e);
-    return FX_POINTER_AUTO;
-}
-
 void fx_app_options_init(fx_app_options *o)
 {
     memset(o, 0, sizeof *o);
@@ -127,10 +114,9 @@ void fx_app_options_init(fx_app_options *o)
 
 static void load_pointercal(fx_app *a, const char *path)
 {
-    const char *env = getenv("FIXEL_POINTERCAL");
-    int explicit = path || env;
+    int explicit = path != NULL;
     if (!path)
-        path = env ? env : "/etc/pointercal";
+        path = "/etc/pointercal";
     FILE *f = fopen(path, "r");
     if (!f) {
         if (explicit)
@@ -172,7 +158,7 @@ int fx_app_open(fx_app **out, const fx_app_options *o)
     a->gpio.clock = (fx_clock){clock_now, NULL};
     a->gpio.log = a->disp->log;
     load_pointercal(a, o->pointercal);
-    const char *touch = getenv("FIXEL_TOUCH");
+    const char *touch = o->touch;
     if (touch) {
         a->ev.calib.swap_xy = strstr(touch, "swap") != NULL;
         a->ev.calib.invert_x = strstr(touch, "invertx") != NULL;
@@ -182,9 +168,9 @@ int fx_app_open(fx_app **out, const fx_app_options *o)
         fx_evdev_scan(&a->ev);
     if (o->buttons && o->nbuttons > 0) {
         fx_gpio_open_buttons(&a->gpio, o->buttons, o->nbuttons);
-    } else if (getenv("FIXEL_BUTTONS") || FX_BOARD_GPIO_BUTTONS[0]) {
-        /* FIXEL_BUTTONS, else the board profile's default map */
-        const char *src = getenv("FIXEL_BUTTONS") ? getenv("FIXEL_BUTTONS") : FX_BOARD_GPIO_BUTTONS;
+    } else if (o->button_map || FX_BOARD_GPIO_BUTTONS[0]) {
+        /* the map (FIXEL_BUTTONS), else the board profile's default map */
+        const char *src = o->button_map ? o->button_map : FX_BOARD_GPIO_BUTTONS;
         char *spec = strdup(src);
         fx_gpio_button b[FX_GPIO_MAX_IN];
         int n = spec ? fx_gpio_parse_buttons(spec, b, FX_GPIO_MAX_IN) : -FX_ENOMEM;
@@ -204,7 +190,7 @@ int fx_app_open(fx_app **out, const fx_app_options *o)
      * normally and fx_app_close restores the console. */
     sigprocmask(SIG_BLOCK, &set, NULL);
     a->sfd = signalfd(-1, &set, SFD_NONBLOCK | SFD_CLOEXEC);
-    a->pointer_mode = o->pointer != FX_POINTER_AUTO ? o->pointer : pointer_mode_from_env(a);
+    a->pointer_mode = o->pointer;
     fx_app_pointer_sync(a); /* drawn with the first frame */
     current = a;
     *out = a;

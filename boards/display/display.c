@@ -26,20 +26,6 @@
 
 /* ---- logging ----------------------------------------------------------- */
 
-static int env_log_priority(void)
-{
-    const char *e = getenv("FIXEL_LOG");
-    if (!e || !*e)
-        return FX_LOG_INFO;
-    if (!strcasecmp(e, "debug"))
-        return FX_LOG_DEBUG;
-    if (!strcasecmp(e, "error"))
-        return FX_LOG_ERROR;
-    if (!strcasecmp(e, "none"))
-        return 0;
-    return FX_LOG_INFO;
-}
-
 void fx_display_log(const fx_display *d, fx_log_priority p, const char *fmt, ...)
 {
     va_list ap;
@@ -56,6 +42,7 @@ void fx_display_options_init(fx_display_options *o)
     o->backend = FX_BACKEND_AUTO;
     o->present = FX_PRESENT_AUTO;
     o->format = FX_FMT_COUNT;
+    o->drm_format = FX_FMT_COUNT;
     o->rotation = -1;
     o->console = 1;
     o->signals = 1;
@@ -165,15 +152,6 @@ static int choose_present(fx_display *d)
 {
     fx_present_mode m = d->opt.present;
     const char *why;
-    const char *env = getenv("FIXEL_PRESENT");
-    if (m == FX_PRESENT_AUTO && env && *env) {
-        if (!strcasecmp(env, "direct"))
-            m = FX_PRESENT_DIRECT;
-        else if (!strcasecmp(env, "shadow"))
-            m = FX_PRESENT_SHADOW;
-        else
-            fx_display_log(d, FX_LOG_ERROR, "FIXEL_PRESENT=%s ignored (direct or shadow)", env);
-    }
     if (m == FX_PRESENT_DIRECT && d->sw_rotation != 0) {
         fx_display_log(d, FX_LOG_INFO, "rotation %d needs a back buffer: shadow presentation",
                        d->sw_rotation);
@@ -213,7 +191,7 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
     d->opt = *opt;
     d->log.fn = opt->log ? opt->log : fx_log_stderr;
     d->log.user = opt->log_user;
-    d->log.priority = opt->log_priority ? opt->log_priority : env_log_priority();
+    d->log.priority = opt->log_priority ? opt->log_priority : FX_LOG_INFO;
     d->resized = display_resized;
     d->shown = -1;
     d->epoll_fd = -1;
@@ -223,10 +201,8 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
         d->ptr.save[i].cap = FX_SPRITE_MAX * FX_SPRITE_MAX;
     }
 
-    if (d->opt.rotation < 0) {
-        const char *e = getenv("FIXEL_ROTATION");
-        d->opt.rotation = e && *e ? atoi(e) : FX_BOARD_ROTATION;
-    }
+    if (d->opt.rotation < 0)
+        d->opt.rotation = FX_BOARD_ROTATION;
     if (d->opt.rotation != 0 && d->opt.rotation != 90 && d->opt.rotation != 180 &&
         d->opt.rotation != 270) {
         fx_display_log(d, FX_LOG_ERROR, "rotation %d is not 0, 90, 180 or 270", d->opt.rotation);
@@ -239,18 +215,11 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
     fx_backend b = d->opt.backend;
     char reasons[256] = "";
     const char *why = "requested by the program";
-    if (b == FX_BACKEND_AUTO) {
-        const char *e = getenv("FIXEL_BACKEND");
-        if (e && *e) {
-            if (parse_backend(e, &b) < 0) {
-                fx_display_log(d, FX_LOG_ERROR, "FIXEL_BACKEND=%s: use drm, fbdev or memory", e);
-                free(d);
-                return -FX_EINVAL;
-            }
-            why = "FIXEL_BACKEND";
-        } else if (parse_backend(FX_BOARD_BACKEND, &b) == 0 && b != FX_BACKEND_AUTO) {
+    if (d->opt.backend_from_env) {
+        why = "FIXEL_BACKEND"; /* and FIXEL_BACKEND=auto skips the board default */
+    } else if (b == FX_BACKEND_AUTO) {
+        if (parse_backend(FX_BOARD_BACKEND, &b) == 0 && b != FX_BACKEND_AUTO)
             why = "board profile default";
-        }
     }
 
     int r;
@@ -318,11 +287,6 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
                    d->opt.rotation ? " " : "", d->opt.rotation ? d->rotation_why : "", why);
 
     if (d->info.backend != FX_BACKEND_MEMORY && d->opt.console) {
-        const char *e = getenv("FIXEL_VT_SWITCH");
-        if (e && !strcasecmp(e, "deny"))
-            d->opt.vt_switch = FX_VT_SWITCH_DENY;
-        else if (e && !strcasecmp(e, "allow"))
-            d->opt.vt_switch = FX_VT_SWITCH_ALLOW;
         fx_vt_hooks hooks = {vt_release, vt_acquire, d};
         r = fx_vt_enter(&d->vt, &d->log, d->opt.vt_switch == FX_VT_SWITCH_DENY, &hooks);
         if (r < 0)

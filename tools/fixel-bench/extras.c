@@ -23,6 +23,8 @@
 
 #include <fixel/app.h>
 #include <fixel/display.h>
+#include <fixel/env.h>
+#include <fixel/scanout.h>
 #include <fixel/fractal.h>
 #include <fixel/fractal_mt.h>
 #include <fixel/render3d.h>
@@ -36,9 +38,6 @@
 #include <unistd.h>
 #include <sys/resource.h>
 
-/* The pure copy behind both presentation modes (boards/display/present.c;
- * declared in the boards' internal display_int.h). */
-void fx_copy_rotated(const fx_surface *dst, const fx_surface *src, fx_rect r, int rotation);
 
 #define XMAX 24
 
@@ -177,7 +176,7 @@ static fx_display *open_memory(fx_format f, fx_present_mode m, int rotation)
     o.signals = 0;
     o.log = quiet_log;
     fx_display *d = NULL;
-    if (fx_display_open(&d, &o) < 0) return NULL;
+    if (fx_display_options_from_env(&o) < 0 || fx_display_open(&d, &o) < 0) return NULL;
     return d;
 }
 
@@ -382,7 +381,7 @@ static void idle_group(void)
     o.input = 0; /* no devices: the bench may run where /dev/input is readable */
     fx_app *a = NULL;
     struct xrow *r = new_row("CPU %", 0, "idle.main_loop.3s");
-    if (fx_app_open(&a, &o) < 0) {
+    if (fx_app_options_from_env(&o) < 0 || fx_app_open(&a, &o) < 0) {
         snprintf(r->note, sizeof r->note, "fx_app_open failed");
         return;
     }

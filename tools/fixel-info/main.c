@@ -14,8 +14,9 @@
 #include <linux/fb.h>
 
 #include "fixel/display.h"
+#include "fixel/env.h"
 #include "fixel/input.h"
-#include "../../boards/display/display_int.h"
+#include "fixel/scanout.h"
 
 #ifndef FX_BOARD_BACKEND
 #define FX_BOARD_BACKEND "auto" /* as boards/display/display.c */
@@ -260,7 +261,7 @@ static void choice_section(void)
     o.signals = 0;
     fx_display *d = NULL;
     fflush(stdout);
-    if (fx_display_open(&d, &o) < 0) {
+    if (fx_display_options_from_env(&o) < 0 || fx_display_open(&d, &o) < 0) {
         printf("  nothing opened (the reasons are logged above on stderr)\n");
         if (display_denied)
             printf("  why: permission denied on the display devices listed above\n");

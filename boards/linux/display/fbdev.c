@@ -168,7 +168,7 @@ int fx_fbdev_open(fx_display *d)
     if (path && !strstr(path, "fb"))
         path = NULL; /* a /dev/dri/cardN device is for the DRM backend */
     if (!path)
-        path = getenv("FIXEL_FB_DEVICE");
+        path = d->opt.fb_device;
     if (!path || !*path)
         path = "/dev/fb0";
     snprintf(d->device, sizeof d->device, "%s", path);

@@ -90,7 +90,7 @@ static drmModeConnectorPtr pick_connector(fx_display *d, int fd, drmModeResPtr r
 
 static int pick_mode(fx_display *d, drmModeConnectorPtr c, drmModeModeInfo *out)
 {
-    const char *want = d->opt.mode ? d->opt.mode : getenv("FIXEL_MODE");
+    const char *want = d->opt.mode;
     if (want && *want) {
         int32_t w, h, hz;
         if (fx_mode_parse(want, &w, &h, &hz) < 0) {
@@ -591,7 +591,7 @@ static int find_card(fx_display *d, int *fd_out)
     if (want && !strstr(want, "/dri/"))
         want = NULL; /* a /dev/fbN device is for the fbdev backend */
     if (!want)
-        want = getenv("FIXEL_DRM_DEVICE");
+        want = d->opt.drm_device;
     if (want && *want) {
         snprintf(d->device, sizeof d->device, "%s", want); /* named in errors */
         int fd = open_card(d, want, 0);
@@ -664,7 +664,7 @@ int fx_drm_open(fx_display *d)
         fx_log(&d->log, FX_LOG_ERROR, "%s: cannot read KMS resources: %s", d->device, strerror(errno));
         return neg_errno();
     }
-    const char *want = d->opt.connector ? d->opt.connector : getenv("FIXEL_CONNECTOR");
+    const char *want = d->opt.connector;
     if (want && !*want)
         want = NULL;
     drmModeConnectorPtr c = pick_connector(d, fd, res, want);
@@ -688,16 +688,7 @@ int fx_drm_open(fx_display *d)
     if (r < 0)
         return r;
 
-    fx_format fwant = d->opt.format;
-    const char *fenv = getenv("FIXEL_DRM_FORMAT");
-    if (fwant == FX_FMT_COUNT && fenv && *fenv && strcasecmp(fenv, "auto")) {
-        if (!strcasecmp(fenv, "XRGB8888"))
-            fwant = FX_FMT_XRGB8888;
-        else if (!strcasecmp(fenv, "RGB565"))
-            fwant = FX_FMT_RGB565;
-        else
-            fx_log(&d->log, FX_LOG_ERROR, "FIXEL_DRM_FORMAT=%s ignored (XRGB8888 or RGB565)", fenv);
-    }
+    fx_format fwant = d->opt.format != FX_FMT_COUNT ? d->opt.format : d->opt.drm_format;
 #ifdef FX_BOARD_DRM_FORMAT_RGB565
     if (fwant == FX_FMT_COUNT)
         fwant = FX_FMT_RGB565; /* the board profile's 16-bit panel */
@@ -714,8 +705,7 @@ int fx_drm_open(fx_display *d)
         fx_log(&d->log, FX_LOG_INFO, "primary plane has no %s; using %s", fx_format_get(fwant)->name,
                        fx_format_get(f)->name);
 
-    const char *sw = getenv("FIXEL_SW_ROTATION");
-    int force_sw = d->opt.sw_rotation || (sw && *sw && strcmp(sw, "0"));
+    int force_sw = d->opt.sw_rotation;
     int hw = fx_plane_rotation_choose(d->opt.rotation, pl.rot_prop != 0, pl.rot_mask, force_sw,
                                       &d->rotation_why);
     if (pl.rot_prop) {
