@@ -1,8 +1,9 @@
-/* Internal to boards/: the display object shared by the front end
- * (boards/display/display.c), the backends (boards/memory, boards/linux/display,
- * boards/linux/drm) and the console (boards/linux/console), and the pure
- * helpers of present.c and formats.c (which tests/core exercises through this
- * header, libevdev style). Not installed. */
+/* Internal to boards/: the display object and the backend ops table, shared
+ * by the front end (boards/display/display.c, which also sees the console)
+ * and the backends (boards/memory, boards/linux/display, boards/linux/drm),
+ * which see only this header and the posix layer; and the pure helpers of
+ * present.c and formats.c (which tests/core exercises through this header,
+ * libevdev style). Not installed. */
 #ifndef FIXEL_DISPLAY_INT_H
 #define FIXEL_DISPLAY_INT_H
 

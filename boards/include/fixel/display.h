@@ -198,7 +198,7 @@ int fx_display_set_pointer_sprite(fx_display *d, const fx_sprite *s);
 fx_surface fx_display_screen(const fx_display *d);
 const char *fx_backend_name(fx_backend b);
 
-/* Log through the display's log function (used by other board modules). */
+/* Log through the display's log function and level (fx_app uses it). */
 void fx_display_log(const fx_display *d, fx_log_priority p, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
