@@ -41,8 +41,8 @@ BASEFLAGS := $(CSTD) $(WARN) $(OPT) -g $(CPU_FLAGS) $(BOARD_DEFS) $(SANFLAGS) -f
 
 # Libraries the boards side and the tools use (installed by `make deps`).
 # Without libpng (a board toolchain with no target libraries) images are PPM
-# only; without libdrm/libevdev/libgpiod the boards/linux backends are left
-# out. The core never needs either.
+# only; without libdrm/libevdev/libgpiod the DRM and input backends are left
+# out (see BOARD_LIB_DIRS). The core never needs either.
 SYS_PKGS := libpng zlib
 OPT_PKGS := libdrm libevdev libgpiod
 HAVE_PNG := $(shell $(PKG_CONFIG) --exists $(SYS_PKGS) 2>/dev/null && echo 1)
@@ -59,8 +59,13 @@ endif
 LDLIBS   := $(PKG_LIBS) -lpthread -lm
 
 CORE_SRC   := $(sort $(wildcard kernel-free-src/*/*.c))
-BOARD_SRC  := $(sort $(wildcard boards/memory/*.c) boards/linux/present.c boards/linux/buttons.c \
-                     $(if $(HAVE_OPT),$(wildcard boards/linux/*.c)))
+# boards/: every .c of these folders; the folders that need libdrm, libevdev
+# and libgpiod only when they are there (boards/linux/absent/ stands in for
+# them otherwise, so the memory backend and fx_app still link).
+BOARD_DIRS     := posix memory display app env linux/display linux/console
+BOARD_LIB_DIRS := linux/drm linux/input
+BOARD_SRC  := $(sort $(foreach d,$(BOARD_DIRS) $(if $(HAVE_OPT),$(BOARD_LIB_DIRS),linux/absent),\
+                                 $(wildcard boards/$(d)/*.c)))
 LIB_SRC    := $(CORE_SRC) $(BOARD_SRC)
 LIB_OBJ    := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 LIB_A      := $(BUILD)/libfixel.a

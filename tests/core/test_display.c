@@ -1,4 +1,5 @@
-/* The pure logic of the display backends (boards/linux/present.c) on fake
+/* The pure logic of the display backends (boards/display/present.c and
+ * boards/linux/display/formats.c) on fake
  * device state: pixel format from fbdev bitfields, mode strings, damage
  * merging, software rotation in every format; and the presentation path of
  * the display object on the memory backend (shadow, rotation, damage). */
@@ -8,7 +9,9 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "../../boards/linux/display_int.h"
+#include "../../boards/display/display_int.h"
+#include "fixel/env.h"
+#include "fixel/scanout.h" /* public: fx_fb_format_from_bitfields, fx_copy_rotated are tested here */
 #include "fixel/display.h"
 #include "fixel/error.h"
 #include "fixel/surface.h"
@@ -367,6 +370,42 @@ FX_TEST(memory_display_presents_only_damage_rotated)
     }
 }
 
+FX_TEST(display_options_from_env_fills_unset_fields)
+{
+    static const char *vars[] = {"FIXEL_PRESENT", "FIXEL_DRM_DEVICE", "FIXEL_FB_DEVICE", "FIXEL_CONNECTOR",
+                                 "FIXEL_MODE", "FIXEL_DRM_FORMAT", "FIXEL_SW_ROTATION", "FIXEL_VT_SWITCH",
+                                 "FIXEL_LOG"};
+    static const char *vals[] = {"shadow", "/dev/dri/card7", "/dev/fb7", "DSI-1", "800x480",
+                                 "rgb565", "1", "deny", "none"};
+    for (int i = 0; i < 9; i++)
+        setenv(vars[i], vals[i], 1);
+    fx_display_options o;
+    fx_display_options_init(&o);
+    FX_CHECK_EQ(fx_display_options_from_env(&o), 0);
+    FX_CHECK(o.present == FX_PRESENT_SHADOW && !strcmp(o.drm_device, "/dev/dri/card7") &&
+             !strcmp(o.fb_device, "/dev/fb7") && !strcmp(o.connector, "DSI-1") && !strcmp(o.mode, "800x480"));
+    /* FIXEL_DRM_FORMAT is for DRM only: the memory backend keeps format */
+    FX_CHECK(o.format == FX_FMT_COUNT && o.drm_format == FX_FMT_RGB565 && o.sw_rotation == 1);
+    FX_CHECK(o.vt_switch == FX_VT_SWITCH_DENY && o.log_priority < 0 && !o.device);
+    /* set by the program: kept */
+    fx_display_options_init(&o);
+    o.present = FX_PRESENT_DIRECT;
+    o.connector = "HDMI-A-1";
+    o.format = FX_FMT_XRGB8888;
+    o.log_priority = FX_LOG_DEBUG;
+    FX_CHECK_EQ(fx_display_options_from_env(&o), 0);
+    FX_CHECK(o.present == FX_PRESENT_DIRECT && !strcmp(o.connector, "HDMI-A-1") &&
+             o.drm_format == FX_FMT_COUNT && o.log_priority == FX_LOG_DEBUG);
+    for (int i = 0; i < 9; i++)
+        unsetenv(vars[i]);
+    /* nothing set: nothing changes */
+    fx_display_options a, b;
+    fx_display_options_init(&a);
+    fx_display_options_init(&b);
+    FX_CHECK_EQ(fx_display_options_from_env(&a), 0);
+    FX_CHECK(memcmp(&a, &b, sizeof a) == 0);
+}
+
 FX_TEST(display_backend_choice_from_environment_and_bad_options)
 {
     int calls = 0;
@@ -379,7 +418,30 @@ FX_TEST(display_backend_choice_from_environment_and_bad_options)
     o.memory_w = 8;
     o.memory_h = 8;
 
+    /* The library never reads the environment: only from_env does. */
+    setenv("FIXEL_BACKEND", "vga", 1);
+    setenv("FIXEL_ROTATION", "180", 1);
+    fx_display_options p = o;
+    p.backend = FX_BACKEND_MEMORY;
+    FX_CHECK_EQ(fx_display_open(&d, &p), 0);
+    if (d) {
+        fx_display_info info;
+        fx_display_get_info(d, &info);
+        FX_CHECK(info.rotation == 0 && strstr(last_log, "requested by the program"));
+    }
+    fx_display_close(d);
+    /* A value the program set wins over the environment, which fills the rest. */
+    p.rotation = 90;
+    FX_CHECK_EQ(fx_display_options_from_env(&p), 0);
+    FX_CHECK(p.rotation == 90 && p.backend == FX_BACKEND_MEMORY && !p.backend_from_env);
+    p = o;
+    FX_CHECK_EQ(fx_display_options_from_env(&p), -FX_EINVAL);
+    FX_CHECK(p.rotation == 180 && p.backend == FX_BACKEND_AUTO);
+    unsetenv("FIXEL_ROTATION");
+
     setenv("FIXEL_BACKEND", "memory", 1);
+    FX_CHECK_EQ(fx_display_options_from_env(&o), 0);
+    FX_CHECK(o.backend == FX_BACKEND_MEMORY && o.backend_from_env);
     FX_CHECK_EQ(fx_display_open(&d, &o), 0);
     FX_CHECK(d && strstr(last_log, "FIXEL_BACKEND"));
     if (d) {
@@ -391,8 +453,10 @@ FX_TEST(display_backend_choice_from_environment_and_bad_options)
     fx_display_close(d);
 
     setenv("FIXEL_BACKEND", "vga", 1);
-    FX_CHECK_EQ(fx_display_open(&d, &o), -FX_EINVAL);
-    FX_CHECK(d == NULL && strstr(last_log, "drm, fbdev or memory"));
+    o.backend = FX_BACKEND_AUTO;
+    o.backend_from_env = 0;
+    FX_CHECK_EQ(fx_display_options_from_env(&o), -FX_EINVAL);
+    FX_CHECK(o.backend == FX_BACKEND_AUTO && strstr(last_log, "drm, fbdev or memory"));
     unsetenv("FIXEL_BACKEND");
 
     o.backend = FX_BACKEND_MEMORY;

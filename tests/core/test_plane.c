@@ -1,9 +1,9 @@
-/* DRM plane choices on fake property data (boards/linux/present.c): which
+/* DRM plane choices on fake property data (boards/linux/display/formats.c): which
  * rotations a plane's "rotation" bitmask offers, whether the plane or a
  * software copy rotates, and the scanout format (XRGB8888 / RGB565). */
 #include <string.h>
 
-#include "../../boards/linux/display_int.h"
+#include "../../boards/display/display_int.h"
 #include "fx_test.h"
 
 static fx_prop_enum ent(uint64_t v, const char *name)

@@ -18,8 +18,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../../boards/linux/app_int.h"
-#include "../../boards/linux/display_int.h"
+#include "../../boards/app/app_int.h"
+#include "fixel/env.h"
+#include "../../boards/display/display_int.h"
 #include "fixel/draw.h"
 #include "fixel/error.h"
 #include "fixel/memfb.h"
@@ -244,8 +245,8 @@ static fx_app *open_app(int32_t w, int32_t h, int rot, const config *cf, fx_poin
 
 static void close_app(fx_app *a, void *second)
 {
-    while (a->ndevs)
-        free(a->devs[--a->ndevs]); /* ours, without fds */
+    while (a->ev.ndevs)
+        free(a->ev.devs[--a->ev.ndevs]); /* ours, without fds */
     fx_app_close(a);
     free(second);
 }
@@ -336,7 +337,6 @@ static void replay(const char *stream, const config *cf)
         return;
     prog p;
     memset(&p, 0, sizeof p);
-    unsetenv("FIXEL_POINTER"); /* the streams check the automatic rule */
     void *second = NULL;
     fx_evdev *dev[4] = {0};
     int rot = 0, lineno = 0;
@@ -379,7 +379,7 @@ static void replay(const char *stream, const config *cf)
                 dev[N]->st.abs_min[1] = atoi(w[6]);
                 dev[N]->st.abs_max[1] = atoi(w[7]);
             }
-            p.app->devs[p.app->ndevs++] = dev[N];
+            p.app->ev.devs[p.app->ev.ndevs++] = dev[N];
         } else if ((!strcmp(w[0], "ev") && n >= 5) || (!strcmp(w[0], "syn") && n >= 2)) {
             int N = atoi(w[1]) & 3;
             fx_raw_event ev = {0, 0, 0, 0};
@@ -455,7 +455,7 @@ static fx_evdev *add_dev(fx_app *a, unsigned cls)
     fx_evdev *e = calloc(1, sizeof *e);
     e->fd = -1;
     fx_input_dev_init(&e->st, cls);
-    a->devs[a->ndevs++] = e;
+    a->ev.devs[a->ev.ndevs++] = e;
     return e;
 }
 
@@ -463,7 +463,6 @@ FX_TEST(pointer_policy_auto_env_and_api)
 {
     const config cf = {FX_FMT_XRGB8888, FX_PRESENT_SHADOW, 1, 0};
     void *second;
-    unsetenv("FIXEL_POINTER");
     fx_app *a = open_app(64, 48, 0, &cf, FX_POINTER_AUTO, &second);
     FX_CHECK(a != NULL);
     if (!a)
@@ -484,19 +483,38 @@ FX_TEST(pointer_policy_auto_env_and_api)
     FX_CHECK_EQ(fx_app_display(a)->ptr.visible, 1);
     close_app(a, second);
 
+    /* FIXEL_POINTER reaches the app through fx_app_options_from_env. */
+    fx_app_options eo;
     setenv("FIXEL_POINTER", "on", 1);
-    a = open_app(64, 48, 0, &cf, FX_POINTER_AUTO, &second);
+    fx_app_options_init(&eo);
+    FX_CHECK_EQ(fx_app_options_from_env(&eo), 0);
+    FX_CHECK_EQ(eo.pointer, FX_POINTER_ON);
+    a = open_app(64, 48, 0, &cf, eo.pointer, &second);
     FX_CHECK_EQ(fx_app_pointer_visible(a), 1); /* on without any device */
     close_app(a, second);
     setenv("FIXEL_POINTER", "off", 1);
-    a = open_app(64, 48, 0, &cf, FX_POINTER_AUTO, &second);
+    fx_app_options_init(&eo);
+    FX_CHECK_EQ(fx_app_options_from_env(&eo), 0);
+    FX_CHECK_EQ(eo.pointer, FX_POINTER_OFF);
+    a = open_app(64, 48, 0, &cf, eo.pointer, &second);
     add_dev(a, FX_DEV_MOUSE);
     FX_CHECK_EQ(fx_app_pointer_visible(a), 0);
     close_app(a, second);
     /* The program's explicit choice wins over the environment. */
-    a = open_app(64, 48, 0, &cf, FX_POINTER_ON, &second);
-    FX_CHECK_EQ(fx_app_pointer_visible(a), 1);
+    fx_app_options_init(&eo);
+    eo.pointer = FX_POINTER_ON;
+    FX_CHECK_EQ(fx_app_options_from_env(&eo), 0);
+    FX_CHECK_EQ(eo.pointer, FX_POINTER_ON);
+    /* ... and the library itself does not look (AUTO stays the rule). */
+    a = open_app(64, 48, 0, &cf, FX_POINTER_AUTO, &second);
+    FX_CHECK_EQ(fx_app_pointer_visible(a), 0);
     close_app(a, second);
+    /* an unknown value is logged and ignored */
+    setenv("FIXEL_POINTER", "maybe", 1);
+    fx_app_options_init(&eo);
+    eo.display.log = quiet;
+    FX_CHECK_EQ(fx_app_options_from_env(&eo), 0);
+    FX_CHECK_EQ(eo.pointer, FX_POINTER_AUTO);
     unsetenv("FIXEL_POINTER");
 }
 

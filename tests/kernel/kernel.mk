@@ -10,7 +10,10 @@ KT_BUILD := build/kernel
 KT_ARCHES := x86_64 aarch64
 KT_CC_x86_64  := gcc
 KT_CC_aarch64 := aarch64-linux-gnu-gcc
-KT_LIBSRC := $(wildcard kernel-free-src/*/*.c) $(wildcard boards/linux/*.c)
+# The library as the Makefile lists it, with the board libraries always
+# (the rig needs them); memfb.o (libpng) is linked only into the tools.
+KT_LIBSRC := $(wildcard kernel-free-src/*/*.c) \
+	$(filter-out boards/memory/memfb.c,$(foreach d,$(BOARD_DIRS) $(BOARD_LIB_DIRS),$(wildcard boards/$(d)/*.c)))
 KT_GUESTSRC := $(wildcard $(KT_DIR)/guest/*.c)
 # No -Werror here: the main build enforces it, and a cross compiler's extra
 # warning must not stop the rig.
@@ -18,7 +21,7 @@ KT_CFLAGS := -std=c11 -O2 -g0 -Wall -Wextra \
 	-Ikernel-free-src/include -Iboards/include -Ikernel-free-src -I$(KT_DIR)/guest \
 	-I/usr/include/libdrm -I/usr/include/libevdev-1.0
 KT_LDLIBS := -static -ldrm -levdev -lgpiod
-# Header dependencies: a struct that changes in display_int.h must rebuild
+# Header dependencies: a struct that changes in a boards/ header must rebuild
 # every object using it, or the guests link mismatched layouts.
 KT_DEPFLAGS := -MMD -MP
 -include $(shell find $(KT_BUILD) -name '*.d' 2>/dev/null)

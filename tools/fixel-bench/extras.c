@@ -4,7 +4,7 @@
  * direct), the Gouraud teapot frame, a deep-zoom Mandelbrot frame on the
  * Q8.56 path, and the CPU an idle event loop uses.
  *
- * The display is the memory backend of boards/linux: the same
+ * The display is the memory backend of boards/memory: the same
  * fx_display_present code a DRM or fbdev display runs, with ordinary memory
  * standing in for scanout memory (real scanout memory is often uncached or
  * write-combined, so a board's copy is slower than this one). The memory
@@ -24,6 +24,8 @@
 
 #include <fixel/app.h>
 #include <fixel/display.h>
+#include <fixel/env.h>
+#include <fixel/scanout.h>
 #include <fixel/fractal.h>
 #include <fixel/fractal_mt.h>
 #include <fixel/render3d.h>
@@ -37,9 +39,6 @@
 #include <unistd.h>
 #include <sys/resource.h>
 
-/* The pure copy behind both presentation modes (boards/linux/present.c;
- * declared in the boards' internal display_int.h). */
-void fx_copy_rotated(const fx_surface *dst, const fx_surface *src, fx_rect r, int rotation);
 
 #define XMAX 24
 
@@ -178,7 +177,7 @@ static fx_display *open_memory(fx_format f, fx_present_mode m, int rotation)
     o.signals = 0;
     o.log = quiet_log;
     fx_display *d = NULL;
-    if (fx_display_open(&d, &o) < 0) return NULL;
+    if (fx_display_options_from_env(&o) < 0 || fx_display_open(&d, &o) < 0) return NULL;
     return d;
 }
 
@@ -383,7 +382,7 @@ static void idle_group(void)
     o.input = 0; /* no devices: the bench may run where /dev/input is readable */
     fx_app *a = NULL;
     struct xrow *r = new_row("CPU %", 0, "idle.main_loop.3s");
-    if (fx_app_open(&a, &o) < 0) {
+    if (fx_app_options_from_env(&o) < 0 || fx_app_open(&a, &o) < 0) {
         snprintf(r->note, sizeof r->note, "fx_app_open failed");
         return;
     }

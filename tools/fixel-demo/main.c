@@ -14,6 +14,7 @@
 #include "demo.h"
 #include "fixel/app.h"
 #include "fixel/display.h"
+#include "fixel/env.h"
 #include "fixel/memfb.h"
 
 #define HEADLESS_W 800
@@ -366,7 +367,7 @@ int main(int argc, char **argv)
     fx_app_options o;
     fx_app_options_init(&o);
     fx_app *app;
-    if (fx_app_open(&app, &o) < 0) {
+    if (fx_app_options_from_env(&o) < 0 || fx_app_open(&app, &o) < 0) {
         fprintf(stderr, "fixel-demo: no usable display; rendering headless instead\n");
         return headless(out, only);
     }

@@ -12,6 +12,7 @@
 #endif
 
 #include "fixel/app.h"
+#include "fixel/env.h"
 #include "fixel/error.h"
 #include "fixel/memfb.h"
 #include "fixel/scene.h"
@@ -213,7 +214,7 @@ static void show(const fx_surface *s)
         fx_app_options_init(&o);
         o.display.memory_w = s->w;
         o.display.memory_h = s->h;
-        if (fx_app_open(&g_app, &o) < 0) {
+        if (fx_app_options_from_env(&o) < 0 || fx_app_open(&g_app, &o) < 0) {
             g_app = NULL;
             return;
         }

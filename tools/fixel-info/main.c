@@ -14,11 +14,12 @@
 #include <linux/fb.h>
 
 #include "fixel/display.h"
+#include "fixel/env.h"
 #include "fixel/input.h"
-#include "../../boards/linux/display_int.h"
+#include "fixel/scanout.h"
 
 #ifndef FX_BOARD_BACKEND
-#define FX_BOARD_BACKEND "auto" /* as boards/linux/display.c */
+#define FX_BOARD_BACKEND "auto" /* as boards/display/display.c */
 #endif
 
 /* A display device exists that this user may not open: the reason to give
@@ -190,7 +191,7 @@ static void input_section(void)
             if (fd >= 0) close(fd);
             continue;
         }
-        /* the same tests as boards/linux/evdev.c classify() */
+        /* the same tests as boards/linux/input/evdev.c classify() */
         unsigned cls = 0;
         if (libevdev_has_event_code(d, EV_KEY, KEY_A) || libevdev_has_event_code(d, EV_KEY, KEY_ENTER) ||
             libevdev_has_event_code(d, EV_KEY, KEY_UP))
@@ -260,7 +261,7 @@ static void choice_section(void)
     o.signals = 0;
     fx_display *d = NULL;
     fflush(stdout);
-    if (fx_display_open(&d, &o) < 0) {
+    if (fx_display_options_from_env(&o) < 0 || fx_display_open(&d, &o) < 0) {
         printf("  nothing opened (the reasons are logged above on stderr)\n");
         if (display_denied)
             printf("  why: permission denied on the display devices listed above\n");

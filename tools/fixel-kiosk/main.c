@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "fixel/app.h"
+#include "fixel/env.h"
 #include "fixel/circle.h"
 #include "fixel/colormap.h"
 #include "fixel/draw.h"
@@ -839,7 +840,7 @@ int main(int argc, char **argv)
         fcntl(k->fd, F_SETFL, fcntl(k->fd, F_GETFL) & ~O_NONBLOCK);
     } else
         fcntl(k->fd, F_SETFL, fcntl(k->fd, F_GETFL) | O_NONBLOCK);
-    if (fx_app_open(&k->app, &o) < 0) return 1;
+    if (fx_app_options_from_env(&o) < 0 || fx_app_open(&k->app, &o) < 0) return 1;
     fx_app_size(k->app, &k->W, &k->H);
     k->full = 1;
 

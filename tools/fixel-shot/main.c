@@ -13,7 +13,7 @@
 
 #include "fixel/memfb.h"
 #include "fixel/surface.h"
-#include "../../boards/linux/display_int.h"
+#include "fixel/scanout.h"
 
 #ifdef FX_SHOT_HAVE_DRM
 #include <xf86drm.h>

@@ -19,8 +19,9 @@
  * Input devices are found under /dev/input and classified (keyboard,
  * relative mouse, touchscreen, multitouch, tablet); devices plugged in later
  * are picked up, unplugged ones dropped with one log line. Touch calibration
- * comes from a tslib pointercal file (FIXEL_POINTERCAL, else /etc/pointercal
- * when present), and FIXEL_TOUCH=swap,invertx,inverty adjusts the axes.
+ * comes from a tslib pointercal file (pointercal, else /etc/pointercal when
+ * present), and touch = "swap,invertx,inverty" adjusts the axes (the
+ * FIXEL_POINTERCAL and FIXEL_TOUCH variables, through fixel/env.h).
  * Coordinates follow the display rotation.
  *
  * Software pointer: an arrow (or a sprite set with fx_app_set_pointer_sprite)
@@ -29,12 +30,14 @@
  * fx_display_set_pointer), and a move without a new frame repaints only the
  * old and new sprite rectangles. FX_POINTER_AUTO (the default) shows it
  * while a relative mouse or a tablet is connected, so touch-only systems
- * have none; FIXEL_POINTER=on|off|auto overrides AUTO. It hides on touch
+ * have none; FX_POINTER_ON/OFF (or FIXEL_POINTER=on|off|auto, through
+ * fixel/env.h) override AUTO. It hides on touch
  * input and comes back on the next mouse motion.
  */
 #ifndef FIXEL_APP_H
 #define FIXEL_APP_H
 
+#include "fixel/buttons.h"
 #include "fixel/display.h"
 #include "fixel/event.h"
 #include "fixel/surface.h"
@@ -42,32 +45,26 @@
 typedef struct fx_app fx_app;
 
 typedef enum fx_pointer_mode {
-    FX_POINTER_AUTO, /* FIXEL_POINTER=on|off|auto, else on while a mouse or tablet is present */
+    FX_POINTER_AUTO, /* on while a mouse or tablet is present */
     FX_POINTER_ON,   /* shown (still hidden by touch input until the mouse moves) */
     FX_POINTER_OFF,
 } fx_pointer_mode;
 
-/* A GPIO push button. */
-typedef struct fx_gpio_button {
-    const char *chip;     /* "gpiochip0", "0" or a path; NULL: search every chip for name */
-    int offset;           /* line offset, or -1 to look the line up by name */
-    const char *name;     /* line name (used when offset < 0) */
-    int active_low;       /* 1: pressed pulls the line low */
-    unsigned debounce_ms; /* 0: 20 ms */
-    int key;              /* character (keyboard callback) or, with special = 1, FX_KEY_* */
-    int special;
-} fx_gpio_button;
-
 typedef struct fx_app_options {
+    /* [env] as in fx_display_options: fx_app_options_from_env (fixel/env.h)
+     * fills these from FIXEL_* variables while they hold their unset value. */
     fx_display_options display;
     int input;              /* 1: use evdev devices (default) */
     const char *input_dir;  /* default "/dev/input" */
     int grab;               /* 1: EVIOCGRAB keyboards so keys never reach the console */
-    const char *pointercal; /* NULL: FIXEL_POINTERCAL, else /etc/pointercal if readable */
-    const fx_gpio_button *buttons; /* NULL: FIXEL_BUTTONS, else the board's default map
-                                    * (see fx_gpio_parse_buttons) */
+    const char *pointercal; /* [env FIXEL_POINTERCAL] NULL: /etc/pointercal if readable */
+    const char *touch;      /* [env FIXEL_TOUCH] "swap,invertx,inverty" (any of them) replaces the
+                               calibration's axis flags; NULL: the calibration's */
+    const fx_gpio_button *buttons; /* NULL: button_map */
     int nbuttons;
-    fx_pointer_mode pointer; /* software pointer policy (default AUTO) */
+    const char *button_map; /* [env FIXEL_BUTTONS] used when buttons is NULL, in the syntax of
+                               fx_gpio_parse_buttons; NULL: the board profile's map */
+    fx_pointer_mode pointer; /* [env FIXEL_POINTER] software pointer policy (default AUTO) */
 } fx_app_options;
 
 void fx_app_options_init(fx_app_options *o);
@@ -105,13 +102,5 @@ int fx_app_input_count(const fx_app *a);
 /* GLUT-style calls on the most recently opened app. */
 void fx_post_redisplay(void);
 int fx_main_loop(void);
-
-/* Parse "CHIP:LINE=KEY[/low][@MS],..." (LINE: offset or line name; an empty
- * CHIP searches every chip for the line name; /low: active low with the
- * pull-up enabled; @MS: debounce time; KEY: a
- * single character, or up, down, left, right, pageup, pagedown, home, end,
- * insert, f1..f12, enter, esc, space, tab). Names point into buf, which is
- * modified. Returns the number of buttons, or -FX_EINVAL. */
-int fx_gpio_parse_buttons(char *buf, fx_gpio_button *out, int max);
 
 #endif

@@ -28,8 +28,8 @@
  *
  * Errors are negative fixel error codes (errno values, see fixel/error.h).
  * Diagnostics go through the log function in the options; the default writes
- * lines prefixed "fixel: " to stderr at FX_LOG_INFO and above, and the
- * environment variable FIXEL_LOG=debug|info|error|none changes that level.
+ * lines prefixed "fixel: " to stderr at FX_LOG_INFO and above; log_priority
+ * (or FIXEL_LOG=debug|info|error|none, through fixel/env.h) changes that level.
  */
 #ifndef FIXEL_DISPLAY_H
 #define FIXEL_DISPLAY_H
@@ -37,20 +37,21 @@
 #include <stdarg.h>
 #include <stdint.h>
 
+#include "fixel/log.h"
 #include "fixel/sprite.h"
 #include "fixel/surface.h"
 
 typedef struct fx_display fx_display;
 
 typedef enum fx_backend {
-    FX_BACKEND_AUTO,   /* FIXEL_BACKEND, else DRM, then fbdev, then memory */
+    FX_BACKEND_AUTO,   /* the board profile's, else DRM, then fbdev, then memory */
     FX_BACKEND_DRM,
     FX_BACKEND_FBDEV,
     FX_BACKEND_MEMORY,
 } fx_backend;
 
 typedef enum fx_present_mode {
-    FX_PRESENT_AUTO,   /* FIXEL_PRESENT=direct|shadow, else the rule above */
+    FX_PRESENT_AUTO,   /* the rule above (FIXEL_PRESENT=direct|shadow through fixel/env.h) */
     FX_PRESENT_DIRECT,
     FX_PRESENT_SHADOW,
 } fx_present_mode;
@@ -58,43 +59,47 @@ typedef enum fx_present_mode {
 /* What happens when another VT is asked for (chvt, logind, a Ctrl-Alt-Fn
  * the program forwards with fx_display_switch_vt). */
 typedef enum fx_vt_switch {
-    FX_VT_SWITCH_ALLOW, /* FIXEL_VT_SWITCH=deny|allow, else allow: drop the display
+    FX_VT_SWITCH_ALLOW, /* (FIXEL_VT_SWITCH=deny|allow through fixel/env.h) drop the display
                            while away (DRM master released), redraw on return */
     FX_VT_SWITCH_DENY,  /* kiosk: refuse every switch away from the program's VT */
 } fx_vt_switch;
 
-/* Lower is more important, as in syslog. */
-typedef enum fx_log_priority {
-    FX_LOG_ERROR = 10,
-    FX_LOG_INFO = 20,
-    FX_LOG_DEBUG = 30,
-} fx_log_priority;
-
-typedef void (*fx_log_func)(fx_log_priority priority, void *user, const char *fmt, va_list args);
-
 typedef struct fx_display_options {
-    fx_backend backend;
-    fx_present_mode present;
-    /* /dev/dri/cardN or /dev/fbN; NULL: FIXEL_DRM_DEVICE / FIXEL_FB_DEVICE,
-     * else the first card with a connected connector / /dev/fb0. */
+    /* Fields marked [env] are the ones fx_display_options_from_env (fixel/env.h)
+     * fills from a FIXEL_* variable when they still hold their unset value,
+     * the one given here and set by fx_display_options_init. The library
+     * itself never reads the environment. */
+    fx_backend backend;    /* [env FIXEL_BACKEND] AUTO: the board profile's BOARD_BACKEND, else
+                              DRM, then fbdev, then memory */
+    int backend_from_env;  /* set by from_env when backend came from FIXEL_BACKEND (the log line
+                              names it, and the board default is skipped) */
+    fx_present_mode present; /* [env FIXEL_PRESENT] */
+    /* /dev/dri/cardN or /dev/fbN (each backend takes only its kind); NULL:
+     * drm_device / fb_device, else the first card with a connected
+     * connector / /dev/fb0. */
     const char *device;
-    const char *connector; /* DRM connector name ("HDMI-A-1"); NULL: FIXEL_CONNECTOR or first connected */
-    const char *mode;      /* "WxH" or "WxH@Hz"; NULL: FIXEL_MODE or the preferred mode */
+    const char *drm_device; /* [env FIXEL_DRM_DEVICE] NULL */
+    const char *fb_device;  /* [env FIXEL_FB_DEVICE] NULL */
+    const char *connector; /* [env FIXEL_CONNECTOR] DRM connector name ("HDMI-A-1"); NULL: first connected */
+    const char *mode;      /* [env FIXEL_MODE] "WxH" or "WxH@Hz"; NULL: the preferred mode */
     fx_format format;      /* FX_FMT_XRGB8888 or FX_FMT_RGB565 for DRM (a plane lacking it gets the
-                              other); FX_FMT_COUNT = FIXEL_DRM_FORMAT=XRGB8888|RGB565, else the board
+                              other), the memory backend's format; FX_FMT_COUNT: drm_format */
+    fx_format drm_format;  /* [env FIXEL_DRM_FORMAT=XRGB8888|RGB565] FX_FMT_COUNT: the board
                               profile's BOARD_DRM_FORMAT, else XRGB8888 unless the plane has only RGB565 */
-    int rotation;          /* 0, 90, 180, 270; -1 = FIXEL_ROTATION or 0 */
-    int sw_rotation;       /* 1: rotate in software even where the DRM plane has a rotation
-                              property (also FIXEL_SW_ROTATION=1); 0: the plane rotates when it can */
+    int rotation;          /* [env FIXEL_ROTATION] 0, 90, 180, 270; -1: the board profile's or 0 */
+    int sw_rotation;       /* [env FIXEL_SW_ROTATION=1] 1: rotate in software even where the DRM
+                              plane has a rotation property; 0: the plane rotates when it can */
     int console;           /* 1: KD_GRAPHICS + keyboard off while open (default); 0: leave the VT alone */
     int signals;           /* 1: restore the console/CRTC on fatal and terminating signals (default) */
-    fx_vt_switch vt_switch; /* VT switching policy (needs console = 1; uses SIGUSR1/SIGUSR2
-                               when the program leaves them at their default) */
+    fx_vt_switch vt_switch; /* [env FIXEL_VT_SWITCH] VT switching policy (needs console = 1; uses
+                               SIGUSR1/SIGUSR2 when the program leaves them at their default).
+                               ALLOW is also the unset value: FIXEL_VT_SWITCH=deny turns it to DENY */
     int fb_force_refresh;  /* fbdev: FB_ACTIVATE_FORCE after each present, for drivers that need it */
     int32_t memory_w, memory_h; /* memory backend size (default 640x480) */
     fx_log_func log;       /* NULL: the default stderr logger */
     void *log_user;
-    int log_priority;      /* messages above this priority are dropped; 0 = default */
+    int log_priority;      /* [env FIXEL_LOG] messages above this priority are dropped; 0: FX_LOG_INFO;
+                              negative: none */
 } fx_display_options;
 
 /* Fill o with the defaults described above. */
@@ -193,7 +198,7 @@ int fx_display_set_pointer_sprite(fx_display *d, const fx_sprite *s);
 fx_surface fx_display_screen(const fx_display *d);
 const char *fx_backend_name(fx_backend b);
 
-/* Log through the display's log function (used by other board modules). */
+/* Log through the display's log function and level (fx_app uses it). */
 void fx_display_log(const fx_display *d, fx_log_priority p, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 

@@ -34,6 +34,7 @@
 static void opts(fx_display_options *o, fx_backend b, fx_present_mode pm, int rot)
 {
     fx_display_options_init(o);
+    fx_display_options_from_env(o); /* the variables the rig sets, as the tools do */
     o->backend = b;
     o->present = pm;
     o->rotation = rot;

@@ -88,6 +88,7 @@ static void program(int ready_fd, int quit_fd)
     fx_display *d;
     fx_display_options o;
     fx_display_options_init(&o);
+    fx_display_options_from_env(&o); /* the variables the rig sets, as the tools do */
     o.backend = FX_BACKEND_DRM;
     o.log = capture_log;
     o.log_priority = FX_LOG_DEBUG;
@@ -265,6 +266,7 @@ static void gpio_vanish_case(void)
     fx_gpio_button b[2] = {{chip, 0, NULL, 0, 20, 'a', 0}, {chip, 1, NULL, 0, 20, 'b', 0}};
     fx_app_options o;
     fx_app_options_init(&o);
+    fx_app_options_from_env(&o); /* FIXEL_POINTER=off from init.sh, as the tools do */
     o.display.backend = FX_BACKEND_MEMORY;
     o.display.console = 0;
     o.display.log = capture_log;
@@ -319,6 +321,7 @@ static void missing_display_case(void)
         fx_display *d = NULL;
         fx_display_options o;
         fx_display_options_init(&o);
+        fx_display_options_from_env(&o); /* the variables the rig sets, as the tools do */
         o.backend = cases[i].backend;
         o.log = capture_log;
         o.log_priority = FX_LOG_INFO; /* what a user sees by default */

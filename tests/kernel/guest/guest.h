@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "fixel/display.h"
+#include "fixel/env.h"
 
 static int guest_failed;
 

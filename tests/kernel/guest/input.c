@@ -72,6 +72,7 @@ static int open_app(fx_app **a, int rotation, const char *pointercal, const fx_g
 {
     fx_app_options o;
     fx_app_options_init(&o);
+    fx_app_options_from_env(&o); /* FIXEL_POINTER=off from init.sh, as the tools do */
     o.display.backend = FX_BACKEND_MEMORY;
     o.display.memory_w = 800;
     o.display.memory_h = 480;

@@ -36,6 +36,7 @@
 static void opts(fx_display_options *o, const char *device, int rotation)
 {
     fx_display_options_init(o);
+    fx_display_options_from_env(o); /* the variables the rig sets, as the tools do */
     o->backend = FX_BACKEND_DRM;
     o->device = device;
     o->rotation = rotation;

@@ -169,6 +169,7 @@ static void child(const char *tag, int rotation, const char *env, int expect_poi
         unsetenv("FIXEL_POINTER");
     fx_app_options o;
     fx_app_options_init(&o);
+    fx_app_options_from_env(&o); /* FIXEL_POINTER=off from init.sh, as the tools do */
     o.display.backend = FX_BACKEND_DRM;
     o.display.rotation = rotation;
     o.display.log = quiet;

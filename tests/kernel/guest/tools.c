@@ -658,6 +658,7 @@ static void shot_tests(void)
 
     /* fbdev: fixel's fbdev display shows bars; fixel-shot -d /dev/fb0 saves them */
     fx_display_options_init(&o);
+    fx_display_options_from_env(&o); /* the variables the rig sets, as the tools do */
     o.backend = FX_BACKEND_FBDEV;
     int r = fx_display_open(&d, &o);
     if (r < 0) {
@@ -692,6 +693,7 @@ static void shot_tests(void)
 
     /* DRM: fixel's DRM display (page flipping) shows checker */
     fx_display_options_init(&o);
+    fx_display_options_from_env(&o); /* the variables the rig sets, as the tools do */
     o.backend = FX_BACKEND_DRM;
     r = fx_display_open(&d, &o);
     if (r < 0) {

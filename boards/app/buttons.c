@@ -6,7 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fixel/app.h"
+#include "fixel/buttons.h"
+#include "fixel/event.h"
 #include "fixel/error.h"
 
 static const struct {

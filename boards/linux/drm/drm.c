@@ -23,7 +23,7 @@
 #include <xf86drm.h>
 #include <xf86drmMode.h>
 
-#include "display_int.h"
+#include "../../display/display_int.h"
 #include "fixel/error.h"
 
 struct drm_buf {
@@ -90,11 +90,11 @@ static drmModeConnectorPtr pick_connector(fx_display *d, int fd, drmModeResPtr r
 
 static int pick_mode(fx_display *d, drmModeConnectorPtr c, drmModeModeInfo *out)
 {
-    const char *want = d->opt.mode ? d->opt.mode : getenv("FIXEL_MODE");
+    const char *want = d->opt.mode;
     if (want && *want) {
         int32_t w, h, hz;
         if (fx_mode_parse(want, &w, &h, &hz) < 0) {
-            fx_display_log(d, FX_LOG_ERROR, "mode '%s' is not WxH or WxH@Hz", want);
+            fx_log(&d->log, FX_LOG_ERROR, "mode '%s' is not WxH or WxH@Hz", want);
             return -FX_EINVAL;
         }
         for (int i = 0; i < c->count_modes; i++) {
@@ -104,7 +104,7 @@ static int pick_mode(fx_display *d, drmModeConnectorPtr c, drmModeModeInfo *out)
                 return 0;
             }
         }
-        fx_display_log(d, FX_LOG_ERROR, "connector %s has no mode %s", d->connector, want);
+        fx_log(&d->log, FX_LOG_ERROR, "connector %s has no mode %s", d->connector, want);
         return -FX_ENOENT;
     }
     for (int i = 0; i < c->count_modes; i++)
@@ -332,7 +332,7 @@ static int drm_wait(fx_display *d, int timeout_ms)
         if (r <= 0) {
             /* A flip that never completes would freeze every later frame;
              * give up on flips for good and present with SetCrtc. */
-            fx_display_log(d, FX_LOG_ERROR,
+            fx_log(&d->log, FX_LOG_ERROR,
                            "page flip did not complete within %d ms; presenting with SetCrtc",
                            timeout_ms);
             d->flip_pending = 0;
@@ -401,7 +401,7 @@ static int drm_show(fx_display *d, int buf, const fx_rect *phys, int n)
         } else {
             /* Most drivers scan out memory directly and have no dirty hook
              * (ENOSYS); any refusal just means they do not need it. */
-            fx_display_log(d, FX_LOG_DEBUG, "driver refused DIRTYFB (%s); not calling it again",
+            fx_log(&d->log, FX_LOG_DEBUG, "driver refused DIRTYFB (%s); not calling it again",
                            strerror(-r));
             p->dirty = 0;
         }
@@ -417,16 +417,16 @@ static int drm_show(fx_display *d, int buf, const fx_rect *phys, int n)
             return 0;
         }
         if (r == -EACCES || r == -EPERM) {
-            fx_display_log(d, FX_LOG_ERROR, "page flip refused: lost DRM master (%s)", strerror(-r));
+            fx_log(&d->log, FX_LOG_ERROR, "page flip refused: lost DRM master (%s)", strerror(-r));
             return r;
         }
-        fx_display_log(d, FX_LOG_INFO, "page flip not available (%s); presenting with SetCrtc",
+        fx_log(&d->log, FX_LOG_INFO, "page flip not available (%s); presenting with SetCrtc",
                        strerror(-r));
         p->flip_ok = 0;
     }
     r = set_crtc(p, buf);
     if (r < 0) {
-        fx_display_log(d, FX_LOG_ERROR, "SetCrtc failed: %s", strerror(errno));
+        fx_log(&d->log, FX_LOG_ERROR, "SetCrtc failed: %s", strerror(errno));
         return neg_errno();
     }
     d->info.fallbacks++;
@@ -462,9 +462,10 @@ static void drm_close(fx_display *d)
     d->priv = NULL;
 }
 
-void fx_drm_emergency_restore(void *priv)
+/* The emergency (signal) path: only ioctls on prepared structures. */
+static void drm_emergency_restore(fx_display *d)
 {
-    struct drm_priv *p = priv;
+    struct drm_priv *p = d->priv;
     if (p && p->fd >= 0 && p->rot_apply) {
         ioctl(p->fd, DRM_IOCTL_MODE_SETCRTC, &p->emergency_off);
         ioctl(p->fd, DRM_IOCTL_MODE_OBJ_SETPROPERTY, &p->emergency_rot);
@@ -484,11 +485,11 @@ static int drm_resume(fx_display *d)
 {
     struct drm_priv *p = d->priv;
     if (drmSetMaster(p->fd) < 0) {
-        fx_display_log(d, FX_LOG_ERROR, "%s: cannot retake DRM master: %s", d->device, strerror(errno));
+        fx_log(&d->log, FX_LOG_ERROR, "%s: cannot retake DRM master: %s", d->device, strerror(errno));
         return neg_errno();
     }
     if (modeset(p, d->shown < 0 ? 0 : d->shown) < 0) {
-        fx_display_log(d, FX_LOG_ERROR, "SetCrtc after VT switch: %s", strerror(errno));
+        fx_log(&d->log, FX_LOG_ERROR, "SetCrtc after VT switch: %s", strerror(errno));
         return neg_errno();
     }
     if (p->reprobe_pending) {
@@ -508,7 +509,7 @@ static void reprobe(fx_display *d)
     drmModeModeInfo m;
     if (!now || pick_mode(d, c, &m) < 0) {
         if (p->connected)
-            fx_display_log(d, FX_LOG_INFO, "%s disconnected; waiting for it to come back", d->connector);
+            fx_log(&d->log, FX_LOG_INFO, "%s disconnected; waiting for it to come back", d->connector);
         p->connected = d->info.connected = 0;
         drmModeFreeConnector(c);
         return;
@@ -521,7 +522,7 @@ static void reprobe(fx_display *d)
     int same_mode = same_size && m.clock == p->mode.clock && m.vrefresh == p->mode.vrefresh;
     if (p->connected && same_mode)
         return;
-    fx_display_log(d, FX_LOG_INFO, "%s %s: %ux%u@%u", d->connector,
+    fx_log(&d->log, FX_LOG_INFO, "%s %s: %ux%u@%u", d->connector,
                    p->connected ? "changed mode" : "connected", m.hdisplay, m.vdisplay, m.vrefresh);
     drm_wait(d, 200);
     if (!same_size) {
@@ -530,7 +531,7 @@ static void reprobe(fx_display *d)
         for (int i = 0; i < p->nbuf; i++) {
             destroy_buf(p->fd, &p->buf[i]);
             if (create_buf(p->fd, &p->buf[i], bw, bh, fi->drm_fourcc, fi->bits_per_pixel) < 0) {
-                fx_display_log(d, FX_LOG_ERROR, "%s: no buffer for %ux%u", d->device, m.hdisplay, m.vdisplay);
+                fx_log(&d->log, FX_LOG_ERROR, "%s: no buffer for %ux%u", d->device, m.hdisplay, m.vdisplay);
                 destroy_buf(p->fd, &p->buf[i]);
                 p->connected = d->info.connected = 0;
                 return;
@@ -544,14 +545,15 @@ static void reprobe(fx_display *d)
     }
     p->mode = m;
     if (set_crtc(p, d->shown < 0 ? 0 : d->shown) < 0)
-        fx_display_log(d, FX_LOG_ERROR, "modeset after hotplug failed: %s", strerror(errno));
+        fx_log(&d->log, FX_LOG_ERROR, "modeset after hotplug failed: %s", strerror(errno));
     p->connected = d->info.connected = 1;
     if (!same_size)
-        fx_display_resized(d);
+        d->resized(d);
 }
 
 static const struct fx_backend_ops drm_ops = {drm_show, drm_wait, drm_dispatch, drm_fd, drm_close,
-                                              drm_suspend, drm_resume, drm_hotplug_fd};
+                                              drm_suspend, drm_resume, drm_hotplug_fd,
+                                              drm_emergency_restore};
 
 /* ---- open --------------------------------------------------------------- */
 
@@ -575,9 +577,9 @@ static int open_card(fx_display *d, const char *path, int quiet_enoent)
     if (fd < 0) {
         int e = errno;
         if (e == EACCES || e == EPERM)
-            fx_log_access_hint(d, path);
+            fx_log_access_hint(&d->log, path);
         else if (!(quiet_enoent && e == ENOENT))
-            fx_display_log(d, FX_LOG_DEBUG, "%s: %s", path, strerror(e));
+            fx_log(&d->log, FX_LOG_DEBUG, "%s: %s", path, strerror(e));
         return -e;
     }
     return fd;
@@ -589,7 +591,7 @@ static int find_card(fx_display *d, int *fd_out)
     if (want && !strstr(want, "/dri/"))
         want = NULL; /* a /dev/fbN device is for the fbdev backend */
     if (!want)
-        want = getenv("FIXEL_DRM_DEVICE");
+        want = d->opt.drm_device;
     if (want && *want) {
         snprintf(d->device, sizeof d->device, "%s", want); /* named in errors */
         int fd = open_card(d, want, 0);
@@ -641,7 +643,7 @@ int fx_drm_open(fx_display *d)
 
     uint64_t cap = 0;
     if (drmGetCap(fd, DRM_CAP_DUMB_BUFFER, &cap) < 0 || !cap) {
-        fx_display_log(d, FX_LOG_ERROR, "%s has no dumb buffers", d->device);
+        fx_log(&d->log, FX_LOG_ERROR, "%s has no dumb buffers", d->device);
         return -FX_ENOTSUP;
     }
     drmSetClientCap(fd, DRM_CLIENT_CAP_UNIVERSAL_PLANES, 1);
@@ -650,7 +652,7 @@ int fx_drm_open(fx_display *d)
      * Failure means a desktop, another fixel program or a logind session
      * owns the display. */
     if (!drmIsMaster(fd) && drmSetMaster(fd) != 0) {
-        fx_display_log(d, FX_LOG_ERROR,
+        fx_log(&d->log, FX_LOG_ERROR,
                        "%s: another process holds DRM master (a desktop session or another "
                        "graphics program): stop it, or use the fbdev backend (FIXEL_BACKEND=fbdev)",
                        d->device);
@@ -659,15 +661,15 @@ int fx_drm_open(fx_display *d)
 
     drmModeResPtr res = drmModeGetResources(fd);
     if (!res) {
-        fx_display_log(d, FX_LOG_ERROR, "%s: cannot read KMS resources: %s", d->device, strerror(errno));
+        fx_log(&d->log, FX_LOG_ERROR, "%s: cannot read KMS resources: %s", d->device, strerror(errno));
         return neg_errno();
     }
-    const char *want = d->opt.connector ? d->opt.connector : getenv("FIXEL_CONNECTOR");
+    const char *want = d->opt.connector;
     if (want && !*want)
         want = NULL;
     drmModeConnectorPtr c = pick_connector(d, fd, res, want);
     if (!c) {
-        fx_display_log(d, FX_LOG_ERROR, "%s: %s%s", d->device,
+        fx_log(&d->log, FX_LOG_ERROR, "%s: %s%s", d->device,
                        want ? "no connector named " : "no connected connector", want ? want : "");
         drmModeFreeResources(res);
         return -FX_ENODEV;
@@ -677,7 +679,7 @@ int fx_drm_open(fx_display *d)
     if (r == 0) {
         p->crtc_id = pick_crtc(fd, res, c, &ci);
         if (!p->crtc_id) {
-            fx_display_log(d, FX_LOG_ERROR, "%s: no CRTC can drive %s", d->device, d->connector);
+            fx_log(&d->log, FX_LOG_ERROR, "%s: no CRTC can drive %s", d->device, d->connector);
             r = -FX_ENODEV;
         }
     }
@@ -686,16 +688,7 @@ int fx_drm_open(fx_display *d)
     if (r < 0)
         return r;
 
-    fx_format fwant = d->opt.format;
-    const char *fenv = getenv("FIXEL_DRM_FORMAT");
-    if (fwant == FX_FMT_COUNT && fenv && *fenv && strcasecmp(fenv, "auto")) {
-        if (!strcasecmp(fenv, "XRGB8888"))
-            fwant = FX_FMT_XRGB8888;
-        else if (!strcasecmp(fenv, "RGB565"))
-            fwant = FX_FMT_RGB565;
-        else
-            fx_display_log(d, FX_LOG_ERROR, "FIXEL_DRM_FORMAT=%s ignored (XRGB8888 or RGB565)", fenv);
-    }
+    fx_format fwant = d->opt.format != FX_FMT_COUNT ? d->opt.format : d->opt.drm_format;
 #ifdef FX_BOARD_DRM_FORMAT_RGB565
     if (fwant == FX_FMT_COUNT)
         fwant = FX_FMT_RGB565; /* the board profile's 16-bit panel */
@@ -705,15 +698,14 @@ int fx_drm_open(fx_display *d)
     const char *fwhy;
     fx_format f = fx_drm_format_choose(fwant, !pl.known || pl.has_xrgb, !pl.known || pl.has_565, &fwhy);
     if (f == FX_FMT_COUNT) {
-        fx_display_log(d, FX_LOG_ERROR, "%s: %s", d->device, fwhy);
+        fx_log(&d->log, FX_LOG_ERROR, "%s: %s", d->device, fwhy);
         return -FX_ENOTSUP;
     }
     if (fwant != FX_FMT_COUNT && f != fwant)
-        fx_display_log(d, FX_LOG_INFO, "primary plane has no %s; using %s", fx_format_get(fwant)->name,
+        fx_log(&d->log, FX_LOG_INFO, "primary plane has no %s; using %s", fx_format_get(fwant)->name,
                        fx_format_get(f)->name);
 
-    const char *sw = getenv("FIXEL_SW_ROTATION");
-    int force_sw = d->opt.sw_rotation || (sw && *sw && strcmp(sw, "0"));
+    int force_sw = d->opt.sw_rotation;
     int hw = fx_plane_rotation_choose(d->opt.rotation, pl.rot_prop != 0, pl.rot_mask, force_sw,
                                       &d->rotation_why);
     if (pl.rot_prop) {
@@ -744,12 +736,12 @@ int fx_drm_open(fx_display *d)
         if (r < 0) {
             if (i == 1) {
                 /* Tiny-VRAM devices: one buffer still works, shadowed. */
-                fx_display_log(d, FX_LOG_INFO, "second dumb buffer failed (%s); single-buffered",
+                fx_log(&d->log, FX_LOG_INFO, "second dumb buffer failed (%s); single-buffered",
                                strerror(-r));
                 destroy_buf(fd, &p->buf[1]);
                 break;
             }
-            fx_display_log(d, FX_LOG_ERROR, "%s: dumb buffer %ux%u: %s", d->device, w, h, strerror(-r));
+            fx_log(&d->log, FX_LOG_ERROR, "%s: dumb buffer %ux%u: %s", d->device, w, h, strerror(-r));
             return r;
         }
         fx_surface_init(&d->scan[i], p->buf[i].map, (int32_t)w, (int32_t)h, (int32_t)p->buf[i].pitch, f);
@@ -773,7 +765,7 @@ int fx_drm_open(fx_display *d)
 
     if (modeset(p, 0) < 0) {
         int e = errno;
-        fx_display_log(d, FX_LOG_ERROR, "%s: modeset %ux%u on %s failed: %s%s", d->device, w, h,
+        fx_log(&d->log, FX_LOG_ERROR, "%s: modeset %ux%u on %s failed: %s%s", d->device, w, h,
                        d->connector, strerror(e),
                        hw ? " (with plane rotation; FIXEL_SW_ROTATION=1 rotates in software)" : "");
         return -e;
@@ -788,7 +780,7 @@ int fx_drm_open(fx_display *d)
     if (p->uevent_fd >= 0) {
         struct sockaddr_nl a = {.nl_family = AF_NETLINK, .nl_groups = 1}; /* kernel events */
         if (bind(p->uevent_fd, (struct sockaddr *)&a, sizeof a) < 0) {
-            fx_display_log(d, FX_LOG_DEBUG, "no uevents (%s): hotplug is not followed", strerror(errno));
+            fx_log(&d->log, FX_LOG_DEBUG, "no uevents (%s): hotplug is not followed", strerror(errno));
             close(p->uevent_fd);
             p->uevent_fd = -1;
         }

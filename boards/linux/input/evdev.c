@@ -13,9 +13,8 @@
 #include <sys/inotify.h>
 #include <unistd.h>
 
-#include "app_int.h"
-#include "display_int.h"
 #include "fixel/error.h"
+#include "input_int.h"
 
 static unsigned classify(struct libevdev *d)
 {
@@ -48,21 +47,21 @@ static const char *class_name(unsigned cls, char *buf, size_t n)
     return buf;
 }
 
-int fx_evdev_open(fx_app *a, const char *path, int quiet)
+int fx_evdev_open(fx_evdev_set *a, const char *path, int quiet)
 {
     for (int i = 0; i < a->ndevs; i++)
         if (!strcmp(a->devs[i]->path, path))
             return 0;
-    if (a->ndevs == FX_APP_MAX_DEVS)
+    if (a->ndevs == FX_EVDEV_MAX)
         return -FX_ENOSPC;
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
         int e = errno;
         if (e == EACCES && !a->access_logged) {
             a->access_logged = 1;
-            fx_log_access_hint(a->disp, path);
+            fx_log_access_hint(&a->log, path);
         } else if (!quiet) {
-            fx_display_log(a->disp, FX_LOG_DEBUG, "input: cannot open %s: %s", path, strerror(e));
+            fx_log(&a->log, FX_LOG_DEBUG, "input: cannot open %s: %s", path, strerror(e));
         }
         return -e;
     }
@@ -105,25 +104,25 @@ int fx_evdev_open(fx_app *a, const char *path, int quiet)
         e->st.mt_min[1] = my->minimum, e->st.mt_max[1] = my->maximum;
     }
     if (a->grab && (cls & FX_DEV_KEYBOARD) && libevdev_grab(dev, LIBEVDEV_GRAB) < 0)
-        fx_display_log(a->disp, FX_LOG_INFO, "input: cannot grab %s (another program holds it)", path);
+        fx_log(&a->log, FX_LOG_INFO, "input: cannot grab %s (another program holds it)", path);
     a->devs[a->ndevs++] = e;
     char cn[80];
-    fx_display_log(a->disp, FX_LOG_INFO, "input: %s \"%s\":%s", path, libevdev_get_name(dev),
+    fx_log(&a->log, FX_LOG_INFO, "input: %s \"%s\":%s", path, libevdev_get_name(dev),
                    class_name(cls, cn, sizeof cn));
     return 1;
 }
 
-static void drop(fx_app *a, int i, const char *why)
+static void drop(fx_evdev_set *a, int i, const char *why)
 {
     fx_evdev *e = a->devs[i];
-    fx_display_log(a->disp, FX_LOG_INFO, "input: %s %s", e->path, why);
+    fx_log(&a->log, FX_LOG_INFO, "input: %s %s", e->path, why);
     libevdev_free(e->dev);
     close(e->fd);
     free(e);
     a->devs[i] = a->devs[--a->ndevs];
 }
 
-void fx_evdev_read(fx_app *a, int i)
+void fx_evdev_read(fx_evdev_set *a, int i)
 {
     fx_evdev *e = a->devs[i];
     int flag = LIBEVDEV_READ_FLAG_NORMAL;
@@ -146,21 +145,21 @@ void fx_evdev_read(fx_app *a, int i)
         if (r == LIBEVDEV_READ_STATUS_SYNC && flag == LIBEVDEV_READ_FLAG_NORMAL) {
             /* SYN_DROPPED: forget the partial frame, then take libevdev's
              * resynchronised state as ordinary events. */
-            fx_app_feed(a, &e->st, &raw);
+            a->sink.fn(a->sink.user, &e->st, &raw);
             fx_raw_event rep = {raw.time_us, FX_IN_SYN, FX_IN_SYN_REPORT, 0};
-            fx_app_feed(a, &e->st, &rep);
+            a->sink.fn(a->sink.user, &e->st, &rep);
             flag = LIBEVDEV_READ_FLAG_SYNC;
             continue;
         }
-        fx_app_feed(a, &e->st, &raw);
+        a->sink.fn(a->sink.user, &e->st, &raw);
     }
 }
 
-void fx_evdev_scan(fx_app *a)
+void fx_evdev_scan(fx_evdev_set *a)
 {
-    DIR *d = opendir(a->input_dir);
+    DIR *d = opendir(a->dir);
     if (!d) {
-        fx_display_log(a->disp, FX_LOG_INFO, "input: cannot read %s: %s", a->input_dir, strerror(errno));
+        fx_log(&a->log, FX_LOG_INFO, "input: cannot read %s: %s", a->dir, strerror(errno));
         return;
     }
     struct dirent *de;
@@ -168,18 +167,18 @@ void fx_evdev_scan(fx_app *a)
         if (strncmp(de->d_name, "event", 5))
             continue;
         char path[400];
-        snprintf(path, sizeof path, "%s/%s", a->input_dir, de->d_name);
+        snprintf(path, sizeof path, "%s/%s", a->dir, de->d_name);
         fx_evdev_open(a, path, 0);
     }
     closedir(d);
     a->inotify_fd = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
-    if (a->inotify_fd >= 0 && inotify_add_watch(a->inotify_fd, a->input_dir, IN_CREATE | IN_ATTRIB) < 0) {
+    if (a->inotify_fd >= 0 && inotify_add_watch(a->inotify_fd, a->dir, IN_CREATE | IN_ATTRIB) < 0) {
         close(a->inotify_fd);
         a->inotify_fd = -1;
     }
 }
 
-void fx_evdev_hotplug(fx_app *a)
+void fx_evdev_hotplug(fx_evdev_set *a)
 {
     char buf[4096] __attribute__((aligned(__alignof__(struct inotify_event))));
     for (;;) {
@@ -190,7 +189,7 @@ void fx_evdev_hotplug(fx_app *a)
             struct inotify_event *ev = (struct inotify_event *)(void *)p;
             if (ev->len && !strncmp(ev->name, "event", 5)) {
                 char path[400];
-                snprintf(path, sizeof path, "%s/%s", a->input_dir, ev->name);
+                snprintf(path, sizeof path, "%s/%s", a->dir, ev->name);
                 /* quiet: a node may be created before its permissions are set */
                 fx_evdev_open(a, path, 1);
             }
@@ -199,7 +198,7 @@ void fx_evdev_hotplug(fx_app *a)
     }
 }
 
-void fx_evdev_close_all(fx_app *a)
+void fx_evdev_close_all(fx_evdev_set *a)
 {
     while (a->ndevs) {
         fx_evdev *e = a->devs[--a->ndevs];

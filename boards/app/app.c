@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "app_int.h"
-#include "display_int.h"
+#include "../display/display_int.h"
 #include "fixel/error.h"
 
 #ifndef FX_BOARD_GPIO_BUTTONS
@@ -26,11 +26,17 @@
 
 static fx_app *current;
 
-uint64_t fx_app_now_us(void)
+static uint64_t now_us(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000;
+}
+
+static uint64_t clock_now(void *user)
+{
+    (void)user;
+    return now_us();
 }
 
 void fx_app_emit(void *u, const fx_event *e)
@@ -54,14 +60,29 @@ void fx_app_feed(fx_app *a, fx_input_dev *d, const fx_raw_event *ev)
     a->feeding_cls = 0;
 }
 
+/* The evdev devices' sink. */
+static void feed_raw(void *u, fx_input_dev *d, const fx_raw_event *ev)
+{
+    fx_app_feed(u, d, ev);
+}
+
+/* The buttons' sink: their key events carry the pointer position. */
+static void emit_button(void *u, const fx_event *e)
+{
+    fx_app *a = u;
+    fx_event k = *e;
+    fx_input_to_logical(&a->in, a->in.px, a->in.py, &k.x, &k.y);
+    fx_app_emit(a, &k);
+}
+
 int fx_app_pointer_visible(const fx_app *a)
 {
     if (a->pointer_mode == FX_POINTER_OFF || a->pointer_touch_hidden)
         return 0;
     if (a->pointer_mode == FX_POINTER_ON)
         return 1;
-    for (int i = 0; i < a->ndevs; i++)
-        if (a->devs[i]->st.cls & (FX_DEV_MOUSE | FX_DEV_TABLET))
+    for (int i = 0; i < a->ev.ndevs; i++)
+        if (a->ev.devs[i]->st.cls & (FX_DEV_MOUSE | FX_DEV_TABLET))
             return 1;
     return 0;
 }
@@ -84,19 +105,6 @@ int fx_app_set_pointer_sprite(fx_app *a, const fx_sprite *s)
     return fx_display_set_pointer_sprite(a->disp, s);
 }
 
-static fx_pointer_mode pointer_mode_from_env(fx_app *a)
-{
-    const char *e = getenv("FIXEL_POINTER");
-    if (!e || !*e || !strcasecmp(e, "auto"))
-        return FX_POINTER_AUTO;
-    if (!strcasecmp(e, "on") || !strcmp(e, "1"))
-        return FX_POINTER_ON;
-    if (!strcasecmp(e, "off") || !strcmp(e, "0"))
-        return FX_POINTER_OFF;
-    fx_display_log(a->disp, FX_LOG_ERROR, "FIXEL_POINTER=%s ignored (on, off or auto)", e);
-    return FX_POINTER_AUTO;
-}
-
 void fx_app_options_init(fx_app_options *o)
 {
     memset(o, 0, sizeof *o);
@@ -106,10 +114,9 @@ void fx_app_options_init(fx_app_options *o)
 
 static void load_pointercal(fx_app *a, const char *path)
 {
-    const char *env = getenv("FIXEL_POINTERCAL");
-    int explicit = path || env;
+    int explicit = path != NULL;
     if (!path)
-        path = env ? env : "/etc/pointercal";
+        path = "/etc/pointercal";
     FILE *f = fopen(path, "r");
     if (!f) {
         if (explicit)
@@ -121,7 +128,7 @@ static void load_pointercal(fx_app *a, const char *path)
     size_t n = fread(buf, 1, sizeof buf - 1, f);
     fclose(f);
     buf[n] = 0;
-    if (fx_calib_parse(&a->calib, buf, (unsigned)n) < 0)
+    if (fx_calib_parse(&a->ev.calib, buf, (unsigned)n) < 0)
         fx_display_log(a->disp, FX_LOG_ERROR, "input: %s is not a tslib pointercal file "
                        "(7 integers, the last non-zero); ignored", path);
     else
@@ -134,7 +141,7 @@ int fx_app_open(fx_app **out, const fx_app_options *o)
     fx_app *a = calloc(1, sizeof *a);
     if (!a)
         return -FX_ENOMEM;
-    a->inotify_fd = a->tfd = a->sfd = -1;
+    a->ev.inotify_fd = a->tfd = a->sfd = -1;
     int r = fx_display_open(&a->disp, &o->display);
     if (r < 0) {
         free(a);
@@ -143,29 +150,34 @@ int fx_app_open(fx_app **out, const fx_app_options *o)
     fx_display_info info;
     fx_display_get_info(a->disp, &info);
     fx_input_init(&a->in, info.width, info.height, info.rotation);
-    snprintf(a->input_dir, sizeof a->input_dir, "%s", o->input_dir ? o->input_dir : "/dev/input");
-    a->grab = o->grab;
+    snprintf(a->ev.dir, sizeof a->ev.dir, "%s", o->input_dir ? o->input_dir : "/dev/input");
+    a->ev.grab = o->grab;
+    a->ev.sink = (fx_raw_sink){feed_raw, a};
+    a->ev.log = a->disp->log;
+    a->gpio.sink = (fx_event_sink){emit_button, a};
+    a->gpio.clock = (fx_clock){clock_now, NULL};
+    a->gpio.log = a->disp->log;
     load_pointercal(a, o->pointercal);
-    const char *touch = getenv("FIXEL_TOUCH");
+    const char *touch = o->touch;
     if (touch) {
-        a->calib.swap_xy = strstr(touch, "swap") != NULL;
-        a->calib.invert_x = strstr(touch, "invertx") != NULL;
-        a->calib.invert_y = strstr(touch, "inverty") != NULL;
+        a->ev.calib.swap_xy = strstr(touch, "swap") != NULL;
+        a->ev.calib.invert_x = strstr(touch, "invertx") != NULL;
+        a->ev.calib.invert_y = strstr(touch, "inverty") != NULL;
     }
     if (o->input)
-        fx_evdev_scan(a);
+        fx_evdev_scan(&a->ev);
     if (o->buttons && o->nbuttons > 0) {
-        fx_gpio_open_buttons(a, o->buttons, o->nbuttons);
-    } else if (getenv("FIXEL_BUTTONS") || FX_BOARD_GPIO_BUTTONS[0]) {
-        /* FIXEL_BUTTONS, else the board profile's default map */
-        const char *src = getenv("FIXEL_BUTTONS") ? getenv("FIXEL_BUTTONS") : FX_BOARD_GPIO_BUTTONS;
+        fx_gpio_open_buttons(&a->gpio, o->buttons, o->nbuttons);
+    } else if (o->button_map || FX_BOARD_GPIO_BUTTONS[0]) {
+        /* the map (FIXEL_BUTTONS), else the board profile's default map */
+        const char *src = o->button_map ? o->button_map : FX_BOARD_GPIO_BUTTONS;
         char *spec = strdup(src);
-        fx_gpio_button b[FX_APP_MAX_GPIO];
-        int n = spec ? fx_gpio_parse_buttons(spec, b, FX_APP_MAX_GPIO) : -FX_ENOMEM;
+        fx_gpio_button b[FX_GPIO_MAX_IN];
+        int n = spec ? fx_gpio_parse_buttons(spec, b, FX_GPIO_MAX_IN) : -FX_ENOMEM;
         if (n < 0)
             fx_display_log(a->disp, FX_LOG_ERROR, "gpio: cannot parse the button map '%s'", src);
         else
-            fx_gpio_open_buttons(a, b, n);
+            fx_gpio_open_buttons(&a->gpio, b, n);
         free(spec);
     }
     a->tfd = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
@@ -178,7 +190,7 @@ int fx_app_open(fx_app **out, const fx_app_options *o)
      * normally and fx_app_close restores the console. */
     sigprocmask(SIG_BLOCK, &set, NULL);
     a->sfd = signalfd(-1, &set, SFD_NONBLOCK | SFD_CLOEXEC);
-    a->pointer_mode = o->pointer != FX_POINTER_AUTO ? o->pointer : pointer_mode_from_env(a);
+    a->pointer_mode = o->pointer;
     fx_app_pointer_sync(a); /* drawn with the first frame */
     current = a;
     *out = a;
@@ -189,8 +201,8 @@ void fx_app_close(fx_app *a)
 {
     if (!a)
         return;
-    fx_evdev_close_all(a);
-    fx_gpio_close_all(a);
+    fx_evdev_close_all(&a->ev);
+    fx_gpio_close_all(&a->gpio);
     if (a->tfd >= 0)
         close(a->tfd);
     if (a->sfd >= 0)
@@ -219,14 +231,18 @@ int fx_app_present(fx_app *a, const fx_rect *damage, int n) { return fx_display_
 fx_display *fx_app_display(fx_app *a) { return a->disp; }
 void fx_app_quit(fx_app *a) { a->quit = 1; }
 void fx_app_size(const fx_app *a, int32_t *w, int32_t *h) { fx_input_logical_size(&a->in, w, h); }
-int fx_app_input_count(const fx_app *a) { return a->ndevs + a->ngpio; }
+int fx_app_input_count(const fx_app *a) { return a->ev.ndevs + a->gpio.nin; }
+int fx_app_gpio_output(fx_app *a, const char *chip, int offset, int value)
+{
+    return fx_gpio_output(&a->gpio, chip, offset, value);
+}
 
 int fx_app_timer(fx_app *a, unsigned ms, void (*fn)(void *user, int value), int value)
 {
     for (int i = 0; i < FX_APP_MAX_TIMERS; i++)
         if (!a->timers[i].used) {
             a->timers[i].used = 1;
-            a->timers[i].at_us = fx_app_now_us() + (uint64_t)ms * 1000;
+            a->timers[i].at_us = now_us() + (uint64_t)ms * 1000;
             a->timers[i].fn = fn;
             a->timers[i].value = value;
             return 0;
@@ -237,7 +253,7 @@ int fx_app_timer(fx_app *a, unsigned ms, void (*fn)(void *user, int value), int 
 /* Run due timers and debouncers; returns the next deadline. */
 static uint64_t run_timers(fx_app *a)
 {
-    uint64_t now = fx_app_now_us(), next = fx_gpio_poll(a, now);
+    uint64_t now = now_us(), next = fx_gpio_poll(&a->gpio, now);
     for (int i = 0; i < FX_APP_MAX_TIMERS; i++) {
         if (!a->timers[i].used)
             continue;
@@ -267,7 +283,7 @@ static void arm(fx_app *a, uint64_t at_us)
 
 int fx_app_main_loop(fx_app *a)
 {
-    enum { MAXFD = 4 + FX_APP_MAX_DEVS + FX_APP_MAX_GPIO };
+    enum { MAXFD = 4 + FX_EVDEV_MAX + FX_GPIO_MAX_IN };
     a->quit = 0;
     if (!a->started) {
         a->started = 1;
@@ -297,15 +313,15 @@ int fx_app_main_loop(fx_app *a)
             i_tim = n, p[n++] = (struct pollfd){a->tfd, POLLIN, 0};
         if (dfd >= 0)
             i_disp = n, p[n++] = (struct pollfd){dfd, POLLIN, 0};
-        if (a->inotify_fd >= 0)
-            i_ino = n, p[n++] = (struct pollfd){a->inotify_fd, POLLIN, 0};
+        if (a->ev.inotify_fd >= 0)
+            i_ino = n, p[n++] = (struct pollfd){a->ev.inotify_fd, POLLIN, 0};
         i_dev = n;
-        for (int k = 0; k < a->ndevs; k++)
-            p[n++] = (struct pollfd){a->devs[k]->fd, POLLIN, 0};
+        for (int k = 0; k < a->ev.ndevs; k++)
+            p[n++] = (struct pollfd){a->ev.devs[k]->fd, POLLIN, 0};
         i_gpio = n;
-        for (int k = 0; k < a->ngpio; k++)
-            p[n++] = (struct pollfd){a->gpio[k].fd, POLLIN, 0};
-        int ndev = a->ndevs, ngpio = a->ngpio;
+        for (int k = 0; k < a->gpio.nin; k++)
+            p[n++] = (struct pollfd){a->gpio.in[k].fd, POLLIN, 0};
+        int ndev = a->ev.ndevs, ngpio = a->gpio.nin;
         /* Sleep unless the program wants idle calls, or a frame is due and no
          * flip event will wake us (no DRM fd). */
         int timeout = a->cb.idle ? 0 : (a->redisplay && a->cb.display && dfd < 0) ? 1 : -1;
@@ -339,17 +355,17 @@ int fx_app_main_loop(fx_app *a)
         if (i_disp >= 0 && (p[i_disp].revents & POLLIN))
             fx_display_dispatch(a->disp);
         if (i_ino >= 0 && (p[i_ino].revents & POLLIN))
-            fx_evdev_hotplug(a);
+            fx_evdev_hotplug(&a->ev);
         /* Devices may be dropped while reading: walk from the end so the
          * swap-with-last removal never skips one. */
         for (int k = ndev - 1; k >= 0; k--)
             if (p[i_dev + k].revents & (POLLIN | POLLHUP | POLLERR))
-                if (k < a->ndevs && a->devs[k]->fd == p[i_dev + k].fd)
-                    fx_evdev_read(a, k);
+                if (k < a->ev.ndevs && a->ev.devs[k]->fd == p[i_dev + k].fd)
+                    fx_evdev_read(&a->ev, k);
         for (int k = ngpio - 1; k >= 0; k--)
             if (p[i_gpio + k].revents & (POLLIN | POLLHUP | POLLERR))
-                if (k < a->ngpio && a->gpio[k].fd == p[i_gpio + k].fd)
-                    fx_gpio_read(a, k);
+                if (k < a->gpio.nin && a->gpio.in[k].fd == p[i_gpio + k].fd)
+                    fx_gpio_read(&a->gpio, k);
         /* Once per pass, not per event: a burst of mouse reports costs one
          * repaint of the sprite. */
         fx_app_pointer_sync(a);

@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <time.h>
 
-#include "display_int.h"
+#include "posix_int.h"
 #include "fixel/error.h"
 
 struct fx_waiter {

@@ -8,10 +8,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "app_int.h"
 #include "fixel/error.h"
+#include "input_int.h"
 
-static int open_line(fx_app *a, const char *chipname, int offset, const char *name,
+static int open_line(fx_gpio_set *a, const char *chipname, int offset, const char *name,
                      struct gpiod_chip **chip, struct gpiod_line **line, int *close_chip)
 {
     *chip = NULL;
@@ -21,7 +21,7 @@ static int open_line(fx_app *a, const char *chipname, int offset, const char *na
         *chip = gpiod_chip_open_lookup(chipname);
         if (!*chip) {
             int e = errno;
-            fx_display_log(a->disp, FX_LOG_ERROR, "gpio: cannot open chip %s: %s%s", chipname,
+            fx_log(&a->log, FX_LOG_ERROR, "gpio: cannot open chip %s: %s%s", chipname,
                            strerror(e), e == EACCES ? " (add the user to the 'gpio' group)" : "");
             return -e;
         }
@@ -33,10 +33,10 @@ static int open_line(fx_app *a, const char *chipname, int offset, const char *na
     }
     if (!*line) {
         if (name && offset < 0)
-            fx_display_log(a->disp, FX_LOG_ERROR, "gpio: no line named \"%s\" on %s", name,
+            fx_log(&a->log, FX_LOG_ERROR, "gpio: no line named \"%s\" on %s", name,
                            chipname ? chipname : "any chip");
         else
-            fx_display_log(a->disp, FX_LOG_ERROR, "gpio: no line %d on %s", offset,
+            fx_log(&a->log, FX_LOG_ERROR, "gpio: no line %d on %s", offset,
                            chipname ? chipname : "(no chip given)");
         if (*chip)
             gpiod_chip_close(*chip);
@@ -46,11 +46,11 @@ static int open_line(fx_app *a, const char *chipname, int offset, const char *na
     return 0;
 }
 
-int fx_gpio_open_buttons(fx_app *a, const fx_gpio_button *b, int n)
+int fx_gpio_open_buttons(fx_gpio_set *a, const fx_gpio_button *b, int n)
 {
     int opened = 0;
-    for (int i = 0; i < n && a->ngpio < FX_APP_MAX_GPIO; i++) {
-        fx_gpio_in *g = &a->gpio[a->ngpio];
+    for (int i = 0; i < n && a->nin < FX_GPIO_MAX_IN; i++) {
+        fx_gpio_in *g = &a->in[a->nin];
         memset(g, 0, sizeof *g);
         if (open_line(a, b[i].chip, b[i].offset, b[i].name, &g->chip, &g->line, &g->close_chip) < 0)
             continue;
@@ -61,7 +61,7 @@ int fx_gpio_open_buttons(fx_app *a, const fx_gpio_button *b, int n)
                         : 0;
         if (gpiod_line_request_both_edges_events_flags(g->line, "fixel", flags) < 0) {
             int e = errno;
-            fx_display_log(a->disp, FX_LOG_ERROR, "gpio: cannot request line %d: %s%s",
+            fx_log(&a->log, FX_LOG_ERROR, "gpio: cannot request line %d: %s%s",
                            (int)gpiod_line_offset(g->line), strerror(e),
                            e == EBUSY ? " (another program uses it)" : "");
             if (g->close_chip)
@@ -74,9 +74,9 @@ int fx_gpio_open_buttons(fx_app *a, const fx_gpio_button *b, int n)
         g->b = b[i];
         int level = gpiod_line_get_value(g->line);
         fx_debounce_init(&g->db, b[i].debounce_ms ? b[i].debounce_ms : 20, level > 0);
-        a->ngpio++;
+        a->nin++;
         opened++;
-        fx_display_log(a->disp, FX_LOG_INFO, "gpio: button on line %u (%s) -> %s %d",
+        fx_log(&a->log, FX_LOG_INFO, "gpio: button on line %u (%s) -> %s %d",
                        gpiod_line_offset(g->line), gpiod_line_name(g->line) ? gpiod_line_name(g->line) : "unnamed",
                        b[i].special ? "special" : "key", b[i].key);
     }
@@ -92,9 +92,9 @@ static void close_in(fx_gpio_in *g)
         gpiod_chip_close(g->chip);
 }
 
-void fx_gpio_read(fx_app *a, int i)
+void fx_gpio_read(fx_gpio_set *a, int i)
 {
-    fx_gpio_in *g = &a->gpio[i];
+    fx_gpio_in *g = &a->in[i];
     struct gpiod_line_event ev;
     /* The event fd blocks: poll() announced one event, read exactly one. */
     if (gpiod_line_event_read_fd(g->fd, &ev) < 0) {
@@ -106,28 +106,28 @@ void fx_gpio_read(fx_app *a, int i)
         struct gpiod_chip *c = gpiod_line_get_chip(g->line);
         snprintf(chip, sizeof chip, "%s", c && gpiod_chip_name(c) ? gpiod_chip_name(c) : "?");
         int dropped = 0;
-        for (int k = a->ngpio - 1; k >= 0; k--) {
-            struct gpiod_chip *ck = gpiod_line_get_chip(a->gpio[k].line);
+        for (int k = a->nin - 1; k >= 0; k--) {
+            struct gpiod_chip *ck = gpiod_line_get_chip(a->in[k].line);
             if (k != i && !(e == ENODEV && ck && gpiod_chip_name(ck) && !strcmp(gpiod_chip_name(ck), chip)))
                 continue;
-            close_in(&a->gpio[k]);
-            a->gpio[k] = a->gpio[--a->ngpio];
+            close_in(&a->in[k]);
+            a->in[k] = a->in[--a->nin];
             dropped++;
         }
-        fx_display_log(a->disp, FX_LOG_ERROR, "gpio: %s vanished (%s); %d button%s dropped",
+        fx_log(&a->log, FX_LOG_ERROR, "gpio: %s vanished (%s); %d button%s dropped",
                        chip, strerror(e), dropped, dropped == 1 ? "" : "s");
         return;
     }
     /* Timed on our monotonic clock, not ev.ts: older kernels stamp v1 line
      * events with CLOCK_REALTIME, which must not meet timerfd deadlines. */
-    fx_debounce_edge(&g->db, ev.event_type == GPIOD_LINE_EVENT_RISING_EDGE, fx_app_now_us());
+    fx_debounce_edge(&g->db, ev.event_type == GPIOD_LINE_EVENT_RISING_EDGE, a->clock.now_us(a->clock.user));
 }
 
-uint64_t fx_gpio_poll(fx_app *a, uint64_t now)
+uint64_t fx_gpio_poll(fx_gpio_set *a, uint64_t now)
 {
     uint64_t next = UINT64_MAX;
-    for (int i = 0; i < a->ngpio; i++) {
-        fx_gpio_in *g = &a->gpio[i];
+    for (int i = 0; i < a->nin; i++) {
+        fx_gpio_in *g = &a->in[i];
         int r = fx_debounce_poll(&g->db, now);
         if (r >= 0) {
             fx_event e;
@@ -136,8 +136,7 @@ uint64_t fx_gpio_poll(fx_app *a, uint64_t now)
                                   : (r ? FX_EVENT_KEY : FX_EVENT_KEY_UP);
             e.key = g->b.key;
             e.time_us = now;
-            fx_input_to_logical(&a->in, a->in.px, a->in.py, &e.x, &e.y);
-            fx_app_emit(a, &e);
+            a->sink.fn(a->sink.user, &e);
         }
         uint64_t d = fx_debounce_deadline(&g->db);
         if (d < next)
@@ -146,10 +145,10 @@ uint64_t fx_gpio_poll(fx_app *a, uint64_t now)
     return next;
 }
 
-void fx_gpio_close_all(fx_app *a)
+void fx_gpio_close_all(fx_gpio_set *a)
 {
-    while (a->ngpio)
-        close_in(&a->gpio[--a->ngpio]);
+    while (a->nin)
+        close_in(&a->in[--a->nin]);
     while (a->nout) {
         fx_gpio_out *o = &a->out[--a->nout];
         gpiod_line_release(o->line);
@@ -157,12 +156,12 @@ void fx_gpio_close_all(fx_app *a)
     }
 }
 
-int fx_app_gpio_output(fx_app *a, const char *chip, int offset, int value)
+int fx_gpio_output(fx_gpio_set *a, const char *chip, int offset, int value)
 {
     for (int i = 0; i < a->nout; i++)
         if (a->out[i].offset == offset && !strcmp(a->out[i].chipname, chip))
             return gpiod_line_set_value(a->out[i].line, value) < 0 ? -errno : 0;
-    if (a->nout == FX_APP_MAX_OUT)
+    if (a->nout == FX_GPIO_MAX_OUT)
         return -FX_ENOSPC;
     fx_gpio_out *o = &a->out[a->nout];
     int close_chip;
@@ -171,7 +170,7 @@ int fx_app_gpio_output(fx_app *a, const char *chip, int offset, int value)
         return r;
     if (gpiod_line_request_output(o->line, "fixel", value) < 0) {
         r = -errno;
-        fx_display_log(a->disp, FX_LOG_ERROR, "gpio: cannot drive %s line %d: %s", chip, offset,
+        fx_log(&a->log, FX_LOG_ERROR, "gpio: cannot drive %s line %d: %s", chip, offset,
                        strerror(-r));
         gpiod_chip_close(o->chip);
         return r;

@@ -1,31 +1,22 @@
-/* Internal to boards/linux: the display object shared by display.c, drm.c,
- * fbdev.c and vt.c, and the pure helpers of present.c (which tests/core
- * exercises through this header, libevdev style). Not installed. */
+/* Internal to boards/: the display object and the backend ops table, shared
+ * by the front end (boards/display/display.c, which also sees the console)
+ * and the backends (boards/memory, boards/linux/display, boards/linux/drm),
+ * which see only this header and the posix layer; and the pure helpers of
+ * present.c and formats.c (which tests/core exercises through this header,
+ * libevdev style). Not installed. */
 #ifndef FIXEL_DISPLAY_INT_H
 #define FIXEL_DISPLAY_INT_H
 
 #include <stdint.h>
 
+#include "../posix/posix_int.h"
 #include "fixel/display.h"
+#include "fixel/scanout.h"
 #include "fixel/sprite.h"
 #include "fixel/surface.h"
 
-/* ---- pure helpers (present.c: no OS headers, no allocation) ---- */
-
-/* fbdev pixel layout as FBIOGET_VSCREENINFO reports it, reduced to the
- * fields that decide the format. */
-typedef struct fx_fb_bitfields {
-    uint32_t bits_per_pixel;
-    uint32_t grayscale;        /* 1 = gray, 0 = colour (fourcc values are not handled) */
-    uint32_t red_offset, red_length;
-    uint32_t green_offset, green_length;
-    uint32_t blue_offset, blue_length;
-    uint32_t transp_offset, transp_length;
-    int mono_inverted;         /* FB_VISUAL_MONO01: a set bit is black */
-} fx_fb_bitfields;
-
-/* The fixel format matching the layout, or FX_FMT_COUNT when none does. */
-fx_format fx_fb_format_from_bitfields(const fx_fb_bitfields *b);
+/* ---- pure helpers (present.c, formats.c: no OS headers, no allocation;
+ * the public ones are in fixel/scanout.h) ---- */
 
 /* "WxH" or "WxH@Hz" (decimal, no spaces). hz is 0 when absent. Returns 0 or
  * -FX_EINVAL. */
@@ -46,16 +37,6 @@ void fx_damage_reset(fx_damage *d);
 /* Adds r clipped to bounds (empty results are ignored). */
 void fx_damage_add(fx_damage *d, fx_rect r, fx_rect bounds);
 int64_t fx_damage_area(const fx_damage *d);
-
-/* Physical size of a logical w x h surface under rotation, and back: 90 and
- * 270 swap the sides. */
-void fx_rotated_size(int rotation, int32_t w, int32_t h, int32_t *rw, int32_t *rh);
-
-
-/* Copy logical rectangle r of src into dst under rotation. src and dst have
- * the same format; dst is the physical surface (sides swapped for 90/270);
- * r must lie inside src. Every format is supported, MONO1 included. */
-void fx_copy_rotated(const fx_surface *dst, const fx_surface *src, fx_rect r, int rotation);
 
 /* A DRM plane's "rotation" property: its enum entries as the kernel lists
  * them (struct drm_mode_property_enum). Values of a bitmask property are
@@ -85,18 +66,6 @@ int fx_plane_rotation_choose(int rotation, int has_property, uint32_t mask, int 
  * when nothing usable is offered or want is another format. */
 fx_format fx_drm_format_choose(fx_format want, int has_xrgb, int has_565, const char **why);
 
-/* ---- blocking calls with a timeout (waiter.c) ---- */
-
-typedef struct fx_waiter fx_waiter;
-/* A helper thread (all signals blocked) that runs fn(arg) on request. */
-int fx_waiter_create(fx_waiter **w, int (*fn)(void *arg), void *arg);
-/* Run fn and wait at most timeout_ms: 0 when it returned (its value in
- * *result), 1 when it is still running (a later run waits for, or collects,
- * that same call instead of starting another). */
-int fx_waiter_run(fx_waiter *w, int timeout_ms, int *result);
-/* Stop the thread; one stuck in fn is left to free everything itself. */
-void fx_waiter_destroy(fx_waiter *w);
-
 /* ---- the display object ---- */
 
 struct fx_backend_ops {
@@ -113,15 +82,15 @@ struct fx_backend_ops {
     int (*resume)(fx_display *d);
     /* A second fd for the event loop (DRM: kernel uevents), or -1. */
     int (*hotplug_fd)(const fx_display *d);
+    /* From a fatal or terminating signal: put back what the backend changed
+     * (CRTC, plane rotation) with async-signal-safe calls only; NULL when
+     * there is nothing to restore. */
+    void (*emergency_restore)(fx_display *d);
 };
-
-typedef struct fx_vt fx_vt;
 
 struct fx_display {
     fx_display_options opt;
-    fx_log_func log;
-    void *log_user;
-    int log_priority;
+    fx_logger log;          /* the program's log function and level */
 
     const struct fx_backend_ops *ops;
     void *priv;
@@ -148,13 +117,17 @@ struct fx_display {
     void (*flip_cb)(fx_display *d, void *user);
     void *flip_user;
 
-    fx_vt *vt;
+    struct fx_vt *vt;       /* the console (boards/linux/console), NULL when none */
     int epoll_fd;           /* DRM fd + VT signal pipe, for event loops */
     int away;               /* our VT is not on screen */
     void (*vt_cb)(fx_display *d, int active, void *user);
     void *vt_user;
     void (*reshape_cb)(fx_display *d, int32_t w, int32_t h, void *user);
     void *reshape_user;
+    /* Set by the front end: backends call it after replacing scan[] with
+     * buffers of a new size (d->info.width/height updated); the shadow
+     * follows, the program is told. */
+    int (*resized)(fx_display *d);
 
     /* Software pointer: drawn only into scanout buffers, never into the
      * program's surface (direct mode takes it out again before handing the
@@ -172,45 +145,20 @@ struct fx_display {
     } ptr;
 };
 
-/* Backends call this after replacing scan[] with buffers of a new size
- * (d->info.width/height updated): the shadow follows, the program is told. */
-int fx_display_resized(fx_display *d);
-
-void fx_display_logv(const fx_display *d, fx_log_priority p, const char *fmt, va_list ap);
-/* Called by backends when a flip completes. */
-void fx_display_flip_done(fx_display *d);
+/* Backends call this when a flip completes. */
+static inline void fx_display_flip_done(fx_display *d)
+{
+    d->flip_pending = 0;
+    d->info.flips++;
+    if (d->flip_cb)
+        d->flip_cb(d, d->flip_user);
+}
 
 /* Backends: fill d->scan[], d->nbuf, d->info and d->ops, or fail with a
- * logged reason. */
+ * logged reason. The front end calls them (boards/memory,
+ * boards/linux/display, boards/linux/drm or boards/linux/absent). */
 int fx_drm_open(fx_display *d);
 int fx_fbdev_open(fx_display *d);
-
-/* For the emergency (signal) path: restore what the backend changed using
- * only async-signal-safe calls. */
-void fx_drm_emergency_restore(void *priv);
-
-/* Console: switch to graphics and mute the keyboard; restore. */
-int fx_vt_enter(fx_display *d, fx_vt **out);
-void fx_vt_leave(fx_vt *vt);
-/* VT_PROCESS switching: the fd that becomes readable when a switch is
- * requested (-1 when switching is not handled), and the handler that reads
- * it and calls back into display.c (fx_display_vt_release/acquire). */
-int fx_vt_event_fd(const fx_vt *vt);
-void fx_vt_handle_events(fx_display *d);
-int fx_vt_number(const fx_vt *vt);
-int fx_vt_activate(fx_vt *vt, int n);
-/* display.c: leave or retake the screen; release returns 1 to allow. */
-int fx_display_vt_release(fx_display *d);
-void fx_display_vt_acquire(fx_display *d);
-
-/* Fatal/terminating-signal restoration: each open display registers its
- * backend restore and console. */
-void fx_signals_register(fx_display *d);
-void fx_signals_unregister(fx_display *d);
-/* The emergency path for one display (async-signal-safe). */
-void fx_vt_emergency_restore(fx_vt *vt);
-
-/* When open() on path fails with EACCES, name the group that owns the node. */
-void fx_log_access_hint(const fx_display *d, const char *path);
+int fx_memory_open(fx_display *d);
 
 #endif

@@ -12,6 +12,7 @@
 #include <sys/epoll.h>
 #include <unistd.h>
 
+#include "../linux/console/console_int.h"
 #include "display_int.h"
 #include "fixel/error.h"
 
@@ -25,41 +26,11 @@
 
 /* ---- logging ----------------------------------------------------------- */
 
-static void default_log(fx_log_priority p, void *user, const char *fmt, va_list ap)
-{
-    (void)p;
-    (void)user;
-    char line[512];
-    vsnprintf(line, sizeof line, fmt, ap);
-    fprintf(stderr, "fixel: %s\n", line);
-}
-
-static int env_log_priority(void)
-{
-    const char *e = getenv("FIXEL_LOG");
-    if (!e || !*e)
-        return FX_LOG_INFO;
-    if (!strcasecmp(e, "debug"))
-        return FX_LOG_DEBUG;
-    if (!strcasecmp(e, "error"))
-        return FX_LOG_ERROR;
-    if (!strcasecmp(e, "none"))
-        return 0;
-    return FX_LOG_INFO;
-}
-
-void fx_display_logv(const fx_display *d, fx_log_priority p, const char *fmt, va_list ap)
-{
-    if ((int)p > d->log_priority)
-        return;
-    d->log(p, d->log_user, fmt, ap);
-}
-
 void fx_display_log(const fx_display *d, fx_log_priority p, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    fx_display_logv(d, p, fmt, ap);
+    fx_logv(&d->log, p, fmt, ap);
     va_end(ap);
 }
 
@@ -71,6 +42,7 @@ void fx_display_options_init(fx_display_options *o)
     o->backend = FX_BACKEND_AUTO;
     o->present = FX_PRESENT_AUTO;
     o->format = FX_FMT_COUNT;
+    o->drm_format = FX_FMT_COUNT;
     o->rotation = -1;
     o->console = 1;
     o->signals = 1;
@@ -103,50 +75,27 @@ static int parse_backend(const char *s, fx_backend *b)
     return 0;
 }
 
-/* ---- memory backend -------------------------------------------------- */
-
-static int mem_show(fx_display *d, int buf, const fx_rect *phys, int n)
-{
-    (void)d, (void)buf, (void)phys, (void)n;
-    return 0;
-}
-static int mem_wait(fx_display *d, int t) { (void)d, (void)t; return 0; }
-static int mem_dispatch(fx_display *d) { (void)d; return 0; }
-static int mem_fd(const fx_display *d) { (void)d; return -1; }
-static void mem_close(fx_display *d) { free(d->memory_mem); d->memory_mem = NULL; }
-
-static const struct fx_backend_ops mem_ops = {mem_show, mem_wait, mem_dispatch, mem_fd, mem_close,
-                                              NULL, NULL, NULL};
-
-static int memory_open(fx_display *d)
-{
-    fx_format f = d->opt.format == FX_FMT_COUNT ? FX_FMT_XRGB8888 : d->opt.format;
-    int32_t w = d->opt.memory_w, h = d->opt.memory_h;
-    if (w <= 0 || h <= 0 || w > 16384 || h > 16384)
-        return -FX_EINVAL;
-    int32_t stride = fx_format_min_stride(f, w);
-    d->memory_mem = calloc((size_t)h, (size_t)stride);
-    if (!d->memory_mem)
-        return -FX_ENOMEM;
-    int r = fx_surface_init(&d->scan[0], d->memory_mem, w, h, stride, f);
-    if (r < 0)
-        return r;
-    d->nbuf = 1;
-    d->ops = &mem_ops;
-    d->info.width = w;
-    d->info.height = h;
-    d->info.format = f;
-    return 0;
-}
-
 /* ---- open / close ------------------------------------------------------ */
+
+static int vt_release(void *user);
+static void vt_acquire(void *user);
+
+/* The signal path (async-signal-safe): the backend's restore, then the
+ * console's. */
+static void emergency_restore(void *user)
+{
+    fx_display *d = user;
+    if (d->ops && d->ops->emergency_restore)
+        d->ops->emergency_restore(d);
+    fx_vt_emergency_restore(d->vt);
+}
 
 static int open_backend(fx_display *d, fx_backend b)
 {
     switch (b) {
     case FX_BACKEND_DRM: return fx_drm_open(d);
     case FX_BACKEND_FBDEV: return fx_fbdev_open(d);
-    default: return memory_open(d);
+    default: return fx_memory_open(d);
     }
 }
 
@@ -178,7 +127,7 @@ static int alloc_shadow(fx_display *d)
     return fx_surface_init(&d->shadow, d->shadow_mem, lw, lh, stride, d->info.format);
 }
 
-int fx_display_resized(fx_display *d)
+static int display_resized(fx_display *d)
 {
     int r = 0;
     if (d->info.present == FX_PRESENT_SHADOW)
@@ -203,15 +152,6 @@ static int choose_present(fx_display *d)
 {
     fx_present_mode m = d->opt.present;
     const char *why;
-    const char *env = getenv("FIXEL_PRESENT");
-    if (m == FX_PRESENT_AUTO && env && *env) {
-        if (!strcasecmp(env, "direct"))
-            m = FX_PRESENT_DIRECT;
-        else if (!strcasecmp(env, "shadow"))
-            m = FX_PRESENT_SHADOW;
-        else
-            fx_display_log(d, FX_LOG_ERROR, "FIXEL_PRESENT=%s ignored (direct or shadow)", env);
-    }
     if (m == FX_PRESENT_DIRECT && d->sw_rotation != 0) {
         fx_display_log(d, FX_LOG_INFO, "rotation %d needs a back buffer: shadow presentation",
                        d->sw_rotation);
@@ -249,9 +189,10 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
     if (!d)
         return -FX_ENOMEM;
     d->opt = *opt;
-    d->log = opt->log ? opt->log : default_log;
-    d->log_user = opt->log_user;
-    d->log_priority = opt->log_priority ? opt->log_priority : env_log_priority();
+    d->log.fn = opt->log ? opt->log : fx_log_stderr;
+    d->log.user = opt->log_user;
+    d->log.priority = opt->log_priority ? opt->log_priority : FX_LOG_INFO;
+    d->resized = display_resized;
     d->shown = -1;
     d->epoll_fd = -1;
     d->ptr.sprite = *fx_sprite_arrow();
@@ -260,10 +201,8 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
         d->ptr.save[i].cap = FX_SPRITE_MAX * FX_SPRITE_MAX;
     }
 
-    if (d->opt.rotation < 0) {
-        const char *e = getenv("FIXEL_ROTATION");
-        d->opt.rotation = e && *e ? atoi(e) : FX_BOARD_ROTATION;
-    }
+    if (d->opt.rotation < 0)
+        d->opt.rotation = FX_BOARD_ROTATION;
     if (d->opt.rotation != 0 && d->opt.rotation != 90 && d->opt.rotation != 180 &&
         d->opt.rotation != 270) {
         fx_display_log(d, FX_LOG_ERROR, "rotation %d is not 0, 90, 180 or 270", d->opt.rotation);
@@ -276,18 +215,11 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
     fx_backend b = d->opt.backend;
     char reasons[256] = "";
     const char *why = "requested by the program";
-    if (b == FX_BACKEND_AUTO) {
-        const char *e = getenv("FIXEL_BACKEND");
-        if (e && *e) {
-            if (parse_backend(e, &b) < 0) {
-                fx_display_log(d, FX_LOG_ERROR, "FIXEL_BACKEND=%s: use drm, fbdev or memory", e);
-                free(d);
-                return -FX_EINVAL;
-            }
-            why = "FIXEL_BACKEND";
-        } else if (parse_backend(FX_BOARD_BACKEND, &b) == 0 && b != FX_BACKEND_AUTO) {
+    if (d->opt.backend_from_env) {
+        why = "FIXEL_BACKEND"; /* and FIXEL_BACKEND=auto skips the board default */
+    } else if (b == FX_BACKEND_AUTO) {
+        if (parse_backend(FX_BOARD_BACKEND, &b) == 0 && b != FX_BACKEND_AUTO)
             why = "board profile default";
-        }
     }
 
     int r;
@@ -355,12 +287,13 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
                    d->opt.rotation ? " " : "", d->opt.rotation ? d->rotation_why : "", why);
 
     if (d->info.backend != FX_BACKEND_MEMORY && d->opt.console) {
-        r = fx_vt_enter(d, &d->vt);
+        fx_vt_hooks hooks = {vt_release, vt_acquire, d};
+        r = fx_vt_enter(&d->vt, &d->log, d->opt.vt_switch == FX_VT_SWITCH_DENY, &hooks);
         if (r < 0)
             d->vt = NULL; /* logged; a display without a VT (ssh, serial) still works */
     }
     if (d->opt.signals && d->info.backend != FX_BACKEND_MEMORY)
-        fx_signals_register(d);
+        fx_signals_register(emergency_restore, d);
     d->info.vt = fx_vt_number(d->vt);
 
     /* One fd for event loops: flip events, hotplug and VT switch requests. */
@@ -385,7 +318,7 @@ void fx_display_close(fx_display *d)
     if (d->ops && d->flip_pending)
         d->ops->wait(d, 200);
     if (d->opt.signals && d->info.backend != FX_BACKEND_MEMORY)
-        fx_signals_unregister(d);
+        fx_signals_unregister(emergency_restore, d);
     if (d->ops)
         d->ops->close(d);
     if (d->vt)
@@ -476,14 +409,6 @@ fx_surface fx_display_screen(const fx_display *d)
 
 /* ---- frames ------------------------------------------------------------ */
 
-void fx_display_flip_done(fx_display *d)
-{
-    d->flip_pending = 0;
-    d->info.flips++;
-    if (d->flip_cb)
-        d->flip_cb(d, d->flip_user);
-}
-
 static void wait_flip(fx_display *d)
 {
     if (d->flip_pending)
@@ -492,7 +417,7 @@ static void wait_flip(fx_display *d)
 
 fx_surface fx_display_surface(fx_display *d)
 {
-    fx_vt_handle_events(d);
+    fx_vt_handle_events(d->vt);
     if (d->info.present == FX_PRESENT_SHADOW)
         return d->shadow;
     wait_flip(d);
@@ -540,7 +465,7 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n)
     if (cur.n == 0)
         return 0;
 
-    fx_vt_handle_events(d);
+    fx_vt_handle_events(d->vt);
     /* Switched away, fbdev memory shows another VT's console: leave it
      * alone; the return to our VT redraws from the shadow. */
     if (d->away && d->info.backend == FX_BACKEND_FBDEV)
@@ -605,14 +530,15 @@ int fx_display_fd(const fx_display *d)
 
 int fx_display_dispatch(fx_display *d)
 {
-    fx_vt_handle_events(d);
+    fx_vt_handle_events(d->vt);
     return d->ops->dispatch(d);
 }
 
 /* ---- VT switching ------------------------------------------------------- */
 
-int fx_display_vt_release(fx_display *d)
+static int vt_release(void *user)
 {
+    fx_display *d = user;
     if (d->opt.vt_switch == FX_VT_SWITCH_DENY) {
         d->info.vt_refused++;
         fx_display_log(d, FX_LOG_DEBUG, "VT switch refused (kiosk policy)");
@@ -629,8 +555,9 @@ int fx_display_vt_release(fx_display *d)
     return 1;
 }
 
-void fx_display_vt_acquire(fx_display *d)
+static void vt_acquire(void *user)
 {
+    fx_display *d = user;
     if (d->ops->resume && d->ops->resume(d) < 0)
         fx_display_log(d, FX_LOG_ERROR, "back on our VT but the display could not be retaken");
     if (d->info.backend == FX_BACKEND_FBDEV && d->info.present == FX_PRESENT_SHADOW && d->shown >= 0)

@@ -15,7 +15,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
-#include "display_int.h"
+#include "../../display/display_int.h"
 #include "fixel/error.h"
 
 /* Longer than any real frame (10 Hz panels included): a wait that takes
@@ -51,12 +51,12 @@ static void wait_vsync(fx_display *d, struct fb_priv *p)
         return;
     }
     if (fx_waiter_run(p->vsync_waiter, VSYNC_TIMEOUT_MS, &result) != 0) {
-        fx_display_log(d, FX_LOG_INFO, "FBIO_WAITFORVSYNC did not return within %d ms; "
+        fx_log(&d->log, FX_LOG_INFO, "FBIO_WAITFORVSYNC did not return within %d ms; "
                        "presenting without waiting for vsync", VSYNC_TIMEOUT_MS);
         p->vsync = 0;
         p->vsync_stuck = 1;
     } else if (result < 0) {
-        fx_display_log(d, FX_LOG_DEBUG, "FBIO_WAITFORVSYNC unsupported (%s)", strerror(-result));
+        fx_log(&d->log, FX_LOG_DEBUG, "FBIO_WAITFORVSYNC unsupported (%s)", strerror(-result));
         p->vsync = 0;
     }
 }
@@ -74,7 +74,7 @@ static int fb_show(fx_display *d, int buf, const fx_rect *phys, int n)
         wait_vsync(d, p);
         if (ioctl(p->fd, FBIOPAN_DISPLAY, &v) < 0) {
             int e = errno;
-            fx_display_log(d, FX_LOG_ERROR, "FBIOPAN_DISPLAY failed: %s", strerror(e));
+            fx_log(&d->log, FX_LOG_ERROR, "FBIOPAN_DISPLAY failed: %s", strerror(e));
             return -e;
         }
         p->var.yoffset = v.yoffset;
@@ -84,7 +84,7 @@ static int fb_show(fx_display *d, int buf, const fx_rect *phys, int n)
         struct fb_var_screeninfo v = p->var;
         v.activate = FB_ACTIVATE_NOW | FB_ACTIVATE_FORCE;
         if (ioctl(p->fd, FBIOPUT_VSCREENINFO, &v) < 0)
-            fx_display_log(d, FX_LOG_DEBUG, "FB_ACTIVATE_FORCE refused: %s", strerror(errno));
+            fx_log(&d->log, FX_LOG_DEBUG, "FB_ACTIVATE_FORCE refused: %s", strerror(errno));
     }
     return 0;
 }
@@ -132,7 +132,7 @@ static int fb_resume(fx_display *d)
 }
 
 static const struct fx_backend_ops fb_ops = {fb_show, fb_wait, fb_dispatch, fb_fd, fb_close, NULL,
-                                             fb_resume, NULL};
+                                             fb_resume, NULL, NULL};
 
 static int try_double_buffer(struct fb_priv *p)
 {
@@ -168,7 +168,7 @@ int fx_fbdev_open(fx_display *d)
     if (path && !strstr(path, "fb"))
         path = NULL; /* a /dev/dri/cardN device is for the DRM backend */
     if (!path)
-        path = getenv("FIXEL_FB_DEVICE");
+        path = d->opt.fb_device;
     if (!path || !*path)
         path = "/dev/fb0";
     snprintf(d->device, sizeof d->device, "%s", path);
@@ -177,9 +177,9 @@ int fx_fbdev_open(fx_display *d)
     if (fd < 0) {
         int e = errno;
         if (e == EACCES || e == EPERM)
-            fx_log_access_hint(d, path);
+            fx_log_access_hint(&d->log, path);
         else
-            fx_display_log(d, FX_LOG_DEBUG, "%s: %s", path, strerror(e));
+            fx_log(&d->log, FX_LOG_DEBUG, "%s: %s", path, strerror(e));
         return -e;
     }
     struct fb_priv *p = calloc(1, sizeof *p);
@@ -194,12 +194,12 @@ int fx_fbdev_open(fx_display *d)
 
     if (ioctl(fd, FBIOGET_VSCREENINFO, &p->var) < 0 || ioctl(fd, FBIOGET_FSCREENINFO, &p->fix) < 0) {
         int e = errno;
-        fx_display_log(d, FX_LOG_ERROR, "%s: not a framebuffer: %s", path, strerror(e));
+        fx_log(&d->log, FX_LOG_ERROR, "%s: not a framebuffer: %s", path, strerror(e));
         return -e;
     }
     p->saved = p->var;
     if (p->fix.type != FB_TYPE_PACKED_PIXELS) {
-        fx_display_log(d, FX_LOG_ERROR, "%s: framebuffer type %u is not packed pixels", path,
+        fx_log(&d->log, FX_LOG_ERROR, "%s: framebuffer type %u is not packed pixels", path,
                        p->fix.type);
         return -FX_ENOTSUP;
     }
@@ -213,7 +213,7 @@ int fx_fbdev_open(fx_display *d)
     };
     fx_format f = fx_fb_format_from_bitfields(&bf);
     if (f == FX_FMT_COUNT) {
-        fx_display_log(d, FX_LOG_ERROR,
+        fx_log(&d->log, FX_LOG_ERROR,
                        "%s: unsupported pixel layout %u bpp r%u/%u g%u/%u b%u/%u gray %u visual %u",
                        path, bf.bits_per_pixel, bf.red_offset, bf.red_length, bf.green_offset,
                        bf.green_length, bf.blue_offset, bf.blue_length, p->var.grayscale,
@@ -227,7 +227,7 @@ int fx_fbdev_open(fx_display *d)
     if (p->map == MAP_FAILED) {
         int e = errno;
         p->map = NULL;
-        fx_display_log(d, FX_LOG_ERROR, "%s: mmap of %zu bytes failed: %s", path, p->map_len, strerror(e));
+        fx_log(&d->log, FX_LOG_ERROR, "%s: mmap of %zu bytes failed: %s", path, p->map_len, strerror(e));
         return -e;
     }
 
@@ -238,7 +238,7 @@ int fx_fbdev_open(fx_display *d)
     size_t first = dbl ? 0 : (size_t)p->var.yoffset * stride + (size_t)p->var.xoffset * bpp / 8;
     size_t need = first + (size_t)stride * (size_t)h * (dbl ? 2 : 1);
     if (need > p->map_len || fx_format_min_stride(f, w) > stride) {
-        fx_display_log(d, FX_LOG_ERROR, "%s: %dx%d stride %d does not fit smem_len %zu", path, w, h,
+        fx_log(&d->log, FX_LOG_ERROR, "%s: %dx%d stride %d does not fit smem_len %zu", path, w, h,
                        stride, p->map_len);
         return -FX_EINVAL;
     }

@@ -1,0 +1,11 @@
+/* Built instead of boards/linux/drm/ when libdrm is not there (a board
+ * toolchain without the target's libraries): the DRM backend reports
+ * itself unavailable, so the automatic order goes on to fbdev and memory. */
+#include "../../display/display_int.h"
+#include "fixel/error.h"
+
+int fx_drm_open(fx_display *d)
+{
+    fx_log(&d->log, FX_LOG_DEBUG, "drm: this build has no libdrm");
+    return -FX_ENOTSUP;
+}

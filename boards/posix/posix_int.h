@@ -1,0 +1,41 @@
+/* Internal to boards/: the bottom layer of the boards side, above the core
+ * only. A logger (the display's log function and level, handed down to the
+ * console and input layers so they never call up into the display), the
+ * permission hint, and a blocking call with a timeout. POSIX and pthreads;
+ * no board library, no fixel object. Not installed. */
+#ifndef FIXEL_POSIX_INT_H
+#define FIXEL_POSIX_INT_H
+
+#include <stdarg.h>
+
+#include "fixel/log.h"
+
+/* Where a layer's diagnostics go: messages above priority are dropped. */
+typedef struct fx_logger {
+    fx_log_func fn;
+    void *user;
+    int priority;
+} fx_logger;
+
+void fx_logv(const fx_logger *l, fx_log_priority p, const char *fmt, va_list ap);
+void fx_log(const fx_logger *l, fx_log_priority p, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+/* The default log function: "fixel: " and the message on stderr. */
+void fx_log_stderr(fx_log_priority p, void *user, const char *fmt, va_list ap);
+
+/* When open() on path fails with EACCES, name the group that owns the node. */
+void fx_log_access_hint(const fx_logger *l, const char *path);
+
+/* ---- blocking calls with a timeout (waiter.c) ---- */
+
+typedef struct fx_waiter fx_waiter;
+/* A helper thread (all signals blocked) that runs fn(arg) on request. */
+int fx_waiter_create(fx_waiter **w, int (*fn)(void *arg), void *arg);
+/* Run fn and wait at most timeout_ms: 0 when it returned (its value in
+ * *result), 1 when it is still running (a later run waits for, or collects,
+ * that same call instead of starting another). */
+int fx_waiter_run(fx_waiter *w, int timeout_ms, int *result);
+/* Stop the thread; one stuck in fn is left to free everything itself. */
+void fx_waiter_destroy(fx_waiter *w);
+
+#endif
