@@ -95,15 +95,22 @@ endif
 TOOL_BINS  := $(TOOLS:%=$(BUILD)/bin/%)
 
 # Test suites: each entry is a command that prints a final "N passed, N failed".
-# test_display exercises boards/linux, which needs the board libraries.
-TEST_SRC   := $(sort $(filter-out $(if $(HAVE_OPT),,tests/core/test_display.c tests/core/test_pointer.c),$(wildcard tests/core/*.c)))
+# The unit binary holds the tests of every layer (tests/README.md):
+#   tests/core/    kernel-free-src        tests/boards/  boards/
+#   tests/tools/   the tools' own code    tests/lib/     the framework and shared helpers
+# test_display and test_pointer exercise boards/linux's backends, which need
+# the board libraries.
+TEST_DIRS  := tests/core tests/boards tests/tools
+TEST_SRC   := $(sort $(filter-out $(if $(HAVE_OPT),,tests/boards/test_display.c tests/boards/test_pointer.c),\
+                $(foreach d,$(TEST_DIRS),$(wildcard $(d)/*.c))))
+TEST_LIB_SRC := $(sort $(wildcard tests/lib/*.c))
 # 32-bit targets have no __int128: test files whose reference arithmetic
 # needs it unguarded run on 64-bit hosts only (tests/arm/test-arm.sh says so).
 ifeq ($(shell echo '__int128 x;' | $(CC) -x c -c -o /dev/null - 2>/dev/null && echo y),)
   TEST_NEEDS_128 := $(shell grep -l '__int128' $(TEST_SRC) | xargs -r grep -L '__SIZEOF_INT128__')
   TEST_SRC := $(filter-out $(TEST_NEEDS_128),$(TEST_SRC))
 endif
-TEST_OBJ   := $(TEST_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/runner.o $(BUILD)/obj/tests/registry.o
+TEST_OBJ   := $(TEST_SRC:%.c=$(BUILD)/obj/%.o) $(TEST_LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/registry.o
 TEST_BIN   := $(BUILD)/tests/unit
 GOLDEN_BIN := $(BUILD)/tests/golden
 TEST_SUITES :=
@@ -136,7 +143,7 @@ $(BUILD)/obj/kernel-free-src/%.o: kernel-free-src/%.c
 $(BUILD)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
 	@$(if $(Q),echo "  CC      $<")
-	$(Q)$(CC) $(BASEFLAGS) -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 $(PKG_CFLAGS) -Itests $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+	$(Q)$(CC) $(BASEFLAGS) -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 $(PKG_CFLAGS) -Itests -Itests/lib $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
 $(LIB_A): $(LIB_OBJ)
 	@mkdir -p $(dir $@)
@@ -166,13 +173,13 @@ $(BUILD)/fixel.pc: Makefile
 	  '$(PREFIX)' '$(VERSION)' '' '$(PKGS)' > $@
 
 # ---- tests ----
-$(BUILD)/tests/registry.c: $(TEST_SRC) tests/gen-registry.sh
+$(BUILD)/tests/registry.c: $(TEST_SRC) tests/lib/gen-registry.sh
 	@mkdir -p $(dir $@)
-	sh tests/gen-registry.sh $(TEST_SRC) > $@
+	sh tests/lib/gen-registry.sh $(TEST_SRC) > $@
 
 $(BUILD)/obj/tests/registry.o: $(BUILD)/tests/registry.c
 	@mkdir -p $(dir $@)
-	$(CC) $(BASEFLAGS) -Itests $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+	$(CC) $(BASEFLAGS) -Itests/lib $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
 $(TEST_BIN): $(TEST_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)
@@ -216,7 +223,7 @@ test: deps-check
 #   tests/golden/<FORMAT>/  scene scripts per pixel format (tests/golden/golden.c)
 #   tests/golden/demo/      fixel-demo's gallery pages     (tools/fixel-demo)
 #   tests/golden/kiosk/     fixel-kiosk's chosen frames    (tests/kiosk/run.sh)
-#   tests/input/pointer/    pointer replay frames          (tests/core/test_pointer.c)
+#   tests/input/pointer/    pointer replay frames          (tests/boards/test_pointer.c)
 GOLDEN_UPDATES := golden-update-scenes demo-golden-update kiosk-golden-update pointer-golden-update
 golden-update: $(GOLDEN_UPDATES)
 golden-update-scenes: all $(GOLDEN_BIN)

@@ -1,5 +1,5 @@
 /* Internal to boards/linux: the display object shared by display.c, drm.c,
- * fbdev.c and vt.c, and the pure helpers of present.c (which tests/core
+ * fbdev.c and vt.c, and the pure helpers of present.c (which tests/boards
  * exercises through this header, libevdev style). Not installed. */
 #ifndef FIXEL_DISPLAY_INT_H
 #define FIXEL_DISPLAY_INT_H

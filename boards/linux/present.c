@@ -1,6 +1,6 @@
 /* The pure half of the display backends: deciding a pixel format from fbdev
  * bitfields, parsing mode strings, merging damage and copying rectangles
- * under rotation. No OS headers and no allocation, so tests/core can feed it
+ * under rotation. No OS headers and no allocation, so tests/boards can feed it
  * fake device state. */
 #include <stddef.h>
 #include <string.h>
