@@ -116,7 +116,7 @@ GOLDEN_BIN := $(BUILD)/tests/golden
 TEST_SUITES :=
 
 
-.PHONY: all lib tools run test test-bins test-plain test-asan check-freestanding deps install \
+.PHONY: all lib tools run test test-bins test-plain test-asan check-freestanding check-layers deps install \
         golden-update clean help
 all: lib tools $(BUILD)/fixel.pc
 
@@ -205,6 +205,10 @@ test-asan:
 check-freestanding:
 	@sh tests/check-freestanding.sh "$(CC)" "$(NM)" "$(BUILD)/freestanding" $(CORE_SRC)
 
+# The include and getenv rules of the layers (docs/ARCHITECTURE.md).
+check-layers:
+	@sh tests/check-layers.sh
+
 # Without the board libraries (a cross toolchain lacking the target's libdrm,
 # libevdev, libgpiod) the tools cannot link; the test binaries still can.
 test-bins: $(if $(HAVE_OPT),all,lib) $(TEST_BIN) $(GOLDEN_BIN)
@@ -216,6 +220,7 @@ test: deps-check
 	  $(call build_suites,$(PLAIN_BUILD)) \
 	  $(call build_suites,$(ASAN_BUILD)) \
 	  "sh tests/check-freestanding.sh '$(CC)' '$(NM)' build/freestanding $(CORE_SRC)" \
+	  "sh tests/check-layers.sh" \
 	  $(TEST_SUITES)
 
 # Every golden set, in one go (`git status` then shows what changed; look at
@@ -277,6 +282,7 @@ help:
 	@echo '  test-arm             unit and golden suites under qemu-user for the ARM ABIs'
 	@echo '  test-bounded         instruction budgets of the huge primitives (valgrind)'
 	@echo '  check-freestanding   the core compiled freestanding and integer-only'
+	@echo '  check-layers         the include/getenv rules of docs/ARCHITECTURE.md'
 	@echo '  valgrind             unit, golden and tool suites under memcheck (slow)'
 	@echo '  fuzz                 each libFuzzer target for FUZZ_SECONDS'
 	@echo '  bench, bench-peers   the benchmark table (docs/BENCHMARK.md)'
