@@ -1,4 +1,4 @@
-# fixel-bench: the normative workloads of ../shared/bench/WORKLOADS.md.
+# fixel-bench: the ten workloads of docs/BENCHMARK.md.
 #
 #   make bench        fixel with the memset/memcpy and double-reference ceilings
 #   make bench-peers  the same, in one process with cairo, pixman, SDL2 and
@@ -21,7 +21,7 @@ $(BUILD)/obj/tools/fixel-bench/%.o: PKG_CFLAGS += -DBENCH_NO_PEERS
 TOOL_LIBS_fixel-bench := -lm
 endif
 
-# The W9 reference is measured at exactly the flags WORKLOADS.md names, whatever
+# The W9 reference is measured at exactly the flags docs/BENCHMARK.md names, whatever
 # OPT and CPU_FLAGS the project is built with; ref-native is the same source at
 # -O3 -march=native. Both are plain C (no fixel), so sanitizers stay off here.
 # The user's CPPFLAGS/CFLAGS come before the fixed optimisation flags, so
