@@ -285,6 +285,7 @@ FX_TEST(traces_name_codes_parameters_and_regions)
     trace_clear();
     fx_line(&ctx, 20, 15, 60, 16);
     FX_CHECK(trace_has("P1 inside, P2 in region R"));
+    trace_clear();
     free(c.mem);
 }
 

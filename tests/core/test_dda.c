@@ -181,7 +181,7 @@ FX_TEST(dda_trace_prints_k_x_y)
     fx_ctx ctx;
     fx_ctx_init(&ctx, &c.s);
     ctx.trace = trace_collect;
-    trace_n = 0;
+    trace_clear();
     fx_dda(&ctx, 10, 12, 15, 15);
     FX_CHECK_EQ(trace_n, 9);
     if (trace_n == 9) {
@@ -193,18 +193,13 @@ FX_TEST(dda_trace_prints_k_x_y)
             FX_CHECK_MSG(strstr(trace_lines[3 + k], y[k]) && strstr(trace_lines[3 + k], px[k]), "row %d: %s", k, trace_lines[3 + k]);
     }
     /* a falling line: y_1 = 1.5 is a tie, rounded up (towards the start) */
-    for (int i = 0; i < trace_n; i++)
-        free(trace_lines[i]);
-    trace_n = 0;
+    trace_clear();
     fx_dda(&ctx, 5, 2, 1, 0);
     FX_CHECK_EQ(trace_n, 8);
     if (trace_n == 8) {
         FX_CHECK_MSG(strstr(trace_lines[1], "xinc=-1.0000") && strstr(trace_lines[1], "yinc=-0.5000"), "%s", trace_lines[1]);
         FX_CHECK_MSG(strstr(trace_lines[4], "1.5000") && strstr(trace_lines[4], "(4, 2)"), "%s", trace_lines[4]);
     }
-    for (int i = 0; i < trace_n; i++)
-        free(trace_lines[i]);
-    free(trace_lines);
-    trace_lines = NULL;
+    trace_clear();
     free(c.mem);
 }

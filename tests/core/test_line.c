@@ -44,7 +44,7 @@ FX_TEST(course_example_10_12_to_15_15)
     fx_ctx ctx;
     fx_ctx_init(&ctx, &c.s);
     ctx.trace = trace_collect;
-    trace_n = 0;
+    trace_clear();
     fx_line(&ctx, 10, 12, 15, 15);
     int want[][2] = {{10, 12}, {11, 13}, {12, 13}, {13, 14}, {14, 14}, {15, 15}};
     int lit = 0;
@@ -64,10 +64,7 @@ FX_TEST(course_example_10_12_to_15_15)
         for (int i = 0; i < 5; i++)
             FX_CHECK_MSG(!strcmp(trace_lines[i + 2], rows[i]), "row %d: '%s'", i, trace_lines[i + 2]);
     }
-    for (int i = 0; i < trace_n; i++)
-        free(trace_lines[i]);
-    free(trace_lines);
-    trace_lines = NULL;
+    trace_clear();
     free(c.mem);
 }
 
