@@ -5,16 +5,30 @@
 #   make bench           the benchmark table (tools/fixel-bench)
 #   make deps            install the Debian packages the build needs (root) or say how
 #   make install PREFIX=/usr/local DESTDIR=
-#   make golden-update   re-render the golden images (look at them before committing)
+#   make golden-update   re-render every golden set (look at them before committing)
+#   make help            every target, with a line each
 #   make BOARD=rpi4 ...  cross-build with a board profile from boards/<name>.mk
+# CC, CFLAGS, CPPFLAGS and LDFLAGS from the environment or the command line
+# are honoured: CC replaces $(CROSS_COMPILE)gcc, the flags are appended after
+# fixel's own (which a build cannot do without).
 
 BOARD    ?= pc
 -include boards/$(BOARD).mk
 
 CROSS_COMPILE ?=
-CC       := $(CROSS_COMPILE)gcc
-AR       := $(CROSS_COMPILE)ar
-NM       := $(CROSS_COMPILE)nm
+# make's built-in defaults (cc, ar) give way to the board's toolchain; a CC,
+# AR or NM the user sets (environment or command line) wins over both.
+ifeq ($(filter environment command line override,$(origin CC)),)
+  CC     := $(CROSS_COMPILE)gcc
+endif
+ifeq ($(filter environment command line override,$(origin AR)),)
+  AR     := $(CROSS_COMPILE)ar
+endif
+ifeq ($(filter environment command line override,$(origin NM)),)
+  NM     := $(CROSS_COMPILE)nm
+endif
+CFLAGS   ?=
+CPPFLAGS ?=
 PKG_CONFIG ?= pkg-config
 PREFIX   ?= /usr/local
 DESTDIR  ?=
@@ -24,8 +38,14 @@ SOMAJOR  := 0
 BUILD    ?= build
 OPT      ?= -O2
 SAN      ?=
+# The sanitized build lives inside the board's build directory (build/asan
+# for the PC, build/rpi4/asan for BOARD=rpi4), so it never mixes with the
+# plain objects, nor with another board's. PLAIN_BUILD and ASAN_BUILD name
+# both whichever of them this make is building.
+PLAIN_BUILD := $(BUILD)
+ASAN_BUILD  := $(PLAIN_BUILD)/asan
 ifeq ($(SAN),1)
-  BUILD    := build/asan
+  override BUILD := $(ASAN_BUILD)
   SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 endif
 
@@ -80,26 +100,35 @@ endif
 TOOL_BINS  := $(TOOLS:%=$(BUILD)/bin/%)
 
 # Test suites: each entry is a command that prints a final "N passed, N failed".
-# test_display exercises boards/linux, which needs the board libraries.
-TEST_SRC   := $(sort $(filter-out $(if $(HAVE_OPT),,tests/core/test_display.c tests/core/test_pointer.c),$(wildcard tests/core/*.c)))
+# The unit binary holds the tests of every layer (tests/README.md):
+#   tests/core/    kernel-free-src        tests/boards/  boards/
+#   tests/tools/   the tools' own code    tests/lib/     the framework and shared helpers
+# test_display and test_pointer exercise boards/linux's backends, which need
+# the board libraries.
+TEST_DIRS  := tests/core tests/boards tests/tools
+TEST_SRC   := $(sort $(filter-out $(if $(HAVE_OPT),,tests/boards/test_display.c tests/boards/test_pointer.c),\
+                $(foreach d,$(TEST_DIRS),$(wildcard $(d)/*.c))))
+TEST_LIB_SRC := $(sort $(wildcard tests/lib/*.c))
 # 32-bit targets have no __int128: test files whose reference arithmetic
 # needs it unguarded run on 64-bit hosts only (tests/arm/test-arm.sh says so).
 ifeq ($(shell echo '__int128 x;' | $(CC) -x c -c -o /dev/null - 2>/dev/null && echo y),)
   TEST_NEEDS_128 := $(shell grep -l '__int128' $(TEST_SRC) | xargs -r grep -L '__SIZEOF_INT128__')
   TEST_SRC := $(filter-out $(TEST_NEEDS_128),$(TEST_SRC))
 endif
-TEST_OBJ   := $(TEST_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/runner.o $(BUILD)/obj/tests/registry.o
+TEST_OBJ   := $(TEST_SRC:%.c=$(BUILD)/obj/%.o) $(TEST_LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/registry.o
 TEST_BIN   := $(BUILD)/tests/unit
 GOLDEN_BIN := $(BUILD)/tests/golden
 TEST_SUITES :=
 
 
-.PHONY: all lib tools run test test-bins test-plain test-asan check-freestanding deps install \
+.PHONY: all lib tools run test test-bins test-plain test-asan check-freestanding check-layers deps install \
         golden-update clean help
 all: lib tools $(BUILD)/fixel.pc
 
-# Fragments from modules (kernel rig, bench, fuzz...) add targets and suites.
--include $(sort $(wildcard tests/*/*.mk tools/*/*.mk))
+# Fragments from modules (kernel rig, bench, fuzz, board layers...) add
+# targets and suites. boards/<name>.mk at the top of boards/ are the board
+# profiles (read above); fragments live one or two folders down.
+-include $(sort $(wildcard tests/*/*.mk tools/*/*.mk boards/*/*.mk boards/*/*/*.mk))
 
 lib: $(LIB_A) $(if $(filter 1,$(STATIC)),,$(LIB_SO))
 tools: $(TOOL_BINS)
@@ -114,12 +143,12 @@ endif
 $(BUILD)/obj/kernel-free-src/%.o: kernel-free-src/%.c
 	@mkdir -p $(dir $@)
 	@$(if $(Q),echo "  CC      $<")
-	$(Q)$(CC) $(BASEFLAGS) -c $< -o $@
+	$(Q)$(CC) $(BASEFLAGS) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
 $(BUILD)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
 	@$(if $(Q),echo "  CC      $<")
-	$(Q)$(CC) $(BASEFLAGS) -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 $(PKG_CFLAGS) -Itests -c $< -o $@
+	$(Q)$(CC) $(BASEFLAGS) -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 $(PKG_CFLAGS) -Itests -Itests/lib $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
 $(LIB_A): $(LIB_OBJ)
 	@mkdir -p $(dir $@)
@@ -127,7 +156,7 @@ $(LIB_A): $(LIB_OBJ)
 	$(AR) rcs $@ $^
 
 $(LIB_SO): $(LIB_OBJ)
-	$(CC) -shared -Wl,-soname,libfixel.so.$(SOMAJOR) $(SANFLAGS) -o $@ $^ $(LDLIBS)
+	$(CC) -shared -Wl,-soname,libfixel.so.$(SOMAJOR) $(SANFLAGS) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 	ln -sf libfixel.so.$(VERSION) $(BUILD)/libfixel.so.$(SOMAJOR)
 	ln -sf libfixel.so.$(VERSION) $(BUILD)/libfixel.so
 
@@ -138,6 +167,10 @@ tool_objs = $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/$1/*.c) $(TOOL_SRC_
 $(BUILD)/bin/%: $$(call tool_objs,$$*) $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(filter %.o,$^) $(LIB_A) $(TOOL_LIBS_$*) $(LDLIBS)
+# A tool's objects are reached only through that chained pattern rule, so
+# make would delete them as intermediates and relink every tool on the next
+# run: keep them.
+.SECONDARY: $(foreach t,$(TOOLS),$(call tool_objs,$t))
 
 $(BUILD)/fixel.pc: Makefile
 	@mkdir -p $(dir $@)
@@ -145,13 +178,13 @@ $(BUILD)/fixel.pc: Makefile
 	  '$(PREFIX)' '$(VERSION)' '' '$(PKGS)' > $@
 
 # ---- tests ----
-$(BUILD)/tests/registry.c: $(TEST_SRC) tests/gen-registry.sh
+$(BUILD)/tests/registry.c: $(TEST_SRC) tests/lib/gen-registry.sh
 	@mkdir -p $(dir $@)
-	sh tests/gen-registry.sh $(TEST_SRC) > $@
+	sh tests/lib/gen-registry.sh $(TEST_SRC) > $@
 
 $(BUILD)/obj/tests/registry.o: $(BUILD)/tests/registry.c
 	@mkdir -p $(dir $@)
-	$(CC) $(BASEFLAGS) -Itests -c $< -o $@
+	$(CC) $(BASEFLAGS) -Itests/lib $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
 $(TEST_BIN): $(TEST_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)
@@ -161,10 +194,12 @@ $(GOLDEN_BIN): $(BUILD)/obj/tests/golden/golden.o $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $< $(LIB_A) $(LDLIBS)
 
-# The suites of one build (plain or sanitized); each prints its own total.
-BUILD_SUITES = "$(TEST_BIN)" \
-	"$(GOLDEN_BIN) --dir tests/golden --out $(BUILD)/golden" \
-	"sh tests/script-errors.sh $(BUILD)/bin/fixel-draw $(BUILD)/script-errors"
+# The suites of one build directory (plain or sanitized); each prints its
+# own total.
+build_suites = "$(1)/tests/unit" \
+	"$(1)/tests/golden --dir tests/golden --out $(1)/golden" \
+	"sh tests/script-errors.sh $(1)/bin/fixel-draw $(1)/script-errors"
+BUILD_SUITES = $(call build_suites,$(BUILD))
 
 test-plain: all $(TEST_BIN) $(GOLDEN_BIN)
 	@sh tests/run-suites.sh $(BUILD_SUITES)
@@ -175,6 +210,10 @@ test-asan:
 check-freestanding:
 	@sh tests/check-freestanding.sh "$(CC)" "$(NM)" "$(BUILD)/freestanding" $(CORE_SRC)
 
+# The include and getenv rules of the layers (docs/ARCHITECTURE.md).
+check-layers:
+	@sh tests/check-layers.sh
+
 # Without the board libraries (a cross toolchain lacking the target's libdrm,
 # libevdev, libgpiod) the tools cannot link; the test binaries still can.
 test-bins: $(if $(HAVE_OPT),all,lib) $(TEST_BIN) $(GOLDEN_BIN)
@@ -183,13 +222,25 @@ test: deps-check
 	@$(MAKE) --no-print-directory test-bins
 	@$(MAKE) --no-print-directory SAN=1 test-bins
 	@sh tests/run-suites.sh --total \
-	  $(BUILD_SUITES) \
-	  $(subst $(BUILD),build/asan,$(BUILD_SUITES)) \
+	  $(call build_suites,$(PLAIN_BUILD)) \
+	  $(call build_suites,$(ASAN_BUILD)) \
 	  "sh tests/check-freestanding.sh '$(CC)' '$(NM)' build/freestanding $(CORE_SRC)" \
+	  "sh tests/check-layers.sh" \
 	  $(TEST_SUITES)
 
-golden-update: all $(GOLDEN_BIN)
+# Every golden set, in one go (`git status` then shows what changed; look at
+# the pictures before committing):
+#   tests/golden/<FORMAT>/  scene scripts per pixel format (tests/golden/golden.c)
+#   tests/golden/demo/      fixel-demo's gallery pages     (tools/fixel-demo)
+#   tests/golden/kiosk/     fixel-kiosk's chosen frames    (tests/kiosk/run.sh)
+#   tests/input/pointer/    pointer replay frames          (tests/boards/test_pointer.c)
+GOLDEN_UPDATES := golden-update-scenes demo-golden-update kiosk-golden-update pointer-golden-update
+golden-update: $(GOLDEN_UPDATES)
+golden-update-scenes: all $(GOLDEN_BIN)
 	$(GOLDEN_BIN) --dir tests/golden --out $(BUILD)/golden --update
+pointer-golden-update: $(TEST_BIN)
+	FIXEL_POINTER_GOLDEN_UPDATE=1 $(TEST_BIN) pointer_
+.PHONY: $(GOLDEN_UPDATES)
 
 # ---- the main job ----
 run: deps-check all
@@ -220,6 +271,34 @@ install: all
 
 clean:
 	rm -rf build out
+
+help:
+	@echo 'fixel targets (BOARD=<name> picks boards/<name>.mk; SAN=1 builds in $$BUILD/asan):'
+	@echo '  all (default)        library (static + shared), tools, fixel.pc'
+	@echo '  lib                  libfixel.a and libfixel.so only'
+	@echo '  tools                every tools/<name>/ program into $(BUILD)/bin/'
+	@echo '  run                  the main job (fixel-demo, or the showcase rendered headless)'
+	@echo '  test                 every suite, plain and under ASan+UBSan, with a total'
+	@echo '                         (QUICK=1 skips test-arm, FIXEL_SKIP_KERNEL=1 the kernel rig)'
+	@echo '  test-plain           the suites of one build (SAN=1 for the sanitized one)'
+	@echo '  test-asan            test-plain under ASan+UBSan'
+	@echo '  test-bins            the test programs, without running them'
+	@echo '  test-kernel          the qemu real-kernel rig (tests/kernel/README.md)'
+	@echo '  test-arm             unit and golden suites under qemu-user for the ARM ABIs'
+	@echo '  test-bounded         instruction budgets of the huge primitives (valgrind)'
+	@echo '  check-freestanding   the core compiled freestanding and integer-only'
+	@echo '  check-layers         the include/getenv rules of docs/ARCHITECTURE.md'
+	@echo '  valgrind             unit, golden and tool suites under memcheck (slow)'
+	@echo '  fuzz                 each libFuzzer target for FUZZ_SECONDS'
+	@echo '  bench, bench-peers   the benchmark table (docs/BENCHMARK.md)'
+	@echo '  golden-update        re-render every golden set (then look at git status)'
+	@echo '  kiosk-soak           the long constant-memory run of fixel-kiosk'
+	@echo '  deps                 install the Debian packages the build needs (root)'
+	@echo '  install              PREFIX=/usr/local DESTDIR='
+	@echo '  clean                remove build/ and out/'
+	@echo '  print-VAR            show a variable (e.g. make print-LIB_SRC)'
+	@echo 'Variables: CC CFLAGS CPPFLAGS LDFLAGS (appended to fixel'"'"'s flags), OPT, CPU_FLAGS,'
+	@echo '  CROSS_COMPILE, STATIC=1, V=1 (full commands), PREFIX, DESTDIR.'
 
 # make print-VAR shows a variable's value (used by test scripts).
 print-%:

@@ -2,7 +2,7 @@
  * by the front end (boards/display/display.c, which also sees the console)
  * and the backends (boards/memory, boards/linux/display, boards/linux/drm),
  * which see only this header and the posix layer; and the pure helpers of
- * present.c and formats.c (which tests/core exercises through this header,
+ * present.c and formats.c (which tests/boards exercises through this header,
  * libevdev style). Not installed. */
 #ifndef FIXEL_DISPLAY_INT_H
 #define FIXEL_DISPLAY_INT_H

@@ -1,5 +1,5 @@
 /* The pure half of the display front end: merging damage and copying
- * rectangles under rotation. No OS headers and no allocation, so tests can
+ * rectangles under rotation. No OS headers and no allocation, so tests/boards can
  * feed it fake surfaces. */
 #include <stddef.h>
 #include <string.h>

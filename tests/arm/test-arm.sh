@@ -52,7 +52,7 @@ for spec in "rpi4 aarch64-linux-gnu- aarch64-linux-gnu qemu-aarch64-static -ffre
         run_suite "$board golden" build/tests/golden --dir tests/golden --out build/$board/golden --compare-ppm build/$board/golden-ppm
     fi
     FX_FS_FLAGS="$fsflags" run_suite "$board integer-only core" \
-        sh tests/check-freestanding.sh "${cross}gcc" "${cross}nm" "build/$board/freestanding" kernel-free-src/*/*.c
+        sh tests/check-freestanding.sh "${cross}gcc" "${cross}nm" "build/$board/freestanding" $(make --no-print-directory -s print-CORE_SRC)
 done
 echo "test-arm: $P passed, $F failed"
 [ $F -eq 0 ]

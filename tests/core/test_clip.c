@@ -8,37 +8,9 @@
 #include "fixel/clip.h"
 #include "fixel/error.h"
 #include "fixel/line.h"
+#include "canvas.h"
+#include "trace.h"
 #include "fx_test.h"
-
-typedef struct {
-    fx_surface s;
-    uint32_t *mem;
-} canvas;
-
-static canvas make(int w, int h)
-{
-    canvas c;
-    c.mem = calloc((size_t)w * h, 4);
-    fx_surface_init(&c.s, c.mem, w, h, w * 4, FX_FMT_XRGB8888);
-    return c;
-}
-
-static char trace_buf[64][200];
-static int trace_n;
-static void collect(void *u, const char *line)
-{
-    (void)u;
-    if (trace_n < 64)
-        snprintf(trace_buf[trace_n], sizeof trace_buf[0], "%s", line);
-    trace_n++;
-}
-static int trace_has(const char *needle)
-{
-    for (int i = 0; i < trace_n && i < 64; i++)
-        if (strstr(trace_buf[i], needle))
-            return 1;
-    return 0;
-}
 
 FX_TEST(course_region_codes)
 {
@@ -195,7 +167,7 @@ static int check_drawn(fx_line_clipper a, int32_t x0, int32_t y0, int32_t x1, in
                        const fx_rect *ext)
 {
     enum { W = 64, H = 48 };
-    canvas c = make(W, H);
+    canvas c = canvas_make(W, H);
     fx_ctx ctx;
     fx_ctx_init(&ctx, &c.s);
     fx_ctx_set_clip(&ctx, win);
@@ -262,7 +234,7 @@ FX_TEST(exterior_clipping_skips_the_inside_run)
             return;
     }
     /* and a fill honours it too */
-    canvas c = make(64, 48);
+    canvas c = canvas_make(64, 48);
     fx_ctx ctx;
     fx_ctx_init(&ctx, &c.s);
     fx_ctx_exterior(&ctx, ext);
@@ -280,45 +252,46 @@ FX_TEST(exterior_clipping_skips_the_inside_run)
 
 FX_TEST(traces_name_codes_parameters_and_regions)
 {
-    canvas c = make(64, 48);
+    canvas c = canvas_make(64, 48);
     fx_ctx ctx;
     fx_ctx_init(&ctx, &c.s);
-    ctx.trace = collect;
+    ctx.trace = trace_collect;
     fx_ctx_set_clip(&ctx, (fx_rect){10, 10, 31, 21}); /* x 10..30, y 10..20 */
     /* Cohen-Sutherland: from above-left (1001) to below-left (0101): AND 0001, reject */
     ctx.line_clipper = FX_CLIP_COHEN;
-    trace_n = 0;
+    trace_clear();
     fx_line(&ctx, 0, 40, 5, 0);
     FX_CHECK(trace_has("codes 1001 0101") && trace_has("AND 0001 != 0000, reject"));
     /* a crossing line: clipped at the left boundary first */
-    trace_n = 0;
+    trace_clear();
     fx_line(&ctx, 0, 15, 40, 15);
     FX_CHECK(trace_has("codes 0001 0010") && trace_has("clip at left boundary"));
     FX_CHECK(trace_has("steps k=10..30 of 40"));
     /* Liang-Barsky: u1 = (2*10-1 - 0) / 80 = 19/80, u2 = (2*30+1)/80 = 61/80 */
     ctx.line_clipper = FX_CLIP_LIANG;
-    trace_n = 0;
+    trace_clear();
     fx_line(&ctx, 0, 15, 40, 15);
     FX_CHECK(trace_has("u1=19/80 (0.237500)") && trace_has("u2=61/80 (0.762500)"));
     /* NLN: P1 in the left edge region, P2 beyond the right edge: region LR */
     ctx.line_clipper = FX_CLIP_NLN;
-    trace_n = 0;
+    trace_clear();
     fx_line(&ctx, 0, 15, 40, 15);
     FX_CHECK(trace_has("P1 in edge region L, P2 in region LR"));
     /* P1 in the corner region x < xwmin, y < ywmin (left, below): enters at
      * the left edge, leaves through the top (y > ywmax, "above") */
-    trace_n = 0;
+    trace_clear();
     fx_line(&ctx, 5, 8, 17, 30);
     FX_CHECK(trace_has("P1 in corner region LB, P2 in region LA"));
-    trace_n = 0;
+    trace_clear();
     fx_line(&ctx, 20, 15, 60, 16);
     FX_CHECK(trace_has("P1 inside, P2 in region R"));
+    trace_clear();
     free(c.mem);
 }
 
 FX_TEST(clip_stack_nests_and_intersects)
 {
-    canvas c = make(64, 48);
+    canvas c = canvas_make(64, 48);
     fx_ctx ctx;
     fx_ctx_init(&ctx, &c.s);
     fx_rect mem[2];

@@ -28,7 +28,7 @@ static void gray_clear(gray *g) { memset(g->mem, 0, (size_t)g->s.w * g->s.h); }
 
 static int lit(const gray *g, int x, int y) { return g->mem[(size_t)y * g->s.w + x] != 0; }
 
-/* ---- the reference loop of WORKLOADS.md W5, plotted into a mask ---- */
+/* ---- the reference loop of W5 (docs/BENCHMARK.md), plotted into a mask ---- */
 
 static void ref_put(uint8_t *m, int w, int h, int64_t x, int64_t y)
 {

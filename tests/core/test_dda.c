@@ -5,23 +5,9 @@
 #include <string.h>
 
 #include "fixel/line.h"
+#include "canvas.h"
+#include "trace.h"
 #include "fx_test.h"
-
-typedef struct {
-    fx_surface s;
-    uint32_t *mem;
-    int w, h;
-} canvas;
-
-static canvas make(int w, int h)
-{
-    canvas c;
-    c.mem = calloc((size_t)w * h, 4);
-    c.w = w;
-    c.h = h;
-    fx_surface_init(&c.s, c.mem, w, h, w * 4, FX_FMT_XRGB8888);
-    return c;
-}
 
 /* floor(start + k*d/M + 1/2) by exact integer arithmetic (the definition). */
 static int64_t exact_round(int64_t start, int64_t d, int64_t M, int64_t k)
@@ -145,7 +131,7 @@ FX_TEST(dda_long_lines_keep_endpoints_and_steps)
  * of its major coordinate, then fx_dda_point(k). */
 static void check_clip(int32_t x0, int32_t y0, int32_t x1, int32_t y1, fx_rect clip, int w, int h)
 {
-    canvas c = make(w, h);
+    canvas c = canvas_make(w, h);
     fx_ctx ctx;
     fx_ctx_init(&ctx, &c.s);
     fx_ctx_set_clip(&ctx, clip);
@@ -189,45 +175,31 @@ FX_TEST(dda_clipping_never_moves_a_pixel)
     }
 }
 
-static char **tl;
-static int tn;
-static void collect(void *u, const char *line)
-{
-    (void)u;
-    tl = realloc(tl, sizeof(char *) * (size_t)(tn + 1));
-    tl[tn++] = strdup(line);
-}
-
 FX_TEST(dda_trace_prints_k_x_y)
 {
-    canvas c = make(20, 20);
+    canvas c = canvas_make(20, 20);
     fx_ctx ctx;
     fx_ctx_init(&ctx, &c.s);
-    ctx.trace = collect;
-    tn = 0;
+    ctx.trace = trace_collect;
+    trace_clear();
     fx_dda(&ctx, 10, 12, 15, 15);
-    FX_CHECK_EQ(tn, 9);
-    if (tn == 9) {
-        FX_CHECK(strstr(tl[1], "steps=5") && strstr(tl[1], "xinc=1.0000") && strstr(tl[1], "yinc=0.6000"));
+    FX_CHECK_EQ(trace_n, 9);
+    if (trace_n == 9) {
+        FX_CHECK(strstr(trace_lines[1], "steps=5") && strstr(trace_lines[1], "xinc=1.0000") && strstr(trace_lines[1], "yinc=0.6000"));
         /* y_k = 12 + 0.6k and the pixel rounds it */
         const char *y[] = {"12.0000", "12.6000", "13.2000", "13.8000", "14.4000", "15.0000"};
         const char *px[] = {"(10, 12)", "(11, 13)", "(12, 13)", "(13, 14)", "(14, 14)", "(15, 15)"};
         for (int k = 0; k < 6; k++)
-            FX_CHECK_MSG(strstr(tl[3 + k], y[k]) && strstr(tl[3 + k], px[k]), "row %d: %s", k, tl[3 + k]);
+            FX_CHECK_MSG(strstr(trace_lines[3 + k], y[k]) && strstr(trace_lines[3 + k], px[k]), "row %d: %s", k, trace_lines[3 + k]);
     }
     /* a falling line: y_1 = 1.5 is a tie, rounded up (towards the start) */
-    for (int i = 0; i < tn; i++)
-        free(tl[i]);
-    tn = 0;
+    trace_clear();
     fx_dda(&ctx, 5, 2, 1, 0);
-    FX_CHECK_EQ(tn, 8);
-    if (tn == 8) {
-        FX_CHECK_MSG(strstr(tl[1], "xinc=-1.0000") && strstr(tl[1], "yinc=-0.5000"), "%s", tl[1]);
-        FX_CHECK_MSG(strstr(tl[4], "1.5000") && strstr(tl[4], "(4, 2)"), "%s", tl[4]);
+    FX_CHECK_EQ(trace_n, 8);
+    if (trace_n == 8) {
+        FX_CHECK_MSG(strstr(trace_lines[1], "xinc=-1.0000") && strstr(trace_lines[1], "yinc=-0.5000"), "%s", trace_lines[1]);
+        FX_CHECK_MSG(strstr(trace_lines[4], "1.5000") && strstr(trace_lines[4], "(4, 2)"), "%s", trace_lines[4]);
     }
-    for (int i = 0; i < tn; i++)
-        free(tl[i]);
-    free(tl);
-    tl = NULL;
+    trace_clear();
     free(c.mem);
 }

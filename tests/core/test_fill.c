@@ -1,5 +1,5 @@
 /* Polygon, triangle and Gouraud fills against a pixel-centre reference
- * rasterizer written here from the definition (WORKLOADS.md section 3,
+ * rasterizer written here from the definition (docs/BENCHMARK.md, reference pictures,
  * generalised to fx8 vertices and to the nonzero rule). */
 #include <math.h>
 #include <stdlib.h>

@@ -8,6 +8,7 @@
 
 #include "fixel/error.h"
 #include "fixel/font.h"
+#include "canvas.h"
 #include "fx_test.h"
 
 static void put32(uint8_t *p, uint32_t v)
@@ -297,23 +298,7 @@ FX_TEST(font_truncations_and_mutations_stay_in_bounds)
 
 /* ---- drawing ---- */
 
-typedef struct {
-    fx_surface s;
-    uint32_t *px;
-    int w, h;
-} canvas;
-
-static canvas canvas_make(int w, int h)
-{
-    canvas k;
-    k.w = w;
-    k.h = h;
-    k.px = calloc((size_t)w * h, 4);
-    fx_surface_init(&k.s, k.px, w, h, w * 4, FX_FMT_XRGB8888);
-    return k;
-}
-
-static uint32_t at(const canvas *k, int x, int y) { return k->px[y * k->w + x] & 0xFFFFFF; }
+static uint32_t at(const canvas *k, int x, int y) { return k->mem[y * k->w + x] & 0xFFFFFF; }
 
 FX_TEST(font_glyph_pixels_scale_and_background)
 {
@@ -322,7 +307,7 @@ FX_TEST(font_glyph_pixels_scale_and_background)
     FX_CHECK_EQ(f->width, 6);
     FX_CHECK_EQ(f->height, 10);
     for (int scale = 1; scale <= 4; scale++) {
-        memset(k.px, 0, (size_t)k.w * k.h * 4);
+        memset(k.mem, 0, (size_t)k.w * k.h * 4);
         fx_text_style st = {NULL, scale, 0xFF102030u, 1, FX_TEXT_CLIP_PIXEL};
         fx_ctx c;
         fx_ctx_init(&c, &k.s);
@@ -360,12 +345,12 @@ FX_TEST(font_glyph_pixels_scale_and_background)
         for (uint32_t b = a + 1; b < 127; b++)
             FX_CHECK_MSG(memcmp(fx_font_row(f, fx_font_glyph(f, a), 0), fx_font_row(f, fx_font_glyph(f, b), 0), 10) != 0 || a == ' ',
                          "'%c' and '%c' look the same", a, b);
-    free(k.px);
+    free(k.mem);
 }
 
 static void draw(canvas *k, fx_rect clip, int mode, int x, int y, const char *s, int *count)
 {
-    memset(k->px, 0, (size_t)k->w * k->h * 4);
+    memset(k->mem, 0, (size_t)k->w * k->h * 4);
     fx_text_style st = {NULL, 2, 0, 0, (uint8_t)mode};
     fx_ctx c;
     fx_ctx_init(&c, &k->s);
@@ -400,22 +385,22 @@ FX_TEST(font_three_clipping_modes)
     draw(&b, clip, FX_TEXT_CLIP_STRING, 10, 15, s, &m);
     FX_CHECK_EQ(m, 0);
     for (int i = 0; i < 160 * 80; i++)
-        FX_CHECK_EQ(b.px[i], 0);
+        FX_CHECK_EQ(b.mem[i], 0);
     draw(&b, clip, FX_TEXT_CLIP_STRING, 22, 15, "ABCDEF", &m); /* 72 wide: fits in 20..100 */
     draw(&a, full, FX_TEXT_CLIP_STRING, 22, 15, "ABCDEF", &n);
     FX_CHECK_EQ(m, 6);
-    FX_CHECK(memcmp(a.px, b.px, 160 * 80 * 4) == 0);
+    FX_CHECK(memcmp(a.mem, b.mem, 160 * 80 * 4) == 0);
     /* char: the cells inside the clip (B..G at x = 22..94) drawn whole,
      * A and H not at all */
     draw(&b, clip, FX_TEXT_CLIP_CHAR, 10, 15, s, &m);
     draw(&a, full, FX_TEXT_CLIP_PIXEL, 22, 15, "BCDEFG", &n);
     FX_CHECK_EQ(m, 6);
-    FX_CHECK(memcmp(a.px, b.px, 160 * 80 * 4) == 0);
+    FX_CHECK(memcmp(a.mem, b.mem, 160 * 80 * 4) == 0);
     /* a cell cut at the bottom is dropped in char mode */
     draw(&b, clip, FX_TEXT_CLIP_CHAR, 22, 45, "BC", &m);
     FX_CHECK_EQ(m, 0);
-    free(a.px);
-    free(b.px);
+    free(a.mem);
+    free(b.mem);
 }
 
 FX_TEST(font_utf8_newlines_and_far_positions)
@@ -446,6 +431,6 @@ FX_TEST(font_utf8_newlines_and_far_positions)
     FX_CHECK_EQ(n, 0);
     draw(&a, (fx_rect){0, 0, 100, 60}, FX_TEXT_CLIP_CHAR, -100, 0, "0123456789ABCDEFGHIJ", &n);
     FX_CHECK_EQ(n, 7); /* whole cells k with -100 + 12k >= 0 and -100 + 12k + 12 <= 100: k = 9..15 */
-    free(a.px);
-    free(b.px);
+    free(a.mem);
+    free(b.mem);
 }

@@ -44,7 +44,7 @@ static uint32_t ref_dwell_ld(long double zr, long double zi, long double cr, lon
     return n;
 }
 
-/* The W9 loop of WORKLOADS.md in double, for any view given in doubles. */
+/* The W9 loop of docs/BENCHMARK.md in double, for any view given in doubles. */
 static uint32_t ref_dwell_d(double cr, double ci, uint32_t max)
 {
     double zr = 0, zi = 0;
@@ -71,7 +71,7 @@ static fx56 fx56_of(const char *s)
 static long double ld56(fx56 v) { return (long double)v / 72057594037927936.0L; }
 
 /* The requirement itself: the full 1920x1080 W9 picture (colours, as the
- * benchmark compares them) against the double loop of WORKLOADS.md. */
+ * benchmark compares them) against the double loop of docs/BENCHMARK.md. */
 FX_TEST(fractal_w9_agrees_with_double)
 {
     const int32_t w = 1920, h = 1080;

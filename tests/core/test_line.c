@@ -5,6 +5,8 @@
 #include <string.h>
 
 #include "fixel/line.h"
+#include "canvas.h"
+#include "trace.h"
 #include "fx_test.h"
 
 /* The textbook loop, written independently of the library: all octants by
@@ -36,35 +38,13 @@ static int textbook(int64_t x0, int64_t y0, int64_t x1, int64_t y1, int64_t *xs,
     return n;
 }
 
-typedef struct {
-    fx_surface s;
-    uint32_t *mem;
-} canvas;
-
-static canvas make(int w, int h)
-{
-    canvas c;
-    c.mem = calloc((size_t)w * h, 4);
-    fx_surface_init(&c.s, c.mem, w, h, w * 4, FX_FMT_XRGB8888);
-    return c;
-}
-
-static char **trace_lines;
-static int trace_n;
-static void collect(void *u, const char *line)
-{
-    (void)u;
-    trace_lines = realloc(trace_lines, sizeof(char *) * (size_t)(trace_n + 1));
-    trace_lines[trace_n++] = strdup(line);
-}
-
 FX_TEST(course_example_10_12_to_15_15)
 {
-    canvas c = make(20, 20);
+    canvas c = canvas_make(20, 20);
     fx_ctx ctx;
     fx_ctx_init(&ctx, &c.s);
-    ctx.trace = collect;
-    trace_n = 0;
+    ctx.trace = trace_collect;
+    trace_clear();
     fx_line(&ctx, 10, 12, 15, 15);
     int want[][2] = {{10, 12}, {11, 13}, {12, 13}, {13, 14}, {14, 14}, {15, 15}};
     int lit = 0;
@@ -84,10 +64,7 @@ FX_TEST(course_example_10_12_to_15_15)
         for (int i = 0; i < 5; i++)
             FX_CHECK_MSG(!strcmp(trace_lines[i + 2], rows[i]), "row %d: '%s'", i, trace_lines[i + 2]);
     }
-    for (int i = 0; i < trace_n; i++)
-        free(trace_lines[i]);
-    free(trace_lines);
-    trace_lines = NULL;
+    trace_clear();
     free(c.mem);
 }
 
@@ -135,7 +112,7 @@ FX_TEST(iterator_matches_textbook_in_all_octants)
  * definition m(k) = round_half_up(k * minor / major)). */
 static void check_clipped(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int w, int h, fx_rect clip)
 {
-    canvas c = make(w, h);
+    canvas c = canvas_make(w, h);
     fx_ctx ctx;
     fx_ctx_init(&ctx, &c.s);
     fx_ctx_set_clip(&ctx, clip);
@@ -197,7 +174,7 @@ FX_TEST(parallel_pieces_light_exactly_the_serial_line)
     for (int i = 0; i < 500; i++) {
         int32_t x0 = (int32_t)(fx_test_rand(&s) % 300) - 20, y0 = (int32_t)(fx_test_rand(&s) % 200) - 20;
         int32_t x1 = (int32_t)(fx_test_rand(&s) % 300) - 20, y1 = (int32_t)(fx_test_rand(&s) % 200) - 20;
-        canvas a = make(256, 160), b = make(256, 160);
+        canvas a = canvas_make(256, 160), b = canvas_make(256, 160);
         fx_ctx ca, cb;
         fx_ctx_init(&ca, &a.s);
         fx_ctx_init(&cb, &b.s);

@@ -6,23 +6,8 @@
 #include <string.h>
 
 #include "fixel/line.h"
+#include "canvas.h"
 #include "fx_test.h"
-
-typedef struct {
-    fx_surface s;
-    uint32_t *mem;
-    int w, h;
-} canvas;
-
-static canvas make(int w, int h)
-{
-    canvas c;
-    c.mem = calloc((size_t)w * h, 4);
-    c.w = w;
-    c.h = h;
-    fx_surface_init(&c.s, c.mem, w, h, w * 4, FX_FMT_XRGB8888);
-    return c;
-}
 
 FX_TEST(style_plain_means_the_foundation_line)
 {
@@ -45,7 +30,7 @@ FX_TEST(dashed_1px_line_follows_the_pixel_mask)
 {
     uint32_t s = 3;
     for (int i = 0; i < 1500; i++) {
-        canvas c = make(80, 60);
+        canvas c = canvas_make(80, 60);
         fx_ctx ctx;
         fx_ctx_init(&ctx, &c.s);
         fx_line_style st;
@@ -84,7 +69,7 @@ FX_TEST(polyline_carries_the_pattern_phase)
 {
     uint32_t s = 17;
     for (int i = 0; i < 500; i++) {
-        canvas a = make(90, 70), b = make(90, 70);
+        canvas a = canvas_make(90, 70), b = canvas_make(90, 70);
         fx_ctx ca, cb;
         fx_ctx_init(&ca, &a.s);
         fx_ctx_init(&cb, &b.s);
@@ -137,7 +122,7 @@ FX_TEST(thick_line_matches_the_ideal_stroke)
 {
     uint32_t s = 23;
     for (int i = 0; i < 1200; i++) {
-        canvas c = make(100, 80);
+        canvas c = canvas_make(100, 80);
         fx_ctx ctx;
         fx_ctx_init(&ctx, &c.s);
         fx_line_style st;
@@ -196,7 +181,7 @@ FX_TEST(thick_level_line_exact_pixels)
 {
     for (int w = 2; w <= 9; w++)
         for (int cap = 0; cap < 2; cap++) {
-            canvas c = make(64, 40);
+            canvas c = canvas_make(64, 40);
             fx_ctx ctx;
             fx_ctx_init(&ctx, &c.s);
             fx_line_style st;
@@ -238,7 +223,7 @@ FX_TEST(thick_dashed_joined_strokes_clip_exactly)
     uint32_t s = 4711;
     fx_rect win = {9, 6, 50, 41};
     for (int i = 0; i < 1500; i++) {
-        canvas a = make(64, 48), b = make(64, 48);
+        canvas a = canvas_make(64, 48), b = canvas_make(64, 48);
         fx_ctx ca, cb;
         fx_ctx_init(&ca, &a.s);
         fx_ctx_init(&cb, &b.s);
@@ -285,7 +270,7 @@ FX_TEST(thick_line_across_int32_agrees_between_windows)
     for (int dashed = 0; dashed < 2; dashed++) {
         st.pattern_len = dashed ? 9 : 0;
         st.pattern = 0x3F;
-        canvas a = make(64, 48), b = make(64, 48);
+        canvas a = canvas_make(64, 48), b = canvas_make(64, 48);
         fx_ctx ca, cb;
         fx_ctx_init(&ca, &a.s);
         fx_ctx_init(&cb, &b.s);
@@ -316,7 +301,7 @@ FX_TEST(thick_dash_phase_runs_through_vertices)
 {
     uint32_t s = 8;
     for (int i = 0; i < 300; i++) {
-        canvas a = make(120, 120), b = make(120, 120);
+        canvas a = canvas_make(120, 120), b = canvas_make(120, 120);
         fx_ctx ca, cb;
         fx_ctx_init(&ca, &a.s);
         fx_ctx_init(&cb, &b.s);
@@ -359,7 +344,7 @@ FX_TEST(thick_dash_phase_runs_through_vertices)
 FX_TEST(joins_shape_the_outer_corner)
 {
     for (int j = 0; j < 3; j++) {
-        canvas c = make(60, 60);
+        canvas c = canvas_make(60, 60);
         fx_ctx ctx;
         fx_ctx_init(&ctx, &c.s);
         fx_line_style st;

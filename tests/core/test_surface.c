@@ -22,7 +22,7 @@ FX_TEST(rgb565_packs_by_truncation_for_every_colour)
             break;
         }
     }
-    FX_CHECK_EQ_HEX(fx_pack(FX_FMT_RGB565, 0x2060A0), 0x2314); /* WORKLOADS W1 */
+    FX_CHECK_EQ_HEX(fx_pack(FX_FMT_RGB565, 0x2060A0), 0x2314); /* W1 of docs/BENCHMARK.md */
 }
 
 FX_TEST(sixteen_bit_formats_round_trip_every_value)

@@ -7,6 +7,7 @@
 #include "fixel/clip.h"
 #include "fixel/error.h"
 #include "fixel/xform.h"
+#include "canvas.h"
 #include "fx_test.h"
 
 #define F(v) ((fx16)((v) * 65536.0))
@@ -295,23 +296,10 @@ FX_TEST(integer_points_saturate_and_round)
     FX_CHECK(x == 2000000001 && y == -2000000000);
 }
 
-typedef struct {
-    fx_surface s;
-    uint32_t *mem;
-} canvas;
-
-static canvas make(int w, int h)
-{
-    canvas c;
-    c.mem = calloc((size_t)w * h, 4);
-    fx_surface_init(&c.s, c.mem, w, h, w * 4, FX_FMT_XRGB8888);
-    return c;
-}
-
 FX_TEST(rectangles_through_a_transform)
 {
     enum { W = 64, H = 48 };
-    canvas a = make(W, H), b = make(W, H);
+    canvas a = canvas_make(W, H), b = canvas_make(W, H);
     fx_ctx ca, cb;
     fx_ctx_init(&ca, &a.s);
     fx_ctx_init(&cb, &b.s);

@@ -1,15 +1,16 @@
 # Fuzzing with libFuzzer (clang, ASan + UBSan): tests/fuzz/README.md.
 #   make fuzz                 each target for FUZZ_SECONDS (default 60) on its corpus
 #   make test                 each target over its seed corpus plus FUZZ_RUNS new inputs
-# The library sources are compiled into each target by clang with the same
-# sanitizers (the gcc-built libfixel.a is not instrumented for coverage).
+# The core sources (the top Makefile's CORE_SRC) are compiled into each
+# target by clang with the same sanitizers (the gcc-built libfixel.a is not
+# instrumented for coverage).
 EXTRA_DEB_PKGS += clang libclang-rt-14-dev
 FUZZ_CC      ?= clang
 FUZZ_BUILD   := build/fuzz
 FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 FUZZ_FLAGS   := -std=c11 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
                 -D_GNU_SOURCE -Ikernel-free-src/include -Iboards/include -Itests/fuzz
-FUZZ_LIBSRC  := $(wildcard kernel-free-src/*/*.c)
+FUZZ_LIBSRC  := $(CORE_SRC)
 FUZZ_SECONDS ?= 60
 FUZZ_RUNS    ?= 3000
 

@@ -1,7 +1,7 @@
 # The qemu real-kernel rig (tests/kernel/README.md). Included by the top
 # Makefile; `make test-kernel` runs it. Guest programs are every
 # tests/kernel/guest/*.c, linked statically for x86_64 and aarch64 against
-# the library sources compiled here per architecture.
+# the library sources (LIB_SRC) compiled here per architecture.
 
 KT_DIR   := tests/kernel
 # FIXEL_KERNEL_CACHE lets several work trees share one download.
@@ -10,10 +10,10 @@ KT_BUILD := build/kernel
 KT_ARCHES := x86_64 aarch64
 KT_CC_x86_64  := gcc
 KT_CC_aarch64 := aarch64-linux-gnu-gcc
-# The library as the Makefile lists it, with the board libraries always
-# (the rig needs them); memfb.o (libpng) is linked only into the tools.
-KT_LIBSRC := $(wildcard kernel-free-src/*/*.c) \
-	$(filter-out boards/memory/memfb.c,$(foreach d,$(BOARD_DIRS) $(BOARD_LIB_DIRS),$(wildcard boards/$(d)/*.c)))
+# The library's one source list (the top Makefile's LIB_SRC; the rig host has
+# libdrm, libevdev and libgpiod, so it holds the boards/linux backends);
+# memfb.o (libpng) is linked only into the tools.
+KT_LIBSRC := $(filter-out boards/memory/memfb.c,$(LIB_SRC))
 KT_GUESTSRC := $(wildcard $(KT_DIR)/guest/*.c)
 # No -Werror here: the main build enforces it, and a cross compiler's extra
 # warning must not stop the rig.

@@ -1,6 +1,6 @@
 /* fixel-bench — shared declarations of the harness and its peers.
  *
- * The workloads are the normative ones of ../shared/bench/WORKLOADS.md. The
+ * The workloads are the ten of docs/BENCHMARK.md. The
  * harness generates them once, owns one 64-byte-aligned 1920x1080 buffer and
  * hands it to every peer; a peer only knows how to draw the first n
  * primitives of a workload into that buffer in one of the two formats.
@@ -89,13 +89,13 @@ extern const struct peer peer_cairo, peer_pixman, peer_sdl2, peer_sdlgfx;
 #endif
 
 /* Draws the full workload w onto t (black beforehand) by the literal
- * definitions of WORKLOADS.md; returns 0 when w has no such reference. */
+ * definitions of docs/BENCHMARK.md; returns 0 when w has no such reference. */
 int reference_draw(const struct target *t, int w);
 
 /* "cairo 1.16.0, pixman 0.42.2, ..." for the table header. */
 const char *peer_versions(void);
 
-/* The double-precision W9 loop of WORKLOADS.md, writing XRGB8888 into dst
+/* The double-precision W9 loop of docs/BENCHMARK.md, writing XRGB8888 into dst
  * (stride BW*4). ref_mandel is built at -O2 -fno-tree-vectorize (the
  * baseline), ref_native_mandel at -O3 -march=native. */
 void ref_mandel(uint32_t *dst);

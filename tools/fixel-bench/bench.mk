@@ -1,4 +1,4 @@
-# fixel-bench: the normative workloads of ../shared/bench/WORKLOADS.md.
+# fixel-bench: the ten workloads of docs/BENCHMARK.md.
 #
 #   make bench        fixel with the memset/memcpy and double-reference ceilings
 #   make bench-peers  the same, in one process with cairo, pixman, SDL2 and
@@ -21,22 +21,19 @@ $(BUILD)/obj/tools/fixel-bench/%.o: PKG_CFLAGS += -DBENCH_NO_PEERS
 TOOL_LIBS_fixel-bench := -lm
 endif
 
-# Functions that join an existing header are detected here (the C side can
-# only test for headers).
-BENCH_API_DEFS := $(shell grep -qs 'fx_aaline' kernel-free-src/include/fixel/line.h && echo -DBENCH_HAVE_AALINE)
-$(BUILD)/obj/tools/fixel-bench/%.o: PKG_CFLAGS += $(BENCH_API_DEFS)
-
-# The W9 reference is measured at exactly the flags WORKLOADS.md names, whatever
+# The W9 reference is measured at exactly the flags docs/BENCHMARK.md names, whatever
 # OPT and CPU_FLAGS the project is built with; ref-native is the same source at
 # -O3 -march=native. Both are plain C (no fixel), so sanitizers stay off here.
+# The user's CPPFLAGS/CFLAGS come before the fixed optimisation flags, so
+# they cannot change what the reference is measured at.
 TOOL_SRC_fixel-bench := tools/fixel-bench/ref/ref.c tools/fixel-bench/ref/ref_native.c
 BENCH_REF_FLAGS := $(CSTD) $(WARN) -g -fPIC -MMD -MP $(INCLUDES)
 $(BUILD)/obj/tools/fixel-bench/ref/ref.o: tools/fixel-bench/ref/ref.c
 	@mkdir -p $(dir $@)
-	$(CC) $(BENCH_REF_FLAGS) -O2 -fno-tree-vectorize -c $< -o $@
+	$(CC) $(BENCH_REF_FLAGS) $(CPPFLAGS) $(CFLAGS) -O2 -fno-tree-vectorize -c $< -o $@
 $(BUILD)/obj/tools/fixel-bench/ref/ref_native.o: tools/fixel-bench/ref/ref_native.c
 	@mkdir -p $(dir $@)
-	$(CC) $(BENCH_REF_FLAGS) -O3 $(if $(CROSS_COMPILE),$(CPU_FLAGS),-march=native) -c $< -o $@
+	$(CC) $(BENCH_REF_FLAGS) $(CPPFLAGS) $(CFLAGS) -O3 $(if $(CROSS_COMPILE),$(CPU_FLAGS),-march=native) -c $< -o $@
 
 bench: $(BUILD)/bin/fixel-bench
 	$(BUILD)/bin/fixel-bench -o $(BUILD)/bench.txt
@@ -47,9 +44,6 @@ bench-peers: $(BUILD)/bin/fixel-bench
 TEST_SUITES += "$(BUILD)/bin/fixel-bench --check"
 
 .PHONY: bench bench-peers
-
-# Keep the objects (chained pattern rules would delete them as intermediates).
-.SECONDARY: $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/fixel-bench/*.c))
 
 # The workload frames (workloads.c) are benchmark code, not library API; the
 # unit tests that check them (tests/core/test_3d.c, test_fractal.c) link them in.

@@ -1,4 +1,4 @@
-/* fixel-bench — the workloads of WORKLOADS.md, timed side by side.
+/* fixel-bench — the workloads of docs/BENCHMARK.md, timed side by side.
  *
  * Every peer is linked into this one binary and draws into the same
  * 64-byte-aligned buffer, and trials are interleaved (trial k runs every peer
@@ -6,6 +6,7 @@
  * hit all peers alike: ratios measured in one run are what this program is
  * for. Numbers are only reported for peers whose pictures passed the
  * checksums (W1, W2, W10) or the agreement with the double reference (W9).
+ * "Section N" below is section N of docs/BENCHMARK.md.
  */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
@@ -632,7 +633,7 @@ static void compare_with_reference(void)
                 DIFFS[w][f][i] = count_diff(BUF, ref, f);
                 any_diffs = 1;
                 /* fixel promises exactly the pixels of the section-3 definitions
-                 * for circles, discs, polygons and triangles (DESIGN.md, fill.h,
+                 * for circles, discs, polygons and triangles (docs/CONVENTIONS.md, fill.h,
                  * circle.h), so there a difference is a failure; for lines the
                  * tie rule is fixel's own and the count is information. */
                 if (p == &peer_fixel && w != W3_LINES)
@@ -652,7 +653,7 @@ static void print_diffs(FILE *o)
     if (!any_diffs)
         return;
     fprintf(o, "TABLE 3  pixels differing from the literal reference picture of the full workload\n"
-               "         (WORKLOADS.md section 3 definitions; Bresenham for lines; edge rules only)\n");
+               "         (docs/BENCHMARK.md definitions; Bresenham for lines; edge rules only)\n");
     int col[16] = {0};
     for (int i = 0; i < NPEERS; i++)
         for (int w = 0; w < W_COUNT; w++)

@@ -1,30 +1,18 @@
 /* fixel through its public API only: one context, one call per primitive,
  * the colour set per primitive (fx_ctx_set_color packs it) as an application
  * would.
- *
- * A workload whose API has not landed on main yet stays NULL in the table at
- * the end and is shown as "-"; wiring one in is a few lines here. */
+ * Every workload's API is on main: the entries of the table at the end are
+ * all wired (a NULL entry would show as "-"). */
 #include "bench.h"
 
+#include <fixel/circle.h>
 #include <fixel/draw.h>
+#include <fixel/fill.h>
+#include <fixel/fractal.h>
 #include <fixel/line.h>
 #include <fixel/surface.h>
 
-/* Modules still being written land one by one; each is wired in as soon as
- * its header is on main, and its workloads show "-" until then. */
-#if __has_include(<fixel/circle.h>)
-#include <fixel/circle.h>
-#define HAVE_CIRCLE 1
-#endif
-#if __has_include(<fixel/fill.h>)
-#include <fixel/fill.h>
-#define HAVE_FILL 1
-#endif
-#if __has_include(<fixel/fractal.h>)
-#include <fixel/fractal.h>
 #include "workloads.h"
-#define HAVE_FRACTAL 1
-#endif
 
 struct fxb {
     fx_surface s, src;
@@ -75,9 +63,6 @@ static void fx_w3(void *ctx, int n)
     }
 }
 
-/* fx_aaline joins line.h, which exists already: bench.mk defines
- * BENCH_HAVE_AALINE when the header declares it. */
-#ifdef BENCH_HAVE_AALINE
 static void fx_w4(void *ctx, int n)
 {
     struct fxb *b = ctx;
@@ -87,9 +72,7 @@ static void fx_w4(void *ctx, int n)
         fx_aaline(&b->c, l[i].x0, l[i].y0, l[i].x1, l[i].y1);
     }
 }
-#endif
 
-#ifdef HAVE_CIRCLE
 static void fx_w5(void *ctx, int n)
 {
     struct fxb *b = ctx;
@@ -109,9 +92,7 @@ static void fx_w6(void *ctx, int n)
         fx_disc(&b->c, q[i].cx, q[i].cy, q[i].r);
     }
 }
-#endif
 
-#ifdef HAVE_FILL
 static void fx_w7(void *ctx, int n)
 {
     struct fxb *b = ctx;
@@ -147,16 +128,13 @@ static void fx_w8g(void *ctx, int n)
         fx_fill_tri_gouraud(&b->c, xy, col);
     }
 }
-#endif
 
-#ifdef HAVE_FRACTAL
 static void fx_w9(void *ctx, int n)
 {
     struct fxb *b = ctx;
     (void)n;
     bench_mandel_w9(&b->s);
 }
-#endif
 
 static void fx_w10(void *ctx, int n)
 {
@@ -175,21 +153,13 @@ const struct peer peer_fixel = {
             [W1_CLEAR] = fx_w1,
             [W2_RECTS] = fx_w2,
             [W3_LINES] = fx_w3,
-#ifdef BENCH_HAVE_AALINE
             [W4_AALINES] = fx_w4,
-#endif
-#ifdef HAVE_CIRCLE
             [W5_CIRCLES] = fx_w5,
             [W6_DISCS] = fx_w6,
-#endif
-#ifdef HAVE_FILL
             [W7_POLYS] = fx_w7,
             [W8_TRIS] = fx_w8,
             [W8G_TRIS_GOURAUD] = fx_w8g,
-#endif
-#ifdef HAVE_FRACTAL
             [W9_MANDEL] = fx_w9,
-#endif
             [W10_BLIT] = fx_w10,
         },
 };

@@ -1,5 +1,5 @@
 /* Reference pictures for the workloads that have no published checksum:
- * the pixel-centre definitions of WORKLOADS.md section 3 drawn literally
+ * the pixel-centre definitions of docs/BENCHMARK.md (reference pictures) drawn literally
  * (even-odd spans with ceil(xa) <= x < ceil(xb), discs as
  * (x-cx)^2 + (y-cy)^2 <= r^2, the midpoint circle, a plain Bresenham line).
  * The harness reports how many pixels each peer draws differently; that

@@ -1,7 +1,7 @@
 # fixel-demo: every gallery page rendered headless and compared with its
 # committed picture (in the plain and the sanitized build).
-TEST_SUITES += "$(BUILD)/bin/fixel-demo --golden tests/golden/demo" \
-               "build/asan/bin/fixel-demo --golden tests/golden/demo"
+TEST_SUITES += "$(PLAIN_BUILD)/bin/fixel-demo --golden tests/golden/demo" \
+               "$(ASAN_BUILD)/bin/fixel-demo --golden tests/golden/demo"
 
 .PHONY: demo-golden-update
 demo-golden-update: $(BUILD)/bin/fixel-demo

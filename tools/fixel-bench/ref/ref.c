@@ -1,6 +1,6 @@
 /* The double-precision reference of W9 (and plain store loops for W1 and W2),
  * compiled twice by bench.mk: as-is at -O2 -fno-tree-vectorize (peer "ref",
- * the baseline WORKLOADS.md names) and with -DREF_NATIVE at -O3
+ * the baseline docs/BENCHMARK.md names) and with -DREF_NATIVE at -O3
  * -march=native (peer "ref-native"). Kept in its own file so that the
  * project's flags never change what the baseline measures. */
 #include "../bench.h"

@@ -1,5 +1,6 @@
 /* fixel — the unit-test framework: FX_TEST(name) { FX_CHECK(...); } in any
- * file tests/core/NAME.c is found by tests/gen-registry.sh and run by runner.c. */
+ * file of tests/core, tests/boards or tests/tools is found by
+ * tests/lib/gen-registry.sh and run by tests/lib/runner.c (tests/README.md). */
 #ifndef FX_TEST_H
 #define FX_TEST_H
 
