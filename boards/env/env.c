@@ -5,6 +5,7 @@
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -121,5 +122,21 @@ int fx_app_options_from_env(fx_app_options *o)
         o->touch = getenv("FIXEL_TOUCH");
     if (!o->button_map)
         o->button_map = getenv("FIXEL_BUTTONS");
+    if (!o->replay)
+        o->replay = var("FIXEL_REPLAY");
+    if (!o->frame_out)
+        o->frame_out = var("FIXEL_OUT");
+    if (o->frames == 0 && (e = var("FIXEL_FRAMES"))) {
+        char *end;
+        errno = 0;
+        long n = strtol(e, &end, 10);
+        if (end == e || *end || errno || n < 1 || n > 1000000000L) {
+            fx_log(&l, FX_LOG_ERROR, "FIXEL_FRAMES=%s: use a number of frames from 1", e);
+            if (r == 0)
+                r = -FX_EINVAL;
+        } else {
+            o->frames = (int)n;
+        }
+    }
     return r;
 }
