@@ -45,7 +45,7 @@ static int parse_backend(const char *s, fx_backend *b)
 
 int fx_display_options_from_env(fx_display_options *o)
 {
-    const char *e;
+    const char *e, *bad_log = NULL;
     /* First: it decides which of the messages below are shown. */
     if (o->log_priority == 0 && (e = var("FIXEL_LOG"))) {
         if (!strcasecmp(e, "debug"))
@@ -54,10 +54,14 @@ int fx_display_options_from_env(fx_display_options *o)
             o->log_priority = FX_LOG_ERROR;
         else if (!strcasecmp(e, "none"))
             o->log_priority = -1;
-        else
+        else if (!strcasecmp(e, "info"))
             o->log_priority = FX_LOG_INFO;
+        else
+            bad_log = e; /* said below, once the logger exists */
     }
     fx_logger l = logger_of(o);
+    if (bad_log)
+        fx_log(&l, FX_LOG_ERROR, "FIXEL_LOG=%s ignored (debug, info, error or none)", bad_log);
 
     if (o->present == FX_PRESENT_AUTO && (e = var("FIXEL_PRESENT"))) {
         if (!strcasecmp(e, "direct"))

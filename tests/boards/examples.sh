@@ -61,5 +61,15 @@ expect_fail frames-zero "FIXEL_FRAMES=0" FIXEL_FRAMES=0
 expect_fail pattern "at most one %d" FIXEL_OUT="$W/%s-%d.png" FIXEL_FRAMES=1
 expect_fail unwritable "cannot write $W/no/such/dir/x.png" FIXEL_OUT="$W/no/such/dir/x.png" FIXEL_FRAMES=1
 
+# the environment's other mistakes and non-events (fixel/env.h)
+run log-level FIXEL_LOG=verbose FIXEL_FRAMES=1
+if [ $rc = 0 ] && grep -q "FIXEL_LOG=verbose ignored" "$W/log-level.log"; then ok
+else bad "unknown FIXEL_LOG level not reported: exit $rc"; cat "$W/log-level.log"; fi
+# a missing input directory is no news: no line at the default level (the
+# app reads /dev/input; FIXEL_REPLAY would skip it, so none here)
+if [ -d /dev/input ]; then echo "skip: /dev/input exists here"
+elif run noinput FIXEL_FRAMES=1; [ $rc = 0 ] && ! grep -q "/dev/input" "$W/noinput.log"; then ok
+else bad "missing /dev/input logged at info level:"; cat "$W/noinput.log"; fi
+
 echo "examples: $P passed, $F failed"
 [ $F = 0 ]
