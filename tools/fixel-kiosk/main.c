@@ -794,7 +794,15 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--full")) k->always_full = 1;
         else if (!strcmp(a, "--data") && i + 1 < argc) data = argv[++i];
         else if (!strcmp(a, "--out") && i + 1 < argc) out = argv[++i];
-        else if (!strcmp(a, "--frames") && i + 1 < argc) frames = atoi(argv[++i]);
+        else if (!strcmp(a, "--frames") && i + 1 < argc) {
+            char *end;
+            long n = strtol(argv[++i], &end, 10);
+            if (end == argv[i] || *end || n < 1 || n > 100000000L) {
+                fprintf(stderr, "fixel-kiosk: --frames wants a number of frames from 1, not '%s'\n", argv[i]);
+                return 2;
+            }
+            frames = (int)n;
+        }
         else if (!strcmp(a, "--mem-report") && i + 1 < argc) mem_frame = atoi(argv[++i]);
         else if (!strcmp(a, "--size") && i + 1 < argc) {
             if (sscanf(argv[++i], "%dx%d", &sw, &sh) != 2 || sw < 16 || sh < 16 || sw > 8192 || sh > 8192) {
