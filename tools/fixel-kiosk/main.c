@@ -757,6 +757,33 @@ static void mem_report(const char *when, int frame)
     fflush(stdout);
 }
 
+/* mkdir -p: every missing directory of path (errno set on failure). */
+static int mkdir_parents(const char *path)
+{
+    char p[4096];
+    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    for (char *s = p + 1;; s++) {
+        if (*s != '/' && *s)
+            continue;
+        char c = *s;
+        *s = 0;
+        struct stat st;
+        if (mkdir(p, 0777) < 0 && (errno != EEXIST || stat(p, &st) < 0 || !S_ISDIR(st.st_mode))) {
+            if (errno == EEXIST)
+                errno = ENOTDIR;
+            return -1;
+        }
+        *s = c;
+        if (!c)
+            return 0;
+        while (s[1] == '/')
+            s++;
+    }
+}
+
 static void usage(FILE *f)
 {
     fprintf(f,
@@ -853,7 +880,10 @@ int main(int argc, char **argv)
     k->full = 1;
 
     int rc = 0;
-    if (k->headless) {
+    if (k->headless && out && mkdir_parents(out) < 0) {
+        fprintf(stderr, "fixel-kiosk: cannot create %s: %s\n", out, strerror(errno));
+        rc = 1;
+    } else if (k->headless) {
         k->now_ms = 0;
         for (int f = 0; f < frames; f++) {
             feed_frame(k);
