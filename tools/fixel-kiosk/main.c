@@ -880,6 +880,17 @@ int main(int argc, char **argv)
     k->full = 1;
 
     int rc = 0;
+    fx_display_info di;
+    fx_display_get_info(fx_app_display(k->app), &di);
+    if (!k->headless && di.backend == FX_BACKEND_MEMORY && o.display.backend == FX_BACKEND_AUTO) {
+        /* The automatic choice found no display: a kiosk nobody sees must
+         * fail (systemd's Restart= can act); --headless asks for memory. */
+        fprintf(stderr, "fixel-kiosk: no display here (the reason is above); --headless [--out DIR] "
+                        "draws into memory\n");
+        fx_app_close(k->app);
+        if (k->fd > 0) close(k->fd);
+        return 1;
+    }
     if (k->headless && out && mkdir_parents(out) < 0) {
         fprintf(stderr, "fixel-kiosk: cannot create %s: %s\n", out, strerror(errno));
         rc = 1;
