@@ -128,7 +128,7 @@ all: lib tools $(BUILD)/fixel.pc
 # Fragments from modules (kernel rig, bench, fuzz, board layers...) add
 # targets and suites. boards/<name>.mk at the top of boards/ are the board
 # profiles (read above); fragments live one or two folders down.
--include $(sort $(wildcard tests/*/*.mk tools/*/*.mk boards/*/*.mk boards/*/*/*.mk))
+-include $(sort $(wildcard tests/*/*.mk tools/*/*.mk boards/*/*.mk boards/*/*/*.mk examples/*.mk))
 
 lib: $(LIB_A) $(if $(filter 1,$(STATIC)),,$(LIB_SO))
 tools: $(TOOL_BINS)

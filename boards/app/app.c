@@ -33,6 +33,8 @@ static uint64_t now_us(void)
     return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000;
 }
 
+uint64_t fx_app_now_us(void) { return now_us(); }
+
 static uint64_t clock_now(void *user)
 {
     (void)user;
@@ -164,7 +166,8 @@ int fx_app_open(fx_app **out, const fx_app_options *o)
         a->ev.calib.invert_x = strstr(touch, "invertx") != NULL;
         a->ev.calib.invert_y = strstr(touch, "inverty") != NULL;
     }
-    if (o->input)
+    /* A replay file is the input: real devices would make it non-deterministic. */
+    if (o->input && !o->replay)
         fx_evdev_scan(&a->ev);
     if (o->buttons && o->nbuttons > 0) {
         fx_gpio_open_buttons(&a->gpio, o->buttons, o->nbuttons);
@@ -191,6 +194,21 @@ int fx_app_open(fx_app **out, const fx_app_options *o)
     sigprocmask(SIG_BLOCK, &set, NULL);
     a->sfd = signalfd(-1, &set, SFD_NONBLOCK | SFD_CLOEXEC);
     a->pointer_mode = o->pointer;
+    a->max_frames = o->frames > 0 ? o->frames : 0;
+    if (o->frame_out) {
+        if (!fx_frame_pattern_ok(o->frame_out)) {
+            fx_display_log(a->disp, FX_LOG_ERROR,
+                           "frame files '%s': at most one %%d (as in frame-%%03d.png), %%%% for %%",
+                           o->frame_out);
+            fx_app_close(a);
+            return -FX_EINVAL;
+        }
+        a->frame_out = o->frame_out;
+    }
+    if (o->replay && (r = fx_replay_open(a, o->replay)) < 0) {
+        fx_app_close(a);
+        return r;
+    }
     fx_app_pointer_sync(a); /* drawn with the first frame */
     current = a;
     *out = a;
@@ -201,6 +219,7 @@ void fx_app_close(fx_app *a)
 {
     if (!a)
         return;
+    fx_replay_close(a);
     fx_evdev_close_all(&a->ev);
     fx_gpio_close_all(&a->gpio);
     if (a->tfd >= 0)
@@ -301,7 +320,27 @@ int fx_app_main_loop(fx_app *a)
         if (a->redisplay && !fx_display_flip_pending(a->disp) && a->cb.display) {
             a->redisplay = 0;
             a->cb.display(a->user);
+            int f = fx_app_frame_done(a);
+            if (f < 0)
+                return f;
             continue; /* timers or input may have become due meanwhile */
+        }
+        if (a->replay) {
+            /* The replay runs when no frame is due: "frame" lets the
+             * program draw what the statements before it asked for. */
+            uint64_t resume;
+            int s = fx_replay_step(a, now_us(), &resume);
+            if (s < 0)
+                return s;
+            if (s == 0) {
+                fx_replay_close(a); /* the end of the file ends the run */
+                break;
+            }
+            fx_app_pointer_sync(a);
+            if (!resume)
+                continue;
+            if (resume < next)
+                next = resume;
         }
         arm(a, next);
         struct pollfd p[MAXFD];

@@ -5,6 +5,7 @@
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -44,7 +45,7 @@ static int parse_backend(const char *s, fx_backend *b)
 
 int fx_display_options_from_env(fx_display_options *o)
 {
-    const char *e;
+    const char *e, *bad_log = NULL;
     /* First: it decides which of the messages below are shown. */
     if (o->log_priority == 0 && (e = var("FIXEL_LOG"))) {
         if (!strcasecmp(e, "debug"))
@@ -53,10 +54,14 @@ int fx_display_options_from_env(fx_display_options *o)
             o->log_priority = FX_LOG_ERROR;
         else if (!strcasecmp(e, "none"))
             o->log_priority = -1;
-        else
+        else if (!strcasecmp(e, "info"))
             o->log_priority = FX_LOG_INFO;
+        else
+            bad_log = e; /* said below, once the logger exists */
     }
     fx_logger l = logger_of(o);
+    if (bad_log)
+        fx_log(&l, FX_LOG_ERROR, "FIXEL_LOG=%s ignored (debug, info, error or none)", bad_log);
 
     if (o->present == FX_PRESENT_AUTO && (e = var("FIXEL_PRESENT"))) {
         if (!strcasecmp(e, "direct"))
@@ -121,5 +126,21 @@ int fx_app_options_from_env(fx_app_options *o)
         o->touch = getenv("FIXEL_TOUCH");
     if (!o->button_map)
         o->button_map = getenv("FIXEL_BUTTONS");
+    if (!o->replay)
+        o->replay = var("FIXEL_REPLAY");
+    if (!o->frame_out)
+        o->frame_out = var("FIXEL_OUT");
+    if (o->frames == 0 && (e = var("FIXEL_FRAMES"))) {
+        char *end;
+        errno = 0;
+        long n = strtol(e, &end, 10);
+        if (end == e || *end || errno || n < 1 || n > 1000000000L) {
+            fx_log(&l, FX_LOG_ERROR, "FIXEL_FRAMES=%s: use a number of frames from 1", e);
+            if (r == 0)
+                r = -FX_EINVAL;
+        } else {
+            o->frames = (int)n;
+        }
+    }
     return r;
 }

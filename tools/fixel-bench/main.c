@@ -875,9 +875,10 @@ static void machine(FILE *o)
 
 /* ---- main ----------------------------------------------------------------- */
 
-static void usage(void)
+/* --help: the text on stdout and exit 0; a bad argument: on stderr, exit 2. */
+static void usage_to(FILE *f, int status)
 {
-    fprintf(stderr,
+    fprintf(f,
             "usage: fixel-bench [--peers] [--check] [-w W2,W3..] [-p fixel,cairo..] [-f xrgb8888|rgb565]\n"
             "                   [-t trials] [-m min_trial_s] [-F full_limit_s] [-S prefix_target_s]\n"
             "                   [-o table.txt] [-q] [-x] [--no-extras]\n"
@@ -886,15 +887,19 @@ static void usage(void)
             "  TABLE 4 (presentation, teapot, deep zoom, idle loop) runs unless --no-extras;\n"
             "  -w present,teapot,deepzoom,idle picks parts of it\n"
             "  --check: verify nominal counts, checksums and W9 agreement only, then exit\n");
-    exit(2);
+    exit(status);
 }
+
+static void usage(void) { usage_to(stderr, 2); }
 
 int main(int argc, char **argv)
 {
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--peers"))
+        if (!strcmp(a, "--help") || !strcmp(a, "-h"))
+            usage_to(stdout, 0);
+        else if (!strcmp(a, "--peers"))
             opt_peers = 1;
         else if (!strcmp(a, "--check"))
             opt_check = 1;

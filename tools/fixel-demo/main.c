@@ -66,6 +66,33 @@ static int render_page(fx_memfb *fb, int page)
     return 0;
 }
 
+/* mkdir -p: every missing directory of path (errno set on failure). */
+static int mkdir_parents(const char *path)
+{
+    char p[4096];
+    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    for (char *s = p + 1;; s++) {
+        if (*s != '/' && *s)
+            continue;
+        char c = *s;
+        *s = 0;
+        struct stat st;
+        if (mkdir(p, 0777) < 0 && (errno != EEXIST || stat(p, &st) < 0 || !S_ISDIR(st.st_mode))) {
+            if (errno == EEXIST)
+                errno = ENOTDIR;
+            return -1;
+        }
+        *s = c;
+        if (!c)
+            return 0;
+        while (s[1] == '/')
+            s++;
+    }
+}
+
 static int headless(const char *out, int only)
 {
     fx_memfb fb;
@@ -73,7 +100,7 @@ static int headless(const char *out, int only)
         fprintf(stderr, "fixel-demo: out of memory\n");
         return 1;
     }
-    if (mkdir(out, 0777) < 0 && errno != EEXIST) {
+    if (mkdir_parents(out) < 0) {
         fprintf(stderr, "fixel-demo: cannot create %s: %s\n", out, strerror(errno));
         fx_memfb_destroy(&fb);
         return 1;
@@ -141,9 +168,11 @@ static int golden(const char *dir, int update)
         fail++;
         char apath[4096];
         snprintf(apath, sizeof apath, "%s/%s.actual.png", dir, demo_pages[i].name);
-        fx_write_png(apath, &fb.surf);
-        printf("FAIL demo page %s: %s (wrote %s)\n", demo_pages[i].name,
-               ok ? "pixels differ" : "golden missing or wrong size", apath);
+        int we = fx_write_png(apath, &fb.surf);
+        printf("FAIL demo page %s: %s (%s %s%s%s)\n", demo_pages[i].name,
+               ok ? "pixels differ" : "golden missing or wrong size",
+               we < 0 ? "could not write" : "wrote", apath, we < 0 ? ": " : "",
+               we < 0 ? strerror(-we) : "");
     }
     free(row);
     fx_memfb_destroy(&fb);
@@ -316,11 +345,9 @@ static int interactive(fx_app *app, int page)
     return rc < 0 ? 1 : 0;
 }
 
-static int have_display(void)
+/* For the automatic choice: a display device node exists. */
+static int display_nodes(void)
 {
-    const char *b = getenv("FIXEL_BACKEND");
-    if (b && *b)
-        return strcmp(b, "memory") != 0;
     return access("/dev/dri", F_OK) == 0 || access("/dev/fb0", F_OK) == 0;
 }
 
@@ -362,13 +389,31 @@ int main(int argc, char **argv)
     }
     if (gold)
         return golden(gold, update);
-    if (force_headless || !have_display())
+    if (force_headless)
         return headless(out, only);
     fx_app_options o;
     fx_app_options_init(&o);
+    if (fx_app_options_from_env(&o) < 0)
+        return 1; /* a FIXEL_BACKEND that names no backend: logged */
+    /* A display asked for (FIXEL_BACKEND=drm|fbdev) must open or the run
+     * fails; memory means headless; only the automatic choice falls back,
+     * and the headless summary line says so. */
+    if (o.display.backend == FX_BACKEND_MEMORY ||
+        (o.display.backend == FX_BACKEND_AUTO && !display_nodes()))
+        return headless(out, only);
     fx_app *app;
-    if (fx_app_options_from_env(&o) < 0 || fx_app_open(&app, &o) < 0) {
-        fprintf(stderr, "fixel-demo: no usable display; rendering headless instead\n");
+    if (fx_app_open(&app, &o) < 0) {
+        if (o.display.backend != FX_BACKEND_AUTO) {
+            fprintf(stderr, "fixel-demo: cannot open the %s display asked for (reason above)\n",
+                    fx_backend_name(o.display.backend));
+            return 1;
+        }
+        return headless(out, only);
+    }
+    fx_display_info info;
+    fx_display_get_info(fx_app_display(app), &info);
+    if (info.backend == FX_BACKEND_MEMORY) { /* the automatic order ended in memory */
+        fx_app_close(app);
         return headless(out, only);
     }
     int rc = interactive(app, only);

@@ -319,6 +319,13 @@ int main(int argc, char **argv)
             trace = 1;
         } else if (!strcmp(a, "-o") && i + 1 < argc) {
             out = argv[++i];
+            /* fx_write_image would write a PNG under any other name */
+            size_t ol = strlen(out);
+            if (ol < 5 || (strcmp(out + ol - 4, ".png") && strcmp(out + ol - 4, ".ppm") &&
+                           strcmp(out + ol - 4, ".PNG") && strcmp(out + ol - 4, ".PPM"))) {
+                fprintf(stderr, "fixel-draw: -o %s: the name must end in .png or .ppm\n", out);
+                return 2;
+            }
         } else if (!strcmp(a, "-s") && i + 1 < argc) {
             char extra;
             if (sscanf(argv[++i], "%dx%d%c", &w, &h, &extra) != 2 || w < 1 || h < 1 ||

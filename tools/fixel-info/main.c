@@ -248,7 +248,7 @@ static void gpio_section(void)
 #endif
 }
 
-static void choice_section(void)
+static int choice_section(void)
 {
     printf("fixel's choice (FX_BACKEND_AUTO: FIXEL_BACKEND, else DRM, fbdev, memory):\n");
     const char *env[] = {"FIXEL_BACKEND", "FIXEL_DRM_DEVICE", "FIXEL_FB_DEVICE", "FIXEL_CONNECTOR", "FIXEL_MODE",
@@ -265,7 +265,9 @@ static void choice_section(void)
         printf("  nothing opened (the reasons are logged above on stderr)\n");
         if (display_denied)
             printf("  why: permission denied on the display devices listed above\n");
-        return;
+        /* The automatic order always ends in memory: this is a display
+         * asked for (FIXEL_BACKEND, the board profile) that is not there. */
+        return 1;
     }
     fx_display_info in;
     fx_display_get_info(d, &in);
@@ -290,6 +292,7 @@ static void choice_section(void)
     else
         printf("  why: a DRM card with a connected connector (preferred over fbdev)\n");
     fx_display_close(d);
+    return 0;
 }
 
 int main(int argc, char **argv)
@@ -300,7 +303,8 @@ int main(int argc, char **argv)
                    "Lists DRM cards (driver, connectors and modes, CRTCs, planes and formats), fbdev\n"
                    "devices and their pixel formats, input devices as fixel classifies them, GPIO\n"
                    "chips and lines, and the display fixel would open here and why.\n"
-                   "Missing hardware prints \"none found\"; the exit status is 0 unless an option is wrong.\n");
+                   "Missing hardware prints \"none found\"; the exit status is 0 unless an option is\n"
+                   "wrong (2) or the display asked for (FIXEL_BACKEND=drm|fbdev) cannot open (1).\n");
             return 0;
         }
         fprintf(stderr, "fixel-info: unknown argument %s (try --help)\n", argv[i]);
@@ -310,6 +314,5 @@ int main(int argc, char **argv)
     fbdev_section();
     input_section();
     gpio_section();
-    choice_section();
-    return 0;
+    return choice_section();
 }

@@ -757,6 +757,33 @@ static void mem_report(const char *when, int frame)
     fflush(stdout);
 }
 
+/* mkdir -p: every missing directory of path (errno set on failure). */
+static int mkdir_parents(const char *path)
+{
+    char p[4096];
+    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    for (char *s = p + 1;; s++) {
+        if (*s != '/' && *s)
+            continue;
+        char c = *s;
+        *s = 0;
+        struct stat st;
+        if (mkdir(p, 0777) < 0 && (errno != EEXIST || stat(p, &st) < 0 || !S_ISDIR(st.st_mode))) {
+            if (errno == EEXIST)
+                errno = ENOTDIR;
+            return -1;
+        }
+        *s = c;
+        if (!c)
+            return 0;
+        while (s[1] == '/')
+            s++;
+    }
+}
+
 static void usage(FILE *f)
 {
     fprintf(f,
@@ -794,7 +821,15 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--full")) k->always_full = 1;
         else if (!strcmp(a, "--data") && i + 1 < argc) data = argv[++i];
         else if (!strcmp(a, "--out") && i + 1 < argc) out = argv[++i];
-        else if (!strcmp(a, "--frames") && i + 1 < argc) frames = atoi(argv[++i]);
+        else if (!strcmp(a, "--frames") && i + 1 < argc) {
+            char *end;
+            long n = strtol(argv[++i], &end, 10);
+            if (end == argv[i] || *end || n < 1 || n > 100000000L) {
+                fprintf(stderr, "fixel-kiosk: --frames wants a number of frames from 1, not '%s'\n", argv[i]);
+                return 2;
+            }
+            frames = (int)n;
+        }
         else if (!strcmp(a, "--mem-report") && i + 1 < argc) mem_frame = atoi(argv[++i]);
         else if (!strcmp(a, "--size") && i + 1 < argc) {
             if (sscanf(argv[++i], "%dx%d", &sw, &sh) != 2 || sw < 16 || sh < 16 || sw > 8192 || sh > 8192) {
@@ -845,7 +880,21 @@ int main(int argc, char **argv)
     k->full = 1;
 
     int rc = 0;
-    if (k->headless) {
+    fx_display_info di;
+    fx_display_get_info(fx_app_display(k->app), &di);
+    if (!k->headless && di.backend == FX_BACKEND_MEMORY && o.display.backend == FX_BACKEND_AUTO) {
+        /* The automatic choice found no display: a kiosk nobody sees must
+         * fail (systemd's Restart= can act); --headless asks for memory. */
+        fprintf(stderr, "fixel-kiosk: no display here (the reason is above); --headless [--out DIR] "
+                        "draws into memory\n");
+        fx_app_close(k->app);
+        if (k->fd > 0) close(k->fd);
+        return 1;
+    }
+    if (k->headless && out && mkdir_parents(out) < 0) {
+        fprintf(stderr, "fixel-kiosk: cannot create %s: %s\n", out, strerror(errno));
+        rc = 1;
+    } else if (k->headless) {
         k->now_ms = 0;
         for (int f = 0; f < frames; f++) {
             feed_frame(k);

@@ -33,6 +33,54 @@
  * have none; FX_POINTER_ON/OFF (or FIXEL_POINTER=on|off|auto, through
  * fixel/env.h) override AUTO. It hides on touch
  * input and comes back on the next mouse motion.
+ *
+ * Driving an app headless (tests of your own program, as fixel tests
+ * itself): with the memory backend (FIXEL_BACKEND=memory) nothing needs a
+ * device, and three options (or their FIXEL_* variables, through
+ * fixel/env.h) make a run scripted and checkable:
+ *
+ *     FIXEL_BACKEND=memory FIXEL_REPLAY=clicks.txt FIXEL_OUT=frame-%03d.png ./myprog
+ *
+ *   replay     a file of input statements fed into the main loop instead of
+ *              the devices under /dev/input (which are then not opened);
+ *              when it ends, and the frame it led to is drawn, the main loop
+ *              returns 0.
+ *   frames     the main loop returns 0 after this many display callbacks.
+ *   frame_out  after each display callback the screen (what
+ *              fx_display_screen holds: the presented picture with the
+ *              software pointer, physical size) is written to this file,
+ *              PNG, or PPM for a .ppm name; one %d (%03d...) is the frame
+ *              number, from 1; without one each frame replaces the last.
+ *              A file that cannot be written ends the loop with its error.
+ *
+ * Replay files are the tests/input stream format; '#' starts a comment
+ * (except in the character '#'), one statement a line:
+ *
+ *   device N CLASS[+CLASS] [abs X0 X1 Y0 Y1] [mt X0 X1 Y0 Y1]
+ *                     declare virtual device N (0..7); CLASS: keyboard
+ *                     mouse touch mt tablet; abs/mt: its axis ranges
+ *                     (default: the screen size)
+ *   ev N TYPE CODE VALUE   a raw evdev event of device N, translated as a
+ *                     real device's (rotation, calibration, keymap); TYPE
+ *                     and CODE are numbers or names (KEY, REL, ABS,
+ *                     REL_X, BTN_LEFT, BTN_TOUCH, ABS_MT_SLOT, KEY_A..KEY_Z,
+ *                     KEY_0..KEY_9, KEY_F1..KEY_F12, KEY_ENTER, KEY_ESC,
+ *                     KEY_LEFTSHIFT, KEY_UP...)
+ *   syn N / dropped N SYN_REPORT / SYN_DROPPED of device N
+ *   calib N A0..A6    a tslib pointercal for device N; calibflag N swap|
+ *                     invertx|inverty
+ *   event TEXT        a logical event, written as fx_event_describe prints
+ *                     it: "mouse left down 10 20", "motion 30 40",
+ *                     "passive 5 5", "key 99 0 0" (or "key 'c'": the
+ *                     pointer's position), "special 100", "wheel 1 10 10",
+ *                     "touch 0 down 10 20", "close"; goes to the callbacks
+ *                     as fx_app_inject
+ *   frame             let the program draw the frame it asked for (if it
+ *                     did) before the next statement
+ *   wait MS           run the loop (timers, animation) for MS milliseconds
+ *   screen W H [ROT]  check the display's physical size and rotation
+ * A statement that cannot be used ends the loop with -FX_EINVAL and the
+ * file and line logged.
  */
 #ifndef FIXEL_APP_H
 #define FIXEL_APP_H
@@ -65,6 +113,10 @@ typedef struct fx_app_options {
     const char *button_map; /* [env FIXEL_BUTTONS] used when buttons is NULL, in the syntax of
                                fx_gpio_parse_buttons; NULL: the board profile's map */
     fx_pointer_mode pointer; /* [env FIXEL_POINTER] software pointer policy (default AUTO) */
+    /* Headless driving (above); unset: NULL / 0. */
+    const char *replay;     /* [env FIXEL_REPLAY] replay file: the input instead of /dev/input */
+    int frames;             /* [env FIXEL_FRAMES] stop after this many frames; 0: no limit */
+    const char *frame_out;  /* [env FIXEL_OUT] write each frame to this file ("f-%03d.png") */
 } fx_app_options;
 
 void fx_app_options_init(fx_app_options *o);
@@ -98,6 +150,13 @@ int fx_app_set_pointer_sprite(fx_app *a, const fx_sprite *s);
 int fx_app_pointer_visible(const fx_app *a);
 /* Number of input devices and GPIO buttons open now. */
 int fx_app_input_count(const fx_app *a);
+
+/* Dispatch e to the callbacks now, as if an input device had produced it
+ * (coordinates are logical pixels; time_us 0: now). For tests and for
+ * programs with input of their own. Returns 0 or -FX_EINVAL. */
+int fx_app_inject(fx_app *a, const fx_event *e);
+/* Display callbacks run so far. */
+int fx_app_frame_count(const fx_app *a);
 
 /* GLUT-style calls on the most recently opened app. */
 void fx_post_redisplay(void);

@@ -19,7 +19,8 @@
  *
  * A value that cannot be parsed is logged (through o's log function and
  * level, FIXEL_LOG applied) and ignored, except FIXEL_BACKEND: an unknown
- * backend returns -FX_EINVAL, as opening with it used to. Otherwise 0.
+ * backend returns -FX_EINVAL, as opening with it used to, and FIXEL_FRAMES
+ * (below). Otherwise 0.
  */
 #ifndef FIXEL_ENV_H
 #define FIXEL_ENV_H
@@ -32,7 +33,9 @@
  * FIXEL_SW_ROTATION, FIXEL_VT_SWITCH, FIXEL_LOG. */
 int fx_display_options_from_env(fx_display_options *o);
 /* The display's (o->display), then FIXEL_POINTER, FIXEL_POINTERCAL,
- * FIXEL_TOUCH, FIXEL_BUTTONS. */
+ * FIXEL_TOUCH, FIXEL_BUTTONS, FIXEL_REPLAY, FIXEL_FRAMES, FIXEL_OUT.
+ * FIXEL_FRAMES that is not a positive integer returns -FX_EINVAL (a
+ * scripted run must not run forever instead). */
 int fx_app_options_from_env(fx_app_options *o);
 
 #endif

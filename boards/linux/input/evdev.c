@@ -159,7 +159,10 @@ void fx_evdev_scan(fx_evdev_set *a)
 {
     DIR *d = opendir(a->dir);
     if (!d) {
-        fx_log(&a->log, FX_LOG_INFO, "input: cannot read %s: %s", a->dir, strerror(errno));
+        /* No /dev/input at all (a container, a headless board) is normal:
+         * only a directory that exists and cannot be read is worth a line. */
+        fx_log(&a->log, errno == ENOENT ? FX_LOG_DEBUG : FX_LOG_INFO, "input: cannot read %s: %s",
+               a->dir, strerror(errno));
         return;
     }
     struct dirent *de;
