@@ -107,7 +107,7 @@ TOOL_BINS  := $(TOOLS:%=$(BUILD)/bin/%)
 # the board libraries.
 TEST_DIRS  := tests/core tests/boards tests/tools
 TEST_SRC   := $(sort $(filter-out $(if $(HAVE_OPT),,tests/boards/test_display.c tests/boards/test_pointer.c),\
-                $(foreach d,$(TEST_DIRS),$(wildcard $(d)/*.c))))
+                $(foreach d,$(TEST_DIRS),$(wildcard $(d)/test_*.c))))
 TEST_LIB_SRC := $(sort $(wildcard tests/lib/*.c))
 # 32-bit targets have no __int128: test files whose reference arithmetic
 # needs it unguarded run on 64-bit hosts only (tests/arm/test-arm.sh says so).
