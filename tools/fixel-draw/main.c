@@ -290,11 +290,47 @@ static int run_stream(fx_scene *sc, const host *H)
     return r < 0 ? r : fx_scene_surface(sc);
 }
 
+/* --commands: each command's usage line, then its arguments from the one
+ * argument table (kernel-free-src/scene/scene_args.c), one per line:
+ *     NAME  TYPE  RANGE  [optional] [bounds the work]
+ * forms are introduced by "form KEYWORD" ("form *" for the default form),
+ * repetitions by "repeat MIN..MAX times:". fixel-script(5) is generated from
+ * this output. */
 static void list_commands(void)
 {
+    static const char *const types[] = {"", "integer", "number", "number", "colour", "word", "string"};
     for (int t = 0; fx_scene_tables[t]; t++)
-        for (const fx_scene_cmd *c = fx_scene_tables[t]; c->name; c++)
+        for (const fx_scene_cmd *c = fx_scene_tables[t]; c->name; c++) {
             printf("%s\n", c->usage);
+            const fx_scene_argspec *sp = fx_scene_args_find(c->name);
+            if (!sp) {
+                printf("    (no argument table entry)\n");
+                continue;
+            }
+            int opt = 0, indent = 4;
+            for (const fx_scene_arg *a = sp->args; a->type != FX_ARG_END; a++) {
+                char range[64];
+                fx_scene_arg_range(a, range, sizeof range);
+                switch (a->type) {
+                case FX_ARG_OPT: opt = 1; break;
+                case FX_ARG_FORM:
+                    printf("    form %s\n", a->name ? a->name : "*");
+                    indent = 6;
+                    opt = 0;
+                    break;
+                case FX_ARG_REPEAT:
+                    printf("%*srepeat %s times (%s):\n", indent, "", range, a->name);
+                    indent += 2;
+                    break;
+                case FX_ARG_WORD:
+                    printf("%*sword         one of %s%s\n", indent, "", a->name, opt ? " [optional]" : "");
+                    break;
+                default:
+                    printf("%*s%-12s %-8s %s%s%s\n", indent, "", a->name, types[a->type], range,
+                           opt ? " [optional]" : "", a->flags & FX_ARG_WORK ? " [bounds the work]" : "");
+                }
+            }
+        }
 }
 
 int main(int argc, char **argv)
