@@ -129,9 +129,9 @@ A(ifsmap, F("A", -1024, 1024), F("B", -1024, 1024), F("C", -1024, 1024), F("D", 
   F("E", -1024, 1024), F("F", -1024, 1024), F("P", 0, 1));
 A(ifswindow, FALL("X0"), FALL("Y0"), FALL("X1"), FALL("Y1"));
 A(ifs, W("sierpinski|fern|user"), FORM("chaos"), XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO),
-  IW("NPOINTS", 0, 20000000), I("SEED", INT32_MIN, INT32_MAX), FORM("copier"), XY("X"), XY("Y"), I("W", 1, CO),
+  IW("NPOINTS", 0, 4000000), I("SEED", INT32_MIN, INT32_MAX), FORM("copier"), XY("X"), XY("Y"), I("W", 1, CO),
   I("H", 1, CO), IW("DEPTH", 0, 20));
-A(fern, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("NPOINTS", 0, 20000000),
+A(fern, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("NPOINTS", 0, 4000000),
   I("SEED", INT32_MIN, INT32_MAX));
 /* ---- viz ---- */
 A(field, FORM("terrain"), IW("GW", 2, 1025), IW("GH", 2, 1025), I("SEED", INT32_MIN, INT32_MAX), OPT,
