@@ -164,11 +164,12 @@ uint32_t fx_fractline(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32
                       const fx_fract_params *p, uint32_t *state)
 {
     /* The random draws cannot depend on the clip, so the whole line is
-     * always walked; pieces of at least 1/2^18 of |dx| + |dy| keep that walk
-     * near 2^19 segments however long the line is. */
+     * always walked; pieces of at least 1/2^15 of |dx| + |dy| keep that walk
+     * near 2^16 segments however long the line is (2^18 took over a second
+     * per coastline side, issue #26). */
     int64_t ddx = (int64_t)x1 - x0, ddy = (int64_t)y1 - y0;
     int64_t span = (ddx < 0 ? -ddx : ddx) + (ddy < 0 ? -ddy : ddy);
-    int64_t ml = FX_MAX((int64_t)FX_MAX(p->min_len, 1), span >> 18);
+    int64_t ml = FX_MAX((int64_t)FX_MAX(p->min_len, 1), span >> 15);
     fract_job j = {c, fx16_exp2((FX16_ONE - p->beta) / 2), ml * ml, state, 0};
     pt a = {(int64_t)x0 * ONE, (int64_t)y0 * ONE}, b = {(int64_t)x1 * ONE, (int64_t)y1 * ONE};
     fract_rec(&j, a, b, p->sd, 0);
