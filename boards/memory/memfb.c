@@ -4,6 +4,8 @@
 #include "fixel/error.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <sys/stat.h>
 #ifndef FX_NO_PNG
 #include <png.h>
 #endif
@@ -40,29 +42,88 @@ void fx_memfb_destroy(fx_memfb *fb)
 }
 
 /* Images are written to a temporary name and renamed into place, so a failed
- * or interrupted write never leaves a partial file under the real name. */
-static FILE *open_tmp(const char *path, char *tmp, size_t n)
+ * or interrupted write never leaves a partial file under the real name.
+ * Only a regular file (or nothing) is ever replaced (issue #26): a symlink
+ * is followed and its target replaced; a device, FIFO or socket at the path
+ * is written in place (opened without blocking, never created or renamed
+ * over: `-o /dev/full` fails with ENOSPC and the device stays). tmp[0] == 0
+ * marks that direct mode; final gets the name to rename onto. */
+static FILE *open_tmp(const char *path, char *tmp, size_t n, char *final, size_t nfinal)
 {
-    if ((size_t)snprintf(tmp, n, "%s.tmp%ld", path, (long)getpid()) >= n)
+    struct stat st;
+    errno = 0;
+    tmp[0] = 0;
+    if (strlen(path) >= nfinal) {
+        errno = ENAMETOOLONG;
         return NULL;
+    }
+    strcpy(final, path);
+    if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) {
+        char *real = realpath(path, NULL);
+        if (real && strlen(real) < nfinal) {
+            strcpy(final, real);
+        } else { /* a dangling link: its target, relative to the link's folder */
+            char t[4096];
+            ssize_t k = readlink(path, t, sizeof t - 1);
+            const char *slash = strrchr(path, '/');
+            size_t dir = slash ? (size_t)(slash - path) + 1 : 0;
+            if (k > 0 && (size_t)k + dir < nfinal) {
+                t[k] = 0;
+                if (t[0] == '/')
+                    dir = 0;
+                memcpy(final, path, dir);
+                strcpy(final + dir, t);
+            }
+        }
+        free(real);
+    }
+    if (stat(final, &st) == 0 && !S_ISREG(st.st_mode)) {
+        if (S_ISDIR(st.st_mode)) {
+            errno = EISDIR;
+            return NULL;
+        }
+        int fd = open(final, O_WRONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+        if (fd < 0)
+            return NULL;
+        fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+        FILE *f = fdopen(fd, "wb");
+        if (!f)
+            close(fd);
+        return f;
+    }
+    if ((size_t)snprintf(tmp, n, "%s.tmp%ld", final, (long)getpid()) >= n) {
+        tmp[0] = 0;
+        errno = ENAMETOOLONG;
+        return NULL;
+    }
     return fopen(tmp, "wb");
 }
 
 static int finish_tmp(FILE *f, const char *tmp, const char *path, int ok)
 {
-    if (fclose(f) != 0)
+    errno = 0;
+    if (fflush(f) != 0)
         ok = 0;
+    int e = errno;
+    if (fclose(f) != 0) {
+        ok = 0;
+        if (!e)
+            e = errno;
+    }
+    if (!tmp[0]) /* written in place */
+        return ok ? 0 : -(e ? e : FX_EIO);
     if (ok && rename(tmp, path) == 0)
         return 0;
-    int e = errno ? errno : FX_EIO;
+    if (!e)
+        e = errno ? errno : FX_EIO;
     remove(tmp);
     return -e;
 }
 
 int fx_write_ppm(const char *path, const fx_surface *s)
 {
-    char tmp[4096];
-    FILE *f = open_tmp(path, tmp, sizeof tmp);
+    char tmp[4096], final[4096];
+    FILE *f = open_tmp(path, tmp, sizeof tmp, final, sizeof final);
     if (!f)
         return errno ? -errno : -FX_EINVAL;
     uint8_t *row = malloc((size_t)s->w * 3);
@@ -72,7 +133,7 @@ int fx_write_ppm(const char *path, const fx_surface *s)
         ok = fwrite(row, 3, (size_t)s->w, f) == (size_t)s->w;
     }
     free(row);
-    return finish_tmp(f, tmp, path, ok);
+    return finish_tmp(f, tmp, final, ok);
 }
 
 #ifndef FX_NO_PNG
@@ -115,20 +176,20 @@ static int write_png_stream(FILE *f, int32_t w, int32_t h, const fx_surface *s, 
 
 int fx_write_png(const char *path, const fx_surface *s)
 {
-    char tmp[4096];
-    FILE *f = open_tmp(path, tmp, sizeof tmp);
+    char tmp[4096], final[4096];
+    FILE *f = open_tmp(path, tmp, sizeof tmp, final, sizeof final);
     if (!f)
         return errno ? -errno : -FX_EINVAL;
-    return finish_tmp(f, tmp, path, write_png_stream(f, s->w, s->h, s, NULL));
+    return finish_tmp(f, tmp, final, write_png_stream(f, s->w, s->h, s, NULL));
 }
 
 int fx_write_png_rgb(const char *path, const uint8_t *rgb, int32_t w, int32_t h)
 {
-    char tmp[4096];
-    FILE *f = open_tmp(path, tmp, sizeof tmp);
+    char tmp[4096], final[4096];
+    FILE *f = open_tmp(path, tmp, sizeof tmp, final, sizeof final);
     if (!f)
         return errno ? -errno : -FX_EINVAL;
-    return finish_tmp(f, tmp, path, write_png_stream(f, w, h, NULL, rgb));
+    return finish_tmp(f, tmp, final, write_png_stream(f, w, h, NULL, rgb));
 }
 
 int fx_read_png_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h)
