@@ -43,17 +43,20 @@ fx_format fx_format_from_name(const char *name)
     return FX_FMT_COUNT;
 }
 
+/* Saturates at INT32_MAX: 2^30 XRGB8888 pixels wrapped to 0 (issue #26). */
 int32_t fx_format_min_stride(fx_format f, int32_t w)
 {
-    return (int32_t)(((int64_t)w * formats[f].bits_per_pixel + 7) / 8);
+    int64_t b = ((int64_t)w * formats[f].bits_per_pixel + 7) / 8;
+    return b > INT32_MAX ? INT32_MAX : (int32_t)b;
 }
 
 int fx_surface_init(fx_surface *s, void *pixels, int32_t w, int32_t h, int32_t stride,
                     fx_format format)
 {
-    if ((unsigned)format >= FX_FMT_COUNT || !pixels || w <= 0 || h <= 0)
+    if (!s || (unsigned)format >= FX_FMT_COUNT || !pixels || w <= 0 || h <= 0)
         return -FX_EINVAL;
-    int64_t need = fx_format_min_stride(format, w);
+    /* the whole row in 64 bits: a width of 2^30 with stride 4 was accepted */
+    int64_t need = ((int64_t)w * formats[format].bits_per_pixel + 7) / 8;
     int64_t mag = stride < 0 ? -(int64_t)stride : stride;
     unsigned bpp = formats[format].bits_per_pixel;
     unsigned align = bpp == 32 ? 4 : bpp == 16 ? 2 : 1;
