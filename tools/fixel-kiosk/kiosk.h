@@ -82,6 +82,10 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
 
 /* Parse a decimal "[-+]digits[.digits]" of exactly len characters into
  * milli-units (rounded half away from zero). Returns 0 or -1. */
+/* Every number (data values, min, max) lies within +-KIOSK_VALUE_MAX (10^15,
+ * in thousandths +-10^18): differences of two stay below 2^61, and
+ * widgets scale them with a 96-bit muldiv (issue #26). */
+#define KIOSK_VALUE_MAX 1000000000000000LL
 int kiosk_parse_milli(const char *s, size_t len, int64_t *out);
 
 typedef enum kiosk_line_result {

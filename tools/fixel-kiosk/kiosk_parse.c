@@ -29,8 +29,8 @@ int kiosk_parse_milli(const char *s, size_t len, int64_t *out)
     int64_t v = 0;
     if (i < len && (s[i] == '-' || s[i] == '+')) neg = s[i++] == '-';
     for (; i < len && s[i] >= '0' && s[i] <= '9'; i++, digits++) {
-        if (v > (INT64_MAX / 10 - 9) / 1000) return -1; /* keeps v * 1000 in range */
         v = v * 10 + (s[i] - '0');
+        if (v > KIOSK_VALUE_MAX) return -1; /* the declared range: v * 1000 + 999 stays far from INT64_MAX */
     }
     v *= 1000;
     if (i < len && s[i] == '.') {

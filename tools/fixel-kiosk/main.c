@@ -13,6 +13,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <malloc.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -369,12 +370,31 @@ static void fill(fx_ctx *c, fx_color col, int32_t x, int32_t y, int32_t w, int32
     fx_fill_rect(&t, x, y, w, h);
 }
 
+/* a * b / c for 0 <= a <= c, 0 <= b < 2^32, c > 0, without overflow: the
+ * product in 96 bits, then long division (values are bounded by
+ * KIOSK_VALUE_MAX, their differences not by much less than 2^61). */
+static int64_t muldiv(uint64_t a, uint64_t b, uint64_t c)
+{
+    uint64_t lo = (a & 0xFFFFFFFFu) * b, mid = (a >> 32) * b;
+    uint64_t p_lo = lo + (mid << 32), p_hi = (mid >> 32) + (p_lo < lo);
+    uint64_t q = 0, rem = 0;
+    for (int i = 127; i >= 0; i--) {
+        uint64_t bit = i >= 64 ? (p_hi >> (i - 64)) & 1 : (p_lo >> i) & 1;
+        rem = rem << 1 | bit;
+        if (rem >= c) {
+            rem -= c;
+            if (i < 64) q |= (uint64_t)1 << i;
+        }
+    }
+    return (int64_t)q;
+}
+
 static int64_t frac_permille(const kiosk_widget *w, int64_t v)
 {
     if (w->max <= w->min) return 0;
     if (v <= w->min) return 0;
     if (v >= w->max) return 1000;
-    return (v - w->min) * 1000 / (w->max - w->min);
+    return muldiv((uint64_t)(v - w->min), 1000, (uint64_t)(w->max - w->min));
 }
 
 static void value_text(const kiosk *k, const kiosk_widget *w, char *buf, size_t size)
@@ -456,7 +476,7 @@ static void draw_spark(kiosk *k, fx_ctx *c, const kiosk_widget *w, fx_rect r, fx
         if (h < lo) h = lo;
         if (h > hi) h = hi;
         int32_t x = x0 + (int32_t)((int64_t)(i + hist - n) * (x1 - x0) / (hist - 1));
-        int32_t y = y1 - (int32_t)((h - lo) * (y1 - y0) / (hi - lo));
+        int32_t y = y1 - (int32_t)muldiv((uint64_t)(h - lo), (uint64_t)(y1 - y0), (uint64_t)(hi - lo));
         if (i) { fx_line(&t, px, py, x, y); fx_line(&t, px, py - 1, x, y - 1); }
         px = x; py = y;
     }
@@ -810,11 +830,24 @@ int main(int argc, char **argv)
     if (mem_frame >= 0) setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
 
     static char cbuf[65536];
-    FILE *cf = fopen(cfgpath, "rb");
-    if (!cf) { fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, strerror(errno)); return 1; }
+    /* never blocks in open (a FIFO without writer), refuses what is not a
+     * file, and a config of exactly 65536 bytes is fine (issue #26) */
+    int cfd = open(cfgpath, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    struct stat cst;
+    if (cfd < 0) { fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, strerror(errno)); return 1; }
+    if (fstat(cfd, &cst) < 0 || !S_ISREG(cst.st_mode)) {
+        fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath,
+                S_ISDIR(cst.st_mode) ? "is a directory" : "not a regular file");
+        close(cfd);
+        return 1;
+    }
+    fcntl(cfd, F_SETFL, fcntl(cfd, F_GETFL) & ~O_NONBLOCK);
+    FILE *cf = fdopen(cfd, "rb");
+    if (!cf) { fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, strerror(errno)); close(cfd); return 1; }
     size_t clen = fread(cbuf, 1, sizeof cbuf, cf);
-    int toolong = !feof(cf);
+    int toolong = clen == sizeof cbuf && fgetc(cf) != EOF, rerr = ferror(cf);
     fclose(cf);
+    if (rerr) { fprintf(stderr, "fixel-kiosk: %s: read error\n", cfgpath); return 1; }
     if (toolong) { fprintf(stderr, "fixel-kiosk: %s: larger than %zu bytes\n", cfgpath, sizeof cbuf); return 1; }
     char err[160];
     if (kiosk_config_parse(&k->cfg, cbuf, clen, err, sizeof err) < 0) {
@@ -825,6 +858,12 @@ int main(int argc, char **argv)
     if (!strcmp(data, "-")) k->fd = 0;
     else if ((k->fd = open(data, O_RDONLY | O_NONBLOCK | O_CLOEXEC)) < 0) {
         fprintf(stderr, "fixel-kiosk: %s: %s\n", data, strerror(errno));
+        return 1;
+    }
+    struct stat dst;
+    if (k->fd > 0 && fstat(k->fd, &dst) == 0 && S_ISDIR(dst.st_mode)) { /* exited 0 before */
+        fprintf(stderr, "fixel-kiosk: %s: is a directory\n", data);
+        close(k->fd);
         return 1;
     }
 
@@ -840,6 +879,17 @@ int main(int argc, char **argv)
     } else
         fcntl(k->fd, F_SETFL, fcntl(k->fd, F_GETFL) | O_NONBLOCK);
     if (fx_app_open(&k->app, &o) < 0) return 1;
+    if (k->headless) {
+        /* fx_app_open blocks SIGINT/SIGTERM/SIGHUP for its signalfd, which
+         * only the main loop reads: the headless loop never does, so Ctrl-C
+         * and timeout(1) could not stop it (issue #26). Default action. */
+        sigset_t ss;
+        sigemptyset(&ss);
+        sigaddset(&ss, SIGINT);
+        sigaddset(&ss, SIGTERM);
+        sigaddset(&ss, SIGHUP);
+        sigprocmask(SIG_UNBLOCK, &ss, NULL);
+    }
     fx_app_size(k->app, &k->W, &k->H);
     k->full = 1;
 
