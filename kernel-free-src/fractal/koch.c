@@ -148,7 +148,8 @@ static void fract_rec(fract_job *j, pt a, pt b, fx16 sd, int depth)
     int64_t lx = dx >> (F - 8), ly = dy >> (F - 8); /* 24.8 */
     const int64_t big = (int64_t)1 << 30; /* longer is never a leaf; squares fit below */
     int near = lx < big && lx > -big && ly < big && ly > -big;
-    if (depth >= 40 || (near && lx * lx + ly * ly < j->min2 * 65536)) {
+    /* depth 16: at most 2^16 pieces even when beta < 1 makes them grow (issue #26) */
+    if (depth >= 16 || (near && lx * lx + ly * ly < j->min2 * 65536)) {
         seg(j->c, a, b);
         j->segs++;
         return;
