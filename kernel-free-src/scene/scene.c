@@ -332,8 +332,10 @@ static int tok_int(const char *t, int l, int64_t *v)
     for (; i < l; i++) {
         if (t[i] < '0' || t[i] > '9')
             return 0;
-        if (acc < ((int64_t)1 << 62))
+        if (acc <= (((int64_t)1 << 62) - 9) / 10)
             acc = acc * 10 + (t[i] - '0');
+        else
+            acc = (int64_t)1 << 62; /* saturated: out of any range */
     }
     if (acc > ((int64_t)1 << 62))
         acc = (int64_t)1 << 62;
