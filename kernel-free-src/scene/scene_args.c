@@ -139,7 +139,7 @@ A(field, FORM("terrain"), IW("GW", 2, 1025), IW("GH", 2, 1025), I("SEED", INT32_
 A(vfield, W("vortex|saddle|swirl|dipole"), IW("GW", 2, 1025), IW("GH", 2, 1025));
 A(heatmap, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), OPT, I("LO", INT32_MIN, INT32_MAX),
   I("HI", INT32_MIN, INT32_MAX));
-A(colorbar, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), OPT, IW("TICKS", 0, 100));
+A(colorbar, XY("X"), XY("Y"), I("W", 1, INT32_MAX), I("H", 1, INT32_MAX), OPT, IW("TICKS", 0, 100));
 A(contour, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("N", 1, 64), OPT, REP("level", 0, 64),
   I("LEVEL", INT32_MIN, INT32_MAX));
 A(quiver, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), OPT, IW("STEP", 1, CO));
