@@ -334,6 +334,8 @@ void fx_surface_clear(const fx_surface *s, fx_color c) { fx_surface_fill(s, fx_s
 
 void fx_blit(const fx_surface *dst, int32_t dx, int32_t dy, const fx_surface *src)
 {
+    if (!dst || !src)
+        return;
     fx_rect r = {dx, dy, dx, dy};
     r.x1 = (int32_t)FX_MIN((int64_t)dx + src->w, INT32_MAX);
     r.y1 = (int32_t)FX_MIN((int64_t)dy + src->h, INT32_MAX);

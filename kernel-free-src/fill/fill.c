@@ -1114,6 +1114,8 @@ void fx_fill_tri_gouraud8(const fx_ctx *c, const fx8 *xy, const fx_color *col)
 
 void fx_fill_tri_gouraud(const fx_ctx *c, const int32_t *xy, const fx_color *col)
 {
+    if (!c || !xy || !col)
+        return;
     fx8 w[6];
     for (int i = 0; i < 6; i++) {
         if (xy[i] >= INT_TRI_LIMIT || xy[i] <= -INT_TRI_LIMIT)
@@ -1125,6 +1127,8 @@ void fx_fill_tri_gouraud(const fx_ctx *c, const int32_t *xy, const fx_color *col
 
 void fx_fill_poly_gouraud(const fx_ctx *c, const int32_t *xy, const fx_color *col, int32_t n)
 {
+    if (!c || !xy || !col || n > INT32_MAX / 2)
+        return;
     for (int32_t i = 1; i + 1 < n; i++) {
         int32_t v[6] = {xy[0], xy[1], xy[2 * i], xy[2 * i + 1], xy[2 * i + 2], xy[2 * i + 3]};
         fx_color cc[3] = {col[0], col[i], col[i + 1]};

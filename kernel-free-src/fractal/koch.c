@@ -179,6 +179,8 @@ uint32_t fx_fractline(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32
 
 uint32_t fx_coastline(const fx_ctx *c, const int32_t *xy, int n, const fx_fract_params *p)
 {
+    if (!c || !xy || !p || n < 1 || n > INT32_MAX / 2)
+        return 0;
     uint32_t st = p->seed, segs = 0;
     for (int i = 0; i < n; i++) {
         int k = (i + 1) % n;

@@ -200,6 +200,13 @@ static int64_t style_scale(const fx_text_style *st)
 
 void fx_text_extent(const fx_text_style *st, const char *utf8, int64_t *w, int64_t *h)
 {
+    int64_t dummy;
+    if (!w)
+        w = &dummy;
+    if (!h)
+        h = &dummy;
+    if (!utf8)
+        utf8 = "";
     if (!st)
         st = &default_style;
     const fx_font *f = st->font ? st->font : &builtin;
@@ -268,6 +275,8 @@ static int cell_inside(const fx_rect *cl, int64_t x, int64_t y, int64_t w, int64
 
 int fx_text(const fx_ctx *c, int32_t x, int32_t y, const char *utf8)
 {
+    if (!c || !utf8)
+        return -FX_EINVAL;
     const fx_text_style *st = c->text_style ? c->text_style : &default_style;
     const fx_font *f = st->font ? st->font : &builtin;
     const fx_rect *cl = &c->clip;

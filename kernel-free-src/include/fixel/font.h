@@ -81,12 +81,14 @@ static inline const uint8_t *fx_font_row(const fx_font *f, uint32_t g, uint32_t 
 }
 
 /* Size in pixels of the box of utf8 drawn with style st (NULL: defaults):
- * the widest line times the number of lines. */
+ * the widest line times the number of lines. utf8 NULL is the empty text;
+ * w or h may be NULL. */
 void fx_text_extent(const fx_text_style *st, const char *utf8, int64_t *w, int64_t *h);
 
 /* Draw NUL-terminated UTF-8 text with c->text_style (NULL: built-in font,
  * scale 1, no background, per-pixel clipping). Malformed UTF-8 shows the
- * fallback glyph. Returns the number of characters drawn at least in part. */
+ * fallback glyph. Returns the number of characters drawn at least in part,
+ * or -FX_EINVAL when c or utf8 is NULL. */
 int fx_text(const fx_ctx *c, int32_t x, int32_t y, const char *utf8);
 
 #endif

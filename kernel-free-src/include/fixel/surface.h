@@ -107,7 +107,8 @@ void fx_surface_clear(const fx_surface *s, fx_color c);
 
 /* Copy src (any format) onto dst at (dx, dy), clipped to dst, converting
  * through fx_unpack/fx_pack. Same-format copies are plain row copies.
- * Overlapping memory is handled (rows are moved in a safe order). */
+ * Overlapping memory is handled (rows are moved in a safe order). dst or src
+ * NULL: nothing is copied. */
 void fx_blit(const fx_surface *dst, int32_t dx, int32_t dy, const fx_surface *src);
 
 /* Convert one row of w pixels to 8-bit RGB triplets (for PNG/PPM output). */
