@@ -14,3 +14,13 @@ TEST_SUITES += "$(MAKE) --no-print-directory -s build/tests/corners && build/tes
                "$(MAKE) --no-print-directory -s SAN=1 build/asan/tests/corners && build/asan/tests/corners"
 
 .PHONY: test-corners
+
+# The API corner test (tests/corners/api.c): public functions with NULL and
+# extreme values on surfaces between guard pages.
+$(BUILD)/obj/tests/corners/api.o: BASEFLAGS += -Itests/fuzz
+$(BUILD)/tests/api-corners: $(BUILD)/obj/tests/corners/api.o $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $< $(LIB_A) $(LDLIBS)
+
+TEST_SUITES += "$(MAKE) --no-print-directory -s build/tests/api-corners && build/tests/api-corners" \
+               "$(MAKE) --no-print-directory -s SAN=1 build/asan/tests/api-corners && build/asan/tests/api-corners"
