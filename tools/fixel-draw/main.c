@@ -382,6 +382,8 @@ static void list_commands(void)
                 printf("    (no argument table entry)\n");
                 continue;
             }
+            if (sp->work)
+                printf("    work: %s\n", sp->work);
             int opt = 0, indent = 4;
             for (const fx_scene_arg *a = sp->args; a->type != FX_ARG_END; a++) {
                 char range[64];

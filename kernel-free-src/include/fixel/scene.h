@@ -154,7 +154,10 @@ typedef struct fx_scene_argspec {
     const char *cmd;
     const fx_scene_arg *args; /* FX_ARG_END-terminated */
     const char *pre;          /* script lines a test must run first (state the command needs), or NULL */
+    const char *work;         /* the bound on the work no single argument sets, or NULL */
 } fx_scene_argspec;
+/* 3D commands (meshes, OBJ files) draw at most this many triangles each. */
+#define FX_SCENE_MAX_TRIANGLES 262144
 
 /* The whole table, NULL-terminated (cmd == NULL). */
 extern const fx_scene_argspec fx_scene_argspecs[];
