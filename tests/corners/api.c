@@ -17,6 +17,7 @@
 #include "fixel/font.h"
 #include "fixel/koch.h"
 #include "fixel/line.h"
+#include "fixel/mesh.h"
 #include "fixel/sprite.h"
 #include "fixel/surface.h"
 #include "guard.h"
@@ -121,6 +122,22 @@ static void extremes(const fx_surface *s)
     fx_coastline(&c, xy, 3, &p);
 }
 
+/* One vertex in 2^19 + 1 faces: the normal sums overflowed int32. */
+static void valence(const fx_surface *s)
+{
+    (void)s;
+    enum { NT = (1 << 19) + 1 };
+    static fx_vec3 pos[3], nrm[3];
+    static uint32_t tri[3 * NT];
+    pos[1] = fx_vec3_make(FX16_ONE, 0, 0);
+    pos[2] = fx_vec3_make(0, FX16_ONE, 0);
+    for (int i = 0; i < NT; i++)
+        tri[3 * i] = 0, tri[3 * i + 1] = 1, tri[3 * i + 2] = 2;
+    fx_mesh m = {pos, nrm, tri, 3, NT, 3, NT};
+    fx_mesh_compute_normals(&m);
+    WANT(nrm[0].z > 0 && nrm[0].x == 0 && nrm[0].y == 0);
+}
+
 typedef struct conf {
     const char *name;
     int32_t w, h;
@@ -164,6 +181,7 @@ int main(void)
         run("NULL and count preconditions", nulls, &confs[i]);
         run("extreme coordinates", extremes, &confs[i]);
     }
+    run("normals of a vertex in 2^19 + 1 faces", valence, &confs[0]);
     printf("api: %d passed, %d failed\n", passed, failed);
     return failed != 0;
 }
