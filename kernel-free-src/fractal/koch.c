@@ -156,7 +156,13 @@ static void fract_rec(fract_job *j, pt a, pt b, fx16 sd, int depth)
     }
     sd = fx16_mul(sd, j->factor);
     fx16 t = fx16_mul(fx_gauss16(j->st), sd);
-    pt m = {a.x + dx / 2 - fx_mul64_shift(t, dy, 16), a.y + dy / 2 + fx_mul64_shift(t, dx, 16)};
+    /* Midpoints stay inside the int32 pixel box (clamped): with beta < 1 the
+     * displacements grow each level and a.x + dx / 2 - t * dy overflowed
+     * int64 (issue #26). Endpoints are within +-2^55, so no sum here can. */
+    const int64_t lim = (int64_t)INT32_MAX << F;
+    int64_t ox = FX_MAX(FX_MIN(fx_mul64_shift(t, dy, 16), 2 * lim), -2 * lim);
+    int64_t oy = FX_MAX(FX_MIN(fx_mul64_shift(t, dx, 16), 2 * lim), -2 * lim);
+    pt m = {FX_MAX(FX_MIN(a.x + dx / 2 - ox, lim), -lim), FX_MAX(FX_MIN(a.y + dy / 2 + oy, lim), -lim)};
     fract_rec(j, a, m, sd, depth + 1);
     fract_rec(j, m, b, sd, depth + 1);
 }
