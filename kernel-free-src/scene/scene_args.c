@@ -19,6 +19,7 @@
 #include "fixel/render3d.h"
 #include "fixel/texture.h"
 #include "fixel/curve.h"
+#include "fixel/mesh.h"
 
 #define CO 1048576 /* coordinate bound, 2^20 */
 #define G3 1024    /* 3D geometry bound */
@@ -168,11 +169,11 @@ A(shading, W("flat|gouraud|phong"));
 A(cull, W("none|back|front"));
 A(polymode, W("fill|wire|hidden"));
 A(size3, P3("SIZE"));
-A(sphere, P3("R"), IW("SLICES", 0, 1024), IW("STACKS", 0, 1024));
-A(ellipsoid, P3("RX"), P3("RY"), P3("RZ"), IW("SLICES", 0, 1024), IW("STACKS", 0, 1024));
-A(torus, P3("R"), P3("r"), IW("SIDES", 0, 1024), IW("RINGS", 0, 1024));
-A(cone, P3("R"), P3("H"), IW("SLICES", 0, 1024));
-A(sizen, P3("SIZE"), IW("N", 0, 1024));
+A(sphere, P3("R"), IW("SLICES", 0, FX_MESH_MAX_SEG), IW("STACKS", 0, FX_MESH_MAX_SEG));
+A(ellipsoid, P3("RX"), P3("RY"), P3("RZ"), IW("SLICES", 0, FX_MESH_MAX_SEG), IW("STACKS", 0, FX_MESH_MAX_SEG));
+A(torus, P3("R"), P3("r"), IW("SIDES", 0, FX_MESH_MAX_SEG), IW("RINGS", 0, FX_MESH_MAX_SEG));
+A(cone, P3("R"), P3("H"), IW("SLICES", 0, FX_MESH_MAX_SEG));
+A(sizen, P3("SIZE"), IW("N", 0, FX_MESH_MAX_SEG));
 A(obj, S("FILE"));
 A(shadowplane, FORM("off"), FORM(0), P3("A"), P3("B"), P3("C"), P3("D"), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1),
   C("COLOR"));

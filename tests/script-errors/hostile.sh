@@ -68,8 +68,10 @@ check texstyle-x0 0 "" "$draw" -o "$png" "$out/s.fxs"
 awk 'BEGIN { print "v 0 0 0"; print "v 1 0 0"; print "v 0 1 0"; for (i = 0; i < 524289; i++) print "f 1 2 3" }' > "$out/valence.obj"
 script "size 8 8" "obj \"$out/valence.obj\""
 check obj-valence-2^19 1 "524289 triangles, more than the 262144 one command may draw" "$draw" -o "$png" "$out/s.fxs"
-script "sphere 2 1024 1024"
-check sphere-work-bound 1 "triangles: more than the 262144 one command may draw" "$draw" -o "$png" "$out/s.fxs"
+script "sphere 2 1024 8"
+check sphere-slices 1 "SLICES 1024 out of range, expected 0..256" "$draw" -o "$png" "$out/s.fxs"
+script "size 8 8" "sphere 2 256 256" "torus 2 1 256 256" "teapot 2 64"
+check mesh-max 0 "" "$draw" -o "$png" "$out/s.fxs"
 
 # ---- scripts: unbounded work ----
 script "colorbar 0 0 10 2000000000"
@@ -158,6 +160,19 @@ while [ "$size" -lt 65536 ]; do
     size=$(wc -c < "$out/k3.conf")
 done
 check kiosk-config-65536 0 "" "$kiosk" --headless --data "$out/d1" "$out/k3.conf"
+# a PNG whose tEXt chunk declares 2 GiB (it took 2 GB of RSS per load), and a
+# valid 2x2 RGBA one with alpha 0, through the kiosk's image widget
+printf '\211\120\116\107\015\012\032\012\000\000\000\015\111\110\104\122\000\000\000\002\000\000\000\002\010\006\000\000\000\162\266\015\044\177\377\377\377\164\105\130\164\103\157\155\155\145\156\164\000' > "$out/text2g.png"
+head -c 100 /dev/zero | tr '\0' x >> "$out/text2g.png"
+printf '\211\120\116\107\015\012\032\012\000\000\000\015\111\110\104\122\000\000\000\002\000\000\000\002\010\006\000\000\000\162\266\015\044\000\000\000\021\111\104\101\124\170\234\143\370\317\300\300\000\302\014\060\006\000\051\350\003\375\001\072\143\176\000\000\000\000\111\105\116\104\256\102\140\202' > "$out/alpha0.png"
+for img in text2g alpha0; do
+    printf 'grid 1x1\nsize 64x48\nwidget image cam col=0 row=0 path=%s\n' "$out/$img.png" > "$out/img.conf"
+    check kiosk-png-$img 0 "" "$kiosk" --headless --frames 2 --data "$out/d1" "$out/img.conf"
+done
+mkdir -p "$out/imgout"
+printf "grid 1x1\nsize 64x48\nwidget image cam col=0 row=0 path=%s\n" "$out/fifo" > "$out/img.conf"
+check kiosk-png-fifo 0 "" "$kiosk" --headless --frames 1 --data "$out/d1" --out "$out/imgout" "$out/img.conf"
+
 # Ctrl-C (SIGINT) and timeout (SIGTERM) must stop a headless run on an endless source
 for sig in INT TERM; do
     timeout -k 2 -s $sig 0.5 "$kiosk" --headless --frames 1000000000 --data /dev/zero "$conf" > /dev/null 2>&1; rc=$?

@@ -25,6 +25,7 @@
 #include "fixel/circle.h"
 #include "fixel/colormap.h"
 #include "fixel/draw.h"
+#include "fixel/error.h"
 #include "fixel/fill.h"
 #include "fixel/fixed.h"
 #include "fixel/font.h"
@@ -56,6 +57,7 @@ enum { IMG_NONE, IMG_OK, IMG_MISSING, IMG_BAD, IMG_HUGE };
 typedef struct kimg {
     uint8_t *rgb;    /* decoded R, G, B bytes, w*h*3 */
     int32_t w, h;
+    int64_t file_size; /* of the file being loaded: PPM data must fit in it */
     int state, tried;
     char path[KIOSK_PATH_MAX]; /* what the last attempt read */
     uint32_t gen;
@@ -213,6 +215,7 @@ static int load_ppm(FILE *f, kimg *m)
         return IMG_BAD;
     if (!dims_ok(w, h)) return IMG_HUGE;
     size_t bytes = (size_t)w * (size_t)h * 3;
+    if ((int64_t)bytes > m->file_size) return IMG_BAD; /* truncated: refused before allocating */
     if (!(m->rgb = malloc(bytes))) return IMG_HUGE;
     if (fread(m->rgb, 1, bytes, f) != bytes) return IMG_BAD;
     m->w = w;
@@ -223,18 +226,12 @@ static int load_ppm(FILE *f, kimg *m)
 static int load_png(FILE *f, kimg *m)
 {
 #ifndef FX_NO_PNG
-    png_image img;
-    memset(&img, 0, sizeof img);
-    img.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_stdio(&img, f)) return IMG_BAD;
-    /* the header is read, no pixel memory taken yet: refuse absurd sizes here */
-    if (!dims_ok(img.width, img.height)) { png_image_free(&img); return IMG_HUGE; }
-    img.format = PNG_FORMAT_RGB;
-    if (!(m->rgb = malloc(PNG_IMAGE_SIZE(img)))) { png_image_free(&img); return IMG_HUGE; }
-    if (!png_image_finish_read(&img, NULL, m->rgb, 0, NULL)) { png_image_free(&img); return IMG_BAD; }
-    m->w = (int32_t)img.width;
-    m->h = (int32_t)img.height;
-    return IMG_OK;
+    /* libpng's own limits (memfb.c): ancillary chunks skipped unread (a tEXt
+     * chunk declaring 2 GiB took 2 GB per load), sizes refused before any
+     * pixel memory, alpha dropped as docs/kiosk.md says (it was composited
+     * onto black), issue #26 */
+    int r = fx_read_png_rgb_stream(f, IMG_MAX_DIM, IMG_MAX_PIXELS, &m->rgb, &m->w, &m->h);
+    return r == 0 ? IMG_OK : r == -FX_EFBIG ? IMG_HUGE : IMG_BAD;
 #else
     (void)f;
     (void)m;
@@ -244,8 +241,15 @@ static int load_png(FILE *f, kimg *m)
 
 static int load_image(const char *path, kimg *m)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) return IMG_MISSING;
+    /* never blocks on open (a FIFO named as the image), regular files only */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0) return IMG_MISSING;
+    struct stat st;
+    if (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode)) { close(fd); return IMG_BAD; }
+    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    FILE *f = fdopen(fd, "rb");
+    if (!f) { close(fd); return IMG_MISSING; }
+    m->file_size = st.st_size;
     unsigned char magic[8];
     size_t n = fread(magic, 1, sizeof magic, f);
     int r = IMG_BAD;
