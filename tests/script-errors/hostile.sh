@@ -149,7 +149,7 @@ check kiosk-number-bound 0 "" "$kiosk" --headless --frames 2 --data "$out/d1" "$
 printf 't=0\n@frame 1000\nt=80000000000000\n@frame 1000\nt=999999999999999\n@frame 1000\n' > "$out/d2"
 check kiosk-spark-counter 0 "" "$kiosk" --headless --frames 3 --data "$out/d2" "$conf"
 printf 'grid 1x1\nwidget bar t col=0 row=0 min=-9223372036854775 max=86400000\n' > "$out/k2.conf"
-check kiosk-config-range 1 "bad widget value" "$kiosk" --headless --data "$out/d1" "$out/k2.conf"
+check kiosk-config-range 1 "min=-9223372036854775: expected -1000000000000000..1000000000000000" "$kiosk" --headless --data "$out/d1" "$out/k2.conf"
 check kiosk-data-dir 1 "is a directory" "$kiosk" --headless --data "$out" "$conf"
 check kiosk-config-dir 1 "is a directory" "$kiosk" --headless --data "$out/d1" "$out"
 cp "$conf" "$out/k3.conf"

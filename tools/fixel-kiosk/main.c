@@ -789,6 +789,7 @@ static void usage(FILE *f)
             "  --data FILE|-     data source: a file (followed as it grows), a named pipe, or - for\n"
             "                    stdin (default -)\n"
             "  --headless        draw into memory instead of a display (tests, previews)\n"
+            "  --keys            list every directive, widget key and data value with its range\n"
             "  --frames N        headless: frames to draw (default 1); each frame reads the data up\n"
             "                    to the next \"@frame [MS]\" line, then the clock advances MS (1000)\n"
             "  --out DIR         headless: write DIR/frame-NNNN.png for every frame\n"
@@ -813,6 +814,30 @@ int main(int argc, char **argv)
         const char *a = argv[i];
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { usage(stdout); return 0; }
         else if (!strcmp(a, "--headless")) k->headless = 1;
+        else if (!strcmp(a, "--keys")) {
+            /* the one table (kiosk_keys in kiosk_parse.c); fixel-kiosk(1) is generated from it */
+            static const char *const types[] = {"i", "integer", "p", "AxB", "m", "number", "c", "colour",
+                                                "t", "text", "f", "path", "w", "word"};
+            for (const kiosk_key *q = kiosk_keys; q->name; q++) {
+                const char *ty = "?";
+                for (int j = 0; j < 14; j += 2)
+                    if (types[j][0] == q->type) ty = types[j + 1];
+                printf("%-9s %-9s %-7s ", q->scope, q->name, ty);
+                if (q->type == 'i' || q->type == 'p')
+                    printf("%lld..%lld", (long long)q->min, (long long)q->max);
+                else if (q->type == 'm') {
+                    char lo[40], hi[40];
+                    kiosk_format_milli(lo, sizeof lo, q->min, 3);
+                    kiosk_format_milli(hi, sizeof hi, q->max, 3);
+                    printf("%s..%s", lo, hi);
+                } else if (q->type == 't' || q->type == 'f')
+                    printf(q->max ? "at most %lld bytes" : "-", (long long)q->max);
+                else
+                    printf("-");
+                printf("  %s%s\n", q->help, q->widgets && q->widgets != 0xFFu ? " (heat/image only)" : "");
+            }
+            return 0;
+        }
         else if (!strcmp(a, "--last")) last_only = 1;
         else if (!strcmp(a, "--full")) k->always_full = 1;
         else if (!strcmp(a, "--data") && i + 1 < argc) data = argv[++i];
