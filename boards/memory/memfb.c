@@ -137,6 +137,28 @@ int fx_write_ppm(const char *path, const fx_surface *s)
     return finish_tmp(f, tmp, final, ok);
 }
 
+/* Opens an input without blocking (a FIFO must not hang a reader), for
+ * regular files only; *size gets its size. NULL with errno set. */
+static FILE *open_regular(const char *path, off_t *size)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0)
+        return NULL;
+    struct stat st;
+    if (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode)) {
+        int e = S_ISDIR(st.st_mode) ? EISDIR : EINVAL;
+        close(fd);
+        errno = e;
+        return NULL;
+    }
+    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    *size = st.st_size;
+    FILE *f = fdopen(fd, "rb");
+    if (!f)
+        close(fd);
+    return f;
+}
+
 #ifndef FX_NO_PNG
 static int write_png_stream(FILE *f, int32_t w, int32_t h, const fx_surface *s, const uint8_t *rgb)
 {
@@ -191,28 +213,6 @@ int fx_write_png_rgb(const char *path, const uint8_t *rgb, int32_t w, int32_t h)
     if (!f)
         return errno ? -errno : -FX_EINVAL;
     return finish_tmp(f, tmp, final, write_png_stream(f, w, h, NULL, rgb));
-}
-
-/* Opens an input without blocking (a FIFO must not hang a reader), for
- * regular files only; *size gets its size. NULL with errno set. */
-static FILE *open_regular(const char *path, off_t *size)
-{
-    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-    if (fd < 0)
-        return NULL;
-    struct stat st;
-    if (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode)) {
-        int e = S_ISDIR(st.st_mode) ? EISDIR : EINVAL;
-        close(fd);
-        errno = e;
-        return NULL;
-    }
-    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-    *size = st.st_size;
-    FILE *f = fdopen(fd, "rb");
-    if (!f)
-        close(fd);
-    return f;
 }
 
 /* libpng's own limits (issue #26): a 141-byte PNG whose tEXt chunk declared
@@ -353,12 +353,15 @@ int fx_read_png_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h)
 
 int fx_read_ppm_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h)
 {
-    FILE *f = fopen(path, "rb");
+    off_t fsize = 0;
+    errno = 0;
+    FILE *f = open_regular(path, &fsize); /* no blocking on a FIFO */
     if (!f)
         return errno ? -errno : -FX_ENOENT;
     int W, H, maxval, r = -FX_EBADMSG;
     if (fscanf(f, "P6 %d %d %d", &W, &H, &maxval) == 3 && maxval == 255 && W > 0 && H > 0 &&
-        W <= 65536 && H <= 65536 && fgetc(f) != EOF) {
+        W <= 65536 && H <= 65536 && fgetc(f) != EOF &&
+        (uint64_t)W * (uint64_t)H * 3 <= (uint64_t)fsize) { /* the size capped by the file's before allocating */
         size_t bytes = (size_t)W * (size_t)H * 3;
         uint8_t *buf = malloc(bytes);
         if (!buf) {
