@@ -4,6 +4,9 @@
 #include "fixel/error.h"
 
 #include <errno.h>
+#include <setjmp.h>
+#include <fcntl.h>
+#include <sys/stat.h>
 #ifndef FX_NO_PNG
 #include <png.h>
 #endif
@@ -40,29 +43,88 @@ void fx_memfb_destroy(fx_memfb *fb)
 }
 
 /* Images are written to a temporary name and renamed into place, so a failed
- * or interrupted write never leaves a partial file under the real name. */
-static FILE *open_tmp(const char *path, char *tmp, size_t n)
+ * or interrupted write never leaves a partial file under the real name.
+ * Only a regular file (or nothing) is ever replaced (issue #26): a symlink
+ * is followed and its target replaced; a device, FIFO or socket at the path
+ * is written in place (opened without blocking, never created or renamed
+ * over: `-o /dev/full` fails with ENOSPC and the device stays). tmp[0] == 0
+ * marks that direct mode; final gets the name to rename onto. */
+static FILE *open_tmp(const char *path, char *tmp, size_t n, char *final, size_t nfinal)
 {
-    if ((size_t)snprintf(tmp, n, "%s.tmp%ld", path, (long)getpid()) >= n)
+    struct stat st;
+    errno = 0;
+    tmp[0] = 0;
+    if (strlen(path) >= nfinal) {
+        errno = ENAMETOOLONG;
         return NULL;
+    }
+    strcpy(final, path);
+    if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) {
+        char *real = realpath(path, NULL);
+        if (real && strlen(real) < nfinal) {
+            strcpy(final, real);
+        } else { /* a dangling link: its target, relative to the link's folder */
+            char t[4096];
+            ssize_t k = readlink(path, t, sizeof t - 1);
+            const char *slash = strrchr(path, '/');
+            size_t dir = slash ? (size_t)(slash - path) + 1 : 0;
+            if (k > 0 && (size_t)k + dir < nfinal) {
+                t[k] = 0;
+                if (t[0] == '/')
+                    dir = 0;
+                memcpy(final, path, dir);
+                strcpy(final + dir, t);
+            }
+        }
+        free(real);
+    }
+    if (stat(final, &st) == 0 && !S_ISREG(st.st_mode)) {
+        if (S_ISDIR(st.st_mode)) {
+            errno = EISDIR;
+            return NULL;
+        }
+        int fd = open(final, O_WRONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+        if (fd < 0)
+            return NULL;
+        fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+        FILE *f = fdopen(fd, "wb");
+        if (!f)
+            close(fd);
+        return f;
+    }
+    if ((size_t)snprintf(tmp, n, "%s.tmp%ld", final, (long)getpid()) >= n) {
+        tmp[0] = 0;
+        errno = ENAMETOOLONG;
+        return NULL;
+    }
     return fopen(tmp, "wb");
 }
 
 static int finish_tmp(FILE *f, const char *tmp, const char *path, int ok)
 {
-    if (fclose(f) != 0)
+    errno = 0;
+    if (fflush(f) != 0)
         ok = 0;
+    int e = errno;
+    if (fclose(f) != 0) {
+        ok = 0;
+        if (!e)
+            e = errno;
+    }
+    if (!tmp[0]) /* written in place */
+        return ok ? 0 : -(e ? e : FX_EIO);
     if (ok && rename(tmp, path) == 0)
         return 0;
-    int e = errno ? errno : FX_EIO;
+    if (!e)
+        e = errno ? errno : FX_EIO;
     remove(tmp);
     return -e;
 }
 
 int fx_write_ppm(const char *path, const fx_surface *s)
 {
-    char tmp[4096];
-    FILE *f = open_tmp(path, tmp, sizeof tmp);
+    char tmp[4096], final[4096];
+    FILE *f = open_tmp(path, tmp, sizeof tmp, final, sizeof final);
     if (!f)
         return errno ? -errno : -FX_EINVAL;
     uint8_t *row = malloc((size_t)s->w * 3);
@@ -72,7 +134,29 @@ int fx_write_ppm(const char *path, const fx_surface *s)
         ok = fwrite(row, 3, (size_t)s->w, f) == (size_t)s->w;
     }
     free(row);
-    return finish_tmp(f, tmp, path, ok);
+    return finish_tmp(f, tmp, final, ok);
+}
+
+/* Opens an input without blocking (a FIFO must not hang a reader), for
+ * regular files only; *size gets its size. NULL with errno set. */
+static FILE *open_regular(const char *path, off_t *size)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0)
+        return NULL;
+    struct stat st;
+    if (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode)) {
+        int e = S_ISDIR(st.st_mode) ? EISDIR : EINVAL;
+        close(fd);
+        errno = e;
+        return NULL;
+    }
+    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    *size = st.st_size;
+    FILE *f = fdopen(fd, "rb");
+    if (!f)
+        close(fd);
+    return f;
 }
 
 #ifndef FX_NO_PNG
@@ -115,44 +199,120 @@ static int write_png_stream(FILE *f, int32_t w, int32_t h, const fx_surface *s, 
 
 int fx_write_png(const char *path, const fx_surface *s)
 {
-    char tmp[4096];
-    FILE *f = open_tmp(path, tmp, sizeof tmp);
+    char tmp[4096], final[4096];
+    FILE *f = open_tmp(path, tmp, sizeof tmp, final, sizeof final);
     if (!f)
         return errno ? -errno : -FX_EINVAL;
-    return finish_tmp(f, tmp, path, write_png_stream(f, s->w, s->h, s, NULL));
+    return finish_tmp(f, tmp, final, write_png_stream(f, s->w, s->h, s, NULL));
 }
 
 int fx_write_png_rgb(const char *path, const uint8_t *rgb, int32_t w, int32_t h)
 {
-    char tmp[4096];
-    FILE *f = open_tmp(path, tmp, sizeof tmp);
+    char tmp[4096], final[4096];
+    FILE *f = open_tmp(path, tmp, sizeof tmp, final, sizeof final);
     if (!f)
         return errno ? -errno : -FX_EINVAL;
-    return finish_tmp(f, tmp, path, write_png_stream(f, w, h, NULL, rgb));
+    return finish_tmp(f, tmp, final, write_png_stream(f, w, h, NULL, rgb));
+}
+
+/* libpng's own limits (issue #26): a 141-byte PNG whose tEXt chunk declared
+ * 2 GiB took 2 GB per load. Ancillary chunks are skipped unread, chunk
+ * allocations are capped, and so are the dimensions before the pixel
+ * buffer is allocated. Alpha is dropped (the colour kept, as docs/kiosk.md
+ * says), not composited onto black. */
+#define PNG_MAX_SIDE 16384u
+#define PNG_MAX_PIXELS ((size_t)1 << 26)
+
+static void png_quiet(png_structp png, png_const_charp msg)
+{
+    (void)png;
+    (void)msg;
+}
+
+static void png_fail(png_structp png, png_const_charp msg)
+{
+    (void)msg; /* the caller reports the error code; no stderr noise */
+    png_longjmp(png, 1);
 }
 
 int fx_read_png_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h)
 {
-    png_image img;
-    memset(&img, 0, sizeof img);
-    img.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&img, path))
-        return access(path, R_OK) ? -FX_ENOENT : -FX_EBADMSG;
-    img.format = PNG_FORMAT_RGB;
-    size_t bytes = PNG_IMAGE_SIZE(img);
-    uint8_t *buf = malloc(bytes);
-    if (!buf) {
-        png_image_free(&img);
+    off_t fsize;
+    FILE *f = open_regular(path, &fsize);
+    if (!f)
+        return errno == ENOENT ? -FX_ENOENT : errno == EISDIR ? -FX_EISDIR : errno == EACCES ? -FX_EACCES
+                                                                                               : -FX_EBADMSG;
+    int r = fx_read_png_rgb_stream(f, PNG_MAX_SIDE, PNG_MAX_PIXELS, rgb, w, h);
+    fclose(f);
+    return r;
+}
+
+int fx_read_png_rgb_stream(FILE *f, uint32_t max_side, size_t max_pixels, uint8_t **rgb, int32_t *w, int32_t *h)
+{
+    if (max_side > PNG_MAX_SIDE)
+        max_side = PNG_MAX_SIDE;
+    if (max_pixels > PNG_MAX_PIXELS)
+        max_pixels = PNG_MAX_PIXELS;
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, NULL, png_fail, png_quiet);
+    png_infop info = png ? png_create_info_struct(png) : NULL;
+    uint8_t *volatile buf = NULL;
+    png_bytep *volatile rows = NULL;
+    if (!info) {
+        png_destroy_read_struct(&png, NULL, NULL);
         return -FX_ENOMEM;
     }
-    if (!png_image_finish_read(&img, NULL, buf, 0, NULL)) {
+    volatile int huge = 0;
+    if (setjmp(png_jmpbuf(png))) {
         free(buf);
-        png_image_free(&img);
-        return -FX_EBADMSG;
+        free(rows);
+        png_destroy_read_struct(&png, &info, NULL);
+        return huge ? -FX_EFBIG : -FX_EBADMSG;
     }
+    png_set_user_limits(png, max_side, max_side);
+    png_set_chunk_cache_max(png, 64);
+    png_set_chunk_malloc_max(png, (png_alloc_size_t)8 << 20);
+    /* every ancillary chunk, known or not, is skipped without being read */
+    png_set_keep_unknown_chunks(png, PNG_HANDLE_CHUNK_NEVER, NULL, 0);
+    static const png_byte skip[] = "bKGD\0cHRM\0eXIf\0gAMA\0hIST\0iCCP\0iTXt\0oFFs\0pCAL\0pHYs\0sBIT\0"
+                                   "sCAL\0sPLT\0sRGB\0sTER\0tEXt\0tIME\0zTXt\0";
+    png_set_keep_unknown_chunks(png, PNG_HANDLE_CHUNK_NEVER, skip, (int)(sizeof skip / 5));
+    png_init_io(png, f);
+    png_read_info(png, info);
+    png_uint_32 W = png_get_image_width(png, info), H = png_get_image_height(png, info);
+    if (!W || !H || W > max_side || H > max_side || (size_t)W * H > max_pixels) {
+        huge = 1;
+        png_error(png, "too large");
+    }
+    int ct = png_get_color_type(png, info), depth = png_get_bit_depth(png, info);
+    if (depth == 16)
+        png_set_strip_16(png);
+    if (ct == PNG_COLOR_TYPE_PALETTE)
+        png_set_palette_to_rgb(png);
+    if (ct == PNG_COLOR_TYPE_GRAY && depth < 8)
+        png_set_expand_gray_1_2_4_to_8(png);
+    if (ct == PNG_COLOR_TYPE_GRAY || ct == PNG_COLOR_TYPE_GRAY_ALPHA)
+        png_set_gray_to_rgb(png);
+    if (ct & PNG_COLOR_MASK_ALPHA)
+        png_set_strip_alpha(png);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    if (png_get_rowbytes(png, info) != (size_t)W * 3)
+        png_error(png, "unexpected row size");
+    buf = malloc((size_t)W * H * 3);
+    rows = malloc(sizeof(png_bytep) * H);
+    if (!buf || !rows) {
+        huge = 1;
+        png_error(png, "out of memory");
+    }
+    for (png_uint_32 y = 0; y < H; y++)
+        rows[y] = buf + (size_t)y * W * 3;
+    png_read_image(png, rows);
+    png_read_end(png, NULL);
+    free(rows);
+    png_destroy_read_struct(&png, &info, NULL);
     *rgb = buf;
-    *w = (int32_t)img.width;
-    *h = (int32_t)img.height;
+    *w = (int32_t)W;
+    *h = (int32_t)H;
     return 0;
 }
 
@@ -171,6 +331,16 @@ int fx_write_png_rgb(const char *path, const uint8_t *rgb, int32_t w, int32_t h)
     (void)h;
     return -FX_ENOTSUP;
 }
+int fx_read_png_rgb_stream(FILE *f, uint32_t max_side, size_t max_pixels, uint8_t **rgb, int32_t *w, int32_t *h)
+{
+    (void)f;
+    (void)max_side;
+    (void)max_pixels;
+    (void)rgb;
+    (void)w;
+    (void)h;
+    return -FX_ENOTSUP;
+}
 int fx_read_png_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h)
 {
     (void)path;
@@ -183,12 +353,15 @@ int fx_read_png_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h)
 
 int fx_read_ppm_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h)
 {
-    FILE *f = fopen(path, "rb");
+    off_t fsize = 0;
+    errno = 0;
+    FILE *f = open_regular(path, &fsize); /* no blocking on a FIFO */
     if (!f)
         return errno ? -errno : -FX_ENOENT;
     int W, H, maxval, r = -FX_EBADMSG;
     if (fscanf(f, "P6 %d %d %d", &W, &H, &maxval) == 3 && maxval == 255 && W > 0 && H > 0 &&
-        W <= 65536 && H <= 65536 && fgetc(f) != EOF) {
+        W <= 65536 && H <= 65536 && fgetc(f) != EOF &&
+        (uint64_t)W * (uint64_t)H * 3 <= (uint64_t)fsize) { /* the size capped by the file's before allocating */
         size_t bytes = (size_t)W * (size_t)H * 3;
         uint8_t *buf = malloc(bytes);
         if (!buf) {

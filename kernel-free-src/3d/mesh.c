@@ -516,13 +516,14 @@ void fx_mesh_compute_normals(fx_mesh *m)
         if (cross_unit(fx_vec3_sub(m->pos[ix[1]], m->pos[ix[0]]),
                        fx_vec3_sub(m->pos[ix[2]], m->pos[ix[0]]), &n) < 0)
             continue;
-        /* Unit face normals / 16 add up without overflow for any valence
-         * below 2^15. */
+        /* Unit face normals / 16 add up exactly for any valence below 2^15;
+         * beyond (an OBJ may reuse one vertex in 2^19 faces) the sums
+         * saturate instead of overflowing. */
         for (int k = 0; k < 3; k++) {
             fx_vec3 *a = &m->nrm[ix[k]];
-            a->x += n.x >> 4;
-            a->y += n.y >> 4;
-            a->z += n.z >> 4;
+            a->x = fx_sat32((int64_t)a->x + (n.x >> 4));
+            a->y = fx_sat32((int64_t)a->y + (n.y >> 4));
+            a->z = fx_sat32((int64_t)a->z + (n.z >> 4));
         }
     }
     for (int32_t i = 0; i < m->nverts; i++)
@@ -544,7 +545,7 @@ static int obj_fail(objp *o, const char *fmt, ...)
         va_list ap;
         va_start(ap, fmt);
         o->err->line = o->line;
-        int n = fx_fmt(o->err->msg, sizeof o->err->msg, "line %d: ", o->line);
+        int n = o->line > 0 ? fx_fmt(o->err->msg, sizeof o->err->msg, "line %d: ", o->line) : 0;
         if (n < 0 || (size_t)n >= sizeof o->err->msg)
             n = 0;
         fx_vfmt(o->err->msg + n, sizeof o->err->msg - (size_t)n, fmt, ap);
@@ -789,8 +790,10 @@ static int obj_run(const char *text, size_t len, fx_mesh *m, int32_t *nv_out, in
             return obj_fail(&o, "unknown statement '%.*s'", n > 20 ? 20 : n, w);
         }
     }
-    if (nv == 0 || ntri == 0)
-        return obj_fail(&o, "no %s", nv == 0 ? "vertices" : "faces");
+    if (nv == 0 || ntri == 0) {
+        o.line = 0; /* a property of the whole file, not of a line ("line 0: no vertices") */
+        return obj_fail(&o, "no %s in the file%s", nv == 0 ? "vertices" : "faces", len == 0 ? " (it is empty)" : "");
+    }
     *nv_out = nv;
     *nt_out = ntri;
     if (m) {

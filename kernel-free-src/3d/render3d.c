@@ -246,7 +246,8 @@ int fx3d_init(fx3d *r, const fx_surface *s, fx_mat4 *model_stack, int model_cap,
 
 void fx3d_viewport(fx3d *r, int32_t x, int32_t y, int32_t w, int32_t h)
 {
-    fx_rect v = {x, y, x + (w > 0 ? w : 1), y + (h > 0 ? h : 1)};
+    /* the far edge saturates: x + w overflowed for x near INT32_MAX (issue #26) */
+    fx_rect v = {x, y, fx_sat32((int64_t)x + (w > 0 ? w : 1)), fx_sat32((int64_t)y + (h > 0 ? h : 1))};
     r->viewport = v;
 }
 

@@ -7,7 +7,11 @@
 
 void fx_ctx_init(fx_ctx *c, const fx_surface *s)
 {
+    if (!c)
+        return;
     fx_memset(c, 0, sizeof *c);
+    if (!s)
+        return; /* an empty context: no surface, an empty clip, draws nothing */
     c->surf = *s;
     c->clip = fx_surface_rect(s);
     fx_ctx_set_color(c, 0xFFFFFFFFu);

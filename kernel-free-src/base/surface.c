@@ -43,17 +43,20 @@ fx_format fx_format_from_name(const char *name)
     return FX_FMT_COUNT;
 }
 
+/* Saturates at INT32_MAX: 2^30 XRGB8888 pixels wrapped to 0 (issue #26). */
 int32_t fx_format_min_stride(fx_format f, int32_t w)
 {
-    return (int32_t)(((int64_t)w * formats[f].bits_per_pixel + 7) / 8);
+    int64_t b = ((int64_t)w * formats[f].bits_per_pixel + 7) / 8;
+    return b > INT32_MAX ? INT32_MAX : (int32_t)b;
 }
 
 int fx_surface_init(fx_surface *s, void *pixels, int32_t w, int32_t h, int32_t stride,
                     fx_format format)
 {
-    if ((unsigned)format >= FX_FMT_COUNT || !pixels || w <= 0 || h <= 0)
+    if (!s || (unsigned)format >= FX_FMT_COUNT || !pixels || w <= 0 || h <= 0)
         return -FX_EINVAL;
-    int64_t need = fx_format_min_stride(format, w);
+    /* the whole row in 64 bits: a width of 2^30 with stride 4 was accepted */
+    int64_t need = ((int64_t)w * formats[format].bits_per_pixel + 7) / 8;
     int64_t mag = stride < 0 ? -(int64_t)stride : stride;
     unsigned bpp = formats[format].bits_per_pixel;
     unsigned align = bpp == 32 ? 4 : bpp == 16 ? 2 : 1;
@@ -331,6 +334,8 @@ void fx_surface_clear(const fx_surface *s, fx_color c) { fx_surface_fill(s, fx_s
 
 void fx_blit(const fx_surface *dst, int32_t dx, int32_t dy, const fx_surface *src)
 {
+    if (!dst || !src)
+        return;
     fx_rect r = {dx, dy, dx, dy};
     r.x1 = (int32_t)FX_MIN((int64_t)dx + src->w, INT32_MAX);
     r.y1 = (int32_t)FX_MIN((int64_t)dy + src->h, INT32_MAX);

@@ -578,6 +578,11 @@ int fx_fill_path(const fx_ctx *c, const int32_t *xy, const int32_t *counts, int3
     if (ncontours < 0 || (ncontours > 0 && (!counts || !xy)) || (frac_bits != 0 && frac_bits != 8) ||
         max_edges < 0 || (max_edges > 0 && !edges))
         return -FX_EINVAL;
+    /* 2 * count indexes the coordinates: a count past INT32_MAX / 2 (no
+     * array that large can exist) overflowed before any other check. */
+    for (int32_t k = 0; k < ncontours; k++)
+        if (counts[k] < 0 || counts[k] > INT32_MAX / 2)
+            return -FX_EINVAL;
     fx_rect clip = c->clip;
     if (fx_rect_empty(clip))
         return 0;
@@ -748,7 +753,7 @@ int fx_poly_fill16(const fx_ctx *c, const fx_pt16 *pts, const int *starts, int n
 
 int fx_fill_poly(const fx_ctx *c, const int32_t *xy, int32_t n, fx_fill_rule rule)
 {
-    if (n < 0 || (n > 0 && !xy))
+    if (!c || n < 0 || n > INT32_MAX / 2 || (n > 0 && !xy))
         return -FX_EINVAL;
     if (n == 3 && (rule == FX_FILL_EVENODD || rule == FX_FILL_NONZERO)) {
         fx_fill_tri(c, xy[0], xy[1], xy[2], xy[3], xy[4], xy[5]);
@@ -776,6 +781,7 @@ void fx_polygon(const fx_ctx *c, const int32_t *xy, int32_t n)
         fx_plot(c, xy[0], xy[1]);
         return;
     }
+    int drawn = 0;
     for (int32_t i = 0; i < n; i++) {
         int32_t j = i + 1 == n ? 0 : i + 1;
         int32_t x0 = xy[2 * i], y0 = xy[2 * i + 1], x1 = xy[2 * j], y1 = xy[2 * j + 1];
@@ -784,7 +790,10 @@ void fx_polygon(const fx_ctx *c, const int32_t *xy, int32_t n)
         fx_bres b;
         fx_bres_init(&b, x0, y0, x1, y1);
         fx_line_steps(c, x0, y0, x1, y1, 0, b.major - 1);
+        drawn = 1;
     }
+    if (!drawn) /* every vertex the same point: it is still lit once (issue #26) */
+        fx_plot(c, xy[0], xy[1]);
 }
 
 /* ---- triangles ---- */
@@ -1046,6 +1055,8 @@ void fx_fill_tri_gouraud8(const fx_ctx *c, const fx8 *xy, const fx_color *col)
 
 void fx_fill_tri_gouraud(const fx_ctx *c, const int32_t *xy, const fx_color *col)
 {
+    if (!c || !xy || !col)
+        return;
     fx8 w[6];
     for (int i = 0; i < 6; i++) {
         if (xy[i] >= INT_TRI_LIMIT || xy[i] <= -INT_TRI_LIMIT)
@@ -1057,6 +1068,8 @@ void fx_fill_tri_gouraud(const fx_ctx *c, const int32_t *xy, const fx_color *col
 
 void fx_fill_poly_gouraud(const fx_ctx *c, const int32_t *xy, const fx_color *col, int32_t n)
 {
+    if (!c || !xy || !col || n > INT32_MAX / 2)
+        return;
     for (int32_t i = 1; i + 1 < n; i++) {
         int32_t v[6] = {xy[0], xy[1], xy[2 * i], xy[2 * i + 1], xy[2 * i + 2], xy[2 * i + 3]};
         fx_color cc[3] = {col[0], col[i], col[i + 1]};

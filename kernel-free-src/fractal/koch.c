@@ -106,14 +106,21 @@ static void fract_rec(fract_job *j, pt a, pt b, fx16 sd, int depth)
     int64_t lx = dx >> (F - 8), ly = dy >> (F - 8); /* 24.8 */
     const int64_t big = (int64_t)1 << 30; /* longer is never a leaf; squares fit below */
     int near = lx < big && lx > -big && ly < big && ly > -big;
-    if (depth >= 40 || (near && lx * lx + ly * ly < j->min2 * 65536)) {
+    /* depth 16: at most 2^16 pieces even when beta < 1 makes them grow (issue #26) */
+    if (depth >= 16 || (near && lx * lx + ly * ly < j->min2 * 65536)) {
         seg(j->c, a, b);
         j->segs++;
         return;
     }
     sd = fx16_mul(sd, j->factor);
     fx16 t = fx16_mul(fx_gauss16(j->st), sd);
-    pt m = {a.x + dx / 2 - fx_mul64_shift(t, dy, 16), a.y + dy / 2 + fx_mul64_shift(t, dx, 16)};
+    /* Midpoints stay inside the int32 pixel box (clamped): with beta < 1 the
+     * displacements grow each level and a.x + dx / 2 - t * dy overflowed
+     * int64 (issue #26). Endpoints are within +-2^55, so no sum here can. */
+    const int64_t lim = (int64_t)INT32_MAX << F;
+    int64_t ox = FX_MAX(FX_MIN(fx_mul64_shift(t, dy, 16), 2 * lim), -2 * lim);
+    int64_t oy = FX_MAX(FX_MIN(fx_mul64_shift(t, dx, 16), 2 * lim), -2 * lim);
+    pt m = {FX_MAX(FX_MIN(a.x + dx / 2 - ox, lim), -lim), FX_MAX(FX_MIN(a.y + dy / 2 + oy, lim), -lim)};
     fract_rec(j, a, m, sd, depth + 1);
     fract_rec(j, m, b, sd, depth + 1);
 }
@@ -122,11 +129,12 @@ uint32_t fx_fractline(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32
                       const fx_fract_params *p, uint32_t *state)
 {
     /* The random draws cannot depend on the clip, so the whole line is
-     * always walked; pieces of at least 1/2^18 of |dx| + |dy| keep that walk
-     * near 2^19 segments however long the line is. */
+     * always walked; pieces of at least 1/2^15 of |dx| + |dy| keep that walk
+     * near 2^16 segments however long the line is (2^18 took over a second
+     * per coastline side, issue #26). */
     int64_t ddx = (int64_t)x1 - x0, ddy = (int64_t)y1 - y0;
     int64_t span = (ddx < 0 ? -ddx : ddx) + (ddy < 0 ? -ddy : ddy);
-    int64_t ml = FX_MAX((int64_t)FX_MAX(p->min_len, 1), span >> 18);
+    int64_t ml = FX_MAX((int64_t)FX_MAX(p->min_len, 1), span >> 15);
     fract_job j = {c, fx16_exp2((FX16_ONE - p->beta) / 2), ml * ml, state, 0};
     pt a = {(int64_t)x0 * ONE, (int64_t)y0 * ONE}, b = {(int64_t)x1 * ONE, (int64_t)y1 * ONE};
     fract_rec(&j, a, b, p->sd, 0);
@@ -135,6 +143,8 @@ uint32_t fx_fractline(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32
 
 uint32_t fx_coastline(const fx_ctx *c, const int32_t *xy, int n, const fx_fract_params *p)
 {
+    if (!c || !xy || !p || n < 1 || n > INT32_MAX / 2)
+        return 0;
     uint32_t st = p->seed, segs = 0;
     for (int i = 0; i < n; i++) {
         int k = (i + 1) % n;

@@ -114,7 +114,7 @@ static int64_t c16(int32_t v) { return (int64_t)v * 65536 + 32768; }
 
 int fx_bezier(const fx_ctx *c, const int32_t *xy, int n, uint32_t tol)
 {
-    if (n < 2 || n > FX_BEZIER_MAX_POINTS)
+    if (!c || !xy || n < 2 || n > FX_BEZIER_MAX_POINTS)
         return -FX_EINVAL;
     bez b;
     for (int i = 0; i < n; i++) {

@@ -82,6 +82,8 @@ fx_rect fx_sprite_phys_rect(const fx_surface *dst, int rotation, const fx_sprite
 int fx_sprite_draw(const fx_surface *dst, int rotation, const fx_sprite *s, int32_t x, int32_t y,
                    fx_sprite_save *sv)
 {
+    if (!dst || !sv)
+        return -FX_EINVAL;
     sv->r.x0 = sv->r.y0 = sv->r.x1 = sv->r.y1 = 0;
     if (fx_sprite_check(s) < 0 || !rotation_ok(rotation))
         return -FX_EINVAL;

@@ -600,6 +600,8 @@ void fx_stroke_end(fx_stroker *s)
 
 void fx_polyline(const fx_ctx *c, const int32_t *xy, int n)
 {
+    if (!c || !xy || n < 1 || n > INT32_MAX / 2)
+        return;
     fx_stroker s;
     fx_stroke_begin(&s, c);
     for (int i = 0; i < n; i++)

@@ -80,10 +80,29 @@ int fx_scene_surface(fx_scene *sc)
 int fx_scene_error(fx_scene *sc, const char *fmt, ...)
 {
     if (!sc->err[0]) {
+        char raw[sizeof sc->err];
         va_list ap;
         va_start(ap, fmt);
-        fx_vfmt(sc->err, sizeof sc->err, fmt, ap);
+        fx_vfmt(raw, sizeof raw, fmt, ap);
         va_end(ap);
+        /* Script text quoted in a message must not split or colour the
+         * SCRIPT:LINE:COL line: control bytes are shown as \xNN. */
+        size_t o = 0;
+        for (size_t i = 0; raw[i] && o + 1 < sizeof sc->err; i++) {
+            unsigned char ch = (unsigned char)raw[i];
+            if (ch >= 0x20 && ch != 0x7F) {
+                sc->err[o++] = (char)ch;
+            } else if (o + 5 < sizeof sc->err) {
+                static const char hex[] = "0123456789abcdef";
+                sc->err[o++] = '\\';
+                sc->err[o++] = 'x';
+                sc->err[o++] = hex[ch >> 4];
+                sc->err[o++] = hex[ch & 15];
+            } else {
+                break;
+            }
+        }
+        sc->err[o] = 0;
         sc->err_line = sc->lineno;
         sc->err_col = sc->tok_col + 1;
     }
@@ -290,6 +309,149 @@ int fx_scene_arg_choice(fx_scene *sc, const char *const *choices)
     return fx_scene_error(sc, "expected one of %s, got '%s'", list, w);
 }
 
+/* ---- the argument table check (entries in scene_args.c) ---- */
+
+static int tok_is(const char *t, int l, const char *w)
+{
+    int i = 0;
+    while (i < l && w[i] && w[i] == t[i])
+        i++;
+    return i == l && !w[i];
+}
+
+/* A decimal integer token: 1 and *v (saturated to +-2^62 beyond it), or 0
+ * when the token is not an integer. */
+static int tok_int(const char *t, int l, int64_t *v)
+{
+    int i = 0, neg = 0;
+    if (l > 1 && (t[0] == '-' || t[0] == '+'))
+        neg = t[i++] == '-';
+    if (i >= l)
+        return 0;
+    int64_t acc = 0;
+    for (; i < l; i++) {
+        if (t[i] < '0' || t[i] > '9')
+            return 0;
+        if (acc <= (((int64_t)1 << 62) - 9) / 10)
+            acc = acc * 10 + (t[i] - '0');
+        else
+            acc = (int64_t)1 << 62; /* saturated: out of any range */
+    }
+    if (acc > ((int64_t)1 << 62))
+        acc = (int64_t)1 << 62;
+    *v = neg ? -acc : acc;
+    return 1;
+}
+
+static int range_error(fx_scene *sc, const fx_scene_arg *a, const char *t, int l)
+{
+    char range[64];
+    fx_scene_arg_range(a, range, sizeof range);
+    return fx_scene_error(sc, "%s %.*s out of range, expected %s", a->name, l > 40 ? 40 : l, t, range);
+}
+
+/* 1 when the form starting at f (an FX_ARG_FORM) or a later one of the same
+ * group has keyword t; *out = its first argument. Else the default form. */
+static const fx_scene_arg *pick_form(const fx_scene_arg *f, const char *t, int l, int have, int *consumed)
+{
+    const fx_scene_arg *dflt = 0;
+    *consumed = 0;
+    for (; f->type != FX_ARG_END; f++) {
+        if (f->type != FX_ARG_FORM)
+            continue;
+        if (!f->name)
+            dflt = f + 1;
+        else if (have && tok_is(t, l, f->name)) {
+            *consumed = 1;
+            return f + 1;
+        }
+    }
+    return dflt;
+}
+
+int fx_scene_check_args(fx_scene *sc, const fx_scene_argspec *spec)
+{
+    const fx_scene_arg *a = spec->args, *rep = 0, *group = 0;
+    int64_t reps = 0;
+    int in_form = 0, s, l, r = 0;
+    int save_pos = sc->pos, save_col = sc->tok_col;
+    for (;;) {
+        if (a->type == FX_ARG_END || (a->type == FX_ARG_FORM && in_form)) {
+            if (!group || !fx_scene_more(sc))
+                break;
+            reps++;
+            if (reps >= rep->max) {
+                next_token(sc, &s, &l);
+                char range[48];
+                fx_scene_arg_range(rep, range, sizeof range);
+                r = fx_scene_error(sc, "%s %lld out of range, expected %s", rep->name, (long long)reps + 1, range);
+                break;
+            }
+            a = group;
+            continue;
+        }
+        if (a->type == FX_ARG_OPT) {
+            a++;
+            continue;
+        }
+        if (a->type == FX_ARG_REPEAT) {
+            rep = a;
+            group = ++a;
+            reps = 0;
+            continue;
+        }
+        int save = sc->pos;
+        int have = next_token(sc, &s, &l);
+        const char *t = sc->text + s;
+        if (a->type == FX_ARG_FORM) {
+            int used;
+            a = pick_form(a, t, l, have, &used);
+            if (!a)
+                break;
+            in_form = 1;
+            if (!used)
+                sc->pos = save;
+            continue;
+        }
+        if (!have)
+            break; /* missing: the command says what it needed */
+        if (a->type == FX_ARG_INT) {
+            int64_t v;
+            if (!tok_int(t, l, &v))
+                break; /* not an integer: the command's message */
+            if (v < a->min || v > a->max) {
+                r = range_error(sc, a, t, l);
+                break;
+            }
+        } else if (a->type == FX_ARG_FX16 || a->type == FX_ARG_FX56) {
+            int n;
+            int64_t v;
+            if (a->type == FX_ARG_FX16) {
+                fx16 x = 0;
+                n = fx16_parse(t, l, &x);
+                v = x;
+            } else {
+                fx56 x = 0;
+                n = fx56_parse(t, l, &x);
+                v = x;
+            }
+            int low = (a->flags & FX_ARG_OPEN_MIN) ? v <= a->min : v < a->min;
+            if (n == -FX_ERANGE || (n == l && (low || v > a->max))) {
+                r = range_error(sc, a, t, l);
+                break;
+            }
+            if (n != l)
+                break;
+        }
+        a++;
+    }
+    if (r >= 0) {
+        sc->pos = save_pos;
+        sc->tok_col = save_col;
+    }
+    return r;
+}
+
 const fx_scene_cmd *fx_scene_find(const char *name, size_t len)
 {
     for (int t = 0; fx_scene_tables[t]; t++)
@@ -315,7 +477,13 @@ int fx_scene_exec_line(fx_scene *sc, const char *line, size_t len, int lineno)
     sc->cmd_col = s;
     const fx_scene_cmd *cmd = fx_scene_find(line + s, (size_t)l);
     if (!cmd)
-        return fx_scene_error(sc, "unknown command '%.*s'", l, line + s);
+        return fx_scene_error(sc, "unknown command '%.*s'", l > 40 ? 40 : l, line + s);
+    const fx_scene_argspec *spec = fx_scene_args_find(cmd->name);
+    if (!spec)
+        return fx_scene_error(sc, "'%s' has no entry in the argument table", cmd->name);
+    int rc = fx_scene_check_args(sc, spec);
+    if (rc < 0)
+        return rc;
     if (cmd->flags & FX_SCENE_DRAWS) {
         int r = fx_scene_surface(sc);
         if (r < 0)

@@ -450,6 +450,8 @@ static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
     int32_t nv, nt;
     if (fx_mesh_size(p, &nv, &nt) < 0)
         return fx_scene_error(sc, "tessellation out of range");
+    if (nt > FX_SCENE_MAX_TRIANGLES)
+        return fx_scene_error(sc, "%d triangles: more than the %d one command may draw", nt, FX_SCENE_MAX_TRIANGLES);
     size_t need = (size_t)nv * 2 * sizeof(fx_vec3) + (size_t)nt * 3 * sizeof(uint32_t);
     if (need > s->mesh_bytes) {
         s->mesh_mem = fx_scene_alloc(sc, need);
@@ -512,6 +514,9 @@ static int cmd_obj(fx_scene *sc)
     int32_t nv, nt;
     if (fx_mesh_obj_size((const char *)data, len, &nv, &nt, &err) < 0)
         return fx_scene_error(sc, "%s: %s", path, err.msg);
+    if (nt > FX_SCENE_MAX_TRIANGLES) /* the work bound: ~2 us per lit triangle */
+        return fx_scene_error(sc, "%s: %d triangles, more than the %d one command may draw", path, nt,
+                              FX_SCENE_MAX_TRIANGLES);
     size_t need = (size_t)nv * 2 * sizeof(fx_vec3) + (size_t)nt * 3 * sizeof(uint32_t);
     fx_vec3 *mem = fx_scene_alloc(sc, need);
     if (!mem)

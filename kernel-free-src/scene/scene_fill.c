@@ -54,8 +54,8 @@ static int read_verts(fx_scene *sc, fill_state *st, int with_color, int frac, in
             fx16 x, y;
             TRY(fx_scene_arg_fx16(sc, &x));
             TRY(fx_scene_arg_fx16(sc, &y));
-            st->xy[2 * k] = (x + 128) >> 8; /* Q16.16 -> 24.8, nearest */
-            st->xy[2 * k + 1] = (y + 128) >> 8;
+            st->xy[2 * k] = (int32_t)(((int64_t)x + 128) >> 8); /* Q16.16 -> 24.8, nearest; */
+            st->xy[2 * k + 1] = (int32_t)(((int64_t)y + 128) >> 8); /* x + 128 overflowed at 32767.99999 */
         } else {
             TRY(fx_scene_arg_int(sc, &st->xy[2 * k]));
             TRY(fx_scene_arg_int(sc, &st->xy[2 * k + 1]));
@@ -472,8 +472,8 @@ static int cmd_texstyle(fx_scene *sc)
     fx_memset(m, 0, sizeof *m);
     m->tex = &st->tex;
     m->dsdx = m->dtdy = FX16_ONE / size;
-    m->s0 = -x0 * m->dsdx;
-    m->t0 = -y0 * m->dtdy;
+    m->s0 = fx_sat32(-(int64_t)x0 * m->dsdx); /* 40000 * 65536 overflowed int32 */
+    m->t0 = fx_sat32(-(int64_t)y0 * m->dtdy);
     fx_fill_style *s = &st->style;
     s->kind = FX_FILL_SHADER;
     s->shade = fx_tex_shade;

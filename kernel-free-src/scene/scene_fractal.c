@@ -271,8 +271,8 @@ static int run_ifs(fx_scene *sc, const fx_ifs *s, int chaos)
     fx_rect d = {v[0], v[1], x1 > INT32_MAX ? INT32_MAX : (int32_t)x1,
                  y1 > INT32_MAX ? INT32_MAX : (int32_t)y1};
     if (chaos) {
-        if (n < 0 || n > 20000000)
-            return fx_scene_error(sc, "point count %d out of range (0..20000000)", n);
+        if (n < 0 || n > 4000000)
+            return fx_scene_error(sc, "point count %d out of range (0..4000000)", n);
         fx_ifs_chaos(&sc->ctx, d, s, (uint32_t)n, (uint32_t)seed);
     } else {
         if (n < 0 || fx_ifs_copier(&sc->ctx, d, s, (uint32_t)n) < 0)

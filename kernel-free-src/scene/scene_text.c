@@ -76,6 +76,13 @@ static int cmd_font(fx_scene *sc)
     r = fx_font_load(&f, data, len);
     if (r < 0)
         return fx_scene_error(sc, "'%s' is not a usable PSF font: %s", path, fx_strerror(r));
+    /* the unicode table indexed once: lookups stop walking it (issue #26) */
+    size_t ix = fx_font_index_bytes(&f);
+    if (ix) {
+        void *mem = fx_scene_alloc(sc, ix);
+        if (!mem || fx_font_index(&f, mem, ix) < 0)
+            return fx_scene_error(sc, "out of scene memory for the unicode index of '%s'", path);
+    }
     t->font = f;
     t->st.font = &t->font;
     return 0;

@@ -19,7 +19,7 @@
 
 static const fx_font builtin = {
     fx_font_builtin_bits, FX_BUILTIN_GLYPHS, FX_BUILTIN_W, FX_BUILTIN_H, 1, FX_BUILTIN_H,
-    0, 0, 0, {0}, FX_BUILTIN_GLYPHS - 1,
+    0, 0, 0, {0}, FX_BUILTIN_GLYPHS - 1, 0, 0, 0,
 };
 
 const fx_font *fx_font_builtin(void) { return &builtin; }
@@ -63,12 +63,79 @@ static size_t utf8_next(const uint8_t *s, size_t n, uint32_t *cp)
     return k;
 }
 
+/* Calls fn(user, cp, glyph) for every single-character entry of the table,
+ * in table order (glyphs ascending); one walk, bounded by utab_len. */
+/* always inlined: each caller gets its own loop with the callback inlined */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void walk_table(const fx_font *f, void (*fn)(void *, uint32_t, uint32_t), void *user)
+{
+    uint32_t glyph = 0;
+    int seq = 0;
+    if (f->version == 1) {
+        for (size_t i = 0; i + 1 < f->utab_len; i += 2) {
+            uint32_t v = (uint32_t)f->utab[i] | (uint32_t)f->utab[i + 1] << 8;
+            if (v == 0xFFFF) {
+                if (++glyph >= f->count)
+                    return;
+                seq = 0;
+            } else if (v == 0xFFFE) {
+                seq = 1;
+            } else if (!seq) {
+                fn(user, v, glyph);
+            }
+        }
+        return;
+    }
+    for (size_t i = 0; i < f->utab_len;) {
+        uint8_t b = f->utab[i];
+        if (b == 0xFF) {
+            i++;
+            if (++glyph >= f->count)
+                return;
+            seq = 0;
+        } else if (b == 0xFE) {
+            i++;
+            seq = 1;
+        } else {
+            uint32_t v;
+            i += utf8_next(f->utab + i, f->utab_len - i, &v);
+            if (!seq)
+                fn(user, v, glyph);
+        }
+    }
+}
+
+#define CP_LIMIT 0x110000u
+#define IX_WORDS (CP_LIMIT / 64)
+
+static uint32_t popcount64(uint64_t x)
+{
+    x = x - ((x >> 1) & 0x5555555555555555u);
+    x = (x & 0x3333333333333333u) + ((x >> 2) & 0x3333333333333333u);
+    x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0Fu;
+    return (uint32_t)((x * 0x0101010101010101u) >> 56);
+}
+
+static uint32_t ix_lookup(const fx_font *f, uint32_t cp)
+{
+    if (cp >= CP_LIMIT)
+        return NO_GLYPH;
+    uint64_t w = f->ix_bits[cp / 64], bit = (uint64_t)1 << (cp % 64);
+    if (!(w & bit))
+        return NO_GLYPH;
+    return f->ix_glyph[f->ix_rank[cp / 64] + popcount64(w & (bit - 1))];
+}
+
 static uint32_t lookup(const fx_font *f, uint32_t cp)
 {
     if (f->version == 0)
         return cp >= 32 && cp <= 126 ? cp - 32 : NO_GLYPH;
     if (!f->utab)
         return cp < f->count ? cp : NO_GLYPH;
+    if (f->ix_bits)
+        return ix_lookup(f, cp);
     uint32_t glyph = 0;
     int seq = 0; /* after 0xFE / 0xFFFE: combining sequences, not single characters */
     if (f->version == 1) {
@@ -114,14 +181,87 @@ uint32_t fx_font_glyph(const fx_font *f, uint32_t cp)
     return g == NO_GLYPH ? f->fallback : g;
 }
 
+/* ASCII glyphs: the first entry of each code below 128, in one walk (129
+ * walks of the whole table before). */
+static void ascii_entry(void *user, uint32_t cp, uint32_t glyph)
+{
+    uint32_t *first = user;
+    if (cp < 128 && first[cp] == NO_GLYPH)
+        first[cp] = glyph;
+}
+
 static int finish(fx_font *f)
 {
-    uint32_t q = lookup(f, '?');
+    uint32_t first[128];
+    for (uint32_t cp = 0; cp < 128; cp++)
+        first[cp] = f->utab ? NO_GLYPH : lookup(f, cp);
+    if (f->utab)
+        walk_table(f, ascii_entry, first);
+    uint32_t q = first['?'];
     f->fallback = q == NO_GLYPH ? 0 : q;
-    for (uint32_t cp = 0; cp < 128; cp++) {
-        uint32_t g = lookup(f, cp);
-        f->ascii[cp] = (uint16_t)(g == NO_GLYPH ? f->fallback : g);
+    for (uint32_t cp = 0; cp < 128; cp++)
+        f->ascii[cp] = (uint16_t)(first[cp] == NO_GLYPH ? f->fallback : first[cp]);
+    return 0;
+}
+
+typedef struct ix_build {
+    uint64_t *bits;
+    uint32_t *rank;
+    uint16_t *glyph;
+    size_t n, cap;
+} ix_build;
+
+static void ix_mark(void *user, uint32_t cp, uint32_t glyph)
+{
+    ix_build *b = user;
+    (void)glyph;
+    if (cp < CP_LIMIT)
+        b->bits[cp / 64] |= (uint64_t)1 << (cp % 64);
+}
+
+static void ix_fill(void *user, uint32_t cp, uint32_t glyph)
+{
+    ix_build *b = user;
+    if (cp >= CP_LIMIT)
+        return;
+    uint64_t w = b->bits[cp / 64], bit = (uint64_t)1 << (cp % 64);
+    uint32_t k = b->rank[cp / 64] + popcount64(w & (bit - 1));
+    if (glyph < b->glyph[k]) /* the first entry (lowest glyph) wins, as the linear walk */
+        b->glyph[k] = (uint16_t)glyph;
+}
+
+size_t fx_font_index_bytes(const fx_font *f)
+{
+    if (!f || !f->utab || f->version == 0)
+        return 0;
+    size_t entries = f->utab_len < CP_LIMIT ? f->utab_len : CP_LIMIT;
+    return IX_WORDS * 8 + IX_WORDS * 4 + entries * 2;
+}
+
+int fx_font_index(fx_font *f, void *mem, size_t size)
+{
+    size_t need = fx_font_index_bytes(f);
+    if (!f || !mem || !need || (uintptr_t)mem % 8)
+        return -FX_EINVAL;
+    if (size < IX_WORDS * 12)
+        return -FX_ENOSPC;
+    ix_build b = {mem, (uint32_t *)((uint8_t *)mem + IX_WORDS * 8), 0, 0, 0};
+    fx_memset(b.bits, 0, IX_WORDS * 8);
+    walk_table(f, ix_mark, &b);
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < IX_WORDS; i++) {
+        b.rank[i] = n;
+        n += popcount64(b.bits[i]);
     }
+    if (size - IX_WORDS * 12 < (size_t)n * 2)
+        return -FX_ENOSPC;
+    b.glyph = (uint16_t *)((uint8_t *)mem + IX_WORDS * 12);
+    for (uint32_t i = 0; i < n; i++)
+        b.glyph[i] = 0xFFFF;
+    walk_table(f, ix_fill, &b);
+    f->ix_bits = b.bits;
+    f->ix_rank = b.rank;
+    f->ix_glyph = b.glyph;
     return 0;
 }
 
@@ -200,6 +340,13 @@ static int64_t style_scale(const fx_text_style *st)
 
 void fx_text_extent(const fx_text_style *st, const char *utf8, int64_t *w, int64_t *h)
 {
+    int64_t dummy;
+    if (!w)
+        w = &dummy;
+    if (!h)
+        h = &dummy;
+    if (!utf8)
+        utf8 = "";
     if (!st)
         st = &default_style;
     const fx_font *f = st->font ? st->font : &builtin;
@@ -268,6 +415,8 @@ static int cell_inside(const fx_rect *cl, int64_t x, int64_t y, int64_t w, int64
 
 int fx_text(const fx_ctx *c, int32_t x, int32_t y, const char *utf8)
 {
+    if (!c || !utf8)
+        return -FX_EINVAL;
     const fx_text_style *st = c->text_style ? c->text_style : &default_style;
     const fx_font *f = st->font ? st->font : &builtin;
     const fx_rect *cl = &c->clip;

@@ -107,24 +107,39 @@ void fx_colorbar(const fx_ctx *c, fx_rect r, fx_cmap m, int ticks)
     int vertical = h > w;
     int32_t n = vertical ? h : w;
     fx_ctx cc = *c;
-    for (int32_t k = 0; k < n; k++) {
+    /* Only the bands inside the clip are walked: a bar of 2^31 rows off a
+     * small surface took a minute (issue #26). All positions in 64 bits. */
+    int64_t k0, k1;
+    if (vertical) { /* row r.y1 - 1 - k */
+        k0 = (int64_t)r.y1 - c->clip.y1;
+        k1 = (int64_t)r.y1 - 1 - c->clip.y0;
+    } else { /* column r.x0 + k */
+        k0 = (int64_t)c->clip.x0 - r.x0;
+        k1 = (int64_t)c->clip.x1 - 1 - r.x0;
+    }
+    k0 = FX_MAX(k0, 0);
+    k1 = FX_MIN(k1, (int64_t)n - 1);
+    for (int64_t k = k0; k <= k1; k++) {
         /* t from 0 at the low end to 1 at the high end */
         uint32_t t = n > 1 ? (uint32_t)(((uint64_t)k * 65536 + (uint32_t)(n - 1) / 2) / (uint32_t)(n - 1)) : 0;
         fx_ctx_set_color(&cc, fx_cmap_color(m, t));
         if (vertical)
-            fx_hspan(&cc, r.y1 - 1 - k, r.x0, r.x1);
+            fx_hspan(&cc, (int32_t)(r.y1 - 1 - k), r.x0, r.x1);
         else
-            fx_fill_rect(&cc, r.x0 + k, r.y0, 1, h);
+            fx_fill_rect(&cc, (int32_t)(r.x0 + k), r.y0, 1, (int32_t)h);
     }
-    fx_rect_outline(c, r.x0 - 1, r.y0 - 1, w + 2, h + 2);
+    fx_rect_outline(c, fx_sat32((int64_t)r.x0 - 1), fx_sat32((int64_t)r.y0 - 1), fx_sat32(w + 2), fx_sat32(h + 2));
     if (ticks < 2)
         return;
     for (int i = 0; i < ticks; i++) {
-        int32_t off = (int32_t)rdiv((int64_t)i * (n - 1), ticks - 1);
-        if (vertical)
-            fx_line(c, r.x1 + 1, r.y1 - 1 - off, r.x1 + 3, r.y1 - 1 - off);
-        else
-            fx_line(c, r.x0 + off, r.y1 + 1, r.x0 + off, r.y1 + 3);
+        int64_t off = rdiv((int64_t)i * (n - 1), ticks - 1);
+        if (vertical) {
+            int32_t y = fx_sat32((int64_t)r.y1 - 1 - off);
+            fx_line(c, fx_sat32((int64_t)r.x1 + 1), y, fx_sat32((int64_t)r.x1 + 3), y);
+        } else {
+            int32_t x = fx_sat32((int64_t)r.x0 + off);
+            fx_line(c, x, fx_sat32((int64_t)r.y1 + 1), x, fx_sat32((int64_t)r.y1 + 3));
+        }
     }
 }
 

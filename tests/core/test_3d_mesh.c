@@ -221,8 +221,8 @@ FX_TEST(obj_rejects_malformed_files_with_the_line)
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n", "line 4: vertex index -4 out of range (1..3)"},
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2 3\n", "line 4: texture index 1 out of range (1..0)"},
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3x\n", "line 4: malformed face corner"},
-        {"v 0 0 0\n", "line 1: no faces"},
-        {"", "line 0: no vertices"},
+        {"v 0 0 0\n", "no faces in the file"},
+        {"", "no vertices in the file (it is empty)"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         fx_obj_error err;

@@ -1,6 +1,7 @@
 /* fixel-draw — render a scene script on the in-memory framebuffer. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -108,7 +109,13 @@ static int gunzip(uint8_t **buf, size_t *len)
 #else
 static int gunzip(uint8_t **buf, size_t *len)
 {
-    size_t cap = *len * 4 + 4096, n = 0;
+    /* The output cap is exact: 64 MiB inflate, 64 MiB + 1 byte does not
+     * (the first guess of 4x the input let ~256 MiB through). Concatenated
+     * members (gzip a b > c) are all inflated, as gunzip does. */
+    const size_t max = (size_t)64 << 20;
+    size_t cap = *len < max / 4 ? *len * 4 + 4096 : max, n = 0;
+    if (cap > max)
+        cap = max;
     uint8_t *out = malloc(cap + 1);
     z_stream z;
     memset(&z, 0, sizeof z);
@@ -118,23 +125,52 @@ static int gunzip(uint8_t **buf, size_t *len)
     }
     z.next_in = *buf;
     z.avail_in = (uInt)*len;
-    int zr;
-    do {
+    int zr = Z_OK;
+    for (;;) {
         if (n == cap) {
-            uint8_t *nb = cap < ((size_t)64 << 20) ? realloc(out, cap * 2 + 1) : NULL;
-            if (!nb) {
-                inflateEnd(&z);
-                free(out);
-                return -FX_E2BIG;
+            if (cap == max) {
+                /* full: any further byte of output is one too many */
+                uint8_t probe;
+                z.next_out = &probe;
+                z.avail_out = 1;
+                zr = inflate(&z, Z_NO_FLUSH);
+                if (z.avail_out == 0) {
+                    inflateEnd(&z);
+                    free(out);
+                    return -FX_E2BIG;
+                }
+                if (zr != Z_STREAM_END)
+                    break;
+            } else {
+                size_t nc = cap * 2 > max ? max : cap * 2;
+                uint8_t *nb = realloc(out, nc + 1);
+                if (!nb) {
+                    inflateEnd(&z);
+                    free(out);
+                    return -FX_ENOMEM;
+                }
+                out = nb;
+                cap = nc;
             }
-            out = nb;
-            cap *= 2;
         }
-        z.next_out = out + n;
-        z.avail_out = (uInt)(cap - n);
-        zr = inflate(&z, Z_NO_FLUSH);
-        n = cap - z.avail_out;
-    } while (zr == Z_OK);
+        if (n < cap) {
+            z.next_out = out + n;
+            z.avail_out = (uInt)(cap - n);
+            zr = inflate(&z, Z_NO_FLUSH);
+            n = cap - z.avail_out;
+        }
+        if (zr == Z_STREAM_END) {
+            /* another member follows? (trailing zero padding is ignored) */
+            if (z.avail_in >= 2 && z.next_in[0] == 0x1f && z.next_in[1] == 0x8b) {
+                if (inflateReset(&z) != Z_OK)
+                    break;
+                continue;
+            }
+            break;
+        }
+        if (zr != Z_OK)
+            break;
+    }
     inflateEnd(&z);
     if (zr != Z_STREAM_END) {
         free(out);
@@ -160,22 +196,44 @@ static int fx_code(int e)
     case ENOTDIR: return -FX_ENOTDIR;
     case ENOMEM: return -FX_ENOMEM;
     case ENAMETOOLONG: return -FX_ERANGE;
+    case EOPNOTSUPP: return -FX_ENOTSUP; /* a FIFO or socket where a file is needed */
     default: return -FX_EIO;
     }
+}
+
+/* Opens an input without blocking (a FIFO with no writer blocked open()
+ * forever, issue #26), then checks its type: a directory is refused, and so
+ * are FIFOs and sockets unless fifo_ok (the script itself may come from a
+ * pipe); then reads block again. NULL with errno set. */
+static FILE *open_input(const char *path, int fifo_ok)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0)
+        return NULL;
+    struct stat st;
+    int e = 0;
+    if (fstat(fd, &st) < 0)
+        e = errno;
+    else if (S_ISDIR(st.st_mode))
+        e = EISDIR;
+    else if (!fifo_ok && (S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)))
+        e = EOPNOTSUPP;
+    FILE *f = e ? NULL : (fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK), fdopen(fd, "rb"));
+    if (!f) {
+        if (!e)
+            e = errno;
+        close(fd);
+        errno = e;
+    }
+    return f;
 }
 
 static int load_file(void *u, const char *path, const uint8_t **data, size_t *len)
 {
     host *H = u;
-    FILE *f = fopen(path, "rb");
+    FILE *f = open_input(path, 0);
     if (!f)
         return fx_code(errno);
-    /* fopen succeeds on a directory; say so rather than "input/output error" */
-    struct stat st;
-    if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
-        fclose(f);
-        return -FX_EISDIR;
-    }
     uint8_t *buf;
     int r = read_all(f, FILE_MAX, &buf, len);
     fclose(f);
@@ -274,11 +332,28 @@ static int run_lines(fx_scene *sc, const char *text, size_t len, const host *H, 
 /* Streaming: each stdin line runs as it arrives; "present" shows the frame. */
 static int run_stream(fx_scene *sc, const host *H)
 {
-    char *line = NULL;
-    size_t cap = 0;
+    /* Lines are capped (a 1 GB line took 1 GB, issue #26): longer is an error. */
+    enum { LINE_MAX_BYTES = 1 << 20 };
+    char *line = malloc(LINE_MAX_BYTES + 1);
+    if (!line)
+        return fx_scene_error(sc, "out of memory");
     ssize_t n;
     int lineno = 1, r = 0;
-    while ((n = getline(&line, &cap, stdin)) >= 0 && r >= 0) {
+    for (;;) {
+        int ch = 0;
+        n = 0;
+        while (n < LINE_MAX_BYTES && (ch = getchar()) != EOF && ch != '\n')
+            line[n++] = (char)ch;
+        if (n == LINE_MAX_BYTES && ch != '\n' && (ch = getchar()) != EOF && ch != '\n') {
+            sc->lineno = lineno;
+            sc->tok_col = 0;
+            r = fx_scene_error(sc, "line longer than %d bytes", LINE_MAX_BYTES);
+            break;
+        }
+        if (ch == EOF && n == 0)
+            break;
+        if (r < 0)
+            break;
         while (n && (line[n - 1] == '\n' || line[n - 1] == '\r' || line[n - 1] == ' ')) n--;
         if (n == 7 && !memcmp(line, "present", 7)) {
             r = fx_scene_surface(sc);
@@ -291,11 +366,49 @@ static int run_stream(fx_scene *sc, const host *H)
     return r < 0 ? r : fx_scene_surface(sc);
 }
 
+/* --commands: each command's usage line, then its arguments from the one
+ * argument table (kernel-free-src/scene/scene_args.c), one per line:
+ *     NAME  TYPE  RANGE  [optional] [bounds the work]
+ * forms are introduced by "form KEYWORD" ("form *" for the default form),
+ * repetitions by "repeat MIN..MAX times:". fixel-script(5) is generated from
+ * this output. */
 static void list_commands(void)
 {
+    static const char *const types[] = {"", "integer", "number", "number", "colour", "word", "string"};
     for (int t = 0; fx_scene_tables[t]; t++)
-        for (const fx_scene_cmd *c = fx_scene_tables[t]; c->name; c++)
+        for (const fx_scene_cmd *c = fx_scene_tables[t]; c->name; c++) {
             printf("%s\n", c->usage);
+            const fx_scene_argspec *sp = fx_scene_args_find(c->name);
+            if (!sp) {
+                printf("    (no argument table entry)\n");
+                continue;
+            }
+            if (sp->work)
+                printf("    work: %s\n", sp->work);
+            int opt = 0, indent = 4;
+            for (const fx_scene_arg *a = sp->args; a->type != FX_ARG_END; a++) {
+                char range[64];
+                fx_scene_arg_range(a, range, sizeof range);
+                switch (a->type) {
+                case FX_ARG_OPT: opt = 1; break;
+                case FX_ARG_FORM:
+                    printf("    form %s\n", a->name ? a->name : "*");
+                    indent = 6;
+                    opt = 0;
+                    break;
+                case FX_ARG_REPEAT:
+                    printf("%*srepeat %s times (%s):\n", indent, "", range, a->name);
+                    indent += 2;
+                    break;
+                case FX_ARG_WORD:
+                    printf("%*sword         one of %s%s\n", indent, "", a->name, opt ? " [optional]" : "");
+                    break;
+                default:
+                    printf("%*s%-12s %-8s %s%s%s\n", indent, "", a->name, types[a->type], range,
+                           opt ? " [optional]" : "", a->flags & FX_ARG_WORK ? " [bounds the work]" : "");
+                }
+            }
+        }
 }
 
 int main(int argc, char **argv)
@@ -348,15 +461,12 @@ int main(int argc, char **argv)
     }
 
     int streaming = display && !strcmp(script, "-");
-    FILE *in = streaming ? NULL : strcmp(script, "-") ? fopen(script, "rb") : stdin;
+    FILE *in = streaming ? NULL : strcmp(script, "-") ? open_input(script, 1) : stdin;
     if (!in && !streaming) {
-        fprintf(stderr, "fixel-draw: cannot open %s: %s\n", script, strerror(errno));
-        return 1;
-    }
-    struct stat st;
-    if (in && fstat(fileno(in), &st) == 0 && S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "fixel-draw: cannot read %s: it is a directory\n", script);
-        fclose(in);
+        if (errno == EISDIR)
+            fprintf(stderr, "fixel-draw: cannot read %s: it is a directory\n", script);
+        else
+            fprintf(stderr, "fixel-draw: cannot open %s: %s\n", script, strerror(errno));
         return 1;
     }
     uint8_t *text = NULL;

@@ -74,14 +74,38 @@ typedef struct kiosk_config {
     int nwidgets, nsources;
     kiosk_widget widgets[KIOSK_MAX_WIDGETS];
     kiosk_source sources[KIOSK_MAX_SOURCES];
+    char msg[96];              /* the last range message (from kiosk_keys) */
 } kiosk_config;
 
 /* Parse a config in buf[0..len). On error returns -1 and writes "line N:
  * reason" into err (size errsize); 0 on success. */
 int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, size_t errsize);
 
+/* The one table of everything a config or a data stream may hold (issue
+ * #26): each directive, widget key and data value with its type and range.
+ * kiosk_config_parse takes every range from here, and an out-of-range value
+ * is an error naming it ("col=99: expected 0..63"); fixel-kiosk --keys
+ * prints it. type: 'i' integer, 'p' integer pair AxB, 'm' decimal number
+ * (min/max in thousandths), 'c' colour #rrggbb, 't' text, 'f' path, 'w' one of
+ * the words in help. widgets: the widget types (bit per kiosk_type) the key
+ * applies to; 0 for directives and data. */
+typedef struct kiosk_key {
+    const char *scope; /* "directive", "widget" or "data" */
+    const char *name;
+    char type;
+    int64_t min, max;
+    unsigned widgets;
+    const char *help;
+} kiosk_key;
+extern const kiosk_key kiosk_keys[]; /* NULL name ends it */
+const kiosk_key *kiosk_key_find(const char *scope, const char *name, size_t n);
+
 /* Parse a decimal "[-+]digits[.digits]" of exactly len characters into
  * milli-units (rounded half away from zero). Returns 0 or -1. */
+/* Every number (data values, min, max) lies within +-KIOSK_VALUE_MAX (10^15,
+ * in thousandths +-10^18): differences of two stay below 2^61, and
+ * widgets scale them with a 96-bit muldiv (issue #26). */
+#define KIOSK_VALUE_MAX 1000000000000000LL
 int kiosk_parse_milli(const char *s, size_t len, int64_t *out);
 
 typedef enum kiosk_line_result {

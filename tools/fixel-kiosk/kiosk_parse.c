@@ -29,8 +29,8 @@ int kiosk_parse_milli(const char *s, size_t len, int64_t *out)
     int64_t v = 0;
     if (i < len && (s[i] == '-' || s[i] == '+')) neg = s[i++] == '-';
     for (; i < len && s[i] >= '0' && s[i] <= '9'; i++, digits++) {
-        if (v > (INT64_MAX / 10 - 9) / 1000) return -1; /* keeps v * 1000 in range */
         v = v * 10 + (s[i] - '0');
+        if (v > KIOSK_VALUE_MAX) return -1; /* the declared range: v * 1000 + 999 stays far from INT64_MAX */
     }
     v *= 1000;
     if (i < len && s[i] == '.') {
@@ -155,6 +155,83 @@ static int find_source(const kiosk_config *k, const char *s, size_t n)
     return -1;
 }
 
+#define ALLW 0xFFu
+#define HEATW (1u << KIOSK_HEAT)
+#define IMGW (1u << KIOSK_IMAGE)
+#define VMAX (KIOSK_VALUE_MAX * 1000)
+const kiosk_key kiosk_keys[] = {
+    {"directive", "title", 't', 0, KIOSK_TEXT_MAX - 1, 0, "the rest of the line"},
+    {"directive", "grid", 'p', 1, 16, 0, "CxR cells"},
+    {"directive", "size", 'p', 16, 8192, 0, "WxH pixels"},
+    {"directive", "stale", 'm', 1, 86400000000LL, 0, "seconds a source may be silent"},
+    {"directive", "history", 'i', 2, KIOSK_HIST_MAX, 0, "samples per spark"},
+    {"directive", "bg", 'c', 0, 0, 0, "#rrggbb"},
+    {"directive", "panel", 'c', 0, 0, 0, "#rrggbb"},
+    {"directive", "fg", 'c', 0, 0, 0, "#rrggbb"},
+    {"directive", "columns", 't', 0, 0, 0, "name,name,... (up to 32)"},
+    {"directive", "widget", 't', 0, 0, 0, "TYPE SOURCE key=value..."},
+    {"widget", "col", 'i', 0, 63, ALLW, "first cell column"},
+    {"widget", "row", 'i', 0, 63, ALLW, "first cell row"},
+    {"widget", "w", 'i', 1, 64, ALLW, "cells wide"},
+    {"widget", "h", 'i', 1, 64, ALLW, "cells high"},
+    {"widget", "decimals", 'i', 0, 3, ALLW, "digits after the point"},
+    {"widget", "min", 'm', -VMAX, VMAX, ALLW, "low end of the scale"},
+    {"widget", "max", 'm', -VMAX, VMAX, ALLW, "high end of the scale"},
+    {"widget", "color", 'c', 0, 0, ALLW, "#rrggbb"},
+    {"widget", "label", 't', 0, KIOSK_TEXT_MAX - 1, ALLW, "caption"},
+    {"widget", "unit", 't', 0, KIOSK_TEXT_MAX - 1, ALLW, "unit after the value"},
+    {"widget", "cells", 'p', 1, KIOSK_HEAT_DIM, HEATW, "CxR grid of the heat map"},
+    {"widget", "cmap", 'w', 0, 0, HEATW, "a colour map name (viridis, hot, ...)"},
+    {"widget", "smooth", 'i', 0, 1, HEATW, "bilinear heat map"},
+    {"widget", "filter", 'w', 0, 0, IMGW, "nearest|bilinear"},
+    {"widget", "path", 'f', 1, KIOSK_PATH_MAX - 1, IMGW, "image file (PNG or PPM)"},
+    {"data", "VALUE", 'm', -VMAX, VMAX, 0, "name=value, name,value or CSV: every number"},
+    {0, 0, 0, 0, 0, 0, 0},
+};
+
+const kiosk_key *kiosk_key_find(const char *scope, const char *name, size_t n)
+{
+    for (const kiosk_key *q = kiosk_keys; q->name; q++)
+        if (!strcmp(q->scope, scope) && strlen(q->name) == n && !memcmp(q->name, name, n)) return q;
+    return NULL;
+}
+
+/* "KEY=VALUE: expected MIN..MAX" into k->msg (no stdio in this file). */
+static const char *range_msg(kiosk_config *k, const kiosk_key *q, tok val)
+{
+    char *o = k->msg, *e = k->msg + sizeof k->msg - 1;
+    const char *parts[3] = {q->name, "=", NULL};
+    for (int i = 0; parts[i] && i < 2; i++)
+        for (const char *c = parts[i]; *c && o < e; c++) *o++ = *c;
+    for (size_t i = 0; i < val.n && i < 24 && o < e; i++)
+        *o++ = (unsigned char)val.s[i] < 0x20 || val.s[i] == 0x7f ? '?' : val.s[i];
+    for (const char *c = ": expected "; *c && o < e; c++) *o++ = *c;
+    char num[64];
+    for (int b = 0; b < 2; b++) {
+        int64_t v = b ? q->max : q->min;
+        int d = q->type == 'm' ? 3 : 0;
+        if (q->type == 'm') kiosk_format_milli(num, sizeof num, v, 3);
+        else {
+            uint64_t u = v < 0 ? 0 - (uint64_t)v : (uint64_t)v;
+            int n = 0;
+            char rev[24];
+            do { rev[n++] = (char)('0' + u % 10); u /= 10; } while (u);
+            int k2 = 0;
+            if (v < 0) num[k2++] = '-';
+            while (n) num[k2++] = rev[--n];
+            num[k2] = 0;
+        }
+        /* drop a fraction of zeros */
+        size_t L = strlen(num);
+        if (d && L > 4 && !strcmp(num + L - 4, ".000")) num[L - 4] = 0;
+        if (b) for (const char *c = ".."; *c && o < e; c++) *o++ = *c;
+        for (const char *c = num; *c && o < e; c++) *o++ = *c;
+    }
+    if (q->type == 'p') for (const char *c = " each"; *c && o < e; c++) *o++ = *c;
+    *o = 0;
+    return k->msg;
+}
+
 static const char *const type_names[KIOSK_NTYPES] = {"number", "gauge", "bar", "spark",
                                                       "text",   "clock", "heat", "image"};
 
@@ -225,24 +302,40 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
         if (eq == t.n) return "expected key=value";
         tok key = {t.s, eq}, val = {t.s + eq + 1, t.n - eq - 1};
         int bad;
-        if (tok_is(key, "col")) bad = parse_int(val, 0, 63, &w->col);
-        else if (tok_is(key, "row")) bad = parse_int(val, 0, 63, &w->row);
-        else if (tok_is(key, "w")) bad = parse_int(val, 1, 64, &w->w);
-        else if (tok_is(key, "h")) bad = parse_int(val, 1, 64, &w->h);
-        else if (tok_is(key, "decimals")) bad = parse_int(val, 0, 3, &w->decimals);
-        else if (tok_is(key, "min")) bad = kiosk_parse_milli(val.s, val.n, &w->min);
-        else if (tok_is(key, "max")) bad = kiosk_parse_milli(val.s, val.n, &w->max);
+        const kiosk_key *q = kiosk_key_find("widget", key.s, key.n);
+        if (!q || !(q->widgets & (1u << w->type)))
+            return "unknown widget key (col row w h decimals min max color label unit; heat: cells cmap smooth; "
+                   "image: path filter)";
+        int64_t m = 0;
+        int iv = 0;
+        /* numbers: the type from the table, then the table's range */
+        if (q->type == 'i' || q->type == 'm') {
+            if (q->type == 'i') {
+                if (parse_int(val, 0, 999999999, &iv)) return "bad widget value";
+                m = iv;
+            } else if (kiosk_parse_milli(val.s, val.n, &m)) {
+                return range_msg(k, q, val);
+            }
+            if (m < q->min || m > q->max) return range_msg(k, q, val);
+        }
+        if (tok_is(key, "col")) bad = (w->col = iv, 0);
+        else if (tok_is(key, "row")) bad = (w->row = iv, 0);
+        else if (tok_is(key, "w")) bad = (w->w = iv, 0);
+        else if (tok_is(key, "h")) bad = (w->h = iv, 0);
+        else if (tok_is(key, "decimals")) bad = (w->decimals = iv, 0);
+        else if (tok_is(key, "min")) bad = (w->min = m, 0);
+        else if (tok_is(key, "max")) bad = (w->max = m, 0);
         else if (tok_is(key, "color")) bad = parse_color(val, &w->color);
         else if (tok_is(key, "label")) bad = parse_text(val, w->label);
         else if (tok_is(key, "unit")) bad = parse_text(val, w->unit);
-        else if (tok_is(key, "cells") && w->type == KIOSK_HEAT) bad = parse_pair(val, 1, KIOSK_HEAT_DIM, &cw, &ch);
-        else if (tok_is(key, "cmap") && w->type == KIOSK_HEAT) bad = parse_cmap(val, &w->cmap);
-        else if (tok_is(key, "smooth") && w->type == KIOSK_HEAT) bad = parse_int(val, 0, 1, &w->smooth);
-        else if (tok_is(key, "filter") && w->type == KIOSK_IMAGE)
+        else if (tok_is(key, "cells")) {
+            if (parse_pair(val, (int)q->min, (int)q->max, &cw, &ch)) return range_msg(k, q, val);
+            bad = 0;
+        } else if (tok_is(key, "cmap")) bad = parse_cmap(val, &w->cmap);
+        else if (tok_is(key, "smooth")) bad = (w->smooth = iv, 0);
+        else if (tok_is(key, "filter"))
             bad = tok_is(val, "nearest") ? (w->smooth = 0, 0) : tok_is(val, "bilinear") ? (w->smooth = 1, 0) : -1;
-        else if (tok_is(key, "path") && w->type == KIOSK_IMAGE) bad = parse_path(val, k->sources[w->source].path);
-        else return "unknown widget key (col row w h decimals min max color label unit; heat: cells cmap smooth; "
-                    "image: path filter)";
+        else bad = parse_path(val, k->sources[w->source].path);
         if (bad) return "bad widget value";
     }
     if (r < 0) return "unterminated quote";
@@ -314,14 +407,19 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
                 while (e > v.s && is_space(e[-1])) e--;
                 if (parse_text((tok){v.s, (size_t)(e - v.s)}, k->title)) msg = "bad title";
                 q = eol;
-            } else if (tok_is(t, "grid")) msg = parse_pair(v, 1, 16, &k->cols, &k->rows) ? "grid wants CxR, 1..16" : NULL;
-            else if (tok_is(t, "size")) msg = parse_pair(v, 16, 8192, &k->width, &k->height) ? "size wants WxH" : NULL;
-            else if (tok_is(t, "stale")) {
+            } else if (tok_is(t, "grid") || tok_is(t, "size")) {
+                const kiosk_key *kq = kiosk_key_find("directive", t.s, t.n);
+                int *a = tok_is(t, "grid") ? &k->cols : &k->width, *b = tok_is(t, "grid") ? &k->rows : &k->height;
+                msg = parse_pair(v, (int)kq->min, (int)kq->max, a, b) ? range_msg(k, kq, v) : NULL;
+            } else if (tok_is(t, "stale")) {
+                const kiosk_key *kq = kiosk_key_find("directive", "stale", 5);
                 int64_t ms;
-                if (kiosk_parse_milli(v.s, v.n, &ms) || ms < 1 || ms > 86400000000) msg = "stale wants seconds";
+                if (kiosk_parse_milli(v.s, v.n, &ms) || ms < kq->min || ms > kq->max) msg = range_msg(k, kq, v);
                 else k->stale_ms = (int)(ms > 2000000000 ? 2000000000 : ms);
-            } else if (tok_is(t, "history"))
-                msg = parse_int(v, 2, KIOSK_HIST_MAX, &k->history) ? "history wants 2..256" : NULL;
+            } else if (tok_is(t, "history")) {
+                const kiosk_key *kq = kiosk_key_find("directive", "history", 7);
+                msg = parse_int(v, (int)kq->min, (int)kq->max, &k->history) ? range_msg(k, kq, v) : NULL;
+            }
             else if (tok_is(t, "bg")) msg = parse_color(v, &k->bg) ? "bad colour (#rrggbb)" : NULL;
             else if (tok_is(t, "panel")) msg = parse_color(v, &k->panel) ? "bad colour (#rrggbb)" : NULL;
             else if (tok_is(t, "fg")) msg = parse_color(v, &k->fg) ? "bad colour (#rrggbb)" : NULL;

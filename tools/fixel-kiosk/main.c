@@ -13,6 +13,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <malloc.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,6 +26,7 @@
 #include "fixel/circle.h"
 #include "fixel/colormap.h"
 #include "fixel/draw.h"
+#include "fixel/error.h"
 #include "fixel/fill.h"
 #include "fixel/fixed.h"
 #include "fixel/font.h"
@@ -56,6 +58,7 @@ enum { IMG_NONE, IMG_OK, IMG_MISSING, IMG_BAD, IMG_HUGE };
 typedef struct kimg {
     uint8_t *rgb;    /* decoded R, G, B bytes, w*h*3 */
     int32_t w, h;
+    int64_t file_size; /* of the file being loaded: PPM data must fit in it */
     int state, tried;
     char path[KIOSK_PATH_MAX]; /* what the last attempt read */
     uint32_t gen;
@@ -213,6 +216,7 @@ static int load_ppm(FILE *f, kimg *m)
         return IMG_BAD;
     if (!dims_ok(w, h)) return IMG_HUGE;
     size_t bytes = (size_t)w * (size_t)h * 3;
+    if ((int64_t)bytes > m->file_size) return IMG_BAD; /* truncated: refused before allocating */
     if (!(m->rgb = malloc(bytes))) return IMG_HUGE;
     if (fread(m->rgb, 1, bytes, f) != bytes) return IMG_BAD;
     m->w = w;
@@ -223,18 +227,12 @@ static int load_ppm(FILE *f, kimg *m)
 static int load_png(FILE *f, kimg *m)
 {
 #ifndef FX_NO_PNG
-    png_image img;
-    memset(&img, 0, sizeof img);
-    img.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_stdio(&img, f)) return IMG_BAD;
-    /* the header is read, no pixel memory taken yet: refuse absurd sizes here */
-    if (!dims_ok(img.width, img.height)) { png_image_free(&img); return IMG_HUGE; }
-    img.format = PNG_FORMAT_RGB;
-    if (!(m->rgb = malloc(PNG_IMAGE_SIZE(img)))) { png_image_free(&img); return IMG_HUGE; }
-    if (!png_image_finish_read(&img, NULL, m->rgb, 0, NULL)) { png_image_free(&img); return IMG_BAD; }
-    m->w = (int32_t)img.width;
-    m->h = (int32_t)img.height;
-    return IMG_OK;
+    /* libpng's own limits (memfb.c): ancillary chunks skipped unread (a tEXt
+     * chunk declaring 2 GiB took 2 GB per load), sizes refused before any
+     * pixel memory, alpha dropped as docs/kiosk.md says (it was composited
+     * onto black), issue #26 */
+    int r = fx_read_png_rgb_stream(f, IMG_MAX_DIM, IMG_MAX_PIXELS, &m->rgb, &m->w, &m->h);
+    return r == 0 ? IMG_OK : r == -FX_EFBIG ? IMG_HUGE : IMG_BAD;
 #else
     (void)f;
     (void)m;
@@ -244,8 +242,15 @@ static int load_png(FILE *f, kimg *m)
 
 static int load_image(const char *path, kimg *m)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) return IMG_MISSING;
+    /* never blocks on open (a FIFO named as the image), regular files only */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0) return IMG_MISSING;
+    struct stat st;
+    if (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode)) { close(fd); return IMG_BAD; }
+    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    FILE *f = fdopen(fd, "rb");
+    if (!f) { close(fd); return IMG_MISSING; }
+    m->file_size = st.st_size;
     unsigned char magic[8];
     size_t n = fread(magic, 1, sizeof magic, f);
     int r = IMG_BAD;
@@ -370,12 +375,31 @@ static void fill(fx_ctx *c, fx_color col, int32_t x, int32_t y, int32_t w, int32
     fx_fill_rect(&t, x, y, w, h);
 }
 
+/* a * b / c for 0 <= a <= c, 0 <= b < 2^32, c > 0, without overflow: the
+ * product in 96 bits, then long division (values are bounded by
+ * KIOSK_VALUE_MAX, their differences not by much less than 2^61). */
+static int64_t muldiv(uint64_t a, uint64_t b, uint64_t c)
+{
+    uint64_t lo = (a & 0xFFFFFFFFu) * b, mid = (a >> 32) * b;
+    uint64_t p_lo = lo + (mid << 32), p_hi = (mid >> 32) + (p_lo < lo);
+    uint64_t q = 0, rem = 0;
+    for (int i = 127; i >= 0; i--) {
+        uint64_t bit = i >= 64 ? (p_hi >> (i - 64)) & 1 : (p_lo >> i) & 1;
+        rem = rem << 1 | bit;
+        if (rem >= c) {
+            rem -= c;
+            if (i < 64) q |= (uint64_t)1 << i;
+        }
+    }
+    return (int64_t)q;
+}
+
 static int64_t frac_permille(const kiosk_widget *w, int64_t v)
 {
     if (w->max <= w->min) return 0;
     if (v <= w->min) return 0;
     if (v >= w->max) return 1000;
-    return (v - w->min) * 1000 / (w->max - w->min);
+    return muldiv((uint64_t)(v - w->min), 1000, (uint64_t)(w->max - w->min));
 }
 
 static void value_text(const kiosk *k, const kiosk_widget *w, char *buf, size_t size)
@@ -457,7 +481,7 @@ static void draw_spark(kiosk *k, fx_ctx *c, const kiosk_widget *w, fx_rect r, fx
         if (h < lo) h = lo;
         if (h > hi) h = hi;
         int32_t x = x0 + (int32_t)((int64_t)(i + hist - n) * (x1 - x0) / (hist - 1));
-        int32_t y = y1 - (int32_t)((h - lo) * (y1 - y0) / (hi - lo));
+        int32_t y = y1 - (int32_t)muldiv((uint64_t)(h - lo), (uint64_t)(y1 - y0), (uint64_t)(hi - lo));
         if (i) { fx_line(&t, px, py, x, y); fx_line(&t, px, py - 1, x, y - 1); }
         px = x; py = y;
     }
@@ -793,6 +817,7 @@ static void usage(FILE *f)
             "  --data FILE|-     data source: a file (followed as it grows), a named pipe, or - for\n"
             "                    stdin (default -)\n"
             "  --headless        draw into memory instead of a display (tests, previews)\n"
+            "  --keys            list every directive, widget key and data value with its range\n"
             "  --frames N        headless: frames to draw (default 1); each frame reads the data up\n"
             "                    to the next \"@frame [MS]\" line, then the clock advances MS (1000)\n"
             "  --out DIR         headless: write DIR/frame-NNNN.png for every frame\n"
@@ -817,6 +842,30 @@ int main(int argc, char **argv)
         const char *a = argv[i];
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { usage(stdout); return 0; }
         else if (!strcmp(a, "--headless")) k->headless = 1;
+        else if (!strcmp(a, "--keys")) {
+            /* the one table (kiosk_keys in kiosk_parse.c); fixel-kiosk(1) is generated from it */
+            static const char *const types[] = {"i", "integer", "p", "AxB", "m", "number", "c", "colour",
+                                                "t", "text", "f", "path", "w", "word"};
+            for (const kiosk_key *q = kiosk_keys; q->name; q++) {
+                const char *ty = "?";
+                for (int j = 0; j < 14; j += 2)
+                    if (types[j][0] == q->type) ty = types[j + 1];
+                printf("%-9s %-9s %-7s ", q->scope, q->name, ty);
+                if (q->type == 'i' || q->type == 'p')
+                    printf("%lld..%lld", (long long)q->min, (long long)q->max);
+                else if (q->type == 'm') {
+                    char lo[40], hi[40];
+                    kiosk_format_milli(lo, sizeof lo, q->min, 3);
+                    kiosk_format_milli(hi, sizeof hi, q->max, 3);
+                    printf("%s..%s", lo, hi);
+                } else if (q->type == 't' || q->type == 'f')
+                    printf(q->max ? "at most %lld bytes" : "-", (long long)q->max);
+                else
+                    printf("-");
+                printf("  %s%s\n", q->help, q->widgets && q->widgets != 0xFFu ? " (heat/image only)" : "");
+            }
+            return 0;
+        }
         else if (!strcmp(a, "--last")) last_only = 1;
         else if (!strcmp(a, "--full")) k->always_full = 1;
         else if (!strcmp(a, "--data") && i + 1 < argc) data = argv[++i];
@@ -846,11 +895,24 @@ int main(int argc, char **argv)
     if (mem_frame >= 0) setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
 
     static char cbuf[65536];
-    FILE *cf = fopen(cfgpath, "rb");
-    if (!cf) { fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, strerror(errno)); return 1; }
+    /* never blocks in open (a FIFO without writer), refuses what is not a
+     * file, and a config of exactly 65536 bytes is fine (issue #26) */
+    int cfd = open(cfgpath, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    struct stat cst;
+    if (cfd < 0) { fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, strerror(errno)); return 1; }
+    if (fstat(cfd, &cst) < 0 || !S_ISREG(cst.st_mode)) {
+        fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath,
+                S_ISDIR(cst.st_mode) ? "is a directory" : "not a regular file");
+        close(cfd);
+        return 1;
+    }
+    fcntl(cfd, F_SETFL, fcntl(cfd, F_GETFL) & ~O_NONBLOCK);
+    FILE *cf = fdopen(cfd, "rb");
+    if (!cf) { fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, strerror(errno)); close(cfd); return 1; }
     size_t clen = fread(cbuf, 1, sizeof cbuf, cf);
-    int toolong = !feof(cf);
+    int toolong = clen == sizeof cbuf && fgetc(cf) != EOF, rerr = ferror(cf);
     fclose(cf);
+    if (rerr) { fprintf(stderr, "fixel-kiosk: %s: read error\n", cfgpath); return 1; }
     if (toolong) { fprintf(stderr, "fixel-kiosk: %s: larger than %zu bytes\n", cfgpath, sizeof cbuf); return 1; }
     char err[160];
     if (kiosk_config_parse(&k->cfg, cbuf, clen, err, sizeof err) < 0) {
@@ -861,6 +923,12 @@ int main(int argc, char **argv)
     if (!strcmp(data, "-")) k->fd = 0;
     else if ((k->fd = open(data, O_RDONLY | O_NONBLOCK | O_CLOEXEC)) < 0) {
         fprintf(stderr, "fixel-kiosk: %s: %s\n", data, strerror(errno));
+        return 1;
+    }
+    struct stat dst;
+    if (k->fd > 0 && fstat(k->fd, &dst) == 0 && S_ISDIR(dst.st_mode)) { /* exited 0 before */
+        fprintf(stderr, "fixel-kiosk: %s: is a directory\n", data);
+        close(k->fd);
         return 1;
     }
 
@@ -876,6 +944,17 @@ int main(int argc, char **argv)
     } else
         fcntl(k->fd, F_SETFL, fcntl(k->fd, F_GETFL) | O_NONBLOCK);
     if (fx_app_options_from_env(&o) < 0 || fx_app_open(&k->app, &o) < 0) return 1;
+    if (k->headless) {
+        /* fx_app_open blocks SIGINT/SIGTERM/SIGHUP for its signalfd, which
+         * only the main loop reads: the headless loop never does, so Ctrl-C
+         * and timeout(1) could not stop it (issue #26). Default action. */
+        sigset_t ss;
+        sigemptyset(&ss);
+        sigaddset(&ss, SIGINT);
+        sigaddset(&ss, SIGTERM);
+        sigaddset(&ss, SIGHUP);
+        sigprocmask(SIG_UNBLOCK, &ss, NULL);
+    }
     fx_app_size(k->app, &k->W, &k->H);
     k->full = 1;
 

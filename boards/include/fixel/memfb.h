@@ -4,6 +4,7 @@
 #define FIXEL_MEMFB_H
 
 #include <stdint.h>
+#include <stdio.h>
 #include "fixel/surface.h"
 
 typedef struct fx_memfb {
@@ -27,6 +28,11 @@ int fx_write_image(const char *path, const fx_surface *s);
 /* Read a PNG as 8-bit RGB (alpha dropped, palettes/grey expanded).
  * *rgb is malloc'd (w*h*3 bytes); the caller frees it. */
 int fx_read_png_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h);
+/* The same from an open file, with libpng's limits: at most max_side pixels
+ * a side and max_pixels in all (capped at 16384 and 2^26), ancillary chunks
+ * skipped unread, chunk allocations at most 8 MiB. -FX_EFBIG when too
+ * large, -FX_EBADMSG when not a PNG. Alpha is dropped, not composited. */
+int fx_read_png_rgb_stream(FILE *f, uint32_t max_side, size_t max_pixels, uint8_t **rgb, int32_t *w, int32_t *h);
 /* Read a binary PPM (P6, maxval 255) as 8-bit RGB; *rgb is malloc'd. */
 int fx_read_ppm_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h);
 /* Write 8-bit RGB data as a PNG (used for diff images). */

@@ -33,7 +33,8 @@ int fx_bezier_flatten(const int64_t *xy256, int n, uint32_t tol, fx_curve_point_
  * fx_bezier: n = degree + 1 control points (2..9).
  * fx_bspline: uniform cubic B-spline over n >= 4 control points (n - 3 pieces).
  * fx_spline: Catmull-Rom spline through n >= 2 points (end tangents by
- * repeating the end points). Return 0 or -FX_EINVAL (bad n). */
+ * repeating the end points). Return 0 or -FX_EINVAL (bad n).
+ * fx_bezier: c and xy must not be NULL (-FX_EINVAL). */
 int fx_bezier(const fx_ctx *c, const int32_t *xy, int n, uint32_t tol);
 int fx_bspline(const fx_ctx *c, const int32_t *xy, int n, uint32_t tol);
 int fx_spline(const fx_ctx *c, const int32_t *xy, int n, uint32_t tol);

@@ -48,7 +48,8 @@ typedef struct fx_ctx {
     void *trace_user;
 } fx_ctx;
 
-/* A context on s: clip = whole surface, colour opaque white, SRC blending. */
+/* A context on s: clip = whole surface, colour opaque white, SRC blending.
+ * c NULL: nothing happens; s NULL: an empty context that draws nothing. */
 void fx_ctx_init(fx_ctx *c, const fx_surface *s);
 void fx_ctx_set_color(fx_ctx *c, fx_color color);
 /* Clip to r intersected with the surface (r is half-open). */

@@ -143,11 +143,13 @@ void fx_fill_tri8(const fx_ctx *c, const fx8 *xy);
 /* Gouraud: colours col[i] (ARGB, alpha included) at the vertices, each
  * channel interpolated linearly and rounded to nearest; a pixel centre on a
  * vertex gets exactly that vertex's colour. Coverage as fx_fill_tri. The fill
- * style is ignored (the colours are the style); blending is honoured. */
+ * style is ignored (the colours are the style); blending is honoured.
+ * c, xy or col NULL: nothing is drawn. */
 void fx_fill_tri_gouraud(const fx_ctx *c, const int32_t *xy, const fx_color *col);
 void fx_fill_tri_gouraud8(const fx_ctx *c, const fx8 *xy, const fx_color *col);
 /* Convex polygon, Gouraud-shaded as the fan (v0, vi, vi+1): the fan's
- * triangles share edges, so every pixel is covered once. */
+ * triangles share edges, so every pixel is covered once. c, xy or col NULL,
+ * or n > INT32_MAX / 2: nothing is drawn. */
 void fx_fill_poly_gouraud(const fx_ctx *c, const int32_t *xy, const fx_color *col, int32_t n);
 
 /* ---- seed fills (seedfill.c) ----

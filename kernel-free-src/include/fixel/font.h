@@ -42,6 +42,12 @@ typedef struct fx_font {
     uint8_t version;      /* 1: PSF1, 2: PSF2, 0: the built-in font */
     uint16_t ascii[128];  /* glyph of each ASCII code, resolved at load */
     uint32_t fallback;    /* glyph for characters the font lacks */
+    /* The unicode-table index (fx_font_index), NULL until built: a bit per
+     * code point, the count of set bits before each 64-bit word, and the
+     * glyph of each set bit in code-point order. */
+    const uint64_t *ix_bits;
+    const uint32_t *ix_rank;
+    const uint16_t *ix_glyph;
 } fx_font;
 
 enum fx_text_clip { FX_TEXT_CLIP_PIXEL = 0, FX_TEXT_CLIP_CHAR = 1, FX_TEXT_CLIP_STRING = 2 };
@@ -67,6 +73,15 @@ typedef struct fx_text_style {
  *   -FX_EOVERFLOW the glyphs run past the end of the buffer (truncated) */
 int fx_font_load(fx_font *f, const void *data, size_t len);
 
+/* Index the unicode table once, so that each lookup is O(1) instead of a walk
+ * of the whole table (a 60 MiB table took 171 s to load, issue #26).
+ * fx_font_index_bytes(f): the memory the index may need (0: no table);
+ * fx_font_index(f, mem, size): builds it in mem (8-byte aligned, kept while
+ * the font is used) and returns 0, or -FX_EINVAL / -FX_ENOSPC (lookups then
+ * stay linear). Loading walks the table once either way. */
+size_t fx_font_index_bytes(const fx_font *f);
+int fx_font_index(fx_font *f, void *mem, size_t size);
+
 /* The built-in 6x10 font (constant data; never fails). */
 const fx_font *fx_font_builtin(void);
 
@@ -81,12 +96,14 @@ static inline const uint8_t *fx_font_row(const fx_font *f, uint32_t g, uint32_t 
 }
 
 /* Size in pixels of the box of utf8 drawn with style st (NULL: defaults):
- * the widest line times the number of lines. */
+ * the widest line times the number of lines. utf8 NULL is the empty text;
+ * w or h may be NULL. */
 void fx_text_extent(const fx_text_style *st, const char *utf8, int64_t *w, int64_t *h);
 
 /* Draw NUL-terminated UTF-8 text with c->text_style (NULL: built-in font,
  * scale 1, no background, per-pixel clipping). Malformed UTF-8 shows the
- * fallback glyph. Returns the number of characters drawn at least in part. */
+ * fallback glyph. Returns the number of characters drawn at least in part,
+ * or -FX_EINVAL when c or utf8 is NULL. */
 int fx_text(const fx_ctx *c, int32_t x, int32_t y, const char *utf8);
 
 #endif

@@ -55,7 +55,8 @@ typedef struct fx_fract_params {
 uint32_t fx_fractline(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
                       const fx_fract_params *p, uint32_t *state);
 /* A closed fractal coastline: each edge of the polygon xy[0..2n) gets a
- * fractal line, all from one random stream seeded with p->seed. */
+ * fractal line, all from one random stream seeded with p->seed. c, xy or p
+ * NULL, or n outside 1..INT32_MAX/2: nothing drawn, 0 returned. */
 uint32_t fx_coastline(const fx_ctx *c, const int32_t *xy, int n, const fx_fract_params *p);
 
 /* Diamond-square terrain on a (2^k + 1)^2 grid (k = 1..12) into h (row

@@ -149,7 +149,8 @@ int fx_line_style_is_plain(const fx_line_style *s);
 
 /* A polyline through n points (xy holds x0, y0, x1, y1, ...), in the
  * context's colour and line style; the shared vertex of two segments is lit
- * once (1 px) and thick segments meet with the style's join. */
+ * once (1 px) and thick segments meet with the style's join. c or xy NULL,
+ * or n outside 1..INT32_MAX/2: nothing is drawn. */
 void fx_polyline(const fx_ctx *c, const int32_t *xy, int n);
 
 /* The styled stroker behind fx_line (when a style is set), fx_polyline and

@@ -119,6 +119,56 @@ int fx_scene_arg_choice(fx_scene *sc, const char *const *choices);
 /* Take size bytes (8-byte aligned, zeroed) from the arena; NULL when full. */
 void *fx_scene_alloc(fx_scene *sc, size_t size);
 
+/* ---- the argument table (kernel-free-src/scene/scene_args.c) ----
+ * Every command declares the type and range of each argument, once. Before a
+ * command runs, its line is matched against its entry: a number of the right
+ * type outside its declared range, or a repetition beyond its count, is an
+ * error at that token naming the range ("expected 0..65535"); anything else
+ * (a missing or malformed argument) is left to the command's own messages.
+ * fixel-draw --commands prints the table; tests/corners generates its cases
+ * from it. */
+enum {
+    FX_ARG_END,    /* end of the entry */
+    FX_ARG_INT,    /* decimal integer, min..max */
+    FX_ARG_FX16,   /* decimal fraction as Q16.16; min/max are raw Q16.16 */
+    FX_ARG_FX56,   /* decimal fraction as Q8.56; min/max are raw Q8.56 */
+    FX_ARG_COLOR,  /* #RRGGBB or #AARRGGBB */
+    FX_ARG_WORD,   /* a bare word; name lists the choices, e.g. "evenodd|nonzero" */
+    FX_ARG_STRING, /* a double-quoted string */
+    FX_ARG_OPT,    /* the arguments after this mark may be left out */
+    FX_ARG_FORM,   /* starts an alternative form: name is its keyword, or NULL
+                    * for the form taken when the token is no keyword */
+    FX_ARG_REPEAT, /* the rest of the form repeats min..max times (max bounds the work) */
+};
+#define FX_ARG_WORK 1u     /* this argument bounds the work of the command */
+#define FX_ARG_OPEN_MIN 2u /* min itself is excluded: min < value <= max */
+
+typedef struct fx_scene_arg {
+    uint8_t type;
+    uint8_t flags;
+    const char *name;
+    int64_t min, max;
+} fx_scene_arg;
+
+typedef struct fx_scene_argspec {
+    const char *cmd;
+    const fx_scene_arg *args; /* FX_ARG_END-terminated */
+    const char *pre;          /* script lines a test must run first (state the command needs), or NULL */
+    const char *work;         /* the bound on the work no single argument sets, or NULL */
+} fx_scene_argspec;
+/* 3D commands (meshes, OBJ files) draw at most this many triangles each. */
+#define FX_SCENE_MAX_TRIANGLES 262144
+
+/* The whole table, NULL-terminated (cmd == NULL). */
+extern const fx_scene_argspec fx_scene_argspecs[];
+/* The entry of one command, or NULL. */
+const fx_scene_argspec *fx_scene_args_find(const char *cmd);
+/* "0..65535" or "-32768..32767.99998" for a numeric argument; the length. */
+int fx_scene_arg_range(const fx_scene_arg *a, char *buf, size_t size);
+/* Check the rest of the line against the command's entry (done by
+ * fx_scene_exec_line): 0, or the range error. */
+int fx_scene_check_args(fx_scene *sc, const fx_scene_argspec *spec);
+
 /* Every command, for --help and docs; NULL-terminated tables. */
 extern const fx_scene_cmd *const fx_scene_tables[];
 const fx_scene_cmd *fx_scene_find(const char *name, size_t len);

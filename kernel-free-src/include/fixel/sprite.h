@@ -54,7 +54,8 @@ fx_rect fx_sprite_phys_rect(const fx_surface *dst, int rotation, const fx_sprite
 
 /* Save the pixels under the sprite into sv (which must be empty: restore
  * first), then draw it. Returns 0, or -FX_ENOSPC when sv->cap is too small
- * or -FX_EINVAL for a bad sprite or rotation (nothing drawn, sv left empty). */
+ * or -FX_EINVAL for a bad sprite or rotation (nothing drawn, sv left empty),
+ * or a NULL dst, s or sv. */
 int fx_sprite_draw(const fx_surface *dst, int rotation, const fx_sprite *s, int32_t x, int32_t y,
                    fx_sprite_save *sv);
 

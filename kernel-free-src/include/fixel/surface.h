@@ -69,11 +69,14 @@ typedef struct fx_rect {
 const fx_format_info *fx_format_get(fx_format f);
 /* Case-insensitive lookup by name; returns FX_FMT_COUNT when unknown. */
 fx_format fx_format_from_name(const char *name);
-/* Smallest stride in bytes for w pixels (MONO1 rounds up to whole bytes). */
+/* Smallest stride in bytes for w pixels (MONO1 rounds up to whole bytes);
+ * INT32_MAX when it does not fit. */
 int32_t fx_format_min_stride(fx_format f, int32_t w);
 
-/* Wrap caller memory. Returns 0 or -FX_EINVAL (bad size, stride too small,
- * unknown format, NULL pixels). */
+/* Wrap caller memory. Preconditions, each checked (-FX_EINVAL): s and pixels
+ * not NULL, w and h >= 1, a known format, |stride| at least the row size
+ * computed in 64 bits (fx_format_min_stride), and stride and pixels aligned
+ * to the format's word size. */
 int fx_surface_init(fx_surface *s, void *pixels, int32_t w, int32_t h, int32_t stride,
                     fx_format format);
 /* A view of a rectangle of s sharing its pixels; the rectangle is clipped to
@@ -104,7 +107,8 @@ void fx_surface_clear(const fx_surface *s, fx_color c);
 
 /* Copy src (any format) onto dst at (dx, dy), clipped to dst, converting
  * through fx_unpack/fx_pack. Same-format copies are plain row copies.
- * Overlapping memory is handled (rows are moved in a safe order). */
+ * Overlapping memory is handled (rows are moved in a safe order). dst or src
+ * NULL: nothing is copied. */
 void fx_blit(const fx_surface *dst, int32_t dx, int32_t dy, const fx_surface *src);
 
 /* Convert one row of w pixels to 8-bit RGB triplets (for PNG/PPM output). */

@@ -1,0 +1,297 @@
+/* fixel — the argument table of the scene-script language (issue #26).
+ *
+ * One entry per command: the type and range of every argument, and where an
+ * argument sets the amount of work (iterations, points, vertices), a range
+ * that bounds it. fx_scene_exec_line checks each line against its entry
+ * before the command runs (fx_scene_check_args in scene.c), fixel-draw
+ * --commands prints it, and tests/corners generates its cases from it: a
+ * command without an entry fails that test.
+ *
+ * Ranges are chosen so that every value inside them runs without overflow:
+ * 2D coordinates take all of int32 (the rasterisers clip in wide
+ * arithmetic), sizes that set the work stay within 2^20, 3D geometry within
+ * +-1024 units, fractal views within the Q8.56 limits the iteration needs. */
+#include "fixel/scene.h"
+#include "fixel/fixed.h"
+#include "fixel/fractal.h"
+#include "fixel/ifs.h"
+#include "fixel/line.h"
+#include "fixel/render3d.h"
+#include "fixel/texture.h"
+#include "fixel/curve.h"
+#include "fixel/mesh.h"
+
+#define CO 1048576 /* coordinate bound, 2^20 */
+#define G3 1024    /* 3D geometry bound */
+
+#define I(n, lo, hi) {FX_ARG_INT, 0, n, lo, hi}
+#define IW(n, lo, hi) {FX_ARG_INT, FX_ARG_WORK, n, lo, hi}
+#define XY(n) I(n, INT32_MIN, INT32_MAX)
+#define LEN(n) I(n, 0, INT32_MAX)
+#define F(n, lo, hi) {FX_ARG_FX16, 0, n, (int64_t)(lo) * 65536, (int64_t)(hi) * 65536}
+#define FR(n, lo, hi) {FX_ARG_FX16, 0, n, lo, hi} /* raw Q16.16 bounds */
+#define FALL(n) FR(n, INT32_MIN, INT32_MAX)
+#define DEG(n) F(n, -32768, 32767)
+#define P3(n) F(n, -G3, G3)
+#define Q(n, lo, hi) {FX_ARG_FX56, 0, n, (int64_t)(lo) * FX56_ONE, (int64_t)(hi) * FX56_ONE}
+#define C(n) {FX_ARG_COLOR, 0, n, 0, 0}
+#define W(n) {FX_ARG_WORD, 0, n, 0, 0}
+#define S(n) {FX_ARG_STRING, 0, n, 0, 0}
+#define OPT {FX_ARG_OPT, 0, 0, 0, 0}
+#define FORM(k) {FX_ARG_FORM, 0, k, 0, 0}
+#define REP(n, lo, hi) {FX_ARG_REPEAT, FX_ARG_WORK, n, lo, hi}
+#define END {FX_ARG_END, 0, 0, 0, 0}
+#define A(name, ...) static const fx_scene_arg a_##name[] = {__VA_ARGS__, END}
+#define NONE(name) static const fx_scene_arg a_##name[] = {END}
+
+/* ---- core ---- */
+A(size, I("W", 1, 16384), I("H", 1, 16384));
+A(format, W("XRGB8888|ARGB8888|XBGR8888|RGB565|BGR565|RGB888|BGR888|GRAY8|MONO1"));
+A(clear, C("COLOR"));
+A(color, C("COLOR"));
+A(pixel, XY("X"), XY("Y"));
+A(rect, XY("X"), XY("Y"), XY("W"), XY("H"));
+A(line4, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"));
+NONE(none);
+/* ---- raster ---- */
+A(points1, REP("point", 1, 256), XY("X"), XY("Y"));
+A(bezier, REP("control point", 3, FX_BEZIER_MAX_POINTS), XY("X"), XY("Y"));
+A(points4, REP("control point", 4, 256), XY("X"), XY("Y"));
+A(points2, REP("point", 2, 256), XY("X"), XY("Y"));
+A(linestyle, W("solid|dashed|dotted|dashdot|BITS"), OPT, I("UNIT", 0, 65535), I("PHASE", 0, INT32_MAX));
+A(linewidth, IW("W", 1, FX_LINE_MAX_WIDTH));
+A(linecap, W("butt|square|round"));
+A(linejoin, W("miter|round|bevel"), OPT, F("LIMIT", 1, 32767));
+A(curvetol, I("T", 1, 65536));
+/* ---- conic ---- */
+A(circle, XY("CX"), XY("CY"), LEN("R"));
+A(arc, XY("CX"), XY("CY"), LEN("R"), DEG("START"), DEG("END"));
+A(ellipse, XY("CX"), XY("CY"), LEN("RX"), LEN("RY"));
+/* ---- text ---- */
+A(font, FORM("builtin"), FORM(0), S("PATH"));
+A(text, XY("X"), XY("Y"), S("STRING"));
+A(textclip, W("pixel|char|string"));
+A(textscale, I("N", 1, 256));
+A(textbg, FORM("none"), FORM(0), C("COLOR"));
+/* ---- clip and transforms ---- */
+A(clip, FORM("off"), FORM("pop"), FORM("push"), XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), FORM(0), XY("X0"),
+  XY("Y0"), XY("X1"), XY("Y1"));
+A(cliplines, W("direct|cohen|liang|nln"));
+A(exterior, FORM("on"), FORM("off"), FORM(0), XY("X0"), XY("Y0"), XY("X1"), XY("Y1"));
+A(clippoly, W("sh|wa"), W("fill|outline"), REP("vertex", 3, 64), FALL("X"), FALL("Y"));
+A(xpoly, W("fill|outline|open"), REP("vertex", 2, 1024), FALL("X"), FALL("Y"));
+A(translate, FALL("TX"), FALL("TY"));
+A(scale, F("SX", -1024, 1024), OPT, F("SY", -1024, 1024), FALL("PX"), FALL("PY"));
+A(rotate, DEG("DEGREES"), OPT, FALL("PX"), FALL("PY"));
+A(shear, W("x|y"), F("SH", -1024, 1024), OPT, FALL("REF"));
+A(reflect, FORM("x"), FORM("y"), FORM("origin"), FORM("diagonal"), FORM("line"), FALL("X0"), FALL("Y0"),
+  FALL("X1"), FALL("Y1"));
+A(window, FALL("WX0"), FALL("WY0"), FALL("WX1"), FALL("WY1"));
+A(viewport, FORM("off"), FORM(0), XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), OPT, W("aspect"));
+/* ---- fill ---- */
+A(gradient, FORM("off"), FORM("linear"), XY("X0"), XY("Y0"), XY("X1"), XY("Y1"),
+  REP("colour stop", 2, FX_GRADIENT_MAX_STOPS), C("COLOR"), FORM("radial"), XY("CX"), XY("CY"), I("R", 1, CO),
+  REP("colour stop", 2, FX_GRADIENT_MAX_STOPS), C("COLOR"));
+A(proctex, FORM("off"), FORM(0), W("fakesphere|noise|turbulence|wood|marble"), XY("X0"), XY("Y0"),
+  I("SIZE", 1, CO), C("C0"), C("C1"), OPT, I("SEED", INT32_MIN, INT32_MAX));
+A(texture, FORM("filter"), W("nearest|bilinear"), FORM("wrap"), W("repeat|clamp"), FORM("checker"),
+  I("W", 1, 256), I("H", 1, 256), I("CELL", 1, 256), C("C0"), C("C1"), FORM(0),
+  W("fakesphere|noise|turbulence|wood|marble"), I("W", 1, 256), I("H", 1, 256), C("C0"), C("C1"), OPT,
+  I("SEED", INT32_MIN, INT32_MAX));
+A(textri, XY("X0"), XY("Y0"), FALL("S0"), FALL("T0"), XY("X1"), XY("Y1"), FALL("S1"), FALL("T1"), XY("X2"),
+  XY("Y2"), FALL("S2"), FALL("T2"));
+A(texpoly, REP("vertex", 3, 64), XY("X"), XY("Y"), FALL("S"), FALL("T"));
+A(texstyle, FORM("off"), FORM(0), XY("X0"), XY("Y0"), I("SIZE", 1, 65536));
+A(flood, XY("X"), XY("Y"), I("CONN", 4, 8));
+A(boundaryfill, XY("X"), XY("Y"), C("BOUNDARY"), I("CONN", 4, 8));
+A(fillpoly, W("evenodd|nonzero"), REP("vertex", 3, 1024), XY("X"), XY("Y"));
+A(fillpolyf, W("evenodd|nonzero"), REP("vertex", 3, 1024), F("X", -32768, 32767), F("Y", -32768, 32767));
+A(polygon, REP("vertex", 2, 1024), XY("X"), XY("Y"));
+A(filltri, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), XY("X2"), XY("Y2"));
+A(gouraudtri, XY("X0"), XY("Y0"), C("C0"), XY("X1"), XY("Y1"), C("C1"), XY("X2"), XY("Y2"), C("C2"));
+A(gouraudpoly, REP("vertex", 3, 1024), XY("X"), XY("Y"), C("C"));
+A(blend, W("src|over"));
+A(pattern, FORM("off"), FORM("bg"), C("COLOR|none"), FORM("anchor"), XY("X"), XY("Y"), FORM(0), I("W", 1, 32),
+  I("H", 1, 32), REP("row", 1, 32), W("HEXROW"));
+/* ---- fractal ---- */
+A(colormap, W("grey|hot|viridis|hsv|w9"), OPT, I("PERIOD", 1, 1048576));
+A(mandelbrot, Q("CRE", -16, 16), Q("CIM", -16, 16), {FX_ARG_FX56, FX_ARG_OPEN_MIN, "WIDTH", 0, 16 * FX56_ONE},
+  IW("MAXITER", 1, FX_FRACTAL_MAX_ITER));
+A(julia, Q("CRE", -16, 16), Q("CIM", -16, 16), Q("CX", -16, 16), Q("CY", -16, 16),
+  {FX_ARG_FX56, FX_ARG_OPEN_MIN, "WIDTH", 0, 16 * FX56_ONE}, IW("MAXITER", 1, FX_FRACTAL_MAX_ITER));
+A(koch, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), IW("ORDER", 0, 1000));
+A(snowflake, XY("CX"), XY("CY"), I("R", 0, CO), IW("ORDER", 0, 1000));
+A(fractline, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), F("BETA", 0, 3), F("SD", 0, 1),
+  I("SEED", INT32_MIN, INT32_MAX));
+A(coastline, F("BETA", 0, 3), F("SD", 0, 1), I("SEED", INT32_MIN, INT32_MAX), REP("vertex", 3, 32), XY("X"),
+  XY("Y"));
+A(spacefill, XY("X"), XY("Y"), I("SIZE", 1, CO), IW("ORDER", 0, 1000));
+A(ifsmap, F("A", -1024, 1024), F("B", -1024, 1024), F("C", -1024, 1024), F("D", -1024, 1024),
+  F("E", -1024, 1024), F("F", -1024, 1024), F("P", 0, 1));
+A(ifswindow, FALL("X0"), FALL("Y0"), FALL("X1"), FALL("Y1"));
+A(ifs, W("sierpinski|fern|user"), FORM("chaos"), XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO),
+  IW("NPOINTS", 0, 4000000), I("SEED", INT32_MIN, INT32_MAX), FORM("copier"), XY("X"), XY("Y"), I("W", 1, CO),
+  I("H", 1, CO), IW("DEPTH", 0, 20));
+A(fern, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("NPOINTS", 0, 4000000),
+  I("SEED", INT32_MIN, INT32_MAX));
+/* ---- viz ---- */
+A(field, FORM("terrain"), IW("GW", 2, 1025), IW("GH", 2, 1025), I("SEED", INT32_MIN, INT32_MAX), OPT,
+  F("ROUGH", 0, 1), FORM(0), W("waves|peaks"), IW("GW", 2, 1025), IW("GH", 2, 1025));
+A(vfield, W("vortex|saddle|swirl|dipole"), IW("GW", 2, 1025), IW("GH", 2, 1025));
+A(heatmap, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), OPT, I("LO", INT32_MIN, INT32_MAX),
+  I("HI", INT32_MIN, INT32_MAX));
+A(colorbar, XY("X"), XY("Y"), I("W", 1, INT32_MAX), I("H", 1, INT32_MAX), OPT, IW("TICKS", 0, 100));
+A(contour, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("N", 1, 64), OPT, REP("level", 0, 64),
+  I("LEVEL", INT32_MIN, INT32_MAX));
+A(quiver, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), OPT, IW("STEP", 1, CO));
+A(stream, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("N", 1, 64));
+/* ---- 3D ---- */
+A(viewport3d, XY("X"), XY("Y"), I("W", 1, 16384), I("H", 1, 16384));
+A(depth, W("16|32|off"));
+A(painter, OPT, IW("MAXTRIANGLES", 1, 1048576));
+A(camera, P3("EX"), P3("EY"), P3("EZ"), P3("LX"), P3("LY"), P3("LZ"), P3("UX"), P3("UY"), P3("UZ"));
+A(slide, P3("DU"), P3("DV"), P3("DN"));
+A(deg, DEG("DEG"));
+A(perspective, F("FOVY", -32768, 32767), P3("NEAR"), P3("FAR"));
+A(ortho, P3("L"), P3("R"), P3("B"), P3("T"), P3("NEAR"), P3("FAR"));
+A(oblique, W("cavalier|cabinet"), DEG("ALPHA"), P3("L"), P3("R"), P3("B"), P3("T"), P3("NEAR"), P3("FAR"), OPT,
+  P3("PLANE"));
+A(translate3d, P3("X"), P3("Y"), P3("Z"));
+A(scale3d, F("SX", -1024, 1024), OPT, F("SY", -1024, 1024), F("SZ", -1024, 1024));
+A(rotate3d, DEG("DEG"), P3("AX"), P3("AY"), P3("AZ"));
+A(shear3d, F("A", -1024, 1024), F("B", -1024, 1024));
+A(reflect3d, P3("NX"), P3("NY"), P3("NZ"), P3("D"));
+A(light, I("N", 0, FX3D_MAX_LIGHTS - 1), FORM("off"), FORM("directional"), P3("X"), P3("Y"), P3("Z"), C("COLOR"),
+  FORM("point"), P3("X"), P3("Y"), P3("Z"), C("COLOR"), FORM("spot"), P3("X"), P3("Y"), P3("Z"), P3("DX"),
+  P3("DY"), P3("DZ"), F("CUTOFF", 0, 90), F("EXPONENT", 0, 128), C("COLOR"));
+A(material, C("AMB"), C("DIFF"), C("SPEC"), I("SHININESS", 0, 128), OPT, C("EMISSION"));
+A(shading, W("flat|gouraud|phong"));
+A(cull, W("none|back|front"));
+A(polymode, W("fill|wire|hidden"));
+A(size3, P3("SIZE"));
+A(sphere, P3("R"), IW("SLICES", 0, FX_MESH_MAX_SEG), IW("STACKS", 0, FX_MESH_MAX_SEG));
+A(ellipsoid, P3("RX"), P3("RY"), P3("RZ"), IW("SLICES", 0, FX_MESH_MAX_SEG), IW("STACKS", 0, FX_MESH_MAX_SEG));
+A(torus, P3("R"), P3("r"), IW("SIDES", 0, FX_MESH_MAX_SEG), IW("RINGS", 0, FX_MESH_MAX_SEG));
+A(cone, P3("R"), P3("H"), IW("SLICES", 0, FX_MESH_MAX_SEG));
+A(sizen, P3("SIZE"), IW("N", 0, FX_MESH_MAX_SEG));
+A(obj, S("FILE"));
+A(shadowplane, FORM("off"), FORM(0), P3("A"), P3("B"), P3("C"), P3("D"), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1),
+  C("COLOR"));
+A(shadowmap, FORM("end"), FORM("off"), FORM("begin"), IW("SIZE", 16, 4096), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1),
+  P3("TX"), P3("TY"), P3("TZ"), F("FOV", -32768, 32767), P3("NEAR"), P3("FAR"));
+
+#define TRIS "at most 262144 triangles (FX_SCENE_MAX_TRIANGLES)"
+#define TEX "texture checker 8 8 2 #000000 #FFFFFF"
+#define L3 "light 0 point 0 6 0 #FFFFFF"
+
+const fx_scene_argspec fx_scene_argspecs[] = {
+    {"size", a_size, 0, 0}, {"format", a_format, 0, 0}, {"clear", a_clear, 0, 0}, {"color", a_color, 0, 0},
+    {"pixel", a_pixel, 0, 0}, {"rect", a_rect, 0, 0}, {"fillrect", a_rect, 0, 0}, {"line", a_line4, 0, 0},
+    {"present", a_none, 0, 0},
+    {"dda", a_line4, 0, 0}, {"aaline", a_line4, 0, 0}, {"polyline", a_points1, 0, 0}, {"bezier", a_bezier, 0, 0},
+    {"bspline", a_points4, 0, 0}, {"spline", a_points2, 0, 0}, {"linestyle", a_linestyle, 0, 0},
+    {"linewidth", a_linewidth, 0, 0}, {"linecap", a_linecap, 0, 0}, {"linejoin", a_linejoin, 0, 0},
+    {"curvetol", a_curvetol, 0, 0},
+    {"circle", a_circle, 0, 0}, {"disc", a_circle, 0, 0}, {"arc", a_arc, 0, 0}, {"pie", a_arc, 0, 0},
+    {"aacircle", a_circle, 0, 0}, {"ellipse", a_ellipse, 0, 0}, {"fillellipse", a_ellipse, 0, 0},
+    {"font", a_font, 0, 0}, {"text", a_text, 0, 0}, {"textclip", a_textclip, 0, 0}, {"textscale", a_textscale, 0, 0},
+    {"textbg", a_textbg, 0, 0},
+    {"clip", a_clip, 0, 0}, {"cliplines", a_cliplines, 0, 0}, {"exterior", a_exterior, 0, 0},
+    {"clippoly", a_clippoly, 0, 0}, {"xpoly", a_xpoly, 0, 0}, {"push", a_none, 0, 0}, {"pop", a_none, "push", 0},
+    {"identity", a_none, 0, 0}, {"translate", a_translate, 0, 0}, {"scale", a_scale, 0, 0}, {"rotate", a_rotate, 0, 0},
+    {"shear", a_shear, 0, 0}, {"reflect", a_reflect, 0, 0}, {"window", a_window, 0, 0},
+    {"viewport", a_viewport, "window 0 0 10 10", 0},
+    {"gradient", a_gradient, 0, 0}, {"proctex", a_proctex, 0, 0}, {"texture", a_texture, 0, 0},
+    {"textri", a_textri, TEX, 0}, {"texpoly", a_texpoly, TEX, 0}, {"texstyle", a_texstyle, TEX, 0},
+    {"flood", a_flood, 0, 0}, {"boundaryfill", a_boundaryfill, 0, 0}, {"fillpoly", a_fillpoly, 0, 0},
+    {"fillpolyf", a_fillpolyf, 0, 0}, {"polygon", a_polygon, 0, 0}, {"filltri", a_filltri, 0, 0},
+    {"gouraudtri", a_gouraudtri, 0, 0}, {"gouraudpoly", a_gouraudpoly, 0, 0}, {"blend", a_blend, 0, 0},
+    {"pattern", a_pattern, 0, 0},
+    {"colormap", a_colormap, 0, 0}, {"insidecolor", a_color, 0, 0}, {"mandelbrot", a_mandelbrot, 0, 0},
+    {"julia", a_julia, 0, 0}, {"koch", a_koch, 0, 0}, {"snowflake", a_snowflake, 0, 0}, {"fractline", a_fractline, 0, 0},
+    {"coastline", a_coastline, 0, 0}, {"hilbert", a_spacefill, 0, 0}, {"peano", a_spacefill, 0, 0},
+    {"ifsmap", a_ifsmap, 0, 0}, {"ifswindow", a_ifswindow, 0, 0},
+    {"ifs", a_ifs, "ifsmap 0.5 0 0 0.5 0 0 0.5\nifsmap 0.5 0 0 0.5 0.5 0 0.5\nifswindow 0 0 1 1", 0},
+    {"fern", a_fern, 0, 0},
+    {"field", a_field, 0, 0}, {"vfield", a_vfield, 0, 0}, {"heatmap", a_heatmap, "field waves 8 8", 0},
+    {"colorbar", a_colorbar, 0, 0}, {"contour", a_contour, "field waves 8 8", 0},
+    {"quiver", a_quiver, "vfield vortex 8 8", 0}, {"stream", a_stream, "vfield vortex 8 8", 0},
+    {"viewport3d", a_viewport3d, 0, 0}, {"depth", a_depth, 0, 0}, {"cleardepth", a_none, 0, 0},
+    {"painter", a_painter, 0, 0}, {"flush", a_none, 0, 0}, {"camera", a_camera, 0, 0}, {"slide", a_slide, 0, 0},
+    {"roll", a_deg, 0, 0}, {"pitch", a_deg, 0, 0}, {"yaw", a_deg, 0, 0}, {"perspective", a_perspective, 0, 0},
+    {"ortho", a_ortho, 0, 0}, {"oblique", a_oblique, 0, 0}, {"identity3d", a_none, 0, 0}, {"push3d", a_none, 0, 0},
+    {"pop3d", a_none, "push3d", 0}, {"translate3d", a_translate3d, 0, 0}, {"scale3d", a_scale3d, 0, 0},
+    {"rotate3d", a_rotate3d, 0, 0}, {"rotatex", a_deg, 0, 0}, {"rotatey", a_deg, 0, 0}, {"rotatez", a_deg, 0, 0},
+    {"shear3d", a_shear3d, 0, 0}, {"reflect3d", a_reflect3d, 0, 0}, {"light", a_light, 0, 0},
+    {"ambient", a_color, 0, 0}, {"material", a_material, 0, 0}, {"shading", a_shading, 0, 0}, {"cull", a_cull, 0, 0},
+    {"polymode", a_polymode, 0, 0}, {"background", a_color, 0, 0}, {"cube", a_size3, 0, TRIS},
+    {"tetrahedron", a_size3, 0, TRIS}, {"octahedron", a_size3, 0, TRIS}, {"dodecahedron", a_size3, 0, TRIS},
+    {"icosahedron", a_size3, 0, TRIS}, {"sphere", a_sphere, 0, TRIS}, {"ellipsoid", a_ellipsoid, 0, TRIS},
+    {"torus", a_torus, 0, TRIS}, {"cone", a_cone, 0, TRIS}, {"cylinder", a_cone, 0, TRIS}, {"teapot", a_sizen, 0, TRIS},
+    {"floor", a_sizen, 0, TRIS}, {"obj", a_obj, 0, TRIS}, {"shadowplane", a_shadowplane, L3, 0},
+    {"shadowmap", a_shadowmap, L3, 0},
+    {0, 0, 0, 0},
+};
+
+const fx_scene_argspec *fx_scene_args_find(const char *cmd)
+{
+    for (const fx_scene_argspec *s = fx_scene_argspecs; s->cmd; s++) {
+        const char *a = s->cmd, *b = cmd;
+        while (*a && *a == *b)
+            a++, b++;
+        if (!*a && !*b)
+            return s;
+    }
+    return 0;
+}
+
+/* A raw fixed-point value with `shift` fraction bits as a decimal: the
+ * integer part, then up to 5 fraction digits (truncated toward zero). */
+static int fixed_text(char *buf, size_t size, int64_t raw, unsigned shift)
+{
+    uint64_t m = raw < 0 ? 0 - (uint64_t)raw : (uint64_t)raw;
+    uint64_t ip = m >> shift, fr = m & (((uint64_t)1 << shift) - 1);
+    if (shift > 24) { /* keep fr * 100000 inside 64 bits */
+        fr >>= shift - 24;
+        shift = 24;
+    }
+    uint64_t d = (fr * 100000u) >> shift;
+    int n = fx_fmt(buf, size, "%s%llu", raw < 0 ? "-" : "", (unsigned long long)ip);
+    if ((size_t)n >= size)
+        return (int)size - 1;
+    if (d) {
+        char f[8];
+        int k = 5;
+        f[k] = 0;
+        while (k--) {
+            f[k] = (char)('0' + d % 10);
+            d /= 10;
+        }
+        k = 5;
+        while (k > 1 && f[k - 1] == '0')
+            f[--k] = 0;
+        n += fx_fmt(buf + n, size - (size_t)n, ".%s", f);
+    }
+    return n;
+}
+
+int fx_scene_arg_range(const fx_scene_arg *a, char *buf, size_t size)
+{
+    if (!size)
+        return 0;
+    buf[0] = 0;
+    if (a->type == FX_ARG_INT || a->type == FX_ARG_REPEAT)
+        return fx_fmt(buf, size, "%lld..%lld", (long long)a->min, (long long)a->max);
+    if (a->type != FX_ARG_FX16 && a->type != FX_ARG_FX56)
+        return 0;
+    unsigned shift = a->type == FX_ARG_FX16 ? 16 : FX56_SHIFT;
+    int open = a->flags & FX_ARG_OPEN_MIN;
+    size_t n = open ? (size_t)fx_fmt(buf, size, "more than ") : 0;
+    if (n < size)
+        n += (size_t)fixed_text(buf + n, size - n, a->min, shift);
+    if (n < size)
+        n += (size_t)fx_fmt(buf + n, size - n, open ? ", at most " : "..");
+    if (n < size)
+        n += (size_t)fixed_text(buf + n, size - n, a->max, shift);
+    return n < size ? (int)n : (int)size - 1;
+}

@@ -1,0 +1,26 @@
+# Corner tests generated from the scene-script argument table (issue #26):
+# tests/corners/corners.c. `make test-corners` runs the plain and the
+# ASan+UBSan build; both are suites of `make test`.
+$(BUILD)/tests/corners: $(BUILD)/obj/tests/corners/corners.o $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $< $(LIB_A) $(LDLIBS)
+
+test-corners:
+	@$(MAKE) --no-print-directory -s build/tests/corners
+	@$(MAKE) --no-print-directory -s SAN=1 build/asan/tests/corners
+	@build/tests/corners && build/asan/tests/corners
+
+TEST_SUITES += "$(MAKE) --no-print-directory -s build/tests/corners && build/tests/corners" \
+               "$(MAKE) --no-print-directory -s SAN=1 build/asan/tests/corners && build/asan/tests/corners"
+
+.PHONY: test-corners
+
+# The API corner test (tests/corners/api.c): public functions with NULL and
+# extreme values on surfaces between guard pages.
+$(BUILD)/obj/tests/corners/api.o: BASEFLAGS += -Itests/fuzz
+$(BUILD)/tests/api-corners: $(BUILD)/obj/tests/corners/api.o $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $< $(LIB_A) $(LDLIBS)
+
+TEST_SUITES += "$(MAKE) --no-print-directory -s build/tests/api-corners && build/tests/api-corners" \
+               "$(MAKE) --no-print-directory -s SAN=1 build/asan/tests/api-corners && build/asan/tests/api-corners"

@@ -1,0 +1,246 @@
+/* libFuzzer target (issue #26): a structure-aware generator for scene
+ * scripts, driven by the argument table. The input bytes are read as a
+ * stream of choices: which command (of fx_scene_argspecs), which form, how
+ * many repetitions, and for each argument a value class: one of its corners
+ * (min, max, 0, +-1, one past each bound, near 2^15, 2^16, 2^24, 2^31,
+ * 2^63) or a random value inside its range. Every generated line is thus a
+ * valid command with a hostile argument, what byte-level mutation of
+ * scripts rarely forms. Set-up lines of an entry (pre) come first.
+ * Surfaces are capped at 128x128 between guard pages, as fuzz_scene.c.
+ * FUZZ_GRAMMAR_PRINT=1 prints each generated script (triage of a crash or
+ * timeout: run the target on the artifact). */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fixel/error.h"
+#include "fixel/scene.h"
+#include "guard.h"
+
+static guarded g;
+static int have;
+static const uint8_t font_file[] = {0x36, 0x04, 0x00, 0x08, 0xFF, 0x81, 0x81, 0x81, 0x81, 0x81, 0x81, 0xFF};
+
+static int make_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
+{
+    (void)u;
+    if (w > 128 || h > 128)
+        return -FX_ENOMEM;
+    if (guarded_make(&g, w, h, f, (w + h) & 1) < 0)
+        return -FX_ENOMEM;
+    have = 1;
+    *out = g.s;
+    return 0;
+}
+
+static int load_file(void *u, const char *path, const uint8_t **data, size_t *len)
+{
+    (void)u;
+    if (!strcmp(path, "missing"))
+        return -FX_ENOENT;
+    *data = font_file;
+    *len = sizeof font_file;
+    return 0;
+}
+
+typedef struct in {
+    const uint8_t *p;
+    size_t n;
+} in;
+
+static uint32_t take(in *s, int bytes)
+{
+    uint32_t v = 0;
+    for (int i = 0; i < bytes; i++) {
+        v = v << 8 | (s->n ? *s->p : 0);
+        if (s->n)
+            s->p++, s->n--;
+    }
+    return v;
+}
+
+typedef struct out {
+    char *b;
+    size_t n, cap;
+} out;
+
+static void put(out *o, const char *s)
+{
+    size_t k = strlen(s);
+    if (o->n + k + 1 < o->cap) {
+        memcpy(o->b + o->n, s, k);
+        o->n += k;
+        o->b[o->n] = 0;
+    }
+}
+
+/* Exact decimal of raw / 2^shift (up to 20 fraction digits). */
+static void fixed(char *buf, size_t size, int64_t raw, unsigned shift)
+{
+    uint64_t m = raw < 0 ? 0 - (uint64_t)raw : (uint64_t)raw;
+    uint64_t ip = m >> shift, fr = m & (((uint64_t)1 << shift) - 1);
+    int n = snprintf(buf, size, "%s%llu", raw < 0 ? "-" : "", (unsigned long long)ip);
+    if (fr && (size_t)n + 2 < size) {
+        buf[n++] = '.';
+        for (int d = 0; fr && d < 20 && (size_t)n + 1 < size; d++) {
+            fr *= 10;
+            buf[n++] = (char)('0' + (fr >> shift));
+            fr &= ((uint64_t)1 << shift) - 1;
+        }
+        buf[n] = 0;
+    }
+}
+
+static void value(in *s, const fx_scene_arg *a, char *t, size_t size)
+{
+    static const char *const big[] = {"9223372036854775807", "-9223372036854775808", "99999999999999999999",
+                                      "2147483648", "-2147483649", "65536", "32768", "-32769", "16777216"};
+    uint32_t cls = take(s, 1);
+    switch (a->type) {
+    case FX_ARG_INT:
+    case FX_ARG_FX16:
+    case FX_ARG_FX56: {
+        unsigned sh = a->type == FX_ARG_INT ? 0 : a->type == FX_ARG_FX16 ? 16 : 56;
+        int64_t v;
+        switch (cls % 12) {
+        case 0: v = a->min; break;
+        case 1: v = a->max; break;
+        case 2: v = 0; break;
+        case 3: v = (int64_t)1 << sh; break;
+        case 4: v = -((int64_t)1 << sh); break;
+        case 5: v = a->min > INT64_MIN ? a->min - 1 : a->min; break;
+        case 6: v = a->max < INT64_MAX ? a->max + 1 : a->max; break;
+        case 7: snprintf(t, size, "%s", big[take(s, 1) % (sizeof big / sizeof big[0])]); return;
+        default: { /* inside the range, spread over its magnitude */
+            uint64_t span = (uint64_t)a->max - (uint64_t)a->min;
+            uint64_t r = (uint64_t)take(s, 4) << 32 | take(s, 4);
+            unsigned bits = take(s, 1) % 64;
+            r &= bits == 63 ? ~(uint64_t)0 : (((uint64_t)1 << (bits + 1)) - 1);
+            v = (int64_t)((uint64_t)a->min + (span == UINT64_MAX ? r : r % (span + 1)));
+        }
+        }
+        if (sh)
+            fixed(t, size, v, sh);
+        else
+            snprintf(t, size, "%lld", (long long)v);
+        return;
+    }
+    case FX_ARG_COLOR: snprintf(t, size, "#%08X", take(s, 4)); return;
+    case FX_ARG_STRING: snprintf(t, size, cls & 1 ? "\"missing\"" : "\"x\""); return;
+    case FX_ARG_WORD: { /* one of the alternatives */
+        const char *p = a->name;
+        uint32_t k = cls, alts = 1;
+        for (const char *q = p; *q; q++)
+            alts += *q == '|';
+        k %= alts;
+        while (k && *p)
+            k -= *p++ == '|';
+        size_t i = 0;
+        while (p[i] && p[i] != '|' && i + 1 < size) {
+            t[i] = p[i];
+            i++;
+        }
+        t[i] = 0;
+        return;
+    }
+    default: t[0] = 0;
+    }
+}
+
+static void gen_line(in *s, out *o)
+{
+    static int ncmd;
+    if (!ncmd)
+        while (fx_scene_argspecs[ncmd].cmd)
+            ncmd++;
+    const fx_scene_argspec *sp = &fx_scene_argspecs[take(s, 2) % (uint32_t)ncmd];
+    if (sp->pre && (take(s, 1) & 3)) {
+        put(o, sp->pre);
+        put(o, "\n");
+    }
+    const fx_scene_arg *forms[32];
+    int nf = 0;
+    for (const fx_scene_arg *a = sp->args; a->type != FX_ARG_END; a++)
+        if (a->type == FX_ARG_FORM && nf < 32)
+            forms[nf++] = a;
+    const fx_scene_arg *form = nf ? forms[take(s, 1) % (uint32_t)nf] : NULL;
+    put(o, sp->cmd);
+    char t[96];
+    const fx_scene_arg *a = sp->args;
+    for (int part = 0; part < 2; part++) {
+        if (part == 1) {
+            if (!form)
+                break;
+            if (form->name) {
+                put(o, " ");
+                put(o, form->name);
+            }
+            a = form + 1;
+        }
+        for (; a->type != FX_ARG_END && a->type != FX_ARG_FORM; a++) {
+            if (a->type == FX_ARG_OPT) {
+                if (take(s, 1) % 4 == 0)
+                    return; /* leave the optional rest out */
+                continue;
+            }
+            if (a->type == FX_ARG_REPEAT) {
+                const fx_scene_arg *gs = a + 1, *ge = gs;
+                while (ge->type != FX_ARG_END && ge->type != FX_ARG_FORM)
+                    ge++;
+                int64_t max = a->max < 70 ? a->max + 1 : 70;
+                int64_t k = (int64_t)(take(s, 1) % (uint32_t)(max + 1));
+                for (int64_t i = 0; i < k; i++)
+                    for (const fx_scene_arg *b = gs; b < ge; b++) {
+                        value(s, b, t, sizeof t);
+                        put(o, " ");
+                        put(o, t);
+                    }
+                a = ge - 1;
+                continue;
+            }
+            value(s, a, t, sizeof t);
+            put(o, " ");
+            put(o, t);
+        }
+    }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    static uint8_t arena[1 << 20];
+    static char text[16384];
+    static fx_scene sc;
+    in s = {data, size};
+    out o = {text, 0, sizeof text};
+    text[0] = 0;
+    put(&o, "size 64 48\n"); /* a small surface keeps each run short */
+    for (int lines = 0; lines < 8 && s.n; lines++) {
+        gen_line(&s, &o);
+        put(&o, "\n");
+    }
+    static int print = -1;
+    if (print < 0)
+        print = getenv("FUZZ_GRAMMAR_PRINT") != NULL; /* triage: show the generated script */
+    if (print)
+        fputs(text, stderr);
+    fx_scene_host host = {NULL, make_surface, load_file, NULL, NULL};
+    fx_scene_init(&sc, &host, arena, sizeof arena);
+    /* each line alone, so that one error does not hide the lines after it */
+    size_t i = 0;
+    int lineno = 1;
+    while (i < o.n) {
+        size_t e = i;
+        while (e < o.n && text[e] != '\n')
+            e++;
+        sc.err[0] = 0;
+        fx_scene_exec_line(&sc, text + i, e - i, lineno++);
+        i = e + 1;
+    }
+    if (have) {
+        guarded_free(&g);
+        have = 0;
+    }
+    return 0;
+}
