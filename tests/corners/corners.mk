@@ -6,12 +6,12 @@ $(BUILD)/tests/corners: $(BUILD)/obj/tests/corners/corners.o $(LIB_A)
 	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $< $(LIB_A) $(LDLIBS)
 
 test-corners:
-	@$(MAKE) --no-print-directory -s build/tests/corners
-	@$(MAKE) --no-print-directory -s SAN=1 build/asan/tests/corners
-	@build/tests/corners && build/asan/tests/corners
+	@$(MAKE) --no-print-directory -s $(PLAIN_BUILD)/tests/corners
+	@$(MAKE) --no-print-directory -s SAN=1 $(ASAN_BUILD)/tests/corners
+	@$(PLAIN_BUILD)/tests/corners && $(ASAN_BUILD)/tests/corners
 
-TEST_SUITES += "$(MAKE) --no-print-directory -s build/tests/corners && build/tests/corners" \
-               "$(MAKE) --no-print-directory -s SAN=1 build/asan/tests/corners && build/asan/tests/corners"
+TEST_SUITES += "$(MAKE) --no-print-directory -s $(PLAIN_BUILD)/tests/corners && $(PLAIN_BUILD)/tests/corners" \
+               "$(MAKE) --no-print-directory -s SAN=1 $(ASAN_BUILD)/tests/corners && $(ASAN_BUILD)/tests/corners"
 
 .PHONY: test-corners
 
@@ -22,5 +22,5 @@ $(BUILD)/tests/api-corners: $(BUILD)/obj/tests/corners/api.o $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $< $(LIB_A) $(LDLIBS)
 
-TEST_SUITES += "$(MAKE) --no-print-directory -s build/tests/api-corners && build/tests/api-corners" \
-               "$(MAKE) --no-print-directory -s SAN=1 build/asan/tests/api-corners && build/asan/tests/api-corners"
+TEST_SUITES += "$(MAKE) --no-print-directory -s $(PLAIN_BUILD)/tests/api-corners && $(PLAIN_BUILD)/tests/api-corners" \
+               "$(MAKE) --no-print-directory -s SAN=1 $(ASAN_BUILD)/tests/api-corners && $(ASAN_BUILD)/tests/api-corners"
