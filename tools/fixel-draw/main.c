@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -432,11 +433,13 @@ int main(int argc, char **argv)
             trace = 1;
         } else if (!strcmp(a, "-o") && i + 1 < argc) {
             out = argv[++i];
-            /* fx_write_image would write a PNG under any other name */
-            size_t ol = strlen(out);
-            if (ol < 5 || (strcmp(out + ol - 4, ".png") && strcmp(out + ol - 4, ".ppm") &&
-                           strcmp(out + ol - 4, ".PNG") && strcmp(out + ol - 4, ".PPM"))) {
-                fprintf(stderr, "fixel-draw: -o %s: the name must end in .png or .ppm\n", out);
+            /* fx_write_image writes PNG unless the name ends in .ppm: a name
+             * with another extension (x.jpg) would get a PNG it does not
+             * expect, so it is refused; a name without one (/dev/stdout) is PNG. */
+            const char *base = strrchr(out, '/'), *dot;
+            dot = strrchr(base ? base + 1 : out, '.');
+            if (dot && dot[1] && strcasecmp(dot, ".png") && strcasecmp(dot, ".ppm")) {
+                fprintf(stderr, "fixel-draw: -o %s: unknown image type '%s' (use .png or .ppm)\n", out, dot);
                 return 2;
             }
         } else if (!strcmp(a, "-s") && i + 1 < argc) {

@@ -874,7 +874,7 @@ int main(int argc, char **argv)
             char *end;
             long n = strtol(argv[++i], &end, 10);
             if (end == argv[i] || *end || n < 1 || n > 100000000L) {
-                fprintf(stderr, "fixel-kiosk: --frames wants a number of frames from 1, not '%s'\n", argv[i]);
+                fprintf(stderr, "fixel-kiosk: --frames wants a number of frames from 1 to 100000000, not '%s'\n", argv[i]);
                 return 2;
             }
             frames = (int)n;
