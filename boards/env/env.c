@@ -71,8 +71,18 @@ int fx_display_options_from_env(fx_display_options *o)
         else
             fx_log(&l, FX_LOG_ERROR, "FIXEL_PRESENT=%s ignored (direct or shadow)", e);
     }
-    if (o->rotation < 0 && (e = var("FIXEL_ROTATION")))
-        o->rotation = atoi(e);
+    if (o->rotation < 0 && (e = var("FIXEL_ROTATION"))) {
+        /* whole words only: atoi took "xyz" as 0 and "2147483648" as a
+         * negative angle (issue #26) */
+        static const char *const angles[] = {"0", "90", "180", "270"};
+        int i = 0;
+        while (i < 4 && strcmp(e, angles[i]))
+            i++;
+        if (i < 4)
+            o->rotation = 90 * i;
+        else
+            fx_log(&l, FX_LOG_ERROR, "FIXEL_ROTATION=%s ignored (0, 90, 180 or 270)", e);
+    }
     if (!o->drm_device)
         o->drm_device = getenv("FIXEL_DRM_DEVICE");
     if (!o->fb_device)

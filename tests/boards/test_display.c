@@ -437,7 +437,24 @@ FX_TEST(display_backend_choice_from_environment_and_bad_options)
     p = o;
     FX_CHECK_EQ(fx_display_options_from_env(&p), -FX_EINVAL);
     FX_CHECK(p.rotation == 180 && p.backend == FX_BACKEND_AUTO);
+    unsetenv("FIXEL_BACKEND");
+    /* Only the four angles, as whole words; anything else is named and ignored. */
+    static const char *const bad_rot[] = {"xyz", "1x1", "2147483648", "-90", "45", "90 ", "0x5A"};
+    for (size_t i = 0; i < sizeof bad_rot / sizeof bad_rot[0]; i++) {
+        setenv("FIXEL_ROTATION", bad_rot[i], 1);
+        p = o;
+        last_log[0] = 0;
+        FX_CHECK_EQ(fx_display_options_from_env(&p), 0);
+        FX_CHECK_MSG(p.rotation == o.rotation && strstr(last_log, "FIXEL_ROTATION") &&
+                         strstr(last_log, "ignored"),
+                     "FIXEL_ROTATION=%s gave rotation %d, log '%s'", bad_rot[i], p.rotation, last_log);
+    }
+    setenv("FIXEL_ROTATION", "270", 1);
+    p = o;
+    FX_CHECK_EQ(fx_display_options_from_env(&p), 0);
+    FX_CHECK_EQ(p.rotation, 270);
     unsetenv("FIXEL_ROTATION");
+    setenv("FIXEL_BACKEND", "vga", 1);
 
     setenv("FIXEL_BACKEND", "memory", 1);
     FX_CHECK_EQ(fx_display_options_from_env(&o), 0);
