@@ -36,6 +36,12 @@ else
         printf 'x=1\n' > "$W/data"
         expect 1 "kiosk-$b" env FIXEL_BACKEND=$b "$B/fixel-kiosk" --data "$W/data" examples/kiosk-basic.conf
     done
+    # a named device that cannot open says why, even when its path is huge (issue #26)
+    long=/$(head -c 10000 /dev/zero | tr '\0' a)
+    expect 1 drm-longpath env FIXEL_BACKEND=drm FIXEL_DRM_DEVICE="$long" "$B/fixel-demo" --out "$W/lp" &&
+        has drm-longpath.err "File name too long"
+    expect 1 fb-null env FIXEL_BACKEND=fbdev FIXEL_FB_DEVICE=/dev/null "$B/fixel-demo" --out "$W/fbn" &&
+        has fb-null.err "/dev/null: not a framebuffer"
     expect 1 demo-bogus env FIXEL_BACKEND=bogus "$B/fixel-demo" --out "$W/bogus" && has demo-bogus.err "FIXEL_BACKEND=bogus"
     # the automatic choice falls back, says so once, and renders
     expect 0 demo-auto env -u FIXEL_BACKEND "$B/fixel-demo" --page lines --out "$W/auto/a/b" &&

@@ -578,7 +578,12 @@ static int open_card(fx_display *d, const char *path, int quiet_enoent)
         int e = errno;
         if (e == EACCES || e == EPERM)
             fx_log_access_hint(&d->log, path);
-        else if (!(quiet_enoent && e == ENOENT))
+        else if (!quiet_enoent && e != ENOENT)
+            /* a device the user named: say why at error level, with a
+             * path too long to print cut so the reason still shows */
+            fx_log(&d->log, FX_LOG_ERROR, "%.200s%s: %s", path, strlen(path) > 200 ? "..." : "",
+                   strerror(e));
+        else if (!quiet_enoent)
             fx_log(&d->log, FX_LOG_DEBUG, "%s: %s", path, strerror(e));
         return -e;
     }
