@@ -95,6 +95,7 @@ all: lib tools $(BUILD)/fixel.pc
 
 # Fragments from modules (kernel rig, bench, fuzz...) add targets and suites.
 -include $(sort $(wildcard tests/*/*.mk tools/*/*.mk))
+-include $(sort $(wildcard boards/*/*.mk))
 
 lib: $(LIB_A) $(if $(filter 1,$(STATIC)),,$(LIB_SO))
 tools: $(TOOL_BINS)
