@@ -380,6 +380,27 @@ void glutSwapBuffers(void)
     }
 }
 
+/* freeglut leaves a window without glutInitWindowPosition at (-1,-1), one
+ * pixel off the Xvfb screen; softpipe reads a single-buffered window's front
+ * buffer with XGetImage, which then fails with BadMatch and the program dies.
+ * Such windows go to (0,0) instead: nothing in the frame changes. */
+static int position_set;
+
+void glutInitWindowPosition(int x, int y)
+{
+    REAL(glutInitWindowPosition);
+    position_set = x >= 0 && y >= 0;
+    real_glutInitWindowPosition(x, y);
+}
+
+int glutCreateWindow(const char *title)
+{
+    REAL(glutCreateWindow);
+    REAL(glutInitWindowPosition);
+    if (!position_set) real_glutInitWindowPosition(0, 0);
+    return real_glutCreateWindow(title);
+}
+
 void glutMouseFunc(void (*f)(int, int, int, int)) { REAL(glutMouseFunc); cb_mouse = f; real_glutMouseFunc(f); }
 void glutMotionFunc(void (*f)(int, int)) { REAL(glutMotionFunc); cb_motion = f; real_glutMotionFunc(f); }
 void glutPassiveMotionFunc(void (*f)(int, int)) { REAL(glutPassiveMotionFunc); cb_passive = f; real_glutPassiveMotionFunc(f); }
