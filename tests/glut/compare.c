@@ -8,7 +8,9 @@
  *     frequent colour of the Mesa frame. The fraction of pixels covered in one
  *     frame and not in the other must be <= COVERAGE, and over the pixels
  *     covered in both the largest difference of one channel (0-255) must be
- *     <= COLOUR.
+ *     <= COLOUR, a pixel's difference being the smallest against the drawn
+ *     Mesa pixels of its 3x3 neighbourhood (an edge between two faces that
+ *     falls one pixel over counts as coverage, not as a shading error).
  * On a mismatch with --diff, writes PREFIX-fixel.png, PREFIX-mesa.png and
  * PREFIX-diff.png (grey: equal; red: only fixel drew; green: only Mesa drew;
  * yellow: both drew, colours differ; in 2d every differing pixel is magenta).
@@ -92,6 +94,35 @@ static unsigned background(const Image *im)
     return best;
 }
 
+static int chandiff(const unsigned char *p, const unsigned char *q)
+{
+    int d = 0;
+    for (int c = 0; c < 3; c++) {
+        int x = abs((int)p[c] - (int)q[c]);
+        if (x > d) d = x;
+    }
+    return d;
+}
+
+/* The colour difference of fixel's pixel P at (x, y) allowing a one-pixel
+ * shift: the smallest difference to a drawn Mesa pixel of the 3x3
+ * neighbourhood. An edge between two faces that lands one pixel over is a
+ * coverage matter, not a shading error. */
+static int shifted(const Image *m, unsigned bg, const unsigned char *p, int x, int y)
+{
+    int best = 256;
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++) {
+            int xx = x + dx, yy = y + dy;
+            if (xx < 0 || yy < 0 || xx >= m->w || yy >= m->h) continue;
+            const unsigned char *q = m->px + ((size_t)yy * (size_t)m->w + (size_t)xx) * 3;
+            if (rgb(q) == bg) continue;
+            int d = chandiff(p, q);
+            if (d < best) best = d;
+        }
+    return best;
+}
+
 int main(int argc, char **argv)
 {
     const char *name = NULL, *diff = NULL;
@@ -121,23 +152,21 @@ int main(int argc, char **argv)
         return 1;
     }
     size_t n = (size_t)f.w * (size_t)f.h, differ = 0, cov = 0, both = 0, over = 0;
-    int maxd = 0;
+    int maxd = 0, rawd = 0;
     unsigned bg = background(&m);
     Image d = { f.w, f.h, malloc(n * 3) };
     for (size_t i = 0; i < n; i++) {
         const unsigned char *p = f.px + i * 3, *q = m.px + i * 3;
         unsigned char *o = d.px + i * 3;
-        int dd = 0;
-        for (int c = 0; c < 3; c++) {
-            int x = abs((int)p[c] - (int)q[c]);
-            if (x > dd) dd = x;
-        }
+        int dd = chandiff(p, q);
         int fc = rgb(p) != bg, mc = rgb(q) != bg;
         if (fc != mc) cov++;
         else if (fc && mc) {
             both++;
-            if (dd > maxd) maxd = dd;
-            if (dd > col_bound) over++;
+            if (dd > rawd) rawd = dd;
+            int sd = dd > col_bound ? shifted(&m, bg, p, (int)(i % (size_t)f.w), (int)(i / (size_t)f.w)) : dd;
+            if (sd > maxd) maxd = sd;
+            if (sd > col_bound) over++;
         }
         if (dd) differ++;
         if (!dd) {
@@ -156,9 +185,10 @@ int main(int argc, char **argv)
     double covf = n ? (double)cov / (double)n : 0;
     int pass = is3d ? (covf <= cov_bound && maxd <= col_bound) : differ == 0;
     if (is3d)
-        printf("%s: %s coverage differs at %zu of %zu pixels (%.5f, bound %.5f); of the %zu drawn "
-               "in both, %zu differ by more than %d (largest difference %d)\n",
-               name, pass ? "ok" : "FAIL", cov, n, covf, cov_bound, both, over, col_bound, maxd);
+        printf("%s: %s coverage differs at %zu of %zu pixels (%.5f, bound %.5f); largest colour "
+               "difference %d (bound %d; %zu of the %zu pixels drawn in both exceed it; %d without "
+               "the one-pixel shift)\n",
+               name, pass ? "ok" : "FAIL", cov, n, covf, cov_bound, maxd, col_bound, over, both, rawd);
     else
         printf("%s: %s %zu of %zu pixels differ%s\n", name, pass ? "ok" : "FAIL", differ, n,
                differ ? "" : " (identical)");

@@ -83,7 +83,7 @@ void drawScene(void)
             glColor3f(0.5 + 0.1 * i, 0.5 + 0.1 * j, 0.8);
             glutSolidCube(1.0);
             glColor3f(0, 0, 0);
-            glutWireCube(1.0);
+            glutWireCube(1.02);       /* a hair bigger, or the outline z-fights */
             glPopMatrix();
         }
     glPushMatrix();
