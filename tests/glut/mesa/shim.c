@@ -250,7 +250,10 @@ static void deliver(const struct event *e)
     if (e->has_xy) { last_x = e->x; last_y = e->y; }
     cur_mods = e->mods;
     switch (e->kind) {
-    case EV_MOUSE: if (cb_mouse) cb_mouse(e->a, e->b, last_x, last_y); break;
+    case EV_MOUSE:   /* a button with a menu attached goes to the menu, as in GLUT */
+        if (cb_mouse && attached[e->a == GLUT_LEFT_BUTTON ? 0 : e->a == GLUT_MIDDLE_BUTTON ? 1 : 2] < 0)
+            cb_mouse(e->a, e->b, last_x, last_y);
+        break;
     case EV_MOTION: if (cb_motion) cb_motion(last_x, last_y); break;
     case EV_PASSIVE: if (cb_passive) cb_passive(last_x, last_y); break;
     case EV_KEY: if (cb_key) cb_key((unsigned char)e->a, last_x, last_y); break;
