@@ -2,6 +2,9 @@
  * set at all), drawn with a turtle. */
 #include <GL/glut.h>
 #include <math.h>
+#include <stdlib.h>
+
+int depth = 4;
 
 double cx, cy, angle;
 
@@ -42,7 +45,7 @@ void display(void)
     glClearColor(0.0, 0.0, 0.3, 0.0);
     glClear(GL_COLOR_BUFFER_BIT);
     glColor3f(1.0, 1.0, 1.0);
-    snowflake(1.5, 4);
+    snowflake(1.5, depth);
     glColor3f(0.4, 0.8, 1.0);
     snowflake(0.6, 2);
     glFlush();
@@ -50,6 +53,8 @@ void display(void)
 
 int main(int argc, char **argv)
 {
+    if (argc > 1)                 /* ./snowflake 5 (read before glutInit sees argv) */
+        depth = atoi(argv[1]);
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_SINGLE | GLUT_RGB);
     glutInitWindowSize(500, 500);
