@@ -5,7 +5,8 @@
 #   sh tests/glut/run.sh [--build DIR] [--out DIR] [NAME...]
 # --build: fixel's build directory (default build), holding libfixel-glut.a
 #   and libfixel.a; GLUT_FIXEL_LIBS: the libraries they need (glut.mk passes
-#   the Makefile's LDLIBS). --out: where frames, logs and diffs go (default
+#   the Makefile's LDLIBS); GLUT_FIXEL_INCLUDE: fixel's GL headers (default
+#   boards/glut/include). --out: where frames, logs and diffs go (default
 #   BUILD/glut). --frames DIR: compare DIR/NAME.png (frames made some other
 #   way, e.g. by mesa/run.sh with softpipe) instead of fixel's.
 #   Ends with "glut-mesa: N passed, N failed[, N skipped]".
@@ -39,7 +40,8 @@ mesa_rc=$?
 
 # ---- fixel ----
 lib=$build/libfixel-glut.a
-if [ -z "$frames" ] && { [ ! -f "$lib" ] || [ ! -d "$root/boards/glut/include/GL" ]; }; then
+inc=${GLUT_FIXEL_INCLUDE:-$root/boards/glut/include}
+if [ -z "$frames" ] && { [ ! -f "$lib" ] || [ ! -d "$inc/GL" ]; }; then
     echo "glut-mesa: fixel's GLUT layer is not built ($lib missing): only the Mesa half ran"
     echo "glut-mesa: 0 passed, 0 failed, $total skipped"
     exit $mesa_rc
@@ -48,7 +50,7 @@ GLUT_FIXEL_LIBS=${GLUT_FIXEL_LIBS:-$(pkg-config --libs libpng zlib libdrm libevd
 # Builds progs/NAME.c against fixel and renders its frame headless.
 build_and_run() {
     n=$1 frame=$2 bin=$out/fixel/bin/$1
-    if ! $CC -std=gnu11 -O2 -Wall -Wextra -I "$root/boards/glut/include" -o "$bin" "$here/progs/$n.c" \
+    if ! $CC -std=gnu11 -O2 -Wall -Wextra -I "$inc" -o "$bin" "$here/progs/$n.c" \
             "$lib" "$build/libfixel.a" $GLUT_FIXEL_LIBS -lm >"$out/fixel/$n.build.log" 2>&1; then
         echo "$n: FAIL does not build against fixel (see $out/fixel/$n.build.log)"
         return 1
