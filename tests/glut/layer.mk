@@ -1,5 +1,5 @@
 # The GLUT layer's suite (issue #21): unit tests of tests/glut/test_*.c run
-# through tests/runner.c, and headless course-style programs (tests/glut/run.sh).
+# through tests/runner.c, and headless course-style programs (tests/glut/layer.sh).
 GLUT_TEST_SRC := $(sort $(wildcard tests/glut/test_*.c))
 GLUT_TEST_BIN := $(BUILD)/tests/glut-unit
 $(GLUT_TEST_SRC:%.c=$(BUILD)/obj/%.o): BASEFLAGS += -Iboards/glut/include
@@ -17,6 +17,6 @@ $(GLUT_TEST_BIN): $(GLUT_TEST_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/runne
 
 .PHONY: test-glut
 test-glut: $(GLUT_TEST_BIN) $(GLUT_A) $(LIB_A)
-	@sh tests/run-suites.sh "$(GLUT_TEST_BIN)" "sh tests/glut/run.sh $(BUILD)"
-TEST_SUITES += "$(GLUT_TEST_BIN)" "sh tests/glut/run.sh $(BUILD)"
+	@sh tests/run-suites.sh "$(GLUT_TEST_BIN)" "sh tests/glut/layer.sh $(BUILD)"
+TEST_SUITES += "$(GLUT_TEST_BIN)" "sh tests/glut/layer.sh $(BUILD)"
 test-bins: $(GLUT_TEST_BIN)

@@ -12,7 +12,7 @@ fail() { F=$((F + 1)); echo "FAIL $1"; }
 LIBS="$B/libfixel-glut.a $B/libfixel.a $(make -s --no-print-directory print-LDLIBS 2>/dev/null) -lm"
 for lang in c c++; do
     cc=gcc; [ $lang = c++ ] && cc="g++ -x c++"
-    if $cc -Wall -Wextra -Werror -Iboards/glut/include tests/glut/progs/bres.c -x none -o "$out/bres-$lang" $LIBS 2>"$out/bres-$lang.log"; then
+    if $cc -Wall -Wextra -Werror -Iboards/glut/include tests/glut/layer/bres.c -x none -o "$out/bres-$lang" $LIBS 2>"$out/bres-$lang.log"; then
         pass "bres builds as $lang"
     else
         fail "bres builds as $lang"; cat "$out/bres-$lang.log"
@@ -22,7 +22,7 @@ bin=$out/bres-c
 rm -f "$out/bres1.png"
 FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=1 FIXEL_GLUT_OUT="$out/bres1.png" "$bin" >/dev/null 2>&1
 [ -s "$out/bres1.png" ] && pass "FIXEL_GLUT_FRAMES=1 writes FIXEL_GLUT_OUT" || fail "FIXEL_GLUT_FRAMES=1 writes FIXEL_GLUT_OUT"
-log=$(FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=6 FIXEL_GLUT_OUT="$out/bres6.ppm" FIXEL_GLUT_INPUT=tests/glut/progs/bres.in "$bin" 2>&1)
+log=$(FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=6 FIXEL_GLUT_OUT="$out/bres6.ppm" FIXEL_GLUT_INPUT=tests/glut/layer/bres.in "$bin" 2>&1)
 echo "$log" | grep -q '^key 113$' && pass "replayed key reaches glutKeyboardFunc" || fail "replayed key ($log)"
 echo "$log" | grep -q '^key 65$' && pass "raw evdev shift+a gives 'A'" || fail "raw evdev shift+a ($log)"
 echo "$log" | grep -q '^menu 2$' && pass "menu entry chosen by mouse" || fail "menu entry ($log)"
