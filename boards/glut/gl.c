@@ -32,10 +32,36 @@ fx16 fxg_d2q16(double d)
         return INT32_MIN;
     return (fx16)lrint(d * 65536.0);
 }
+/* The 8-bit level llvmpipe stores for a colour f (GL keeps colours as
+ * floats): f * 255/256 rounded to float, then to an integer number of
+ * 1/256 ties to even (Mesa's float_to_ubyte and its shader's
+ * float-to-unorm8 both add 32768.0f and keep the low 8 bits). */
+static int mesa_level(float f)
+{
+    if (!(f > 0.0f))
+        return 0;
+    if (f >= 1.0f)
+        return 255;
+    float t = (float)((double)f * (255.0 / 256.0)); /* exact product, one rounding */
+    return (int)lrint((double)t * 256.0);
+}
+/* A colour as Q16.16 in [0, 1]: the nearest value to (float)d, moved by
+ * 1/65536 where needed so that the core's round(c * 255) gives the level
+ * llvmpipe gives (they differ only at ties, e.g. 0.3f: 76.5 -> 76). */
 fx16 fxg_d2c(double d)
 {
-    fx16 v = fxg_d2q16(d);
-    return v < 0 ? 0 : v > FX16_ONE ? FX16_ONE : v;
+    float f = (float)d;
+    fx16 v = fxg_d2q16(f);
+    if (v <= 0)
+        return 0;
+    if (v >= FX16_ONE)
+        return FX16_ONE;
+    int want = mesa_level(f);
+    while (v > 0 && (int)(((int64_t)v * 255 + 0x8000) >> 16) > want)
+        v--;
+    while (v < FX16_ONE && (int)(((int64_t)v * 255 + 0x8000) >> 16) < want)
+        v++;
+    return v;
 }
 fx_angle fxg_deg2angle(double deg)
 {

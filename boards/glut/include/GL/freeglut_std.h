@@ -5,6 +5,10 @@
 #define FIXEL_GL_FREEGLUT_STD_H
 #define __FREEGLUT_STD_H__
 
+/* freeglut includes <stdlib.h> "to get the prototype for exit()"; course
+ * programs rely on it (exit, NULL, rand). */
+#include <stdlib.h>
+
 #include <GL/gl.h>
 #include <GL/glu.h>
 
