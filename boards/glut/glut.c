@@ -6,9 +6,9 @@
  * copied to its rectangle of the screen through fx_app, with an open popup
  * menu drawn over it. Headless (FIXEL_BACKEND=memory, or no display) there is
  * no fx_app: the loop runs the callbacks itself on a virtual clock, takes
- * input from FIXEL_GLUT_INPUT (see boards/glut/README.md) and
- * FIXEL_GLUT_FRAMES / FIXEL_GLUT_OUT end it and write the frame.
- * Environment variables are read once, in glutInit. */
+ * input from FIXEL_GLUT_REPLAY (replay.c; the format is tests/glut/README.md's)
+ * and FIXEL_GLUT_FRAMES / FIXEL_GLUT_OUT end it and write the frame.
+ * The environment is read in one place, glut_options_from_env (glutInit). */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
@@ -24,6 +24,7 @@
 #include "fixel/font.h"
 #include "fixel/input.h"
 #include "glut_int.h"
+#include "glut_replay.h"
 
 #define MAX_TIMERS 64
 #define MAX_MENUS 64
@@ -45,17 +46,16 @@ static struct {
     int inited, created;
     unsigned mode;
     int init_x, init_y, init_w, init_h;
-    /* environment, read once */
+    /* environment, read once (glut_options_from_env) */
     long env_frames;
     const char *env_out;
-    const char *env_input;
+    const char *env_replay;
     int env_fullscreen, env_headless;
     /* runtime */
     fx_app *app;
     int headless;
     int32_t scr_w, scr_h;
     int32_t win_x, win_y; /* on screen */
-    fx_memfb screen;      /* headless: the composed window */
     long frames;
     int redisplay, leave;
     uint64_t t0_us, vclock_us;
@@ -92,9 +92,7 @@ static struct {
     int open_x[4], open_y[4], sel[4];
     int menu_button;
     /* replay */
-    FILE *replay;
-    long replay_at; /* frame the pending line waits for, -1: none pending */
-    char replay_line[256];
+    fxg_replay rp;
     fx_input in;
     fx_input_dev kbd, mouse_dev;
     int32_t px, py; /* last pointer, window coords */
@@ -120,6 +118,38 @@ static uint64_t now_us(void)
 }
 
 /* ---- init ---- */
+/* Every environment variable the GLUT layer reads, read here once:
+ *   FIXEL_BACKEND=memory   headless: a memory framebuffer of the window's size
+ *                          (also when no display opens)
+ *   FIXEL_GLUT_FRAMES=N    exit 0 when the N-th frame ends
+ *   FIXEL_GLUT_OUT=F       write that frame, the window's pixels: 8-bit RGB PNG
+ *                          (or binary PPM when F ends in .ppm), top row first
+ *   FIXEL_GLUT_REPLAY=F    headless input from replay file F (replay.c)
+ *   FIXEL_GLUT_FULLSCREEN=1  the window is the whole screen
+ * An empty value is the same as unset; a FIXEL_GLUT_FRAMES that is not a
+ * number >= 0 exits with status 2. */
+static void glut_options_from_env(void)
+{
+    const char *e = getenv("FIXEL_GLUT_FRAMES");
+    G.env_frames = 0;
+    if (e && *e) {
+        char *end;
+        G.env_frames = strtol(e, &end, 10);
+        if (*end || G.env_frames < 0) {
+            fxg_log("FIXEL_GLUT_FRAMES=%s is not a frame count", e);
+            exit(2);
+        }
+    }
+    e = getenv("FIXEL_GLUT_OUT");
+    G.env_out = e && *e ? e : NULL;
+    e = getenv("FIXEL_GLUT_REPLAY");
+    G.env_replay = e && *e ? e : NULL;
+    e = getenv("FIXEL_GLUT_FULLSCREEN");
+    G.env_fullscreen = e && !strcmp(e, "1");
+    e = getenv("FIXEL_BACKEND");
+    G.env_headless = e && !strcasecmp(e, "memory");
+}
+
 void glutInit(int *pargc, char **argv)
 {
     (void)pargc, (void)argv;
@@ -128,15 +158,9 @@ void glutInit(int *pargc, char **argv)
     G.inited = 1;
     G.init_x = G.init_y = -1;
     G.init_w = 300, G.init_h = 300;
-    G.replay_at = -1;
-    const char *e = getenv("FIXEL_GLUT_FRAMES");
-    G.env_frames = e ? strtol(e, NULL, 10) : 0;
-    G.env_out = getenv("FIXEL_GLUT_OUT");
-    G.env_input = getenv("FIXEL_GLUT_INPUT");
-    e = getenv("FIXEL_GLUT_FULLSCREEN");
-    G.env_fullscreen = e && !strcmp(e, "1");
-    e = getenv("FIXEL_BACKEND");
-    G.env_headless = e && !strcasecmp(e, "memory");
+    glut_options_from_env();
+    if (G.env_replay)
+        fxg_replay_load(&G.rp, G.env_replay); /* a bad line exits 5 now */
     G.t0_us = now_us();
 }
 void glutInitWindowPosition(int x, int y) { G.init_x = x, G.init_y = y; }
@@ -230,16 +254,11 @@ int glutCreateWindow(const char *title)
         fxg_log("out of memory for a %dx%d window", G.init_w, G.init_h);
         exit(1);
     }
-    if (G.headless && fx_memfb_create(&G.screen, G.init_w, G.init_h, FX_FMT_XRGB8888) < 0)
-        exit(1);
     fx_input_init(&G.in, G.init_w, G.init_h, 0);
     fx_input_dev_init(&G.kbd, FX_DEV_KEYBOARD);
     fx_input_dev_init(&G.mouse_dev, FX_DEV_MOUSE);
-    if (G.env_input) {
-        G.replay = fopen(G.env_input, "r");
-        if (!G.replay)
-            fxg_log("cannot read FIXEL_GLUT_INPUT=%s", G.env_input);
-    }
+    if (G.rp.n && !G.headless)
+        fxg_log("FIXEL_GLUT_REPLAY drives headless runs only; ignored on a display");
     if (G.app)
         install_app_callbacks();
     G.created = 1;
@@ -263,10 +282,6 @@ void glutSetIconTitle(const char *t) { (void)t; }
 static void resize_to(int32_t w, int32_t h)
 {
     fxg_gl_resize(w, h);
-    if (G.headless) {
-        fx_memfb_destroy(&G.screen);
-        fx_memfb_create(&G.screen, w, h, FX_FMT_XRGB8888);
-    }
     if (G.reshape)
         G.reshape(w, h);
     else
@@ -590,12 +605,8 @@ static void draw_menus(const fx_surface *s)
 /* ---- frames ---- */
 static void present(void)
 {
-    if (G.headless) {
-        fx_blit(&G.screen.surf, 0, 0, &fxg.fb.surf);
-        if (G.open_depth)
-            draw_menus(&G.screen.surf);
-        return;
-    }
+    if (G.headless)
+        return; /* nothing to show: FIXEL_GLUT_OUT writes the window's pixels */
     fx_surface s = fx_app_surface(G.app);
     fx_rect r = {G.win_x, G.win_y, G.win_x + fxg.w, G.win_y + fxg.h};
     fx_surface sub = fx_surface_sub(s, r);
@@ -609,8 +620,9 @@ static void write_out(void)
 {
     if (!G.env_out)
         return;
-    const fx_surface *s = G.headless ? &G.screen.surf : &fxg.fb.surf;
-    if (fx_write_image(G.env_out, s) < 0)
+    /* the window's pixels, as glReadPixels sees them: the layer's popup
+     * menus are not in them (freeglut's are windows of their own) */
+    if (fx_write_image(G.env_out, &fxg.fb.surf) < 0)
         fxg_log("cannot write %s", G.env_out);
 }
 
@@ -825,11 +837,11 @@ static void app_close(void *u)
         G.close();
 }
 
-/* ---- replay (headless input) ---- */
+/* ---- replay (headless input, FIXEL_GLUT_REPLAY; parsed by replay.c) ---- */
 static void replay_emit(void *u, const fx_event *e)
 {
     (void)u;
-    G.mods = e->mods;
+    G.mods = e->mods & 7u;
     switch (e->type) {
     case FX_EVENT_KEY: do_key((unsigned char)e->key, e->x, e->y, 0); break;
     case FX_EVENT_KEY_UP: do_key((unsigned char)e->key, e->x, e->y, 1); break;
@@ -842,97 +854,77 @@ static void replay_emit(void *u, const fx_event *e)
     default: break;
     }
 }
-static int button_of(const char *s)
+/* menu BUTTON PATH: the callback of the menu holding the last entry, with
+ * that menu current; nothing is opened or drawn. */
+static void replay_menu(const fxg_replay_event *e)
 {
-    return !strcmp(s, "right") ? 2 : !strcmp(s, "middle") ? 1 : atoi(s) > 0 ? atoi(s) : 0;
-}
-static int special_of(const char *s)
-{
-    static const struct { const char *n; int k; } t[] = {
-        {"left", GLUT_KEY_LEFT}, {"right", GLUT_KEY_RIGHT}, {"up", GLUT_KEY_UP},
-        {"down", GLUT_KEY_DOWN}, {"pageup", GLUT_KEY_PAGE_UP}, {"pagedown", GLUT_KEY_PAGE_DOWN},
-        {"home", GLUT_KEY_HOME}, {"end", GLUT_KEY_END}, {"insert", GLUT_KEY_INSERT}};
-    for (unsigned i = 0; i < sizeof t / sizeof t[0]; i++)
-        if (!strcmp(s, t[i].n))
-            return t[i].k;
-    if ((s[0] == 'f' || s[0] == 'F') && atoi(s + 1) > 0)
-        return atoi(s + 1);
-    return atoi(s);
-}
-/* Run one replay line; returns 0 at a "frame N" line that must wait. */
-static int replay_line(char *line)
-{
-    char *p = line;
-    while (*p == ' ' || *p == '\t')
-        p++;
-    char *hash = strchr(p, '#');
-    if (hash && !(p[0] == 'k' && hash > p && hash[-1] == ' ' && strncmp(p, "key", 3) == 0))
-        *hash = 0;
-    char cmd[32] = "", a[64] = "", b[64] = "";
-    int x = G.px, y = G.py, n = sscanf(p, "%31s %63s %63s %d %d", cmd, a, b, &x, &y);
-    if (n < 1)
-        return 1;
-    if (!strcmp(cmd, "frame")) {
-        G.replay_at = atol(a);
-        return G.frames >= G.replay_at;
-    }
-    if (!strcmp(cmd, "mods")) {
-        G.mods = (strstr(p, "shift") ? 1u : 0u) | (strstr(p, "ctrl") ? 2u : 0u) | (strstr(p, "alt") ? 4u : 0u);
-        return 1;
-    }
-    if (!strcmp(cmd, "key") || !strcmp(cmd, "keyup")) {
-        int k = strlen(a) == 1 ? (unsigned char)a[0] : !strcmp(a, "space") ? ' ' : !strcmp(a, "esc") ? 27
-                : !strcmp(a, "enter") ? 13 : atoi(a);
-        int kx = n >= 3 ? atoi(b) : G.px, ky = n >= 4 ? x : G.py;
-        do_key((unsigned char)k, kx, ky, cmd[3] == 'u');
-    } else if (!strcmp(cmd, "special") || !strcmp(cmd, "specialup")) {
-        int kx = n >= 3 ? atoi(b) : G.px, ky = n >= 4 ? x : G.py;
-        do_special(special_of(a), kx, ky, cmd[7] == 'u');
-    } else if (!strcmp(cmd, "mouse") && n >= 5) {
-        do_mouse(button_of(a), !strcmp(b, "up") ? GLUT_UP : GLUT_DOWN, x, y);
-    } else if ((!strcmp(cmd, "motion") || !strcmp(cmd, "passive")) && n >= 3) {
-        do_motion(atoi(a), atoi(b), cmd[0] == 'm');
-    } else if (!strcmp(cmd, "wheel") && n >= 2) {
-        do_wheel(atoi(a), n >= 3 ? atoi(b) : G.px, n >= 4 ? x : G.py);
-    } else if (!strcmp(cmd, "ev")) {
-        /* ev keyboard|mouse TYPE CODE VALUE: raw evdev through fixel's input layer */
-        char dev[16];
-        unsigned type, code;
-        int value;
-        if (sscanf(p, "ev %15s %u %u %d", dev, &type, &code, &value) == 4) {
-            fx_raw_event ev = {0, (uint16_t)type, (uint16_t)code, value};
-            G.in.px = G.px, G.in.py = G.py;
-            fx_input_feed(&G.in, !strcmp(dev, "mouse") ? &G.mouse_dev : &G.kbd, &ev, replay_emit, NULL);
-            G.mods = G.in.mods;
+    int id = G.attached[e->a];
+    if (!id || !G.menus[id].used)
+        fxg_replay_fail(&G.rp, e, "no menu attached to that button");
+    char path[sizeof e->path];
+    snprintf(path, sizeof path, "%s", e->path);
+    char *save = NULL;
+    for (char *lab = strtok_r(path, "/", &save); lab; lab = strtok_r(NULL, "/", &save)) {
+        menu *m = &G.menus[id];
+        menu_item *hit = NULL;
+        for (int i = 0; i < m->n && !hit; i++)
+            if (!strcmp(m->items[i].label, lab))
+                hit = &m->items[i];
+        if (!hit)
+            fxg_replay_fail(&G.rp, e, "no such menu entry");
+        if (hit->submenu) {
+            id = hit->submenu;
+            if (id <= 0 || id >= MAX_MENUS || !G.menus[id].used)
+                fxg_replay_fail(&G.rp, e, "submenu vanished");
+            continue;
         }
-    } else if (!strcmp(cmd, "quit")) {
-        write_out();
-        exit(0);
-    } else {
-        fxg_log("FIXEL_GLUT_INPUT: unknown line '%s'", p);
+        if (save && *save)
+            fxg_replay_fail(&G.rp, e, "entry is not a submenu");
+        int saved = G.cur_menu;
+        G.cur_menu = id;
+        if (m->cb)
+            m->cb(hit->value);
+        G.cur_menu = saved;
+        return;
     }
-    return 1;
+    fxg_replay_fail(&G.rp, e, "menu path ends at a submenu");
 }
-/* Deliver the replay lines due after the frames so far; returns 1 while more are pending. */
+static void replay_deliver(const fxg_replay_event *e)
+{
+    if (e->has_xy)
+        G.px = e->x, G.py = e->y;
+    int x = G.px, y = G.py;
+    G.mods = (unsigned)e->mods;
+    switch (e->kind) {
+    case FXG_EV_MOUSE: do_mouse(e->a, e->b, x, y); break;
+    case FXG_EV_MOTION: do_motion(x, y, 1); break;
+    case FXG_EV_PASSIVE: do_motion(x, y, 0); break;
+    case FXG_EV_KEY: do_key((unsigned char)e->a, x, y, 0); break;
+    case FXG_EV_KEYUP: do_key((unsigned char)e->a, x, y, 1); break;
+    case FXG_EV_SPECIAL: do_special(e->a, x, y, 0); break;
+    case FXG_EV_SPECIALUP: do_special(e->a, x, y, 1); break;
+    case FXG_EV_WHEEL: do_wheel(e->a, x, y); break;
+    case FXG_EV_MENU: replay_menu(e); break;
+    case FXG_EV_EVDEV: {
+        fx_raw_event ev = {0, e->type, e->code, e->b};
+        G.in.px = G.px, G.in.py = G.py;
+        fx_input_feed(&G.in, e->a ? &G.mouse_dev : &G.kbd, &ev, replay_emit, NULL);
+        break;
+    }
+    default: break;
+    }
+    G.mods = 0;
+}
+/* Delivers the events due now (tagged with a frame that has ended), in file
+ * order, checking the next one after each delivery; returns how many. */
 static int replay_run(void)
 {
-    if (!G.replay)
-        return 0;
-    for (;;) {
-        if (G.replay_at >= 0) {
-            if (G.frames < G.replay_at)
-                return 1;
-            G.replay_at = -1;
-        }
-        if (!fgets(G.replay_line, sizeof G.replay_line, G.replay)) {
-            fclose(G.replay);
-            G.replay = NULL;
-            return 0;
-        }
-        G.replay_line[strcspn(G.replay_line, "\r\n")] = 0;
-        if (!replay_line(G.replay_line))
-            return 1;
+    int n = 0;
+    while (!G.leave && G.rp.next < G.rp.n && G.rp.ev[G.rp.next].frame <= G.frames) {
+        replay_deliver(&G.rp.ev[G.rp.next++]);
+        n++;
     }
+    return n;
 }
 
 /* ---- the loops ---- */
@@ -957,60 +949,83 @@ static uint64_t next_timer(void)
     return n;
 }
 
+static uint64_t wall_us(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000;
+}
+__attribute__((noreturn)) static void stalled(void)
+{
+    fxg_log("stalled at frame %ld of %ld (next replay event at frame %ld)", G.frames, G.env_frames,
+            G.rp.next < G.rp.n ? G.rp.ev[G.rp.next].frame : -1L);
+    exit(3);
+}
+
+/* One iteration as freeglut's loop runs it: the display callback when a
+ * redisplay is pending, then the replay events due, timers, the idle
+ * callback. Returns 1 when anything ran. */
+static int headless_iteration(int with_idle)
+{
+    int did = 0;
+    if (G.redisplay) {
+        G.redisplay = 0;
+        if (G.display)
+            G.display();
+        else
+            fxg_log("no display callback registered");
+        did = 1;
+    }
+    if (replay_run())
+        did = 1;
+    if (G.leave)
+        return did;
+    if (run_timers())
+        did = 1;
+    if (with_idle && G.idle) {
+        G.idle();
+        did = 1;
+    }
+    return did;
+}
+
 static void headless_loop(void)
 {
     if (G.reshape)
         G.reshape(fxg.w, fxg.h);
+    else
+        glViewport(0, 0, fxg.w, fxg.h);
     if (G.visibility)
         G.visibility(GLUT_VISIBLE);
     G.redisplay = 1;
-    long idle_rounds = 0;
+    long seen = G.frames;
+    uint64_t since = 0;
+    unsigned spins = 0;
     while (!G.leave) {
-        int did = 0;
-        if (G.redisplay) {
-            G.redisplay = 0;
-            long before = G.frames;
-            if (G.display)
-                G.display();
-            else
-                fxg_log("no display callback registered");
-            if (G.open_depth && G.frames == before)
-                present();
-            did = 1;
-        }
-        int pending = replay_run();
-        if (G.leave)
-            break;
-        if (run_timers())
-            did = 1;
-        if (G.idle) {
-            G.idle();
-            did = 1;
-            if (++idle_rounds > 100000000L)
-                break;
-        }
-        if (G.redisplay)
-            continue;
-        if (!did && !pending) {
-            uint64_t nt = next_timer();
-            if (nt == UINT64_MAX)
-                break; /* nothing can happen any more */
-            G.vclock_us = nt;
-        } else if (!did && pending) {
-            /* input waits for a frame that will never come: show what we have */
-            if (G.frames < G.replay_at) {
-                fx_blit(&G.screen.surf, 0, 0, &fxg.fb.surf);
-                G.frames = G.replay_at;
+        if (headless_iteration(1) || G.redisplay) {
+            /* an idle callback that never ends a frame: stalled after 10 s,
+             * as the Mesa shim is, when frames are wanted */
+            if (G.frames != seen) {
+                seen = G.frames, since = 0;
+            } else if (G.env_frames > 0 && (++spins & 1023) == 0) {
+                uint64_t t = wall_us();
+                if (!since)
+                    since = t;
+                else if (t - since > 10000000u)
+                    stalled();
             }
+            continue;
         }
-    }
-    if (!G.leave) {
-        /* the program is idle for good: end as a finished headless run */
-        present();
+        uint64_t nt = next_timer();
+        if (nt != UINT64_MAX) {
+            if (nt > G.vclock_us)
+                G.vclock_us = nt; /* virtual clock: straight to the next timer */
+            continue;
+        }
+        /* nothing can happen any more */
+        if (G.env_frames > 0 || G.rp.next < G.rp.n)
+            stalled();
         write_out();
-        if (G.env_frames > 0 && G.frames < G.env_frames)
-            fxg_log("program went idle after %ld frame(s) (FIXEL_GLUT_FRAMES=%ld); wrote the last",
-                    G.frames, G.env_frames);
         exit(0);
     }
 }
@@ -1064,14 +1079,8 @@ void glutMainLoop(void)
 }
 void glutMainLoopEvent(void)
 {
-    if (G.headless) {
-        if (G.redisplay && G.display) {
-            G.redisplay = 0;
-            G.display();
-        }
-        replay_run();
-        run_timers();
-    }
+    if (G.headless)
+        headless_iteration(0);
 }
 void glutLeaveMainLoop(void)
 {
