@@ -58,6 +58,7 @@ static void (*cb_keyup)(unsigned char, int, int);
 static void (*cb_special)(int, int, int);
 static void (*cb_specialup)(int, int, int);
 static void (*cb_idle)(void);
+static void (*cb_wheel)(int, int, int, int);
 
 /* ---- menus ---- */
 #define MAXMENU 64
@@ -76,7 +77,7 @@ static struct menu *menu_by_id(int id)
 }
 
 /* ---- replay ---- */
-enum { EV_MOUSE, EV_MOTION, EV_PASSIVE, EV_KEY, EV_KEYUP, EV_SPECIAL, EV_SPECIALUP, EV_MENU };
+enum { EV_MOUSE, EV_MOTION, EV_PASSIVE, EV_KEY, EV_KEYUP, EV_SPECIAL, EV_SPECIALUP, EV_MENU, EV_WHEEL };
 struct event {
     long frame; int kind, a, b, x, y, mods, has_xy; char path[192]; int line;
 };
@@ -203,7 +204,14 @@ static void load_replay(const char *path)
                 if (nt != 2 && nt != 4) die("special|specialup NAME [X Y]", line);
                 e.kind = k[7] ? EV_SPECIALUP : EV_SPECIAL; e.a = parse_special(tok[1], line);
                 args = 2;
-            } else die("unknown event (mouse, motion, passive, key, keyup, special, specialup, menu)", line);
+            } else if (!strcmp(k, "wheel")) {    /* wheel up|down [X Y] */
+                if (nt != 2 && nt != 4) die("wheel up|down [X Y]", line);
+                e.kind = EV_WHEEL;
+                if (!strcmp(tok[1], "up")) e.a = 1;
+                else if (!strcmp(tok[1], "down")) e.a = -1;
+                else die("wheel up|down [X Y]", line);
+                args = 2;
+            } else die("unknown event (mouse, motion, passive, key, keyup, special, specialup, menu, wheel)", line);
             if (nt == args + 2) {
                 e.x = atoi(tok[args]); e.y = atoi(tok[args + 1]); e.has_xy = 1;
             } else if (need_xy) die("missing X Y", line);
@@ -261,6 +269,13 @@ static void deliver(const struct event *e)
     case EV_SPECIAL: if (cb_special) cb_special(e->a, last_x, last_y); break;
     case EV_SPECIALUP: if (cb_specialup) cb_specialup(e->a, last_x, last_y); break;
     case EV_MENU: cur_mods = -1; deliver_menu(e); break;
+    case EV_WHEEL:   /* freeglut: the wheel callback, else buttons 3 (up) / 4 (down) */
+        if (cb_wheel) cb_wheel(0, e->a, last_x, last_y);
+        else if (cb_mouse) {
+            cb_mouse(e->a > 0 ? 3 : 4, GLUT_DOWN, last_x, last_y);
+            cb_mouse(e->a > 0 ? 3 : 4, GLUT_UP, last_x, last_y);
+        }
+        break;
     }
     cur_mods = -1;
 }
@@ -410,6 +425,7 @@ void glutPassiveMotionFunc(void (*f)(int, int)) { REAL(glutPassiveMotionFunc); c
 void glutKeyboardFunc(void (*f)(unsigned char, int, int)) { REAL(glutKeyboardFunc); cb_key = f; real_glutKeyboardFunc(f); }
 void glutKeyboardUpFunc(void (*f)(unsigned char, int, int)) { REAL(glutKeyboardUpFunc); cb_keyup = f; real_glutKeyboardUpFunc(f); }
 void glutSpecialFunc(void (*f)(int, int, int)) { REAL(glutSpecialFunc); cb_special = f; real_glutSpecialFunc(f); }
+void glutMouseWheelFunc(void (*f)(int, int, int, int)) { REAL(glutMouseWheelFunc); cb_wheel = f; real_glutMouseWheelFunc(f); }
 void glutSpecialUpFunc(void (*f)(int, int, int)) { REAL(glutSpecialUpFunc); cb_specialup = f; real_glutSpecialUpFunc(f); }
 
 void glutIdleFunc(void (*f)(void))
