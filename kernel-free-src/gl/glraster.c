@@ -30,6 +30,7 @@ int fx_gl_to_window(const fx_glv4 *p, int32_t vx, int32_t vy, int32_t vw, int32_
     o->y = (int64_t)vy * 256 + fx_muldiv64(p->y + p->w, (int64_t)vh * 128, p->w);
     int64_t z = fx_muldiv64(p->z + p->w, (int64_t)1 << 23, p->w);
     o->z = z < 0 ? 0 : z > 0xFFFFFF ? 0xFFFFFF : (int32_t)z;
+    o->w = p->w;
     return 0;
 }
 
@@ -309,6 +310,94 @@ void fx_gl_line(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b, int
 }
 
 /* ---- triangles ---- */
+/* Perspective-correct colours and texture coordinates: the attributes
+ * interpolated in window space are 1/w (q, normalised to 2^22 at the
+ * nearest vertex, which keeps sliver triangles' gradients in range) and the
+ * barycentric weights of vertices 1 and 2 times q; per pixel the weights
+ * are their quotients (Q16), clamped to the triangle (a covered centre is
+ * inside; only rounding takes a weight out), and every attribute is
+ * a0 + l1 (a1 - a0) + l2 (a2 - a0). */
+static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const fx8 xy[6],
+                           int use_z, int use_c, int use_t, const fx16 *flat)
+{
+    fx32 wmin = v[0]->w;
+    for (int i = 1; i < 3; i++)
+        if (v[i]->w < wmin)
+            wmin = v[i]->w;
+    int32_t q[3];
+    for (int i = 0; i < 3; i++) {
+        int64_t qi = fx_muldiv64(wmin, (int64_t)1 << 22, v[i]->w);
+        q[i] = qi < 1 ? 1 : (int32_t)qi;
+    }
+    int na = use_z ? 4 : 3, kq = use_z ? 1 : 0;
+    int32_t attr[3 * 4];
+    for (int i = 0; i < 3; i++) {
+        int32_t *p = attr + i * na;
+        if (use_z)
+            p[0] = v[i]->z;
+        p[kq] = q[i];
+        p[kq + 1] = i == 1 ? q[1] : 0;
+        p[kq + 2] = i == 2 ? q[2] : 0;
+    }
+    /* attribute deltas from vertex 0: colour levels in Q16, s and t */
+    int64_t c0[4] = {0, 0, 0, 0}, d1[6] = {0}, d2[6] = {0};
+    int64_t s0 = v[0]->s, t0 = v[0]->t;
+    if (use_c)
+        for (int k = 0; k < 4; k++) {
+            int64_t l[3];
+            for (int i = 0; i < 3; i++) {
+                fx16 cc = v[i]->c[k];
+                l[i] = (int64_t)(cc < 0 ? 0 : cc > FX16_ONE ? FX16_ONE : cc) * 255;
+            }
+            c0[k] = l[0], d1[k] = l[1] - l[0], d2[k] = l[2] - l[0];
+        }
+    if (use_t) {
+        d1[4] = (int64_t)v[1]->s - s0, d2[4] = (int64_t)v[2]->s - s0;
+        d1[5] = (int64_t)v[1]->t - t0, d2[5] = (int64_t)v[2]->t - t0;
+    }
+    fx_tri tri;
+    if (fx_tri_begin(&tri, t->clip, xy, attr, na) <= 0)
+        return;
+    int32_t cf[4] = {0, 0, 0, 0};
+    if (flat)
+        for (int k = 0; k < 4; k++)
+            cf[k] = level(flat[k]);
+    fx_tri_span sp;
+    while (fx_tri_next_span(&tri, &sp)) {
+        uint64_t val[4];
+        for (int k = 0; k < na; k++)
+            val[k] = fx_tri_attr_at(&tri, k, sp.x0, sp.y);
+        for (int32_t x = sp.x0; x < sp.x1; x++) {
+            int32_t col[4] = {cf[0], cf[1], cf[2], cf[3]};
+            uint32_t z = 0;
+            fx16 s = 0, tt = 0;
+            if (use_z) {
+                int32_t zz = fx_tri_attr_round(val[0]);
+                z = zz < 0 ? 0 : zz > 0xFFFFFF ? 0xFFFFFF : (uint32_t)zz;
+            }
+            int64_t Q = (int64_t)val[kq] >> 16; /* Q32.32 of a Q22 value, to Q16 */
+            if (Q < 1)
+                Q = 1;
+            int64_t l1 = (int64_t)val[kq + 1] / Q, l2 = (int64_t)val[kq + 2] / Q; /* Q16 */
+            l1 = l1 < 0 ? 0 : l1 > FX16_ONE ? FX16_ONE : l1;
+            l2 = l2 < 0 ? 0 : l2 > FX16_ONE - l1 ? FX16_ONE - l1 : l2;
+            if (use_c)
+                for (int k = 0; k < 4; k++) {
+                    int64_t l = c0[k] + ((l1 * d1[k] + l2 * d2[k] + 0x8000) >> 16); /* level, Q16 */
+                    l = (l + 0x8000) >> 16;
+                    col[k] = l < 0 ? 0 : l > 255 ? 255 : (int32_t)l;
+                }
+            if (use_t) {
+                s = (fx16)(s0 + ((l1 * d1[4] + l2 * d2[4] + 0x8000) >> 16));
+                tt = (fx16)(t0 + ((l1 * d1[5] + l2 * d2[5] + 0x8000) >> 16));
+            }
+            frag(t, x, sp.y, z, col, s, tt);
+            for (int k = 0; k < na; k++)
+                val[k] += tri.gx[k];
+        }
+    }
+}
+
 void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
                     const fx_gl_wvert *c, const fx16 *flat)
 {
@@ -321,6 +410,10 @@ void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
     int use_z = t->depth && t->depth_test;
     int use_c = flat == 0;
     int use_t = t->tex != 0;
+    if ((use_c || use_t) && a->w > 0 && b->w > 0 && c->w > 0 && (a->w != b->w || a->w != c->w)) {
+        persp_triangle(t, v, xy, use_z, use_c, use_t, flat);
+        return;
+    }
     int na = 0, kz = -1, kc = -1, kt = -1;
     if (use_z)
         kz = na, na += 1;

@@ -42,6 +42,12 @@
  *              So a horizontal line at integer y lights row y - 1 and a
  *              vertical one at integer x column x - 1.
  * Flat shading takes the colour the caller passes as the provoking one.
+ * Triangle colours and texture coordinates are interpolated perspective-
+ * correctly, as llvmpipe does: when the three clip w differ, the
+ * barycentric weights are those of a/w and 1/w interpolated in window space
+ * (1/w normalised to 2^22 at the nearest vertex), divided per pixel, to
+ * 2^-16 and clamped to the triangle; with equal w (any orthographic projection) it is the plain affine
+ * interpolation. Depth is always affine in window space, as GL specifies.
  *
  * Nothing here allocates or keeps globals: the caller owns the surface, the
  * depth buffer and the texture memory.
@@ -183,6 +189,7 @@ typedef struct fx_gl_wvert {
     int32_t z;      /* 0 .. 2^24 - 1 */
     fx16 c[4];      /* rgba in [0, 1] */
     fx16 s, t;      /* texture coordinates (1.0 = 65536) */
+    fx32 w;         /* clip w (> 0), for perspective-correct interpolation; 0: affine */
 } fx_gl_wvert;
 
 /* Clip coordinates -> window vertex for viewport (vx, vy, vw, vh).
