@@ -1,7 +1,12 @@
 /* fixel GLUT layer — GLUT's fonts on fixel's built-in 6x10 font.
  * Bitmap fonts: 8_BY_13, 9_BY_15, TIMES_ROMAN_10, HELVETICA_10/12 draw the
  * 6x10 glyphs at scale 1, TIMES_ROMAN_24 and HELVETICA_18 at scale 2; the
- * baseline is two font rows above the cell's bottom. Stroke fonts trace
+ * baseline is two font rows above the cell's bottom. The two fixed-width
+ * fonts keep their cell width as advance (8 and 9 pixels, the glyph centred
+ * in it), so text laid out with glutBitmapWidth spans what it spans under
+ * freeglut; the proportional fonts advance by the 6x10 glyph width. The
+ * glyphs themselves are fixel's, not freeglut's (tests/glut compares
+ * bitmaptext as 3d for that reason). Stroke fonts trace
  * the same glyphs with GL lines through the lit pixels' centres, in GLUT's
  * stroke units (104.76 wide, 119.05 above the baseline for ROMAN). */
 #include <string.h>
@@ -23,6 +28,12 @@ static int font_scale(const void *font)
     int i = font_index(font);
     return (i == 5 || i == 8) ? 2 : 1;
 }
+/* The advance of a glyph, pixels. */
+static int font_advance(const void *font)
+{
+    int i = font_index(font);
+    return i == 2 ? 9 : i == 3 ? 8 : (int)fx_font_builtin()->width * font_scale(font);
+}
 
 void glutBitmapCharacter(void *font, int ch)
 {
@@ -31,7 +42,8 @@ void glutBitmapCharacter(void *font, int ch)
     if (ch == '\n')
         return;
     uint32_t g = fx_font_glyph(f, (uint32_t)(ch & 0xFF));
-    fxg_bitmap((int32_t)f->width, (int32_t)f->height, 0, 2 * s, (int32_t)f->width * s,
+    int adv = font_advance(font);
+    fxg_bitmap((int32_t)f->width, (int32_t)f->height, -(adv - (int)f->width * s) / 2, 2 * s, adv,
                fx_font_row(f, g, 0), (int32_t)f->row_bytes, s);
 }
 void glutBitmapString(void *font, const unsigned char *s)
@@ -49,7 +61,7 @@ void glutBitmapString(void *font, const unsigned char *s)
 int glutBitmapWidth(void *font, int ch)
 {
     (void)ch;
-    return (int)fx_font_builtin()->width * font_scale(font);
+    return font_advance(font);
 }
 int glutBitmapLength(void *font, const unsigned char *s)
 {
