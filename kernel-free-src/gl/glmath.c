@@ -2,9 +2,38 @@
  * GLUT layer (see fixel/glcore.h). Integer only, freestanding. */
 #include "fixel/glcore.h"
 
-fx32 fx32_mul(fx32 a, fx32 b) { return fx_mul64_shift(a, b, 32); }
 
 static inline uint64_t uabs64(int64_t v) { return v < 0 ? 0 - (uint64_t)v : (uint64_t)v; }
+
+/* (hi * 2^64 + lo) / d for hi < d: the divisor normalised to its top bit,
+ * then two quotient digits of 32 bits, each estimated from the divisor's
+ * high half and corrected (at most twice) -- Knuth's algorithm D. Only
+ * 64-bit operations, so no libgcc 128-bit division (__udivti3) in the core. */
+static uint64_t udiv128_64(uint64_t hi, uint64_t lo, uint64_t d)
+{
+    int s = __builtin_clzll(d);
+    if (s) {
+        d <<= s;
+        hi = (hi << s) | (lo >> (64 - s));
+        lo <<= s;
+    }
+    uint64_t dh = d >> 32, dl = d & 0xFFFFFFFFu, l1 = lo >> 32, l0 = lo & 0xFFFFFFFFu;
+    uint64_t q1 = hi / dh, r = hi - q1 * dh;
+    while ((q1 >> 32) || q1 * dl > ((r << 32) | l1)) {
+        q1--, r += dh;
+        if (r >> 32)
+            break;
+    }
+    uint64_t h2 = ((hi << 32) | l1) - q1 * d;
+    uint64_t q0 = h2 / dh;
+    r = h2 - q0 * dh;
+    while ((q0 >> 32) || q0 * dl > ((r << 32) | l0)) {
+        q0--, r += dh;
+        if (r >> 32)
+            break;
+    }
+    return (q1 << 32) | q0;
+}
 
 int64_t fx_muldiv64(int64_t a, int64_t b, int64_t c)
 {
@@ -22,24 +51,7 @@ int64_t fx_muldiv64(int64_t a, int64_t b, int64_t c)
     lo = lo2;
     if (hi >= uc) /* quotient does not fit in 64 bits */
         return neg ? INT64_MIN : INT64_MAX;
-    uint64_t q;
-#if defined(__SIZEOF_INT128__)
-    unsigned __int128 n = ((unsigned __int128)hi << 64) | lo;
-    q = (uint64_t)(n / uc);
-#else
-    /* restoring long division, 64 quotient bits */
-    uint64_t r = hi;
-    q = 0;
-    for (int i = 63; i >= 0; i--) {
-        uint64_t top = r >> 63;
-        r = (r << 1) | ((lo >> i) & 1);
-        q <<= 1;
-        if (top || r >= uc) {
-            r -= uc;
-            q |= 1;
-        }
-    }
-#endif
+    uint64_t q = udiv128_64(hi, lo, uc);
     if (q > (uint64_t)INT64_MAX)
         return neg ? INT64_MIN : INT64_MAX;
     return neg ? -(int64_t)q : (int64_t)q;

@@ -172,7 +172,10 @@ static void frag(fx_gl_target *t, int32_t X, int32_t Y, uint32_t z, int32_t c[4]
     }
     fx_color out = ((fx_color)c[3] << 24) | ((fx_color)c[0] << 16) | ((fx_color)c[1] << 8) |
                    (fx_color)c[2];
-    fx_surface_put_native(&t->surf, X, row, fx_pack(t->surf.format, out));
+    if (t->surf.format == FX_FMT_XRGB8888) /* the layer's own buffers: a plain store */
+        ((uint32_t *)(t->surf.pixels + (intptr_t)row * t->surf.stride))[X] = out & 0xFFFFFFu; /* fx_pack's XRGB */
+    else
+        fx_surface_put_native(&t->surf, X, row, fx_pack(t->surf.format, out));
 }
 
 static inline int in_clip(const fx_gl_target *t, int64_t X, int64_t Y)
