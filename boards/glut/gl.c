@@ -1341,9 +1341,49 @@ void glRectfv(const GLfloat *a, const GLfloat *b) { glRectd(a[0], a[1], b[0], b[
 void glRectiv(const GLint *a, const GLint *b) { glRectd(a[0], a[1], b[0], b[1]); }
 void glRectsv(const GLshort *a, const GLshort *b) { glRectd(a[0], a[1], b[0], b[1]); }
 
+/* An indexed mesh as glDrawElements(GL_TRIANGLES) draws it: each vertex
+ * transformed and lit once, then the triangles assembled from the results
+ * (the same bits as the immediate-mode path below, which display lists and
+ * glBegin nesting still take). */
+static int draw_indexed(const int32_t *pos, const int32_t *nrm, int32_t nverts, const uint32_t *tri,
+                        int32_t ntris)
+{
+    static fx_gl_cvert *cv;
+    static int32_t cap;
+    if (recording() || fxg.in_begin || fxg.poly_front != GL_FILL || fxg.poly_back != GL_FILL)
+        return -1;
+    if (nverts > cap) {
+        fx_gl_cvert *n = realloc(cv, (size_t)nverts * sizeof *n);
+        if (!n)
+            return -1;
+        cv = n, cap = nverts;
+    }
+    sync_target();
+    for (int32_t k = 0; k < nverts; k++) {
+        if (nrm)
+            for (int i = 0; i < 3; i++)
+                fxg.normal[i] = (fx32)nrm[3 * k + i] * 65536;
+        process_vertex((fx32)pos[3 * k] * 65536, (fx32)pos[3 * k + 1] * 65536,
+                       (fx32)pos[3 * k + 2] * 65536, FX32_ONE, &cv[k]);
+    }
+    for (int32_t i = 0; i < ntris; i++) {
+        const fx_gl_cvert *c = &cv[tri[3 * i + 2]];
+        draw_tri(&cv[tri[3 * i]], &cv[tri[3 * i + 1]], c, c->c, 7);
+    }
+    return 0;
+}
+
 void fxg_draw_tris_q16(const int32_t *pos, const int32_t *nrm, const uint32_t *tri, int32_t ntris,
                        int wire)
 {
+    if (!wire) {
+        uint32_t maxv = 0;
+        for (int32_t i = 0; i < ntris * 3; i++)
+            if (tri[i] > maxv)
+                maxv = tri[i];
+        if (ntris > 0 && draw_indexed(pos, nrm, (int32_t)maxv + 1, tri, ntris) == 0)
+            return;
+    }
     GLenum save_f = fxg.poly_front, save_b = fxg.poly_back;
     if (wire)
         fxg.poly_front = fxg.poly_back = GL_LINE;

@@ -313,6 +313,76 @@ void fx_gl_line(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b, int
 }
 
 /* ---- triangles ---- */
+/* The common fragment: no texture, no blending, all channels written, the
+ * layer's XRGB8888 buffer: depth test and store inline (frag() does the
+ * same, generally). */
+static inline int plain_target(const fx_gl_target *t)
+{
+    return !t->tex && !t->blend && (t->color_mask == 0 || t->color_mask == 0xF) &&
+           t->surf.format == FX_FMT_XRGB8888;
+}
+static inline void plain_frag(const fx_gl_target *t, uint32_t *px, uint32_t *dp, uint32_t z,
+                              const int32_t c[4])
+{
+    if (dp) {
+        uint32_t d = *dp;
+        int pass;
+        switch (t->depth_func) {
+        case FX_GL_DEPTH_NEVER: pass = 0; break;
+        case FX_GL_DEPTH_LESS: pass = z < d; break;
+        case FX_GL_DEPTH_EQUAL: pass = z == d; break;
+        case FX_GL_DEPTH_LEQUAL: pass = z <= d; break;
+        case FX_GL_DEPTH_GREATER: pass = z > d; break;
+        case FX_GL_DEPTH_NOTEQUAL: pass = z != d; break;
+        case FX_GL_DEPTH_GEQUAL: pass = z >= d; break;
+        default: pass = 1; break;
+        }
+        if (!pass)
+            return;
+        if (t->depth_write)
+            *dp = z;
+    }
+    *px = ((uint32_t)c[0] << 16) | ((uint32_t)c[1] << 8) | (uint32_t)c[2];
+}
+/* The depth test alone (for testing before the colour is computed). */
+static inline int depth_pass(const fx_gl_target *t, uint32_t z, uint32_t d)
+{
+    switch (t->depth_func) {
+    case FX_GL_DEPTH_NEVER: return 0;
+    case FX_GL_DEPTH_LESS: return z < d;
+    case FX_GL_DEPTH_EQUAL: return z == d;
+    case FX_GL_DEPTH_LEQUAL: return z <= d;
+    case FX_GL_DEPTH_GREATER: return z > d;
+    case FX_GL_DEPTH_NOTEQUAL: return z != d;
+    case FX_GL_DEPTH_GEQUAL: return z >= d;
+    default: return 1;
+    }
+}
+
+/* The perspective-correct weights of vertices 1 and 2 (Q16, clamped to
+ * the triangle) from the interpolated q, l1 q, l2 q at val[kq..kq+2]: one
+ * division, Q and the L (<= Q inside) shifted so that Q has 31 bits, times
+ * 2^62 / Q. */
+static inline void persp_weights(const uint64_t *val, int kq, int64_t *w1, int64_t *w2)
+{
+    int64_t Qv = (int64_t)val[kq], L1 = (int64_t)val[kq + 1], L2 = (int64_t)val[kq + 2];
+    if (Qv < 1)
+        Qv = 1;
+    int sh = 33 - __builtin_clzll((uint64_t)Qv);
+    if (sh < 0)
+        sh = 0;
+    uint64_t qn = (uint64_t)Qv >> sh;
+    if (qn == 0)
+        qn = 1;
+    uint64_t inv = ((uint64_t)1 << 62) / qn;
+    L1 = L1 < 0 ? 0 : L1 > Qv ? Qv : L1;
+    L2 = L2 < 0 ? 0 : L2 > Qv ? Qv : L2;
+    int64_t l1 = (int64_t)((((uint64_t)L1 >> sh) * inv) >> 46);
+    int64_t l2 = (int64_t)((((uint64_t)L2 >> sh) * inv) >> 46);
+    l1 = l1 < 0 ? 0 : l1 > FX16_ONE ? FX16_ONE : l1;
+    l2 = l2 < 0 ? 0 : l2 > FX16_ONE - l1 ? FX16_ONE - l1 : l2;
+    *w1 = l1, *w2 = l2;
+}
 /* Perspective-correct colours and texture coordinates: the attributes
  * interpolated in window space are 1/w (q, normalised to 2^22 at the
  * nearest vertex, which keeps sliver triangles' gradients in range) and the
@@ -365,11 +435,15 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
     if (flat)
         for (int k = 0; k < 4; k++)
             cf[k] = level(flat[k]);
+    int plain = plain_target(t);
     fx_tri_span sp;
     while (fx_tri_next_span(&tri, &sp)) {
         uint64_t val[4];
         for (int k = 0; k < na; k++)
             val[k] = fx_tri_attr_at(&tri, k, sp.x0, sp.y);
+        int32_t row = t->surf.h - 1 - sp.y;
+        uint32_t *prow = (uint32_t *)(t->surf.pixels + (intptr_t)row * t->surf.stride);
+        uint32_t *drow = use_z ? t->depth + (size_t)row * (size_t)t->surf.w : 0;
         for (int32_t x = sp.x0; x < sp.x1; x++) {
             int32_t col[4] = {cf[0], cf[1], cf[2], cf[3]};
             uint32_t z = 0;
@@ -377,13 +451,15 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
             if (use_z) {
                 int32_t zz = fx_tri_attr_round(val[0]);
                 z = zz < 0 ? 0 : zz > 0xFFFFFF ? 0xFFFFFF : (uint32_t)zz;
+                /* early depth test: a hidden fragment costs no division */
+                if (plain && !depth_pass(t, z, drow[x])) {
+                    for (int k = 0; k < na; k++)
+                        val[k] += tri.gx[k];
+                    continue;
+                }
             }
-            int64_t Q = (int64_t)val[kq] >> 16; /* Q32.32 of a Q22 value, to Q16 */
-            if (Q < 1)
-                Q = 1;
-            int64_t l1 = (int64_t)val[kq + 1] / Q, l2 = (int64_t)val[kq + 2] / Q; /* Q16 */
-            l1 = l1 < 0 ? 0 : l1 > FX16_ONE ? FX16_ONE : l1;
-            l2 = l2 < 0 ? 0 : l2 > FX16_ONE - l1 ? FX16_ONE - l1 : l2;
+            int64_t l1, l2;
+            persp_weights(val, kq, &l1, &l2);
             if (use_c)
                 for (int k = 0; k < 4; k++) {
                     int64_t l = c0[k] + ((l1 * d1[k] + l2 * d2[k] + 0x8000) >> 16); /* level, Q16 */
@@ -394,7 +470,10 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
                 s = (fx16)(s0 + ((l1 * d1[4] + l2 * d2[4] + 0x8000) >> 16));
                 tt = (fx16)(t0 + ((l1 * d1[5] + l2 * d2[5] + 0x8000) >> 16));
             }
-            frag(t, x, sp.y, z, col, s, tt);
+            if (plain)
+                plain_frag(t, prow + x, drow ? drow + x : 0, z, col);
+            else
+                frag(t, x, sp.y, z, col, s, tt);
             for (int k = 0; k < na; k++)
                 val[k] += tri.gx[k];
         }
@@ -447,11 +526,15 @@ void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
     if (flat)
         for (int k = 0; k < 4; k++)
             cf[k] = level(flat[k]);
+    int plain = plain_target(t);
     fx_tri_span sp;
     while (fx_tri_next_span(&tri, &sp)) {
         uint64_t val[FX_TRI_MAX_ATTR];
         for (int k = 0; k < na; k++)
             val[k] = fx_tri_attr_at(&tri, k, sp.x0, sp.y);
+        int32_t row = t->surf.h - 1 - sp.y;
+        uint32_t *prow = (uint32_t *)(t->surf.pixels + (intptr_t)row * t->surf.stride);
+        uint32_t *drow = kz >= 0 ? t->depth + (size_t)row * (size_t)t->surf.w : 0;
         for (int32_t x = sp.x0; x < sp.x1; x++) {
             int32_t col[4] = {cf[0], cf[1], cf[2], cf[3]};
             uint32_t z = 0;
@@ -469,7 +552,10 @@ void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
                 s = fx_tri_attr_round(val[kt]);
                 tt = fx_tri_attr_round(val[kt + 1]);
             }
-            frag(t, x, sp.y, z, col, s, tt);
+            if (plain)
+                plain_frag(t, prow + x, drow ? drow + x : 0, z, col);
+            else
+                frag(t, x, sp.y, z, col, s, tt);
             for (int k = 0; k < na; k++)
                 val[k] += tri.gx[k];
         }
