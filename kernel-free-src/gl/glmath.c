@@ -43,6 +43,11 @@ int64_t fx_muldiv64(int64_t a, int64_t b, int64_t c)
         return 0;
     if (uc == 0)
         return neg ^ (c < 0) ? INT64_MIN : INT64_MAX;
+    if ((128 - __builtin_clzll(ua) - __builtin_clzll(ub)) <= 62) {
+        /* the product fits in 62 bits: one 64-bit division, same rounding */
+        uint64_t q = (ua * ub + uc / 2) / uc;
+        return neg ? -(int64_t)q : (int64_t)q;
+    }
     uint64_t hi, lo;
     fx_umul64_wide(ua, ub, &hi, &lo);
     /* + c/2 for rounding to nearest (ties away from zero) */
