@@ -50,7 +50,8 @@ static struct {
     long env_frames;
     const char *env_out;
     const char *env_replay;
-    int env_fullscreen, env_headless;
+    int env_fullscreen, env_headless, env_bench;
+    uint64_t bench_t1; /* FIXEL_GLUT_BENCH: wall clock at the end of frame 1 */
     /* runtime */
     fx_app *app;
     int headless;
@@ -108,6 +109,7 @@ void fxg_log(const char *fmt, ...)
     va_end(ap);
 }
 
+static uint64_t wall_us(void);
 static uint64_t now_us(void)
 {
     if (G.headless)
@@ -126,6 +128,8 @@ static uint64_t now_us(void)
  *                          (or binary PPM when F ends in .ppm), top row first
  *   FIXEL_GLUT_REPLAY=F    headless input from replay file F (replay.c)
  *   FIXEL_GLUT_FULLSCREEN=1  the window is the whole screen
+ *   FIXEL_GLUT_BENCH=1     at exit, print "fixel-glut: frames 2..N in T s = F fps"
+ *                          (wall clock from the end of frame 1, as the Mesa shim)
  * An empty value is the same as unset; a FIXEL_GLUT_FRAMES that is not a
  * number >= 0 exits with status 2. */
 static void glut_options_from_env(void)
@@ -148,6 +152,8 @@ static void glut_options_from_env(void)
     G.env_fullscreen = e && !strcmp(e, "1");
     e = getenv("FIXEL_BACKEND");
     G.env_headless = e && !strcasecmp(e, "memory");
+    e = getenv("FIXEL_GLUT_BENCH");
+    G.env_bench = e && atoi(e) > 0;
 }
 
 void glutInit(int *pargc, char **argv)
@@ -639,8 +645,15 @@ void fxg_frame_done(int swap)
     }
     present();
     G.frames++;
+    if (G.env_bench && G.frames == 1)
+        G.bench_t1 = wall_us();
     if (G.env_frames > 0 && G.frames >= G.env_frames) {
         write_out();
+        if (G.env_bench) {
+            double t = (double)(wall_us() - G.bench_t1) / 1e6;
+            printf("fixel-glut: frames 2..%ld in %.3f s = %.2f fps\n", G.frames, t,
+                   G.frames > 1 && t > 0 ? (double)(G.frames - 1) / t : 0.0);
+        }
         exit(0);
     }
 }

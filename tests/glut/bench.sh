@@ -4,10 +4,9 @@
 # llvmpipe on one thread (LP_NUM_THREADS=0) and on all cores, softpipe, and
 # fixel's GLUT layer headless when it is built.
 #   sh tests/glut/bench.sh [--build DIR] [--out DIR]
-# Mesa's time is the shim's (FIXEL_GLUT_BENCH=1: from the end of frame 1 to
-# the end of frame N, so start-up and the first frame are left out). fixel's
-# is the same span, taken as the difference of two runs, to frame 1 and to
-# frame N. GLUT_BENCH_TEAPOT / GLUT_BENCH_MANDEL set the frames after the
+# Both sides time themselves with FIXEL_GLUT_BENCH=1 (Mesa through the shim,
+# fixel in its GLUT layer): wall clock from the end of frame 1 to the end of
+# frame N, so start-up and the first frame are left out. GLUT_BENCH_TEAPOT / GLUT_BENCH_MANDEL set the frames after the
 # first (default 100 and 3).
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
@@ -56,13 +55,14 @@ if [ ! -f "$lib" ]; then
     exit 0
 fi
 GLUT_FIXEL_LIBS=${GLUT_FIXEL_LIBS:-$(pkg-config --libs libpng zlib libdrm libevdev libgpiod 2>/dev/null) -lpthread -lm}
-now() { date +%s.%N; }
 for p in teapot mandelbrot; do
     k=$kt; [ $p = mandelbrot ] && k=$km
     $CC -std=gnu11 -O2 -I "$root/boards/glut/include" -o "$out/$p.fixel" "$here/progs/$p.c" \
         "$lib" "$build/libfixel.a" $GLUT_FIXEL_LIBS -lm || { row $p fixel "$k" - "no build"; continue; }
-    t0=$(now); FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=1 "$out/$p.fixel" >/dev/null 2>&1; t1=$(now)
-    FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=$((k + 1)) "$out/$p.fixel" >/dev/null 2>&1; t2=$(now)
-    t=$(echo "$t0 $t1 $t2" | awk '{printf "%.3f", ($3 - $2) - ($2 - $1)}')
-    row $p "fixel" "$k" "$t" "$(echo "$k $t" | awk '{ if ($2 > 0) printf "%.2f", $1 / $2; else print "?" }')"
+    # the layer times itself like the shim (FIXEL_GLUT_BENCH=1: frame 1 to frame N)
+    line=$(FIXEL_BACKEND=memory FIXEL_GLUT_BENCH=1 FIXEL_GLUT_FRAMES=$((k + 1)) "$out/$p.fixel" 2>/dev/null |
+           grep '^fixel-glut: frames')
+    t=$(echo "$line" | sed -n 's/.* in \([0-9.]*\) s = .*/\1/p')
+    f=$(echo "$line" | sed -n 's/.* = \([0-9.]*\) fps/\1/p')
+    row $p "fixel 1 thread" "$k" "${t:-?}" "${f:-failed}"
 done
