@@ -1102,6 +1102,7 @@ static void draw_line(const fx_gl_cvert *a, const fx_gl_cvert *b, const fx16 *pr
 
 /* One polygon of n (3 or 4) clip-space vertices, convex, with GL edge
  * flags: edge i (v[i] -> v[i+1]) is drawn in line mode when bit i is set. */
+static void raster_poly(fx_gl_wvert *w, int m, int n, const fx16 *provoking, unsigned edges);
 static void draw_poly(const fx_gl_cvert *const *v, int n, const fx16 *provoking, unsigned edges)
 {
     fx_gl_cvert in[4], out[16], tmp[16];
@@ -1114,6 +1115,12 @@ static void draw_poly(const fx_gl_cvert *const *v, int n, const fx16 *provoking,
     for (int i = 0; i < m; i++)
         if (to_win(&out[i], &w[i]) < 0)
             return;
+    raster_poly(w, m, n, provoking, edges);
+}
+/* Culling, polygon mode and rasterization of a polygon already in window
+ * coordinates (m vertices; n: how many it had before clipping). */
+static void raster_poly(fx_gl_wvert *w, int m, int n, const fx16 *provoking, unsigned edges)
+{
     int64_t area = 0;
     for (int i = 1; i + 1 < m && area == 0; i++)
         area = fx_gl_area2(&w[0], &w[i], &w[i + 1]);
@@ -1366,9 +1373,35 @@ static int draw_indexed(const int32_t *pos, const int32_t *nrm, int32_t nverts, 
         process_vertex((fx32)pos[3 * k] * 65536, (fx32)pos[3 * k + 1] * 65536,
                        (fx32)pos[3 * k + 2] * 65536, FX32_ONE, &cv[k]);
     }
+    /* window coordinates once per vertex that needs no clipping (inside the
+     * guard band and the depth range): its triangles skip the clipper */
+    static fx_gl_wvert *wv;
+    static unsigned char *inside;
+    static int32_t capw;
+    if (nverts > capw) {
+        fx_gl_wvert *nw = realloc(wv, (size_t)nverts * sizeof *nw);
+        unsigned char *ni = nw ? realloc(inside, (size_t)nverts) : NULL;
+        if (!nw || !ni) {
+            if (nw)
+                wv = nw;
+            return -1;
+        }
+        wv = nw, inside = ni, capw = nverts;
+    }
+    for (int32_t k = 0; k < nverts; k++) {
+        const fx_glv4 *p = &cv[k].p;
+        fx32 gw = fx32_mul(fxg.guard, p->w);
+        inside[k] = p->w > 0 && p->x <= gw && p->x >= -gw && p->y <= gw && p->y >= -gw &&
+                    p->z <= p->w && p->z >= -p->w && to_win(&cv[k], &wv[k]) == 0;
+    }
     for (int32_t i = 0; i < ntris; i++) {
-        const fx_gl_cvert *c = &cv[tri[3 * i + 2]];
-        draw_tri(&cv[tri[3 * i]], &cv[tri[3 * i + 1]], c, c->c, 7);
+        uint32_t a = tri[3 * i], b = tri[3 * i + 1], c = tri[3 * i + 2];
+        if (inside[a] && inside[b] && inside[c]) {
+            fx_gl_wvert w[3] = {wv[a], wv[b], wv[c]};
+            raster_poly(w, 3, 3, cv[c].c, 7);
+        } else {
+            draw_tri(&cv[a], &cv[b], &cv[c], cv[c].c, 7);
+        }
     }
     return 0;
 }
