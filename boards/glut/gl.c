@@ -1,0 +1,2079 @@
+/* fixel GLUT layer — OpenGL 1.x state, immediate mode and the boundary
+ * conversions. Floats and doubles are converted to fixed point here
+ * (fxg_d2x & co: round to nearest, ties to even, saturating) and
+ * everything after that runs in kernel-free-src/gl (fixel/glcore.h). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "glut_int.h"
+
+fxg_gl fxg;
+
+/* ---- boundary conversions ---- */
+fx32 fxg_d2x(double d)
+{
+    if (d != d)
+        return 0;
+    if (d >= 2147483647.0)
+        return INT64_MAX;
+    if (d <= -2147483648.0)
+        return INT64_MIN;
+    return (fx32)llrint(d * 4294967296.0);
+}
+fx16 fxg_d2q16(double d)
+{
+    if (d != d)
+        return 0;
+    if (d >= 32767.0)
+        return INT32_MAX;
+    if (d <= -32768.0)
+        return INT32_MIN;
+    return (fx16)lrint(d * 65536.0);
+}
+/* The 8-bit level llvmpipe stores for a colour f (GL keeps colours as
+ * floats): f * 255/256 rounded to float, then to an integer number of
+ * 1/256 ties to even (Mesa's float_to_ubyte and its shader's
+ * float-to-unorm8 both add 32768.0f and keep the low 8 bits). */
+static int mesa_level(float f)
+{
+    if (!(f > 0.0f))
+        return 0;
+    if (f >= 1.0f)
+        return 255;
+    float t = (float)((double)f * (255.0 / 256.0)); /* exact product, one rounding */
+    return (int)lrint((double)t * 256.0);
+}
+/* A colour as Q16.16 in [0, 1]: the nearest value to (float)d, moved by
+ * 1/65536 where needed so that the core's round(c * 255) gives the level
+ * llvmpipe gives (they differ only at ties, e.g. 0.3f: 76.5 -> 76). */
+fx16 fxg_d2c(double d)
+{
+    float f = (float)d;
+    fx16 v = fxg_d2q16(f);
+    if (v <= 0)
+        return 0;
+    if (v >= FX16_ONE)
+        return FX16_ONE;
+    int want = mesa_level(f);
+    while (v > 0 && (int)(((int64_t)v * 255 + 0x8000) >> 16) > want)
+        v--;
+    while (v < FX16_ONE && (int)(((int64_t)v * 255 + 0x8000) >> 16) < want)
+        v++;
+    return v;
+}
+fx_angle fxg_deg2angle(double deg)
+{
+    double t = fmod(deg, 360.0) / 360.0; /* (-1, 1) */
+    return (fx_angle)(uint32_t)(int64_t)llrint(t * 4294967296.0);
+}
+double fxg_x2d(fx32 v) { return (double)v / 4294967296.0; }
+
+void fxg_set_error(GLenum e)
+{
+    if (fxg.error == GL_NO_ERROR)
+        fxg.error = e;
+}
+
+void fxg_unimplemented(const char *name, GLenum err)
+{
+    fxg_set_error(err);
+    unsigned h = 5381;
+    for (const char *p = name; *p; p++)
+        h = h * 33 + (unsigned char)*p;
+    h %= sizeof fxg.logged * 8;
+    if (!(fxg.logged[h / 8] & (1 << (h % 8)))) {
+        fxg.logged[h / 8] |= (char)(1 << (h % 8));
+        fxg_log("%s is not implemented by fixel's GL layer (ignored)", name);
+    }
+}
+
+GLenum glGetError(void)
+{
+    GLenum e = fxg.error;
+    fxg.error = GL_NO_ERROR;
+    return e;
+}
+
+/* ---- display lists: recording ---- */
+enum {
+    OP_BEGIN = 1, OP_END, OP_VERTEX, OP_COLOR, OP_NORMAL, OP_TEXCOORD, OP_MATRIXMODE,
+    OP_LOADIDENTITY, OP_PUSH, OP_POP, OP_MULT, OP_LOAD, OP_TRANSLATE, OP_ROTATE, OP_SCALE,
+    OP_ENABLE, OP_DISABLE, OP_SHADE, OP_POINTSIZE, OP_LINEWIDTH, OP_MATERIAL, OP_LIGHT,
+    OP_CALLLIST, OP_BINDTEX, OP_RECT, OP_ORTHO, OP_FRUSTUM, OP_POLYMODE, OP_STIPPLE,
+    OP_LIGHTMODEL, OP_COLORMATERIAL, OP_RASTERPOS, OP_BITMAPCHAR, OP_BLENDFUNC, OP_DEPTHFUNC,
+    OP_CULLFACE, OP_FRONTFACE, OP_CLEAR, OP_CLEARCOLOR
+};
+
+static int recording(void) { return fxg.cur_list != 0 && !fxg.replaying; }
+
+static void record(int op, int n, const double *a)
+{
+    fxg_list *l = &fxg.lists[fxg.cur_list];
+    if (l->nrec == l->caprec) {
+        int nc = l->caprec ? l->caprec * 2 : 64;
+        fxg_rec *r = realloc(l->rec, (size_t)nc * sizeof *r);
+        if (!r) {
+            fxg_set_error(GL_OUT_OF_MEMORY);
+            return;
+        }
+        l->rec = r, l->caprec = nc;
+    }
+    if (l->npool + n > l->cappool) {
+        int nc = l->cappool ? l->cappool * 2 : 256;
+        while (nc < l->npool + n)
+            nc *= 2;
+        double *p = realloc(l->pool, (size_t)nc * sizeof *p);
+        if (!p) {
+            fxg_set_error(GL_OUT_OF_MEMORY);
+            return;
+        }
+        l->pool = p, l->cappool = nc;
+    }
+    l->rec[l->nrec++] = (fxg_rec){(uint16_t)op, (uint16_t)n, (uint32_t)l->npool};
+    memcpy(l->pool + l->npool, a, (size_t)n * sizeof *a);
+    l->npool += n;
+}
+
+/* Record and tell whether to execute now. */
+#define REC(op, ...)                                             \
+    do {                                                         \
+        if (recording()) {                                       \
+            double a_[] = {__VA_ARGS__};                         \
+            record(op, (int)(sizeof a_ / sizeof a_[0]), a_);     \
+            if (!fxg.list_exec)                                  \
+                return;                                          \
+        }                                                        \
+    } while (0)
+#define REC0(op)                           \
+    do {                                   \
+        if (recording()) {                 \
+            record(op, 0, NULL);           \
+            if (!fxg.list_exec)            \
+                return;                    \
+        }                                  \
+    } while (0)
+
+/* ---- initialisation ---- */
+static void update_clip(void)
+{
+    fx_rect r = {fxg.vp[0], fxg.vp[1], fxg.vp[0] + fxg.vp[2], fxg.vp[1] + fxg.vp[3]};
+    fx_rect win = {0, 0, fxg.w, fxg.h};
+    r = fx_rect_intersect(r, win);
+    if (fxg.scissor_on) {
+        fx_rect s = {fxg.scissor[0], fxg.scissor[1], fxg.scissor[0] + fxg.scissor[2],
+                     fxg.scissor[1] + fxg.scissor[3]};
+        r = fx_rect_intersect(r, s);
+    }
+    if (fx_rect_empty(r))
+        r = (fx_rect){0, 0, 0, 0};
+    fxg.tgt.clip = r;
+    int32_t m = fxg.vp[2] > fxg.vp[3] ? fxg.vp[2] : fxg.vp[3];
+    if (m < 1)
+        m = 1;
+    fxg.guard = fx_muldiv64((int64_t)1 << 21, FX32_ONE, m);
+    if (fxg.guard < FX32_ONE)
+        fxg.guard = FX32_ONE;
+}
+
+static void default_light(fx_gl_light *l, int i)
+{
+    memset(l, 0, sizeof *l);
+    l->ambient[3] = FX16_ONE;
+    if (i == 0) {
+        for (int k = 0; k < 4; k++)
+            l->diffuse[k] = l->specular[k] = FX16_ONE;
+    } else {
+        l->diffuse[3] = l->specular[3] = FX16_ONE;
+    }
+    l->pos[2] = FX32_ONE; /* (0, 0, 1, 0) */
+    l->spot_dir[2] = -FX32_ONE;
+    l->att[0] = FX32_ONE;
+}
+
+static void default_material(fx_gl_material *m)
+{
+    memset(m, 0, sizeof *m);
+    for (int k = 0; k < 3; k++) {
+        m->ambient[k] = fxg_d2c(0.2);
+        m->diffuse[k] = fxg_d2c(0.8);
+    }
+    m->ambient[3] = m->diffuse[3] = m->specular[3] = m->emission[3] = FX16_ONE;
+}
+
+int fxg_gl_init(int32_t w, int32_t h)
+{
+    if (fx_memfb_create(&fxg.fb, w, h, FX_FMT_XRGB8888) < 0)
+        return -1;
+    fxg.depth = calloc((size_t)w * (size_t)h, sizeof *fxg.depth);
+    if (!fxg.depth)
+        return -1;
+    fxg.w = w, fxg.h = h;
+    memset(&fxg.tgt, 0, sizeof fxg.tgt);
+    fxg.tgt.surf = fxg.fb.surf;
+    fxg.tgt.depth = fxg.depth;
+    fxg.tgt.depth_write = 1;
+    fxg.tgt.depth_func = FX_GL_DEPTH_LESS;
+    fx_glm_identity(&fxg.mv[0]);
+    fx_glm_identity(&fxg.proj[0]);
+    fx_glm_identity(&fxg.texm[0]);
+    fxg.matrix_mode = GL_MODELVIEW;
+    fxg.mvp_dirty = fxg.nmat_dirty = 1;
+    fxg.vp[0] = fxg.vp[1] = 0, fxg.vp[2] = w, fxg.vp[3] = h;
+    fxg.scissor[0] = fxg.scissor[1] = 0, fxg.scissor[2] = w, fxg.scissor[3] = h;
+    fxg.cull_face = GL_BACK, fxg.front_face = GL_CCW;
+    fxg.poly_front = fxg.poly_back = GL_FILL;
+    fxg.shade = GL_SMOOTH, fxg.depth_func = GL_LESS, fxg.depth_mask = 1;
+    fxg.cm_face = GL_FRONT_AND_BACK, fxg.cm_mode = GL_AMBIENT_AND_DIFFUSE;
+    fxg.bsrc = GL_ONE, fxg.bdst = GL_ZERO;
+    fxg.clear_depth = 0xFFFFFF;
+    fxg.point_size = fxg.line_width = 1.0f;
+    fxg.stipple_factor = 1, fxg.stipple_pattern = 0xFFFF;
+    fxg.color_mask = 0xF;
+    for (int k = 0; k < 4; k++)
+        fxg.color[k] = FX16_ONE;
+    fxg.normal[2] = FX32_ONE;
+    for (int i = 0; i < FX_GL_MAX_LIGHTS; i++)
+        default_light(&fxg.L.light[i], i);
+    for (int k = 0; k < 3; k++)
+        fxg.L.model_ambient[k] = fxg_d2c(0.2);
+    fxg.L.model_ambient[3] = FX16_ONE;
+    default_material(&fxg.mat[0]);
+    default_material(&fxg.mat[1]);
+    fxg.tex_env = GL_MODULATE;
+    fxg.unpack_align = fxg.pack_align = 4;
+    fxg.zoom_x = fxg.zoom_y = 1.0f;
+    update_clip();
+    fx_gl_clear(&fxg.tgt, (fx_rect){0, 0, w, h}, 0xFF000000u, 1, 0xFFFFFF, 1);
+    return 0;
+}
+
+void fxg_gl_resize(int32_t w, int32_t h)
+{
+    if (w == fxg.w && h == fxg.h)
+        return;
+    fx_memfb nfb;
+    uint32_t *nd = calloc((size_t)w * (size_t)h, sizeof *nd);
+    if (!nd || fx_memfb_create(&nfb, w, h, FX_FMT_XRGB8888) < 0) {
+        free(nd);
+        return;
+    }
+    fx_memfb_destroy(&fxg.fb);
+    free(fxg.depth);
+    fxg.fb = nfb, fxg.depth = nd;
+    fxg.w = w, fxg.h = h;
+    fxg.tgt.surf = fxg.fb.surf;
+    fxg.tgt.depth = nd;
+    update_clip();
+}
+
+/* ---- matrices ---- */
+static fx_glm *cur_matrix(void)
+{
+    switch (fxg.matrix_mode) {
+    case GL_PROJECTION: return &fxg.proj[fxg.proj_top];
+    case GL_TEXTURE: return &fxg.texm[fxg.tex_top];
+    default: return &fxg.mv[fxg.mv_top];
+    }
+}
+static void matrix_changed(void)
+{
+    fxg.mvp_dirty = 1;
+    if (fxg.matrix_mode == GL_MODELVIEW)
+        fxg.nmat_dirty = 1;
+}
+static void mult_cur(const fx_glm *m)
+{
+    fx_glm *c = cur_matrix();
+    fx_glm_mul(c, c, m);
+    matrix_changed();
+}
+
+void glMatrixMode(GLenum mode)
+{
+    REC(OP_MATRIXMODE, (double)mode);
+    if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return;
+    }
+    fxg.matrix_mode = mode;
+}
+void glLoadIdentity(void)
+{
+    REC0(OP_LOADIDENTITY);
+    fx_glm_identity(cur_matrix());
+    matrix_changed();
+}
+void glPushMatrix(void)
+{
+    REC0(OP_PUSH);
+    int *top = fxg.matrix_mode == GL_PROJECTION ? &fxg.proj_top
+               : fxg.matrix_mode == GL_TEXTURE  ? &fxg.tex_top
+                                                : &fxg.mv_top;
+    int cap = fxg.matrix_mode == GL_PROJECTION ? FXG_PROJ_STACK
+              : fxg.matrix_mode == GL_TEXTURE  ? 4
+                                               : FXG_STACK;
+    if (*top + 1 >= cap) {
+        fxg_set_error(GL_STACK_OVERFLOW);
+        return;
+    }
+    fx_glm *c = cur_matrix();
+    (*top)++;
+    *cur_matrix() = *c;
+}
+void glPopMatrix(void)
+{
+    REC0(OP_POP);
+    int *top = fxg.matrix_mode == GL_PROJECTION ? &fxg.proj_top
+               : fxg.matrix_mode == GL_TEXTURE  ? &fxg.tex_top
+                                                : &fxg.mv_top;
+    if (*top == 0) {
+        fxg_set_error(GL_STACK_UNDERFLOW);
+        return;
+    }
+    (*top)--;
+    matrix_changed();
+}
+static void load_d(const double *m, int mult)
+{
+    fx_glm t;
+    for (int i = 0; i < 16; i++)
+        t.m[i] = fxg_d2x(m[i]);
+    if (mult)
+        mult_cur(&t);
+    else {
+        *cur_matrix() = t;
+        matrix_changed();
+    }
+}
+void glLoadMatrixd(const GLdouble *m)
+{
+    if (recording()) {
+        record(OP_LOAD, 16, m);
+        if (!fxg.list_exec)
+            return;
+    }
+    load_d(m, 0);
+}
+void glLoadMatrixf(const GLfloat *m)
+{
+    double d[16];
+    for (int i = 0; i < 16; i++)
+        d[i] = m[i];
+    glLoadMatrixd(d);
+}
+void glMultMatrixd(const GLdouble *m)
+{
+    if (recording()) {
+        record(OP_MULT, 16, m);
+        if (!fxg.list_exec)
+            return;
+    }
+    load_d(m, 1);
+}
+void glMultMatrixf(const GLfloat *m)
+{
+    double d[16];
+    for (int i = 0; i < 16; i++)
+        d[i] = m[i];
+    glMultMatrixd(d);
+}
+void glTranslated(GLdouble x, GLdouble y, GLdouble z)
+{
+    REC(OP_TRANSLATE, x, y, z);
+    fx_glm t;
+    fx_glm_translate(&t, fxg_d2x(x), fxg_d2x(y), fxg_d2x(z));
+    mult_cur(&t);
+}
+void glTranslatef(GLfloat x, GLfloat y, GLfloat z) { glTranslated(x, y, z); }
+void glScaled(GLdouble x, GLdouble y, GLdouble z)
+{
+    REC(OP_SCALE, x, y, z);
+    fx_glm t;
+    fx_glm_scale(&t, fxg_d2x(x), fxg_d2x(y), fxg_d2x(z));
+    mult_cur(&t);
+}
+void glScalef(GLfloat x, GLfloat y, GLfloat z) { glScaled(x, y, z); }
+void glRotated(GLdouble a, GLdouble x, GLdouble y, GLdouble z)
+{
+    REC(OP_ROTATE, a, x, y, z);
+    fx_glm t;
+    fx_glm_rotate(&t, fxg_deg2angle(a), fxg_d2x(x), fxg_d2x(y), fxg_d2x(z));
+    mult_cur(&t);
+}
+void glRotatef(GLfloat a, GLfloat x, GLfloat y, GLfloat z) { glRotated(a, x, y, z); }
+void glOrtho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f)
+{
+    REC(OP_ORTHO, l, r, b, t, n, f);
+    fx_glm m;
+    if (fx_glm_ortho(&m, fxg_d2x(l), fxg_d2x(r), fxg_d2x(b), fxg_d2x(t), fxg_d2x(n),
+                     fxg_d2x(f)) < 0) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
+    mult_cur(&m);
+}
+void glFrustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f)
+{
+    REC(OP_FRUSTUM, l, r, b, t, n, f);
+    fx_glm m;
+    if (fx_glm_frustum(&m, fxg_d2x(l), fxg_d2x(r), fxg_d2x(b), fxg_d2x(t), fxg_d2x(n),
+                       fxg_d2x(f)) < 0) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
+    mult_cur(&m);
+}
+void gluOrtho2D(GLdouble l, GLdouble r, GLdouble b, GLdouble t) { glOrtho(l, r, b, t, -1, 1); }
+void gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble n, GLdouble f)
+{
+    fx_glm m;
+    if (fx_glm_perspective(&m, fxg_deg2angle(fovy), fxg_d2x(aspect), fxg_d2x(n), fxg_d2x(f)) < 0)
+        return;
+    double d[16];
+    for (int i = 0; i < 16; i++)
+        d[i] = fxg_x2d(m.m[i]);
+    glMultMatrixd(d);
+}
+void gluLookAt(GLdouble ex, GLdouble ey, GLdouble ez, GLdouble cx, GLdouble cy, GLdouble cz,
+               GLdouble ux, GLdouble uy, GLdouble uz)
+{
+    fx32 e[3] = {fxg_d2x(ex), fxg_d2x(ey), fxg_d2x(ez)};
+    fx32 c[3] = {fxg_d2x(cx), fxg_d2x(cy), fxg_d2x(cz)};
+    fx32 u[3] = {fxg_d2x(ux), fxg_d2x(uy), fxg_d2x(uz)};
+    fx_glm m;
+    if (fx_glm_lookat(&m, e, c, u) < 0)
+        return;
+    double d[16];
+    for (int i = 0; i < 16; i++)
+        d[i] = fxg_x2d(m.m[i]);
+    glMultMatrixd(d);
+}
+void glViewport(GLint x, GLint y, GLsizei w, GLsizei h)
+{
+    if (w < 0 || h < 0) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
+    fxg.vp[0] = x, fxg.vp[1] = y, fxg.vp[2] = w, fxg.vp[3] = h;
+    update_clip();
+}
+void glScissor(GLint x, GLint y, GLsizei w, GLsizei h)
+{
+    if (w < 0 || h < 0) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
+    fxg.scissor[0] = x, fxg.scissor[1] = y, fxg.scissor[2] = w, fxg.scissor[3] = h;
+    update_clip();
+}
+
+static void ensure_mvp(void)
+{
+    if (fxg.mvp_dirty) {
+        fx_glm_mul(&fxg.mvp, &fxg.proj[fxg.proj_top], &fxg.mv[fxg.mv_top]);
+        fxg.mvp_dirty = 0;
+    }
+    if (fxg.nmat_dirty && fxg.lighting) {
+        fx_glm_normal_matrix(&fxg.mv[fxg.mv_top], fxg.nmat);
+        fxg.nmat_dirty = 0;
+    }
+}
+
+/* ---- enables ---- */
+static int *cap_flag(GLenum cap)
+{
+    switch (cap) {
+    case GL_DEPTH_TEST: return &fxg.depth_test;
+    case GL_LIGHTING: return &fxg.lighting;
+    case GL_COLOR_MATERIAL: return &fxg.color_material;
+    case GL_NORMALIZE: return &fxg.normalize;
+    case GL_RESCALE_NORMAL: return &fxg.rescale;
+    case GL_CULL_FACE: return &fxg.cull;
+    case GL_BLEND: return &fxg.blend;
+    case GL_LINE_STIPPLE: return &fxg.stipple;
+    case GL_SCISSOR_TEST: return &fxg.scissor_on;
+    case GL_TEXTURE_2D: return &fxg.tex2d;
+    default: return NULL;
+    }
+}
+static void set_cap(GLenum cap, int on)
+{
+    if (cap >= GL_LIGHT0 && cap <= GL_LIGHT7) {
+        fxg.L.light[cap - GL_LIGHT0].enabled = on;
+        return;
+    }
+    int *f = cap_flag(cap);
+    if (f) {
+        *f = on;
+        if (cap == GL_SCISSOR_TEST)
+            update_clip();
+        if (cap == GL_LIGHTING)
+            fxg.nmat_dirty = 1;
+        return;
+    }
+    switch (cap) {
+    case GL_DITHER: case GL_POINT_SMOOTH: case GL_LINE_SMOOTH: case GL_POLYGON_SMOOTH:
+    case GL_MULTISAMPLE: case GL_AUTO_NORMAL:
+        return; /* accepted; no visible effect here (llvmpipe dithers nothing either) */
+    case GL_ALPHA_TEST: case GL_FOG: case GL_STENCIL_TEST: case GL_POLYGON_OFFSET_FILL:
+    case GL_POLYGON_OFFSET_LINE: case GL_POLYGON_OFFSET_POINT: case GL_COLOR_LOGIC_OP:
+    case GL_INDEX_LOGIC_OP: case GL_POLYGON_STIPPLE: case GL_TEXTURE_1D: case GL_CLIP_PLANE0:
+    case GL_CLIP_PLANE1: case GL_CLIP_PLANE2: case GL_CLIP_PLANE3: case GL_TEXTURE_GEN_S:
+    case GL_TEXTURE_GEN_T: case GL_MAP2_VERTEX_3: case GL_MAP1_VERTEX_3:
+        if (on)
+            fxg_unimplemented(cap == GL_FOG ? "glEnable(GL_FOG)"
+                              : cap == GL_ALPHA_TEST ? "glEnable(GL_ALPHA_TEST)"
+                              : cap == GL_COLOR_LOGIC_OP ? "glEnable(GL_COLOR_LOGIC_OP)"
+                              : cap == GL_POLYGON_OFFSET_FILL ? "glEnable(GL_POLYGON_OFFSET_FILL)"
+                              : "glEnable(an unsupported capability)",
+                              GL_INVALID_ENUM);
+        return;
+    default:
+        fxg_set_error(GL_INVALID_ENUM);
+    }
+}
+void glEnable(GLenum cap)
+{
+    REC(OP_ENABLE, (double)cap);
+    set_cap(cap, 1);
+}
+void glDisable(GLenum cap)
+{
+    REC(OP_DISABLE, (double)cap);
+    set_cap(cap, 0);
+}
+GLboolean glIsEnabled(GLenum cap)
+{
+    if (cap >= GL_LIGHT0 && cap <= GL_LIGHT7)
+        return (GLboolean)fxg.L.light[cap - GL_LIGHT0].enabled;
+    int *f = cap_flag(cap);
+    return f ? (GLboolean)(*f != 0) : GL_FALSE;
+}
+
+void glShadeModel(GLenum m)
+{
+    REC(OP_SHADE, (double)m);
+    if (m != GL_FLAT && m != GL_SMOOTH) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return;
+    }
+    fxg.shade = m;
+}
+void glPointSize(GLfloat s)
+{
+    REC(OP_POINTSIZE, s);
+    if (s <= 0) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
+    fxg.point_size = s;
+}
+void glLineWidth(GLfloat w)
+{
+    REC(OP_LINEWIDTH, w);
+    if (w <= 0) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
+    fxg.line_width = w;
+}
+void glLineStipple(GLint factor, GLushort pattern)
+{
+    REC(OP_STIPPLE, factor, pattern);
+    fxg.stipple_factor = factor < 1 ? 1 : factor > 256 ? 256 : factor;
+    fxg.stipple_pattern = pattern;
+}
+void glPolygonMode(GLenum face, GLenum mode)
+{
+    REC(OP_POLYMODE, (double)face, (double)mode);
+    if (mode != GL_POINT && mode != GL_LINE && mode != GL_FILL) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return;
+    }
+    if (face == GL_FRONT || face == GL_FRONT_AND_BACK)
+        fxg.poly_front = mode;
+    if (face == GL_BACK || face == GL_FRONT_AND_BACK)
+        fxg.poly_back = mode;
+}
+void glDepthFunc(GLenum f)
+{
+    REC(OP_DEPTHFUNC, (double)f);
+    if (f < GL_NEVER || f > GL_ALWAYS) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return;
+    }
+    fxg.depth_func = f;
+}
+void glDepthMask(GLboolean flag) { fxg.depth_mask = flag != 0; }
+void glDepthRange(GLclampd n, GLclampd f)
+{
+    if (n != 0.0 || f != 1.0)
+        fxg_unimplemented("glDepthRange (other than 0, 1)", GL_INVALID_OPERATION);
+}
+void glCullFace(GLenum m)
+{
+    REC(OP_CULLFACE, (double)m);
+    if (m != GL_FRONT && m != GL_BACK && m != GL_FRONT_AND_BACK) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return;
+    }
+    fxg.cull_face = m;
+}
+void glFrontFace(GLenum m)
+{
+    REC(OP_FRONTFACE, (double)m);
+    if (m != GL_CW && m != GL_CCW) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return;
+    }
+    fxg.front_face = m;
+}
+static int blend_factor(GLenum f)
+{
+    switch (f) {
+    case GL_ZERO: return FX_GL_BF_ZERO;
+    case GL_ONE: return FX_GL_BF_ONE;
+    case GL_SRC_COLOR: return FX_GL_BF_SRC_COLOR;
+    case GL_ONE_MINUS_SRC_COLOR: return FX_GL_BF_ONE_MINUS_SRC_COLOR;
+    case GL_SRC_ALPHA: return FX_GL_BF_SRC_ALPHA;
+    case GL_ONE_MINUS_SRC_ALPHA: return FX_GL_BF_ONE_MINUS_SRC_ALPHA;
+    case GL_DST_ALPHA: return FX_GL_BF_DST_ALPHA;
+    case GL_ONE_MINUS_DST_ALPHA: return FX_GL_BF_ONE_MINUS_DST_ALPHA;
+    case GL_DST_COLOR: return FX_GL_BF_DST_COLOR;
+    case GL_ONE_MINUS_DST_COLOR: return FX_GL_BF_ONE_MINUS_DST_COLOR;
+    case GL_SRC_ALPHA_SATURATE: return FX_GL_BF_SRC_ALPHA_SATURATE;
+    default: return -1;
+    }
+}
+void glBlendFunc(GLenum s, GLenum d)
+{
+    REC(OP_BLENDFUNC, (double)s, (double)d);
+    if (blend_factor(s) < 0 || blend_factor(d) < 0) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return;
+    }
+    fxg.bsrc = s, fxg.bdst = d;
+}
+void glColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a)
+{
+    fxg.color_mask = (uint8_t)((r ? 1 : 0) | (g ? 2 : 0) | (b ? 4 : 0) | (a ? 8 : 0));
+    if (!fxg.color_mask)
+        fxg.color_mask = 0x10; /* nothing written */
+}
+void glHint(GLenum target, GLenum mode) { (void)target, (void)mode; }
+
+/* ---- clearing ---- */
+void glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a)
+{
+    REC(OP_CLEARCOLOR, r, g, b, a);
+    fxg.clear_color[0] = fxg_d2c(r), fxg.clear_color[1] = fxg_d2c(g);
+    fxg.clear_color[2] = fxg_d2c(b), fxg.clear_color[3] = fxg_d2c(a);
+}
+void glClearDepth(GLclampd d)
+{
+    d = d < 0 ? 0 : d > 1 ? 1 : d;
+    int64_t z = llrint(d * 16777216.0);
+    fxg.clear_depth = z > 0xFFFFFF ? 0xFFFFFF : (uint32_t)z;
+}
+static int lvl(fx16 c) { return (int)(((int64_t)c * 255 + 0x8000) >> 16); }
+void glClear(GLbitfield mask)
+{
+    REC(OP_CLEAR, (double)mask);
+    if (fxg.in_begin) {
+        fxg_set_error(GL_INVALID_OPERATION);
+        return;
+    }
+    fx_rect r = {0, 0, fxg.w, fxg.h};
+    if (fxg.scissor_on)
+        r = (fx_rect){fxg.scissor[0], fxg.scissor[1], fxg.scissor[0] + fxg.scissor[2],
+                      fxg.scissor[1] + fxg.scissor[3]};
+    fx_color c = ((fx_color)lvl(fxg.clear_color[3]) << 24) | ((fx_color)lvl(fxg.clear_color[0]) << 16) |
+                 ((fx_color)lvl(fxg.clear_color[1]) << 8) | (fx_color)lvl(fxg.clear_color[2]);
+    fx_gl_clear(&fxg.tgt, r, c, (mask & GL_COLOR_BUFFER_BIT) != 0, fxg.clear_depth,
+                (mask & GL_DEPTH_BUFFER_BIT) != 0);
+}
+
+void glFlush(void) { fxg_frame_done(0); }
+void glFinish(void) { fxg_frame_done(0); }
+
+/* ---- current attributes ---- */
+static void apply_color_material(void)
+{
+    if (!fxg.color_material)
+        return;
+    for (int f = 0; f < 2; f++) {
+        if ((f == 0 && fxg.cm_face == GL_BACK) || (f == 1 && fxg.cm_face == GL_FRONT))
+            continue;
+        fx_gl_material *m = &fxg.mat[f];
+        for (int k = 0; k < 4; k++) {
+            switch (fxg.cm_mode) {
+            case GL_AMBIENT: m->ambient[k] = fxg.color[k]; break;
+            case GL_DIFFUSE: m->diffuse[k] = fxg.color[k]; break;
+            case GL_SPECULAR: m->specular[k] = fxg.color[k]; break;
+            case GL_EMISSION: m->emission[k] = fxg.color[k]; break;
+            default: m->ambient[k] = m->diffuse[k] = fxg.color[k]; break;
+            }
+        }
+    }
+}
+static void set_color(double r, double g, double b, double a)
+{
+    REC(OP_COLOR, r, g, b, a);
+    fxg.color[0] = fxg_d2c(r), fxg.color[1] = fxg_d2c(g), fxg.color[2] = fxg_d2c(b),
+    fxg.color[3] = fxg_d2c(a);
+    apply_color_material();
+}
+#define B(v) ((2.0 * (v) + 1.0) / 255.0)
+#define S(v) ((2.0 * (v) + 1.0) / 65535.0)
+#define I(v) ((2.0 * (double)(v) + 1.0) / 4294967295.0)
+void glColor3b(GLbyte r, GLbyte g, GLbyte b) { set_color(B(r), B(g), B(b), 1); }
+void glColor3d(GLdouble r, GLdouble g, GLdouble b) { set_color(r, g, b, 1); }
+void glColor3f(GLfloat r, GLfloat g, GLfloat b) { set_color(r, g, b, 1); }
+void glColor3i(GLint r, GLint g, GLint b) { set_color(I(r), I(g), I(b), 1); }
+void glColor3s(GLshort r, GLshort g, GLshort b) { set_color(S(r), S(g), S(b), 1); }
+void glColor3ub(GLubyte r, GLubyte g, GLubyte b) { set_color(r / 255.0, g / 255.0, b / 255.0, 1); }
+void glColor3ui(GLuint r, GLuint g, GLuint b) { set_color(r / 4294967295.0, g / 4294967295.0, b / 4294967295.0, 1); }
+void glColor3us(GLushort r, GLushort g, GLushort b) { set_color(r / 65535.0, g / 65535.0, b / 65535.0, 1); }
+void glColor4b(GLbyte r, GLbyte g, GLbyte b, GLbyte a) { set_color(B(r), B(g), B(b), B(a)); }
+void glColor4d(GLdouble r, GLdouble g, GLdouble b, GLdouble a) { set_color(r, g, b, a); }
+void glColor4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { set_color(r, g, b, a); }
+void glColor4i(GLint r, GLint g, GLint b, GLint a) { set_color(I(r), I(g), I(b), I(a)); }
+void glColor4s(GLshort r, GLshort g, GLshort b, GLshort a) { set_color(S(r), S(g), S(b), S(a)); }
+void glColor4ub(GLubyte r, GLubyte g, GLubyte b, GLubyte a) { set_color(r / 255.0, g / 255.0, b / 255.0, a / 255.0); }
+void glColor4ui(GLuint r, GLuint g, GLuint b, GLuint a) { set_color(r / 4294967295.0, g / 4294967295.0, b / 4294967295.0, a / 4294967295.0); }
+void glColor4us(GLushort r, GLushort g, GLushort b, GLushort a) { set_color(r / 65535.0, g / 65535.0, b / 65535.0, a / 65535.0); }
+void glColor3bv(const GLbyte *v) { glColor3b(v[0], v[1], v[2]); }
+void glColor3dv(const GLdouble *v) { glColor3d(v[0], v[1], v[2]); }
+void glColor3fv(const GLfloat *v) { glColor3f(v[0], v[1], v[2]); }
+void glColor3iv(const GLint *v) { glColor3i(v[0], v[1], v[2]); }
+void glColor3sv(const GLshort *v) { glColor3s(v[0], v[1], v[2]); }
+void glColor3ubv(const GLubyte *v) { glColor3ub(v[0], v[1], v[2]); }
+void glColor3uiv(const GLuint *v) { glColor3ui(v[0], v[1], v[2]); }
+void glColor3usv(const GLushort *v) { glColor3us(v[0], v[1], v[2]); }
+void glColor4bv(const GLbyte *v) { glColor4b(v[0], v[1], v[2], v[3]); }
+void glColor4dv(const GLdouble *v) { glColor4d(v[0], v[1], v[2], v[3]); }
+void glColor4fv(const GLfloat *v) { glColor4f(v[0], v[1], v[2], v[3]); }
+void glColor4iv(const GLint *v) { glColor4i(v[0], v[1], v[2], v[3]); }
+void glColor4sv(const GLshort *v) { glColor4s(v[0], v[1], v[2], v[3]); }
+void glColor4ubv(const GLubyte *v) { glColor4ub(v[0], v[1], v[2], v[3]); }
+void glColor4uiv(const GLuint *v) { glColor4ui(v[0], v[1], v[2], v[3]); }
+void glColor4usv(const GLushort *v) { glColor4us(v[0], v[1], v[2], v[3]); }
+
+static void set_normal(double x, double y, double z)
+{
+    REC(OP_NORMAL, x, y, z);
+    fxg.normal[0] = fxg_d2x(x), fxg.normal[1] = fxg_d2x(y), fxg.normal[2] = fxg_d2x(z);
+}
+void glNormal3b(GLbyte x, GLbyte y, GLbyte z) { set_normal(B(x), B(y), B(z)); }
+void glNormal3d(GLdouble x, GLdouble y, GLdouble z) { set_normal(x, y, z); }
+void glNormal3f(GLfloat x, GLfloat y, GLfloat z) { set_normal(x, y, z); }
+void glNormal3i(GLint x, GLint y, GLint z) { set_normal(I(x), I(y), I(z)); }
+void glNormal3s(GLshort x, GLshort y, GLshort z) { set_normal(S(x), S(y), S(z)); }
+void glNormal3bv(const GLbyte *v) { glNormal3b(v[0], v[1], v[2]); }
+void glNormal3dv(const GLdouble *v) { set_normal(v[0], v[1], v[2]); }
+void glNormal3fv(const GLfloat *v) { set_normal(v[0], v[1], v[2]); }
+void glNormal3iv(const GLint *v) { glNormal3i(v[0], v[1], v[2]); }
+void glNormal3sv(const GLshort *v) { glNormal3s(v[0], v[1], v[2]); }
+#undef B
+#undef S
+#undef I
+
+static void set_tc(double s, double t)
+{
+    REC(OP_TEXCOORD, s, t);
+    fxg.texc[0] = fxg_d2q16(s), fxg.texc[1] = fxg_d2q16(t);
+}
+void glTexCoord1f(GLfloat s) { set_tc(s, 0); }
+void glTexCoord1d(GLdouble s) { set_tc(s, 0); }
+void glTexCoord2d(GLdouble s, GLdouble t) { set_tc(s, t); }
+void glTexCoord2f(GLfloat s, GLfloat t) { set_tc(s, t); }
+void glTexCoord2i(GLint s, GLint t) { set_tc(s, t); }
+void glTexCoord2s(GLshort s, GLshort t) { set_tc(s, t); }
+void glTexCoord2dv(const GLdouble *v) { set_tc(v[0], v[1]); }
+void glTexCoord2fv(const GLfloat *v) { set_tc(v[0], v[1]); }
+void glTexCoord2iv(const GLint *v) { set_tc(v[0], v[1]); }
+void glTexCoord2sv(const GLshort *v) { set_tc(v[0], v[1]); }
+void glTexCoord3f(GLfloat s, GLfloat t, GLfloat r) { (void)r, set_tc(s, t); }
+void glTexCoord4f(GLfloat s, GLfloat t, GLfloat r, GLfloat q) { (void)r, (void)q, set_tc(s, t); }
+
+/* ---- lights and materials ---- */
+static fx_gl_light *light_of(GLenum l)
+{
+    if (l < GL_LIGHT0 || l > GL_LIGHT7) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return NULL;
+    }
+    return &fxg.L.light[l - GL_LIGHT0];
+}
+static void light_v(GLenum light, GLenum pname, const double *p)
+{
+    if (recording()) {
+        double a[6] = {(double)light, (double)pname, p[0], 0, 0, 0};
+        int n = pname == GL_POSITION || pname == GL_AMBIENT || pname == GL_DIFFUSE ||
+                        pname == GL_SPECULAR ? 4 : pname == GL_SPOT_DIRECTION ? 3 : 1;
+        for (int i = 1; i < n; i++)
+            a[2 + i] = p[i];
+        record(OP_LIGHT, 6, a);
+        if (!fxg.list_exec)
+            return;
+    }
+    fx_gl_light *l = light_of(light);
+    if (!l)
+        return;
+    switch (pname) {
+    case GL_AMBIENT: for (int k = 0; k < 4; k++) l->ambient[k] = fxg_d2q16(p[k]); break;
+    case GL_DIFFUSE: for (int k = 0; k < 4; k++) l->diffuse[k] = fxg_d2q16(p[k]); break;
+    case GL_SPECULAR: for (int k = 0; k < 4; k++) l->specular[k] = fxg_d2q16(p[k]); break;
+    case GL_POSITION: {
+        fx_glv4 v = {fxg_d2x(p[0]), fxg_d2x(p[1]), fxg_d2x(p[2]), fxg_d2x(p[3])};
+        v = fx_glm_apply(&fxg.mv[fxg.mv_top], v);
+        l->pos[0] = v.x, l->pos[1] = v.y, l->pos[2] = v.z, l->pos[3] = v.w;
+        break;
+    }
+    case GL_SPOT_DIRECTION: {
+        const fx_glm *m = &fxg.mv[fxg.mv_top];
+        fx32 d[3] = {fxg_d2x(p[0]), fxg_d2x(p[1]), fxg_d2x(p[2])};
+        for (int r = 0; r < 3; r++)
+            l->spot_dir[r] = fx32_mul(m->m[r], d[0]) + fx32_mul(m->m[4 + r], d[1]) +
+                             fx32_mul(m->m[8 + r], d[2]);
+        break;
+    }
+    case GL_SPOT_EXPONENT: l->spot_exp = fxg_d2q16(p[0]); break;
+    case GL_SPOT_CUTOFF:
+        l->spot_cut = p[0] != 180.0;
+        l->spot_cos = fx32_cos(fxg_deg2angle(p[0]));
+        break;
+    case GL_CONSTANT_ATTENUATION: l->att[0] = fxg_d2x(p[0]); break;
+    case GL_LINEAR_ATTENUATION: l->att[1] = fxg_d2x(p[0]); break;
+    case GL_QUADRATIC_ATTENUATION: l->att[2] = fxg_d2x(p[0]); break;
+    default: fxg_set_error(GL_INVALID_ENUM);
+    }
+}
+void glLightfv(GLenum l, GLenum pname, const GLfloat *p)
+{
+    double d[4] = {p[0], 0, 0, 0};
+    int n = pname == GL_SPOT_DIRECTION ? 3 : (pname == GL_AMBIENT || pname == GL_DIFFUSE ||
+                                               pname == GL_SPECULAR || pname == GL_POSITION) ? 4 : 1;
+    for (int i = 1; i < n; i++)
+        d[i] = p[i];
+    light_v(l, pname, d);
+}
+void glLightiv(GLenum l, GLenum pname, const GLint *p)
+{
+    double d[4] = {p[0], 0, 0, 0};
+    int n = pname == GL_SPOT_DIRECTION ? 3 : (pname == GL_AMBIENT || pname == GL_DIFFUSE ||
+                                               pname == GL_SPECULAR || pname == GL_POSITION) ? 4 : 1;
+    for (int i = 1; i < n; i++)
+        d[i] = p[i];
+    if (pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR)
+        for (int i = 0; i < 4; i++)
+            d[i] = (2.0 * p[i] + 1) / 4294967295.0;
+    light_v(l, pname, d);
+}
+void glLightf(GLenum l, GLenum pname, GLfloat p)
+{
+    double d[4] = {p, 0, 0, 0};
+    light_v(l, pname, d);
+}
+void glLighti(GLenum l, GLenum pname, GLint p) { glLightf(l, pname, (GLfloat)p); }
+void glGetLightfv(GLenum light, GLenum pname, GLfloat *p)
+{
+    fx_gl_light *l = light_of(light);
+    if (!l)
+        return;
+    const fx16 *c = pname == GL_AMBIENT ? l->ambient : pname == GL_DIFFUSE ? l->diffuse
+                    : pname == GL_SPECULAR ? l->specular : NULL;
+    if (c)
+        for (int k = 0; k < 4; k++)
+            p[k] = (GLfloat)(c[k] / 65536.0);
+    else if (pname == GL_POSITION)
+        for (int k = 0; k < 4; k++)
+            p[k] = (GLfloat)fxg_x2d(l->pos[k]);
+    else
+        fxg_set_error(GL_INVALID_ENUM);
+}
+static void light_model(GLenum pname, const double *p)
+{
+    if (recording()) {
+        double a[5] = {(double)pname, p[0], pname == GL_LIGHT_MODEL_AMBIENT ? p[1] : 0,
+                       pname == GL_LIGHT_MODEL_AMBIENT ? p[2] : 0,
+                       pname == GL_LIGHT_MODEL_AMBIENT ? p[3] : 0};
+        record(OP_LIGHTMODEL, 5, a);
+        if (!fxg.list_exec)
+            return;
+    }
+    switch (pname) {
+    case GL_LIGHT_MODEL_AMBIENT:
+        for (int k = 0; k < 4; k++)
+            fxg.L.model_ambient[k] = fxg_d2q16(p[k]);
+        break;
+    case GL_LIGHT_MODEL_TWO_SIDE: fxg.L.two_side = p[0] != 0; break;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER:
+        if (p[0] != 0)
+            fxg_unimplemented("glLightModel(GL_LIGHT_MODEL_LOCAL_VIEWER)", GL_INVALID_OPERATION);
+        break;
+    case GL_LIGHT_MODEL_COLOR_CONTROL: break;
+    default: fxg_set_error(GL_INVALID_ENUM);
+    }
+}
+void glLightModelfv(GLenum pname, const GLfloat *p)
+{
+    double d[4] = {p[0], 0, 0, 0};
+    if (pname == GL_LIGHT_MODEL_AMBIENT)
+        for (int i = 1; i < 4; i++)
+            d[i] = p[i];
+    light_model(pname, d);
+}
+void glLightModeliv(GLenum pname, const GLint *p)
+{
+    double d[4] = {p[0], 0, 0, 0};
+    if (pname == GL_LIGHT_MODEL_AMBIENT)
+        for (int i = 0; i < 4; i++)
+            d[i] = (2.0 * p[i] + 1) / 4294967295.0;
+    light_model(pname, d);
+}
+void glLightModelf(GLenum pname, GLfloat p)
+{
+    double d[4] = {p, 0, 0, 0};
+    light_model(pname, d);
+}
+void glLightModeli(GLenum pname, GLint p) { glLightModelf(pname, (GLfloat)p); }
+
+static void material_v(GLenum face, GLenum pname, const double *p)
+{
+    if (recording()) {
+        double a[6] = {(double)face, (double)pname, p[0], 0, 0, 0};
+        if (pname != GL_SHININESS)
+            a[3] = p[1], a[4] = p[2], a[5] = p[3];
+        record(OP_MATERIAL, 6, a);
+        if (!fxg.list_exec)
+            return;
+    }
+    for (int f = 0; f < 2; f++) {
+        if ((f == 0 && face == GL_BACK) || (f == 1 && face == GL_FRONT))
+            continue;
+        fx_gl_material *m = &fxg.mat[f];
+        switch (pname) {
+        case GL_AMBIENT: for (int k = 0; k < 4; k++) m->ambient[k] = fxg_d2q16(p[k]); break;
+        case GL_DIFFUSE: for (int k = 0; k < 4; k++) m->diffuse[k] = fxg_d2q16(p[k]); break;
+        case GL_SPECULAR: for (int k = 0; k < 4; k++) m->specular[k] = fxg_d2q16(p[k]); break;
+        case GL_EMISSION: for (int k = 0; k < 4; k++) m->emission[k] = fxg_d2q16(p[k]); break;
+        case GL_AMBIENT_AND_DIFFUSE:
+            for (int k = 0; k < 4; k++)
+                m->ambient[k] = m->diffuse[k] = fxg_d2q16(p[k]);
+            break;
+        case GL_SHININESS: m->shininess = fxg_d2q16(p[0] < 0 ? 0 : p[0] > 128 ? 128 : p[0]); break;
+        default: fxg_set_error(GL_INVALID_ENUM); return;
+        }
+    }
+}
+void glMaterialfv(GLenum face, GLenum pname, const GLfloat *p)
+{
+    double d[4] = {p[0], 0, 0, 0};
+    if (pname != GL_SHININESS)
+        for (int i = 1; i < 4; i++)
+            d[i] = p[i];
+    material_v(face, pname, d);
+}
+void glMaterialiv(GLenum face, GLenum pname, const GLint *p)
+{
+    double d[4] = {p[0], 0, 0, 0};
+    if (pname != GL_SHININESS)
+        for (int i = 0; i < 4; i++)
+            d[i] = (2.0 * p[i] + 1) / 4294967295.0;
+    material_v(face, pname, d);
+}
+void glMaterialf(GLenum face, GLenum pname, GLfloat p)
+{
+    double d[4] = {p, 0, 0, 0};
+    material_v(face, pname, d);
+}
+void glMateriali(GLenum face, GLenum pname, GLint p) { glMaterialf(face, pname, (GLfloat)p); }
+void glGetMaterialfv(GLenum face, GLenum pname, GLfloat *p)
+{
+    fx_gl_material *m = &fxg.mat[face == GL_BACK];
+    const fx16 *c = pname == GL_AMBIENT ? m->ambient : pname == GL_DIFFUSE ? m->diffuse
+                    : pname == GL_SPECULAR ? m->specular : pname == GL_EMISSION ? m->emission
+                                                                               : NULL;
+    if (c)
+        for (int k = 0; k < 4; k++)
+            p[k] = (GLfloat)(c[k] / 65536.0);
+    else if (pname == GL_SHININESS)
+        p[0] = (GLfloat)(m->shininess / 65536.0);
+}
+void glColorMaterial(GLenum face, GLenum mode)
+{
+    REC(OP_COLORMATERIAL, (double)face, (double)mode);
+    fxg.cm_face = face, fxg.cm_mode = mode;
+    apply_color_material();
+}
+
+/* ---- the pipeline ---- */
+static void sync_target(void)
+{
+    fx_gl_target *t = &fxg.tgt;
+    t->depth_test = (uint8_t)fxg.depth_test;
+    t->depth_write = (uint8_t)fxg.depth_mask;
+    t->depth_func = (uint8_t)(fxg.depth_func - GL_NEVER);
+    t->blend = (uint8_t)(fxg.blend && !(fxg.bsrc == GL_ONE && fxg.bdst == GL_ZERO));
+    t->bf_src = (uint8_t)blend_factor(fxg.bsrc);
+    t->bf_dst = (uint8_t)blend_factor(fxg.bdst);
+    t->stipple_on = (uint8_t)fxg.stipple;
+    t->stipple_pattern = fxg.stipple_pattern;
+    t->stipple_factor = fxg.stipple_factor;
+    t->color_mask = fxg.color_mask == 0x10 ? 0 : fxg.color_mask;
+    t->tex = NULL;
+    if (fxg.tex2d && fxg.bound_tex < FXG_MAX_TEX && fxg.tex[fxg.bound_tex].used &&
+        fxg.tex[fxg.bound_tex].mem) {
+        t->tex = &fxg.tex[fxg.bound_tex].t;
+        t->tex_env = fxg.tex_env == GL_REPLACE ? FX_GL_TEX_REPLACE
+                     : fxg.tex_env == GL_DECAL ? FX_GL_TEX_DECAL
+                     : fxg.tex_env == GL_BLEND ? FX_GL_TEX_BLEND
+                     : fxg.tex_env == GL_ADD   ? FX_GL_TEX_ADD
+                                               : FX_GL_TEX_MODULATE;
+    }
+}
+
+static int32_t isize(float s)
+{
+    int32_t v = (int32_t)lrintf(s);
+    return v < 1 ? 1 : v > 256 ? 256 : v;
+}
+
+/* A vertex through modelview, lighting and projection. */
+static void process_vertex(fx32 x, fx32 y, fx32 z, fx32 w, fx_gl_cvert *o)
+{
+    ensure_mvp();
+    fx_glv4 v = {x, y, z, w};
+    o->p = fx_glm_apply(&fxg.mvp, v);
+    if (fxg.lighting) {
+        fx_glv4 e = fx_glm_apply(&fxg.mv[fxg.mv_top], v);
+        fx32 n[3];
+        for (int r = 0; r < 3; r++)
+            n[r] = fx32_mul(fxg.nmat[r], fxg.normal[0]) + fx32_mul(fxg.nmat[3 + r], fxg.normal[1]) +
+                   fx32_mul(fxg.nmat[6 + r], fxg.normal[2]);
+        if (fxg.normalize || fxg.rescale)
+            fx_glv3_normalize(n);
+        fx32 p[4] = {e.x, e.y, e.z, e.w};
+        fx_gl_shade(&fxg.L, &fxg.mat[0], p, n, o->c);
+    } else {
+        for (int k = 0; k < 4; k++)
+            o->c[k] = fxg.color[k];
+    }
+    o->s = fxg.texc[0], o->t = fxg.texc[1];
+}
+
+static int to_win(const fx_gl_cvert *c, fx_gl_wvert *w)
+{
+    if (fx_gl_to_window(&c->p, fxg.vp[0], fxg.vp[1], fxg.vp[2], fxg.vp[3], w) < 0)
+        return -1;
+    for (int k = 0; k < 4; k++)
+        w->c[k] = c->c[k];
+    w->s = c->s, w->t = c->t;
+    return 0;
+}
+
+static void draw_point(const fx_gl_cvert *c)
+{
+    if (!fx_gl_point_visible(&c->p))
+        return;
+    /* beyond the guard band nothing can be seen and the arithmetic would overflow */
+    fx32 gw = fx32_mul(fxg.guard, c->p.w);
+    if (c->p.x > gw || c->p.x < -gw || c->p.y > gw || c->p.y < -gw)
+        return;
+    fx_gl_wvert w;
+    if (to_win(c, &w) == 0)
+        fx_gl_point(&fxg.tgt, &w, isize(fxg.point_size));
+}
+
+static void draw_line(const fx_gl_cvert *a, const fx_gl_cvert *b, const fx16 *provoking)
+{
+    fx_gl_cvert ca = *a, cb = *b;
+    if (!fx_gl_clip_line(&ca, &cb, fxg.guard))
+        return;
+    fx_gl_wvert wa, wb;
+    if (to_win(&ca, &wa) < 0 || to_win(&cb, &wb) < 0)
+        return;
+    fx_gl_line(&fxg.tgt, &wa, &wb, isize(fxg.line_width),
+               fxg.shade == GL_FLAT ? provoking : NULL);
+}
+
+/* One polygon of n (3 or 4) clip-space vertices, convex, with GL edge
+ * flags: edge i (v[i] -> v[i+1]) is drawn in line mode when bit i is set. */
+static void raster_poly(fx_gl_wvert *w, int m, int n, const fx16 *provoking, unsigned edges);
+static void draw_poly(const fx_gl_cvert *const *v, int n, const fx16 *provoking, unsigned edges)
+{
+    fx_gl_cvert in[4], out[16], tmp[16];
+    for (int i = 0; i < n; i++)
+        in[i] = *v[i];
+    int m = fx_gl_clip_poly(in, n, out, tmp, fxg.guard);
+    if (m < 3)
+        return;
+    fx_gl_wvert w[16];
+    for (int i = 0; i < m; i++)
+        if (to_win(&out[i], &w[i]) < 0)
+            return;
+    raster_poly(w, m, n, provoking, edges);
+}
+/* Culling, polygon mode and rasterization of a polygon already in window
+ * coordinates (m vertices; n: how many it had before clipping). */
+static void raster_poly(fx_gl_wvert *w, int m, int n, const fx16 *provoking, unsigned edges)
+{
+    int64_t area = 0;
+    for (int i = 1; i + 1 < m && area == 0; i++)
+        area = fx_gl_area2(&w[0], &w[i], &w[i + 1]);
+    if (area == 0)
+        return;
+    int front = (area > 0) == (fxg.front_face == GL_CCW);
+    if (fxg.cull && (fxg.cull_face == GL_FRONT_AND_BACK || (front && fxg.cull_face == GL_FRONT) ||
+                     (!front && fxg.cull_face == GL_BACK)))
+        return;
+    if (fxg.lighting && fxg.L.two_side && !front) {
+        /* two-sided lighting would relight with the back material and a flipped
+         * normal; kept to the front colours here (documented) */
+    }
+    GLenum mode = front ? fxg.poly_front : fxg.poly_back;
+    const fx16 *flat = fxg.shade == GL_FLAT ? provoking : NULL;
+    if (mode == GL_FILL) {
+        for (int i = 1; i + 1 < m; i++)
+            fx_gl_triangle(&fxg.tgt, &w[0], &w[i], &w[i + 1], flat);
+    } else if (mode == GL_LINE) {
+        int clipped = m != n;
+        for (int i = 0; i < m; i++)
+            if (clipped || (edges >> i) & 1) {
+                fxg.tgt.stipple_count = 0;
+                fx_gl_line(&fxg.tgt, &w[i], &w[(i + 1) % m], isize(fxg.line_width), flat);
+            }
+    } else {
+        for (int i = 0; i < m; i++)
+            if (m != n || (edges >> i) & 1)
+                fx_gl_point(&fxg.tgt, &w[i], isize(fxg.point_size));
+    }
+}
+
+static void draw_tri(const fx_gl_cvert *a, const fx_gl_cvert *b, const fx_gl_cvert *c,
+                     const fx16 *prov, unsigned edges)
+{
+    const fx_gl_cvert *v[3] = {a, b, c};
+    draw_poly(v, 3, prov, edges);
+}
+
+/* Assemble the buffered vertices; final = glEnd (else keep what a strip needs). */
+static void assemble(int final)
+{
+    sync_target();
+    fxg_vert *vb = fxg.vb;
+    int n = fxg.nv, used = n;
+    switch (fxg.prim) {
+    case GL_POINTS:
+        for (int i = 0; i < n; i++)
+            draw_point(&vb[i].cv);
+        break;
+    case GL_LINES:
+        for (int i = 0; i + 1 < n; i += 2) {
+            fxg.tgt.stipple_count = 0;
+            draw_line(&vb[i].cv, &vb[i + 1].cv, vb[i + 1].cv.c);
+        }
+        used = n & ~1;
+        break;
+    case GL_LINE_STRIP:
+    case GL_LINE_LOOP:
+        if (!final)
+            return;
+        fxg.tgt.stipple_count = 0;
+        for (int i = 0; i + 1 < n; i++)
+            draw_line(&vb[i].cv, &vb[i + 1].cv, vb[i + 1].cv.c);
+        if (fxg.prim == GL_LINE_LOOP && n >= 2)
+            draw_line(&vb[n - 1].cv, &vb[0].cv, vb[0].cv.c);
+        break;
+    case GL_TRIANGLES:
+        for (int i = 0; i + 2 < n; i += 3)
+            draw_tri(&vb[i].cv, &vb[i + 1].cv, &vb[i + 2].cv, vb[i + 2].cv.c, 7);
+        used = n - n % 3;
+        break;
+    case GL_QUADS:
+        for (int i = 0; i + 3 < n; i += 4) {
+            const fx_gl_cvert *v[4] = {&vb[i].cv, &vb[i + 1].cv, &vb[i + 2].cv, &vb[i + 3].cv};
+            draw_poly(v, 4, vb[i + 3].cv.c, 15);
+        }
+        used = n & ~3;
+        break;
+    case GL_TRIANGLE_STRIP:
+    case GL_TRIANGLE_FAN:
+    case GL_QUAD_STRIP:
+    case GL_POLYGON:
+        if (!final)
+            return;
+        if (fxg.prim == GL_TRIANGLE_STRIP) {
+            for (int i = 0; i + 2 < n; i++) {
+                if (i & 1)
+                    draw_tri(&vb[i + 1].cv, &vb[i].cv, &vb[i + 2].cv, vb[i + 2].cv.c, 7);
+                else
+                    draw_tri(&vb[i].cv, &vb[i + 1].cv, &vb[i + 2].cv, vb[i + 2].cv.c, 7);
+            }
+        } else if (fxg.prim == GL_TRIANGLE_FAN) {
+            for (int i = 1; i + 1 < n; i++)
+                draw_tri(&vb[0].cv, &vb[i].cv, &vb[i + 1].cv, vb[i + 1].cv.c, 7);
+        } else if (fxg.prim == GL_QUAD_STRIP) {
+            for (int i = 0; i + 3 < n; i += 2) {
+                const fx_gl_cvert *v[4] = {&vb[i].cv, &vb[i + 1].cv, &vb[i + 3].cv, &vb[i + 2].cv};
+                draw_poly(v, 4, vb[i + 3].cv.c, 15);
+            }
+        } else if (n >= 3) {
+            /* a polygon: a fan from vertex 0, flat colour from vertex 0; in line
+             * mode only its own edges */
+            const fx_gl_cvert *v0 = &vb[0].cv;
+            GLenum pm = fxg.poly_front == fxg.poly_back ? fxg.poly_front : GL_FILL;
+            if (pm == GL_FILL) {
+                for (int i = 1; i + 1 < n; i++)
+                    draw_tri(v0, &vb[i].cv, &vb[i + 1].cv, v0->c, 7);
+            } else {
+                for (int i = 1; i + 1 < n; i++) {
+                    unsigned e = 2; /* middle edge v[i] -> v[i+1] */
+                    if (i == 1)
+                        e |= 1;
+                    if (i + 2 == n)
+                        e |= 4;
+                    draw_tri(v0, &vb[i].cv, &vb[i + 1].cv, v0->c, e);
+                }
+            }
+        }
+        break;
+    default:
+        break;
+    }
+    if (used < n)
+        memmove(vb, vb + used, (size_t)(n - used) * sizeof *vb);
+    fxg.nv = n - used;
+}
+
+void glBegin(GLenum mode)
+{
+    REC(OP_BEGIN, (double)mode);
+    if (fxg.in_begin) {
+        fxg_set_error(GL_INVALID_OPERATION);
+        return;
+    }
+    if (mode > GL_POLYGON) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return;
+    }
+    fxg.in_begin = 1;
+    fxg.prim = mode;
+    fxg.nv = 0;
+}
+
+void glEnd(void)
+{
+    REC0(OP_END);
+    if (!fxg.in_begin) {
+        fxg_set_error(GL_INVALID_OPERATION);
+        return;
+    }
+    assemble(1);
+    fxg.in_begin = 0;
+    fxg.nv = 0;
+}
+
+static void vertex(double x, double y, double z, double w)
+{
+    REC(OP_VERTEX, x, y, z, w);
+    if (!fxg.in_begin) /* GL: undefined; Mesa ignores it */
+        return;
+    if (fxg.nv == fxg.capv) {
+        int open = fxg.prim == GL_LINE_STRIP || fxg.prim == GL_LINE_LOOP || fxg.prim >= GL_TRIANGLE_STRIP;
+        if (!open || fxg.prim == GL_QUADS) {
+            assemble(0);
+        }
+        if (fxg.nv == fxg.capv) {
+            int nc = fxg.capv ? fxg.capv * 2 : 4096;
+            fxg_vert *nb = realloc(fxg.vb, (size_t)nc * sizeof *nb);
+            if (!nb) {
+                fxg_set_error(GL_OUT_OF_MEMORY);
+                return;
+            }
+            fxg.vb = nb, fxg.capv = nc;
+        }
+    }
+    process_vertex(fxg_d2x(x), fxg_d2x(y), fxg_d2x(z), fxg_d2x(w), &fxg.vb[fxg.nv].cv);
+    fxg.nv++;
+}
+
+void glVertex2d(GLdouble x, GLdouble y) { vertex(x, y, 0, 1); }
+void glVertex2f(GLfloat x, GLfloat y) { vertex(x, y, 0, 1); }
+void glVertex2i(GLint x, GLint y) { vertex(x, y, 0, 1); }
+void glVertex2s(GLshort x, GLshort y) { vertex(x, y, 0, 1); }
+void glVertex3d(GLdouble x, GLdouble y, GLdouble z) { vertex(x, y, z, 1); }
+void glVertex3f(GLfloat x, GLfloat y, GLfloat z) { vertex(x, y, z, 1); }
+void glVertex3i(GLint x, GLint y, GLint z) { vertex(x, y, z, 1); }
+void glVertex3s(GLshort x, GLshort y, GLshort z) { vertex(x, y, z, 1); }
+void glVertex4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { vertex(x, y, z, w); }
+void glVertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { vertex(x, y, z, w); }
+void glVertex4i(GLint x, GLint y, GLint z, GLint w) { vertex(x, y, z, w); }
+void glVertex4s(GLshort x, GLshort y, GLshort z, GLshort w) { vertex(x, y, z, w); }
+void glVertex2dv(const GLdouble *v) { vertex(v[0], v[1], 0, 1); }
+void glVertex2fv(const GLfloat *v) { vertex(v[0], v[1], 0, 1); }
+void glVertex2iv(const GLint *v) { vertex(v[0], v[1], 0, 1); }
+void glVertex2sv(const GLshort *v) { vertex(v[0], v[1], 0, 1); }
+void glVertex3dv(const GLdouble *v) { vertex(v[0], v[1], v[2], 1); }
+void glVertex3fv(const GLfloat *v) { vertex(v[0], v[1], v[2], 1); }
+void glVertex3iv(const GLint *v) { vertex(v[0], v[1], v[2], 1); }
+void glVertex3sv(const GLshort *v) { vertex(v[0], v[1], v[2], 1); }
+void glVertex4dv(const GLdouble *v) { vertex(v[0], v[1], v[2], v[3]); }
+void glVertex4fv(const GLfloat *v) { vertex(v[0], v[1], v[2], v[3]); }
+void glVertex4iv(const GLint *v) { vertex(v[0], v[1], v[2], v[3]); }
+void glVertex4sv(const GLshort *v) { vertex(v[0], v[1], v[2], v[3]); }
+
+void glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2)
+{
+    REC(OP_RECT, x1, y1, x2, y2);
+    /* GL: the polygon (x1,y1) (x2,y1) (x2,y2) (x1,y2) */
+    int rec = fxg.cur_list;
+    fxg.cur_list = 0;
+    glBegin(GL_POLYGON);
+    glVertex2d(x1, y1);
+    glVertex2d(x2, y1);
+    glVertex2d(x2, y2);
+    glVertex2d(x1, y2);
+    glEnd();
+    fxg.cur_list = (GLuint)rec;
+}
+void glRectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2) { glRectd(x1, y1, x2, y2); }
+void glRecti(GLint x1, GLint y1, GLint x2, GLint y2) { glRectd(x1, y1, x2, y2); }
+void glRects(GLshort x1, GLshort y1, GLshort x2, GLshort y2) { glRectd(x1, y1, x2, y2); }
+void glRectdv(const GLdouble *a, const GLdouble *b) { glRectd(a[0], a[1], b[0], b[1]); }
+void glRectfv(const GLfloat *a, const GLfloat *b) { glRectd(a[0], a[1], b[0], b[1]); }
+void glRectiv(const GLint *a, const GLint *b) { glRectd(a[0], a[1], b[0], b[1]); }
+void glRectsv(const GLshort *a, const GLshort *b) { glRectd(a[0], a[1], b[0], b[1]); }
+
+/* An indexed mesh as glDrawElements(GL_TRIANGLES) draws it: each vertex
+ * transformed and lit once, then the triangles assembled from the results
+ * (the same bits as the immediate-mode path below, which display lists and
+ * glBegin nesting still take). */
+static int draw_indexed(const int32_t *pos, const int32_t *nrm, int32_t nverts, const uint32_t *tri,
+                        int32_t ntris)
+{
+    static fx_gl_cvert *cv;
+    static int32_t cap;
+    if (recording() || fxg.in_begin || fxg.poly_front != GL_FILL || fxg.poly_back != GL_FILL)
+        return -1;
+    if (nverts > cap) {
+        fx_gl_cvert *n = realloc(cv, (size_t)nverts * sizeof *n);
+        if (!n)
+            return -1;
+        cv = n, cap = nverts;
+    }
+    sync_target();
+    for (int32_t k = 0; k < nverts; k++) {
+        if (nrm)
+            for (int i = 0; i < 3; i++)
+                fxg.normal[i] = (fx32)nrm[3 * k + i] * 65536;
+        process_vertex((fx32)pos[3 * k] * 65536, (fx32)pos[3 * k + 1] * 65536,
+                       (fx32)pos[3 * k + 2] * 65536, FX32_ONE, &cv[k]);
+    }
+    /* window coordinates once per vertex that needs no clipping (inside the
+     * guard band and the depth range): its triangles skip the clipper */
+    static fx_gl_wvert *wv;
+    static unsigned char *inside;
+    static int32_t capw;
+    if (nverts > capw) {
+        fx_gl_wvert *nw = realloc(wv, (size_t)nverts * sizeof *nw);
+        unsigned char *ni = nw ? realloc(inside, (size_t)nverts) : NULL;
+        if (!nw || !ni) {
+            if (nw)
+                wv = nw;
+            return -1;
+        }
+        wv = nw, inside = ni, capw = nverts;
+    }
+    for (int32_t k = 0; k < nverts; k++) {
+        const fx_glv4 *p = &cv[k].p;
+        fx32 gw = fx32_mul(fxg.guard, p->w);
+        inside[k] = p->w > 0 && p->x <= gw && p->x >= -gw && p->y <= gw && p->y >= -gw &&
+                    p->z <= p->w && p->z >= -p->w && to_win(&cv[k], &wv[k]) == 0;
+    }
+    for (int32_t i = 0; i < ntris; i++) {
+        uint32_t a = tri[3 * i], b = tri[3 * i + 1], c = tri[3 * i + 2];
+        if (inside[a] && inside[b] && inside[c]) {
+            fx_gl_wvert w[3] = {wv[a], wv[b], wv[c]};
+            raster_poly(w, 3, 3, cv[c].c, 7);
+        } else {
+            draw_tri(&cv[a], &cv[b], &cv[c], cv[c].c, 7);
+        }
+    }
+    return 0;
+}
+
+void fxg_draw_tris_q16(const int32_t *pos, const int32_t *nrm, const uint32_t *tri, int32_t ntris,
+                       int wire)
+{
+    if (!wire) {
+        uint32_t maxv = 0;
+        for (int32_t i = 0; i < ntris * 3; i++)
+            if (tri[i] > maxv)
+                maxv = tri[i];
+        if (ntris > 0 && draw_indexed(pos, nrm, (int32_t)maxv + 1, tri, ntris) == 0)
+            return;
+    }
+    GLenum save_f = fxg.poly_front, save_b = fxg.poly_back;
+    if (wire)
+        fxg.poly_front = fxg.poly_back = GL_LINE;
+    glBegin(GL_TRIANGLES);
+    for (int32_t i = 0; i < ntris * 3; i++) {
+        uint32_t k = tri[i];
+        if (nrm)
+            glNormal3d(nrm[3 * k] / 65536.0, nrm[3 * k + 1] / 65536.0, nrm[3 * k + 2] / 65536.0);
+        glVertex3d(pos[3 * k] / 65536.0, pos[3 * k + 1] / 65536.0, pos[3 * k + 2] / 65536.0);
+    }
+    glEnd();
+    fxg.poly_front = save_f, fxg.poly_back = save_b;
+}
+
+/* ---- raster position, bitmaps, pixels ---- */
+static void raster_pos(double x, double y, double z, double w)
+{
+    REC(OP_RASTERPOS, x, y, z, w);
+    fx_gl_cvert c;
+    process_vertex(fxg_d2x(x), fxg_d2x(y), fxg_d2x(z), fxg_d2x(w), &c);
+    fxg.raster_valid = fx_gl_point_visible(&c.p) && c.p.x <= c.p.w && c.p.x >= -c.p.w &&
+                       c.p.y <= c.p.w && c.p.y >= -c.p.w;
+    fx_gl_wvert wv;
+    if (fxg.raster_valid && to_win(&c, &wv) == 0) {
+        fxg.rx = wv.x, fxg.ry = wv.y;
+        for (int k = 0; k < 4; k++)
+            fxg.raster_color[k] = c.c[k];
+    } else {
+        fxg.raster_valid = 0;
+    }
+}
+void glRasterPos2d(GLdouble x, GLdouble y) { raster_pos(x, y, 0, 1); }
+void glRasterPos2f(GLfloat x, GLfloat y) { raster_pos(x, y, 0, 1); }
+void glRasterPos2i(GLint x, GLint y) { raster_pos(x, y, 0, 1); }
+void glRasterPos2s(GLshort x, GLshort y) { raster_pos(x, y, 0, 1); }
+void glRasterPos3d(GLdouble x, GLdouble y, GLdouble z) { raster_pos(x, y, z, 1); }
+void glRasterPos3f(GLfloat x, GLfloat y, GLfloat z) { raster_pos(x, y, z, 1); }
+void glRasterPos3i(GLint x, GLint y, GLint z) { raster_pos(x, y, z, 1); }
+void glRasterPos4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { raster_pos(x, y, z, w); }
+void glRasterPos2fv(const GLfloat *v) { raster_pos(v[0], v[1], 0, 1); }
+void glRasterPos2iv(const GLint *v) { raster_pos(v[0], v[1], 0, 1); }
+void glRasterPos2dv(const GLdouble *v) { raster_pos(v[0], v[1], 0, 1); }
+void glRasterPos3fv(const GLfloat *v) { raster_pos(v[0], v[1], v[2], 1); }
+void glWindowPos2i(GLint x, GLint y)
+{
+    fxg.rx = (int64_t)x * 256, fxg.ry = (int64_t)y * 256;
+    fxg.raster_valid = 1;
+    for (int k = 0; k < 4; k++)
+        fxg.raster_color[k] = fxg.color[k];
+}
+void glWindowPos2f(GLfloat x, GLfloat y)
+{
+    glWindowPos2i(0, 0);
+    fxg.rx = llrint(x * 256.0), fxg.ry = llrint(y * 256.0);
+}
+
+/* Bitmap at the raster position: rows given top first; window rows go up. */
+void fxg_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmove,
+                const uint8_t *rows, int32_t row_bytes, int32_t scale)
+{
+    if (!fxg.raster_valid)
+        return;
+    /* GL: the bitmap's lower-left corner is at floor(raster - orig) */
+    int64_t x0 = ((fxg.rx - 128) >> 8) - xorig, y0 = ((fxg.ry - 128) >> 8) - yorig;
+    /* llvmpipe puts the raster position's pixel at floor(x) for integer-centred text */
+    x0 = (fxg.rx >> 8) - xorig;
+    y0 = (fxg.ry >> 8) - yorig;
+    fx_color c = 0xFF000000u | ((fx_color)lvl(fxg.raster_color[0]) << 16) |
+                 ((fx_color)lvl(fxg.raster_color[1]) << 8) | (fx_color)lvl(fxg.raster_color[2]);
+    fx_rect clip = {0, 0, fxg.w, fxg.h};
+    if (fxg.scissor_on)
+        clip = fx_rect_intersect(clip, (fx_rect){fxg.scissor[0], fxg.scissor[1],
+                                                 fxg.scissor[0] + fxg.scissor[2],
+                                                 fxg.scissor[1] + fxg.scissor[3]});
+    uint32_t native = fx_pack(fxg.fb.surf.format, c);
+    for (int32_t r = 0; r < h; r++)
+        for (int32_t col = 0; col < w; col++) {
+            if (!((rows[r * row_bytes + col / 8] >> (7 - col % 8)) & 1))
+                continue;
+            for (int32_t sy = 0; sy < scale; sy++)
+                for (int32_t sx = 0; sx < scale; sx++) {
+                    int64_t X = x0 + (int64_t)col * scale + sx;
+                    int64_t Y = y0 + (int64_t)(h - 1 - r) * scale + sy;
+                    if (X < clip.x0 || X >= clip.x1 || Y < clip.y0 || Y >= clip.y1)
+                        continue;
+                    fx_surface_put_native(&fxg.fb.surf, (int32_t)X, fxg.h - 1 - (int32_t)Y, native);
+                }
+        }
+    fxg.rx += (int64_t)xmove * 256;
+}
+
+void glBitmap(GLsizei w, GLsizei h, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
+              const GLubyte *bitmap)
+{
+    /* GL bitmaps are stored bottom row first, rows aligned to the unpack alignment */
+    int32_t rb = (w + 7) / 8;
+    int32_t al = fxg.unpack_align;
+    rb = (rb + al - 1) / al * al;
+    if (bitmap && w > 0 && h > 0) {
+        uint8_t *flip = malloc((size_t)rb * (size_t)h);
+        if (flip) {
+            for (int32_t r = 0; r < h; r++)
+                memcpy(flip + (size_t)r * rb, bitmap + (size_t)(h - 1 - r) * rb, (size_t)rb);
+            fxg_bitmap(w, h, (int32_t)lrintf(xorig), (int32_t)lrintf(yorig), 0, flip, rb, 1);
+            free(flip);
+        }
+    }
+    if (fxg.raster_valid) {
+        fxg.rx += llrint(xmove * 256.0);
+        fxg.ry += llrint(ymove * 256.0);
+    }
+}
+
+void glPixelStorei(GLenum pname, GLint param)
+{
+    if (pname == GL_UNPACK_ALIGNMENT && (param == 1 || param == 2 || param == 4 || param == 8))
+        fxg.unpack_align = param;
+    else if (pname == GL_PACK_ALIGNMENT && (param == 1 || param == 2 || param == 4 || param == 8))
+        fxg.pack_align = param;
+    else if (pname == GL_UNPACK_ALIGNMENT || pname == GL_PACK_ALIGNMENT)
+        fxg_set_error(GL_INVALID_VALUE);
+}
+void glPixelStoref(GLenum pname, GLfloat param) { glPixelStorei(pname, (GLint)param); }
+void glPixelZoom(GLfloat xf, GLfloat yf) { fxg.zoom_x = xf, fxg.zoom_y = yf; }
+
+static int comps(GLenum format)
+{
+    switch (format) {
+    case GL_RGB: case GL_BGR: return 3;
+    case GL_RGBA: case GL_BGRA: return 4;
+    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: return 1;
+    case GL_LUMINANCE_ALPHA: return 2;
+    default: return 0;
+    }
+}
+
+void glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type,
+                  GLvoid *pixels)
+{
+    int nc = comps(format);
+    if (format == GL_DEPTH_COMPONENT && (type == GL_FLOAT || type == GL_UNSIGNED_INT)) {
+        size_t stride = (size_t)w * 4;
+        for (GLsizei r = 0; r < h; r++)
+            for (GLsizei c = 0; c < w; c++) {
+                int32_t X = x + c, Y = y + r;
+                uint32_t d = 0xFFFFFF;
+                if (X >= 0 && Y >= 0 && X < fxg.w && Y < fxg.h)
+                    d = fxg.depth[(size_t)(fxg.h - 1 - Y) * fxg.w + X];
+                uint8_t *p = (uint8_t *)pixels + r * stride + (size_t)c * 4;
+                if (type == GL_FLOAT) {
+                    float f = (float)(d / 16777215.0);
+                    memcpy(p, &f, 4);
+                } else {
+                    uint32_t u = (d << 8) | (d >> 16);
+                    memcpy(p, &u, 4);
+                }
+            }
+        return;
+    }
+    if (!nc || (type != GL_UNSIGNED_BYTE && type != GL_FLOAT)) {
+        fxg_unimplemented("glReadPixels (this format/type)", GL_INVALID_ENUM);
+        return;
+    }
+    int bpc = type == GL_FLOAT ? 4 : 1;
+    size_t rowb = (size_t)w * nc * bpc;
+    size_t al = (size_t)fxg.pack_align;
+    rowb = (rowb + al - 1) / al * al;
+    for (GLsizei r = 0; r < h; r++)
+        for (GLsizei c = 0; c < w; c++) {
+            int32_t X = x + c, Y = y + r;
+            fx_color px = 0;
+            if (X >= 0 && Y >= 0 && X < fxg.w && Y < fxg.h)
+                px = fx_surface_get(&fxg.fb.surf, X, fxg.h - 1 - Y);
+            int ch[4] = {(int)(px >> 16) & 255, (int)(px >> 8) & 255, (int)px & 255, 255};
+            int out[4], k = 0;
+            switch (format) {
+            case GL_RGB: out[0] = ch[0], out[1] = ch[1], out[2] = ch[2]; break;
+            case GL_BGR: out[0] = ch[2], out[1] = ch[1], out[2] = ch[0]; break;
+            case GL_RGBA: out[0] = ch[0], out[1] = ch[1], out[2] = ch[2], out[3] = 255; break;
+            case GL_BGRA: out[0] = ch[2], out[1] = ch[1], out[2] = ch[0], out[3] = 255; break;
+            case GL_RED: out[0] = ch[0]; break;
+            case GL_GREEN: out[0] = ch[1]; break;
+            case GL_BLUE: out[0] = ch[2]; break;
+            case GL_ALPHA: out[0] = 255; break;
+            case GL_LUMINANCE: out[0] = ch[0] + ch[1] + ch[2] > 765 ? 255 : (ch[0] + ch[1] + ch[2]) / 3; break;
+            default: out[0] = ch[0], out[1] = 255; break;
+            }
+            uint8_t *p = (uint8_t *)pixels + r * rowb + (size_t)c * nc * bpc;
+            for (k = 0; k < nc; k++) {
+                if (bpc == 1)
+                    p[k] = (uint8_t)out[k];
+                else {
+                    float f = out[k] / 255.0f;
+                    memcpy(p + 4 * k, &f, 4);
+                }
+            }
+        }
+}
+
+void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    int nc = comps(format);
+    if (!nc || (type != GL_UNSIGNED_BYTE && type != GL_FLOAT)) {
+        fxg_unimplemented("glDrawPixels (this format/type)", GL_INVALID_ENUM);
+        return;
+    }
+    if (!fxg.raster_valid)
+        return;
+    int bpc = type == GL_FLOAT ? 4 : 1;
+    size_t rowb = (size_t)w * nc * bpc, al = (size_t)fxg.unpack_align;
+    rowb = (rowb + al - 1) / al * al;
+    int64_t x0 = fxg.rx >> 8, y0 = fxg.ry >> 8;
+    int zx = (int)lrintf(fxg.zoom_x), zy = (int)lrintf(fxg.zoom_y);
+    if (zx < 1)
+        zx = 1;
+    if (zy < 1)
+        zy = 1;
+    sync_target();
+    for (GLsizei r = 0; r < h; r++)
+        for (GLsizei c = 0; c < w; c++) {
+            const uint8_t *p = (const uint8_t *)pixels + r * rowb + (size_t)c * nc * bpc;
+            int v[4];
+            for (int k = 0; k < nc; k++) {
+                if (bpc == 1)
+                    v[k] = p[k];
+                else {
+                    float f;
+                    memcpy(&f, p + 4 * k, 4);
+                    v[k] = f <= 0 ? 0 : f >= 1 ? 255 : (int)lrintf(f * 255.0f);
+                }
+            }
+            int rgba[4] = {0, 0, 0, 255};
+            switch (format) {
+            case GL_RGB: rgba[0] = v[0], rgba[1] = v[1], rgba[2] = v[2]; break;
+            case GL_BGR: rgba[0] = v[2], rgba[1] = v[1], rgba[2] = v[0]; break;
+            case GL_RGBA: rgba[0] = v[0], rgba[1] = v[1], rgba[2] = v[2], rgba[3] = v[3]; break;
+            case GL_BGRA: rgba[0] = v[2], rgba[1] = v[1], rgba[2] = v[0], rgba[3] = v[3]; break;
+            case GL_LUMINANCE: rgba[0] = rgba[1] = rgba[2] = v[0]; break;
+            case GL_LUMINANCE_ALPHA: rgba[0] = rgba[1] = rgba[2] = v[0], rgba[3] = v[1]; break;
+            case GL_RED: rgba[0] = v[0]; break;
+            case GL_GREEN: rgba[1] = v[0]; break;
+            case GL_BLUE: rgba[2] = v[0]; break;
+            default: rgba[3] = v[0]; break;
+            }
+            fx_color col = ((fx_color)rgba[3] << 24) | ((fx_color)rgba[0] << 16) |
+                           ((fx_color)rgba[1] << 8) | (fx_color)rgba[2];
+            for (int sy = 0; sy < zy; sy++)
+                for (int sx = 0; sx < zx; sx++) {
+                    int64_t X = x0 + (int64_t)c * zx + sx, Y = y0 + (int64_t)r * zy + sy;
+                    if (X < fxg.tgt.clip.x0 || X >= fxg.tgt.clip.x1 || Y < fxg.tgt.clip.y0 ||
+                        Y >= fxg.tgt.clip.y1)
+                        continue;
+                    fx_surface_put_native(&fxg.fb.surf, (int32_t)X, fxg.h - 1 - (int32_t)Y,
+                                          fx_pack(fxg.fb.surf.format, col));
+                }
+        }
+}
+
+/* ---- textures ---- */
+void glGenTextures(GLsizei n, GLuint *t)
+{
+    for (GLsizei i = 0; i < n; i++) {
+        t[i] = 0;
+        for (GLuint k = 1; k < FXG_MAX_TEX; k++)
+            if (!fxg.tex[k].used) {
+                fxg.tex[k].used = 1;
+                fxg.tex[k].min_filter = GL_NEAREST_MIPMAP_LINEAR;
+                fxg.tex[k].mag_filter = GL_LINEAR;
+                fxg.tex[k].wrap_s = fxg.tex[k].wrap_t = GL_REPEAT;
+                t[i] = k;
+                break;
+            }
+        if (!t[i])
+            fxg_set_error(GL_OUT_OF_MEMORY);
+    }
+}
+void glDeleteTextures(GLsizei n, const GLuint *t)
+{
+    for (GLsizei i = 0; i < n; i++)
+        if (t[i] && t[i] < FXG_MAX_TEX) {
+            free(fxg.tex[t[i]].mem);
+            memset(&fxg.tex[t[i]], 0, sizeof fxg.tex[t[i]]);
+            if (fxg.bound_tex == t[i])
+                fxg.bound_tex = 0;
+        }
+}
+void glBindTexture(GLenum target, GLuint t)
+{
+    REC(OP_BINDTEX, (double)target, (double)t);
+    if (target != GL_TEXTURE_2D) {
+        fxg_unimplemented("glBindTexture (other than GL_TEXTURE_2D)", GL_INVALID_ENUM);
+        return;
+    }
+    if (t >= FXG_MAX_TEX) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
+    if (t && !fxg.tex[t].used) {
+        fxg.tex[t].used = 1;
+        fxg.tex[t].min_filter = GL_NEAREST_MIPMAP_LINEAR;
+        fxg.tex[t].mag_filter = GL_LINEAR;
+        fxg.tex[t].wrap_s = fxg.tex[t].wrap_t = GL_REPEAT;
+    }
+    fxg.bound_tex = t;
+}
+GLboolean glIsTexture(GLuint t) { return t && t < FXG_MAX_TEX && fxg.tex[t].used; }
+static void tex_params(fxg_tex *tx)
+{
+    tx->t.linear = tx->mag_filter == GL_LINEAR;
+    tx->t.clamp_s = tx->wrap_s != GL_REPEAT;
+    tx->t.clamp_t = tx->wrap_t != GL_REPEAT;
+}
+void glTexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei w, GLsizei h,
+                  GLint border, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    (void)internalformat, (void)border;
+    if (target != GL_TEXTURE_2D || level > 0) {
+        if (level > 0)
+            return; /* mipmap levels: only level 0 is used */
+        fxg_unimplemented("glTexImage2D (this target)", GL_INVALID_ENUM);
+        return;
+    }
+    int nc = comps(format);
+    if (!nc || type != GL_UNSIGNED_BYTE) {
+        fxg_unimplemented("glTexImage2D (format/type other than bytes)", GL_INVALID_ENUM);
+        return;
+    }
+    if (w <= 0 || h <= 0 || w > 4096 || h > 4096) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
+    fxg_tex *tx = &fxg.tex[fxg.bound_tex];
+    if (!fxg.tex[fxg.bound_tex].used) {
+        tx->used = 1;
+        tx->min_filter = GL_NEAREST_MIPMAP_LINEAR, tx->mag_filter = GL_LINEAR;
+        tx->wrap_s = tx->wrap_t = GL_REPEAT;
+    }
+    uint8_t *mem = malloc((size_t)w * h * 4);
+    if (!mem) {
+        fxg_set_error(GL_OUT_OF_MEMORY);
+        return;
+    }
+    size_t rowb = (size_t)w * nc, al = (size_t)fxg.unpack_align;
+    rowb = (rowb + al - 1) / al * al;
+    for (GLsizei r = 0; r < h; r++)
+        for (GLsizei c = 0; c < w; c++) {
+            uint8_t *d = mem + ((size_t)r * w + c) * 4;
+            if (!pixels) {
+                d[0] = d[1] = d[2] = d[3] = 255;
+                continue;
+            }
+            const uint8_t *p = (const uint8_t *)pixels + r * rowb + (size_t)c * nc;
+            switch (format) {
+            case GL_RGB: d[0] = p[0], d[1] = p[1], d[2] = p[2], d[3] = 255; break;
+            case GL_BGR: d[0] = p[2], d[1] = p[1], d[2] = p[0], d[3] = 255; break;
+            case GL_RGBA: memcpy(d, p, 4); break;
+            case GL_BGRA: d[0] = p[2], d[1] = p[1], d[2] = p[0], d[3] = p[3]; break;
+            case GL_LUMINANCE: d[0] = d[1] = d[2] = p[0], d[3] = 255; break;
+            case GL_LUMINANCE_ALPHA: d[0] = d[1] = d[2] = p[0], d[3] = p[1]; break;
+            case GL_ALPHA: d[0] = d[1] = d[2] = 255, d[3] = p[0]; break;
+            default: d[0] = d[1] = d[2] = p[0], d[3] = 255; break;
+            }
+        }
+    free(tx->mem);
+    tx->mem = mem;
+    tx->t.rgba = mem;
+    tx->t.w = w, tx->t.h = h;
+    tex_params(tx);
+}
+void glTexParameteri(GLenum target, GLenum pname, GLint param)
+{
+    if (target != GL_TEXTURE_2D) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return;
+    }
+    fxg_tex *tx = &fxg.tex[fxg.bound_tex];
+    switch (pname) {
+    case GL_TEXTURE_MIN_FILTER: tx->min_filter = (GLenum)param; break;
+    case GL_TEXTURE_MAG_FILTER: tx->mag_filter = (GLenum)param; break;
+    case GL_TEXTURE_WRAP_S: tx->wrap_s = (GLenum)param; break;
+    case GL_TEXTURE_WRAP_T: tx->wrap_t = (GLenum)param; break;
+    default: break;
+    }
+    tex_params(tx);
+}
+void glTexParameterf(GLenum target, GLenum pname, GLfloat param) { glTexParameteri(target, pname, (GLint)param); }
+void glTexParameteriv(GLenum target, GLenum pname, const GLint *p) { glTexParameteri(target, pname, p[0]); }
+void glTexParameterfv(GLenum target, GLenum pname, const GLfloat *p)
+{
+    if (pname != GL_TEXTURE_BORDER_COLOR)
+        glTexParameteri(target, pname, (GLint)p[0]);
+}
+void glTexEnvi(GLenum target, GLenum pname, GLint param)
+{
+    if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE)
+        fxg.tex_env = (GLenum)param;
+}
+void glTexEnvf(GLenum target, GLenum pname, GLfloat param) { glTexEnvi(target, pname, (GLint)param); }
+void glTexEnviv(GLenum target, GLenum pname, const GLint *p) { glTexEnvi(target, pname, p[0]); }
+void glTexEnvfv(GLenum target, GLenum pname, const GLfloat *p)
+{
+    if (pname == GL_TEXTURE_ENV_COLOR)
+        for (int k = 0; k < 4; k++)
+            fxg.tgt.tex_env_color[k] = fxg_d2c(p[k]);
+    else
+        glTexEnvi(target, pname, (GLint)p[0]);
+}
+
+/* ---- display lists ---- */
+GLuint glGenLists(GLsizei range)
+{
+    if (range <= 0) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return 0;
+    }
+    for (GLuint s = 1; s + (GLuint)range <= FXG_MAX_LISTS; s++) {
+        GLsizei k = 0;
+        while (k < range && !fxg.lists[s + k].used)
+            k++;
+        if (k == range) {
+            for (k = 0; k < range; k++)
+                fxg.lists[s + k].used = 1;
+            return s;
+        }
+        s += (GLuint)k;
+    }
+    fxg_set_error(GL_OUT_OF_MEMORY);
+    return 0;
+}
+void glNewList(GLuint list, GLenum mode)
+{
+    if (list == 0 || list >= FXG_MAX_LISTS) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
+    if (fxg.cur_list) {
+        fxg_set_error(GL_INVALID_OPERATION);
+        return;
+    }
+    fxg_list *l = &fxg.lists[list];
+    l->used = 1;
+    l->nrec = l->npool = 0;
+    fxg.cur_list = list;
+    fxg.list_exec = mode == GL_COMPILE_AND_EXECUTE;
+}
+void glEndList(void)
+{
+    if (!fxg.cur_list) {
+        fxg_set_error(GL_INVALID_OPERATION);
+        return;
+    }
+    fxg.cur_list = 0;
+}
+GLboolean glIsList(GLuint list) { return list && list < FXG_MAX_LISTS && fxg.lists[list].used; }
+void glDeleteLists(GLuint list, GLsizei range)
+{
+    for (GLsizei i = 0; i < range; i++) {
+        GLuint k = list + (GLuint)i;
+        if (k && k < FXG_MAX_LISTS) {
+            free(fxg.lists[k].rec);
+            free(fxg.lists[k].pool);
+            memset(&fxg.lists[k], 0, sizeof fxg.lists[k]);
+        }
+    }
+}
+void glListBase(GLuint base) { fxg.list_base = base; }
+
+static void replay(GLuint id, int depth)
+{
+    if (!id || id >= FXG_MAX_LISTS || depth > 64)
+        return;
+    fxg_list *l = &fxg.lists[id];
+    for (int i = 0; i < l->nrec; i++) {
+        const double *a = l->pool + l->rec[i].off;
+        switch (l->rec[i].op) {
+        case OP_BEGIN: glBegin((GLenum)a[0]); break;
+        case OP_END: glEnd(); break;
+        case OP_VERTEX: vertex(a[0], a[1], a[2], a[3]); break;
+        case OP_COLOR: set_color(a[0], a[1], a[2], a[3]); break;
+        case OP_NORMAL: set_normal(a[0], a[1], a[2]); break;
+        case OP_TEXCOORD: set_tc(a[0], a[1]); break;
+        case OP_MATRIXMODE: glMatrixMode((GLenum)a[0]); break;
+        case OP_LOADIDENTITY: glLoadIdentity(); break;
+        case OP_PUSH: glPushMatrix(); break;
+        case OP_POP: glPopMatrix(); break;
+        case OP_MULT: glMultMatrixd(a); break;
+        case OP_LOAD: glLoadMatrixd(a); break;
+        case OP_TRANSLATE: glTranslated(a[0], a[1], a[2]); break;
+        case OP_ROTATE: glRotated(a[0], a[1], a[2], a[3]); break;
+        case OP_SCALE: glScaled(a[0], a[1], a[2]); break;
+        case OP_ENABLE: glEnable((GLenum)a[0]); break;
+        case OP_DISABLE: glDisable((GLenum)a[0]); break;
+        case OP_SHADE: glShadeModel((GLenum)a[0]); break;
+        case OP_POINTSIZE: glPointSize((GLfloat)a[0]); break;
+        case OP_LINEWIDTH: glLineWidth((GLfloat)a[0]); break;
+        case OP_MATERIAL: material_v((GLenum)a[0], (GLenum)a[1], a + 2); break;
+        case OP_LIGHT: light_v((GLenum)a[0], (GLenum)a[1], a + 2); break;
+        case OP_CALLLIST: replay((GLuint)a[0], depth + 1); break;
+        case OP_BINDTEX: glBindTexture((GLenum)a[0], (GLuint)a[1]); break;
+        case OP_RECT: glRectd(a[0], a[1], a[2], a[3]); break;
+        case OP_ORTHO: glOrtho(a[0], a[1], a[2], a[3], a[4], a[5]); break;
+        case OP_FRUSTUM: glFrustum(a[0], a[1], a[2], a[3], a[4], a[5]); break;
+        case OP_POLYMODE: glPolygonMode((GLenum)a[0], (GLenum)a[1]); break;
+        case OP_STIPPLE: glLineStipple((GLint)a[0], (GLushort)a[1]); break;
+        case OP_LIGHTMODEL: light_model((GLenum)a[0], a + 1); break;
+        case OP_COLORMATERIAL: glColorMaterial((GLenum)a[0], (GLenum)a[1]); break;
+        case OP_RASTERPOS: raster_pos(a[0], a[1], a[2], a[3]); break;
+        case OP_BITMAPCHAR: break;
+        case OP_BLENDFUNC: glBlendFunc((GLenum)a[0], (GLenum)a[1]); break;
+        case OP_DEPTHFUNC: glDepthFunc((GLenum)a[0]); break;
+        case OP_CULLFACE: glCullFace((GLenum)a[0]); break;
+        case OP_FRONTFACE: glFrontFace((GLenum)a[0]); break;
+        case OP_CLEAR: glClear((GLbitfield)a[0]); break;
+        case OP_CLEARCOLOR: glClearColor((GLclampf)a[0], (GLclampf)a[1], (GLclampf)a[2], (GLclampf)a[3]); break;
+        default: break;
+        }
+    }
+}
+void glCallList(GLuint list)
+{
+    REC(OP_CALLLIST, (double)list);
+    int was = fxg.replaying;
+    fxg.replaying = 1;
+    replay(list, 0);
+    fxg.replaying = was;
+}
+void glCallLists(GLsizei n, GLenum type, const GLvoid *lists)
+{
+    for (GLsizei i = 0; i < n; i++) {
+        GLuint id;
+        switch (type) {
+        case GL_UNSIGNED_BYTE: id = ((const GLubyte *)lists)[i]; break;
+        case GL_BYTE: id = (GLuint)((const GLbyte *)lists)[i]; break;
+        case GL_UNSIGNED_SHORT: id = ((const GLushort *)lists)[i]; break;
+        case GL_SHORT: id = (GLuint)((const GLshort *)lists)[i]; break;
+        case GL_INT: id = (GLuint)((const GLint *)lists)[i]; break;
+        case GL_UNSIGNED_INT: id = ((const GLuint *)lists)[i]; break;
+        case GL_FLOAT: id = (GLuint)((const GLfloat *)lists)[i]; break;
+        default: fxg_set_error(GL_INVALID_ENUM); return;
+        }
+        glCallList(fxg.list_base + id);
+    }
+}
+
+/* ---- queries ---- */
+static int get_values(GLenum pname, double *v)
+{
+    const fx_glm *m = NULL;
+    switch (pname) {
+    case GL_MODELVIEW_MATRIX: m = &fxg.mv[fxg.mv_top]; break;
+    case GL_PROJECTION_MATRIX: m = &fxg.proj[fxg.proj_top]; break;
+    case GL_TEXTURE_MATRIX: m = &fxg.texm[fxg.tex_top]; break;
+    default: break;
+    }
+    if (m) {
+        for (int i = 0; i < 16; i++)
+            v[i] = fxg_x2d(m->m[i]);
+        return 16;
+    }
+    switch (pname) {
+    case GL_VIEWPORT: for (int i = 0; i < 4; i++) v[i] = fxg.vp[i]; return 4;
+    case GL_SCISSOR_BOX: for (int i = 0; i < 4; i++) v[i] = fxg.scissor[i]; return 4;
+    case GL_CURRENT_COLOR: for (int i = 0; i < 4; i++) v[i] = fxg.color[i] / 65536.0; return 4;
+    case GL_COLOR_CLEAR_VALUE: for (int i = 0; i < 4; i++) v[i] = fxg.clear_color[i] / 65536.0; return 4;
+    case GL_CURRENT_NORMAL: for (int i = 0; i < 3; i++) v[i] = fxg_x2d(fxg.normal[i]); return 3;
+    case GL_CURRENT_RASTER_POSITION: v[0] = fxg.rx / 256.0, v[1] = fxg.ry / 256.0, v[2] = 0, v[3] = 1; return 4;
+    case GL_CURRENT_RASTER_POSITION_VALID: v[0] = fxg.raster_valid; return 1;
+    case GL_MATRIX_MODE: v[0] = fxg.matrix_mode; return 1;
+    case GL_MODELVIEW_STACK_DEPTH: v[0] = fxg.mv_top + 1; return 1;
+    case GL_PROJECTION_STACK_DEPTH: v[0] = fxg.proj_top + 1; return 1;
+    case GL_MAX_MODELVIEW_STACK_DEPTH: v[0] = FXG_STACK; return 1;
+    case GL_MAX_PROJECTION_STACK_DEPTH: v[0] = FXG_PROJ_STACK; return 1;
+    case GL_MAX_LIGHTS: v[0] = FX_GL_MAX_LIGHTS; return 1;
+    case GL_MAX_TEXTURE_SIZE: v[0] = 4096; return 1;
+    case GL_MAX_VIEWPORT_DIMS: v[0] = v[1] = 16384; return 2;
+    case GL_POINT_SIZE: v[0] = fxg.point_size; return 1;
+    case GL_LINE_WIDTH: v[0] = fxg.line_width; return 1;
+    case GL_POINT_SIZE_RANGE: case GL_LINE_WIDTH_RANGE: v[0] = 1, v[1] = 256; return 2;
+    case GL_SHADE_MODEL: v[0] = fxg.shade; return 1;
+    case GL_DEPTH_FUNC: v[0] = fxg.depth_func; return 1;
+    case GL_DEPTH_WRITEMASK: v[0] = fxg.depth_mask; return 1;
+    case GL_DEPTH_CLEAR_VALUE: v[0] = fxg.clear_depth / 16777215.0; return 1;
+    case GL_CULL_FACE_MODE: v[0] = fxg.cull_face; return 1;
+    case GL_FRONT_FACE: v[0] = fxg.front_face; return 1;
+    case GL_BLEND_SRC: v[0] = fxg.bsrc; return 1;
+    case GL_BLEND_DST: v[0] = fxg.bdst; return 1;
+    case GL_LINE_STIPPLE_PATTERN: v[0] = fxg.stipple_pattern; return 1;
+    case GL_LINE_STIPPLE_REPEAT: v[0] = fxg.stipple_factor; return 1;
+    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: v[0] = 8; return 1;
+    case GL_ALPHA_BITS: case GL_STENCIL_BITS: v[0] = 0; return 1;
+    case GL_DEPTH_BITS: v[0] = 24; return 1;
+    case GL_SUBPIXEL_BITS: v[0] = 8; return 1;
+    case GL_DOUBLEBUFFER: v[0] = glutGet(GLUT_WINDOW_DOUBLEBUFFER); return 1;
+    case GL_RGBA_MODE: v[0] = 1; return 1;
+    case GL_TEXTURE_BINDING_2D: v[0] = fxg.bound_tex; return 1;
+    case GL_LIST_BASE: v[0] = fxg.list_base; return 1;
+    case GL_LIST_INDEX: v[0] = fxg.cur_list; return 1;
+    case GL_UNPACK_ALIGNMENT: v[0] = fxg.unpack_align; return 1;
+    case GL_PACK_ALIGNMENT: v[0] = fxg.pack_align; return 1;
+    case GL_LIGHT_MODEL_AMBIENT: for (int i = 0; i < 4; i++) v[i] = fxg.L.model_ambient[i] / 65536.0; return 4;
+    case GL_COLOR_WRITEMASK: for (int i = 0; i < 4; i++) v[i] = (fxg.color_mask >> i) & 1; return 4;
+    case GL_DEPTH_RANGE: v[0] = 0, v[1] = 1; return 2;
+    default: break;
+    }
+    if (cap_flag(pname) || (pname >= GL_LIGHT0 && pname <= GL_LIGHT7)) {
+        v[0] = glIsEnabled(pname);
+        return 1;
+    }
+    fxg_set_error(GL_INVALID_ENUM);
+    return 0;
+}
+void glGetDoublev(GLenum pname, GLdouble *p)
+{
+    double v[16];
+    int n = get_values(pname, v);
+    for (int i = 0; i < n; i++)
+        p[i] = v[i];
+}
+void glGetFloatv(GLenum pname, GLfloat *p)
+{
+    double v[16];
+    int n = get_values(pname, v);
+    for (int i = 0; i < n; i++)
+        p[i] = (GLfloat)v[i];
+}
+void glGetIntegerv(GLenum pname, GLint *p)
+{
+    double v[16];
+    int n = get_values(pname, v);
+    int colorish = pname == GL_CURRENT_COLOR || pname == GL_COLOR_CLEAR_VALUE ||
+                   pname == GL_LIGHT_MODEL_AMBIENT;
+    for (int i = 0; i < n; i++)
+        p[i] = colorish ? (GLint)lrint(v[i] * 2147483647.0) : (GLint)lrint(v[i]);
+}
+void glGetBooleanv(GLenum pname, GLboolean *p)
+{
+    double v[16];
+    int n = get_values(pname, v);
+    for (int i = 0; i < n; i++)
+        p[i] = v[i] != 0;
+}
+const GLubyte *glGetString(GLenum name)
+{
+    switch (name) {
+    case GL_VENDOR: return (const GLubyte *)"fixel";
+    case GL_RENDERER: return (const GLubyte *)"fixel integer rasterizer (llvmpipe rules)";
+    case GL_VERSION: return (const GLubyte *)"1.1 fixel";
+    case GL_EXTENSIONS: return (const GLubyte *)"";
+    default: fxg_set_error(GL_INVALID_ENUM); return NULL;
+    }
+}
+
+/* accepted without effect: one colour buffer, read and drawn alike */
+void glDrawBuffer(GLenum mode) { (void)mode; }
+void glReadBuffer(GLenum mode) { (void)mode; }
+void glPolygonOffset(GLfloat factor, GLfloat units)
+{
+    (void)factor, (void)units;
+    fxg_unimplemented("glPolygonOffset", GL_INVALID_OPERATION);
+}

@@ -1,0 +1,45 @@
+# The GLUT + OpenGL 1.x layer (boards/glut, issue #21): libfixel-glut.a, its
+# shared library and fixel-glut.pc. Programs build with
+#   cc lab.c -Iboards/glut/include $(BUILD)/libfixel-glut.a $(BUILD)/libfixel.a $(PKG_LIBS) -lm
+# or, installed, $(pkg-config --cflags --libs fixel-glut).
+# Its integer core (kernel-free-src/gl) is part of libfixel: the top
+# Makefile's CORE_SRC takes every kernel-free-src/*/*.c.
+
+GLUT_SRC    := $(sort $(wildcard boards/glut/*.c))
+GLUT_OBJ    := $(GLUT_SRC:%.c=$(BUILD)/obj/%.o)
+GLUT_A      := $(BUILD)/libfixel-glut.a
+GLUT_SO     := $(BUILD)/libfixel-glut.so.$(VERSION)
+GLUT_PC     := $(BUILD)/fixel-glut.pc
+GLUT_LIBS   := $(GLUT_A) $(LIB_A) $(LDLIBS) -lm
+
+$(GLUT_OBJ): BASEFLAGS += -Iboards/glut/include
+
+$(GLUT_A): $(GLUT_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	$(AR) rcs $@ $^
+
+$(GLUT_SO): $(GLUT_OBJ) $(LIB_SO)
+	$(CC) -shared -Wl,-soname,libfixel-glut.so.$(SOMAJOR) $(SANFLAGS) -o $@ $(GLUT_OBJ) -L$(BUILD) -lfixel $(LDLIBS) -lm
+	ln -sf libfixel-glut.so.$(VERSION) $(BUILD)/libfixel-glut.so.$(SOMAJOR)
+	ln -sf libfixel-glut.so.$(VERSION) $(BUILD)/libfixel-glut.so
+
+$(GLUT_PC): boards/glut/glut.mk
+	@mkdir -p $(dir $@)
+	printf 'prefix=%s\nlibdir=$${prefix}/lib\nincludedir=$${prefix}/include\n\nName: fixel-glut\nDescription: GLUT and OpenGL 1.x immediate mode on fixel framebuffers\nVersion: %s\nRequires.private: fixel\nLibs: -L$${libdir} -lfixel-glut -lfixel\nLibs.private: -lm -lpthread\nCflags: -I$${includedir}/fixel-glut\n' \
+	  '$(PREFIX)' '$(VERSION)' > $@
+
+.PHONY: glut install-glut
+glut: $(GLUT_A) $(if $(filter 1,$(STATIC)),,$(GLUT_SO)) $(GLUT_PC)
+all: glut
+lib: glut
+
+install-glut: glut
+	install -d $(DESTDIR)$(PREFIX)/include/fixel-glut/GL $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 644 boards/glut/include/GL/*.h $(DESTDIR)$(PREFIX)/include/fixel-glut/GL/
+	install -m 644 $(GLUT_A) $(DESTDIR)$(PREFIX)/lib/
+	$(if $(filter 1,$(STATIC)),,install -m 755 $(GLUT_SO) $(DESTDIR)$(PREFIX)/lib/ && \
+	  ln -sf libfixel-glut.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libfixel-glut.so.$(SOMAJOR) && \
+	  ln -sf libfixel-glut.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libfixel-glut.so)
+	install -m 644 $(GLUT_PC) $(DESTDIR)$(PREFIX)/lib/pkgconfig/
+install: install-glut

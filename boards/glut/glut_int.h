@@ -1,0 +1,131 @@
+/* fixel GLUT layer — state shared by gl.c (OpenGL 1.x), glut.c (windows,
+ * input, the loop), shapes.c and text.c. Not installed. */
+#ifndef FIXEL_GLUT_INT_H
+#define FIXEL_GLUT_INT_H
+
+#include <GL/freeglut.h>
+#include <stdint.h>
+
+#include "fixel/glcore.h"
+#include "fixel/memfb.h"
+
+#define FXG_STACK 32
+#define FXG_PROJ_STACK 8
+#define FXG_MAX_TEX 256
+#define FXG_MAX_LISTS 4096
+
+typedef struct fxg_vert {
+    fx_gl_cvert cv;
+} fxg_vert;
+
+typedef struct fxg_tex {
+    int used;
+    fx_gl_texture t;
+    uint8_t *mem;
+    GLenum min_filter, mag_filter, wrap_s, wrap_t;
+} fxg_tex;
+
+typedef struct fxg_rec {
+    uint16_t op, n;
+    uint32_t off; /* into the list's double pool */
+} fxg_rec;
+
+typedef struct fxg_list {
+    int used;
+    fxg_rec *rec;
+    int nrec, caprec;
+    double *pool;
+    int npool, cappool;
+} fxg_list;
+
+typedef struct fxg_gl {
+    /* the window's back buffer (what GL draws into and reads back) */
+    fx_memfb fb;
+    uint32_t *depth;
+    int32_t w, h;
+    fx_gl_target tgt;
+    GLenum error;
+    /* matrices */
+    fx_glm mv[FXG_STACK], proj[FXG_PROJ_STACK], texm[4];
+    int mv_top, proj_top, tex_top;
+    GLenum matrix_mode;
+    fx_glm mvp;
+    fx32 nmat[9];
+    int mvp_dirty, nmat_dirty;
+    int vp[4], scissor[4];
+    fx32 guard;
+    /* enables */
+    int depth_test, lighting, color_material, normalize, cull, blend, stipple, scissor_on,
+        tex2d, rescale;
+    GLenum cull_face, front_face, poly_front, poly_back, shade, depth_func;
+    GLenum cm_face, cm_mode, bsrc, bdst;
+    int depth_mask;
+    fx16 clear_color[4];
+    uint32_t clear_depth;
+    float point_size, line_width;
+    int stipple_factor;
+    uint16_t stipple_pattern;
+    uint8_t color_mask;
+    /* current attributes */
+    fx16 color[4];
+    fx32 normal[3];
+    fx16 texc[2];
+    /* lighting */
+    fx_gl_lighting L;
+    fx_gl_material mat[2];
+    /* immediate mode */
+    GLenum prim;
+    int in_begin;
+    fxg_vert *vb;
+    int nv, capv;
+    int strip_started; /* points already drawn from this glBegin (for flushes) */
+    /* raster position */
+    int64_t rx, ry; /* window, 1/256 px */
+    int raster_valid;
+    fx16 raster_color[4];
+    /* textures */
+    fxg_tex tex[FXG_MAX_TEX];
+    GLuint bound_tex;
+    GLenum tex_env;
+    /* pixel store */
+    int unpack_align, pack_align;
+    float zoom_x, zoom_y;
+    /* display lists */
+    fxg_list lists[FXG_MAX_LISTS];
+    GLuint cur_list;
+    int list_exec; /* COMPILE_AND_EXECUTE */
+    int replaying;
+    GLuint list_base;
+    /* logged-once flags for unimplemented calls */
+    char logged[512];
+} fxg_gl;
+
+extern fxg_gl fxg;
+
+/* gl.c */
+int fxg_gl_init(int32_t w, int32_t h);
+void fxg_gl_resize(int32_t w, int32_t h);
+void fxg_set_error(GLenum e);
+/* The unimplemented-call path: record err and log the name once. */
+void fxg_unimplemented(const char *name, GLenum err);
+/* Mesh drawing for the GLUT solids (shapes.c): positions and normals in
+ * Q16.16 as fx_mesh makes them, drawn as GL_TRIANGLES through the pipeline. */
+void fxg_draw_tris_q16(const int32_t *pos, const int32_t *nrm, const uint32_t *tri, int32_t ntris,
+                       int wire);
+/* glutBitmapCharacter's raster drawing (text.c). */
+void fxg_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmove,
+                const uint8_t *rows_top_first, int32_t row_bytes, int32_t scale);
+
+/* glut.c: called at glFlush / glFinish / glutSwapBuffers */
+void fxg_frame_done(int swap);
+void fxg_log(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* Float/double to fixed point at the API boundary (round to nearest even,
+ * saturating): Q32.32 for geometry, Q16.16 for colours and parameters. */
+fx32 fxg_d2x(double d);
+fx16 fxg_d2c(double d); /* clamped to [0, 1] */
+fx16 fxg_d2q16(double d);
+fx_angle fxg_deg2angle(double deg);
+double fxg_x2d(fx32 v);
+
+#endif

@@ -1,0 +1,671 @@
+/* fixel — GL-rules rasterization for the GLUT layer: points, diamond-exit
+ * lines and triangles with llvmpipe's ties, the per-fragment operations
+ * (scissor, depth, texture, blend, mask) and clip-space clipping. See
+ * fixel/glcore.h for the rules. Integer only, freestanding. */
+#include "fixel/fill.h"
+#include "fixel/glcore.h"
+
+static inline int64_t floordiv(int64_t a, int64_t b) /* b > 0 */
+{
+    int64_t q = a / b;
+    return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+static inline int64_t ceildiv(int64_t a, int64_t b) { return -floordiv(-a, b); }
+
+static inline int32_t level(fx16 c) /* [0, 1] -> 0..255, round(c * 255) */
+{
+    if (c <= 0)
+        return 0;
+    if (c >= FX16_ONE)
+        return 255;
+    return (int32_t)(((int64_t)c * 255 + 0x8000) >> 16);
+}
+
+int fx_gl_to_window(const fx_glv4 *p, int32_t vx, int32_t vy, int32_t vw, int32_t vh,
+                    fx_gl_wvert *o)
+{
+    if (p->w <= 0)
+        return -1;
+    o->x = (int64_t)vx * 256 + fx_muldiv64(p->x + p->w, (int64_t)vw * 128, p->w);
+    o->y = (int64_t)vy * 256 + fx_muldiv64(p->y + p->w, (int64_t)vh * 128, p->w);
+    int64_t z = fx_muldiv64(p->z + p->w, (int64_t)1 << 23, p->w);
+    o->z = z < 0 ? 0 : z > 0xFFFFFF ? 0xFFFFFF : (int32_t)z;
+    o->w = p->w;
+    return 0;
+}
+
+int64_t fx_gl_area2(const fx_gl_wvert *a, const fx_gl_wvert *b, const fx_gl_wvert *c)
+{
+    return (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y);
+}
+
+/* ---- fragments ---- */
+
+static inline int32_t wrap_coord(int64_t i, int32_t n, int clamp)
+{
+    if (clamp)
+        return i < 0 ? 0 : i >= n ? n - 1 : (int32_t)i;
+    int64_t m = i % n;
+    return (int32_t)(m < 0 ? m + n : m);
+}
+
+static void tex_sample(const fx_gl_texture *tx, fx16 s, fx16 t, int32_t out[4])
+{
+    if (!tx->linear) {
+        int32_t i = wrap_coord(((int64_t)s * tx->w) >> 16, tx->w, tx->clamp_s);
+        int32_t j = wrap_coord(((int64_t)t * tx->h) >> 16, tx->h, tx->clamp_t);
+        const uint8_t *p = tx->rgba + ((size_t)j * tx->w + i) * 4;
+        for (int k = 0; k < 4; k++)
+            out[k] = p[k];
+        return;
+    }
+    /* u = s * w - 1/2 in Q16 */
+    int64_t u = (int64_t)s * tx->w - 0x8000, v = (int64_t)t * tx->h - 0x8000;
+    int64_t i0 = u >> 16, j0 = v >> 16;
+    int32_t fu = (int32_t)(u & 0xFFFF), fv = (int32_t)(v & 0xFFFF);
+    int32_t ia = wrap_coord(i0, tx->w, tx->clamp_s), ib = wrap_coord(i0 + 1, tx->w, tx->clamp_s);
+    int32_t ja = wrap_coord(j0, tx->h, tx->clamp_t), jb = wrap_coord(j0 + 1, tx->h, tx->clamp_t);
+    const uint8_t *p00 = tx->rgba + ((size_t)ja * tx->w + ia) * 4;
+    const uint8_t *p10 = tx->rgba + ((size_t)ja * tx->w + ib) * 4;
+    const uint8_t *p01 = tx->rgba + ((size_t)jb * tx->w + ia) * 4;
+    const uint8_t *p11 = tx->rgba + ((size_t)jb * tx->w + ib) * 4;
+    for (int k = 0; k < 4; k++) {
+        int64_t top = (int64_t)p00[k] * (0x10000 - fu) + (int64_t)p10[k] * fu;
+        int64_t bot = (int64_t)p01[k] * (0x10000 - fu) + (int64_t)p11[k] * fu;
+        out[k] = (int32_t)((top * (0x10000 - fv) + bot * fv + ((int64_t)1 << 31)) >> 32);
+    }
+}
+
+static inline int32_t mul255(int32_t a, int32_t b) { return (a * b + 127) / 255; }
+
+static int32_t bfactor(int f, int ch, const int32_t s[4], const int32_t d[4])
+{
+    switch (f) {
+    case FX_GL_BF_ZERO: return 0;
+    case FX_GL_BF_ONE: return 255;
+    case FX_GL_BF_SRC_COLOR: return s[ch];
+    case FX_GL_BF_ONE_MINUS_SRC_COLOR: return 255 - s[ch];
+    case FX_GL_BF_SRC_ALPHA: return s[3];
+    case FX_GL_BF_ONE_MINUS_SRC_ALPHA: return 255 - s[3];
+    case FX_GL_BF_DST_ALPHA: return d[3];
+    case FX_GL_BF_ONE_MINUS_DST_ALPHA: return 255 - d[3];
+    case FX_GL_BF_DST_COLOR: return d[ch];
+    case FX_GL_BF_ONE_MINUS_DST_COLOR: return 255 - d[ch];
+    case FX_GL_BF_SRC_ALPHA_SATURATE:
+        if (ch == 3)
+            return 255;
+        return s[3] < 255 - d[3] ? s[3] : 255 - d[3];
+    default: return 255;
+    }
+}
+
+/* One fragment at window pixel (X, Y) (inside t->clip); c: 0..255 rgba. */
+static void frag(fx_gl_target *t, int32_t X, int32_t Y, uint32_t z, int32_t c[4], fx16 s,
+                 fx16 tt)
+{
+    int32_t row = t->surf.h - 1 - Y;
+    if (t->depth && t->depth_test) {
+        uint32_t *dp = &t->depth[(size_t)row * (size_t)t->surf.w + (size_t)X];
+        uint32_t d = *dp;
+        int pass;
+        switch (t->depth_func) {
+        case FX_GL_DEPTH_NEVER: pass = 0; break;
+        case FX_GL_DEPTH_LESS: pass = z < d; break;
+        case FX_GL_DEPTH_EQUAL: pass = z == d; break;
+        case FX_GL_DEPTH_LEQUAL: pass = z <= d; break;
+        case FX_GL_DEPTH_GREATER: pass = z > d; break;
+        case FX_GL_DEPTH_NOTEQUAL: pass = z != d; break;
+        case FX_GL_DEPTH_GEQUAL: pass = z >= d; break;
+        default: pass = 1; break;
+        }
+        if (!pass)
+            return;
+        if (t->depth_write)
+            *dp = z;
+    }
+    if (t->tex) {
+        int32_t tc[4];
+        tex_sample(t->tex, s, tt, tc);
+        switch (t->tex_env) {
+        case FX_GL_TEX_REPLACE:
+            for (int k = 0; k < 4; k++)
+                c[k] = tc[k];
+            break;
+        case FX_GL_TEX_DECAL:
+            for (int k = 0; k < 3; k++)
+                c[k] = mul255(c[k], 255 - tc[3]) + mul255(tc[k], tc[3]);
+            break;
+        case FX_GL_TEX_ADD:
+            for (int k = 0; k < 3; k++)
+                c[k] = c[k] + tc[k] > 255 ? 255 : c[k] + tc[k];
+            c[3] = mul255(c[3], tc[3]);
+            break;
+        case FX_GL_TEX_BLEND:
+            for (int k = 0; k < 3; k++)
+                c[k] = mul255(c[k], 255 - tc[k]) + mul255(level(t->tex_env_color[k]), tc[k]);
+            c[3] = mul255(c[3], tc[3]);
+            break;
+        default:
+            for (int k = 0; k < 4; k++)
+                c[k] = mul255(c[k], tc[k]);
+            break;
+        }
+    }
+    uint32_t mask = t->color_mask ? t->color_mask : 0xF;
+    if (t->blend || mask != 0xF) {
+        fx_color dc = fx_unpack(t->surf.format, fx_surface_get_native(&t->surf, X, row));
+        int32_t d[4] = {(int32_t)(dc >> 16) & 255, (int32_t)(dc >> 8) & 255, (int32_t)dc & 255,
+                        (int32_t)(dc >> 24) & 255};
+        if (t->blend) {
+            int32_t r[4];
+            for (int k = 0; k < 4; k++) {
+                int32_t v = (c[k] * bfactor(t->bf_src, k, c, d) +
+                             d[k] * bfactor(t->bf_dst, k, c, d) + 127) / 255;
+                r[k] = v > 255 ? 255 : v;
+            }
+            for (int k = 0; k < 4; k++)
+                c[k] = r[k];
+        }
+        for (int k = 0; k < 4; k++)
+            if (!(mask & (1u << k)))
+                c[k] = d[k];
+    }
+    fx_color out = ((fx_color)c[3] << 24) | ((fx_color)c[0] << 16) | ((fx_color)c[1] << 8) |
+                   (fx_color)c[2];
+    if (t->surf.format == FX_FMT_XRGB8888) /* the layer's own buffers: a plain store */
+        ((uint32_t *)(t->surf.pixels + (intptr_t)row * t->surf.stride))[X] = out & 0xFFFFFFu; /* fx_pack's XRGB */
+    else
+        fx_surface_put_native(&t->surf, X, row, fx_pack(t->surf.format, out));
+}
+
+static inline int in_clip(const fx_gl_target *t, int64_t X, int64_t Y)
+{
+    return X >= t->clip.x0 && X < t->clip.x1 && Y >= t->clip.y0 && Y < t->clip.y1;
+}
+
+/* ---- points ---- */
+void fx_gl_point(fx_gl_target *t, const fx_gl_wvert *v, int32_t size)
+{
+    if (size < 1)
+        size = 1;
+    int64_t h = (int64_t)size * 128;
+    int64_t x0 = floordiv(v->x - h - 128, 256) + 1, x1 = floordiv(v->x + h - 128, 256);
+    int64_t y0 = floordiv(v->y - h - 128, 256) + 1, y1 = floordiv(v->y + h - 128, 256);
+    if (x0 < t->clip.x0) x0 = t->clip.x0;
+    if (y0 < t->clip.y0) y0 = t->clip.y0;
+    if (x1 >= t->clip.x1) x1 = t->clip.x1 - 1;
+    if (y1 >= t->clip.y1) y1 = t->clip.y1 - 1;
+    int32_t c[4];
+    for (int64_t Y = y0; Y <= y1; Y++)
+        for (int64_t X = x0; X <= x1; X++) {
+            for (int k = 0; k < 4; k++)
+                c[k] = level(v->c[k]);
+            frag(t, (int32_t)X, (int32_t)Y, (uint32_t)v->z, c, v->s, v->t);
+        }
+}
+
+/* ---- lines ---- */
+static inline int64_t iabs64(int64_t v) { return v < 0 ? -v : v; }
+
+void fx_gl_line(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b, int32_t width,
+                const fx16 *flat)
+{
+    int64_t dx = b->x - a->x, dy = b->y - a->y;
+    if (dx == 0 && dy == 0)
+        return;
+    if (width < 1)
+        width = 1;
+    int xmajor = iabs64(dx) >= iabs64(dy);
+    /* u: major axis, v: minor axis */
+    int64_t u0 = xmajor ? a->x : a->y, v0 = xmajor ? a->y : a->x;
+    int64_t u1 = xmajor ? b->x : b->y, v1 = xmajor ? b->y : b->x;
+    int64_t du = u1 - u0, dv = v1 - v0;
+    int dir = du > 0 ? 1 : -1;
+    int64_t adu = iabs64(du);
+    /* rows whose centre is on the upper edge are in for rising x-major lines */
+    int incl_high = xmajor && ((dx > 0) == (dy > 0)) && dy != 0;
+    int64_t ulo = xmajor ? t->clip.x0 : t->clip.y0, uhi = xmajor ? t->clip.x1 : t->clip.y1;
+    int64_t vlo = xmajor ? t->clip.y0 : t->clip.x0, vhi = xmajor ? t->clip.y1 : t->clip.x1;
+    /* crossed columns: centres in [u0, u1) or (u1, u0] */
+    int64_t cfirst, clast;
+    if (dir > 0) {
+        cfirst = ceildiv(u0 - 128, 256);
+        clast = ceildiv(u1 - 128, 256) - 1;
+    } else {
+        cfirst = floordiv(u0 - 128, 256);
+        clast = floordiv(u1 - 128, 256) + 1;
+    }
+    /* the start pixel when the line starts past its centre: lit iff inside its diamond */
+    int64_t c0 = floordiv(u0, 256), c1 = floordiv(u1, 256);
+    int64_t cen0 = c0 * 256 + 128, cen1 = c1 * 256 + 128;
+    if ((dir > 0 && cen0 < u0) || (dir < 0 && cen0 > u0)) {
+        int64_t vc = floordiv(v0, 256) * 256 + 128;
+        if (iabs64(u0 - cen0) + iabs64(v0 - vc) < 128)
+            cfirst = c0;
+    }
+    /* the end pixel, crossed, is left out when the line ends inside its diamond */
+    if ((dir > 0 && cen1 < u1) || (dir < 0 && cen1 > u1)) {
+        int64_t vc = floordiv(v1, 256) * 256 + 128;
+        if (iabs64(u1 - cen1) + iabs64(v1 - vc) < 128)
+            clast = c1 - dir;
+    }
+    if ((clast - cfirst) * dir < 0)
+        return;
+    int64_t n = (clast - cfirst) * dir + 1;
+    int64_t hw = (int64_t)width * 128;
+    int32_t cflat[4];
+    if (flat)
+        for (int k = 0; k < 4; k++)
+            cflat[k] = level(flat[k]);
+    for (int64_t i = 0; i < n; i++) {
+        int64_t col = cfirst + i * dir;
+        if (t->stipple_on) {
+            uint32_t f = t->stipple_factor > 0 ? (uint32_t)t->stipple_factor : 1u;
+            uint32_t bit = (t->stipple_count / f) & 15u;
+            t->stipple_count++;
+            if (!((t->stipple_pattern >> bit) & 1u))
+                continue;
+        }
+        if (col < ulo || col >= uhi)
+            continue;
+        int64_t uc = col * 256 + 128;
+        /* line's v at uc: num / adu with num = v0*adu + (uc - u0)*dv*dir */
+        int64_t num = v0 * adu + (uc - u0) * dv * dir;
+        int64_t rlo, rhi;
+        if (incl_high) {
+            rlo = floordiv(num - (hw + 128) * adu, 256 * adu) + 1;
+            rhi = floordiv(num + (hw - 128) * adu, 256 * adu);
+        } else {
+            rlo = ceildiv(num - (hw + 128) * adu, 256 * adu);
+            rhi = ceildiv(num + (hw - 128) * adu, 256 * adu) - 1;
+        }
+        if (rlo < vlo)
+            rlo = vlo;
+        if (rhi >= vhi)
+            rhi = vhi - 1;
+        if (rlo > rhi)
+            continue;
+        /* attributes at parameter (uc - u0) / du, clamped to [0, 1] */
+        int64_t pn = (uc - u0) * dir;
+        if (pn < 0)
+            pn = 0;
+        if (pn > adu)
+            pn = adu;
+        int32_t c[4];
+        if (flat) {
+            for (int k = 0; k < 4; k++)
+                c[k] = cflat[k];
+        }
+        uint32_t z = (uint32_t)(a->z + fx_muldiv64(b->z - a->z, pn, adu));
+        fx16 s = (fx16)(a->s + fx_muldiv64(b->s - a->s, pn, adu));
+        fx16 tt = (fx16)(a->t + fx_muldiv64(b->t - a->t, pn, adu));
+        for (int64_t r = rlo; r <= rhi; r++) {
+            if (!flat)
+                for (int k = 0; k < 4; k++)
+                    c[k] = level((fx16)(a->c[k] + fx_muldiv64(b->c[k] - a->c[k], pn, adu)));
+            int32_t cc[4] = {c[0], c[1], c[2], c[3]};
+            if (xmajor)
+                frag(t, (int32_t)col, (int32_t)r, z, cc, s, tt);
+            else
+                frag(t, (int32_t)r, (int32_t)col, z, cc, s, tt);
+        }
+    }
+}
+
+/* ---- triangles ---- */
+/* The common fragment: no texture, no blending, all channels written, the
+ * layer's XRGB8888 buffer: depth test and store inline (frag() does the
+ * same, generally). */
+static inline int plain_target(const fx_gl_target *t)
+{
+    return !t->tex && !t->blend && (t->color_mask == 0 || t->color_mask == 0xF) &&
+           t->surf.format == FX_FMT_XRGB8888;
+}
+static inline void plain_frag(const fx_gl_target *t, uint32_t *px, uint32_t *dp, uint32_t z,
+                              const int32_t c[4])
+{
+    if (dp) {
+        uint32_t d = *dp;
+        int pass;
+        switch (t->depth_func) {
+        case FX_GL_DEPTH_NEVER: pass = 0; break;
+        case FX_GL_DEPTH_LESS: pass = z < d; break;
+        case FX_GL_DEPTH_EQUAL: pass = z == d; break;
+        case FX_GL_DEPTH_LEQUAL: pass = z <= d; break;
+        case FX_GL_DEPTH_GREATER: pass = z > d; break;
+        case FX_GL_DEPTH_NOTEQUAL: pass = z != d; break;
+        case FX_GL_DEPTH_GEQUAL: pass = z >= d; break;
+        default: pass = 1; break;
+        }
+        if (!pass)
+            return;
+        if (t->depth_write)
+            *dp = z;
+    }
+    *px = ((uint32_t)c[0] << 16) | ((uint32_t)c[1] << 8) | (uint32_t)c[2];
+}
+/* The depth test alone (for testing before the colour is computed). */
+static inline int depth_pass(const fx_gl_target *t, uint32_t z, uint32_t d)
+{
+    switch (t->depth_func) {
+    case FX_GL_DEPTH_NEVER: return 0;
+    case FX_GL_DEPTH_LESS: return z < d;
+    case FX_GL_DEPTH_EQUAL: return z == d;
+    case FX_GL_DEPTH_LEQUAL: return z <= d;
+    case FX_GL_DEPTH_GREATER: return z > d;
+    case FX_GL_DEPTH_NOTEQUAL: return z != d;
+    case FX_GL_DEPTH_GEQUAL: return z >= d;
+    default: return 1;
+    }
+}
+
+/* The perspective-correct weights of vertices 1 and 2 (Q16, clamped to
+ * the triangle) from the interpolated q, l1 q, l2 q at val[kq..kq+2]: one
+ * division, Q and the L (<= Q inside) shifted so that Q has 31 bits, times
+ * 2^62 / Q. */
+static inline void persp_weights(const uint64_t *val, int kq, int64_t *w1, int64_t *w2)
+{
+    int64_t Qv = (int64_t)val[kq], L1 = (int64_t)val[kq + 1], L2 = (int64_t)val[kq + 2];
+    if (Qv < 1)
+        Qv = 1;
+    int sh = 33 - __builtin_clzll((uint64_t)Qv);
+    if (sh < 0)
+        sh = 0;
+    uint64_t qn = (uint64_t)Qv >> sh;
+    if (qn == 0)
+        qn = 1;
+    uint64_t inv = ((uint64_t)1 << 62) / qn;
+    L1 = L1 < 0 ? 0 : L1 > Qv ? Qv : L1;
+    L2 = L2 < 0 ? 0 : L2 > Qv ? Qv : L2;
+    int64_t l1 = (int64_t)((((uint64_t)L1 >> sh) * inv) >> 46);
+    int64_t l2 = (int64_t)((((uint64_t)L2 >> sh) * inv) >> 46);
+    l1 = l1 < 0 ? 0 : l1 > FX16_ONE ? FX16_ONE : l1;
+    l2 = l2 < 0 ? 0 : l2 > FX16_ONE - l1 ? FX16_ONE - l1 : l2;
+    *w1 = l1, *w2 = l2;
+}
+/* Perspective-correct colours and texture coordinates: the attributes
+ * interpolated in window space are 1/w (q, normalised to 2^22 at the
+ * nearest vertex, which keeps sliver triangles' gradients in range) and the
+ * barycentric weights of vertices 1 and 2 times q; per pixel the weights
+ * are their quotients (Q16), clamped to the triangle (a covered centre is
+ * inside; only rounding takes a weight out), and every attribute is
+ * a0 + l1 (a1 - a0) + l2 (a2 - a0). */
+static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const fx8 xy[6],
+                           int use_z, int use_c, int use_t, const fx16 *flat)
+{
+    fx32 wmin = v[0]->w;
+    for (int i = 1; i < 3; i++)
+        if (v[i]->w < wmin)
+            wmin = v[i]->w;
+    int32_t q[3];
+    for (int i = 0; i < 3; i++) {
+        int64_t qi = fx_muldiv64(wmin, (int64_t)1 << 22, v[i]->w);
+        q[i] = qi < 1 ? 1 : (int32_t)qi;
+    }
+    int na = use_z ? 4 : 3, kq = use_z ? 1 : 0;
+    int32_t attr[3 * 4];
+    for (int i = 0; i < 3; i++) {
+        int32_t *p = attr + i * na;
+        if (use_z)
+            p[0] = v[i]->z;
+        p[kq] = q[i];
+        p[kq + 1] = i == 1 ? q[1] : 0;
+        p[kq + 2] = i == 2 ? q[2] : 0;
+    }
+    /* attribute deltas from vertex 0: colour levels in Q16, s and t */
+    int64_t c0[4] = {0, 0, 0, 0}, d1[6] = {0}, d2[6] = {0};
+    int64_t s0 = v[0]->s, t0 = v[0]->t;
+    if (use_c)
+        for (int k = 0; k < 4; k++) {
+            int64_t l[3];
+            for (int i = 0; i < 3; i++) {
+                fx16 cc = v[i]->c[k];
+                l[i] = (int64_t)(cc < 0 ? 0 : cc > FX16_ONE ? FX16_ONE : cc) * 255;
+            }
+            c0[k] = l[0], d1[k] = l[1] - l[0], d2[k] = l[2] - l[0];
+        }
+    if (use_t) {
+        d1[4] = (int64_t)v[1]->s - s0, d2[4] = (int64_t)v[2]->s - s0;
+        d1[5] = (int64_t)v[1]->t - t0, d2[5] = (int64_t)v[2]->t - t0;
+    }
+    fx_tri tri;
+    if (fx_tri_begin(&tri, t->clip, xy, attr, na) <= 0)
+        return;
+    int32_t cf[4] = {0, 0, 0, 0};
+    if (flat)
+        for (int k = 0; k < 4; k++)
+            cf[k] = level(flat[k]);
+    int plain = plain_target(t);
+    fx_tri_span sp;
+    while (fx_tri_next_span(&tri, &sp)) {
+        uint64_t val[4];
+        for (int k = 0; k < na; k++)
+            val[k] = fx_tri_attr_at(&tri, k, sp.x0, sp.y);
+        int32_t row = t->surf.h - 1 - sp.y;
+        uint32_t *prow = (uint32_t *)(t->surf.pixels + (intptr_t)row * t->surf.stride);
+        uint32_t *drow = use_z ? t->depth + (size_t)row * (size_t)t->surf.w : 0;
+        for (int32_t x = sp.x0; x < sp.x1; x++) {
+            int32_t col[4] = {cf[0], cf[1], cf[2], cf[3]};
+            uint32_t z = 0;
+            fx16 s = 0, tt = 0;
+            if (use_z) {
+                int32_t zz = fx_tri_attr_round(val[0]);
+                z = zz < 0 ? 0 : zz > 0xFFFFFF ? 0xFFFFFF : (uint32_t)zz;
+                /* early depth test: a hidden fragment costs no division */
+                if (plain && !depth_pass(t, z, drow[x])) {
+                    for (int k = 0; k < na; k++)
+                        val[k] += tri.gx[k];
+                    continue;
+                }
+            }
+            int64_t l1, l2;
+            persp_weights(val, kq, &l1, &l2);
+            if (use_c)
+                for (int k = 0; k < 4; k++) {
+                    int64_t l = c0[k] + ((l1 * d1[k] + l2 * d2[k] + 0x8000) >> 16); /* level, Q16 */
+                    l = (l + 0x8000) >> 16;
+                    col[k] = l < 0 ? 0 : l > 255 ? 255 : (int32_t)l;
+                }
+            if (use_t) {
+                s = (fx16)(s0 + ((l1 * d1[4] + l2 * d2[4] + 0x8000) >> 16));
+                tt = (fx16)(t0 + ((l1 * d1[5] + l2 * d2[5] + 0x8000) >> 16));
+            }
+            if (plain)
+                plain_frag(t, prow + x, drow ? drow + x : 0, z, col);
+            else
+                frag(t, x, sp.y, z, col, s, tt);
+            for (int k = 0; k < na; k++)
+                val[k] += tri.gx[k];
+        }
+    }
+}
+
+void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
+                    const fx_gl_wvert *c, const fx16 *flat)
+{
+    const fx_gl_wvert *v[3] = {a, b, c};
+    fx8 xy[6];
+    for (int i = 0; i < 3; i++) {
+        xy[2 * i] = (fx8)(v[i]->x - 128);
+        xy[2 * i + 1] = (fx8)(v[i]->y - 128);
+    }
+    int use_z = t->depth && t->depth_test;
+    int use_c = flat == 0;
+    int use_t = t->tex != 0;
+    if ((use_c || use_t) && a->w > 0 && b->w > 0 && c->w > 0 && (a->w != b->w || a->w != c->w)) {
+        persp_triangle(t, v, xy, use_z, use_c, use_t, flat);
+        return;
+    }
+    int na = 0, kz = -1, kc = -1, kt = -1;
+    if (use_z)
+        kz = na, na += 1;
+    if (use_c)
+        kc = na, na += 4;
+    if (use_t)
+        kt = na, na += 2;
+    int32_t attr[3 * FX_TRI_MAX_ATTR];
+    for (int i = 0; i < 3; i++) {
+        int32_t *p = attr + i * na;
+        if (kz >= 0)
+            p[kz] = v[i]->z;
+        if (kc >= 0)
+            for (int k = 0; k < 4; k++) {
+                fx16 cc = v[i]->c[k];
+                cc = cc < 0 ? 0 : cc > FX16_ONE ? FX16_ONE : cc;
+                p[kc + k] = cc * 255;
+            }
+        if (kt >= 0) {
+            p[kt] = v[i]->s;
+            p[kt + 1] = v[i]->t;
+        }
+    }
+    fx_tri tri;
+    if (fx_tri_begin(&tri, t->clip, xy, attr, na) <= 0)
+        return;
+    int32_t cf[4] = {0, 0, 0, 0};
+    if (flat)
+        for (int k = 0; k < 4; k++)
+            cf[k] = level(flat[k]);
+    int plain = plain_target(t);
+    fx_tri_span sp;
+    while (fx_tri_next_span(&tri, &sp)) {
+        uint64_t val[FX_TRI_MAX_ATTR];
+        for (int k = 0; k < na; k++)
+            val[k] = fx_tri_attr_at(&tri, k, sp.x0, sp.y);
+        int32_t row = t->surf.h - 1 - sp.y;
+        uint32_t *prow = (uint32_t *)(t->surf.pixels + (intptr_t)row * t->surf.stride);
+        uint32_t *drow = kz >= 0 ? t->depth + (size_t)row * (size_t)t->surf.w : 0;
+        for (int32_t x = sp.x0; x < sp.x1; x++) {
+            int32_t col[4] = {cf[0], cf[1], cf[2], cf[3]};
+            uint32_t z = 0;
+            fx16 s = 0, tt = 0;
+            if (kz >= 0) {
+                int32_t zz = fx_tri_attr_round(val[kz]);
+                z = zz < 0 ? 0 : zz > 0xFFFFFF ? 0xFFFFFF : (uint32_t)zz;
+            }
+            if (kc >= 0)
+                for (int k = 0; k < 4; k++) {
+                    int64_t l = ((int64_t)(val[kc + k] + ((uint64_t)1 << 47))) >> 48;
+                    col[k] = l < 0 ? 0 : l > 255 ? 255 : (int32_t)l;
+                }
+            if (kt >= 0) {
+                s = fx_tri_attr_round(val[kt]);
+                tt = fx_tri_attr_round(val[kt + 1]);
+            }
+            if (plain)
+                plain_frag(t, prow + x, drow ? drow + x : 0, z, col);
+            else
+                frag(t, x, sp.y, z, col, s, tt);
+            for (int k = 0; k < na; k++)
+                val[k] += tri.gx[k];
+        }
+    }
+}
+
+void fx_gl_clear(fx_gl_target *t, fx_rect r, fx_color c, int color, uint32_t depth, int depth_on)
+{
+    fx_rect s = {0, 0, t->surf.w, t->surf.h};
+    r = fx_rect_intersect(r, s);
+    if (fx_rect_empty(r))
+        return;
+    /* window rows r.y0..r.y1 are surface rows h - r.y1 .. h - r.y0 */
+    fx_rect sr = {r.x0, t->surf.h - r.y1, r.x1, t->surf.h - r.y0};
+    if (color)
+        fx_rect_fill_native(&t->surf, sr, fx_pack(t->surf.format, c));
+    if (depth_on && t->depth)
+        for (int32_t y = sr.y0; y < sr.y1; y++)
+            for (int32_t x = sr.x0; x < sr.x1; x++)
+                t->depth[(size_t)y * (size_t)t->surf.w + (size_t)x] = depth;
+}
+
+/* ---- clipping ---- */
+static fx32 plane_dist(const fx_glv4 *p, int i, fx32 g)
+{
+    fx32 gw = g == FX32_ONE ? p->w : fx32_mul(g, p->w);
+    switch (i) {
+    case 0: return gw - p->x;
+    case 1: return gw + p->x;
+    case 2: return gw - p->y;
+    case 3: return gw + p->y;
+    case 4: return p->w - p->z;
+    default: return p->w + p->z;
+    }
+}
+
+static void lerp_cvert(const fx_gl_cvert *a, const fx_gl_cvert *b, fx32 num, fx32 den,
+                       fx_gl_cvert *o)
+{
+    o->p.x = a->p.x + fx_muldiv64(b->p.x - a->p.x, num, den);
+    o->p.y = a->p.y + fx_muldiv64(b->p.y - a->p.y, num, den);
+    o->p.z = a->p.z + fx_muldiv64(b->p.z - a->p.z, num, den);
+    o->p.w = a->p.w + fx_muldiv64(b->p.w - a->p.w, num, den);
+    for (int k = 0; k < 4; k++)
+        o->c[k] = (fx16)(a->c[k] + fx_muldiv64(b->c[k] - a->c[k], num, den));
+    o->s = (fx16)(a->s + fx_muldiv64(b->s - a->s, num, den));
+    o->t = (fx16)(a->t + fx_muldiv64(b->t - a->t, num, den));
+}
+
+int fx_gl_clip_line(fx_gl_cvert *a, fx_gl_cvert *b, fx32 g)
+{
+    for (int i = 0; i < 6; i++) {
+        fx32 da = plane_dist(&a->p, i, g), db = plane_dist(&b->p, i, g);
+        if (da < 0 && db < 0)
+            return 0;
+        if (da >= 0 && db >= 0)
+            continue;
+        fx_gl_cvert n;
+        lerp_cvert(a, b, da, da - db, &n);
+        if (da < 0)
+            *a = n;
+        else
+            *b = n;
+    }
+    return 1;
+}
+
+int fx_gl_clip_poly(const fx_gl_cvert *in, int n, fx_gl_cvert *out, fx_gl_cvert *tmp, fx32 g)
+{
+    /* quick accept */
+    int all = 1;
+    for (int j = 0; j < n && all; j++)
+        for (int i = 0; i < 6; i++)
+            if (plane_dist(&in[j].p, i, g) < 0) {
+                all = 0;
+                break;
+            }
+    if (all) {
+        for (int j = 0; j < n; j++)
+            out[j] = in[j];
+        return n;
+    }
+    const fx_gl_cvert *src = in;
+    fx_gl_cvert *bufs[2] = {out, tmp};
+    int cur = 0, m = n;
+    for (int i = 0; i < 6; i++) {
+        /* alternate so that the result of plane 5 lands in out */
+        fx_gl_cvert *dst = bufs[(i + 1) & 1 ? 1 : 0];
+        (void)cur;
+        int k = 0;
+        for (int j = 0; j < m; j++) {
+            const fx_gl_cvert *p = &src[j], *q = &src[(j + 1) % m];
+            fx32 dp = plane_dist(&p->p, i, g), dq = plane_dist(&q->p, i, g);
+            if (dp >= 0)
+                dst[k++] = *p;
+            if ((dp >= 0) != (dq >= 0))
+                lerp_cvert(p, q, dp, dp - dq, &dst[k++]);
+        }
+        m = k;
+        src = dst;
+        if (m < 3)
+            return 0;
+    }
+    if (src != out)
+        for (int j = 0; j < m; j++)
+            out[j] = src[j];
+    return m;
+}
+
+int fx_gl_point_visible(const fx_glv4 *p)
+{
+    return p->w > 0 && p->z <= p->w && p->z >= -p->w;
+}
