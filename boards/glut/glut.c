@@ -8,7 +8,7 @@
  * no fx_app: the loop runs the callbacks itself on a virtual clock, takes
  * input from FIXEL_GLUT_REPLAY (replay.c; the format is tests/glut/README.md's)
  * and FIXEL_GLUT_FRAMES / FIXEL_GLUT_OUT end it and write the frame.
- * The environment is read in one place, glut_options_from_env (glutInit). */
+ * The environment is read in one place, fxg_env_read (env.c, at glutInit). */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
@@ -20,6 +20,7 @@
 #include <time.h>
 
 #include "fixel/app.h"
+#include "fixel/env.h"
 #include "fixel/draw.h"
 #include "fixel/font.h"
 #include "fixel/input.h"
@@ -46,11 +47,7 @@ static struct {
     int inited, created;
     unsigned mode;
     int init_x, init_y, init_w, init_h;
-    /* environment, read once (glut_options_from_env) */
-    long env_frames;
-    const char *env_out;
-    const char *env_replay;
-    int env_fullscreen, env_headless, env_bench;
+    fxg_env env; /* read once at glutInit (env.c) */
     uint64_t bench_t1; /* FIXEL_GLUT_BENCH: wall clock at the end of frame 1 */
     /* runtime */
     fx_app *app;
@@ -120,42 +117,6 @@ static uint64_t now_us(void)
 }
 
 /* ---- init ---- */
-/* Every environment variable the GLUT layer reads, read here once:
- *   FIXEL_BACKEND=memory   headless: a memory framebuffer of the window's size
- *                          (also when no display opens)
- *   FIXEL_GLUT_FRAMES=N    exit 0 when the N-th frame ends
- *   FIXEL_GLUT_OUT=F       write that frame, the window's pixels: 8-bit RGB PNG
- *                          (or binary PPM when F ends in .ppm), top row first
- *   FIXEL_GLUT_REPLAY=F    headless input from replay file F (replay.c)
- *   FIXEL_GLUT_FULLSCREEN=1  the window is the whole screen
- *   FIXEL_GLUT_BENCH=1     at exit, print "fixel-glut: frames 2..N in T s = F fps"
- *                          (wall clock from the end of frame 1, as the Mesa shim)
- * An empty value is the same as unset; a FIXEL_GLUT_FRAMES that is not a
- * number >= 0 exits with status 2. */
-static void glut_options_from_env(void)
-{
-    const char *e = getenv("FIXEL_GLUT_FRAMES");
-    G.env_frames = 0;
-    if (e && *e) {
-        char *end;
-        G.env_frames = strtol(e, &end, 10);
-        if (*end || G.env_frames < 0) {
-            fxg_log("FIXEL_GLUT_FRAMES=%s is not a frame count", e);
-            exit(2);
-        }
-    }
-    e = getenv("FIXEL_GLUT_OUT");
-    G.env_out = e && *e ? e : NULL;
-    e = getenv("FIXEL_GLUT_REPLAY");
-    G.env_replay = e && *e ? e : NULL;
-    e = getenv("FIXEL_GLUT_FULLSCREEN");
-    G.env_fullscreen = e && !strcmp(e, "1");
-    e = getenv("FIXEL_BACKEND");
-    G.env_headless = e && !strcasecmp(e, "memory");
-    e = getenv("FIXEL_GLUT_BENCH");
-    G.env_bench = e && atoi(e) > 0;
-}
-
 void glutInit(int *pargc, char **argv)
 {
     (void)pargc, (void)argv;
@@ -164,9 +125,9 @@ void glutInit(int *pargc, char **argv)
     G.inited = 1;
     G.init_x = G.init_y = -1;
     G.init_w = 300, G.init_h = 300;
-    glut_options_from_env();
-    if (G.env_replay)
-        fxg_replay_load(&G.rp, G.env_replay); /* a bad line exits 5 now */
+    fxg_env_read(&G.env);
+    if (G.env.replay)
+        fxg_replay_load(&G.rp, G.env.replay); /* a bad line exits 5 now */
     G.t0_us = now_us();
 }
 void glutInitWindowPosition(int x, int y) { G.init_x = x, G.init_y = y; }
@@ -236,12 +197,21 @@ int glutCreateWindow(const char *title)
         return 1;
     }
     snprintf(G.title, sizeof G.title, "%s", title ? title : "");
-    G.headless = G.env_headless;
+    G.headless = G.env.headless;
     if (!G.headless) {
         fx_app_options o;
         fx_app_options_init(&o);
+        /* the FIXEL_* display and input variables, as every fixel program */
+        if (fx_app_options_from_env(&o) < 0)
+            exit(1);
         if (fx_app_open(&G.app, &o) < 0) {
             G.app = NULL;
+            if (o.display.backend != FX_BACKEND_AUTO) {
+                /* a display asked for by name that cannot open is an error,
+                 * not a silent headless run (issue #20) */
+                fxg_log("cannot open the display asked for (reason above)");
+                exit(1);
+            }
             G.headless = 1;
         } else {
             fx_display_info info;
@@ -255,7 +225,7 @@ int glutCreateWindow(const char *title)
             }
         }
     }
-    place_window(G.env_fullscreen);
+    place_window(G.env.fullscreen);
     if (fxg_gl_init(G.init_w, G.init_h) < 0) {
         fxg_log("out of memory for a %dx%d window", G.init_w, G.init_h);
         exit(1);
@@ -624,12 +594,12 @@ static void present(void)
 
 static void write_out(void)
 {
-    if (!G.env_out)
+    if (!G.env.out)
         return;
     /* the window's pixels, as glReadPixels sees them: the layer's popup
      * menus are not in them (freeglut's are windows of their own) */
-    if (fx_write_image(G.env_out, &fxg.fb.surf) < 0)
-        fxg_log("cannot write %s", G.env_out);
+    if (fx_write_image(G.env.out, &fxg.fb.surf) < 0)
+        fxg_log("cannot write %s", G.env.out);
 }
 
 void fxg_frame_done(int swap)
@@ -645,11 +615,11 @@ void fxg_frame_done(int swap)
     }
     present();
     G.frames++;
-    if (G.env_bench && G.frames == 1)
+    if (G.env.bench && G.frames == 1)
         G.bench_t1 = wall_us();
-    if (G.env_frames > 0 && G.frames >= G.env_frames) {
+    if (G.env.frames > 0 && G.frames >= G.env.frames) {
         write_out();
-        if (G.env_bench) {
+        if (G.env.bench) {
             double t = (double)(wall_us() - G.bench_t1) / 1e6;
             printf("fixel-glut: frames 2..%ld in %.3f s = %.2f fps\n", G.frames, t,
                    G.frames > 1 && t > 0 ? (double)(G.frames - 1) / t : 0.0);
@@ -970,7 +940,7 @@ static uint64_t wall_us(void)
 }
 __attribute__((noreturn)) static void stalled(void)
 {
-    fxg_log("stalled at frame %ld of %ld (next replay event at frame %ld)", G.frames, G.env_frames,
+    fxg_log("stalled at frame %ld of %ld (next replay event at frame %ld)", G.frames, G.env.frames,
             G.rp.next < G.rp.n ? G.rp.ev[G.rp.next].frame : -1L);
     exit(3);
 }
@@ -1020,7 +990,7 @@ static void headless_loop(void)
              * as the Mesa shim is, when frames are wanted */
             if (G.frames != seen) {
                 seen = G.frames, since = 0;
-            } else if (G.env_frames > 0 && (++spins & 1023) == 0) {
+            } else if (G.env.frames > 0 && (++spins & 1023) == 0) {
                 uint64_t t = wall_us();
                 if (!since)
                     since = t;
@@ -1036,7 +1006,7 @@ static void headless_loop(void)
             continue;
         }
         /* nothing can happen any more */
-        if (G.env_frames > 0 || G.rp.next < G.rp.n)
+        if (G.env.frames > 0 || G.rp.next < G.rp.n)
             stalled();
         write_out();
         exit(0);

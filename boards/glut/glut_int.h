@@ -120,6 +120,15 @@ void fxg_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmov
 void fxg_frame_done(int swap);
 void fxg_log(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
+/* The layer's environment (env.c), read once by glutInit. */
+typedef struct fxg_env {
+    long frames;        /* FIXEL_GLUT_FRAMES: exit 0 when frame N ends (0: never) */
+    const char *out;    /* FIXEL_GLUT_OUT: write that frame here */
+    const char *replay; /* FIXEL_GLUT_REPLAY: headless input */
+    int fullscreen, headless, bench;
+} fxg_env;
+void fxg_env_read(fxg_env *v);
+
 /* Float/double to fixed point at the API boundary (round to nearest even,
  * saturating): Q32.32 for geometry, Q16.16 for colours and parameters. */
 fx32 fxg_d2x(double d);

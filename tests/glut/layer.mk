@@ -1,16 +1,16 @@
 # The GLUT layer's suite (issue #21): unit tests of tests/glut/test_*.c run
-# through tests/runner.c, and headless course-style programs (tests/glut/layer.sh).
+# through tests/lib/runner.c, and headless course-style programs (tests/glut/layer.sh).
 GLUT_TEST_SRC := $(sort $(wildcard tests/glut/test_*.c))
 GLUT_TEST_BIN := $(BUILD)/tests/glut-unit
 $(GLUT_TEST_SRC:%.c=$(BUILD)/obj/%.o): BASEFLAGS += -Iboards/glut/include
 
-$(BUILD)/tests/glut-registry.c: $(GLUT_TEST_SRC) tests/gen-registry.sh
+$(BUILD)/tests/glut-registry.c: $(GLUT_TEST_SRC) tests/lib/gen-registry.sh
 	@mkdir -p $(dir $@)
-	sh tests/gen-registry.sh $(GLUT_TEST_SRC) > $@
+	sh tests/lib/gen-registry.sh $(GLUT_TEST_SRC) > $@
 $(BUILD)/obj/tests/glut-registry.o: $(BUILD)/tests/glut-registry.c
 	@mkdir -p $(dir $@)
-	$(CC) $(BASEFLAGS) -Itests -c $< -o $@
-$(GLUT_TEST_BIN): $(GLUT_TEST_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/runner.o \
+	$(CC) $(BASEFLAGS) -Itests/lib -c $< -o $@
+$(GLUT_TEST_BIN): $(GLUT_TEST_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/lib/runner.o \
                   $(BUILD)/obj/tests/glut-registry.o $(GLUT_A) $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(filter %.o,$^) $(GLUT_LIBS)

@@ -50,5 +50,16 @@ st=$?; [ $st -eq 5 ] && pass "decreasing frame numbers exit 5" || fail "decreasi
 printf 'frame 9: key a\n' > "$out/late.txt"
 FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=10 FIXEL_GLUT_REPLAY="$out/late.txt" "$bin" >/dev/null 2>&1
 st=$?; [ $st -eq 3 ] && pass "a replay waiting for a frame that never comes exits 3" || fail "stall (exit $st)"
+# a display asked for by name that cannot open ends the program (issue #20);
+# only the automatic choice falls back to a memory window
+if [ ! -e /dev/dri ] && [ ! -e /dev/fb0 ]; then
+    msg=$(FIXEL_BACKEND=drm FIXEL_GLUT_FRAMES=1 "$bin" 2>&1); st=$?
+    [ $st -eq 1 ] && echo "$msg" | grep -q 'no drm display' && pass "FIXEL_BACKEND=drm without DRM exits 1 with the reason" ||
+        fail "FIXEL_BACKEND=drm without DRM (exit $st: $msg)"
+    rm -f "$out/auto.png"
+    env -u FIXEL_BACKEND FIXEL_GLUT_FRAMES=1 FIXEL_GLUT_OUT="$out/auto.png" "$bin" >/dev/null 2>&1; st=$?
+    [ $st -eq 0 ] && [ -s "$out/auto.png" ] && pass "automatic display choice falls back to memory" ||
+        fail "automatic fallback (exit $st)"
+fi
 echo "glut-progs: $P passed, $F failed"
 [ $F -eq 0 ]
