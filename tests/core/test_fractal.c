@@ -12,6 +12,7 @@
 #include "fixel/fractal.h"
 #include "fixel/scene.h"
 #include "fx_test.h"
+#include "scenebuf.h"
 #include "../../tools/fixel-bench/workloads.h"
 
 /* Where long double is wider than double (x86: 64-bit mantissa, aarch64:
@@ -441,20 +442,13 @@ FX_TEST(colormap_definitions)
 
 /* The script commands: decimals parsed exactly give the library's views. */
 static uint32_t scene_mem[192 * 108];
-static int scene_make(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
-{
-    (void)u;
-    if ((size_t)w * h > sizeof scene_mem / 4)
-        return -FX_ENOMEM;
-    memset(scene_mem, 0, sizeof scene_mem);
-    return fx_surface_init(out, scene_mem, w, h, w * 4, f);
-}
+static scene_buf buf = {scene_mem, 192 * 108};
 
 static int scene_run(const char *text)
 {
     static uint8_t arena[1 << 16];
     fx_scene sc;
-    fx_scene_host h = {NULL, scene_make, NULL, NULL, NULL};
+    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL};
     fx_scene_init(&sc, &h, arena, sizeof arena);
     return fx_scene_run(&sc, text, strlen(text));
 }
