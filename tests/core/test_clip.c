@@ -9,6 +9,7 @@
 #include "fixel/error.h"
 #include "fixel/line.h"
 #include "canvas.h"
+#include "refline.h"
 #include "trace.h"
 #include "fx_test.h"
 
@@ -175,22 +176,10 @@ static int check_drawn(fx_line_clipper a, int32_t x0, int32_t y0, int32_t x1, in
     if (ext)
         fx_ctx_exterior(&ctx, *ext);
     fx_line(&ctx, x0, y0, x1, y1);
-    int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
-    uint64_t adx = (uint64_t)llabs(dx), ady = (uint64_t)llabs(dy);
-    int steep = ady > adx, ok = 1;
-    uint64_t major = steep ? ady : adx, minor = steep ? adx : ady;
+    int ok = 1;
     for (int y = 0; y < H && ok; y++)
         for (int x = 0; x < W; x++) {
-            int64_t A = steep ? y : x, a0 = steep ? y0 : x0, B = steep ? x : y, b0 = steep ? x0 : y0;
-            int64_t sa = steep ? (dy > 0) - (dy < 0) : (dx > 0) - (dx < 0);
-            int64_t sb = steep ? (dx > 0) - (dx < 0) : (dy > 0) - (dy < 0);
-            int on = 0;
-            int64_t k = sa ? (A - a0) * sa : (A == a0 ? 0 : -1);
-            if (k >= 0 && (uint64_t)k <= major) {
-                uint64_t t = (uint64_t)k * minor; /* k, minor < 2^32 */
-                uint64_t m = major ? (uint64_t)(t / major) + (2 * (uint64_t)(t % major) >= major) : 0;
-                on = B == b0 + sb * (int64_t)m;
-            }
+            int on = refline_lights(x0, y0, x1, y1, x, y);
             int inside = x >= win.x0 && x < win.x1 && y >= win.y0 && y < win.y1;
             if (ext && x >= ext->x0 && x < ext->x1 && y >= ext->y0 && y < ext->y1)
                 inside = 0;

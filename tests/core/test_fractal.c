@@ -12,6 +12,7 @@
 #include "fixel/fractal.h"
 #include "fixel/scene.h"
 #include "fx_test.h"
+#include "scenebuf.h"
 #include "../../tools/fixel-bench/workloads.h"
 
 /* Where long double is wider than double (x86: 64-bit mantissa, aarch64:
@@ -44,10 +45,10 @@ static uint32_t ref_dwell_ld(long double zr, long double zi, long double cr, lon
     return n;
 }
 
-/* The W9 loop of docs/BENCHMARK.md in double, for any view given in doubles. */
-static uint32_t ref_dwell_d(double cr, double ci, uint32_t max)
+/* The W9 loop of docs/BENCHMARK.md in double, for any view given in doubles:
+ * z starts at (zr, zi), 0 for the Mandelbrot set, the pixel for a Julia set. */
+static uint32_t ref_dwell_d(double zr, double zi, double cr, double ci, uint32_t max)
 {
-    double zr = 0, zi = 0;
     uint32_t n = 0;
     while (n < max) {
         double zr2 = zr * zr, zi2 = zi * zi;
@@ -87,7 +88,7 @@ FX_TEST(fractal_w9_agrees_with_double)
         double ci = (540.0 - (y + 0.5)) * st;
         for (int32_t x = 0; x < w; x++) {
             double cr = -0.5 + ((x + 0.5) - 960.0) * st;
-            uint32_t n = ref_dwell_d(cr, ci, 256), g = 4 * n > 255 ? 255 : 4 * n;
+            uint32_t n = ref_dwell_d(0, 0, cr, ci, 256), g = 4 * n > 255 ? 255 : 4 * n;
             same += (px[(size_t)y * w + x] & 0xFFFFFF) == (n == 256 ? 0 : g * 0x010101u);
         }
     }
@@ -114,7 +115,7 @@ static void zoom_case(const char *cre, const char *cim, const char *width, int32
         long double li = ld56(fx_fractal_im(&v, y));
         for (int32_t x = 0; x < w; x++) {
             double cr = dre + ((x + 0.5) - w / 2.0) * s;
-            uint32_t got = d[(size_t)y * w + x], nd = ref_dwell_d(cr, ci, max);
+            uint32_t got = d[(size_t)y * w + x], nd = ref_dwell_d(0, 0, cr, ci, max);
             uint32_t nl = ref_dwell_ld(0, 0, ld56(fx_fractal_re(&v, x)), li, max);
             vs_d += got == nd;
             vs_ld += got == nl;
@@ -441,20 +442,13 @@ FX_TEST(colormap_definitions)
 
 /* The script commands: decimals parsed exactly give the library's views. */
 static uint32_t scene_mem[192 * 108];
-static int scene_make(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
-{
-    (void)u;
-    if ((size_t)w * h > sizeof scene_mem / 4)
-        return -FX_ENOMEM;
-    memset(scene_mem, 0, sizeof scene_mem);
-    return fx_surface_init(out, scene_mem, w, h, w * 4, f);
-}
+static scene_buf buf = {scene_mem, 192 * 108};
 
 static int scene_run(const char *text)
 {
     static uint8_t arena[1 << 16];
     fx_scene sc;
-    fx_scene_host h = {NULL, scene_make, NULL, NULL, NULL};
+    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL};
     fx_scene_init(&sc, &h, arena, sizeof arena);
     return fx_scene_run(&sc, text, strlen(text));
 }
@@ -502,15 +496,7 @@ static int64_t julia_agree(const char *jre, const char *jim, double djre, double
     for (int32_t y = 0; y < h; y++)
         for (int32_t x = 0; x < w; x++) {
             double zr = ((x + 0.5) - w / 2.0) * s, zi = (h / 2.0 - (y + 0.5)) * s;
-            uint32_t n = 0;
-            while (n < max) {
-                double rr = zr * zr, ii = zi * zi;
-                if (rr + ii > 4.0)
-                    break;
-                zi = 2 * zr * zi + djim;
-                zr = rr - ii + djre;
-                n++;
-            }
+            uint32_t n = ref_dwell_d(zr, zi, djre, djim, max);
             same += d[y * w + x] == n;
             escaped += n < max;
         }

@@ -6,6 +6,7 @@
 
 #include "fixel/line.h"
 #include "canvas.h"
+#include "refline.h"
 #include "trace.h"
 #include "fx_test.h"
 
@@ -117,22 +118,9 @@ static void check_clipped(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int w,
     fx_ctx_init(&ctx, &c.s);
     fx_ctx_set_clip(&ctx, clip);
     fx_line(&ctx, x0, y0, x1, y1);
-    int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
-    uint64_t adx = (uint64_t)llabs(dx), ady = (uint64_t)llabs(dy);
-    int steep = ady > adx;
-    uint64_t major = steep ? ady : adx, minor = steep ? adx : ady;
     for (int y = 0; y < h; y++)
         for (int x = 0; x < w; x++) {
-            int64_t a = steep ? y : x, a0 = steep ? y0 : x0, b = steep ? x : y, b0 = steep ? x0 : y0;
-            int64_t sa = steep ? (dy > 0) - (dy < 0) : (dx > 0) - (dx < 0);
-            int64_t sb = steep ? (dx > 0) - (dx < 0) : (dy > 0) - (dy < 0);
-            int on = 0;
-            int64_t k = sa ? (a - a0) * sa : (a == a0 ? 0 : -1);
-            if (k >= 0 && (uint64_t)k <= major) {
-                uint64_t t = (uint64_t)k * minor;
-                uint64_t m = major ? t / major + (2 * (t % major) >= major) : 0;
-                on = b == b0 + sb * (int64_t)m;
-            }
+            int on = refline_lights(x0, y0, x1, y1, x, y);
             int inside = x >= clip.x0 && x < clip.x1 && y >= clip.y0 && y < clip.y1;
             if ((c.mem[y * w + x] != 0) != (on && inside)) {
                 FX_CHECK_MSG(0, "(%d,%d)->(%d,%d) pixel %d,%d: lit %d, expected %d", x0, y0, x1, y1,

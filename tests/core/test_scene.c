@@ -6,21 +6,15 @@
 #include "fixel/error.h"
 #include "fixel/scene.h"
 #include "fx_test.h"
+#include "scenebuf.h"
 
 static uint32_t mem[64 * 64];
-static int make(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
-{
-    (void)u;
-    if (w * h > 64 * 64)
-        return -FX_ENOMEM;
-    memset(mem, 0, sizeof mem);
-    return fx_surface_init(out, mem, w, h, w * 4, f);
-}
+static scene_buf buf = {mem, 64 * 64};
 
 static int run(fx_scene *sc, const char *text)
 {
     static uint8_t arena[4096];
-    fx_scene_host h = {NULL, make, NULL, NULL, NULL};
+    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL};
     fx_scene_init(sc, &h, arena, sizeof arena);
     return fx_scene_run(sc, text, strlen(text));
 }
@@ -72,7 +66,7 @@ static int probe(fx_scene *sc)
 FX_TEST(scene_argument_helpers)
 {
     fx_scene sc;
-    fx_scene_host h = {NULL, make, NULL, NULL, NULL};
+    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL};
     uint8_t arena[256];
     fx_scene_init(&sc, &h, arena, sizeof arena);
     const fx_scene_cmd cmd = {"probe", probe, "probe", 0};
@@ -103,7 +97,7 @@ FX_TEST(scene_command_names_with_nul_bytes)
     fx_scene sc;
     static const char text[] = "size 8 8\nline\0xyz 1 2 3 4\n";
     static uint8_t arena[256];
-    fx_scene_host h = {NULL, make, NULL, NULL, NULL};
+    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL};
     fx_scene_init(&sc, &h, arena, sizeof arena);
     FX_CHECK_EQ(fx_scene_run(&sc, text, sizeof text - 1), -FX_EINVAL);
     FX_CHECK_EQ(sc.err_line, 2);

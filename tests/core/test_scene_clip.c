@@ -9,22 +9,16 @@
 #include "fixel/error.h"
 #include "fixel/scene.h"
 #include "fx_test.h"
+#include "scenebuf.h"
 
 static uint32_t mem[32 * 32];
-static int make(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
-{
-    (void)u;
-    if (w * h > 32 * 32)
-        return -FX_ENOMEM;
-    memset(mem, 0, sizeof mem);
-    return fx_surface_init(out, mem, w, h, w * 4, f);
-}
+static scene_buf buf = {mem, 32 * 32};
 
 static fx_scene sc;
 static int run(const char *text)
 {
     static uint64_t arena[1024];
-    fx_scene_host h = {NULL, make, NULL, NULL, NULL};
+    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL};
     fx_scene_init(&sc, &h, arena, sizeof arena);
     return fx_scene_run(&sc, text, strlen(text));
 }

@@ -113,6 +113,20 @@ static inline uint32_t pack565(uint32_t c)
     return ((c >> 19 & 0x1F) << 11) | ((c >> 10 & 0x3F) << 5) | (c >> 3 & 0x1F);
 }
 
+/* One step of the midpoint circle from (r, 0) with d = 1 - r, the walk both
+ * the nominal W5 pixel count (main.c) and the W5 reference picture
+ * (reference.c) take: y advances, x steps in when the midpoint is outside. */
+static inline void midpoint_circle_step(int *x, int *y, int *d)
+{
+    ++*y;
+    if (*d < 0) {
+        *d += 2 * *y + 1;
+    } else {
+        --*x;
+        *d += 2 * (*y - *x) + 1;
+    }
+}
+
 /* TABLE 4 (extras.c): presentation, teapot, deep zoom, idle loop. only:
  * the -w list (NULL: all); fmt_mask: bit per FMT_*. */
 void extras_run(const char *only, int fmt_mask, int trials, double min_s, int quiet,

@@ -144,13 +144,7 @@ static int64_t nominal_circle(const struct wl_circle *c)
                  inside(c->cx + y, c->cy + x) + inside(c->cx - y, c->cy + x) +
                  inside(c->cx + y, c->cy - x) + inside(c->cx - y, c->cy - x);
         }
-        y++;
-        if (d < 0) {
-            d += 2 * y + 1;
-        } else {
-            x--;
-            d += 2 * (y - x) + 1;
-        }
+        midpoint_circle_step(&x, &y, &d);
     }
     return n;
 }

@@ -88,33 +88,21 @@ static void lines(struct cr_ctx *c, int n, cairo_antialias_t aa)
 static void cr_w3(void *ctx, int n) { lines(ctx, n, CAIRO_ANTIALIAS_NONE); }
 static void cr_w4(void *ctx, int n) { lines(ctx, n, CAIRO_ANTIALIAS_DEFAULT); }
 
-static void cr_w5(void *ctx, int n)
+/* W5 strokes the circles that W6 fills */
+static inline void circles(struct cr_ctx *c, int n, void (*paint)(cairo_t *))
 {
-    struct cr_ctx *c = ctx;
     cairo_t *cr = c->cr;
     cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
     for (int i = 0; i < n; i++) {
         const struct wl_circle *q = &WL->circles[i];
         set_rgb(cr, q->c);
         cairo_arc(cr, q->cx + 0.5, q->cy + 0.5, q->r, 0, 2 * M_PI);
-        cairo_stroke(cr);
+        paint(cr);
     }
     cr_done(c);
 }
-
-static void cr_w6(void *ctx, int n)
-{
-    struct cr_ctx *c = ctx;
-    cairo_t *cr = c->cr;
-    cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
-    for (int i = 0; i < n; i++) {
-        const struct wl_circle *q = &WL->circles[i];
-        set_rgb(cr, q->c);
-        cairo_arc(cr, q->cx + 0.5, q->cy + 0.5, q->r, 0, 2 * M_PI);
-        cairo_fill(cr);
-    }
-    cr_done(c);
-}
+static void cr_w5(void *ctx, int n) { circles(ctx, n, cairo_stroke); }
+static void cr_w6(void *ctx, int n) { circles(ctx, n, cairo_fill); }
 
 static void cr_w7(void *ctx, int n)
 {

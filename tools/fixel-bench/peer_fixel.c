@@ -53,45 +53,32 @@ static void fx_w2(void *ctx, int n)
     }
 }
 
-static void fx_w3(void *ctx, int n)
+/* W3 and W4 differ only in the line call, W5 and W6 in the circle call. */
+typedef void (*line_fn)(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1);
+typedef void (*circle_fn)(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r);
+
+static inline void lines(struct fxb *b, int n, line_fn draw)
 {
-    struct fxb *b = ctx;
     const struct wl_line *l = WL->lines;
     for (int i = 0; i < n; i++) {
         fx_ctx_set_color(&b->c, OPAQUE(l[i].c));
-        fx_line(&b->c, l[i].x0, l[i].y0, l[i].x1, l[i].y1);
+        draw(&b->c, l[i].x0, l[i].y0, l[i].x1, l[i].y1);
     }
 }
 
-static void fx_w4(void *ctx, int n)
+static inline void circles(struct fxb *b, int n, circle_fn draw)
 {
-    struct fxb *b = ctx;
-    const struct wl_line *l = WL->lines;
-    for (int i = 0; i < n; i++) {
-        fx_ctx_set_color(&b->c, OPAQUE(l[i].c));
-        fx_aaline(&b->c, l[i].x0, l[i].y0, l[i].x1, l[i].y1);
-    }
-}
-
-static void fx_w5(void *ctx, int n)
-{
-    struct fxb *b = ctx;
     const struct wl_circle *q = WL->circles;
     for (int i = 0; i < n; i++) {
         fx_ctx_set_color(&b->c, OPAQUE(q[i].c));
-        fx_circle(&b->c, q[i].cx, q[i].cy, q[i].r);
+        draw(&b->c, q[i].cx, q[i].cy, q[i].r);
     }
 }
 
-static void fx_w6(void *ctx, int n)
-{
-    struct fxb *b = ctx;
-    const struct wl_circle *q = WL->circles;
-    for (int i = 0; i < n; i++) {
-        fx_ctx_set_color(&b->c, OPAQUE(q[i].c));
-        fx_disc(&b->c, q[i].cx, q[i].cy, q[i].r);
-    }
-}
+static void fx_w3(void *ctx, int n) { lines(ctx, n, fx_line); }
+static void fx_w4(void *ctx, int n) { lines(ctx, n, fx_aaline); }
+static void fx_w5(void *ctx, int n) { circles(ctx, n, fx_circle); }
+static void fx_w6(void *ctx, int n) { circles(ctx, n, fx_disc); }
 
 static void fx_w7(void *ctx, int n)
 {

@@ -155,45 +155,34 @@ static void gfx_w2(void *ctx, int n)
     SDL_RenderFlush(c->r);
 }
 
-static void gfx_w3(void *ctx, int n)
+/* W3 and W4 differ only in the line call, W5 and W6 in the circle call. */
+typedef int (*gfx_line_fn)(SDL_Renderer *r, Sint16 x1, Sint16 y1, Sint16 x2, Sint16 y2, Uint8 cr, Uint8 cg,
+                           Uint8 cb, Uint8 ca);
+typedef int (*gfx_circle_fn)(SDL_Renderer *r, Sint16 x, Sint16 y, Sint16 rad, Uint8 cr, Uint8 cg, Uint8 cb,
+                             Uint8 ca);
+
+static inline void gfx_lines(struct sdl_ctx *c, int n, gfx_line_fn draw)
 {
-    struct sdl_ctx *c = ctx;
     for (int i = 0; i < n; i++) {
         const struct wl_line *l = &WL->lines[i];
-        lineRGBA(c->r, (Sint16)l->x0, (Sint16)l->y0, (Sint16)l->x1, (Sint16)l->y1, RGB(l->c), 255);
+        draw(c->r, (Sint16)l->x0, (Sint16)l->y0, (Sint16)l->x1, (Sint16)l->y1, RGB(l->c), 255);
     }
     SDL_RenderFlush(c->r);
 }
 
-static void gfx_w4(void *ctx, int n)
+static inline void gfx_circles(struct sdl_ctx *c, int n, gfx_circle_fn draw)
 {
-    struct sdl_ctx *c = ctx;
-    for (int i = 0; i < n; i++) {
-        const struct wl_line *l = &WL->lines[i];
-        aalineRGBA(c->r, (Sint16)l->x0, (Sint16)l->y0, (Sint16)l->x1, (Sint16)l->y1, RGB(l->c), 255);
-    }
-    SDL_RenderFlush(c->r);
-}
-
-static void gfx_w5(void *ctx, int n)
-{
-    struct sdl_ctx *c = ctx;
     for (int i = 0; i < n; i++) {
         const struct wl_circle *q = &WL->circles[i];
-        circleRGBA(c->r, (Sint16)q->cx, (Sint16)q->cy, (Sint16)q->r, RGB(q->c), 255);
+        draw(c->r, (Sint16)q->cx, (Sint16)q->cy, (Sint16)q->r, RGB(q->c), 255);
     }
     SDL_RenderFlush(c->r);
 }
 
-static void gfx_w6(void *ctx, int n)
-{
-    struct sdl_ctx *c = ctx;
-    for (int i = 0; i < n; i++) {
-        const struct wl_circle *q = &WL->circles[i];
-        filledCircleRGBA(c->r, (Sint16)q->cx, (Sint16)q->cy, (Sint16)q->r, RGB(q->c), 255);
-    }
-    SDL_RenderFlush(c->r);
-}
+static void gfx_w3(void *ctx, int n) { gfx_lines(ctx, n, lineRGBA); }
+static void gfx_w4(void *ctx, int n) { gfx_lines(ctx, n, aalineRGBA); }
+static void gfx_w5(void *ctx, int n) { gfx_circles(ctx, n, circleRGBA); }
+static void gfx_w6(void *ctx, int n) { gfx_circles(ctx, n, filledCircleRGBA); }
 
 static void gfx_w7(void *ctx, int n)
 {

@@ -72,13 +72,7 @@ static void circle(const struct target *t, const struct wl_circle *q)
         put(t, cx - y, cy + x, q->c);
         put(t, cx + y, cy - x, q->c);
         put(t, cx - y, cy - x, q->c);
-        y++;
-        if (d < 0) {
-            d += 2 * y + 1;
-        } else {
-            x--;
-            d += 2 * (y - x) + 1;
-        }
+        midpoint_circle_step(&x, &y, &d);
     }
 }
 

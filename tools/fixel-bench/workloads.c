@@ -80,7 +80,9 @@ static fx_fractal_view w9_view(const fx_surface *s)
     return fx_mandel_view(-(FX56_ONE / 2), 0, 3 * FX56_ONE, s->w, s->h, 256);
 }
 
-int bench_mandel_w9(const fx_surface *s)
+/* The W9 set-up both entry points share; mt picks fx_fractal_render_mt
+ * (with nthreads) over fx_fractal_render. */
+static inline int mandel_w9(const fx_surface *s, int mt, int nthreads)
 {
     if (!s)
         return -FX_EINVAL;
@@ -88,16 +90,11 @@ int bench_mandel_w9(const fx_surface *s)
     fx_dwell_pal pal;
     fx_dwell_pal_w9(&pal, lut, s->format);
     fx_fractal_view v = w9_view(s);
-    return fx_fractal_render(s, fx_surface_rect(s), &v, &pal);
-}
-
-int bench_mandel_w9_mt(const fx_surface *s, int nthreads)
-{
-    if (!s)
-        return -FX_EINVAL;
-    uint32_t lut[65];
-    fx_dwell_pal pal;
-    fx_dwell_pal_w9(&pal, lut, s->format);
-    fx_fractal_view v = w9_view(s);
+    if (!mt)
+        return fx_fractal_render(s, fx_surface_rect(s), &v, &pal);
     return fx_fractal_render_mt(s, fx_surface_rect(s), &v, &pal, nthreads);
 }
+
+int bench_mandel_w9(const fx_surface *s) { return mandel_w9(s, 0, 0); }
+
+int bench_mandel_w9_mt(const fx_surface *s, int nthreads) { return mandel_w9(s, 1, nthreads); }

@@ -293,6 +293,18 @@ static void styled_rect(const fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_
         fx_fill_span(c, r, x, x + w);
 }
 
+/* A copy of c that fills through shade(user), with fs as its fill style. */
+static fx_ctx shader_ctx(const fx_ctx *c, fx_fill_style *fs, fx_shade_fn shade, const void *user)
+{
+    memset(fs, 0, sizeof *fs);
+    fs->kind = FX_FILL_SHADER;
+    fs->shade = shade;
+    fs->user = user;
+    fx_ctx s = *c;
+    s.fill_style = fs;
+    return s;
+}
+
 static void styled_disc(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r)
 {
     for (int32_t dy = -r; dy <= r; dy++) {
@@ -404,12 +416,7 @@ static void page_textures(fx_ctx *c, demo_state *st)
         m.c0 = c0[i];
         m.c1 = c1[i];
         fx_fill_style fs;
-        memset(&fs, 0, sizeof fs);
-        fs.kind = FX_FILL_SHADER;
-        fs.shade = fx_proc_shade;
-        fs.user = &m;
-        fx_ctx s = *c;
-        s.fill_style = &fs;
+        fx_ctx s = shader_ctx(c, &fs, fx_proc_shade, &m);
         styled_rect(&s, x + 7, top + 22, 136, 140);
     }
     /* a checkerboard texture mapped onto a quad */
@@ -440,12 +447,7 @@ static void page_textures(fx_ctx *c, demo_state *st)
     g.stops[2] = 0xFFF2C14Eu;
     g.stops[3] = 0xFFF78154u;
     fx_fill_style gs;
-    memset(&gs, 0, sizeof gs);
-    gs.kind = FX_FILL_SHADER;
-    gs.shade = fx_gradient_shade;
-    gs.user = &g;
-    fx_ctx s = *c;
-    s.fill_style = &gs;
+    fx_ctx s = shader_ctx(c, &gs, fx_gradient_shade, &g);
     styled_rect(&s, 324, top + 200, 220, 236);
 
     panel(c, 560, top + 178, 232, 266, "Radial gradient");

@@ -36,14 +36,22 @@ static int save(const char *out, void *pixels, int32_t w, int32_t h, int32_t str
     return 0;
 }
 
-static int shot_fbdev(const char *dev, const char *out)
+/* open(dev, flags | O_CLOEXEC); a failure is said on stderr, with the group
+ * to join when it is a permission. */
+static int open_device(const char *dev, int flags)
 {
-    int fd = open(dev, O_RDONLY | O_CLOEXEC);
-    if (fd < 0) {
+    int fd = open(dev, flags | O_CLOEXEC);
+    if (fd < 0)
         fprintf(stderr, "fixel-shot: %s: %s%s\n", dev, strerror(errno),
                 errno == EACCES ? " (add the user to group video)" : "");
+    return fd;
+}
+
+static int shot_fbdev(const char *dev, const char *out)
+{
+    int fd = open_device(dev, O_RDONLY);
+    if (fd < 0)
         return 1;
-    }
     struct fb_var_screeninfo v;
     struct fb_fix_screeninfo fi;
     if (ioctl(fd, FBIOGET_VSCREENINFO, &v) < 0 || ioctl(fd, FBIOGET_FSCREENINFO, &fi) < 0) {
@@ -85,12 +93,9 @@ enum { SHOT_DRM_OWNED = 3 };
 
 static int shot_drm(const char *dev, const char *out)
 {
-    int fd = open(dev, O_RDWR | O_CLOEXEC);
-    if (fd < 0) {
-        fprintf(stderr, "fixel-shot: %s: %s%s\n", dev, strerror(errno),
-                errno == EACCES ? " (add the user to group video)" : "");
+    int fd = open_device(dev, O_RDWR);
+    if (fd < 0)
         return 1;
-    }
     /* The first opener of a card nobody owns becomes its master; anyone
      * else is not, so this tells whether a program drives the screen. */
     int owned_by_other = !drmIsMaster(fd);

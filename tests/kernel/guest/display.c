@@ -79,11 +79,9 @@ static void pic_child(void *arg)
     fx_display *d;
     fx_display_options o;
     opts(&o, c->backend, c->present, c->rotation);
-    int r = fx_display_open(&d, &o);
-    if (r < 0) {
-        guest_check(c->name, 0, "open: %s", fx_strerror(r));
+    int r = guest_open(c->name, &d, &o);
+    if (r < 0)
         return;
-    }
     fx_surface s = fx_display_surface(d);
     scene_draw("bars", &s);
     r = fx_display_present(d, NULL, 0);
@@ -211,11 +209,9 @@ static void vt_child(void *arg)
     fx_display *d;
     fx_display_options o;
     opts(&o, FX_BACKEND_DRM, FX_PRESENT_AUTO, 0);
-    int r = fx_display_open(&d, &o);
-    if (r < 0) {
-        guest_check("console-open", 0, "open: %s", fx_strerror(r));
+    int r = guest_open("console-open", &d, &o);
+    if (r < 0)
         return;
-    }
     fx_surface s = fx_display_surface(d);
     scene_draw("bars", &s);
     fx_display_present(d, NULL, 0);
@@ -379,11 +375,9 @@ static void vtswitch_child(void *arg)
     char n[64];
     opts(&o, c->backend, c->present, 0);
     o.vt_switch = c->policy;
-    int r = fx_display_open(&d, &o);
-    if (r < 0) {
-        guest_check(c->name, 0, "open: %s", fx_strerror(r));
+    int r = guest_open(c->name, &d, &o);
+    if (r < 0)
         return;
-    }
     fx_display_set_vt_callback(d, on_vt, NULL);
     fx_surface s = fx_display_surface(d);
     scene_draw("bars", &s);
@@ -477,11 +471,9 @@ static void hotplug_child(void *arg)
     fx_display_info info;
     char path[160];
     opts(&o, FX_BACKEND_DRM, FX_PRESENT_AUTO, 0);
-    int r = fx_display_open(&d, &o);
-    if (r < 0) {
-        guest_check("hotplug", 0, "open: %s", fx_strerror(r));
+    int r = guest_open("hotplug", &d, &o);
+    if (r < 0)
         return;
-    }
     fx_display_set_reshape_callback(d, on_reshape, NULL);
     fx_surface s = fx_display_surface(d);
     scene_draw("bars", &s);

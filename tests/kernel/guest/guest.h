@@ -13,6 +13,7 @@
 
 #include "fixel/display.h"
 #include "fixel/env.h"
+#include "fixel/error.h"
 
 static int guest_failed;
 
@@ -30,6 +31,17 @@ static void guest_check(const char *name, int ok, const char *fmt, ...)
         guest_failed = 1;
     printf("CHECK %s %s %s\n", name, ok ? "PASS" : "FAIL", detail);
     fflush(stdout);
+}
+
+/* fx_display_open, its failure reported as CHECK <name> FAIL "open: <why>";
+ * returns what fx_display_open returned. */
+static int guest_open(const char *name, fx_display **d, const fx_display_options *o) __attribute__((unused));
+static int guest_open(const char *name, fx_display **d, const fx_display_options *o)
+{
+    int r = fx_display_open(d, o);
+    if (r < 0)
+        guest_check(name, 0, "open: %s", fx_strerror(r));
+    return r;
 }
 
 /* Send a request marker and wait for the host's "ACK <word>" line on

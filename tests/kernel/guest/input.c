@@ -10,8 +10,6 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <grp.h>
-#include <libevdev/libevdev-uinput.h>
-#include <libevdev/libevdev.h>
 #include <pthread.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -25,6 +23,7 @@
 #include "fixel/app.h"
 #include "fixel/error.h"
 #include "guest.h"
+#include "uinput.h"
 
 /* ---- recording callbacks ---- */
 typedef struct rec {
@@ -132,33 +131,13 @@ static struct libevdev_uinput *make_dev(const char *name, int kind)
         libevdev_enable_event_code(d, EV_KEY, BTN_RIGHT, NULL);
         libevdev_enable_event_code(d, EV_KEY, BTN_MIDDLE, NULL);
     } else if (kind == 1) { /* multitouch screen */
-        struct input_absinfo ai = {.minimum = 0, .maximum = 4095};
-        struct input_absinfo slot = {.minimum = 0, .maximum = 4};
-        struct input_absinfo tid = {.minimum = 0, .maximum = 65535};
-        libevdev_enable_property(d, INPUT_PROP_DIRECT);
-        libevdev_enable_event_code(d, EV_KEY, BTN_TOUCH, NULL);
-        libevdev_enable_event_code(d, EV_ABS, ABS_X, &ai);
-        libevdev_enable_event_code(d, EV_ABS, ABS_Y, &ai);
-        libevdev_enable_event_code(d, EV_ABS, ABS_MT_SLOT, &slot);
-        libevdev_enable_event_code(d, EV_ABS, ABS_MT_TRACKING_ID, &tid);
-        libevdev_enable_event_code(d, EV_ABS, ABS_MT_POSITION_X, &ai);
-        libevdev_enable_event_code(d, EV_ABS, ABS_MT_POSITION_Y, &ai);
+        uinput_enable_multitouch(d, 4);
     } else { /* keyboard */
         for (int k = KEY_ESC; k <= KEY_F10; k++)
             libevdev_enable_event_code(d, EV_KEY, (unsigned)k, NULL);
         libevdev_enable_event_code(d, EV_KEY, KEY_UP, NULL);
     }
-    struct libevdev_uinput *u = NULL;
-    int r = libevdev_uinput_create_from_device(d, LIBEVDEV_UINPUT_OPEN_MANAGED, &u);
-    libevdev_free(d);
-    if (r < 0) {
-        printf("  uinput %s: %s\n", name, strerror(-r));
-        return NULL;
-    }
-    /* devtmpfs creates the node asynchronously */
-    for (int i = 0; i < 100 && access(libevdev_uinput_get_devnode(u), R_OK); i++)
-        msleep(10);
-    return u;
+    return uinput_create(d);
 }
 
 static struct libevdev_uinput *mouse, *touch, *kbd;

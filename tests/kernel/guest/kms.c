@@ -137,12 +137,9 @@ static void rotation_checks(const char *dev, const char *tag)
     fx_display_options o;
     opts(&o, dev, 90);
     logbuf[0] = 0;
-    int r = fx_display_open(&d, &o);
     snprintf(name, sizeof name, "%s-rotation-choice", tag);
-    if (r < 0) {
-        guest_check(name, 0, "open: %s", fx_strerror(r));
+    if (guest_open(name, &d, &o) < 0)
         return;
-    }
     fx_display_info info;
     fx_display_get_info(d, &info);
     fx_surface s = fx_display_surface(d);
@@ -165,13 +162,11 @@ static void rotation_checks(const char *dev, const char *tag)
     setenv("FIXEL_SW_ROTATION", "1", 1);
     opts(&o, dev, 270);
     logbuf[0] = 0;
-    r = fx_display_open(&d, &o);
-    unsetenv("FIXEL_SW_ROTATION");
     snprintf(name, sizeof name, "%s-rotation-forced-software", tag);
-    if (r < 0) {
-        guest_check(name, 0, "open: %s", fx_strerror(r));
+    int r = guest_open(name, &d, &o);
+    unsetenv("FIXEL_SW_ROTATION");
+    if (r < 0)
         return;
-    }
     fx_display_get_info(d, &info);
     guest_check(name, info.rotation_hw == 0 && strstr(logbuf, "rotation 270 in software (forced)"),
                 "rotation_hw %d, log %s", info.rotation_hw,
@@ -193,13 +188,11 @@ static void format_choice_check(const char *dev, const char *tag)
     fx_display_options o;
     opts(&o, dev, 0);
     logbuf[0] = 0;
-    int r = fx_display_open(&d, &o);
-    unsetenv("FIXEL_DRM_FORMAT");
     snprintf(name, sizeof name, "%s-format-rgb565-choice", tag);
-    if (r < 0) {
-        guest_check(name, 0, "open: %s", fx_strerror(r));
+    int r = guest_open(name, &d, &o);
+    unsetenv("FIXEL_DRM_FORMAT");
+    if (r < 0)
         return;
-    }
     fx_display_info info;
     fx_display_get_info(d, &info);
     fx_format want = pf.rgb565 ? FX_FMT_RGB565 : FX_FMT_XRGB8888;

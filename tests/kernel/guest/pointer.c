@@ -9,8 +9,6 @@
 #endif
 #include <errno.h>
 #include <fcntl.h>
-#include <libevdev/libevdev-uinput.h>
-#include <libevdev/libevdev.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,6 +20,7 @@
 #include "fixel/app.h"
 #include "guest.h"
 #include "scenes.h"
+#include "uinput.h"
 
 static void quiet(fx_log_priority p, void *u, const char *fmt, va_list ap)
 {
@@ -42,16 +41,7 @@ static struct libevdev_uinput *make_mouse(void)
     libevdev_enable_event_code(d, EV_REL, REL_Y, NULL);
     libevdev_enable_event_code(d, EV_KEY, BTN_LEFT, NULL);
     libevdev_enable_event_code(d, EV_KEY, BTN_RIGHT, NULL);
-    struct libevdev_uinput *u = NULL;
-    int r = libevdev_uinput_create_from_device(d, LIBEVDEV_UINPUT_OPEN_MANAGED, &u);
-    libevdev_free(d);
-    if (r < 0) {
-        printf("  uinput: %s\n", strerror(-r));
-        return NULL;
-    }
-    for (int i = 0; i < 100 && access(libevdev_uinput_get_devnode(u), R_OK); i++)
-        msleep(10);
-    return u;
+    return uinput_create(d);
 }
 
 static void move(int dx, int dy)

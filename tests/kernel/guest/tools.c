@@ -19,8 +19,6 @@
 #include <fcntl.h>
 #include <gpiod.h>
 #include <grp.h>
-#include <libevdev/libevdev-uinput.h>
-#include <libevdev/libevdev.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,6 +36,7 @@
 #include "fixel/memfb.h"
 #include "guest.h"
 #include "scenes.h"
+#include "uinput.h"
 
 static char out[1 << 16], err[1 << 13];
 
@@ -131,15 +130,7 @@ static struct libevdev_uinput *make_input(const char *name, int kind)
         libevdev_enable_event_code(d, EV_KEY, BTN_LEFT, NULL);
         libevdev_enable_event_code(d, EV_KEY, BTN_RIGHT, NULL);
     } else if (kind == 2) { /* multitouch screen */
-        struct input_absinfo slot = {.minimum = 0, .maximum = 9}, tid = {.minimum = 0, .maximum = 65535};
-        libevdev_enable_property(d, INPUT_PROP_DIRECT);
-        libevdev_enable_event_code(d, EV_KEY, BTN_TOUCH, NULL);
-        libevdev_enable_event_code(d, EV_ABS, ABS_X, &ai);
-        libevdev_enable_event_code(d, EV_ABS, ABS_Y, &ai);
-        libevdev_enable_event_code(d, EV_ABS, ABS_MT_SLOT, &slot);
-        libevdev_enable_event_code(d, EV_ABS, ABS_MT_TRACKING_ID, &tid);
-        libevdev_enable_event_code(d, EV_ABS, ABS_MT_POSITION_X, &ai);
-        libevdev_enable_event_code(d, EV_ABS, ABS_MT_POSITION_Y, &ai);
+        uinput_enable_multitouch(d, 9);
     } else { /* pen tablet (not on the screen: no INPUT_PROP_DIRECT) */
         libevdev_enable_property(d, INPUT_PROP_POINTER);
         libevdev_enable_event_code(d, EV_KEY, BTN_TOOL_PEN, NULL);
@@ -149,15 +140,9 @@ static struct libevdev_uinput *make_input(const char *name, int kind)
         libevdev_enable_event_code(d, EV_ABS, ABS_Y, &ai);
         libevdev_enable_event_code(d, EV_ABS, ABS_PRESSURE, &ai);
     }
-    struct libevdev_uinput *u = NULL;
-    int r = libevdev_uinput_create_from_device(d, LIBEVDEV_UINPUT_OPEN_MANAGED, &u);
-    libevdev_free(d);
-    if (r < 0) {
-        printf("  uinput %s: %s\n", name, strerror(-r));
+    struct libevdev_uinput *u = uinput_create(d);
+    if (!u)
         return NULL;
-    }
-    for (int i = 0; i < 100 && access(libevdev_uinput_get_devnode(u), R_OK); i++)
-        msleep(10);
     /* init.sh gives input nodes to group input the way udev would */
     chown(libevdev_uinput_get_devnode(u), 0, 101);
     chmod(libevdev_uinput_get_devnode(u), 0660);
