@@ -11,16 +11,16 @@ KT_ARCHES := x86_64 aarch64
 KT_CC_x86_64  := gcc
 KT_CC_aarch64 := aarch64-linux-gnu-gcc
 # The library's one source list (the top Makefile's LIB_SRC; the rig host has
-# libdrm, libevdev and libgpiod, so it holds the boards/linux backends);
-# memfb.o (libpng) is linked only into the tools.
-KT_LIBSRC := $(filter-out boards/memory/memfb.c,$(LIB_SRC))
+# libdrm, libevdev and libgpiod, so it holds the boards/linux backends).
+# memfb.c is in it: fx_app's replay writes frames (fx_write_image).
+KT_LIBSRC := $(LIB_SRC)
 KT_GUESTSRC := $(wildcard $(KT_DIR)/guest/*.c)
 # No -Werror here: the main build enforces it, and a cross compiler's extra
 # warning must not stop the rig.
 KT_CFLAGS := -std=c11 -O2 -g0 -Wall -Wextra \
 	-Ikernel-free-src/include -Iboards/include -Ikernel-free-src -I$(KT_DIR)/guest \
 	-I/usr/include/libdrm -I/usr/include/libevdev-1.0
-KT_LDLIBS := -static -ldrm -levdev -lgpiod
+KT_LDLIBS := -static -ldrm -levdev -lgpiod -lpng16 -lz -lm
 # Header dependencies: a struct that changes in a boards/ header must rebuild
 # every object using it, or the guests link mismatched layouts.
 KT_DEPFLAGS := -MMD -MP
