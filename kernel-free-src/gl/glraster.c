@@ -99,6 +99,20 @@ static int32_t bfactor(int f, int ch, const int32_t s[4], const int32_t d[4])
     }
 }
 
+/* The depth test alone (frag, plain_frag, and the triangle loop before the colour is computed). */
+static inline int depth_pass(const fx_gl_target *t, uint32_t z, uint32_t d)
+{
+    switch (t->depth_func) {
+    case FX_GL_DEPTH_NEVER: return 0;
+    case FX_GL_DEPTH_LESS: return z < d;
+    case FX_GL_DEPTH_EQUAL: return z == d;
+    case FX_GL_DEPTH_LEQUAL: return z <= d;
+    case FX_GL_DEPTH_GREATER: return z > d;
+    case FX_GL_DEPTH_NOTEQUAL: return z != d;
+    case FX_GL_DEPTH_GEQUAL: return z >= d;
+    default: return 1;
+    }
+}
 /* One fragment at window pixel (X, Y) (inside t->clip); c: 0..255 rgba. */
 static void frag(fx_gl_target *t, int32_t X, int32_t Y, uint32_t z, int32_t c[4], fx16 s,
                  fx16 tt)
@@ -106,19 +120,7 @@ static void frag(fx_gl_target *t, int32_t X, int32_t Y, uint32_t z, int32_t c[4]
     int32_t row = t->surf.h - 1 - Y;
     if (t->depth && t->depth_test) {
         uint32_t *dp = &t->depth[(size_t)row * (size_t)t->surf.w + (size_t)X];
-        uint32_t d = *dp;
-        int pass;
-        switch (t->depth_func) {
-        case FX_GL_DEPTH_NEVER: pass = 0; break;
-        case FX_GL_DEPTH_LESS: pass = z < d; break;
-        case FX_GL_DEPTH_EQUAL: pass = z == d; break;
-        case FX_GL_DEPTH_LEQUAL: pass = z <= d; break;
-        case FX_GL_DEPTH_GREATER: pass = z > d; break;
-        case FX_GL_DEPTH_NOTEQUAL: pass = z != d; break;
-        case FX_GL_DEPTH_GEQUAL: pass = z >= d; break;
-        default: pass = 1; break;
-        }
-        if (!pass)
+        if (!depth_pass(t, z, *dp))
             return;
         if (t->depth_write)
             *dp = z;
@@ -325,38 +327,12 @@ static inline void plain_frag(const fx_gl_target *t, uint32_t *px, uint32_t *dp,
                               const int32_t c[4])
 {
     if (dp) {
-        uint32_t d = *dp;
-        int pass;
-        switch (t->depth_func) {
-        case FX_GL_DEPTH_NEVER: pass = 0; break;
-        case FX_GL_DEPTH_LESS: pass = z < d; break;
-        case FX_GL_DEPTH_EQUAL: pass = z == d; break;
-        case FX_GL_DEPTH_LEQUAL: pass = z <= d; break;
-        case FX_GL_DEPTH_GREATER: pass = z > d; break;
-        case FX_GL_DEPTH_NOTEQUAL: pass = z != d; break;
-        case FX_GL_DEPTH_GEQUAL: pass = z >= d; break;
-        default: pass = 1; break;
-        }
-        if (!pass)
+        if (!depth_pass(t, z, *dp))
             return;
         if (t->depth_write)
             *dp = z;
     }
     *px = ((uint32_t)c[0] << 16) | ((uint32_t)c[1] << 8) | (uint32_t)c[2];
-}
-/* The depth test alone (for testing before the colour is computed). */
-static inline int depth_pass(const fx_gl_target *t, uint32_t z, uint32_t d)
-{
-    switch (t->depth_func) {
-    case FX_GL_DEPTH_NEVER: return 0;
-    case FX_GL_DEPTH_LESS: return z < d;
-    case FX_GL_DEPTH_EQUAL: return z == d;
-    case FX_GL_DEPTH_LEQUAL: return z <= d;
-    case FX_GL_DEPTH_GREATER: return z > d;
-    case FX_GL_DEPTH_NOTEQUAL: return z != d;
-    case FX_GL_DEPTH_GEQUAL: return z >= d;
-    default: return 1;
-    }
 }
 
 /* The perspective-correct weights of vertices 1 and 2 (Q16, clamped to
