@@ -100,41 +100,25 @@ static void line2(double x0, double y0, double x1, double y1)
 
 FX_TEST(glut_lines_integer_ties)
 {
-    const char *hz = "2,19 3,19 4,19 5,19 6,19 7,19 8,19 9,19 10,19 11,19";
-    setup();
-    line2(2, 20, 12, 20);
-    EXPECT_LIT(hz);
-    setup();
-    line2(12, 20, 2, 20);
-    EXPECT_LIT(hz);
-    const char *vt = "19,2 19,3 19,4 19,5 19,6 19,7 19,8 19,9 19,10 19,11";
-    setup();
-    line2(20, 2, 20, 12);
-    EXPECT_LIT(vt);
-    setup();
-    line2(20, 12, 20, 2);
-    EXPECT_LIT(vt);
-    const char *dg = "2,2 3,3 4,4 5,5 6,6 7,7 8,8 9,9";
-    setup();
-    line2(2, 2, 10, 10);
-    EXPECT_LIT(dg);
-    setup();
-    line2(10, 10, 2, 2);
-    EXPECT_LIT(dg);
-    const char *sl = "2,2 3,2 4,3 5,3 6,4 7,4 8,5 9,5";
-    setup();
-    line2(2, 2, 10, 6);
-    EXPECT_LIT(sl);
-    setup();
-    line2(10, 6, 2, 2);
-    EXPECT_LIT(sl);
-    const char *st = "2,2 2,3 3,4 3,5 4,6 4,7 5,8 5,9";
-    setup();
-    line2(2, 2, 6, 10);
-    EXPECT_LIT(st);
-    setup();
-    line2(6, 10, 2, 2);
-    EXPECT_LIT(st);
+    /* each line drawn both ways lights the same pixels */
+    static const struct {
+        double x0, y0, x1, y1;
+        const char *want;
+    } lines[] = {
+        {2, 20, 12, 20, "2,19 3,19 4,19 5,19 6,19 7,19 8,19 9,19 10,19 11,19"},
+        {20, 2, 20, 12, "19,2 19,3 19,4 19,5 19,6 19,7 19,8 19,9 19,10 19,11"},
+        {2, 2, 10, 10, "2,2 3,3 4,4 5,5 6,6 7,7 8,8 9,9"},
+        {2, 2, 10, 6, "2,2 3,2 4,3 5,3 6,4 7,4 8,5 9,5"},
+        {2, 2, 6, 10, "2,2 2,3 3,4 3,5 4,6 4,7 5,8 5,9"},
+    };
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
+        setup();
+        line2(lines[i].x0, lines[i].y0, lines[i].x1, lines[i].y1);
+        EXPECT_LIT(lines[i].want);
+        setup();
+        line2(lines[i].x1, lines[i].y1, lines[i].x0, lines[i].y0);
+        EXPECT_LIT(lines[i].want);
+    }
 }
 
 FX_TEST(glut_lines_centres_and_width)
@@ -210,6 +194,16 @@ static void quad4(GLenum mode)
     glEnd();
 }
 
+/* A triangle from a red (2, 2) to a green (bx, by) and a blue (cx, cy) vertex. */
+static void rgb_triangle(int bx, int by, int cx, int cy)
+{
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0, 0), glVertex2i(2, 2);
+    glColor3f(0, 1, 0), glVertex2i(bx, by);
+    glColor3f(0, 0, 1), glVertex2i(cx, cy);
+    glEnd();
+}
+
 FX_TEST(glut_smooth_quads_fan_from_v0)
 {
     /* llvmpipe's values at these pixels (the quad is split along v0-v2) */
@@ -241,22 +235,14 @@ FX_TEST(glut_flat_provoking_vertex)
     EXPECT_RGB(4, 10, 255, 0, 0);
     setup();
     glShadeModel(GL_FLAT);
-    glBegin(GL_TRIANGLES);
-    glColor3f(1, 0, 0), glVertex2i(2, 2);
-    glColor3f(0, 1, 0), glVertex2i(20, 2);
-    glColor3f(0, 0, 1), glVertex2i(20, 20);
-    glEnd();
+    rgb_triangle(20, 2, 20, 20);
     EXPECT_RGB(10, 4, 0, 0, 255);
 }
 
 FX_TEST(glut_smooth_triangle_values)
 {
     setup();
-    glBegin(GL_TRIANGLES);
-    glColor3f(1, 0, 0), glVertex2i(2, 2);
-    glColor3f(0, 1, 0), glVertex2i(30, 2);
-    glColor3f(0, 0, 1), glVertex2i(2, 30);
-    glEnd();
+    rgb_triangle(30, 2, 2, 30);
     EXPECT_RGB(3, 3, 228, 14, 14);
     EXPECT_RGB(10, 4, 155, 77, 23);
     EXPECT_RGB(10, 10, 100, 77, 77);
