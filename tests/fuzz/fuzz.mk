@@ -14,7 +14,7 @@ FUZZ_LIBSRC  := $(CORE_SRC)
 FUZZ_SECONDS ?= 60
 FUZZ_RUNS    ?= 3000
 
-$(FUZZ_BUILD)/%: tests/fuzz/%.c $(FUZZ_LIBSRC) tests/fuzz/guard.h $(wildcard kernel-free-src/include/fixel/*.h)
+$(FUZZ_BUILD)/%: tests/fuzz/%.c $(FUZZ_LIBSRC) tests/fuzz/guard.h tests/fuzz/scenehost.h $(wildcard kernel-free-src/include/fixel/*.h)
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(FUZZ_LIBSRC) $(FUZZ_EXTRA_$*) -o $@
 

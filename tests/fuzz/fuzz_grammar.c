@@ -16,33 +16,7 @@
 
 #include "fixel/error.h"
 #include "fixel/scene.h"
-#include "guard.h"
-
-static guarded g;
-static int have;
-static const uint8_t font_file[] = {0x36, 0x04, 0x00, 0x08, 0xFF, 0x81, 0x81, 0x81, 0x81, 0x81, 0x81, 0xFF};
-
-static int make_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
-{
-    (void)u;
-    if (w > 128 || h > 128)
-        return -FX_ENOMEM;
-    if (guarded_make(&g, w, h, f, (w + h) & 1) < 0)
-        return -FX_ENOMEM;
-    have = 1;
-    *out = g.s;
-    return 0;
-}
-
-static int load_file(void *u, const char *path, const uint8_t **data, size_t *len)
-{
-    (void)u;
-    if (!strcmp(path, "missing"))
-        return -FX_ENOENT;
-    *data = font_file;
-    *len = sizeof font_file;
-    return 0;
-}
+#include "scenehost.h"
 
 typedef struct in {
     const uint8_t *p;
@@ -238,9 +212,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         fx_scene_exec_line(&sc, text + i, e - i, lineno++);
         i = e + 1;
     }
-    if (have) {
-        guarded_free(&g);
-        have = 0;
-    }
+    free_surface();
     return 0;
 }
