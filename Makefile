@@ -87,9 +87,11 @@ TEST_OBJ   := $(TEST_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/runner.o $(BUI
 TEST_BIN   := $(BUILD)/tests/unit
 GOLDEN_BIN := $(BUILD)/tests/golden
 TEST_SUITES :=
+TEST_DEB_PKGS :=
+BENCH_DEB_PKGS :=
 
 
-.PHONY: all lib tools run test test-bins test-plain test-asan check-freestanding deps install \
+.PHONY: all lib tools run run-nodeps test test-nodeps test-bins test-plain test-asan check-freestanding deps deps-check test-setup test-setup-run install \
         golden-update clean help
 all: lib tools $(BUILD)/fixel.pc
 
@@ -174,7 +176,11 @@ check-freestanding:
 # libevdev, libgpiod) the tools cannot link; the test binaries still can.
 test-bins: $(if $(HAVE_OPT),all,lib) $(TEST_BIN) $(GOLDEN_BIN)
 
-test: deps-check
+test:
+	@sh tests/deps.sh --for "make test" $(sort $(DEB_PKGS) $(TEST_DEB_PKGS))
+	@$(MAKE) --no-print-directory test-nodeps
+
+test-nodeps:
 	@$(MAKE) --no-print-directory test-bins
 	@$(MAKE) --no-print-directory SAN=1 test-bins
 	@sh tests/run-suites.sh --total \
@@ -187,19 +193,36 @@ golden-update: all $(GOLDEN_BIN)
 	$(GOLDEN_BIN) --dir tests/golden --out $(BUILD)/golden --update
 
 # ---- the main job ----
-run: deps-check all
+# make run / make test first install (root) or name (user) the packages of
+# their purpose, then build in a new make, whose pkg-config sees them.
+run:
+	@sh tests/deps.sh --for "make run" $(sort $(DEB_PKGS))
+	@$(MAKE) --no-print-directory run-nodeps
+
+# The same without the package step (a packager's build, a machine without apt).
+run-nodeps: all
 	@mkdir -p out
 	@if [ -x $(BUILD)/bin/fixel-demo ]; then $(BUILD)/bin/fixel-demo; else \
 	  $(BUILD)/bin/fixel-draw -o out/showcase.png tools/fixel-draw/showcase.fxs && \
 	  echo "fixel: no display here; rendered the showcase headless into out/showcase.png"; fi
 
 # ---- dependencies ----
-DEB_PKGS := gcc make pkg-config libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev \
-            $(EXTRA_DEB_PKGS)
-deps:
-	@sh tests/deps.sh $(sort $(DEB_PKGS))
-deps-check:
-	@sh tests/deps.sh --check $(sort $(DEB_PKGS))
+# By purpose (README, "Packages"): DEB_PKGS builds the library and tools and
+# runs `make run`; TEST_DEB_PKGS (added to by the tests/*/*.mk fragments) is
+# what `make test` needs on top; BENCH_DEB_PKGS the peers of `make bench-peers`.
+# PACKAGE:ARCH entries are multiarch libraries of the cross tests.
+DEB_PKGS := gcc libc6-dev make pkg-config libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev
+# `make deps`: every set; `make deps-check`: the same, named "make deps".
+deps deps-check:
+	@sh tests/deps.sh --for "make deps" $(sort $(DEB_PKGS) $(TEST_DEB_PKGS) $(BENCH_DEB_PKGS))
+
+# First-try set-up in fresh bookworm roots (tests/setup/fresh-root.sh; root,
+# needs the Debian mirror): a user's make run, root's make run, and root's
+# whole make test (SETUP_TEST_ARGS= to pass it variables). CI runs this.
+test-setup:
+	@sh tests/setup/fresh-root.sh --test build/setup
+test-setup-run:
+	@sh tests/setup/fresh-root.sh build/setup
 
 install: all
 	install -d $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/fixel \

@@ -9,6 +9,11 @@ test-arm:
 deps-arm:
 	sh tests/arm/deps.sh
 
+# What tests/arm/deps.sh installs, for `make test`'s package step.
+TEST_DEB_PKGS += gcc-aarch64-linux-gnu gcc-arm-linux-gnueabihf gcc-arm-linux-gnueabi \
+                 libc6-dev-arm64-cross libc6-dev-armhf-cross libc6-dev-armel-cross qemu-user-static \
+                 $(foreach a,arm64 armhf armel,$(foreach p,libdrm-dev libevdev-dev libgpiod-dev libpng-dev zlib1g-dev,$(p):$(a)))
+
 # QUICK=1 leaves the cross-architecture run out of `make test` (for quick
 # local iterations; CI always runs it).
 ifneq ($(QUICK),1)
