@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the unit-test framework: FX_TEST(name) { FX_CHECK(...); } in any
  * file tests/core/NAME.c is found by tests/gen-registry.sh and run by runner.c. */
 #ifndef FX_TEST_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal to boards/linux: the app object shared by app.c, evdev.c and
  * gpio.c. Not installed. */
 #ifndef FIXEL_APP_INT_H

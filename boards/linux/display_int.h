@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal to boards/linux: the display object shared by display.c, drm.c,
  * fbdev.c and vt.c, and the pure helpers of present.c (which tests/core
  * exercises through this header, libevdev style). Not installed. */

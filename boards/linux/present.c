@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pure half of the display backends: deciding a pixel format from fbdev
  * bitfields, parsing mode strings, merging damage and copying rectangles
  * under rotation. No OS headers and no allocation, so tests/core can feed it

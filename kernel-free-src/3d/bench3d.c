@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the 3D benchmark frame: a Gouraud teapot on a surface of any
  * size, everything in caller memory (see fx3d_bench_teapot in render3d.h). */
 #include "fixel/error.h"

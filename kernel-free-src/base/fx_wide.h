@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* 128-bit helpers for exact geometry (clip, polyclip, xform); not installed.
  * Built on fx_smul64_wide so 32-bit targets need no __int128. */
 #ifndef FIXEL_WIDE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — polygon clipping against a rectangular window: Sutherland-Hodgman,
  * Weiler-Atherton (separate pieces for concave polygons), and an exact
  * pixel-centre fill of Q16.16 pieces.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — area fills: the span writer with fill styles and blending, the
  * edge-table polygon filler (even-odd and nonzero), triangles with exact
  * integer edge stepping, Gouraud shading and the triangle set-up for 3D.

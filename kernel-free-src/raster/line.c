@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — Bresenham lines with O(1) seeking and exact clipping. */
 #include "fixel/line.h"
 #include "fixel/clip.h"

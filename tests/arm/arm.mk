@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # `make test-arm`: the unit and golden suites of every Raspberry Pi
 # architecture, cross-built statically and run under qemu's user emulators
 # (called explicitly: this machine has no binfmt handler), plus the

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Cross-builds fixel's test suites for each Pi architecture and runs them
 # under qemu-user. An architecture whose toolchain, emulator or target
 # libraries are missing is skipped with the reason (tests/arm/deps.sh installs

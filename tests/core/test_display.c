@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pure logic of the display backends (boards/linux/present.c) on fake
  * device state: pixel format from fbdev bitfields, mode strings, damage
  * merging, software rotation in every format; and the presentation path of

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The qemu real-kernel rig (tests/kernel/README.md). Included by the top
 # Makefile; `make test-kernel` runs it. Guest programs are every
 # tests/kernel/guest/*.c, linked statically for x86_64 and aarch64 against

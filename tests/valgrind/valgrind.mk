@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # `make valgrind`: the unit, golden and tool suites again with every process
 # under memcheck (tests/valgrind/run.sh). Slow (tens of minutes on 2 cores),
 # so `make test` runs only the quick tool part of it.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # fixel-bench: the normative workloads of ../shared/bench/WORKLOADS.md.
 #
 #   make bench        fixel with the memset/memcpy and double-reference ceilings

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cairo 1.16 (Debian) drawing into the harness buffer through an image
  * surface. Integer coordinates denote pixel centres, so every vertex gets
  * +0.5; non-AA workloads use CAIRO_ANTIALIAS_NONE, all drawing uses

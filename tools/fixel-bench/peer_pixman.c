@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* pixman 0.42 (Debian). Fills use pixman_image_fill_rectangles (SRC); the
  * non-AA triangles and polygons go through pixman's own rasterizer with an
  * a1 mask, polygons after an even-odd tessellation into trapezoids that is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* SDL2 2.26 and SDL2_gfx 1.0 (Debian), both through SDL's software renderer
  * on an SDL_Surface that wraps the harness buffer. Blending is off (every
  * colour is opaque and replaces the pixel); each call ends with
