@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the program's view: a display, input devices and GPIO buttons
  * behind GLUT-style callbacks and one main loop.
  *
@@ -38,6 +39,10 @@
 #include "fixel/display.h"
 #include "fixel/event.h"
 #include "fixel/surface.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct fx_app fx_app;
 
@@ -113,5 +118,9 @@ int fx_main_loop(void);
  * insert, f1..f12, enter, esc, space, tab). Names point into buf, which is
  * modified. Returns the number of buttons, or -FX_EINVAL. */
 int fx_gpio_parse_buttons(char *buf, fx_gpio_button *out, int max);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

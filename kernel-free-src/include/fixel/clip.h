@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — clipping: points, lines (Cohen-Sutherland, Liang-Barsky,
  * Nicholl-Lee-Nicholl), exterior clipping, a clip-window stack, and polygons
  * (Sutherland-Hodgman; Weiler-Atherton for concave polygons that fall apart
@@ -28,6 +29,10 @@
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
 #include "fixel/xform.h" /* fx_pt16 */
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* ctx->line_clipper. Every choice lights the same pixels; they differ in the
  * steps they take (and trace). */
@@ -134,5 +139,9 @@ int fx_clip_poly_pieces(fx_rect w, const fx_pt16 *in, int n, fx_pt16 *out, int c
  * At most FX_POLY_FILL_MAX vertices in all (-FX_E2BIG beyond). */
 #define FX_POLY_FILL_MAX 512
 int fx_poly_fill16(const fx_ctx *c, const fx_pt16 *pts, const int *starts, int npieces);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

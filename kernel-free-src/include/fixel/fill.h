@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — area fills: polygons (even-odd and nonzero), triangles, Gouraud
  * shading, fill styles (patterns, shaders) and the triangle set-up that the
  * 3D renderer builds on.
@@ -40,6 +41,10 @@
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef enum fx_fill_rule { FX_FILL_EVENODD = 0, FX_FILL_NONZERO = 1 } fx_fill_rule;
 
@@ -199,5 +204,9 @@ static inline int32_t fx_tri_attr_round(uint64_t v)
 {
     return (int32_t)((int64_t)(v + 0x80000000u) >> 32);
 }
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

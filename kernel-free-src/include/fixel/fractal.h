@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — escape-time fractals: the Mandelbrot set and filled Julia sets.
  *
  * A view maps a frame of fw x fh pixels onto the complex plane: the frame is
@@ -39,6 +40,10 @@
 #include <stdint.h>
 #include "fixel/fixed.h"
 #include "fixel/surface.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct fx_fractal_view {
     fx56 cre, cim;     /* centre of the frame */
@@ -100,5 +105,9 @@ void fx_dwell_pal_w9(fx_dwell_pal *pal, uint32_t lut[65], fx_format f);
 /* The benchmark's W9 picture on the whole of s: centre -0.5 + 0i, width 3.0,
  * 256 iterations, the W9 palette, pixel centres. Returns 0 or -FX_EINVAL. */
 int fx_mandel_w9(const fx_surface *s);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the 3D pipeline: transform, light, clip, project, rasterize.
  *
  * It follows the OpenGL 1.x fixed pipeline that the course teaches, with
@@ -37,6 +38,10 @@
 #include "fixel/draw.h"
 #include "fixel/mat3d.h"
 #include "fixel/mesh.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* Linear colour, Q16.16 per channel (1.0 = full; light colours may exceed 1). */
 typedef struct fx3d_rgb {
@@ -199,5 +204,9 @@ fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal);
  * bytes (8-byte aligned). Returns 0 or a negative error. */
 size_t fx3d_bench_teapot_bytes(const fx_surface *s);
 int fx3d_bench_teapot(const fx_surface *s, void *mem, size_t bytes, fx_angle angle);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif
