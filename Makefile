@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # fixel — the one entry point.
 #   make                 library (static + shared), tools, fixel.pc
 #   make run             the main job (headless on a machine without a display)
@@ -123,8 +124,16 @@ $(LIB_A): $(LIB_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
-$(LIB_SO): $(LIB_OBJ)
-	$(CC) -shared -Wl,-soname,libfixel.so.$(SOMAJOR) $(SANFLAGS) -o $@ $^ $(LDLIBS)
+# Only the public API leaves libfixel.so: a version script naming every
+# function and object the public headers declare (docs/ABI.md).
+PUBLIC_HEADERS := $(sort $(wildcard kernel-free-src/include/fixel/*.h boards/include/fixel/*.h))
+$(BUILD)/libfixel.map: $(PUBLIC_HEADERS) tools/gen/exports.sh
+	@mkdir -p $(dir $@)
+	SOMAJOR=$(SOMAJOR) sh tools/gen/exports.sh --map "$(CC)" > $@.tmp && mv $@.tmp $@
+
+$(LIB_SO): $(LIB_OBJ) $(BUILD)/libfixel.map
+	$(CC) -shared -Wl,-soname,libfixel.so.$(SOMAJOR) -Wl,--version-script=$(BUILD)/libfixel.map \
+	  $(SANFLAGS) $(LDFLAGS) -o $@ $(LIB_OBJ) $(LDLIBS)
 	ln -sf libfixel.so.$(VERSION) $(BUILD)/libfixel.so.$(SOMAJOR)
 	ln -sf libfixel.so.$(VERSION) $(BUILD)/libfixel.so
 
