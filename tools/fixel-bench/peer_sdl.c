@@ -3,6 +3,9 @@
  * on an SDL_Surface that wraps the harness buffer. Blending is off (every
  * colour is opaque and replaces the pixel); each call ends with
  * SDL_RenderFlush so that batched commands are drawn inside the timing. */
+/* Without the peer libraries (`make all` on a machine without them) this file
+ * compiles to nothing and fixel-bench measures fixel and the ceilings only. */
+#ifdef BENCH_PEERS
 #include "bench.h"
 
 #include <SDL.h>
@@ -239,3 +242,5 @@ const struct peer peer_sdlgfx = {
             [W8_TRIS] = gfx_w8,
         },
 };
+
+#endif /* BENCH_PEERS */
