@@ -92,7 +92,7 @@ TEST_DEB_PKGS :=
 BENCH_DEB_PKGS :=
 
 
-.PHONY: all lib tools run run-nodeps test test-nodeps test-bins test-plain test-asan check-freestanding deps deps-check test-setup test-setup-run install \
+.PHONY: all lib tools run run-nodeps test test-nodeps test-bins test-plain test-asan check-freestanding deps deps-check test-setup test-setup-run install uninstall \
         golden-update clean help
 all: lib tools $(BUILD)/fixel.pc
 
@@ -145,10 +145,12 @@ $(BUILD)/bin/%: $$(call tool_objs,$$*) $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(filter %.o,$^) $(LIB_A) $(TOOL_LIBS_$*) $(LDLIBS)
 
+# The build tree's own fixel.pc, for programs built against an uninstalled
+# fixel (PKG_CONFIG_PATH=$(BUILD)); make install writes the installed one.
 $(BUILD)/fixel.pc: Makefile
 	@mkdir -p $(dir $@)
-	printf 'prefix=%s\nlibdir=$${prefix}/lib\nincludedir=$${prefix}/include\n\nName: fixel\nDescription: integer-only graphics on Linux framebuffers\nVersion: %s\nLibs: -L$${libdir} -lfixel\nLibs.private: %s -lpthread\nRequires.private: %s\nCflags: -I$${includedir}\n' \
-	  '$(PREFIX)' '$(VERSION)' '' '$(PKGS)' > $@
+	printf 'libdir=%s\n\nName: fixel\nDescription: integer-only fixed-point graphics on Linux framebuffers (build tree)\nVersion: %s\nLibs: -L$${libdir} -lfixel\nLibs.private: %s\nCflags: -I%s -I%s\n' \
+	  '$(abspath $(BUILD))' '$(VERSION)' '$(strip $(PKG_LIBS) -lpthread -lm)' '$(abspath kernel-free-src/include)' '$(abspath boards/include)' > $@
 
 # ---- tests ----
 $(BUILD)/tests/registry.c: $(TEST_SRC) tests/gen-registry.sh
@@ -233,17 +235,29 @@ test-setup:
 test-setup-run:
 	@sh tests/setup/fresh-root.sh build/setup
 
-install: all
-	install -d $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/fixel \
-	  $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
-	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
-	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/
-	ln -sf libfixel.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libfixel.so.$(SOMAJOR)
-	ln -sf libfixel.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libfixel.so
-	install -m 644 kernel-free-src/include/fixel/*.h boards/include/fixel/*.h \
-	  $(DESTDIR)$(PREFIX)/include/fixel/
-	install -m 644 $(BUILD)/fixel.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/
-	install -m 755 $(TOOL_BINS) $(DESTDIR)$(PREFIX)/bin/
+# ---- install (tools/install.sh: one file list for install and uninstall) ----
+# Every directory can be set on the command line; LIBDIR may be multiarch
+# (LIBDIR=/usr/lib/x86_64-linux-gnu). fixel.pc is written at install time for
+# the directories installed into. ldconfig runs for a live install as root.
+BINDIR       ?= $(PREFIX)/bin
+LIBDIR       ?= $(PREFIX)/lib
+INCLUDEDIR   ?= $(PREFIX)/include
+DATADIR      ?= $(PREFIX)/share
+MANDIR       ?= $(DATADIR)/man
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+SYSCONFDIR   ?= $(if $(filter /usr,$(PREFIX)),/etc,$(PREFIX)/etc)
+SYSTEMDUNITDIR ?= $(if $(filter /usr,$(PREFIX)),/lib/systemd/system,$(PREFIX)/lib/systemd/system)
+INSTALL_TOOLS := $(filter-out fixel-bench,$(TOOLS))
+INSTALL_ENV = DESTDIR='$(DESTDIR)' PREFIX='$(PREFIX)' BINDIR='$(BINDIR)' LIBDIR='$(LIBDIR)' \
+  INCLUDEDIR='$(INCLUDEDIR)' DATADIR='$(DATADIR)' MANDIR='$(MANDIR)' PKGCONFIGDIR='$(PKGCONFIGDIR)' \
+  SYSCONFDIR='$(SYSCONFDIR)' SYSTEMDUNITDIR='$(SYSTEMDUNITDIR)' VERSION='$(VERSION)' SOMAJOR='$(SOMAJOR)' \
+  BUILD='$(BUILD)' TOOLS='$(INSTALL_TOOLS)' LIBS_PRIVATE='$(strip $(PKG_LIBS) -lpthread -lm)'
+
+install: lib $(INSTALL_TOOLS:%=$(BUILD)/bin/%)
+	@$(INSTALL_ENV) sh tools/install.sh install
+
+uninstall:
+	@$(INSTALL_ENV) sh tools/install.sh uninstall
 
 clean:
 	rm -rf build out

@@ -36,6 +36,11 @@ fi
 [ -n "$(git -C "$SRC" status --porcelain --untracked-files=no 2>/dev/null)" ] &&
     echo "fresh-root.sh: note: uncommitted changes are not in the copy (a clone of HEAD)"
 
+# One run at a time per WORKDIR: a second one would remove the first's roots.
+exec 9> "$W/.lock"
+if ! flock -n 9; then fail "another fresh-root.sh runs in $W"; exit 1; fi
+if grep -q " $W/" /proc/mounts; then fail "mounts left under $W (umount -R them)"; exit 1; fi
+
 MOUNTED=""
 umount_all() {
     for m in $MOUNTED; do umount -R "$m" 2>/dev/null || umount -R -l "$m" 2>/dev/null; done
