@@ -94,8 +94,9 @@ uninstall)
         # shared directories made for a staged install: only inside DESTDIR
         files | cut -d' ' -f1 | while read -r dst; do
             d=$(dirname "$dst")
-            while [ "$d" != "/" ] && [ "$d" != "." ] && [ -d "$D$d" ] && rmdir "$D$d" 2>/dev/null; do
-                echo "  RMDIR   $D$d"; d=$(dirname "$d")
+            while [ "$d" != "/" ] && [ "$d" != "." ]; do
+                if [ -d "$D$d" ]; then rmdir "$D$d" 2>/dev/null || break; echo "  RMDIR   $D$d"; fi
+                d=$(dirname "$d")
             done
         done
     fi
