@@ -11,14 +11,23 @@
 # Nothing is kept between runs: every root is bootstrapped anew and removed on
 # every exit path; the packages come from the Debian mirror each time.
 #
-# usage: fresh-root.sh [--test] [WORKDIR]      (root; default WORKDIR build/setup)
+#   debs  with --debs DIR (make deb's output): apt-get installs DIR/<arch>'s
+#         libfixel0, libfixel-dev and fixel-tools into a fourth untouched root,
+#         and the README's example builds there with pkg-config and runs
+# usage: fresh-root.sh [--test] [--debs DIR] [WORKDIR]   (root; default WORKDIR build/setup)
 #   SETUP_TEST_ARGS="QUICK=1 FIXEL_SKIP_KERNEL=1" runs a subset in the test root.
 #   SETUP_KEEP=1 leaves the roots in WORKDIR (for a look; remove them by hand).
 # Ends with "setup: N passed, N failed". Commits only: the copy is a clone of
 # HEAD, uncommitted changes are not in it.
 set -u
-do_test=0
-if [ "${1:-}" = "--test" ]; then do_test=1; shift; fi
+do_test=0; debs=""
+while :; do
+    case ${1:-} in
+    --test) do_test=1; shift ;;
+    --debs) debs=$(cd "$2" && pwd); shift 2 ;;
+    *) break ;;
+    esac
+done
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
 W=${1:-build/setup}
 mkdir -p "$W" && W=$(cd "$W" && pwd)
@@ -52,7 +61,7 @@ cleanup() {
     if grep -q " $W/" /proc/mounts; then
         echo "fresh-root.sh: mounts left under $W; not removing it"
     elif [ "${SETUP_KEEP:-0}" != 1 ]; then
-        rm -rf --one-file-system "$W/pristine" "$W/user" "$W/run" "$W/test"
+        rm -rf --one-file-system "$W/pristine" "$W/user" "$W/run" "$W/test" "$W/deb"
     fi
 }
 trap cleanup EXIT
@@ -74,7 +83,7 @@ clone_into() { # root, dir
 
 # --- the fresh root ---------------------------------------------------------
 t0=$(now)
-rm -rf --one-file-system "$W/pristine" "$W/user" "$W/run" "$W/test"
+rm -rf --one-file-system "$W/pristine" "$W/user" "$W/run" "$W/test" "$W/deb"
 if ! command -v mmdebstrap >/dev/null 2>&1; then
     DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=300 install -y -qq --no-install-recommends mmdebstrap >/dev/null ||
         { apt-get -o DPkg::Lock::Timeout=300 update -qq; DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=300 install -y -qq --no-install-recommends mmdebstrap >/dev/null; }
@@ -90,8 +99,9 @@ if mmdebstrap --variant=apt --include=make,git,ca-certificates \
 else
     tail -n 20 "$W/mmdebstrap.log"; fail "mmdebstrap bookworm"; finish
 fi
-for r in user run test; do
+for r in user run test deb; do
     [ $r = test ] && [ $do_test = 0 ] && continue
+    [ $r = deb ] && [ -z "$debs" ] && continue
     cp -a "$W/pristine" "$W/$r"
 done
 
@@ -148,6 +158,34 @@ for p in clang valgrind libcairo2-dev libsdl2-dev qemu-user-static; do
     fi
 done
 umount_all
+
+# --- the Debian packages in a fresh root ----------------------------------------
+if [ -n "$debs" ]; then
+    t0=$(now)
+    D=$W/deb
+    arch=$(dpkg --print-architecture)
+    mkdir -p "$D/tmp/debs"
+    cp "$debs/$arch"/libfixel0_*.deb "$debs/$arch"/libfixel-dev_*.deb "$debs/$arch"/fixel-tools_*.deb "$D/tmp/debs/" 2>/dev/null
+    sed -n '/^## A 15-line example/,/^## /p' "$SRC/README.md" | sed -n '/^```c$/,/^```$/p' | sed '1d;$d' > "$D/tmp/hello.c"
+    cp "$SRC/tests/golden/scripts/core-lines.fxs" "$D/tmp/"
+    mount_in "$D"
+    if in_root "$D" "export DEBIAN_FRONTEND=noninteractive; apt-get update -qq && apt-get install -y -qq --no-install-recommends /tmp/debs/*.deb gcc libc6-dev pkg-config" > "$W/deb-apt.log" 2>&1; then
+        pass "apt-get install ./libfixel0 ./libfixel-dev ./fixel-tools ($(ls "$D/tmp/debs" | wc -l) packages)"
+    else
+        tail -n 20 "$W/deb-apt.log"; fail "apt-get install of the packages"
+    fi
+    if in_root "$D" 'cd /tmp && cc -Wall -Wextra -Werror hello.c -o hello $(pkg-config --cflags --libs fixel) && ./hello && test -s hello.png && ldd ./hello | grep -q "libfixel.so.0 => /usr/lib/$(dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || gcc -print-multiarch)/libfixel.so.0"' > "$W/deb-hello.log" 2>&1; then
+        pass "README example: cc hello.c \$(pkg-config --cflags --libs fixel) against libfixel-dev, runs on libfixel0"
+    else
+        cat "$W/deb-hello.log"; fail "README example against the installed packages"
+    fi
+    if in_root "$D" 'cd /tmp && fixel-draw -o lines.png core-lines.fxs && test -s lines.png && test -f /lib/systemd/system/fixel-kiosk.service && ! command -v fixel-bench' > "$W/deb-tools.log" 2>&1; then
+        pass "fixel-tools: fixel-draw renders, the kiosk unit is there, no fixel-bench ($(( $(now) - t0 )) s for the packages)"
+    else
+        cat "$W/deb-tools.log"; fail "fixel-tools in the fresh root"
+    fi
+    umount_all
+fi
 
 # --- root's first make test (the whole suite) -----------------------------------
 if [ $do_test = 1 ]; then
