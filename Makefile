@@ -230,10 +230,11 @@ deps deps-check:
 # First-try set-up in fresh bookworm roots (tests/setup/fresh-root.sh; root,
 # needs the Debian mirror): a user's make run, root's make run, and root's
 # whole make test (SETUP_TEST_ARGS= to pass it variables). CI runs this.
+# DEBS=build/deb (make deb's output) adds the package install test.
 test-setup:
-	@sh tests/setup/fresh-root.sh --test build/setup
+	@sh tests/setup/fresh-root.sh --test $(if $(DEBS),--debs $(DEBS)) build/setup
 test-setup-run:
-	@sh tests/setup/fresh-root.sh build/setup
+	@sh tests/setup/fresh-root.sh $(if $(DEBS),--debs $(DEBS)) build/setup
 
 # ---- install (tools/install.sh: one file list for install and uninstall) ----
 # Every directory can be set on the command line; LIBDIR may be multiarch
