@@ -5,7 +5,9 @@
 #   make test            every test suite, plain and under ASan+UBSan, with a total
 #   make bench           the benchmark table (tools/fixel-bench)
 #   make deps            install the Debian packages the build needs (root) or say how
-#   make install PREFIX=/usr/local DESTDIR=
+#   make install PREFIX=/usr/local DESTDIR=   (also LIBDIR BINDIR INCLUDEDIR MANDIR DATADIR ...); make uninstall
+#   make deb             Debian packages for amd64, arm64, armhf (build/deb/<arch>/)
+#   make test-setup      first-try make run / make test in fresh bookworm roots (CI)
 #   make golden-update   re-render the golden images (look at them before committing)
 #   make BOARD=rpi4 ...  cross-build with a board profile from boards/<name>.mk
 
@@ -52,8 +54,11 @@ PKGS     := $(if $(HAVE_PNG),$(SYS_PKGS)) $(if $(HAVE_OPT),$(OPT_PKGS))
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null) $(if $(HAVE_PNG),,-DFX_NO_PNG -DFX_NO_ZLIB)
 PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS) 2>/dev/null)
 LDFLAGS  ?=
-# STATIC=1: single static binaries to copy to a board (no shared library).
+# STATIC=1: single static binaries to copy to a board (no shared library),
+# in their own directory ($(BUILD)/static): a static build never re-links the
+# dynamic build's binaries, nor the other way round.
 ifeq ($(STATIC),1)
+  BUILD    := $(BUILD)/static
   LDFLAGS += -static
   PKG_LIBS := $(shell $(PKG_CONFIG) --static --libs $(PKGS) 2>/dev/null)
 endif
@@ -92,7 +97,7 @@ TEST_DEB_PKGS :=
 BENCH_DEB_PKGS :=
 
 
-.PHONY: all lib tools run run-nodeps test test-nodeps test-bins test-plain test-asan check-freestanding deps deps-check test-setup test-setup-run install uninstall \
+.PHONY: all lib tools run run-nodeps test test-nodeps test-bins test-plain test-asan check-freestanding deps deps-check cross-deps-check test-setup test-setup-run install-build install uninstall \
         golden-update clean help
 all: lib tools $(BUILD)/fixel.pc
 
@@ -218,6 +223,29 @@ run-nodeps: all
 	  echo "fixel: no display here; rendered the showcase headless into out/showcase.png"; fi
 
 # ---- dependencies ----
+# A cross build (BOARD=rpi4 ...) whose target libraries pkg-config cannot
+# find stops before compiling the tools, naming the missing packages and the
+# command that installs them (the library alone still builds: the core needs
+# nothing, and tests/arm runs its suites without them).
+CROSS_TRIPLET := $(patsubst %-,%,$(CROSS_COMPILE))
+DEB_ARCH_aarch64-linux-gnu   := arm64
+DEB_ARCH_arm-linux-gnueabihf := armhf
+DEB_ARCH_arm-linux-gnueabi   := armel
+DEB_ARCH_x86_64-linux-gnu    := amd64
+CROSS_DEB_ARCH := $(DEB_ARCH_$(CROSS_TRIPLET))
+CROSS_DEB_PKGS := gcc-$(CROSS_TRIPLET) libc6-dev-$(CROSS_DEB_ARCH)-cross \
+  $(foreach p,libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev,$(p):$(CROSS_DEB_ARCH))
+cross-deps-check:
+	@sh tests/deps.sh --no-install --for "make BOARD=$(BOARD) (target $(or $(CROSS_DEB_ARCH),$(CROSS_TRIPLET)))" $(CROSS_DEB_PKGS) || \
+	  { echo "(or build the library alone: make BOARD=$(BOARD) lib)"; exit 1; }
+	@echo "make BOARD=$(BOARD): the target packages are installed, but PKG_CONFIG ($(PKG_CONFIG))"; \
+	 echo "  finds$(if $(HAVE_PNG),, no libpng/zlib)$(if $(HAVE_OPT),, no libdrm/libevdev/libgpiod) for $(CROSS_DEB_ARCH)"; exit 1
+ifneq ($(CROSS_DEB_ARCH),)
+ifneq ($(HAVE_PNG)$(HAVE_OPT),11)
+$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/*/*.c)) $(TOOL_BINS): | cross-deps-check
+endif
+endif
+
 # By purpose (README, "Packages"): DEB_PKGS builds the library and tools and
 # runs `make run`; TEST_DEB_PKGS (added to by the tests/*/*.mk fragments) is
 # what `make test` needs on top; BENCH_DEB_PKGS the peers of `make bench-peers`.
@@ -254,7 +282,10 @@ INSTALL_ENV = DESTDIR='$(DESTDIR)' PREFIX='$(PREFIX)' BINDIR='$(BINDIR)' LIBDIR=
   SYSCONFDIR='$(SYSCONFDIR)' SYSTEMDUNITDIR='$(SYSTEMDUNITDIR)' VERSION='$(VERSION)' SOMAJOR='$(SOMAJOR)' \
   BUILD='$(BUILD)' TOOLS='$(INSTALL_TOOLS)' LIBS_PRIVATE='$(strip $(PKG_LIBS) -lpthread -lm)'
 
-install: lib $(INSTALL_TOOLS:%=$(BUILD)/bin/%)
+# What install installs, built (debian/rules builds this, not fixel-bench).
+install-build: lib $(INSTALL_TOOLS:%=$(BUILD)/bin/%)
+
+install: install-build
 	@$(INSTALL_ENV) sh tools/install.sh install
 
 uninstall:

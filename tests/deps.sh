@@ -8,7 +8,11 @@
 #   tests); its architecture is added to dpkg first.
 #   --for names the purpose in the message ("make run", "make test"...).
 #   --check is accepted for old callers and means the same.
+#   --no-install only names what is missing (exit 1), root or not: for a
+#   make that has already evaluated pkg-config (a cross build's tools).
 [ "$1" = "--check" ] && shift
+noinstall=0
+if [ "$1" = "--no-install" ]; then noinstall=1; shift; fi
 what="fixel"
 if [ "$1" = "--for" ]; then what="$2"; shift 2; fi
 command -v dpkg-query >/dev/null 2>&1 || { echo "deps: not a Debian system; install the equivalents of: $*"; exit 0; }
@@ -26,7 +30,7 @@ for p in "$@"; do
 done
 [ -z "$missing" ] && exit 0
 APT="apt-get -o DPkg::Lock::Timeout=300"
-if [ "$(id -u)" -eq 0 ]; then
+if [ "$(id -u)" -eq 0 ] && [ $noinstall = 0 ]; then
     echo "deps: $what installs$missing"
     export DEBIAN_FRONTEND=noninteractive
     for a in $arches; do dpkg --add-architecture "$a"; done
@@ -46,8 +50,9 @@ if [ "$(id -u)" -eq 0 ]; then
         done
     fi
 else
+    sudo="sudo "; [ "$(id -u)" -eq 0 ] && sudo=""
     echo "$what needs Debian packages that are missing; run:"
-    for a in $arches; do echo "  sudo dpkg --add-architecture $a"; done
-    echo "  sudo apt-get update && sudo apt-get install -y --no-install-recommends$missing"
+    for a in $arches; do echo "  ${sudo}dpkg --add-architecture $a"; done
+    echo "  ${sudo}apt-get update && ${sudo}apt-get install -y --no-install-recommends$missing"
     exit 1
 fi
