@@ -25,7 +25,7 @@ for arch in $ARCHES; do
     # the work tree's tracked files (what a clone has), built out of tree
     git ls-files -z | tar --null -T - -c | tar -x -C "$W/src"
     a=""; [ "$arch" != "$NATIVE" ] && a="-a$arch"
-    if (cd "$W/src" && dpkg-buildpackage -us -uc -b $a) > "$W/build.log" 2>&1; then
+    if (cd "$W/src" && DEB_BUILD_OPTIONS="parallel=${DEB_JOBS:-2} ${DEB_BUILD_OPTIONS:-}" dpkg-buildpackage -us -uc -b $a) > "$W/build.log" 2>&1; then
         ok "dpkg-buildpackage $arch ($(( $(now) - t0 )) s): $(cd "$W" && ls *.deb | tr '\n' ' ')"
     else
         tail -n 30 "$W/build.log"; no "dpkg-buildpackage $arch"; continue
