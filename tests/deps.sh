@@ -36,23 +36,32 @@ if [ "$(id -u)" -eq 0 ] && [ $noinstall = 0 ]; then
     for a in $arches; do dpkg --add-architecture "$a"; done
     # a mirror mid-sync can fail one index; the others still serve
     $APT update -qq || $APT update -qq || true
-    if ! $APT install -y -qq --no-install-recommends $missing >/dev/null; then
-        # One architecture's index out of step with the others (a mirror
-        # mid-sync, seen for armhf) must not stop the rest: native packages
-        # must install, each foreign architecture's are tried on their own
-        # (tests/arm/test-arm.sh skips an architecture without them, saying so).
-        native=$(for p in $missing; do case $p in *:*) ;; *) echo "$p" ;; esac; done)
-        [ -z "$native" ] || $APT install -y -qq --no-install-recommends $native >/dev/null ||
-            { echo "deps: apt-get install failed for:" $native; exit 1; }
-        for a in $(for p in $missing; do case $p in *:*) echo "${p#*:}" ;; esac; done | sort -u); do
-            $APT install -y -qq --no-install-recommends $(for p in $missing; do case $p in *:$a) echo "$p" ;; esac; done) >/dev/null ||
-                echo "deps: could not install the $a packages (mirror out of step?); going on without them"
-        done
-    fi
+    # Native packages first, then each foreign architecture's on their own:
+    # apt resolving both at once on a fresh system reported "held broken
+    # packages" where the two steps succeed, and one architecture's index out
+    # of step with the others (a mirror mid-sync, seen for armhf) must not stop
+    # the rest (tests/arm/test-arm.sh skips an architecture without them, saying so).
+    native=$(for p in $missing; do case $p in *:*) ;; *) echo "$p" ;; esac; done)
+    [ -z "$native" ] || $APT install -y -qq --no-install-recommends $native >/dev/null ||
+        { echo "deps: apt-get install failed for:" $native; exit 1; }
+    for a in $(for p in $missing; do case $p in *:*) echo "${p#*:}" ;; esac; done | sort -u); do
+        $APT install -y -qq --no-install-recommends $(for p in $missing; do case $p in *:$a) echo "$p" ;; esac; done) >/dev/null ||
+            echo "deps: could not install the $a packages (mirror out of step?); going on without them"
+    done
 else
     sudo="sudo "; [ "$(id -u)" -eq 0 ] && sudo=""
     echo "$what needs Debian packages that are missing; run:"
     for a in $arches; do echo "  ${sudo}dpkg --add-architecture $a"; done
-    echo "  ${sudo}apt-get update && ${sudo}apt-get install -y --no-install-recommends$missing"
+    # the same two steps as above: native packages, then each architecture's
+    native=$(for p in $missing; do case $p in *:*) ;; *) printf ' %s' "$p" ;; esac; done)
+    foreign=$(for p in $missing; do case $p in *:*) echo "${p#*:}" ;; esac; done | sort -u)
+    if [ -n "$native" ]; then
+        echo "  ${sudo}apt-get update && ${sudo}apt-get install -y --no-install-recommends$native"
+    else
+        echo "  ${sudo}apt-get update"
+    fi
+    for a in $foreign; do
+        echo "  ${sudo}apt-get install -y --no-install-recommends$(for p in $missing; do case $p in *:$a) printf ' %s' "$p" ;; esac; done)"
+    done
     exit 1
 fi
