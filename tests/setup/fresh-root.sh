@@ -174,7 +174,7 @@ if [ -n "$debs" ]; then
     else
         tail -n 20 "$W/deb-apt.log"; fail "apt-get install of the packages"
     fi
-    if in_root "$D" 'cd /tmp && cc -Wall -Wextra -Werror hello.c -o hello $(pkg-config --cflags --libs fixel) && ./hello && test -s hello.png && ldd ./hello | grep -q "libfixel.so.0 => /usr/lib/$(dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || gcc -print-multiarch)/libfixel.so.0"' > "$W/deb-hello.log" 2>&1; then
+    if in_root "$D" 'cd /tmp && cc -Wall -Wextra -Werror hello.c -o hello $(pkg-config --cflags --libs fixel) && ./hello && test -s hello.png && ldd ./hello && ldd ./hello | grep -Eq "libfixel.so.0 => (/usr)?/lib/$(gcc -print-multiarch)/libfixel.so.0"' > "$W/deb-hello.log" 2>&1; then
         pass "README example: cc hello.c \$(pkg-config --cflags --libs fixel) against libfixel-dev, runs on libfixel0"
     else
         cat "$W/deb-hello.log"; fail "README example against the installed packages"
