@@ -1,10 +1,13 @@
+# SPDX-License-Identifier: MIT
 # fixel — the one entry point.
 #   make                 library (static + shared), tools, fixel.pc
 #   make run             the main job (headless on a machine without a display)
 #   make test            every test suite, plain and under ASan+UBSan, with a total
 #   make bench           the benchmark table (tools/fixel-bench)
 #   make deps            install the Debian packages the build needs (root) or say how
-#   make install PREFIX=/usr/local DESTDIR=
+#   make install PREFIX=/usr/local DESTDIR=   (also LIBDIR BINDIR INCLUDEDIR MANDIR DATADIR ...); make uninstall
+#   make deb             Debian packages for amd64, arm64, armhf (build/deb/<arch>/)
+#   make test-setup      first-try make run / make test in fresh bookworm roots (CI)
 #   make golden-update   re-render every golden set (look at them before committing)
 #   make help            every target, with a line each
 #   make BOARD=rpi4 ...  cross-build with a board profile from boards/<name>.mk
@@ -71,8 +74,11 @@ PKGS     := $(if $(HAVE_PNG),$(SYS_PKGS)) $(if $(HAVE_OPT),$(OPT_PKGS))
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null) $(if $(HAVE_PNG),,-DFX_NO_PNG -DFX_NO_ZLIB)
 PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS) 2>/dev/null)
 LDFLAGS  ?=
-# STATIC=1: single static binaries to copy to a board (no shared library).
+# STATIC=1: single static binaries to copy to a board (no shared library),
+# in their own directory ($(BUILD)/static): a static build never re-links the
+# dynamic build's binaries, nor the other way round.
 ifeq ($(STATIC),1)
+  BUILD    := $(BUILD)/static
   LDFLAGS += -static
   PKG_LIBS := $(shell $(PKG_CONFIG) --static --libs $(PKGS) 2>/dev/null)
 endif
@@ -119,9 +125,11 @@ TEST_OBJ   := $(TEST_SRC:%.c=$(BUILD)/obj/%.o) $(TEST_LIB_SRC:%.c=$(BUILD)/obj/%
 TEST_BIN   := $(BUILD)/tests/unit
 GOLDEN_BIN := $(BUILD)/tests/golden
 TEST_SUITES :=
+TEST_DEB_PKGS :=
+BENCH_DEB_PKGS :=
 
 
-.PHONY: all lib tools run test test-bins test-plain test-asan check-freestanding check-layers deps install \
+.PHONY: all lib tools run run-nodeps test test-nodeps test-bins test-plain test-asan check-freestanding check-layers deps deps-check cross-deps-check test-setup test-setup-run install-build install uninstall \
         golden-update clean help
 all: lib tools $(BUILD)/fixel.pc
 
@@ -155,8 +163,16 @@ $(LIB_A): $(LIB_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
-$(LIB_SO): $(LIB_OBJ)
-	$(CC) -shared -Wl,-soname,libfixel.so.$(SOMAJOR) $(SANFLAGS) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+# Only the public API leaves libfixel.so: a version script naming every
+# function and object the public headers declare (docs/ABI.md).
+PUBLIC_HEADERS := $(sort $(wildcard kernel-free-src/include/fixel/*.h boards/include/fixel/*.h))
+$(BUILD)/libfixel.map: $(PUBLIC_HEADERS) tools/gen/exports.sh
+	@mkdir -p $(dir $@)
+	SOMAJOR=$(SOMAJOR) sh tools/gen/exports.sh --map "$(CC)" > $@.tmp && mv $@.tmp $@
+
+$(LIB_SO): $(LIB_OBJ) $(BUILD)/libfixel.map
+	$(CC) -shared -Wl,-soname,libfixel.so.$(SOMAJOR) -Wl,--version-script=$(BUILD)/libfixel.map \
+	  $(SANFLAGS) $(LDFLAGS) -o $@ $(LIB_OBJ) $(LDLIBS)
 	ln -sf libfixel.so.$(VERSION) $(BUILD)/libfixel.so.$(SOMAJOR)
 	ln -sf libfixel.so.$(VERSION) $(BUILD)/libfixel.so
 
@@ -172,10 +188,12 @@ $(BUILD)/bin/%: $$(call tool_objs,$$*) $(LIB_A)
 # run: keep them.
 .SECONDARY: $(foreach t,$(TOOLS),$(call tool_objs,$t))
 
+# The build tree's own fixel.pc, for programs built against an uninstalled
+# fixel (PKG_CONFIG_PATH=$(BUILD)); make install writes the installed one.
 $(BUILD)/fixel.pc: Makefile
 	@mkdir -p $(dir $@)
-	printf 'prefix=%s\nlibdir=$${prefix}/lib\nincludedir=$${prefix}/include\n\nName: fixel\nDescription: integer-only graphics on Linux framebuffers\nVersion: %s\nLibs: -L$${libdir} -lfixel\nLibs.private: %s -lpthread\nRequires.private: %s\nCflags: -I$${includedir}\n' \
-	  '$(PREFIX)' '$(VERSION)' '' '$(PKGS)' > $@
+	printf 'libdir=%s\n\nName: fixel\nDescription: integer-only fixed-point graphics on Linux framebuffers (build tree)\nVersion: %s\nLibs: -L$${libdir} -lfixel\nLibs.private: %s\nCflags: -I%s -I%s\n' \
+	  '$(abspath $(BUILD))' '$(VERSION)' '$(strip $(PKG_LIBS) -lpthread -lm)' '$(abspath kernel-free-src/include)' '$(abspath boards/include)' > $@
 
 # ---- tests ----
 $(BUILD)/tests/registry.c: $(TEST_SRC) tests/lib/gen-registry.sh
@@ -218,7 +236,11 @@ check-layers:
 # libevdev, libgpiod) the tools cannot link; the test binaries still can.
 test-bins: $(if $(HAVE_OPT),all,lib) $(TEST_BIN) $(GOLDEN_BIN)
 
-test: deps-check
+test:
+	@sh tests/deps.sh --for "make test" $(sort $(DEB_PKGS) $(TEST_DEB_PKGS))
+	@$(MAKE) --no-print-directory test-nodeps
+
+test-nodeps:
 	@$(MAKE) --no-print-directory test-bins
 	@$(MAKE) --no-print-directory SAN=1 test-bins
 	@sh tests/run-suites.sh --total \
@@ -243,31 +265,87 @@ pointer-golden-update: $(TEST_BIN)
 .PHONY: $(GOLDEN_UPDATES)
 
 # ---- the main job ----
-run: deps-check all
+# make run / make test first install (root) or name (user) the packages of
+# their purpose, then build in a new make, whose pkg-config sees them.
+run:
+	@sh tests/deps.sh --for "make run" $(sort $(DEB_PKGS))
+	@$(MAKE) --no-print-directory run-nodeps
+
+# The same without the package step (a packager's build, a machine without apt).
+run-nodeps: all
 	@mkdir -p out
 	@if [ -x $(BUILD)/bin/fixel-demo ]; then $(BUILD)/bin/fixel-demo; else \
 	  $(BUILD)/bin/fixel-draw -o out/showcase.png tools/fixel-draw/showcase.fxs && \
 	  echo "fixel: no display here; rendered the showcase headless into out/showcase.png"; fi
 
 # ---- dependencies ----
-DEB_PKGS := gcc make pkg-config libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev \
-            $(EXTRA_DEB_PKGS)
-deps:
-	@sh tests/deps.sh $(sort $(DEB_PKGS))
-deps-check:
-	@sh tests/deps.sh --check $(sort $(DEB_PKGS))
+# A cross build (BOARD=rpi4 ...) whose target libraries pkg-config cannot
+# find stops before compiling the tools, naming the missing packages and the
+# command that installs them (the library alone still builds: the core needs
+# nothing, and tests/arm runs its suites without them).
+CROSS_TRIPLET := $(patsubst %-,%,$(CROSS_COMPILE))
+DEB_ARCH_aarch64-linux-gnu   := arm64
+DEB_ARCH_arm-linux-gnueabihf := armhf
+DEB_ARCH_arm-linux-gnueabi   := armel
+DEB_ARCH_x86_64-linux-gnu    := amd64
+CROSS_DEB_ARCH := $(DEB_ARCH_$(CROSS_TRIPLET))
+CROSS_DEB_PKGS := gcc-$(CROSS_TRIPLET) libc6-dev-$(CROSS_DEB_ARCH)-cross \
+  $(foreach p,libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev,$(p):$(CROSS_DEB_ARCH))
+cross-deps-check:
+	@sh tests/deps.sh --no-install --for "make BOARD=$(BOARD) (target $(or $(CROSS_DEB_ARCH),$(CROSS_TRIPLET)))" $(CROSS_DEB_PKGS) || \
+	  { echo "(or build the library alone: make BOARD=$(BOARD) lib)"; exit 1; }
+	@echo "make BOARD=$(BOARD): the target packages are installed, but PKG_CONFIG ($(PKG_CONFIG))"; \
+	 echo "  finds$(if $(HAVE_PNG),, no libpng/zlib)$(if $(HAVE_OPT),, no libdrm/libevdev/libgpiod) for $(CROSS_DEB_ARCH)"; exit 1
+ifneq ($(CROSS_DEB_ARCH),)
+ifneq ($(HAVE_PNG)$(HAVE_OPT),11)
+$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/*/*.c)) $(TOOL_BINS): | cross-deps-check
+endif
+endif
 
-install: all
-	install -d $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/fixel \
-	  $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
-	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
-	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/
-	ln -sf libfixel.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libfixel.so.$(SOMAJOR)
-	ln -sf libfixel.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libfixel.so
-	install -m 644 kernel-free-src/include/fixel/*.h boards/include/fixel/*.h \
-	  $(DESTDIR)$(PREFIX)/include/fixel/
-	install -m 644 $(BUILD)/fixel.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/
-	install -m 755 $(TOOL_BINS) $(DESTDIR)$(PREFIX)/bin/
+# By purpose (README, "Packages"): DEB_PKGS builds the library and tools and
+# runs `make run`; TEST_DEB_PKGS (added to by the tests/*/*.mk fragments) is
+# what `make test` needs on top; BENCH_DEB_PKGS the peers of `make bench-peers`.
+# PACKAGE:ARCH entries are multiarch libraries of the cross tests.
+DEB_PKGS := gcc libc6-dev make pkg-config libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev
+# `make deps`: every set; `make deps-check`: the same, named "make deps".
+deps deps-check:
+	@sh tests/deps.sh --for "make deps" $(sort $(DEB_PKGS) $(TEST_DEB_PKGS) $(BENCH_DEB_PKGS))
+
+# First-try set-up in fresh bookworm roots (tests/setup/fresh-root.sh; root,
+# needs the Debian mirror): a user's make run, root's make run, and root's
+# whole make test (SETUP_TEST_ARGS= to pass it variables). CI runs this.
+# DEBS=build/deb (make deb's output) adds the package install test.
+test-setup:
+	@sh tests/setup/fresh-root.sh --test $(if $(DEBS),--debs $(DEBS)) build/setup
+test-setup-run:
+	@sh tests/setup/fresh-root.sh $(if $(DEBS),--debs $(DEBS)) build/setup
+
+# ---- install (tools/install.sh: one file list for install and uninstall) ----
+# Every directory can be set on the command line; LIBDIR may be multiarch
+# (LIBDIR=/usr/lib/x86_64-linux-gnu). fixel.pc is written at install time for
+# the directories installed into. ldconfig runs for a live install as root.
+BINDIR       ?= $(PREFIX)/bin
+LIBDIR       ?= $(PREFIX)/lib
+INCLUDEDIR   ?= $(PREFIX)/include
+DATADIR      ?= $(PREFIX)/share
+MANDIR       ?= $(DATADIR)/man
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+SYSCONFDIR   ?= $(if $(filter /usr,$(PREFIX)),/etc,$(PREFIX)/etc)
+SYSTEMDUNITDIR ?= $(if $(filter /usr,$(PREFIX)),/lib/systemd/system,$(PREFIX)/lib/systemd/system)
+INSTALL_TOOLS := $(filter-out fixel-bench,$(TOOLS))
+INSTALL_ENV = DESTDIR='$(DESTDIR)' PREFIX='$(PREFIX)' BINDIR='$(BINDIR)' LIBDIR='$(LIBDIR)' \
+  INCLUDEDIR='$(INCLUDEDIR)' DATADIR='$(DATADIR)' MANDIR='$(MANDIR)' PKGCONFIGDIR='$(PKGCONFIGDIR)' \
+  SYSCONFDIR='$(SYSCONFDIR)' SYSTEMDUNITDIR='$(SYSTEMDUNITDIR)' VERSION='$(VERSION)' SOMAJOR='$(SOMAJOR)' \
+  BUILD='$(BUILD)' TOOLS='$(INSTALL_TOOLS)' LIBS_PRIVATE='$(strip $(PKG_LIBS) -lpthread -lm)'
+
+# What install installs, built (debian/rules builds this, not fixel-bench).
+install-build: lib $(INSTALL_TOOLS:%=$(BUILD)/bin/%)
+
+install: install-build
+	@$(INSTALL_ENV) sh tools/install.sh install
+
+uninstall:
+	@$(INSTALL_ENV) sh tools/install.sh uninstall
 
 clean:
 	rm -rf build out

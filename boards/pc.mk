@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Board profile: a PC (x86-64), native build. Profiles are plain variables
 # read by the top Makefile:
 #   CROSS_COMPILE  toolchain prefix          CPU_FLAGS   code-generation flags

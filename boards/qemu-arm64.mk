@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Board profile: the rig's arm64 guest (qemu -M virt -cpu cortex-a72, virtio-gpu).
 CROSS_COMPILE ?= aarch64-linux-gnu-
 CPU_FLAGS ?= -mcpu=cortex-a72

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Board profile: the rig's x86-64 guest (qemu -M pc, bochs-drm, 800x480).
 CROSS_COMPILE ?=
 CPU_FLAGS ?=

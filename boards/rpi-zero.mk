@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Board profile: Raspberry Pi Zero / Zero W / Pi 1 (ARM1176, ARMv6, VFPv2).
 # Debian's armhf targets ARMv7, so the soft-float armel toolchain
 # (gcc-arm-linux-gnueabi + libc6-dev-armel-cross) is used; static builds run

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Board profile: Raspberry Pi 2 v1.2 / 3 / Zero 2 running a 32-bit (armhf) OS.
 CROSS_COMPILE ?= arm-linux-gnueabihf-
 CPU_FLAGS ?= -mcpu=cortex-a53 -mfpu=neon-fp-armv8 -mfloat-abi=hard

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Board profile: Raspberry Pi 4 / 400 / CM4, 64-bit OS (vc4-kms-v3d: DRM).
 CROSS_COMPILE ?= aarch64-linux-gnu-
 CPU_FLAGS ?= -mcpu=cortex-a72

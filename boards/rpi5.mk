@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Board profile: Raspberry Pi 5, 64-bit OS (vc4/v3d DRM; GPIO on the RP1 chip).
 CROSS_COMPILE ?= aarch64-linux-gnu-
 CPU_FLAGS ?= -mcpu=cortex-a76

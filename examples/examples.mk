@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # examples/: small programs built against the library as a user would
 # (<fixel/...> includes); `make examples` builds build/examples/<name>.
 EXAMPLES     := $(basename $(notdir $(wildcard examples/*.c)))

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The core must build freestanding with no floating-point registers (a float
 # or double is then a compile error) and reference nothing from libc but mem*.
 # FX_FS_FLAGS replaces the float-ban flags for targets where

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The dependency rules of docs/ARCHITECTURE.md, checked on the sources:
 # every #include of kernel-free-src/, boards/ and tools/ is resolved the way
 # the compiler resolves it (the including file's folder, then

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Runs test suites (each argument is one command) and adds up their closing
 # "N passed, N failed" lines. A suite that exits non-zero without reporting a
 # failure, or prints no such line, counts as one failure of its own.

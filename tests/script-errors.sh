@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Every script error path: fixel-draw must exit non-zero, print
 # SCRIPT:LINE:COL: message on stderr, and leave no output file behind.
 # Each tests/script-errors/*.fxs starts with "# expect: LINE:COL: message".

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the app: display + input + GPIO behind GLUT-style callbacks, and
  * the main loop (poll over every fd; timerfd for timers and debouncing;
  * signalfd for SIGINT/SIGTERM/SIGHUP). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal to boards/: the app object (boards/app/app.c), above the display
  * and input layers; tests/core reaches in to replay input. Not installed. */
 #ifndef FIXEL_APP_INT_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the GPIO button map syntax (pure: no OS calls, so the board-less
  * test builds have it too). */
 #ifndef _GNU_SOURCE

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The display object: backend choice (DRM -> fbdev -> memory), presentation
  * mode (direct or shadow), damage bookkeeping and rotation. The backends in
  * drm.c and fbdev.c only know how to show one of their buffers. */

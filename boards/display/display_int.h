@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal to boards/: the display object and the backend ops table, shared
  * by the front end (boards/display/display.c, which also sees the console)
  * and the backends (boards/memory, boards/linux/display, boards/linux/drm),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pure half of the display front end: merging damage and copying
  * rectangles under rotation. No OS headers and no allocation, so tests/boards can
  * feed it fake surfaces. */

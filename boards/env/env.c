@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The one place the boards side reads the environment: the FIXEL_*
  * variables of README.md, turned into option fields for programs to pass
  * to fx_display_open / fx_app_open (fixel/env.h). Each fills a field only

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel GLUT layer — OpenGL 1.x state, immediate mode and the boundary
  * conversions. Floats and doubles are converted to fixed point here
  * (fxg_d2x & co: round to nearest, ties to even, saturating) and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel GLUT layer — the window, the main loop, input, menus and the
  * headless runs.
  *

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The GLUT + OpenGL 1.x layer (boards/glut, issue #21): libfixel-glut.a, its
 # shared library and fixel-glut.pc. Programs build with
 #   cc lab.c -Iboards/glut/include $(BUILD)/libfixel-glut.a $(BUILD)/libfixel.a $(PKG_LIBS) -lm

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel GLUT layer — state shared by gl.c (OpenGL 1.x), glut.c (windows,
  * input, the loop), shapes.c and text.c. Not installed. */
 #ifndef FIXEL_GLUT_INT_H

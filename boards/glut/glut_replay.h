@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel GLUT layer — the parsed FIXEL_GLUT_REPLAY file (replay.c). Not installed. */
 #ifndef FIXEL_GLUT_REPLAY_H
 #define FIXEL_GLUT_REPLAY_H

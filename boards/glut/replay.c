@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel GLUT layer — FIXEL_GLUT_REPLAY: the scripted input of headless runs.
  *
  * The format and its timing are tests/glut/README.md's (the Mesa shim,

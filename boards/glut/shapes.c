@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel GLUT layer — the GLUT solids, tessellated as freeglut 3 tessellates
  * them (its documented construction, re-implemented here), so that a course
  * program's sphere or teapot has the same vertices under fixel as under

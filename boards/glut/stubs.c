@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel GLUT layer — the calls declared in fixel's GL headers that the
  * layer does not implement: each records GL_INVALID_OPERATION for glGetError
  * and logs its name once (generated from the headers; regenerate when a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel GLUT layer — GLUT's fonts on fixel's built-in 6x10 font.
  * Bitmap fonts: 8_BY_13, 9_BY_15, TIMES_ROMAN_10, HELVETICA_10/12 draw the
  * 6x10 glyphs at scale 1, TIMES_ROMAN_24 and HELVETICA_18 at scale 2; the

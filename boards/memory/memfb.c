@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — in-memory framebuffer and image files. */
 #define _POSIX_C_SOURCE 200809L
 #include "fixel/memfb.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The memory display backend: one scanout buffer in ordinary memory, shown
  * nowhere. Headless programs and tests draw into it and read it back with
  * fx_display_screen. Needs no device and no board library. */

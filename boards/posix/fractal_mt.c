@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the tiled multithreaded escape-time renderer (see fractal_mt.h). */
 #include "fixel/fractal_mt.h"
 

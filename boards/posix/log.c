@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Logging for the boards side: one function and level (the display's,
  * usually), handed to each layer as an fx_logger; and the hint that names
  * the group a device node belongs to when opening it is refused. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal to boards/: the bottom layer of the boards side, above the core
  * only. A logger (the display's log function and level, handed down to the
  * console and input layers so they never call up into the display), the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A blocking call with a timeout: the call runs on a helper thread and the
  * caller waits at most timeout_ms for it. Used for FBIO_WAITFORVSYNC, which
  * some fbdev drivers never complete: the program loses one timeout, once,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — 3D vectors, matrices, the matrix stack, the camera and the
  * projections (contracts in fixel/mat3d.h). */
 #include "fixel/mat3d.h"

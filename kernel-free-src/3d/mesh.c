@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — mesh generators (solids, the teapot) and the OBJ parser, writing
  * into caller arrays (contracts in fixel/mesh.h). */
 #include <stdarg.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the 3D pipeline: per-triangle transform and lighting, homogeneous
  * clipping, integer perspective division and a depth-buffered triangle
  * rasterizer with depth, colour, normal and position interpolation.

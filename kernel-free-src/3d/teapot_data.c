@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the Utah teapot (Martin Newell, 1975): 306 control points and 32
  * bicubic Bezier patches, the public-domain data set as widely published.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal: the Utah teapot control data (teapot_data.c). */
 #ifndef FIXEL_TEAPOT_DATA_H
 #define FIXEL_TEAPOT_DATA_H

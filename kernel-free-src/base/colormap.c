@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the project's colour maps (see colormap.h for their definitions). */
 #include "fixel/colormap.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — colour models (see fixel/colour.h for the contracts). */
 #include "fixel/colour.h"
 #include "fx_internal.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — drawing context, clipped pixels/spans/rectangles, blending, and the
  * small printf-style formatter behind tracing. */
 #include "fixel/draw.h"

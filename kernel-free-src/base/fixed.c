@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — fixed-point arithmetic (see fixel/fixed.h for the contracts). */
 #include "fixel/fixed.h"
 #include "fixel/error.h"

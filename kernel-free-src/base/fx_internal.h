@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal helpers shared by core files; not installed. */
 #ifndef FIXEL_INTERNAL_H
 #define FIXEL_INTERNAL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The span clip of the core (not installed): one row's [x0, x1) clipped to
  * c->clip and, with exterior clipping on, split around c->exterior_rect into
  * at most two pieces. fx_hspan (draw.c) and fx_fill_span (fill.c) differ

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The core's one 128-bit arithmetic module, for exact geometry (fill set-up,
  * clip, polyclip, stroke, xform); not installed. Built on fx_smul64_wide so
  * 32-bit targets need no __int128. Values are two's complement, hi:lo.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — surfaces, the format table, pack/unpack and the span loops. */
 #include "fixel/surface.h"
 #include "fixel/error.h"

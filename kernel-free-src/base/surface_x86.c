@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — solid rectangles with AVX / AVX-512 stores, for x86-64 CPUs that
  * have them (see fx_internal.h for why this is decided at run time). */
 #include "fx_internal.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — line clipping (Cohen-Sutherland, Liang-Barsky, Nicholl-Lee-Nicholl)
  * with exact rational parameters, the conversion to Bresenham steps that
  * keeps every pixel where the unclipped line puts it, exterior clipping for

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — polygon clipping against a rectangular window: Sutherland-Hodgman,
  * Weiler-Atherton (separate pieces for concave polygons). The pieces are
  * filled by fx_poly_fill16 (fill.h, fill/fill.c).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — area fills: the span writer with fill styles and blending, the
  * edge-table polygon filler (even-odd and nonzero), the row filler of
  * clipped Q16.16 pieces (fx_poly_fill16), triangles with exact

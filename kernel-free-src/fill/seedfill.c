@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — seed fills: flood fill and boundary fill, 4- and 8-connected.
  *
  * A scan-line seed fill over spans, never recursive per pixel: a span is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — textures, procedural textures and gradients (see fixel/texture.h). */
 #include "fixel/texture.h"
 #include "../base/fx_internal.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — escape-time fractals: the Mandelbrot set and filled Julia sets in
  * fixed point (the contract is in fractal.h).
  *

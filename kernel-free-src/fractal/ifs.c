@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — iterated function systems (contracts in ifs.h). */
 #include "fixel/ifs.h"
 #include "fixel/error.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — Koch curves, midpoint displacement, terrain and space-filling
  * curves (contracts in koch.h). */
 #include "fixel/koch.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — Q32.32 arithmetic, GL matrices and the lighting equation for the
  * GLUT layer (see fixel/glcore.h). Integer only, freestanding. */
 #include "fixel/glcore.h"

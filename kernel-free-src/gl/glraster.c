@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — GL-rules rasterization for the GLUT layer: points, diamond-exit
  * lines and triangles with llvmpipe's ties, the per-fragment operations
  * (scissor, depth, texture, blend, mask) and clip-space clipping. See

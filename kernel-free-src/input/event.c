@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — GLUT-style dispatch of fx_event. */
 #include "fixel/event.h"
 #include "fixel/draw.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — raw input to events (see fixel/input.h). */
 #include "fixel/input.h"
 #include "fixel/error.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — antialiased lines (Xiaolin Wu) in fixed point, with exact integer
  * blending and exact clipping.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the Bresenham leaf: the seekable iterator, the exact step-range
  * clip both line iterators share (the axis ranges), and the walks that
  * write a clipped run of steps. It calls nothing above it: line.c (the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — midpoint circle, disc, arc, pie slice and antialiased circle.
  *
  * Everything visible-bounded: a primitive first rejects by bounding box,

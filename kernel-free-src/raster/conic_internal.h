@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Helpers shared by circle.c and ellipse.c; not installed. */
 #ifndef FIXEL_CONIC_INTERNAL_H
 #define FIXEL_CONIC_INTERNAL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — Bézier curves and splines: de Casteljau subdivision in fixed
  * point, adaptive flattening, and the stroker for the line style. */
 #include "fixel/curve.h"

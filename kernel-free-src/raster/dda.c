@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the fixed-point DDA line, clipped exactly, with its trace. */
 #include "fixel/line.h"
 #include "../base/fx_internal.h"

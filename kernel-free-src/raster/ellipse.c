@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — midpoint ellipse (both regions) and filled ellipse.
  *
  * One quadrant, X, Y >= 0, semi-axes rx, ry >= 1. The decision of the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the line dispatcher: fx_line picks the stroker (dashed or thick),
  * the chosen clipper (clip.c) or the direct step-range clip, and hands the
  * steps to the Bresenham leaf (bres.c). Nothing below calls back up here. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Bresenham leaf's private interface (bres.c); not installed.
  *
  * The line code is a chain with one-way dependencies:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the software pointer sprite: drawing with save-under on rotated
  * surfaces. Works pixel by pixel through the native accessors: a sprite is
  * at most 64x64, and one code path serves every format and rotation. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — line attributes: patterned 1-pixel lines, thick lines with caps
  * and joins, polylines, and the stroker the curves feed.
  *

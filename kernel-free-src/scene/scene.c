@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — scene-script tokenizer, argument parsing and dispatch. */
 #include "fixel/scene.h"
 #include "fixel/error.h"

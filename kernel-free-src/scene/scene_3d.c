@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — scene commands of the 3D pipeline: camera, projections, the
  * model matrix stack, lights, materials, shading and visibility modes,
  * meshes, planar shadows and the shadow buffer. State lives in the arena

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the argument table of the scene-script language (issue #26).
  *
  * One entry per command: the type and range of every argument, and where an

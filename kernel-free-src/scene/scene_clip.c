@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — scene commands of the clip module: clip windows and their stack,
  * the line clipper, exterior clipping, polygon clipping, and the current
  * transform (a stack of 3x3 matrices, window-to-viewport as its base).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — scene commands of the conic module: circles, discs, arcs, pie
  * slices, antialiased circles and ellipses. Angles are degrees in the script
  * (decimals allowed), counter-clockwise with y up. */

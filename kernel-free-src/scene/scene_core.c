@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the foundation's scene commands: surface set-up, colour, pixels,
  * rectangles and the Bresenham line. */
 #include "fixel/error.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — scene commands of the fill module: polygons, triangles, Gouraud
  * shading, blending and fill styles. The module's state (the pattern, the
  * style the context points at, a large edge table) lives in the arena. */

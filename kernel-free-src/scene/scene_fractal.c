@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — scene commands of the fractal module: escape-time sets and the
  * colour-map setting they share with the viz commands, Koch curves, random
  * fractals, IFS and space-filling curves. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Scene state shared by the fractal and viz commands (private to the core). */
 #ifndef FIXEL_SCENE_FRACTAL_H
 #define FIXEL_SCENE_FRACTAL_H

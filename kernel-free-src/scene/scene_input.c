@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — scene commands of the input module (filled in by that module's work). */
 #include "fixel/scene.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — scene commands of the raster module: DDA and antialiased lines,
  * line attributes, polylines and curves. */
 #include "fixel/curve.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — scene commands of the text module: fonts, text, and the text
  * style (clipping mode, scale, background). Font files come through the
  * host's load_file (fixel-draw inflates .psf.gz there); the core only parses

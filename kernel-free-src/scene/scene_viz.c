@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — scene commands of the viz module: built-in integer fields (the
  * scripts have no data files of their own) and the plots drawn from them. */
 #include "fixel/error.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — PSF1/PSF2 parsing, glyph lookup and text drawing.
  *
  * The parser validates once and stores only in-bounds pointers and sizes;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the built-in 6x10 font: ASCII 32..126 and a box for
  * everything else, drawn for fixel (art in tools/gen/gen_font.py,
  * which generates this file). One byte per row, MSB = left. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The built-in font's bitmap (font_builtin.c, generated); not installed. */
 #ifndef FIXEL_FONT_BUILTIN_H
 #define FIXEL_FONT_BUILTIN_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — 2D homogeneous transforms in Q16.16: constructors, composition,
  * inversion, application to points, and rectangles drawn through a
  * context's transform. Every entry is computed from exact 128-bit sums and

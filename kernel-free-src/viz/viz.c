@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — visualisation of integer grids (contracts in viz.h). */
 #include "fixel/viz.h"
 #include "fixel/error.h"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # `make test-arm`: the unit and golden suites of every Raspberry Pi
 # architecture, cross-built statically and run under qemu's user emulators
 # (called explicitly: this machine has no binfmt handler), plus the
@@ -8,6 +9,15 @@ test-arm:
 
 deps-arm:
 	sh tests/arm/deps.sh
+
+# What tests/arm/deps.sh installs, for `make test`'s package step. The armel
+# libraries are left to tests/arm/deps.sh (tried, not required): bookworm's
+# security suite has no armel, so once zlib1g or libpng16-16 has a security
+# update the armel ones cannot match it (multiarch needs equal versions), and
+# rpi-zero's suites run without them.
+TEST_DEB_PKGS += gcc-aarch64-linux-gnu gcc-arm-linux-gnueabihf gcc-arm-linux-gnueabi \
+                 libc6-dev-arm64-cross libc6-dev-armhf-cross libc6-dev-armel-cross qemu-user-static \
+                 $(foreach a,arm64 armhf,$(foreach p,libdrm-dev libevdev-dev libgpiod-dev libpng-dev zlib1g-dev,$(p):$(a)))
 
 # QUICK=1 leaves the cross-architecture run out of `make test` (for quick
 # local iterations; CI always runs it).

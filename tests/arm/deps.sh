@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Installs what `make test-arm` and `make BOARD=rpi*` need on a Debian 12 host
 # (root): the cross compilers for arm64, armhf and armel (ARMv6), qemu's user
 # emulators, and the target architectures' -dev packages (multiarch) for

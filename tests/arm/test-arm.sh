@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Cross-builds fixel's test suites for each Pi architecture and runs them
 # under qemu-user. An architecture whose toolchain, emulator or target
 # libraries are missing is skipped with the reason (tests/arm/deps.sh installs
@@ -39,15 +40,15 @@ for spec in "rpi4 aarch64-linux-gnu- aarch64-linux-gnu qemu-aarch64-static -ffre
     fi
     skipped=$(make --no-print-directory -s BOARD=$board STATIC=1 print-TEST_NEEDS_128 2>/dev/null)
     [ -n "$skipped" ] && echo "   (no __int128 on $triplet: not built here, run on 64-bit hosts: $skipped)"
-    run_suite "$board unit" $qemu build/$board/tests/unit
+    run_suite "$board unit" $qemu build/$board/static/tests/unit
     if PKG_CONFIG_LIBDIR=/usr/lib/$triplet/pkgconfig pkg-config --exists libpng zlib; then
-        run_suite "$board golden" $qemu build/$board/tests/golden --dir tests/golden --out build/$board/golden
+        run_suite "$board golden" $qemu build/$board/static/tests/golden --dir tests/golden --out build/$board/golden
     else
         # No target libpng: the target renders PPMs, the host compares them
         # with the same golden PNGs.
         echo "   (no libpng for $triplet: rendering PPMs on the target, comparing on the host)"
         rm -rf "build/$board/golden-ppm"
-        run_suite "$board golden render" $qemu build/$board/tests/golden --dir tests/golden --render-ppm build/$board/golden-ppm
+        run_suite "$board golden render" $qemu build/$board/static/tests/golden --dir tests/golden --render-ppm build/$board/golden-ppm
         [ -x build/tests/golden ] || make --no-print-directory -j2 test-bins > /dev/null 2>&1
         run_suite "$board golden" build/tests/golden --dir tests/golden --out build/$board/golden --compare-ppm build/$board/golden-ppm
     fi

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests/boards/: programs on fx_app driven headless (FIXEL_REPLAY, FIXEL_OUT).
 IMGCMP := $(BUILD)/tests/imgcmp
 $(IMGCMP): $(BUILD)/obj/tests/boards/imgcmp.o $(LIB_A)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GPIO button map of boards/linux/buttons.c (FIXEL_GPIO_BUTTONS and a
  * board's BOARD_GPIO_BUTTONS use this syntax); the debouncer it feeds is
  * core and tested in tests/core/test_input.c. */

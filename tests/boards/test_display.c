@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pure logic of the display backends (boards/display/present.c and
  * boards/linux/display/formats.c) on fake
  * device state: pixel format from fbdev bitfields, mode strings, damage

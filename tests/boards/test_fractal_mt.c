@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The threaded escape-time renderer: identical pictures for any thread
  * count, on both arithmetic paths, for Mandelbrot and Julia views. */
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* DRM plane choices on fake property data (boards/linux/display/formats.c): which
  * rotations a plane's "rotation" bitmask offers, whether the plane or a
  * software copy rotates, and the scanout format (XRGB8888 / RGB565). */

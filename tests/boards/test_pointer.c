@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The software pointer through the app and the display on the memory
  * backend: recorded mouse and touch streams (tests/input/pointer/NAME.txt)
  * replayed through fx_app_feed as the evdev reader would, with a program

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Bounded work counted in instructions (issue #14): each huge primitive of
 # tests/core/bounded_cases.h runs under valgrind's lackey, and its count
 # beyond an empty run must stay inside a fixed budget.

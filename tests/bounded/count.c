@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Runs one case of tests/core/bounded_cases.h (argv[1] = its number) on a
  * 16x16 surface, "none" for the process's own cost, "cases" to print how
  * many cases there are, or "control N" to draw

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Bounded work, counted: each huge primitive of tests/core/bounded_cases.h
 # (lines and circles reaching 2^31 pixels off a 16x16 surface, Koch and
 # Hilbert curves of order 12-30...) may execute at most BUDGET instructions

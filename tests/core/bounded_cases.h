@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The huge primitives of the bounded-work tests, shared by the unit test
  * (tests/core/test_bounded.c: each case under a CPU-time limit) and the
  * instruction counter (tests/bounded/: each case's instructions counted

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Tests of the 3D pipeline: matrices (identities, round trips with stated
  * error), the camera, projections of known points, coverage, culling,
  * depth on interpenetrating shapes, near-plane clipping, painter's mode,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Tests of the mesh generators and the OBJ parser: sizes match, indices
  * are in range, normals are unit and outward, closed solids enclose the
  * right volume, malformed OBJ files are rejected with their line. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Antialiased lines: the coverage model (255 units per column, centred on
  * the ideal line), the fast blend paths equal to fx_blend_over bit for bit,
  * and exact clipping for any int32 endpoints. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Bounded work: every primitive's cost follows the visible area and the size
  * of its input, not how far it reaches off-screen. Each case draws a huge
  * primitive onto a 16x16 surface in a child process limited to 1 s of CPU

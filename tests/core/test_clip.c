@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Line clipping: the course's region codes, the three clippers agreeing with
  * each other and with the unclipped Bresenham line pixel for pixel (any int32
  * endpoints), their traces, exterior clipping and the clip stack. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Colour models: exhaustive RGB round trips (every 24-bit colour in the
  * plain build, a stride under the sanitizers), worked values, and the
  * forward conversions against double-precision formulas. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Circles and conics: the course's r = 10 table, the circle against the W5
  * reference loop, discs and filled ellipses against their definitions,
  * clipped-vs-unclipped identity (centres far off-screen, huge radii), arcs

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Curves: flattened Béziers of every degree keep their endpoints and stay
  * within the tolerance of the true curve (both ways: every chord near the
  * curve, every curve point near the polyline); splines meet their pieces'

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fixed-point DDA: the course example, exact rounding of the ideal
  * coordinate, the documented tie difference from Bresenham, long lines,
  * exact clipping for any int32 endpoints, and the --trace table. */

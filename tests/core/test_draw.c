@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Drawing context: isolation between contexts (two threads), clipped
  * rectangles with extreme arguments, exact source-over blending, the trace
  * formatter. */

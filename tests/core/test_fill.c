@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Polygon, triangle and Gouraud fills against a pixel-centre reference
  * rasterizer written here from the definition (docs/BENCHMARK.md, reference pictures,
  * generalised to fx8 vertices and to the nonzero rule). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fixed-point arithmetic against double-precision references. */
 #include <math.h>
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fonts and text: PSF1/PSF2 parsing (valid, every truncation, malformed
  * headers, random mutations; buffers are exact-size heap copies so ASan
  * sees any read past the end), unicode tables, glyph pixels at any scale

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Escape-time fractals: agreement with floating-point references computed
  * here (W9 and zoomed views on both arithmetic paths, a 10^-13 deep zoom
  * against long double), the exact grid, the 64-bit path against a plain

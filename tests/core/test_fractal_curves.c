@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Koch curves, random fractals, space-filling curves and IFS: segment
  * counts, exact culling (a clipped drawing lights exactly the pixels of the
  * unclipped one inside the clip), reproducibility of seeded randomness and

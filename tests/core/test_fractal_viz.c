@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Visualisation: contour positions by exact interpolation, heatmap and
  * colour-bar colours from the maps, arrow directions, streamlines of a
  * vortex staying on their circle. */

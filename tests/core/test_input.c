@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Recorded input streams (tests/input/NAME.txt) replayed through the pure
  * translation layer; each emitted event must match the next "expect" line.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Bresenham lines: the course's worked example, agreement with the textbook
  * loop in all octants, O(1) seeking, exact clipping for any int32 endpoints,
  * and the parallel line algorithm. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fast line walk (line.c: a DDA whose minor coordinate must equal
  * Bresenham's, unrolled, one loop per format, octant and direction) against
  * a plain reference built from fx_bres_minor_at: every pixel of every line,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Polygon clipping: Sutherland-Hodgman and the Weiler-Atherton pieces keep
  * exactly the pixels (centres, top-left rule) of the unclipped polygon inside
  * the window, concave polygons fall apart into separate pieces, and the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Solid rectangles through every fill path this machine has (the portable
  * 16-byte loops and, on x86-64, the AVX / AVX-512 ones) against a plain
  * per-pixel fill: every width 1..300 at every alignment within a cache line,

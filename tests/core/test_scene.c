@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The scene-script interpreter: tokens, comments versus colours, strings,
  * fixed-point arguments, errors with line and column, arena. */
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The clip module's scene commands: inclusive clip windows and their stack,
  * the clipper choice, exterior clipping, the transform stack acting on the
  * foundation's commands, window-to-viewport, and their error messages. */

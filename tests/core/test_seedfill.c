@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Seed fills against a breadth-first reference flood written here, with tiny
  * stacks (overflow rescans), clipping, same-colour fills, and a 4096x4096
  * perfect maze (one long winding region). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The software pointer sprite (kernel-free-src/raster/sprite.c): every pixel format
  * and rotation, clipping at each screen edge, exact save/restore. The
  * expectation is built independently: walk the sprite's logical pixels and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Line attributes: patterned 1-pixel lines and polylines (phase carried
  * across vertices), thick lines against the distance definition, and exact
  * clipping of thick, dashed and joined strokes for any int32 endpoints. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Surfaces and pixel formats: the documented pack/unpack rules, exhaustively
  * where the domain allows, spans, sub-surfaces, strides and blits. */
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Textures: the course's lookup example, bilinear sampling against a double
  * reference, exact affine mapping, procedural textures and gradients. */
 #include <math.h>

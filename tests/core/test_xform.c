@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* 2D transforms: the course's examples, exactness at multiples of 90
  * degrees, composition order, inversion error bound, window-to-viewport, and
  * rectangles drawn through a transform. */

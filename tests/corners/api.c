@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The public functions issue #26 lists, called with corner values (NULL, 0,
  * INT32_MIN/MAX, counts past INT32_MAX / 2) on 1x1 and odd-stride surfaces
  * (RGB888 and GRAY8 of odd width, MONO1, bottom-up) whose pixel memory sits

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Corner tests generated from the scene-script argument table (issue #26).
  *
  * For every command of fx_scene_tables (a command without an entry in

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Corner tests generated from the scene-script argument table (issue #26):
 # tests/corners/corners.c. `make test-corners` runs the plain and the
 # ASan+UBSan build; both are suites of `make test`.

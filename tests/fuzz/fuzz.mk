@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Fuzzing with libFuzzer (clang, ASan + UBSan): tests/fuzz/README.md.
 #   make fuzz                 each target for FUZZ_SECONDS (default 60) on its corpus
 #   make test                 each target over its seed corpus plus FUZZ_RUNS new inputs

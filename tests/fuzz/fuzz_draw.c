@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer target: draw calls with hostile arguments. The bytes choose a
  * surface (any format, 1..64 pixels a side, top-down or bottom-up memory,
  * between guard pages) and then a sequence of primitives whose int32

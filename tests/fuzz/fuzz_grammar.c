@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer target (issue #26): a structure-aware generator for scene
  * scripts, driven by the argument table. The input bytes are read as a
  * stream of choices: which command (of fx_scene_argspecs), which form, how

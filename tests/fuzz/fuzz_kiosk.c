@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer target: fixel-kiosk's config and data-line parsers, every
  * widget type and data form (name=value, name,value, heat maps whole and by
  * row, image paths, CSV headers and rows). The input is split at the first

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer target: the Wavefront OBJ parser, then the 3D pipeline drawing
  * whatever it accepted. The first byte picks shading, culling, polygon mode
  * and visibility; the rest is the OBJ text. The size pass and the parse pass

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer target: the PSF1/PSF2 font parser, and drawing text with
  * whatever it accepted (every glyph row read stays inside the buffer). */
 #include <stdint.h>

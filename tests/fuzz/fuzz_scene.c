@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer target: the scene-script parser and interpreter. Any bytes are a
  * script; surfaces are capped at 128x128 and live between guard pages; the
  * arena is small so that its limits are exercised too. */

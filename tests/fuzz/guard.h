@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Surfaces between guard pages: the pixel memory ends exactly at a
  * PROT_NONE page and starts right after another, so a write one byte out of
  * bounds faults at once (ASan does not see into mmap'd memory). */

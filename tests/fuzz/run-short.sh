@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # make test's fuzz pass: build every target, run it over its seed corpus and
 # then N more generated inputs. One check per target.
 runs=${1:-3000}

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The scene host callbacks the scene fuzz targets share (fuzz_scene.c,
  * fuzz_grammar.c): one surface at a time, capped at 128x128, between guard
  * pages (bottom-up when w + h is odd); every path names the same tiny

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Frames per second of the rotating lit teapot (progs/teapot.c) and the
 # million-point Mandelbrot (progs/mandelbrot.c), both 800x600, with Mesa's
 # llvmpipe on one thread (LP_NUM_THREADS=0) and on all cores, softpipe, and

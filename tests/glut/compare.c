@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Compares a fixel frame with the Mesa reference frame of the same program.
  *
  *   compare [--name NAME] [--diff PREFIX] FIXEL.png MESA.png 2d

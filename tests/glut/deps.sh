@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The Debian packages the GLUT corpus needs on the Mesa side: Xvfb to give
 # freeglut a display, freeglut and GLU headers to build the programs, Mesa's
 # software drivers (llvmpipe, the reference, and softpipe), libpng for the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests/glut: the course's GLUT programs, rendered by fixel's GLUT layer and by
 # Mesa (llvmpipe, the reference) and compared (issue #21; README.md here).
 #   make test-glut-mesa        corpus both ways, "glut-mesa: N passed, N failed"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The GLUT layer's suite (issue #21): unit tests of tests/glut/test_*.c run
 # through tests/lib/runner.c, and headless course-style programs (tests/glut/layer.sh).
 GLUT_TEST_SRC := $(sort $(wildcard tests/glut/test_*.c))

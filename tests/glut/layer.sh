@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Headless course-style programs through the GLUT layer: builds
 # tests/glut/progs/*.c against build/libfixel-glut.a, runs them with
 # FIXEL_BACKEND=memory, FIXEL_GLUT_FRAMES, FIXEL_GLUT_OUT and

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The GLUT corpus against Mesa: renders every program of corpus.txt with Mesa
 # (GALLIUM_DRIVER, default llvmpipe: the reference) and, when fixel's GLUT
 # layer is built, with fixel headless, and compares the two frames.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GL layer against pixels measured on Mesa 22.3 llvmpipe (the probes of
  * tests/glut/mesa: 40x40 window, gluOrtho2D(0, 40, 0, 40), white on black).
  * Coordinates in the expectations are GL window pixels, y up. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — golden-image suite: every tests/golden/scripts/NAME.fxs rendered in
  * every pixel format (or those listed on a "# formats:" line) and compared
  * exactly, as 8-bit RGB, with tests/golden/FORMAT/NAME.png. A mismatch writes

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Installs what the qemu kernel rig needs on a Debian 12 host (run as root;
 # CI runs it through `make deps-kernel`). Each step is skipped when already done
 # so a warm machine pays only the dpkg queries.

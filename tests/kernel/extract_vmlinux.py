@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Pull the uncompressed ELF vmlinux out of an x86 bzImage.
 
 Debian compresses the payload with xz; qemu can boot the bare ELF through its

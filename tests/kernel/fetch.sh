@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Fetches Debian's kernel for amd64 and arm64 (image, headers, kbuild, the few
 # source files gpio-sim needs) into the cache and builds the out-of-tree
 # gpio-sim module for both. Nothing is installed: packages are downloaded and

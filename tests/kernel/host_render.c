@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Host side of the rig: renders a guest scene in memory and writes it as a
  * binary PPM, the expectation the guest's screen is compared with.
  * usage: host_render SCENE W H OUT.ppm */

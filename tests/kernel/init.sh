@@ -1,4 +1,5 @@
 #!/bin/busybox sh
+# SPDX-License-Identifier: MIT
 # /init of the rig's guest: mount the kernel filesystems, load the modules,
 # run every test program in /tests, power off. Markers on the serial console
 # (RIG ...) tell the host where the run is; see README.md.

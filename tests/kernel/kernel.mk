@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The qemu real-kernel rig (tests/kernel/README.md). Included by the top
 # Makefile; `make test-kernel` runs it. Guest programs are every
 # tests/kernel/guest/*.c, linked statically for x86_64 and aarch64 against
@@ -56,10 +57,12 @@ test-kernel: kernel-guests
 
 .PHONY: test-kernel kernel-guests
 
-# `make deps` (CI's first step) also installs the rig's packages.
+# The rig's packages (tests/kernel/deps.sh installs the same ones on its own).
+TEST_DEB_PKGS += qemu-system-x86 qemu-system-arm busybox-static cpio kmod xz-utils python3 bc \
+                 gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
+                 libdrm-dev:arm64 libevdev-dev:arm64 libgpiod-dev:arm64 libpng-dev:arm64 zlib1g-dev:arm64
 deps-kernel:
 	sh $(KT_DIR)/deps.sh
-deps: deps-kernel
 
 # Part of `make test`; FIXEL_SKIP_KERNEL=1 leaves it out (a machine without
 # apt access or the time for a first download).

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Builds the guest's initramfs: static busybox, the kernel modules the tests
 # need (in dependency order, resolved by modprobe against the unpacked
 # image), the out-of-tree gpio-sim module, /init and the test programs.

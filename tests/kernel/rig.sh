@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Drives one rig run: fetch/build the cached kernel pieces, pack one
 # initramfs per architecture, boot both guests and judge them (run.py).
 # usage: rig.sh CACHE_DIR BUILD_DIR     (BUILD_DIR holds <arch>/tests/*, host_render)

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Boot the rig's guests under qemu (TCG) and judge what they report.
 
 The guest talks over its serial console (see README.md): CHECK lines are

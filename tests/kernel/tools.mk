@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # fixel-info and fixel-shot for the rig's guests (tests/kernel/guest/tools.c
 # runs them): the real tools, linked statically per architecture with the
 # DRM/evdev/GPIO details and PNG output they have in a normal build.

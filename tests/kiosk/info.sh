@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # fixel-info on whatever machine runs the tests: every section is printed,
 # missing hardware is reported rather than fatal, and it always says what
 # fixel would open.

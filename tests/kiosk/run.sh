@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # fixel-kiosk end to end: a scripted stream (garbage lines, a source that
 # stalls) drawn headless; chosen frames must match tests/golden/kiosk, frames
 # drawn from damage only must equal full redraws, and garbage is never fatal.

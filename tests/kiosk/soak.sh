@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # fixel-kiosk long run, constant memory (issue #14): LINES scripted data
 # lines (every widget type, CSV, garbage, image reloads including corrupt,
 # missing and oversized files) through the headless kiosk on the memory

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared test helper: canvas_make (tests/lib/canvas.h). */
 #include "canvas.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared test helper: a zeroed XRGB8888 canvas (pixel memory plus the
  * surface over it), the one every line/clip/stroke/transform/font test drew
  * on with its own copy. Free mem when done. */

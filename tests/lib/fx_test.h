@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the unit-test framework: FX_TEST(name) { FX_CHECK(...); } in any
  * file of tests/core, tests/boards or tests/tools is found by
  * tests/lib/gen-registry.sh and run by tests/lib/runner.c (tests/README.md). */

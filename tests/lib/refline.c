@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared test helper: refline_lights (tests/lib/refline.h). */
 #include "refline.h"
 

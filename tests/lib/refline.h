@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared test helper: the definition a Bresenham line is checked against,
  * pixel by pixel (test_line.c's clipped lines, test_clip.c's clippers). */
 #ifndef FX_TEST_REFLINE_H

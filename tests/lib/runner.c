@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — unit-test runner: runs every registered test (or those whose name
  * contains one of the arguments) and ends with "N passed, N failed". */
 #include <stdarg.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared test helper: scene_buf_make (tests/lib/scenebuf.h). */
 #include "scenebuf.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared test helper: a scene host's make_surface over a fixed pixel buffer
  * (test_scene.c, test_scene_clip.c, test_fractal.c's script commands). */
 #ifndef FX_TEST_SCENEBUF_H

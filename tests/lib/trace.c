@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared test helper: the trace collector (tests/lib/trace.h). */
 #include "trace.h"
 

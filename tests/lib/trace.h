@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared test helper: collects what an fx_ctx trace callback prints, one
  * copy per line, so a test can look for the course's trace rows.
  *   ctx.trace = trace_collect;  ...draw...;  trace_has("steps=5");

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The hostile inputs of issue #26 through fixel-draw and fixel-kiosk, plain
 # and ASan+UBSan: tests/script-errors/hostile.sh.
 test-hostile:

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Every hostile input listed in issue #26, run through the tools: each must
 # finish within LIMIT seconds of CPU (default 1; the sanitized build gets 3;
 # CPU, as the machine may be shared; 30x LIMIT of wall time catches a run

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # A gzip-compressed PSF font renders exactly like the plain one, and a
 # corrupt or non-font gzip stream fails with a message and no picture.
 draw=$1; out=$2

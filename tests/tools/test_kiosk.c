@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-kiosk parsers (tools/fixel-kiosk/kiosk_parse.c): config directives
  * and their errors, data lines good and bad, the ring buffer's bound. */
 #include "fx_test.h"

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The test suites again, every process under valgrind (memcheck): the unit
 # and golden runners directly, the tool suites through wrappers that stand
 # in for build/bin/<tool>. Valgrind writes one log per process; -q keeps a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-bench — shared declarations of the harness and its peers.
  *
  * The workloads are the ten of docs/BENCHMARK.md. The

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # fixel-bench: the ten workloads of docs/BENCHMARK.md.
 #
 #   make bench        fixel with the memset/memcpy and double-reference ceilings

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* TABLE 4: what issue 13 asks beyond the ten workloads. Presentation of a
  * 1920x1080 frame from the back buffer to scanout memory (whole frame and a
  * 10 % damage rectangle, with and without 90-degree rotation, shadow and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-bench — the workloads of docs/BENCHMARK.md, timed side by side.
  *
  * Every peer is linked into this one binary and draws into the same

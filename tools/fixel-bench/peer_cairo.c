@@ -1,7 +1,11 @@
+/* SPDX-License-Identifier: MIT */
 /* cairo 1.16 (Debian) drawing into the harness buffer through an image
  * surface. Integer coordinates denote pixel centres, so every vertex gets
  * +0.5; non-AA workloads use CAIRO_ANTIALIAS_NONE, all drawing uses
  * CAIRO_OPERATOR_SOURCE with opaque colours. */
+/* Without the peer libraries (`make all` on a machine without them) this file
+ * compiles to nothing and fixel-bench measures fixel and the ceilings only. */
+#ifdef BENCH_PEERS
 #include "bench.h"
 
 #include <cairo.h>
@@ -199,3 +203,5 @@ const struct peer peer_cairo = {
             [W10_BLIT] = cr_w10,
         },
 };
+
+#endif /* BENCH_PEERS */

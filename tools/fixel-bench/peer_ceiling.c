@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The ceilings: libc's memset (W1, and per row of each W2 rectangle) and
  * memcpy (W10) of the very buffer the libraries draw into, and the plain
  * reference loops (W1 and W2 store loops, W9 double-precision Mandelbrot). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel through its public API only: one context, one call per primitive,
  * the colour set per primitive (fx_ctx_set_color packs it) as an application
  * would.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel's W9 on every core: the frame cut into bands of rows handed out
  * through an atomic counter (bands near the set cost far more than bands
  * outside it, so static halves would leave one core idle), each band drawn

@@ -1,8 +1,12 @@
+/* SPDX-License-Identifier: MIT */
 /* pixman 0.42 (Debian). Fills use pixman_image_fill_rectangles (SRC); the
  * non-AA triangles and polygons go through pixman's own rasterizer with an
  * a1 mask, polygons after an even-odd tessellation into trapezoids that is
  * timed with them (pixman has no polygon call; this is what a user of
  * pixman has to write). */
+/* Without the peer libraries (`make all` on a machine without them) this file
+ * compiles to nothing and fixel-bench measures fixel and the ceilings only. */
+#ifdef BENCH_PEERS
 #include "bench.h"
 
 #include <pixman.h>
@@ -192,3 +196,5 @@ const struct peer peer_pixman = {
             [W10_BLIT] = px_w10,
         },
 };
+
+#endif /* BENCH_PEERS */

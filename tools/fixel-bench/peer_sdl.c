@@ -1,7 +1,11 @@
+/* SPDX-License-Identifier: MIT */
 /* SDL2 2.26 and SDL2_gfx 1.0 (Debian), both through SDL's software renderer
  * on an SDL_Surface that wraps the harness buffer. Blending is off (every
  * colour is opaque and replaces the pixel); each call ends with
  * SDL_RenderFlush so that batched commands are drawn inside the timing. */
+/* Without the peer libraries (`make all` on a machine without them) this file
+ * compiles to nothing and fixel-bench measures fixel and the ceilings only. */
+#ifdef BENCH_PEERS
 #include "bench.h"
 
 #include <SDL.h>
@@ -227,3 +231,5 @@ const struct peer peer_sdlgfx = {
             [W8_TRIS] = gfx_w8,
         },
 };
+
+#endif /* BENCH_PEERS */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Library versions for the table header, so that a table says what it
  * measured. */
 #include "bench.h"

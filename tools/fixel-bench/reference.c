@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reference pictures for the workloads that have no published checksum:
  * the pixel-centre definitions of docs/BENCHMARK.md (reference pictures) drawn literally
  * (even-odd spans with ceil(xa) <= x < ceil(xb), discs as

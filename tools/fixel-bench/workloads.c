@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-bench — the teapot frame and the W9 picture (see workloads.h),
  * everything in caller memory, through the public API. */
 #include "workloads.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-bench — workload frames built from the public API only (the
  * definitions of docs/BENCHMARK.md). They were once library entry points;
  * they are benchmark code, so they live here, and the tests that check them

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-demo — the gallery: one drawing function per page, shared by the
  * headless renderer and the interactive loop. */
 #ifndef FIXEL_DEMO_H

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # fixel-demo: every gallery page rendered headless and compared with its
 # committed picture (in the plain and the sanitized build).
 TEST_SUITES += "$(PLAIN_BUILD)/bin/fixel-demo --golden tests/golden/demo" \

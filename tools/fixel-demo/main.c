@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-demo — the gallery of everything fixel draws (`make run`).
  *
  * With a display it is interactive (keys, mouse, touch, GPIO buttons); on a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-demo pages: each draws a whole page from demo_state alone, so the
  * headless pictures are a pure function of the state. */
 #include <stdarg.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-draw — render a scene script on the in-memory framebuffer. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # fixel-draw inflates .psf.gz fonts with zlib when the target links it (bare
 # cross sysroots may not have it; gzip files are then refused with a message).
 ifneq ($(filter -lz,$(PKG_LIBS)),)

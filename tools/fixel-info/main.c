@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-info — what this machine offers fixel: DRM cards, fbdev devices,
  * input devices (classified as fixel classifies them), GPIO chips, and the
  * display fixel would open. Missing hardware is a "none found" line, never

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-kiosk — the pure half: config and data-line parsers and the
  * fixed-size model they fill. No I/O and no allocation here, so the unit
  * tests and the fuzz target feed it memory buffers directly. */

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # fixel-kiosk: the scripted end-to-end suite (golden frames in tests/golden/kiosk).
 TEST_SUITES += "sh tests/kiosk/run.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk"
 # constant memory over a run (issue #14): a short soak and valgrind pass in

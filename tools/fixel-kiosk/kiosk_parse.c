@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-kiosk parsers: config text and data lines, from memory buffers.
  * Every input is bounded by a length (no NUL needed) and every copy by the
  * fixed sizes in kiosk.h: a hostile line can be rejected but never make the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-kiosk — a dashboard for wall and panel displays.
  *
  * A config file (see examples/kiosk-*.conf and docs/kiosk.md) lays widgets

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel-shot — save what is on the screen to a PNG: the visible part of an
  * fbdev framebuffer, or the scanout buffer of a DRM CRTC when the driver
  * lets this process map it. */

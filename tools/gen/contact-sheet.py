@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Upscale PNGs (8-bit RGB/RGBA/grey, non-interlaced) by an integer factor and
 lay them out in a grid, so that small golden images can be looked at.
 usage: contact-sheet.py OUT.png SCALE FILE.png...   (prints the grid order)"""

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Constants of kernel-free-src/base/colour.c: the sRGB decoding table and the
 inverse matrices, computed exactly (fractions) from the Q16 forward matrices
 so that integer round trips are as tight as the forward rounding allows."""

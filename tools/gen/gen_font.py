@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Generate kernel-free-src/text/font_builtin.c: fixel's own 6x10 bitmap font.
 
 Each glyph is drawn below as rows of 5 pixels ('#' set), starting at cell

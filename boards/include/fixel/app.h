@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the program's view: a display, input devices and GPIO buttons
  * behind GLUT-style callbacks and one main loop.
  *
@@ -90,6 +91,10 @@
 #include "fixel/event.h"
 #include "fixel/surface.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct fx_app fx_app;
 
 typedef enum fx_pointer_mode {
@@ -161,5 +166,9 @@ int fx_app_frame_count(const fx_app *a);
 /* GLUT-style calls on the most recently opened app. */
 void fx_post_redisplay(void);
 int fx_main_loop(void);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,8 +1,13 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — GPIO push buttons: the description fx_app_options.buttons takes,
  * and the FIXEL_BUTTONS / board profile map syntax. Included by
  * fixel/app.h; usable alone (the input layer sees only this). */
 #ifndef FIXEL_BUTTONS_H
 #define FIXEL_BUTTONS_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* A GPIO push button. */
 typedef struct fx_gpio_button {
@@ -22,5 +27,9 @@ typedef struct fx_gpio_button {
  * insert, f1..f12, enter, esc, space, tab). Names point into buf, which is
  * modified. Returns the number of buttons, or -FX_EINVAL. */
 int fx_gpio_parse_buttons(char *buf, fx_gpio_button *out, int max);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — real displays: DRM/KMS, fbdev and a headless memory display.
  *
  * A display hands the program an fx_surface to draw into and presents damage
@@ -40,6 +41,10 @@
 #include "fixel/log.h"
 #include "fixel/sprite.h"
 #include "fixel/surface.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct fx_display fx_display;
 
@@ -201,5 +206,9 @@ const char *fx_backend_name(fx_backend b);
 /* Log through the display's log function and level (fx_app uses it). */
 void fx_display_log(const fx_display *d, fx_log_priority p, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

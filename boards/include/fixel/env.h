@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the environment, read once, by the program.
  *
  * The library never calls getenv. A program that honours the FIXEL_*
@@ -28,6 +29,10 @@
 #include "fixel/app.h"
 #include "fixel/display.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* FIXEL_BACKEND, FIXEL_PRESENT, FIXEL_DRM_DEVICE, FIXEL_FB_DEVICE,
  * FIXEL_CONNECTOR, FIXEL_MODE, FIXEL_DRM_FORMAT, FIXEL_ROTATION,
  * FIXEL_SW_ROTATION, FIXEL_VT_SWITCH, FIXEL_LOG. */
@@ -37,5 +42,9 @@ int fx_display_options_from_env(fx_display_options *o);
  * FIXEL_FRAMES that is not a positive integer returns -FX_EINVAL (a
  * scripted run must not run forever instead). */
 int fx_app_options_from_env(fx_app_options *o);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — log priorities and the log function type shared by the boards
  * side (display, console, input): diagnostics go through one function the
  * program may replace (fx_display_options.log). */
@@ -5,6 +6,10 @@
 #define FIXEL_LOG_H
 
 #include <stdarg.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* Lower is more important, as in syslog. */
 typedef enum fx_log_priority {
@@ -14,5 +19,9 @@ typedef enum fx_log_priority {
 } fx_log_priority;
 
 typedef void (*fx_log_func)(fx_log_priority priority, void *user, const char *fmt, va_list args);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the in-memory framebuffer: a surface in ordinary memory, for
  * headless runs and tests, and image files (PNG via libpng, binary PPM). */
 #ifndef FIXEL_MEMFB_H
@@ -6,6 +7,10 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "fixel/surface.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct fx_memfb {
     fx_surface surf;
@@ -37,5 +42,9 @@ int fx_read_png_rgb_stream(FILE *f, uint32_t max_side, size_t max_pixels, uint8_
 int fx_read_ppm_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h);
 /* Write 8-bit RGB data as a PNG (used for diff images). */
 int fx_write_png_rgb(const char *path, const uint8_t *rgb, int32_t w, int32_t h);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — helpers about scanout memory that programs outside the library
  * need too (fixel-info, fixel-shot, fixel-bench): the pixel format of an
  * fbdev layout, and the rotated copy both presentation modes are built on.
@@ -8,6 +9,10 @@
 #include <stdint.h>
 
 #include "fixel/surface.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* fbdev pixel layout as FBIOGET_VSCREENINFO reports it, reduced to the
  * fields that decide the format. */
@@ -33,5 +38,9 @@ void fx_rotated_size(int rotation, int32_t w, int32_t h, int32_t *rw, int32_t *r
  * the same format; dst is the physical surface (sides swapped for 90/270);
  * r must lie inside src. Every format is supported, MONO1 included. */
 void fx_copy_rotated(const fx_surface *dst, const fx_surface *src, fx_rect r, int rotation);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

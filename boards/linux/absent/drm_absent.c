@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Built instead of boards/linux/drm/ when libdrm is not there (a board
  * toolchain without the target's libraries): the DRM backend reports
  * itself unavailable, so the automatic order goes on to fbdev and memory. */

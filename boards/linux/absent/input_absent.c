@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Built instead of boards/linux/input/ when libevdev and libgpiod are not
  * there: no input devices and no GPIO lines, said once. */
 #include <stdint.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal to boards/: the console layer (vt.c, signals.c). Above the
  * posix layer only: it knows no display and no backend. The display front
  * end hands in its logger and the acquire/release callbacks of VT

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fatal and terminating signals: run every registered restore function
  * (the display's backend and console restore: async-signal-safe calls
  * only), then hand the signal to whoever had it before, so the exit status

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The console: put the active VT into graphics mode (the text console and
  * its cursor stop drawing over the picture) and switch its keyboard off
  * (keystrokes never reach the shell underneath), and put both back however

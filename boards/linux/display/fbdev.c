@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fbdev backend: format from the bitfields, stride from line_length, the
  * whole smem mapped once. Double buffering by panning where the driver
  * offers a virtual height of two screens; vsync waits that cannot hang the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pure helpers of the Linux display backends: the pixel format of an
  * fbdev bitfield layout, mode strings, a DRM plane's rotation property and
  * its scanout format. No OS headers and no allocation, so tests can feed

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* DRM/KMS backend: one connector, one CRTC, two dumb buffers flipped with
  * vblank events. Falls back to SetCrtc where flips are refused, calls
  * DIRTYFB for drivers that need it (SPI/MIPI-DBI panels) and restores the

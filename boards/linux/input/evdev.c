@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — evdev input through libevdev: discovery, classification, reading
  * (with SYN_DROPPED resynchronisation), hotplug through inotify. */
 #ifndef _GNU_SOURCE

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — GPIO buttons and output lines through libgpiod (v1.6 API). */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal to boards/: the input layer (evdev.c, gpio.c, or the stand-ins
  * of boards/linux/absent). Above the posix layer and the core only: it
  * knows no app and no display. Devices hand their raw events to a sink

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — circles, discs, arcs, pie slices and ellipses.
  *
  * The circle is the course's midpoint circle: p0 = 1 - r, eight-way
@@ -32,6 +33,10 @@
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The midpoint circle outline. With c->trace set, prints the course's table
  * for the first octant: k, p_k and (x_k+1, y_k+1) (at most 1000 rows). */
 void fx_circle(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r);
@@ -59,5 +64,9 @@ void fx_fill_ellipse(const fx_ctx *c, int32_t cx, int32_t cy, int32_t rx, int32_
  * (0 <= b <= fx_circle_octant_end(r)), and the last b of the octant. */
 uint32_t fx_circle_octant_a(uint32_t r, uint32_t b);
 uint32_t fx_circle_octant_end(uint32_t r);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

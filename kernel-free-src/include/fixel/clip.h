@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — clipping: points, lines (Cohen-Sutherland, Liang-Barsky,
  * Nicholl-Lee-Nicholl), exterior clipping, a clip-window stack, and polygons
  * (Sutherland-Hodgman; Weiler-Atherton for concave polygons that fall apart
@@ -29,6 +30,10 @@
 #include "fixel/fixed.h"
 #include "fixel/fill.h"  /* fx_poly_fill16 */
 #include "fixel/xform.h" /* fx_pt16 */
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* ctx->line_clipper. Every choice lights the same pixels; they differ in the
  * steps they take (and trace). */
@@ -129,5 +134,9 @@ int fx_clip_poly_pieces(fx_rect w, const fx_pt16 *in, int n, fx_pt16 *out, int c
                         int max_pieces, void *work, size_t work_size);
 
 /* The pieces are filled with fx_poly_fill16 (fill.h, included above). */
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

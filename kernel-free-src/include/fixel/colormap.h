@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — colour maps: scalar in [0, 1] -> colour, for fractal dwell
  * colouring and pseudo-colour plots.
  *
@@ -21,6 +22,10 @@
 
 #include <stdint.h>
 #include "fixel/surface.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef enum fx_cmap {
     FX_CMAP_GREY,
@@ -46,5 +51,9 @@ fx_cmap fx_cmap_from_name(const char *name);
 const char *fx_cmap_name(fx_cmap m);
 /* 1 for maps that wrap around (HSV). */
 int fx_cmap_cyclic(fx_cmap m);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

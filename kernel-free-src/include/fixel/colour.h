@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — colour models: integer conversions between RGB and CMY, HSV, HLS,
  * YIQ and CIE XYZ.
  *
@@ -32,6 +33,10 @@
 #include "fixel/fixed.h"
 #include "fixel/surface.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct fx_cmy { uint8_t c, m, y; } fx_cmy;
 typedef struct fx_hsv { fx16 h, s, v; } fx_hsv;
 typedef struct fx_hls { fx16 h, l, s; } fx_hls;
@@ -62,5 +67,9 @@ fx_color fx_xyz_to_rgb(fx_xyz c);
  * entry), and linear Q16 -> nearest code. */
 fx16 fx_srgb_to_linear(uint8_t v);
 uint8_t fx_linear_to_srgb(fx16 l);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

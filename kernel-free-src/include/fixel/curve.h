@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — curves: Bézier curves of degree 1..8, uniform cubic B-splines and
  * Catmull-Rom splines, drawn with the context's line style.
  *
@@ -16,6 +17,10 @@
 
 #include <stdint.h>
 #include "fixel/draw.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #define FX_CURVE_TOLERANCE 64 /* default, in 1/256 pixel (a quarter pixel) */
 #define FX_CURVE_MAX_DEPTH 16
@@ -38,5 +43,9 @@ int fx_bezier_flatten(const int64_t *xy256, int n, uint32_t tol, fx_curve_point_
 int fx_bezier(const fx_ctx *c, const int32_t *xy, int n, uint32_t tol);
 int fx_bspline(const fx_ctx *c, const int32_t *xy, int n, uint32_t tol);
 int fx_spline(const fx_ctx *c, const int32_t *xy, int n, uint32_t tol);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

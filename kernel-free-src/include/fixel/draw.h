@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the drawing context.
  *
  * Everything a primitive needs besides its own arguments travels in an
@@ -15,6 +16,10 @@
 
 #include <stdint.h>
 #include "fixel/surface.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* How a primitive's colour meets what is already on the surface. */
 typedef enum fx_blend {
@@ -92,5 +97,9 @@ int fx_fmt(char *buf, size_t size, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — error codes shared by the core and the boards.
  *
  * Functions that can fail return 0 (or a non-negative count) on success and a
@@ -7,6 +8,10 @@
  */
 #ifndef FIXEL_ERROR_H
 #define FIXEL_ERROR_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 enum {
     FX_OK = 0,
@@ -31,5 +36,9 @@ enum {
 
 /* A short English message for a negative (or positive) error code; never NULL. */
 const char *fx_strerror(int err);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the event model: platform-neutral input events and GLUT-style
  * callback dispatch.
  *
@@ -11,6 +12,10 @@
 #define FIXEL_EVENT_H
 
 #include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef enum fx_event_type {
     FX_EVENT_NONE,
@@ -76,5 +81,9 @@ void fx_dispatch(const fx_callbacks *cb, void *user, const fx_event *e);
 /* One line describing e ("mouse left down 12 34"), for logs and tests;
  * returns the length (as fx_fmt). */
 int fx_event_describe(const fx_event *e, char *buf, unsigned size);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — area fills: polygons (even-odd and nonzero), triangles, Gouraud
  * shading, fill styles (patterns, shaders) and the 2D triangle set-up.
  * Every polygon filler of the core is here (fill/fill.c): fx_fill_path's
@@ -43,6 +44,10 @@
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
 #include "fixel/xform.h" /* fx_pt16 */
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef enum fx_fill_rule { FX_FILL_EVENODD = 0, FX_FILL_NONZERO = 1 } fx_fill_rule;
 
@@ -226,5 +231,9 @@ static inline int32_t fx_tri_attr_round(uint64_t v)
 {
     return (int32_t)((int64_t)(v + 0x80000000u) >> 32);
 }
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — fixed-point arithmetic.
  *
  * One scalar type per precision, chosen once for the whole library:
@@ -15,6 +16,10 @@
 #define FIXEL_FIXED_H
 
 #include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef int32_t fx16;
 typedef int32_t fx8;
@@ -129,5 +134,9 @@ fx16 fx16_exp2(fx16 x);
  * error: -FX_EINVAL for no number, -FX_ERANGE when it does not fit. */
 int fx16_parse(const char *s, int len, fx16 *out);
 int fx56_parse(const char *s, int len, fx56 *out);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the whole core API in one include, and the naming rule every
  * public name of the core follows.
  *
@@ -88,5 +89,13 @@
 #include "fixel/texture.h"
 #include "fixel/viz.h"
 #include "fixel/xform.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — bitmap fonts and text.
  *
  * Fonts are PSF1 or PSF2 console fonts (the kind in /usr/share/consolefonts)
@@ -27,6 +28,10 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "fixel/draw.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* Limits a loaded font must respect (larger values: -FX_ERANGE). */
 #define FX_FONT_MAX_DIM    256u   /* width and height in pixels */
@@ -105,5 +110,9 @@ void fx_text_extent(const fx_text_style *st, const char *utf8, int64_t *w, int64
  * fallback glyph. Returns the number of characters drawn at least in part,
  * or -FX_EINVAL when c or utf8 is NULL. */
 int fx_text(const fx_ctx *c, int32_t x, int32_t y, const char *utf8);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

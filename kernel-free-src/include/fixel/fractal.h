@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — escape-time fractals: the Mandelbrot set and filled Julia sets.
  *
  * A view maps a frame of fw x fh pixels onto the complex plane: the frame is
@@ -39,6 +40,10 @@
 #include <stdint.h>
 #include "fixel/fixed.h"
 #include "fixel/surface.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct fx_fractal_view {
     fx56 cre, cim;     /* centre of the frame */
@@ -98,5 +103,9 @@ int fx_fractal_render(const fx_surface *s, fx_rect r, const fx_fractal_view *v,
  * Library API rather than benchmark code: the scene's default Mandelbrot
  * colouring and `colormap w9` use it. */
 void fx_dwell_pal_w9(fx_dwell_pal *pal, uint32_t lut[65], fx_format f);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the integer core behind the GLUT / OpenGL 1.x layer
  * (boards/glut): Q32.32 matrices and vertex transformation, clip-space
  * clipping, the fixed-function lighting equation, and a rasterizer that
@@ -58,6 +59,10 @@
 #include <stdint.h>
 #include "fixel/fixed.h"
 #include "fixel/surface.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef int64_t fx32; /* Q32.32 */
 #define FX32_ONE ((fx32)1 << 32)
@@ -240,5 +245,9 @@ int fx_gl_point_visible(const fx_glv4 *p);
 /* Pixel helpers for glReadPixels / glDrawPixels / glClear (window coords,
  * y up; all clipped to the surface). */
 void fx_gl_clear(fx_gl_target *t, fx_rect r, fx_color c, int color, uint32_t depth, int depth_on);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — iterated function systems: the chaos game and the deterministic
  * "copier" iteration.
  *
@@ -13,6 +14,10 @@
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct fx_ifs_map {
     fx16 a, b, c, d, e, f;
@@ -52,5 +57,9 @@ int32_t fx_ifs_copier(const fx_ctx *c, fx_rect dest, const fx_ifs *s, uint32_t d
 /* The pixel of world point (x, y) (Q16.16) in dest, for callers and tests. */
 void fx_ifs_to_pixel(const fx_ifs *s, fx_rect dest, int64_t x, int64_t y, int32_t *px,
                      int32_t *py);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — raw input to events: pure translation from evdev-style events
  * (type, code, value, as the kernel reports them) to fx_event, with device
  * classes, pointer state, multitouch slots, touch calibration, display
@@ -11,6 +12,10 @@
 
 #include <stdint.h>
 #include "fixel/event.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* Event types and codes: the values of <linux/input-event-codes.h>, named
  * here because the core may not include kernel headers. */
@@ -119,5 +124,9 @@ void fx_debounce_edge(fx_debounce *d, int level, uint64_t t_us);
 int fx_debounce_poll(fx_debounce *d, uint64_t now_us);
 /* When to poll next: the time the pending change settles, or UINT64_MAX. */
 uint64_t fx_debounce_deadline(const fx_debounce *d);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — geometric and random fractal curves: Koch curves and snowflakes,
  * midpoint displacement (fractal lines, coastlines), diamond-square terrain,
  * and the Hilbert and Peano space-filling curves.
@@ -29,6 +30,10 @@
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* The Koch curve K_n from (x0, y0) to (x1, y1) (pixel centres). Returns the
  * number of segments drawn (4^n when the whole curve is visible and its
@@ -77,5 +82,9 @@ uint32_t fx_peano(const fx_ctx *c, int32_t x, int32_t y, int32_t size, uint32_t 
 /* Cell (x, y) of the d-th step of each curve of order n (d < 4^n or 9^n). */
 void fx_hilbert_d2xy(uint32_t n, uint64_t d, uint32_t *x, uint32_t *y);
 void fx_peano_d2xy(uint32_t n, uint64_t d, uint32_t *x, uint32_t *y);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — lines.
  *
  * The 1-pixel line is Bresenham's: from (x0, y0) to (x1, y1) it lights
@@ -18,6 +19,10 @@
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct fx_bres {
     int32_t x0, y0;        /* first pixel */
@@ -193,5 +198,9 @@ void fx_stroke_end(fx_stroker *s);
  * max(|dx|, |dy|) + 1 columns, like Bresenham's). Clipped exactly; ignores
  * the line style. */
 void fx_aaline(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — 3D vectors, 4x4 matrices, the matrix stack, the camera and the
  * projections, all in Q16.16.
  *
@@ -21,6 +22,10 @@
 
 #include <stdint.h>
 #include "fixel/fixed.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct fx_vec3 {
     fx16 x, y, z;
@@ -142,5 +147,9 @@ int fx_mat4_oblique(fx_mat4 *m, fx16 l, fx16 r, fx16 b, fx16 t, fx16 znear, fx16
                     fx_angle alpha, fx16 len, fx16 plane);
 #define FX_OBLIQUE_CAVALIER FX16_ONE
 #define FX_OBLIQUE_CABINET  FX16_HALF
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — triangle meshes: the solids of the course, the Utah teapot, and a
  * Wavefront OBJ parser, all writing into caller-provided arrays.
  *
@@ -20,6 +21,10 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "fixel/mat3d.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct fx_mesh {
     fx_vec3 *pos;
@@ -83,5 +88,9 @@ int fx_mesh_obj_parse(fx_mesh *m, const char *text, size_t len, fx_obj_error *er
 
 /* Smooth per-vertex normals from the triangles (area-weighted average). */
 void fx_mesh_compute_normals(fx_mesh *m);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the 3D pipeline: transform, light, clip, project, rasterize.
  *
  * It follows the OpenGL 1.x fixed pipeline that the course teaches, with
@@ -49,6 +50,10 @@
 #include "fixel/draw.h"
 #include "fixel/mat3d.h"
 #include "fixel/mesh.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* Linear colour, Q16.16 per channel (1.0 = full; light colours may exceed 1). */
 typedef struct fx3d_rgb {
@@ -203,5 +208,9 @@ void fx3d_shadow_off(fx3d *r);
  * current lights and material; what the renderer evaluates per vertex
  * (Gouraud), per face (flat) or per pixel (Phong). */
 fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — the scene-script language: parser and interpreter on a surface.
  *
  * One command per line; '#' starts a comment; integers are decimal (a sign
@@ -19,6 +20,10 @@
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct fx_scene fx_scene;
 
@@ -172,5 +177,9 @@ int fx_scene_check_args(fx_scene *sc, const fx_scene_argspec *spec);
 /* Every command, for --help and docs; NULL-terminated tables. */
 extern const fx_scene_cmd *const fx_scene_tables[];
 const fx_scene_cmd *fx_scene_find(const char *name, size_t len);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

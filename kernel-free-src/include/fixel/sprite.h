@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — a software pointer sprite: an ARGB image with a hotspot drawn onto
  * a (possibly rotated) scanout surface, with the pixels under it saved in a
  * caller-provided buffer so they can be put back exactly.
@@ -17,6 +18,10 @@
 
 #include <stdint.h>
 #include "fixel/surface.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* The largest sprite side, so save buffers have a fixed bound. */
 #define FX_SPRITE_MAX 64
@@ -67,5 +72,9 @@ fx_rect fx_sprite_restore(const fx_surface *dst, fx_sprite_save *sv);
 /* Write the saved pixels into dst without emptying sv (to clean a copy of
  * the surface the sprite was drawn on). */
 void fx_sprite_save_apply(const fx_surface *dst, const fx_sprite_save *sv);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

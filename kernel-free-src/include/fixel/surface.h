@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — surfaces and pixel formats.
  *
  * A surface is plain data: a pointer to row 0, a size, a stride in bytes
@@ -26,6 +27,10 @@
 
 #include <stddef.h>
 #include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef uint32_t fx_color; /* 0xAARRGGBB */
 
@@ -127,5 +132,9 @@ static inline fx_rect fx_surface_rect(const fx_surface *s)
     fx_rect r = {0, 0, s->w, s->h};
     return r;
 }
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — textures: bitmap lookup (nearest, bilinear), affine texture mapping
  * onto triangles and convex polygons, procedural textures in integer
  * arithmetic, and linear/radial gradients. Everything here can also colour
@@ -21,6 +22,10 @@
 #include "fixel/draw.h"
 #include "fixel/fill.h"
 #include "fixel/fixed.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 enum { FX_TEX_REPEAT = 0, FX_TEX_CLAMP = 1 };
 enum { FX_TEX_NEAREST = 0, FX_TEX_BILINEAR = 1 };
@@ -110,5 +115,9 @@ void fx_gradient_shade(const void *gradient, int32_t y, int32_t x, int32_t n, fx
 
 /* Mix a (w = 0) and b (w = 65536) per ARGB channel, rounded to nearest. */
 fx_color fx_color_lerp(fx_color a, fx_color b, fx16 w);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — scientific visualisation of integer grids: pseudo-colour maps
  * with a colour-bar legend, contour lines by marching squares, vector
  * glyphs and streamlines.
@@ -16,6 +17,10 @@
 #include "fixel/colormap.h"
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct fx_grid {
     const int32_t *v;
@@ -59,5 +64,9 @@ int32_t fx_quiver(const fx_ctx *c, fx_rect dest, const fx_vgrid *g, int32_t step
  * (|v| = 0) or takes max_steps in a direction. Returns the steps taken. */
 int32_t fx_streamline(const fx_ctx *c, fx_rect dest, const fx_vgrid *g, int32_t sx, int32_t sy,
                       fx16 h, int32_t max_steps);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel — 2D transformations: 3x3 homogeneous matrices in Q16.16.
  *
  * A point is the column vector (x, y, 1); m[r][c] is row r, column c, so
@@ -31,6 +32,10 @@
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* A point in Q16.16 pixel-centre coordinates. */
 typedef struct fx_pt16 {
@@ -106,5 +111,9 @@ int fx_ctx_transformed(const fx_ctx *c);
  * with the identity both are exactly fx_fill_rect / fx_rect_outline. */
 void fx_xform_fill_rect(const fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h);
 void fx_xform_rect_outline(const fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h);
+
+#ifdef __cplusplus
+}  /* extern "C" */
+#endif
 
 #endif

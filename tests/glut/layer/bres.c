@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Course style: Bresenham with GL_POINTS, gluOrtho2D called in MODELVIEW,
  * a mouse-drawn polyline, keyboard and a right-button menu. */
 #include <GL/glut.h>

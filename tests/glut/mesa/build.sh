@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Builds the shim and the corpus the Mesa way: sh build.sh OUTDIR [NAME...]
 set -u
 here=$(cd "$(dirname "$0")/.." && pwd)

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Builds the corpus against freeglut + Mesa and renders each program's
 # compared frame with the LD_PRELOAD shim, under one Xvfb.
 #   sh tests/glut/mesa/run.sh OUTDIR [NAME...]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* LD_PRELOAD shim that makes an unchanged freeglut + Mesa program behave like
  * fixel's GLUT layer headless:
  *   FIXEL_GLUT_FRAMES=N   end the program after its N-th frame

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Bitmap text in every GLUT bitmap font, with a string centred by width. */
 #include <GL/freeglut.h>   /* glutBitmapString is freeglut's */
 #include <string.h>

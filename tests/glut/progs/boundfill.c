@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Boundary fill (4-connected, recursive) that reads the frame back with
  * glReadPixels to find the border. */
 #include <GL/glut.h>

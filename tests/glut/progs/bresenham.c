@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Lab 2: Bresenham's line drawing algorithm (all octants) with GL_POINTS. */
 #include <GL/glut.h>
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Cohen-Sutherland line clipping. Left: the clip window (GL_LINE_LOOP) and
  * the lines in red; right: the viewport, with the clipped lines mapped into it
  * by the window-to-viewport transformation. */

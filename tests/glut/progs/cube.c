@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The seed program: a colour cube of GL_QUADS seen from (3,2,1). */
 #include <GL/glut.h>
 

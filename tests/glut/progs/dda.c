@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* DDA line algorithm. The window is 800x600 but the world is 400x300, so
  * every unit is two pixels wide and the points come out dotted. */
 #include <GL/glut.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Display lists: a petal compiled once, a flower list that calls it eight
  * times, and a field of flowers drawn with glCallList. */
 #include <GL/glut.h>

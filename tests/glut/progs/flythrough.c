@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Flythrough with a camera kept as eye + u, v, n (Hill, ch. 7): slide, roll,
  * pitch and yaw, the view matrix loaded with glLoadMatrixf.
  * Keys: f/b slide forward/back, l/r slide left/right, u/d up/down,

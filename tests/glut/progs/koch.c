@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Koch curve, recursion depths 1 to 4, in the default -1..1 coordinates. */
 #include <GL/glut.h>
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Liang-Barsky line clipping with a window-to-viewport mapping. */
 #include <GL/glut.h>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Line stipple patterns and widths (after the Red Book's lines.c), with
  * integer endpoints. */
 #include <GL/glut.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Mandelbrot set: a million separate glBegin(GL_POINTS)/glEnd pairs, one per
  * sample of a 1000x1000 grid squeezed into an 800x600 window. Redraws from the
  * idle callback, so it doubles as a benchmark. */

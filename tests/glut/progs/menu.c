@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Popup menu on the right button: pick a shape and, from a submenu, a colour. */
 #include <GL/glut.h>
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Midpoint circle algorithm with eight-way symmetry. */
 #include <GL/glut.h>
 

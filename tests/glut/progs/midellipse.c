@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Midpoint ellipse algorithm (regions 1 and 2), four-way symmetry. */
 #include <GL/glut.h>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Polylines drawn with the mouse: each left click adds a vertex, a right
  * click starts a new polyline, 'c' clears everything. */
 #include <GL/glut.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Scan-line polygon fill: intersections of each scan line with the edges are
  * sorted and filled in pairs with GL_LINES. */
 #include <GL/glut.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sierpinski gasket by the chaos game: 5000 random points (Angel, ch. 2). */
 #include <GL/glut.h>
 #include <stdlib.h>

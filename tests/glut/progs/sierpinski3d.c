@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* 3D Sierpinski gasket: a tetrahedron divided into four smaller ones, recursively,
  * one colour per face, hidden surfaces removed with the depth buffer (Angel, ch. 2). */
 #include <GL/glut.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Smooth (Gouraud) shading of a triangle and a quad strip, and a flat-shaded
  * fan beside them: the provoking vertex picks the fan's colours. */
 #include <GL/glut.h>

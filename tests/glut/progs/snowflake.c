@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Koch snowflake with GL_LINE_LOOP in the default coordinates (no projection
  * set at all), drawn with a turtle. */
 #include <GL/glut.h>

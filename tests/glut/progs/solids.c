@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GLUT solids in a 3x3 grid, lit, each one turned a little. */
 #include <GL/glut.h>
 

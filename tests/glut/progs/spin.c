@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The spinning square of the Red Book's double.c: double-buffered, turned two
  * degrees each frame by the idle callback's redisplay. */
 #include <GL/glut.h>

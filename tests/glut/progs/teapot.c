@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A lit teapot that spins two degrees a frame: depth test, one light,
  * GL_COLOR_MATERIAL. Redrawn from the idle callback (also the benchmark). */
 #include <GL/glut.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A checkerboard texture made in the program, on a flat quad and a tilted one
  * (after the Red Book's checker.c). */
 #include <GL/glut.h>

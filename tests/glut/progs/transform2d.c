@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* 2D transformations: a house translated, rotated about a pivot and scaled,
  * each in its own glPushMatrix/glPopMatrix. */
 #include <GL/glut.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GLUT wire solids, unlit, each in its own colour. */
 #include <GL/glut.h>
 

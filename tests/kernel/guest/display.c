@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Guest program: the display backends on real drivers. Each case runs in a
  * child process so a crash (deliberate or not) cannot take the rest down,
  * and so the console/CRTC state can be inspected after the child is gone.

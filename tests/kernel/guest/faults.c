@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Guest program: faults (issue 14). The console must come back — text mode,
  * keyboard mode, the CRTC — when the program gets SIGHUP and when the shell
  * that started it (the session leader owning the VT) is SIGKILLed, which

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Helpers for programs that run inside the qemu guest (see ../README.md for
  * the marker protocol). Header-only so each guest program stays one .c file. */
 #ifndef FIXEL_GUEST_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Guest program: input and the main loop on real kernel devices — uinput
  * mice, multitouch screens and keyboards, qemu's virtio tablet driven from
  * the host, gpio-sim lines as bouncing buttons and an LED, hotplug and

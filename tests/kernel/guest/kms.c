@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Guest program: DRM plane features on real drivers — the scanout format
  * (XRGB8888 / RGB565) and plane rotation versus software rotation.
  *

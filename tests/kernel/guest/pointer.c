@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Guest program: the software pointer on real scanout (bochs-drm on x86_64,
  * virtio-gpu with DIRTYFB on aarch64). A uinput relative mouse moves it;
  * the host's screendump must show the bars picture with the arrow at the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Test pictures drawn identically in the guest (on a real display) and on
  * the host (in memory, as the expectation). Each is asymmetric in both axes
  * so a wrong rotation or mirror cannot match by accident. Only the core

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Guest program: the fixel-info and fixel-shot binaries (in /bin, built by
  * tools.mk) on real drivers.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* uinput devices for the guest programs that inject input (input.c,
  * pointer.c, tools.c): each sets the capabilities its cases need on a
  * libevdev, these helpers add the shared multitouch set and turn it into a

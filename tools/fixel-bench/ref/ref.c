@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The double-precision reference of W9 (and plain store loops for W1 and W2),
  * compiled twice by bench.mk: as-is at -O2 -fno-tree-vectorize (peer "ref",
  * the baseline docs/BENCHMARK.md names) and with -DREF_NATIVE at -O3

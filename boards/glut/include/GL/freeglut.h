@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel's own <GL/freeglut.h> (boards/glut). */
 #ifndef FIXEL_GL_FREEGLUT_H
 #define FIXEL_GL_FREEGLUT_H

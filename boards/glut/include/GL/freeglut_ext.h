@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel's own freeglut extensions for the GLUT layer on fixel (boards/glut). */
 #ifndef FIXEL_GL_FREEGLUT_EXT_H
 #define FIXEL_GL_FREEGLUT_EXT_H

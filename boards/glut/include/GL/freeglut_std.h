@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel's own GLUT API (the classic GLUT 3 / freeglut "std" part), for the
  * GLUT layer on fixel (boards/glut). Written for fixel from the published
  * API; see boards/glut/README.md for what is covered. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel's own <GL/gl.h>: OpenGL 1.x immediate mode on fixel (boards/glut).
  * Written for fixel; installed under $(includedir)/fixel-glut/GL so it never
  * meets Mesa's. Every function declared here links; those the layer does not

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel's own <GL/glu.h> for the GLUT layer on fixel (boards/glut). */
 #ifndef FIXEL_GL_GLU_H
 #define FIXEL_GL_GLU_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixel's own <GL/glut.h> (boards/glut): GLUT on fixel framebuffers. As
  * freeglut's, it brings the freeglut extensions too. */
 #ifndef FIXEL_GL_GLUT_H

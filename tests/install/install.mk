@@ -1,0 +1,18 @@
+# SPDX-License-Identifier: MIT
+# make install/uninstall into staging directories, man pages, the kiosk unit
+# (tests/install/install.sh).
+TEST_DEB_PKGS += man-db systemd
+TEST_SUITES += "sh tests/install/install.sh $(BUILD)"
+.PHONY: test-install
+test-install: all
+	@sh tests/run-suites.sh "sh tests/install/install.sh $(BUILD)"
+
+# `make deb`: Debian packages for amd64, arm64 and armhf (tests/deb/deb.sh);
+# DEB_ARCHES= to choose. Installs what it needs first (root) or names it.
+DEB_ARCHES ?= amd64 arm64 armhf
+DEB_BUILD_DEB_PKGS := dpkg-dev debhelper lintian fakeroot crossbuild-essential-arm64 crossbuild-essential-armhf \
+  qemu-user-static $(foreach a,arm64 armhf,$(foreach p,libdrm-dev libevdev-dev libgpiod-dev libpng-dev zlib1g-dev,$(p):$(a)))
+.PHONY: deb
+deb:
+	@sh tests/deps.sh --for "make deb" $(sort $(DEB_PKGS) $(DEB_BUILD_DEB_PKGS))
+	@sh tests/run-suites.sh "sh tests/deb/deb.sh build/deb $(DEB_ARCHES)"
