@@ -30,17 +30,30 @@ $(GLUT_PC): boards/glut/glut.mk
 	printf 'prefix=%s\nlibdir=$${prefix}/lib\nincludedir=$${prefix}/include\n\nName: fixel-glut\nDescription: GLUT and OpenGL 1.x immediate mode on fixel framebuffers\nVersion: %s\nRequires.private: fixel\nLibs: -L$${libdir} -lfixel-glut -lfixel\nLibs.private: -lm -lpthread\nCflags: -I$${includedir}/fixel-glut\n' \
 	  '$(PREFIX)' '$(VERSION)' > $@
 
-.PHONY: glut install-glut
+.PHONY: glut install-glut uninstall-glut
 glut: $(GLUT_A) $(if $(filter 1,$(STATIC)),,$(GLUT_SO)) $(GLUT_PC)
 all: glut
 lib: glut
 
+# The directories are the top Makefile's (LIBDIR, INCLUDEDIR, PKGCONFIGDIR);
+# fixel-glut.pc is written for them at install time, like fixel.pc.
+GLUT_HEADERS := $(notdir $(wildcard boards/glut/include/GL/*.h))
 install-glut: glut
-	install -d $(DESTDIR)$(PREFIX)/include/fixel-glut/GL $(DESTDIR)$(PREFIX)/lib/pkgconfig
-	install -m 644 boards/glut/include/GL/*.h $(DESTDIR)$(PREFIX)/include/fixel-glut/GL/
-	install -m 644 $(GLUT_A) $(DESTDIR)$(PREFIX)/lib/
-	$(if $(filter 1,$(STATIC)),,install -m 755 $(GLUT_SO) $(DESTDIR)$(PREFIX)/lib/ && \
-	  ln -sf libfixel-glut.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libfixel-glut.so.$(SOMAJOR) && \
-	  ln -sf libfixel-glut.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libfixel-glut.so)
-	install -m 644 $(GLUT_PC) $(DESTDIR)$(PREFIX)/lib/pkgconfig/
+	install -d $(DESTDIR)$(INCLUDEDIR)/fixel-glut/GL $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR)
+	install -m 644 boards/glut/include/GL/*.h $(DESTDIR)$(INCLUDEDIR)/fixel-glut/GL/
+	install -m 644 $(GLUT_A) $(DESTDIR)$(LIBDIR)/
+	$(if $(filter 1,$(STATIC)),,install -m 755 $(GLUT_SO) $(DESTDIR)$(LIBDIR)/ && \
+	  ln -sf libfixel-glut.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libfixel-glut.so.$(SOMAJOR) && \
+	  ln -sf libfixel-glut.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libfixel-glut.so)
+	printf 'libdir=%s\nincludedir=%s\n\nName: fixel-glut\nDescription: GLUT and OpenGL 1.x immediate mode on fixel framebuffers\nVersion: %s\nRequires.private: fixel\nLibs: -L$${libdir} -lfixel-glut -lfixel\nLibs.private: -lm -lpthread\nCflags: -I$${includedir}/fixel-glut\n' \
+	  '$(LIBDIR)' '$(INCLUDEDIR)' '$(VERSION)' > $(DESTDIR)$(PKGCONFIGDIR)/fixel-glut.pc
 install: install-glut
+
+# Runs before fixel's own uninstall, which then removes the emptied directories.
+uninstall-glut:
+	rm -f $(GLUT_HEADERS:%=$(DESTDIR)$(INCLUDEDIR)/fixel-glut/GL/%) \
+	  $(DESTDIR)$(LIBDIR)/libfixel-glut.a $(DESTDIR)$(LIBDIR)/libfixel-glut.so \
+	  $(DESTDIR)$(LIBDIR)/libfixel-glut.so.$(SOMAJOR) $(DESTDIR)$(LIBDIR)/libfixel-glut.so.$(VERSION) \
+	  $(DESTDIR)$(PKGCONFIGDIR)/fixel-glut.pc
+	-rmdir $(DESTDIR)$(INCLUDEDIR)/fixel-glut/GL $(DESTDIR)$(INCLUDEDIR)/fixel-glut 2>/dev/null
+uninstall: uninstall-glut
