@@ -1,6 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* fixel — in-memory framebuffer and image files. */
 #define _POSIX_C_SOURCE 200809L
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE /* realpath, also in builds (the rig) that do not pass -D_GNU_SOURCE */
+#endif
 #include "fixel/memfb.h"
 #include "fixel/error.h"
 

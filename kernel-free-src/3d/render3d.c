@@ -7,6 +7,8 @@
 #include "fixel/error.h"
 #include "../base/fx_internal.h"
 
+static inline fx16 neg_sat(fx16 v) { return v == INT32_MIN ? INT32_MAX : -v; }
+
 /* Interpolated attributes after the depth: 0-2 colour (or normal for Phong),
  * 3-5 the colour without the shadow light (or eye position for Phong), 6-8
  * the light's screen position and depth for the shadow buffer. */
@@ -1034,8 +1036,9 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                 for (int i = 0; i < 3; i++) {
                     fx_vec4 e = {ep[i].x, ep[i].y, ep[i].z, FX16_ONE};
                     fx_vec4 q = fx_mat4_apply(&shadow, e);
-                    if (q.w < 0) { /* the same projective point, w > 0 */
-                        q.x = -q.x, q.y = -q.y, q.z = -q.z, q.w = -q.w;
+                    if (q.w < 0) { /* the same projective point, w > 0; saturating:
+                                    * a saturated product may be INT32_MIN */
+                        q.x = neg_sat(q.x), q.y = neg_sat(q.y), q.z = neg_sat(q.z), q.w = neg_sat(q.w);
                     }
                     fx_vec4 c = fx_mat4_apply(P, q);
                     keep[i].c[0] = c.x;
