@@ -9,9 +9,12 @@ P=0; F=0
 tmp=$(mktemp)
 for cmd in "$@"; do
     echo "== $cmd"
+    t0=$(date +%s)
     sh -c "$cmd" > "$tmp" 2>&1
     rc=$?
     cat "$tmp"
+    # CI has a time limit: each suite's share of it is worth seeing.
+    echo "== took $(( $(date +%s) - t0 )) s"
     line=$(grep -E '^([A-Za-z0-9_-]+: )?[0-9]+ passed, [0-9]+ failed' "$tmp" | tail -n 1)
     p=$(echo "$line" | sed -nE 's/^([A-Za-z0-9_-]+: )?([0-9]+) passed, ([0-9]+) failed.*/\2/p')
     f=$(echo "$line" | sed -nE 's/^([A-Za-z0-9_-]+: )?([0-9]+) passed, ([0-9]+) failed.*/\3/p')
