@@ -199,7 +199,7 @@ static void hits_rec(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, fx_rt_hi
     if (!rt_box_meets(&o->box, S, c))
         return;
     if (o->kind < FX_RT_UNION) {
-        rt_leaf_hits(o, i, rt_xform(&o->inv, S, 1), rt_xform(&o->inv, c, 0), out);
+        rt_leaf_hits(o, i, rt_xform(&o->inv, S, 1), rt_xform_dir24(&o->inv, c), out);
         return;
     }
     fx_rt_hitlist a, b;

@@ -117,7 +117,10 @@ static int fmt16(char *b, size_t n, fx16 v)
 static void say(const tracer *tr, int depth, const char *what, const char *name, int nv, const fx16 *v)
 {
     char line[256];
-    int n = fx_fmt(line, sizeof line, "%*s%s", 2 * depth, "", what);
+    int n = 0;
+    for (int i = 0; i < depth && i < 16; i++)
+        line[n++] = ' ', line[n++] = ' ';
+    n += fx_fmt(line + n, sizeof line - (size_t)n, "%s", what);
     if (name && n < (int)sizeof line)
         n += fx_fmt(line + n, sizeof line - (size_t)n, " %s", name);
     for (int i = 0; i < nv && n < (int)sizeof line - 16; i++) {

@@ -2,12 +2,15 @@
 /* fixel — the ray tracer's generic shapes: where a ray, already in object
  * space, crosses a sphere, cube, square, plane or tapered cylinder.
  *
- * Coordinates are Q16.16; under the scene-scale limit (fixel/rt.h) an
- * object-space point is below 2^14 units (2^30 raw) and a direction below
- * 2^22 raw, so the quadric coefficients A = c.c, B = S.c, C = S.S - 1 are
- * exact Q32.32 values in int64 (|B| < 2^54), the discriminant B^2 - AC is
- * exact in 128 bits, its floor square root is exact, and each root
- * (-B -+ sqrt) / A is rounded once to Q16.16. */
+ * Object-space points S are Q16.16 and directions c Q8.24 (8 more bits:
+ * a shape scaled up by 16 still gets a direction good to 2^-28). Under the
+ * scene-scale limit (fixel/rt.h) a point is below 2^14.3 units (|S| < 2^30.4
+ * raw) and a direction below 48 units (2^29.6 raw), so the quadric
+ * coefficients A = c.c (Q48), B = S.c (Q40, < 2^61) and C = S.S - 1 (Q32,
+ * < 2^62) are exact in int64, the discriminant B^2 - AC (Q80, < 2^124) is
+ * exact in 128 bits, its floor square root (Q40) is exact, and each root
+ * (-B -+ sqrt) / A is rounded once to Q16.16. docs/RAYTRACE.md has the
+ * bounds and the measured errors. */
 #include "rt_int.h"
 
 #define ONE ((int64_t)FX16_ONE)
@@ -20,6 +23,16 @@ fx_vec3 rt_xform(const fx_mat4 *m, fx_vec3 p, int w)
         if (w)
             acc += (int64_t)m->m[i][3] * ONE;
         r[i] = rt_sat((acc + 0x8000) >> 16);
+    }
+    return fx_vec3_make(r[0], r[1], r[2]);
+}
+
+fx_vec3 rt_xform_dir24(const fx_mat4 *m, fx_vec3 d)
+{
+    fx16 r[3];
+    for (int i = 0; i < 3; i++) {
+        int64_t acc = (int64_t)m->m[i][0] * d.x + (int64_t)m->m[i][1] * d.y + (int64_t)m->m[i][2] * d.z;
+        r[i] = rt_sat((acc + 0x80) >> 8);
     }
     return fx_vec3_make(r[0], r[1], r[2]);
 }
@@ -59,12 +72,13 @@ uint64_t rt_isqrt128(fx_s128 n)
     return r;
 }
 
-fx16 rt_div_q32(fx_s128 n, int64_t d)
+fx16 rt_div_shift(fx_s128 n, int64_t d, unsigned shift)
 {
-    return rt_sat(fx_w_rounddiv_away(fx_w_shl(n, 16), d));
+    return rt_sat(fx_w_rounddiv_away(fx_w_shl(n, shift), d));
 }
 
-/* round(num * 2^16 / den) for Q16.16 operands, saturated; den != 0. */
+/* round(num * 2^16 / den) for Q16.16 operands, saturated; den != 0.
+ * |num| < 2^46 (the caller's bound). */
 static fx16 div16(int64_t num, int64_t den)
 {
     int64_t n = num * ONE;
@@ -99,9 +113,21 @@ int rt_box_meets(const fx_rt_box *b, fx_vec3 S, fx_vec3 c)
     return tin <= tout;
 }
 
+/* round(num * 2^16 / den) for a Q16.16 numerator and a Q8.24 direction. */
+static fx16 div24(int64_t num, int64_t den)
+{
+    fx_s128 n = fx_w_from(num);
+    if (den < 0)
+        n = fx_w_neg(n), den = -den;
+    return rt_div_shift(n, den, 24);
+}
+
+/* S + c t for a Q8.24 direction */
+static int64_t at1(fx16 S, fx16 c, fx16 t) { return S + (((int64_t)c * t + ((int64_t)1 << 23)) >> 24); }
+
 static fx_vec3 at(fx_vec3 S, fx_vec3 c, fx16 t)
 {
-    return fx_vec3_make(rt_sat(S.x + rt_mul(c.x, t)), rt_sat(S.y + rt_mul(c.y, t)), rt_sat(S.z + rt_mul(c.z, t)));
+    return fx_vec3_make(rt_sat(at1(S.x, c.x, t)), rt_sat(at1(S.y, c.y, t)), rt_sat(at1(S.z, c.z, t)));
 }
 
 static void put(fx_rt_hitlist *out, int idx, fx16 t, int entering, fx_vec3 n)
@@ -118,8 +144,8 @@ static void put(fx_rt_hitlist *out, int idx, fx16 t, int entering, fx_vec3 n)
     h->normal = n;
 }
 
-/* Roots of A t^2 + 2 B t + C = 0 (Q32.32 coefficients) in Q16.16, sorted;
- * the number of roots (a tangent gives two equal ones). */
+/* Roots of A t^2 + 2 B t + C = 0 in Q16.16 for A in Q48, B in Q40 and C in
+ * Q32, sorted; the number of roots (a tangent gives two equal ones). */
 static int quadratic(int64_t A, int64_t B, int64_t C, fx16 *t0, fx16 *t1)
 {
     if (A == 0) {
@@ -129,7 +155,7 @@ static int quadratic(int64_t A, int64_t B, int64_t C, fx16 *t0, fx16 *t1)
         int64_t d = 2 * B;
         if (d < 0)
             n = fx_w_neg(n), d = -d;
-        *t0 = *t1 = rt_div_q32(n, d);
+        *t0 = *t1 = rt_div_shift(n, d, 24); /* Q32 / Q40 -> Q-8 */
         return 1;
     }
     fx_s128 disc = fx_w_sub(fx_w_mul(B, B), fx_w_mul(A, C));
@@ -139,7 +165,7 @@ static int quadratic(int64_t A, int64_t B, int64_t C, fx16 *t0, fx16 *t1)
     int64_t a = A, n0 = -B - sq, n1 = -B + sq;
     if (a < 0)
         a = -a, n0 = -n0, n1 = -n1;
-    fx16 r0 = rt_div_q32(fx_w_from(n0), a), r1 = rt_div_q32(fx_w_from(n1), a);
+    fx16 r0 = rt_div_shift(fx_w_from(n0), a, 24), r1 = rt_div_shift(fx_w_from(n1), a, 24); /* Q40 / Q48 */
     *t0 = r0 < r1 ? r0 : r1;
     *t1 = r0 < r1 ? r1 : r0;
     return 2;
@@ -150,7 +176,7 @@ static int64_t dot64(fx_vec3 a, fx_vec3 b) { return (int64_t)a.x * b.x + (int64_
 static void sphere(int idx, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
 {
     fx16 t0, t1;
-    if (quadratic(dot64(c, c), dot64(S, c), dot64(S, S) - (ONE << 16), &t0, &t1) < 2)
+    if (quadratic(dot64(c, c), dot64(S, c), dot64(S, S) - (ONE << 16), &t0, &t1) < 2) /* Q48, Q40, Q32 */
         return;
     put(out, idx, t0, 1, at(S, c, t0));
     put(out, idx, t1, 0, at(S, c, t1));
@@ -167,7 +193,7 @@ static void cube(int idx, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
                 return;
             continue;
         }
-        fx16 ta = div16(-ONE - s[i], d[i]), tb = div16(ONE - s[i], d[i]);
+        fx16 ta = div24(-ONE - s[i], d[i]), tb = div24(ONE - s[i], d[i]);
         int sa = -1, sb = 1;
         if (d[i] < 0) {
             fx16 x = ta;
@@ -191,7 +217,7 @@ static void square(int idx, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
 {
     if (c.z == 0)
         return;
-    fx16 t = div16(-(int64_t)S.z, c.z);
+    fx16 t = div24(-(int64_t)S.z, c.z);
     fx_vec3 p = at(S, c, t);
     if (p.x < -FX16_ONE || p.x > FX16_ONE || p.y < -FX16_ONE || p.y > FX16_ONE)
         return;
@@ -207,17 +233,23 @@ static void plane(int idx, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
         return;
     }
     out->inside0 = c.z > 0; /* going up: it came from below, inside */
-    put(out, idx, div16(-(int64_t)S.z, c.z), c.z < 0, fx_vec3_make(0, 0, FX16_ONE));
+    put(out, idx, div24(-(int64_t)S.z, c.z), c.z < 0, fx_vec3_make(0, 0, FX16_ONE));
 }
+
+/* Crossings may be found a hair outside their patch (z just beyond the
+ * side's range, or a cap point just beyond its rim) where the ray passes
+ * through the rim: with this slack both of a ray's crossings are always
+ * found, and the extra candidates lie within the slack of the true ones. */
+#define RIM 64 /* 2^-10 */
 
 static void cylinder(int idx, fx16 s, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
 {
-    int64_t k = (int64_t)s - ONE;      /* radius 1 + k z */
-    int64_t kc = rt_mul(k, c.z);       /* Q16.16 */
-    int64_t F = ONE + rt_mul(k, S.z);  /* radius at the ray's start height */
-    int64_t A = (int64_t)c.x * c.x + (int64_t)c.y * c.y - kc * kc;
-    int64_t B = (int64_t)S.x * c.x + (int64_t)S.y * c.y - F * kc;
-    int64_t C = (int64_t)S.x * S.x + (int64_t)S.y * S.y - F * F;
+    int64_t k = (int64_t)s - ONE;                         /* radius 1 + k z, |k| <= 1 */
+    int64_t kc = ((int64_t)k * c.z + 0x8000) >> 16;       /* Q24 */
+    int64_t F = ONE + rt_mul(k, S.z);                     /* Q16: radius at the start height */
+    int64_t A = (int64_t)c.x * c.x + (int64_t)c.y * c.y - kc * kc;      /* Q48 */
+    int64_t B = (int64_t)S.x * c.x + (int64_t)S.y * c.y - F * kc;       /* Q40 */
+    int64_t C = (int64_t)S.x * S.x + (int64_t)S.y * S.y - F * F;        /* Q32 */
     fx16 tc[4];
     fx_vec3 nc[4];
     int n = 0;
@@ -225,17 +257,17 @@ static void cylinder(int idx, fx16 s, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
     int nr = quadratic(A, B, C, &r[0], &r[1]);
     for (int i = 0; i < nr; i++) {
         fx_vec3 p = at(S, c, r[i]);
-        if (p.z < 0 || p.z > FX16_ONE)
+        if (p.z < -RIM || p.z > FX16_ONE + RIM)
             continue;
         tc[n] = r[i];
         nc[n++] = fx_vec3_make(p.x, p.y, rt_sat(-rt_mul(k, ONE + rt_mul(k, p.z))));
     }
     if (c.z != 0) {
         for (int cap = 0; cap < 2; cap++) {
-            fx16 t = div16((cap ? ONE : 0) - S.z, c.z);
+            fx16 t = div24((cap ? ONE : 0) - S.z, c.z);
             fx_vec3 p = at(S, c, t);
-            int64_t rr = cap ? (int64_t)s * s : ONE * ONE;
-            if ((int64_t)p.x * p.x + (int64_t)p.y * p.y > rr)
+            int64_t rim = (cap ? (int64_t)s : ONE) + RIM;
+            if ((int64_t)p.x * p.x + (int64_t)p.y * p.y > rim * rim)
                 continue;
             tc[n] = t;
             nc[n++] = fx_vec3_make(0, 0, cap ? FX16_ONE : -FX16_ONE);

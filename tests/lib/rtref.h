@@ -1,0 +1,31 @@
+/* SPDX-License-Identifier: MIT */
+/* Shared test helper: a double-precision ray tracer over the same
+ * fx_rt_scene (the same object matrices, taken as exact), written from the
+ * course's definitions, that the fixed-point tracer is measured against
+ * (tests/core/test_rt.c, the benchmark's raytrace rows). */
+#ifndef FX_TEST_RTREF_H
+#define FX_TEST_RTREF_H
+
+#include "fixel/rt.h"
+
+typedef struct rtref_hit {
+    double t;
+    int obj, entering, flip;
+} rtref_hit;
+
+typedef struct rtref_list {
+    int n, inside0;
+    rtref_hit h[64];
+} rtref_list;
+
+/* Every crossing of the whole line S + c t with object i, sorted. */
+void rtref_hits(const fx_rt_scene *s, int i, const double S[3], const double c[3], rtref_list *out);
+/* Whether world point p is inside object i (the solid's definition). */
+int rtref_inside(const fx_rt_scene *s, int i, const double p[3]);
+/* Nearest hit beyond tmin: t, or -1; the unit world normal facing out. */
+double rtref_first_hit(const fx_rt_scene *s, const double S[3], const double c[3], double tmin, int *obj,
+                       double n[3]);
+/* The colour of one pixel, as the fixed-point tracer computes it. */
+fx_color rtref_pixel(const fx_rt_scene *s, int32_t w, int32_t h, int32_t x, int32_t y);
+
+#endif
