@@ -204,13 +204,22 @@ static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 we
             continue;
         fx_rt_hit sh;
         if (fx_rt_first_hit(s, P, l, FX_RT_EPS, &sh, 0) && sh.t < dist) { /* the shadow feeler */
-            if (tr->trace)
-                say(tr, depth, "  light in shadow, blocked at t", 0, 0, 0);
+            if (tr->trace) {
+                char what[64];
+                fx_fmt(what, sizeof what, "  light %d: shadow feeler blocked by object %d at t", li, sh.obj);
+                say(tr, depth, what, 0, 1, &sh.t);
+            }
             continue;
         }
         int64_t d2 = ((int64_t)dist * dist) >> 16; /* Q16.16, may exceed int32 */
         int64_t den = ONE + rt_mul(L->atten, d2);
         fx16 att = (fx16)((ONE << 16) / den);
+        if (tr->trace) {
+            char what[64];
+            fx_fmt(what, sizeof what, "  light %d: visible; distance, m.l, attenuation", li);
+            fx16 v[3] = {dist, lam, att};
+            say(tr, depth, what, 0, 3, v);
+        }
         fx3d_rgb Il = rgb_scale(L->color, att);
         Idiff = rgb_add(Idiff, rgb_scale(rgb_mul(Il, diff), lam));
         if (mat->shininess > 0) {
