@@ -5,7 +5,8 @@
  * no overflow at the scene-scale limit (run under UBSan by SAN=1), the
  * lighting terms (shadows, reflection, refraction and total internal
  * reflection, recursion limit), tiles, the ray-tree trace and the
- * documented errors. */
+ * documented errors. The reference and the scenes are the benchmark's
+ * (tools/fixel-bench/rtref.c). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,7 +16,7 @@
 #include "fixel/rt.h"
 #include "fixel/surface.h"
 #include "fx_test.h"
-#include "rtref.h"
+#include "../../tools/fixel-bench/rtref.h"
 #include "../../kernel-free-src/rt/rt_int.h" /* white box: the box test */
 
 #define Q (1.0 / 65536.0)
@@ -167,41 +168,6 @@ static fx_mat4 place(double tx, double ty, double tz, double sx, double sy, doub
     return m;
 }
 
-/* The course's three examples as trees; returns the root. */
-static int build_csg(fx_rt_scene *s, int which)
-{
-    fx_mat4 m;
-    if (which == 0) { /* lens */
-        m = place(-0.6, 0, 0, 1, 1, 1);
-        int a = fx_rt_add_shape(s, FX_RT_SPHERE, 0, &m, 0);
-        m = place(0.6, 0, 0, 1, 1, 1);
-        int b = fx_rt_add_shape(s, FX_RT_SPHERE, 0, &m, 0);
-        return fx_rt_add_csg(s, FX_RT_INTERSECTION, a, b);
-    }
-    if (which == 1) { /* bowl */
-        m = place(0, 0, 0, 1, 1, 1);
-        int a = fx_rt_add_shape(s, FX_RT_SPHERE, 0, &m, 0);
-        m = place(0, 0, 0, 0.9, 0.9, 0.9);
-        int b = fx_rt_add_shape(s, FX_RT_SPHERE, 0, &m, 0);
-        int d = fx_rt_add_csg(s, FX_RT_DIFFERENCE, a, b);
-        m = place(0, 1.2, 0, 1.2, 1.2, 1.2);
-        int c = fx_rt_add_shape(s, FX_RT_CUBE, 0, &m, 0);
-        return fx_rt_add_csg(s, FX_RT_DIFFERENCE, d, c);
-    }
-    /* rocket */
-    m = place(0, 0, -0.3, 0.4, 0.4, 1.6);
-    int a = fx_rt_add_shape(s, FX_RT_CYLINDER, FX16_ONE, &m, 0);
-    m = place(0, 0, 1.3, 0.4, 0.4, 0.8);
-    int b = fx_rt_add_shape(s, FX_RT_CYLINDER, 0, &m, 0);
-    int u = fx_rt_add_csg(s, FX_RT_UNION, a, b);
-    m = place(0, 0, -0.8, 0.3, 0.3, 0.5);
-    int c = fx_rt_add_shape(s, FX_RT_CYLINDER, FX(4.0 / 3), &m, 0);
-    u = fx_rt_add_csg(s, FX_RT_UNION, u, c);
-    m = place(0, 0, -0.5, 0.8, 0.08, 0.3);
-    int d = fx_rt_add_shape(s, FX_RT_CUBE, 0, &m, 0);
-    return fx_rt_add_csg(s, FX_RT_UNION, u, d);
-}
-
 FX_TEST(rt_csg_hit_lists_follow_the_solids_definition)
 {
     uint32_t seed = 99;
@@ -209,7 +175,7 @@ FX_TEST(rt_csg_hit_lists_follow_the_solids_definition)
         fx_rt_object mem[16];
         fx_rt_scene s;
         fx_rt_scene_init(&s, mem, 16);
-        int root = build_csg(&s, which);
+        int root = rtref_csg(&s, which);
         FX_CHECK(root >= 0);
         int checked = 0, nonempty = 0;
         for (int i = 0; i < 4000; i++) {
@@ -257,7 +223,7 @@ FX_TEST(rt_bounding_boxes_skip_only_missed_shapes)
     fx_rt_object mem[16];
     fx_rt_scene s;
     fx_rt_scene_init(&s, mem, 16);
-    int root = build_csg(&s, 2);
+    int root = rtref_csg(&s, 2);
     uint32_t seed = 4;
     int skipped = 0;
     for (int i = 0; i < 20000; i++) {
@@ -475,56 +441,16 @@ FX_TEST(rt_reflection_and_refraction_follow_the_laws)
     FX_CHECK_EQ(seen.r, 0);
 }
 
-/* The glass and mirror spheres over the marble floor, as the golden
- * script builds them. */
-static void spheres_scene(fx_rt_scene *s, fx_rt_object *mem, int cap)
-{
-    fx_rt_scene_init(s, mem, cap);
-    fx_rt_set_camera(s, fx_vec3_make(0, FX(1.6), 6 * FX16_ONE), fx_vec3_make(0, 0, 0), fx_vec3_make(0, FX16_ONE, 0),
-                     40 * FX16_ONE);
-    s->ambient = fx3d_rgb_from_color(0x303030);
-    s->background = fx3d_rgb_from_color(0x304060);
-    s->max_depth = 5;
-    fx_rt_add_light(s, fx_vec3_make(-4 * FX16_ONE, 6 * FX16_ONE, 6 * FX16_ONE), fx3d_rgb_from_color(0xE0E0E0),
-                    FX(0.005));
-    fx_rt_add_light(s, fx_vec3_make(5 * FX16_ONE, 4 * FX16_ONE, 3 * FX16_ONE), fx3d_rgb_from_color(0x606060), 0);
-    fx_rt_material fm = matte(0xF0F0F0);
-    fm.ambient = fx3d_rgb_from_color(0x404040);
-    fm.specular = fx3d_rgb_from_color(0x404040);
-    fm.shininess = 10;
-    fm.reflectivity = FX(0.15);
-    fm.texture = FX_RT_TEX_MARBLE;
-    fm.tex_color = fx3d_rgb_from_color(0x283040);
-    fm.tex_scale = FX(0.8);
-    fx_mat4 fl = floor_matrix();
-    fx_rt_add_shape(s, FX_RT_PLANE, 0, &fl, &fm);
-    fx_rt_material g = matte(0x101010);
-    g.specular = fx3d_rgb_from_color(0xFFFFFF);
-    g.shininess = 120;
-    g.reflectivity = FX(0.1);
-    g.transparency = FX(0.85);
-    g.ior = FX(1.5);
-    fx_mat4 m = place(-1.1, 0, 0, 1, 1, 1);
-    fx_rt_add_shape(s, FX_RT_SPHERE, 0, &m, &g);
-    fx_rt_material mi = matte(0x202020);
-    mi.ambient = fx3d_rgb_from_color(0x101010);
-    mi.specular = fx3d_rgb_from_color(0xFFFFFF);
-    mi.shininess = 100;
-    mi.reflectivity = FX(0.85);
-    m = place(1.2, 0, 0.3, 1, 1, 1);
-    fx_rt_add_shape(s, FX_RT_SPHERE, 0, &m, &mi);
-}
-
 FX_TEST(rt_image_agrees_with_the_double_reference)
 {
     fx_rt_object mem[8];
     fx_rt_scene s;
-    spheres_scene(&s, mem, 8);
+    FX_CHECK_EQ(rtref_scene(&s, mem, 8, 3), 0);
     const int W = 120, H = 80;
     int differ = 0, worst = 0;
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
-            fx_color a = fx_rt_trace_pixel(&s, W, H, x, y, 0, 0), b = rtref_pixel(&s, W, H, x, y);
+            fx_color a = fx_rt_trace_pixel(&s, W, H, x, y, 0, 0), b = rtref_pixel(&s, W, H, x, y, 0);
             int d = 0;
             for (int k = 0; k < 24; k += 8) {
                 int e = abs((int)((a >> k) & 255) - (int)((b >> k) & 255));
@@ -542,7 +468,7 @@ FX_TEST(rt_tiles_make_the_same_image)
 {
     fx_rt_object mem[8];
     fx_rt_scene s;
-    spheres_scene(&s, mem, 8);
+    FX_CHECK_EQ(rtref_scene(&s, mem, 8, 3), 0);
     const int W = 64, H = 40;
     static uint32_t a[64 * 40], b[64 * 40];
     fx_surface sa, sb;
@@ -561,7 +487,7 @@ FX_TEST(rt_trace_prints_the_ray_tree)
 {
     fx_rt_object mem[8];
     fx_rt_scene s;
-    spheres_scene(&s, mem, 8);
+    FX_CHECK_EQ(rtref_scene(&s, mem, 8, 3), 0);
     lines *L = calloc(1, sizeof *L);
     /* a pixel on the glass sphere: primary, reflected and refracted rays */
     fx_rt_trace_pixel(&s, 240, 160, 80, 80, collect, L);

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* The double-precision reference ray tracer (rtref.h). */
+/* fixel-bench: the double-precision reference ray tracer and the
+ * benchmark's ray-tracing scenes (rtref.h). */
 #include "rtref.h"
 
 #include <math.h>
@@ -290,8 +291,9 @@ static rgb texture(const fx_rt_material *m, const double P[3])
     return o;
 }
 
-static rgb shade(const fx_rt_scene *s, const double S[3], const double c[3], int depth, double weight)
+static rgb shade(const fx_rt_scene *s, const double S[3], const double c[3], int depth, double weight, long *rays)
 {
+    ++*rays;
     double n[3];
     int obj;
     double t = rtref_first_hit(s, S, c, depth ? FX_RT_EPS * Q : 0, &obj, n);
@@ -313,6 +315,7 @@ static rgb shade(const fx_rt_scene *s, const double S[3], const double c[3], int
             continue;
         double sn[3];
         int so;
+        ++*rays; /* the shadow feeler */
         double st = rtref_first_hit(s, P, l, FX_RT_EPS * Q, &so, sn);
         if (st >= 0 && st < dist)
             continue;
@@ -333,7 +336,7 @@ static rgb shade(const fx_rt_scene *s, const double S[3], const double c[3], int
     unit(r);
     double kr = mat->reflectivity * Q, kt = mat->transparency * Q;
     if (kr > 0 && depth < s->max_depth && weight * kr >= s->cutoff * Q) {
-        rgb o = shade(s, P, r, depth + 1, weight * kr);
+        rgb o = shade(s, P, r, depth + 1, weight * kr, rays);
         I.r += kr * o.r, I.g += kr * o.g, I.b += kr * o.b;
     }
     if (kt > 0 && depth < s->max_depth && weight * kt >= s->cutoff * Q) {
@@ -345,7 +348,7 @@ static rgb shade(const fx_rt_scene *s, const double S[3], const double c[3], int
                 td[i] = eta * c[i] + coef * m[i];
             unit(td);
         }
-        rgb o = shade(s, P, td, depth + 1, weight * kt);
+        rgb o = shade(s, P, td, depth + 1, weight * kt, rays);
         I.r += kt * o.r, I.g += kt * o.g, I.b += kt * o.b;
     }
     return I;
@@ -357,8 +360,9 @@ static uint32_t ch(double v)
     return (uint32_t)floor(v * 255 + 0.5);
 }
 
-fx_color rtref_pixel(const fx_rt_scene *s, int32_t w, int32_t h, int32_t x, int32_t y)
+fx_color rtref_pixel(const fx_rt_scene *s, int32_t w, int32_t h, int32_t x, int32_t y, long *rays)
 {
+    long dummy = 0;
     const fx_camera *cam = &s->cam;
     double th = s->tan_half * Q, ux = (2.0 * x + 1 - w) * th / h, vy = (h - 2.0 * y - 1) * th / h;
     double d[3] = {-cam->n.x * Q + ux * cam->u.x * Q + vy * cam->v.x * Q,
@@ -366,6 +370,117 @@ fx_color rtref_pixel(const fx_rt_scene *s, int32_t w, int32_t h, int32_t x, int3
                    -cam->n.z * Q + ux * cam->u.z * Q + vy * cam->v.z * Q};
     unit(d);
     double S[3] = {cam->eye.x * Q, cam->eye.y * Q, cam->eye.z * Q};
-    rgb c = shade(s, S, d, 0, 1);
+    rgb c = shade(s, S, d, 0, 1, rays ? rays : &dummy);
     return 0xFF000000u | ch(c.r) << 16 | ch(c.g) << 8 | ch(c.b);
+}
+
+/* ---- the scenes ---- */
+
+#define FX(v) ((fx16)lround((v) * 65536.0))
+
+const char *const rtref_scene_names[4] = {"lens", "bowl", "rocket", "spheres"};
+
+static fx_mat4 place(double tx, double ty, double tz, double sx, double sy, double sz)
+{
+    fx_mat4 a, b, m;
+    fx_mat4_translate(&a, FX(tx), FX(ty), FX(tz));
+    fx_mat4_scale(&b, FX(sx), FX(sy), FX(sz));
+    fx_mat4_mul(&m, &a, &b);
+    return m;
+}
+
+/* y up: the shapes' z axis turned to +y (the scripts' rtrotate -90 1 0 0) */
+static fx_mat4 upright(fx_mat4 m)
+{
+    fx_mat4 r, o;
+    fx_mat4_rotate_x(&r, fx_angle_from_deg(-90));
+    fx_mat4_mul(&o, &r, &m);
+    return o;
+}
+
+static fx_rt_material mat(fx_color amb, fx_color diff, fx_color spec, int f, double kr, double kt, double ior)
+{
+    fx_rt_material m;
+    memset(&m, 0, sizeof m);
+    m.ambient = fx3d_rgb_from_color(amb);
+    m.diffuse = fx3d_rgb_from_color(diff);
+    m.specular = fx3d_rgb_from_color(spec);
+    m.shininess = f;
+    m.reflectivity = FX(kr);
+    m.transparency = FX(kt);
+    m.ior = FX(ior);
+    return m;
+}
+
+static int shape(fx_rt_scene *s, fx_rt_kind k, double taper, fx_mat4 m, const fx_rt_material *mt)
+{
+    return fx_rt_add_shape(s, k, FX(taper), &m, mt);
+}
+
+static int csg_tree(fx_rt_scene *s, int which, int up, const fx_rt_material *m1, const fx_rt_material *m2)
+{
+#define P(...) (up ? upright(place(__VA_ARGS__)) : place(__VA_ARGS__))
+    if (which == 0) {
+        int a = shape(s, FX_RT_SPHERE, 0, place(-0.6, 0, 0, 1, 1, 1), m1);
+        int b = shape(s, FX_RT_SPHERE, 0, place(0.6, 0, 0, 1, 1, 1), m1);
+        return fx_rt_add_csg(s, FX_RT_INTERSECTION, a, b);
+    }
+    if (which == 1) {
+        int a = shape(s, FX_RT_SPHERE, 0, place(0, 0, 0, 1, 1, 1), m1);
+        int b = shape(s, FX_RT_SPHERE, 0, place(0, 0, 0, 0.9, 0.9, 0.9), m1);
+        int d = fx_rt_add_csg(s, FX_RT_DIFFERENCE, a, b);
+        int c = shape(s, FX_RT_CUBE, 0, place(0, 1.2, 0, 1.2, 1.2, 1.2), m1);
+        return fx_rt_add_csg(s, FX_RT_DIFFERENCE, d, c);
+    }
+    int a = shape(s, FX_RT_CYLINDER, 1, P(0, 0, -0.3, 0.4, 0.4, 1.6), m1);
+    int b = shape(s, FX_RT_CYLINDER, 0, P(0, 0, 1.3, 0.4, 0.4, 0.8), m2);
+    int u = fx_rt_add_csg(s, FX_RT_UNION, a, b);
+    int c = shape(s, FX_RT_CYLINDER, 4.0 / 3, P(0, 0, -0.8, 0.3, 0.3, 0.5), m1);
+    u = fx_rt_add_csg(s, FX_RT_UNION, u, c);
+    int d = shape(s, FX_RT_CUBE, 0, P(0, 0, -0.5, 0.8, 0.08, 0.3), m2);
+    return fx_rt_add_csg(s, FX_RT_UNION, u, d);
+#undef P
+}
+
+int rtref_csg(fx_rt_scene *s, int which) { return csg_tree(s, which, 0, 0, 0); }
+
+int rtref_scene(fx_rt_scene *s, fx_rt_object *mem, int cap, int which)
+{
+    fx_rt_scene_init(s, mem, cap);
+    fx_vec3 up = fx_vec3_make(0, FX16_ONE, 0);
+    s->ambient = fx3d_rgb_from_color(which == 3 ? 0x303030 : 0x404040);
+    fx_rt_material fl = mat(0x303030, 0xA0A0A0, 0, 0, 0, 0, 1);
+    fx_mat4 fm = place(0, -1, 0, 1, 1, 1), turn; /* the floor y = -1: the plane's z turned to +y */
+    fx_mat4_rotate_x(&turn, fx_angle_from_deg(-90));
+    fx_mat4_mul(&fm, &fm, &turn);
+    if (which < 3) {
+        static const double cam[3][7] = {
+            {3, 2.5, 5, 0, 0, 0, 40}, {0, 3, 4, 0, -0.2, 0, 40}, {3, 1.5, 5, 0, 0.6, 0, 45}};
+        const double *c = cam[which];
+        fx_rt_set_camera(s, fx_vec3_make(FX(c[0]), FX(c[1]), FX(c[2])), fx_vec3_make(FX(c[3]), FX(c[4]), FX(c[5])),
+                         up, FX(c[6]));
+        s->background = fx3d_rgb_from_color(0x203040);
+        fx_rt_add_light(s, fx_vec3_make(FX(3), FX(6), FX(4)), fx3d_rgb_from_color(0xFFFFFF), 0);
+        fx_rt_add_shape(s, FX_RT_PLANE, 0, &fm, &fl);
+        fx_rt_material m1 = mat(0x402010, 0xD08030, 0xFFFFFF, 40, 0, 0, 1);
+        fx_rt_material m2 = mat(0x401010, 0xE03020, 0xFFFFFF, 60, 0, 0, 1);
+        return csg_tree(s, which, 1, &m1, &m2) < 0 ? -1 : 0;
+    }
+    fx_rt_set_camera(s, fx_vec3_make(0, FX(1.6), FX(6)), fx_vec3_make(0, 0, 0), up, FX(40));
+    s->background = fx3d_rgb_from_color(0x304060);
+    s->max_depth = 5;
+    s->cutoff = FX(0.004);
+    fx_rt_add_light(s, fx_vec3_make(FX(-4), FX(6), FX(6)), fx3d_rgb_from_color(0xE0E0E0), FX(0.005));
+    fx_rt_add_light(s, fx_vec3_make(FX(5), FX(4), FX(3)), fx3d_rgb_from_color(0x606060), 0);
+    fx_rt_material marble = mat(0x404040, 0xF0F0F0, 0x404040, 10, 0.15, 0, 1);
+    marble.texture = FX_RT_TEX_MARBLE;
+    marble.tex_color = fx3d_rgb_from_color(0x283040);
+    marble.tex_scale = FX(0.8);
+    fx_rt_add_shape(s, FX_RT_PLANE, 0, &fm, &marble);
+    fx_rt_material glass = mat(0, 0x101010, 0xFFFFFF, 120, 0.1, 0.85, 1.5);
+    fx_rt_material mirror = mat(0x101010, 0x202020, 0xFFFFFF, 100, 0.85, 0, 1);
+    if (shape(s, FX_RT_SPHERE, 0, place(-1.1, 0, 0, 1, 1, 1), &glass) < 0 ||
+        shape(s, FX_RT_SPHERE, 0, place(1.2, 0, 0.3, 1, 1, 1), &mirror) < 0)
+        return -1;
+    return 0;
 }
