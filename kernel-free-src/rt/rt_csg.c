@@ -12,6 +12,7 @@
  * exactly as one that starts outside. */
 #include "fixel/error.h"
 #include "rt_int.h"
+#include "../base/fx_internal.h"
 
 #define ONE ((int64_t)FX16_ONE)
 #define WORLD ((int64_t)FX_RT_WORLD * FX16_ONE)
@@ -59,6 +60,68 @@ int fx_rt_add_light(fx_rt_scene *s, fx_vec3 pos, fx3d_rgb color, fx16 atten)
     return s->nlights - 1;
 }
 
+/* The world box of the object box [lo, hi] placed by m (its eight corners),
+ * checked against the scene-scale limit in 64 bits. */
+static int world_box(const fx_mat4 *m, const int64_t lo[3], const int64_t hi[3], fx_rt_box *b)
+{
+    for (int i = 0; i < 3; i++)
+        b->lo[i] = INT32_MAX, b->hi[i] = INT32_MIN;
+    for (int k = 0; k < 8; k++) {
+        const int64_t p[3] = {k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]};
+        for (int i = 0; i < 3; i++) {
+            int64_t acc = (int64_t)m->m[i][0] * p[0] + (int64_t)m->m[i][1] * p[1] + (int64_t)m->m[i][2] * p[2] +
+                          (int64_t)m->m[i][3] * ONE;
+            acc >>= 16;
+            if (acc < -WORLD || acc > WORLD)
+                return -FX_ERANGE;
+            if (acc - 4 < b->lo[i])
+                b->lo[i] = (fx16)(acc - 4);
+            if (acc + 4 > b->hi[i])
+                b->hi[i] = (fx16)(acc + 4);
+        }
+    }
+    return 0;
+}
+
+/* M^-1 of an object's placement, refused when singular or when it scales
+ * an axis below 1/16 (the scene-scale limit). */
+static int inverse(const fx_mat4 *m, fx_mat4 *inv)
+{
+    if (fx_mat4_invert(inv, m) < 0)
+        return -FX_EDOM;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            if (inv->m[i][j] > 16 * FX16_ONE || inv->m[i][j] < -16 * FX16_ONE)
+                return -FX_EDOM;
+    return 0;
+}
+
+int fx_rt_add_mesh(fx_rt_scene *s, const fx_rt_mesh *mesh, const fx_mat4 *m, const fx_rt_material *mat)
+{
+    if (!mesh || !mesh->mesh || !mesh->node || mesh->nnodes < 1)
+        return -FX_EINVAL;
+    if (s->n >= s->cap)
+        return -FX_ENOSPC;
+    fx_mat4 inv;
+    TRY(inverse(m, &inv));
+    const fx_rt_bvh_node *root = &mesh->node[0];
+    const int64_t lo[3] = {root->lo[0], root->lo[1], root->lo[2]}, hi[3] = {root->hi[0], root->hi[1], root->hi[2]};
+    fx_rt_box b;
+    TRY(world_box(m, lo, hi, &b));
+    fx_rt_object *o = &s->obj[s->n];
+    __builtin_memset(o, 0, sizeof *o);
+    o->kind = FX_RT_MESH;
+    o->top = 1;
+    o->left = o->right = -1;
+    o->taper = FX16_ONE;
+    o->inv = inv;
+    o->box = b;
+    o->mesh = mesh;
+    if (mat)
+        o->mat = *mat;
+    return s->n++;
+}
+
 int fx_rt_add_shape(fx_rt_scene *s, fx_rt_kind kind, fx16 taper, const fx_mat4 *m, const fx_rt_material *mat)
 {
     if (kind > FX_RT_CYLINDER || (kind == FX_RT_CYLINDER && (taper < 0 || taper > 2 * FX16_ONE)))
@@ -66,12 +129,7 @@ int fx_rt_add_shape(fx_rt_scene *s, fx_rt_kind kind, fx16 taper, const fx_mat4 *
     if (s->n >= s->cap)
         return -FX_ENOSPC;
     fx_mat4 inv;
-    if (fx_mat4_invert(&inv, m) < 0)
-        return -FX_EDOM;
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            if (inv.m[i][j] > 16 * FX16_ONE || inv.m[i][j] < -16 * FX16_ONE)
-                return -FX_EDOM;
+    TRY(inverse(m, &inv));
     fx_rt_box b;
     if (kind == FX_RT_PLANE) {
         for (int i = 0; i < 3; i++)
@@ -80,24 +138,8 @@ int fx_rt_add_shape(fx_rt_scene *s, fx_rt_kind kind, fx16 taper, const fx_mat4 *
         int64_t r = kind == FX_RT_CYLINDER && taper > FX16_ONE ? taper : ONE;
         int64_t zlo = kind == FX_RT_CYLINDER || kind == FX_RT_SQUARE ? 0 : -ONE;
         int64_t zhi = kind == FX_RT_SQUARE ? 0 : ONE;
-        for (int i = 0; i < 3; i++)
-            b.lo[i] = INT32_MAX, b.hi[i] = INT32_MIN;
-        for (int k = 0; k < 8; k++) {
-            fx_vec3 p = fx_vec3_make((fx16)(k & 1 ? r : -r), (fx16)(k & 2 ? r : -r), (fx16)(k & 4 ? zhi : zlo));
-            /* corners of the object's box, far outside the world, would
-             * saturate: check in 64 bits */
-            for (int i = 0; i < 3; i++) {
-                int64_t acc = (int64_t)m->m[i][0] * p.x + (int64_t)m->m[i][1] * p.y + (int64_t)m->m[i][2] * p.z +
-                              (int64_t)m->m[i][3] * ONE;
-                acc >>= 16;
-                if (acc < -WORLD || acc > WORLD)
-                    return -FX_ERANGE;
-                if (acc - 4 < b.lo[i])
-                    b.lo[i] = (fx16)(acc - 4);
-                if (acc + 4 > b.hi[i])
-                    b.hi[i] = (fx16)(acc + 4);
-            }
-        }
+        const int64_t lo[3] = {-r, -r, zlo}, hi[3] = {r, r, zhi};
+        TRY(world_box(m, lo, hi, &b));
     }
     fx_rt_object *o = &s->obj[s->n];
     __builtin_memset(o, 0, sizeof *o);
@@ -190,7 +232,7 @@ static void combine(int op, const fx_rt_hitlist *A, const fx_rt_hitlist *B, fx_r
     }
 }
 
-static void hits_rec(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
+static void hits_rec(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, int64_t tmin, fx_rt_hitlist *out)
 {
     const fx_rt_object *o = &s->obj[i];
     out->n = 0;
@@ -198,16 +240,20 @@ static void hits_rec(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, fx_rt_hi
     out->overflow = 0;
     if (!rt_box_meets(&o->box, S, c))
         return;
+    if (o->kind == FX_RT_MESH) {
+        rt_mesh_hits(o->mesh, i, rt_xform(&o->inv, S, 1), rt_xform_dir24(&o->inv, c), tmin, out);
+        return;
+    }
     if (o->kind < FX_RT_UNION) {
         rt_leaf_hits(o, i, rt_xform(&o->inv, S, 1), rt_xform_dir24(&o->inv, c), out);
         return;
     }
     fx_rt_hitlist a, b;
-    hits_rec(s, o->left, S, c, &a);
+    hits_rec(s, o->left, S, c, tmin, &a);
     /* an empty left side decides intersection and difference alone */
     if (!a.n && !a.inside0 && o->kind != FX_RT_UNION)
         return;
-    hits_rec(s, o->right, S, c, &b);
+    hits_rec(s, o->right, S, c, tmin, &b);
     combine(o->kind, &a, &b, out);
 }
 
@@ -218,7 +264,7 @@ void fx_rt_hits(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, fx_rt_hitlist
         out->inside0 = out->overflow = 0;
         return;
     }
-    hits_rec(s, i, S, c, out);
+    hits_rec(s, i, S, c, INT32_MIN, out);
 }
 
 static fx_vec3 world_normal(const fx_rt_scene *s, const fx_rt_hit *h)
@@ -238,7 +284,7 @@ int fx_rt_first_hit(const fx_rt_scene *s, fx_vec3 S, fx_vec3 c, fx16 tmin, fx_rt
         if (!s->obj[i].top)
             continue;
         fx_rt_hitlist l;
-        hits_rec(s, i, S, c, &l);
+        hits_rec(s, i, S, c, tmin, &l);
         for (int k = 0; k < l.n; k++) {
             const fx_rt_hit *h = &l.h[k];
             if (h->t <= tmin)

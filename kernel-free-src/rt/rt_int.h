@@ -29,4 +29,8 @@ int rt_box_meets(const fx_rt_box *b, fx_vec3 S, fx_vec3 c);
 /* Leaf crossings in object space (S in Q16.16, c24 in Q8.24), sorted. */
 void rt_leaf_hits(const fx_rt_object *o, int idx, fx_vec3 S, fx_vec3 c24, fx_rt_hitlist *out);
 
+/* A mesh's nearest crossing with tmin < t (object space, c in Q8.24),
+ * appended as an entering and a leaving hit at that t. */
+void rt_mesh_hits(const fx_rt_mesh *rm, int idx, fx_vec3 S, fx_vec3 c24, int64_t tmin, fx_rt_hitlist *out);
+
 #endif

@@ -196,6 +196,8 @@ A(rtscale, F("SX", -16, 16), F("SY", -16, 16), F("SZ", -16, 16));
 A(rtrotate, DEG("DEG"), WR("AX"), WR("AY"), WR("AZ"));
 A(rtshape, FORM("taper"), F("S", 0, 2), FORM(0), W("sphere|cube|square|plane|cylinder|cone"));
 A(rtcsg, W("union|intersection|difference"));
+A(rtmesh, FORM("teapot"), IW("N", 1, 16), FORM("torus"), F("R", 0, 16), F("r", 0, 8), IW("SIDES", 3, 256),
+  IW("RINGS", 3, 256), FORM("obj"), S("FILE"));
 A(raytrace, OPT, XY("X"), XY("Y"), I("W", 0, 16384), I("H", 0, 16384));
 A(rttrace, I("X", 0, 16383), I("Y", 0, 16383));
 
@@ -255,6 +257,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"rtdepth", a_rtdepth, 0, 0}, {"rtidentity", a_none, 0, 0}, {"rtpush", a_none, 0, 0},
     {"rtpop", a_none, "rtpush", 0}, {"rttranslate", a_rttranslate, 0, 0}, {"rtscale", a_rtscale, 0, 0},
     {"rtrotate", a_rtrotate, 0, 0}, {"rtshape", a_rtshape, 0, 0},
+    {"rtmesh", a_rtmesh, 0, "at most 262144 triangles (FX_SCENE_MAX_TRIANGLES), the BVH 2 nodes a triangle"},
     {"rtcsg", a_rtcsg, "rtshape sphere\nrttranslate 0.5 0 0\nrtshape cube", 0},
     {"raytrace", a_raytrace, 0, RTWORK}, {"rttrace", a_rttrace, 0, RTWORK},
     {0, 0, 0, 0},

@@ -258,6 +258,84 @@ static int cmd_shape(fx_scene *sc)
     return e < 0 ? fx_scene_error(sc, "rtshape: TAPER 0..2") : 0;
 }
 
+/* Arena memory for a mesh of nv vertices and nt triangles, its BVH, and
+ * the object that refers to it. */
+static int add_mesh(fx_scene *sc, srt *r, fx_mesh *m, const char *what)
+{
+    fx_rt_mesh *rm = fx_scene_alloc(sc, sizeof *rm);
+    fx_rt_bvh_node *nodes = fx_scene_alloc(sc, (size_t)m->ntris * 2 * sizeof *nodes);
+    uint32_t *order = fx_scene_alloc(sc, (size_t)m->ntris * sizeof *order);
+    fx_mesh *keep = fx_scene_alloc(sc, sizeof *keep);
+    if (!rm || !nodes || !order || !keep)
+        return fx_scene_error(sc, "out of scene memory for the %s's BVH (%d triangles)", what, m->ntris);
+    *keep = *m;
+    int e = fx_rt_mesh_build(rm, keep, nodes, m->ntris * 2, order);
+    if (e == -FX_ERANGE)
+        return fx_scene_error(sc, "rtmesh: the %s has a vertex beyond +-%d units", what, FX_RT_MESH_LIMIT);
+    if (e < 0)
+        return fx_scene_error(sc, "rtmesh: the %s cannot be built (%s)", what, fx_strerror(e));
+    e = fx_rt_add_mesh(&r->s, rm, &r->stack[r->top], &r->mat);
+    if (e == -FX_ENOSPC)
+        return fx_scene_error(sc, "rtmesh: at most %d objects", RT_OBJECTS);
+    if (e == -FX_EDOM)
+        return fx_scene_error(sc, "rtmesh: the transform is singular or scales an axis below 1/16");
+    return e < 0 ? fx_scene_error(sc, "rtmesh: the %s leaves the scene limit (+-%d units)", what, FX_RT_WORLD) : 0;
+}
+
+static int cmd_mesh(fx_scene *sc)
+{
+    GET(r);
+    static const char *const ch[] = {"teapot", "torus", "obj", NULL};
+    int k;
+    TRY(k = fx_scene_arg_choice(sc, ch));
+    fx_mesh m = {0, 0, 0, 0, 0, 0, 0};
+    if (k == 2) {
+        char path[256];
+        TRY(fx_scene_arg_string(sc, path, sizeof path));
+        TRY(fx_scene_end(sc));
+        if (!sc->host.load_file)
+            return fx_scene_error(sc, "files not available");
+        const uint8_t *data;
+        size_t len;
+        int e = sc->host.load_file(sc->host.user, path, &data, &len);
+        if (e < 0)
+            return fx_scene_error(sc, "cannot read '%s': %s", path, fx_strerror(e));
+        fx_obj_error err;
+        int32_t nv, nt;
+        if (fx_mesh_obj_size((const char *)data, len, &nv, &nt, &err) < 0)
+            return fx_scene_error(sc, "%s: %s", path, err.msg);
+        if (nt < 1 || nt > FX_SCENE_MAX_TRIANGLES)
+            return fx_scene_error(sc, "%s: %d triangles (1..%d)", path, nt, FX_SCENE_MAX_TRIANGLES);
+        fx_vec3 *mem = fx_scene_alloc(sc, (size_t)nv * 2 * sizeof(fx_vec3) + (size_t)nt * 3 * sizeof(uint32_t));
+        if (!mem)
+            return fx_scene_error(sc, "out of scene memory for '%s' (%d vertices)", path, nv);
+        fx_mesh o = {mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt};
+        if (fx_mesh_obj_parse(&o, (const char *)data, len, &err) < 0)
+            return fx_scene_error(sc, "%s: %s", path, err.msg);
+        return add_mesh(sc, r, &o, "OBJ mesh");
+    }
+    fx_mesh_params p = {k == 0 ? FX_MESH_TEAPOT : FX_MESH_TORUS, FX16_ONE, 0, 0, 0, 0};
+    if (k == 0) {
+        TRY(fx_scene_arg_int(sc, &p.n));
+    } else {
+        TRY(fx_scene_arg_fx16(sc, &p.a));
+        TRY(fx_scene_arg_fx16(sc, &p.b));
+        TRY(fx_scene_arg_int(sc, &p.n));
+        TRY(fx_scene_arg_int(sc, &p.k));
+    }
+    TRY(fx_scene_end(sc));
+    int32_t nv, nt;
+    if (fx_mesh_size(&p, &nv, &nt) < 0)
+        return fx_scene_error(sc, "rtmesh: bad tessellation");
+    fx_vec3 *mem = fx_scene_alloc(sc, (size_t)nv * 2 * sizeof(fx_vec3) + (size_t)nt * 3 * sizeof(uint32_t));
+    if (!mem)
+        return fx_scene_error(sc, "out of scene memory for the mesh (%d vertices)", nv);
+    m = (fx_mesh){mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt};
+    if (fx_mesh_make(&m, &p) < 0)
+        return fx_scene_error(sc, "rtmesh: bad tessellation");
+    return add_mesh(sc, r, &m, k == 0 ? "teapot" : "torus");
+}
+
 static int cmd_csg(fx_scene *sc)
 {
     GET(r);
@@ -332,6 +410,7 @@ const fx_scene_cmd fx_scene_cmds_rt[] = {
     {"rtscale", cmd_scale, "rtscale SX SY SZ", D},
     {"rtrotate", cmd_rotate, "rtrotate DEG AX AY AZ", D},
     {"rtshape", cmd_shape, "rtshape sphere|cube|square|plane|cylinder|cone | rtshape taper S", D},
+    {"rtmesh", cmd_mesh, "rtmesh teapot N | rtmesh torus R r SIDES RINGS | rtmesh obj \"FILE\"", D},
     {"rtcsg", cmd_csg, "rtcsg union|intersection|difference", D},
     {"raytrace", cmd_raytrace, "raytrace [X Y W H]", D},
     {"rttrace", cmd_trace, "rttrace X Y", D},

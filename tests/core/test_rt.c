@@ -537,3 +537,181 @@ FX_TEST(rt_documented_errors)
                                  fx_vec3_make(0, FX16_ONE, 0), 45 * FX16_ONE),
                 -FX_EDOM);
 }
+
+/* ---- meshes through the BVH ---- */
+
+typedef struct tmesh {
+    fx_mesh m;
+    fx_rt_mesh rm;
+    fx_vec3 *mem;
+    fx_rt_bvh_node *nodes;
+    uint32_t *order;
+} tmesh;
+
+static int make_mesh(tmesh *t, fx_mesh_kind kind, fx16 a, fx16 b, int n, int k)
+{
+    fx_mesh_params p = {kind, a, b, 0, n, k};
+    int32_t nv, nt;
+    if (fx_mesh_size(&p, &nv, &nt) < 0)
+        return -1;
+    t->mem = calloc((size_t)nv * 2 + (size_t)nt, sizeof(fx_vec3));
+    t->m = (fx_mesh){t->mem, t->mem + nv, (uint32_t *)(t->mem + 2 * nv), 0, 0, nv, nt};
+    if (fx_mesh_make(&t->m, &p) < 0)
+        return -1;
+    t->nodes = calloc((size_t)nt * 2, sizeof *t->nodes);
+    t->order = calloc((size_t)nt, sizeof *t->order);
+    return fx_rt_mesh_build(&t->rm, &t->m, t->nodes, nt * 2, t->order);
+}
+
+static void free_mesh(tmesh *t)
+{
+    free(t->mem);
+    free(t->nodes);
+    free(t->order);
+}
+
+/* The nearest crossing over every triangle, in double (t > 0), and how
+ * close it is to a triangle's edge (min barycentric). */
+static double brute_nearest(const fx_mesh *m, const double S[3], const double c[3], double *edge)
+{
+    double best = -1;
+    *edge = 1;
+    for (int32_t i = 0; i < m->ntris; i++) {
+        double v[3][3];
+        for (int k = 0; k < 3; k++) {
+            fx_vec3 p = m->pos[m->tri[3 * i + k]];
+            v[k][0] = p.x * Q, v[k][1] = p.y * Q, v[k][2] = p.z * Q;
+        }
+        double e1[3], e2[3], tv[3], p[3], q[3];
+        for (int k = 0; k < 3; k++)
+            e1[k] = v[1][k] - v[0][k], e2[k] = v[2][k] - v[0][k], tv[k] = S[k] - v[0][k];
+        p[0] = c[1] * e2[2] - c[2] * e2[1], p[1] = c[2] * e2[0] - c[0] * e2[2], p[2] = c[0] * e2[1] - c[1] * e2[0];
+        double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
+        if (det == 0)
+            continue;
+        double u = (tv[0] * p[0] + tv[1] * p[1] + tv[2] * p[2]) / det;
+        q[0] = tv[1] * e1[2] - tv[2] * e1[1], q[1] = tv[2] * e1[0] - tv[0] * e1[2], q[2] = tv[0] * e1[1] - tv[1] * e1[0];
+        double w = (c[0] * q[0] + c[1] * q[1] + c[2] * q[2]) / det;
+        double t = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
+        if (u < 0 || w < 0 || u + w > 1 || t <= 0)
+            continue;
+        if (best < 0 || t < best) {
+            best = t;
+            *edge = fmin(fmin(u, w), 1 - u - w);
+        }
+    }
+    return best;
+}
+
+FX_TEST(rt_mesh_bvh_finds_the_nearest_triangle)
+{
+    tmesh t;
+    FX_CHECK_EQ(make_mesh(&t, FX_MESH_TEAPOT, FX16_ONE, 0, 4, 0), 0);
+    FX_CHECK(t.rm.nnodes <= 2 * t.m.ntris);
+    fx_rt_object mem[1];
+    fx_rt_scene s;
+    fx_rt_scene_init(&s, mem, 1);
+    fx_mat4 id;
+    fx_mat4_identity(&id);
+    FX_CHECK_EQ(fx_rt_add_mesh(&s, &t.rm, &id, 0), 0);
+    uint32_t seed = 21;
+    int hits = 0, compared = 0;
+    double worst = 0;
+    for (int i = 0; i < 3000; i++) {
+        fx_vec3 S, c;
+        random_ray(&seed, 8, &S, &c);
+        fx_vec3 target = fx_vec3_make(FX(urand(&seed, -2, 2)), FX(urand(&seed, 0, 3)), FX(urand(&seed, -2, 2)));
+        c = fx_vec3_make(target.x - S.x, target.y - S.y, target.z - S.z);
+        if (fx_vec3_normalize(&c) < 0)
+            continue;
+        double Sd[3], cd[3], edge;
+        to_d(S, Sd);
+        to_d(c, cd);
+        double want = brute_nearest(&t.m, Sd, cd, &edge);
+        fx_rt_hit h;
+        fx_vec3 n;
+        int got = fx_rt_first_hit(&s, S, c, 0, &h, &n);
+        if (edge < 1e-3) /* through an edge or a vertex: either neighbour will do */
+            continue;
+        compared++;
+        FX_CHECK_MSG(got == (want > 0), "ray %d: fixed %s, double %s (t %f)", i, got ? "hits" : "misses",
+                     want > 0 ? "hits" : "misses", want);
+        if (got && want > 0) {
+            hits++;
+            double e = fabs(h.t * Q - want) / fmax(1, want);
+            worst = e > worst ? e : worst;
+        }
+    }
+    printf("    teapot (%d triangles, %d BVH nodes): %d hits of %d rays, worst relative t error %.3g\n", t.m.ntris,
+           t.rm.nnodes, hits, compared, worst);
+    FX_CHECK(hits > 800);
+    FX_CHECK_MSG(worst < 1.0 / 16384, "worst %g", worst);
+    free_mesh(&t);
+}
+
+FX_TEST(rt_mesh_is_watertight)
+{
+    /* rays from inside a closed mesh (a tessellated sphere) always leave
+     * through a triangle: the exact inside test leaves no crack along a
+     * shared edge or at a shared vertex */
+    tmesh t;
+    FX_CHECK_EQ(make_mesh(&t, FX_MESH_SPHERE, 2 * FX16_ONE, 0, 12, 6), 0);
+    fx_rt_object mem[1];
+    fx_rt_scene s;
+    fx_rt_scene_init(&s, mem, 1);
+    fx_mat4 id;
+    fx_mat4_identity(&id);
+    FX_CHECK_EQ(fx_rt_add_mesh(&s, &t.rm, &id, 0), 0);
+    uint32_t seed = 8;
+    int missed = 0;
+    for (int i = 0; i < 20000; i++) {
+        fx_vec3 S = fx_vec3_make(FX(urand(&seed, -0.5, 0.5)), FX(urand(&seed, -0.5, 0.5)), FX(urand(&seed, -0.5, 0.5)));
+        fx_vec3 c;
+        if (i < 2000) { /* straight at the vertices, where many triangles meet */
+            fx_vec3 v = t.m.pos[fx_test_rand(&seed) % (uint32_t)t.m.nverts];
+            S = fx_vec3_make(0, 0, 0);
+            c = v;
+        } else {
+            c = fx_vec3_make(FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)));
+        }
+        if (fx_vec3_normalize(&c) < 0)
+            continue;
+        fx_rt_hit h;
+        missed += !fx_rt_first_hit(&s, S, c, 0, &h, 0);
+    }
+    FX_CHECK_EQ(missed, 0);
+    free_mesh(&t);
+}
+
+FX_TEST(rt_mesh_build_errors)
+{
+    fx_vec3 pos[3] = {{0, 0, 0}, {FX16_ONE, 0, 0}, {0, 40 * FX16_ONE, 0}};
+    fx_vec3 nrm[3] = {{0, 0, FX16_ONE}, {0, 0, FX16_ONE}, {0, 0, FX16_ONE}};
+    uint32_t tri[3] = {0, 1, 2}, order[1];
+    fx_rt_bvh_node nodes[2];
+    fx_mesh m = {pos, nrm, tri, 3, 1, 3, 1};
+    fx_rt_mesh rm;
+    FX_CHECK_EQ(fx_rt_mesh_build(&rm, &m, nodes, 2, order), -FX_ERANGE); /* y = 40 > 32 */
+    pos[2].y = FX16_ONE;
+    FX_CHECK_EQ(fx_rt_mesh_build(&rm, &m, nodes, 1, order), -FX_ENOSPC);
+    tri[2] = 3;
+    FX_CHECK_EQ(fx_rt_mesh_build(&rm, &m, nodes, 2, order), -FX_EINVAL);
+    tri[2] = 2;
+    FX_CHECK_EQ(fx_rt_mesh_build(&rm, &m, nodes, 2, order), 0);
+    /* one triangle: the ray through its middle, from both sides */
+    fx_rt_object mem[1];
+    fx_rt_scene s;
+    fx_rt_scene_init(&s, mem, 1);
+    fx_mat4 id;
+    fx_mat4_identity(&id);
+    FX_CHECK_EQ(fx_rt_add_mesh(&s, &rm, &id, 0), 0);
+    fx_rt_hit h;
+    fx_vec3 n;
+    FX_CHECK(fx_rt_first_hit(&s, fx_vec3_make(FX16_ONE / 4, FX16_ONE / 4, 3 * FX16_ONE), fx_vec3_make(0, 0, -FX16_ONE),
+                             0, &h, &n));
+    FX_CHECK_EQ(h.t, 3 * FX16_ONE);
+    FX_CHECK_EQ(n.z, FX16_ONE);
+    FX_CHECK(fx_rt_first_hit(&s, fx_vec3_make(FX16_ONE / 4, FX16_ONE / 4, -2 * FX16_ONE), fx_vec3_make(0, 0, FX16_ONE),
+                             0, &h, &n));
+    FX_CHECK_EQ(h.t, 2 * FX16_ONE);
+}

@@ -36,6 +36,7 @@
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/mat3d.h"
+#include "fixel/mesh.h"
 #include "fixel/render3d.h"
 
 #ifdef __cplusplus
@@ -55,6 +56,7 @@ typedef enum fx_rt_kind {
     FX_RT_SQUARE,   /* z = 0, |x|, |y| <= 1 (no inside) */
     FX_RT_PLANE,    /* the half-space z <= 0 */
     FX_RT_CYLINDER, /* tapered: x^2 + y^2 <= (1 + (s - 1) z)^2, 0 <= z <= 1 */
+    FX_RT_MESH,     /* triangles through a BVH (fx_rt_mesh); a surface, no inside */
     FX_RT_UNION,
     FX_RT_INTERSECTION,
     FX_RT_DIFFERENCE
@@ -77,6 +79,30 @@ typedef struct fx_rt_box {
     fx16 lo[3], hi[3];
 } fx_rt_box;
 
+/* ---- meshes: triangles (fixel/mesh.h) through a bounding volume
+ * hierarchy built once over caller memory ---- */
+#define FX_RT_MESH_LIMIT 32 /* object-space vertex coordinates within +-32 */
+#define FX_RT_BVH_LEAF 4    /* triangles per leaf, at most */
+
+typedef struct fx_rt_bvh_node {
+    fx16 lo[3], hi[3]; /* object-space box */
+    int32_t first;     /* leaf: first index into order; inner: left child (right = first + 1) */
+    int32_t count;     /* leaf: triangles (1..FX_RT_BVH_LEAF); inner: 0 */
+} fx_rt_bvh_node;
+
+typedef struct fx_rt_mesh {
+    const fx_mesh *mesh; /* positions, smooth normals (nrm may be NULL: flat), triangles */
+    fx_rt_bvh_node *node;
+    int32_t nnodes;
+    uint32_t *order; /* triangle indices, grouped by leaf */
+} fx_rt_mesh;
+
+/* Build the BVH of m over caller memory: nodes for 2 * ntris nodes, order
+ * for ntris indices (median split of the centroids along the longest axis).
+ * -FX_ERANGE when a vertex leaves +-FX_RT_MESH_LIMIT, -FX_EINVAL for a bad
+ * index or no triangles, -FX_ENOSPC when cap_nodes < 2 * ntris. */
+int fx_rt_mesh_build(fx_rt_mesh *rm, const fx_mesh *m, fx_rt_bvh_node *nodes, int32_t cap_nodes, uint32_t *order);
+
 typedef struct fx_rt_object {
     uint8_t kind;       /* fx_rt_kind */
     uint8_t top;        /* 1: part of the scene (not inside a CSG node) */
@@ -85,6 +111,7 @@ typedef struct fx_rt_object {
     fx_mat4 inv;        /* world -> object */
     fx_rt_box box;      /* world bounding box */
     fx_rt_material mat; /* leaves */
+    const fx_rt_mesh *mesh; /* FX_RT_MESH: must outlive the scene */
 } fx_rt_object;
 
 typedef struct fx_rt_light {
@@ -117,6 +144,11 @@ int fx_rt_add_light(fx_rt_scene *s, fx_vec3 pos, fx3d_rgb color, fx16 atten);
  * scales an axis below 1/16, -FX_ERANGE when its bounds leave the
  * scene-scale limit, -FX_EINVAL for a bad kind or taper (0..2). */
 int fx_rt_add_shape(fx_rt_scene *s, fx_rt_kind kind, fx16 taper, const fx_mat4 *m, const fx_rt_material *mat);
+/* Add a mesh (built by fx_rt_mesh_build) placed by m; errors as
+ * fx_rt_add_shape. A mesh is a surface: along a ray it reports its nearest
+ * crossing beyond the ray's tmin (entering and leaving at that t), so in a
+ * CSG tree it is a sheet that changes no inside state. */
+int fx_rt_add_mesh(fx_rt_scene *s, const fx_rt_mesh *mesh, const fx_mat4 *m, const fx_rt_material *mat);
 /* Combine two objects (indices of top-level objects) into a CSG node
  * (which replaces them at the top level). Returns its index or an error;
  * -FX_E2BIG when the tree would exceed FX_RT_MAX_DEPTH. */
@@ -138,7 +170,8 @@ typedef struct fx_rt_hitlist {
     fx_rt_hit h[FX_RT_MAX_HITS];
 } fx_rt_hitlist;
 
-/* Every crossing of the whole line S + c t with object i, sorted by t. */
+/* Every crossing of the whole line S + c t with object i, sorted by t
+ * (a mesh: its first crossing on the line). */
 void fx_rt_hits(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out);
 /* The nearest hit with t > tmin over the scene; 1 when found. World-space
  * unit normal facing its outside in *n. */
