@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "fixel/error.h"
+#include "posix_int.h"
 
 typedef struct rt_job {
     const fx_rt_scene *s;
@@ -46,19 +47,7 @@ int fx_rt_render_mt(const fx_rt_scene *s, const fx_surface *surf, int nthreads, 
     rt_job j = {.s = s, .surf = surf, .band = band_rows ? band_rows : 4, .done = done, .user = user};
     atomic_init(&j.next, 0);
     pthread_mutex_init(&j.lock, 0);
-    pthread_t t[64];
-    int started = 0, spawn_err = 0;
-    for (int i = 1; i < nthreads; i++) {
-        int e = pthread_create(&t[started], 0, worker, &j);
-        if (e) {
-            spawn_err = -e;
-            break;
-        }
-        started++;
-    }
-    worker(&j);
-    for (int i = 0; i < started; i++)
-        pthread_join(t[i], 0);
+    int spawn_err = fx_posix_workers(worker, &j, nthreads);
     pthread_mutex_destroy(&j.lock);
     return spawn_err;
 }

@@ -8,6 +8,7 @@
 #include "fixel/rt.h"
 #include "fixel/scene.h"
 #include "../base/fx_internal.h"
+#include "scene_mesh.h"
 
 #define RT_OBJECTS 256
 #define RT_STACK 16
@@ -81,24 +82,26 @@ static int cmd_light(fx_scene *sc)
     return e < 0 ? fx_scene_error(sc, "rtlight: position outside the scene limit") : 0;
 }
 
-static int cmd_ambient(fx_scene *sc)
+/* A colour argument as linear RGB, ending the line. */
+static int rgb_line(fx_scene *sc, fx3d_rgb *out)
 {
-    GET(r);
     fx_color c;
     TRY(fx_scene_arg_color(sc, &c));
     TRY(fx_scene_end(sc));
-    r->s.ambient = fx3d_rgb_from_color(c);
+    *out = fx3d_rgb_from_color(c);
     return 0;
+}
+
+static int cmd_ambient(fx_scene *sc)
+{
+    GET(r);
+    return rgb_line(sc, &r->s.ambient);
 }
 
 static int cmd_background(fx_scene *sc)
 {
     GET(r);
-    fx_color c;
-    TRY(fx_scene_arg_color(sc, &c));
-    TRY(fx_scene_end(sc));
-    r->s.background = fx3d_rgb_from_color(c);
-    return 0;
+    return rgb_line(sc, &r->s.background);
 }
 
 static int cmd_material(fx_scene *sc)
@@ -200,29 +203,24 @@ static int cmd_pop(fx_scene *sc)
     return 0;
 }
 
-static int cmd_translate(fx_scene *sc)
+/* translate (0) or scale (1) by three values */
+static int xyz_cmd(fx_scene *sc, int scale)
 {
     GET(r);
     fx16 v[3];
     TRY(fxs(sc, v, 3));
     TRY(fx_scene_end(sc));
     fx_mat4 m;
-    fx_mat4_translate(&m, v[0], v[1], v[2]);
+    if (scale)
+        fx_mat4_scale(&m, v[0], v[1], v[2]);
+    else
+        fx_mat4_translate(&m, v[0], v[1], v[2]);
     mult(r, &m);
     return 0;
 }
 
-static int cmd_scale(fx_scene *sc)
-{
-    GET(r);
-    fx16 v[3];
-    TRY(fxs(sc, v, 3));
-    TRY(fx_scene_end(sc));
-    fx_mat4 m;
-    fx_mat4_scale(&m, v[0], v[1], v[2]);
-    mult(r, &m);
-    return 0;
-}
+static int cmd_translate(fx_scene *sc) { return xyz_cmd(sc, 0); }
+static int cmd_scale(fx_scene *sc) { return xyz_cmd(sc, 1); }
 
 static int cmd_rotate(fx_scene *sc)
 {
@@ -290,29 +288,10 @@ static int cmd_mesh(fx_scene *sc)
     TRY(k = fx_scene_arg_choice(sc, ch));
     fx_mesh m = {0, 0, 0, 0, 0, 0, 0};
     if (k == 2) {
-        char path[256];
-        TRY(fx_scene_arg_string(sc, path, sizeof path));
-        TRY(fx_scene_end(sc));
-        if (!sc->host.load_file)
-            return fx_scene_error(sc, "files not available");
-        const uint8_t *data;
-        size_t len;
-        int e = sc->host.load_file(sc->host.user, path, &data, &len);
-        if (e < 0)
-            return fx_scene_error(sc, "cannot read '%s': %s", path, fx_strerror(e));
-        fx_obj_error err;
-        int32_t nv, nt;
-        if (fx_mesh_obj_size((const char *)data, len, &nv, &nt, &err) < 0)
-            return fx_scene_error(sc, "%s: %s", path, err.msg);
-        if (nt < 1 || nt > FX_SCENE_MAX_TRIANGLES)
-            return fx_scene_error(sc, "%s: %d triangles (1..%d)", path, nt, FX_SCENE_MAX_TRIANGLES);
-        fx_vec3 *mem = fx_scene_alloc(sc, (size_t)nv * 2 * sizeof(fx_vec3) + (size_t)nt * 3 * sizeof(uint32_t));
-        if (!mem)
-            return fx_scene_error(sc, "out of scene memory for '%s' (%d vertices)", path, nv);
-        fx_mesh o = {mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt};
-        if (fx_mesh_obj_parse(&o, (const char *)data, len, &err) < 0)
-            return fx_scene_error(sc, "%s: %s", path, err.msg);
-        return add_mesh(sc, r, &o, "OBJ mesh");
+        TRY(fx_scene_obj_mesh(sc, &m));
+        if (m.ntris < 1)
+            return fx_scene_error(sc, "rtmesh: the OBJ file has no triangles");
+        return add_mesh(sc, r, &m, "OBJ mesh");
     }
     fx_mesh_params p = {k == 0 ? FX_MESH_TEAPOT : FX_MESH_TORUS, FX16_ONE, 0, 0, 0, 0};
     if (k == 0) {

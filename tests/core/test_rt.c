@@ -159,14 +159,6 @@ FX_TEST(rt_shapes_match_double_on_random_rays)
 
 /* ---- CSG ---- */
 
-static fx_mat4 place(double tx, double ty, double tz, double sx, double sy, double sz)
-{
-    fx_mat4 a, b, m;
-    fx_mat4_translate(&a, FX(tx), FX(ty), FX(tz));
-    fx_mat4_scale(&b, FX(sx), FX(sy), FX(sz));
-    fx_mat4_mul(&m, &a, &b);
-    return m;
-}
 
 FX_TEST(rt_csg_hit_lists_follow_the_solids_definition)
 {
@@ -428,7 +420,7 @@ FX_TEST(rt_reflection_and_refraction_follow_the_laws)
     fx_rt_material red = matte(0xFF0000);
     red.ambient = fx3d_rgb_from_color(0xFF0000);
     t.ambient = fx3d_rgb_from_color(0xFFFFFF);
-    fx_mat4 sq = place(4, 1, 0, 0.5, 0.5, 0.5);
+    fx_mat4 sq = rtref_place(4, 1, 0, 0.5, 0.5, 0.5);
     fx_rt_add_shape(&t, FX_RT_SPHERE, 0, &sq, &red);
     /* from (0,1,0) down at 45 degrees toward +x: bounces at (2,-1,0) and
      * rises into the sphere about (4,1,0) */
@@ -509,7 +501,7 @@ FX_TEST(rt_documented_errors)
     FX_CHECK_EQ(fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &m, 0), -FX_EDOM); /* singular */
     fx_mat4_scale(&m, FX16_ONE / 32, FX16_ONE, FX16_ONE);
     FX_CHECK_EQ(fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &m, 0), -FX_EDOM); /* below 1/16 */
-    m = place(FX_RT_WORLD - 0.5, 0, 0, 1, 1, 1);
+    m = rtref_place(FX_RT_WORLD - 0.5, 0, 0, 1, 1, 1);
     FX_CHECK_EQ(fx_rt_add_shape(&s, FX_RT_CUBE, 0, &m, 0), -FX_ERANGE);
     fx_mat4_identity(&m);
     FX_CHECK_EQ(fx_rt_add_shape(&s, FX_RT_CYLINDER, 3 * FX16_ONE, &m, 0), -FX_EINVAL);
@@ -603,6 +595,15 @@ static double brute_nearest(const fx_mesh *m, const double S[3], const double c[
     return best;
 }
 
+/* A scene of the one mesh, untransformed. */
+static void mesh_scene(fx_rt_scene *s, fx_rt_object *mem, const tmesh *t)
+{
+    fx_rt_scene_init(s, mem, 1);
+    fx_mat4 id;
+    fx_mat4_identity(&id);
+    FX_CHECK_EQ(fx_rt_add_mesh(s, &t->rm, &id, 0), 0);
+}
+
 FX_TEST(rt_mesh_bvh_finds_the_nearest_triangle)
 {
     tmesh t;
@@ -610,10 +611,7 @@ FX_TEST(rt_mesh_bvh_finds_the_nearest_triangle)
     FX_CHECK(t.rm.nnodes <= 2 * t.m.ntris);
     fx_rt_object mem[1];
     fx_rt_scene s;
-    fx_rt_scene_init(&s, mem, 1);
-    fx_mat4 id;
-    fx_mat4_identity(&id);
-    FX_CHECK_EQ(fx_rt_add_mesh(&s, &t.rm, &id, 0), 0);
+    mesh_scene(&s, mem, &t);
     uint32_t seed = 21;
     int hits = 0, compared = 0;
     double worst = 0;
@@ -658,10 +656,7 @@ FX_TEST(rt_mesh_is_watertight)
     FX_CHECK_EQ(make_mesh(&t, FX_MESH_SPHERE, 2 * FX16_ONE, 0, 12, 6), 0);
     fx_rt_object mem[1];
     fx_rt_scene s;
-    fx_rt_scene_init(&s, mem, 1);
-    fx_mat4 id;
-    fx_mat4_identity(&id);
-    FX_CHECK_EQ(fx_rt_add_mesh(&s, &t.rm, &id, 0), 0);
+    mesh_scene(&s, mem, &t);
     uint32_t seed = 8;
     int missed = 0;
     for (int i = 0; i < 20000; i++) {

@@ -380,7 +380,7 @@ fx_color rtref_pixel(const fx_rt_scene *s, int32_t w, int32_t h, int32_t x, int3
 
 const char *const rtref_scene_names[4] = {"lens", "bowl", "rocket", "spheres"};
 
-static fx_mat4 place(double tx, double ty, double tz, double sx, double sy, double sz)
+fx_mat4 rtref_place(double tx, double ty, double tz, double sx, double sy, double sz)
 {
     fx_mat4 a, b, m;
     fx_mat4_translate(&a, FX(tx), FX(ty), FX(tz));
@@ -419,17 +419,17 @@ static int shape(fx_rt_scene *s, fx_rt_kind k, double taper, fx_mat4 m, const fx
 
 static int csg_tree(fx_rt_scene *s, int which, int up, const fx_rt_material *m1, const fx_rt_material *m2)
 {
-#define P(...) (up ? upright(place(__VA_ARGS__)) : place(__VA_ARGS__))
+#define P(...) (up ? upright(rtref_place(__VA_ARGS__)) : rtref_place(__VA_ARGS__))
     if (which == 0) {
-        int a = shape(s, FX_RT_SPHERE, 0, place(-0.6, 0, 0, 1, 1, 1), m1);
-        int b = shape(s, FX_RT_SPHERE, 0, place(0.6, 0, 0, 1, 1, 1), m1);
+        int a = shape(s, FX_RT_SPHERE, 0, rtref_place(-0.6, 0, 0, 1, 1, 1), m1);
+        int b = shape(s, FX_RT_SPHERE, 0, rtref_place(0.6, 0, 0, 1, 1, 1), m1);
         return fx_rt_add_csg(s, FX_RT_INTERSECTION, a, b);
     }
     if (which == 1) {
-        int a = shape(s, FX_RT_SPHERE, 0, place(0, 0, 0, 1, 1, 1), m1);
-        int b = shape(s, FX_RT_SPHERE, 0, place(0, 0, 0, 0.9, 0.9, 0.9), m1);
+        int a = shape(s, FX_RT_SPHERE, 0, rtref_place(0, 0, 0, 1, 1, 1), m1);
+        int b = shape(s, FX_RT_SPHERE, 0, rtref_place(0, 0, 0, 0.9, 0.9, 0.9), m1);
         int d = fx_rt_add_csg(s, FX_RT_DIFFERENCE, a, b);
-        int c = shape(s, FX_RT_CUBE, 0, place(0, 1.2, 0, 1.2, 1.2, 1.2), m1);
+        int c = shape(s, FX_RT_CUBE, 0, rtref_place(0, 1.2, 0, 1.2, 1.2, 1.2), m1);
         return fx_rt_add_csg(s, FX_RT_DIFFERENCE, d, c);
     }
     int a = shape(s, FX_RT_CYLINDER, 1, P(0, 0, -0.3, 0.4, 0.4, 1.6), m1);
@@ -450,7 +450,7 @@ int rtref_scene(fx_rt_scene *s, fx_rt_object *mem, int cap, int which)
     fx_vec3 up = fx_vec3_make(0, FX16_ONE, 0);
     s->ambient = fx3d_rgb_from_color(which == 3 ? 0x303030 : 0x404040);
     fx_rt_material fl = mat(0x303030, 0xA0A0A0, 0, 0, 0, 0, 1);
-    fx_mat4 fm = place(0, -1, 0, 1, 1, 1), turn; /* the floor y = -1: the plane's z turned to +y */
+    fx_mat4 fm = rtref_place(0, -1, 0, 1, 1, 1), turn; /* the floor y = -1: the plane's z turned to +y */
     fx_mat4_rotate_x(&turn, fx_angle_from_deg(-90));
     fx_mat4_mul(&fm, &fm, &turn);
     if (which < 3) {
@@ -479,8 +479,8 @@ int rtref_scene(fx_rt_scene *s, fx_rt_object *mem, int cap, int which)
     fx_rt_add_shape(s, FX_RT_PLANE, 0, &fm, &marble);
     fx_rt_material glass = mat(0, 0x101010, 0xFFFFFF, 120, 0.1, 0.85, 1.5);
     fx_rt_material mirror = mat(0x101010, 0x202020, 0xFFFFFF, 100, 0.85, 0, 1);
-    if (shape(s, FX_RT_SPHERE, 0, place(-1.1, 0, 0, 1, 1, 1), &glass) < 0 ||
-        shape(s, FX_RT_SPHERE, 0, place(1.2, 0, 0.3, 1, 1, 1), &mirror) < 0)
+    if (shape(s, FX_RT_SPHERE, 0, rtref_place(-1.1, 0, 0, 1, 1, 1), &glass) < 0 ||
+        shape(s, FX_RT_SPHERE, 0, rtref_place(1.2, 0, 0.3, 1, 1, 1), &mirror) < 0)
         return -1;
     return 0;
 }

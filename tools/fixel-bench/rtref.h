@@ -39,5 +39,7 @@ fx_color rtref_pixel(const fx_rt_scene *s, int32_t w, int32_t h, int32_t x, int3
 int rtref_csg(fx_rt_scene *s, int which);
 int rtref_scene(fx_rt_scene *s, fx_rt_object *mem, int cap, int which);
 extern const char *const rtref_scene_names[4];
+/* translate(t) * scale(s), the placement the scenes use */
+fx_mat4 rtref_place(double tx, double ty, double tz, double sx, double sy, double sz);
 
 #endif
