@@ -238,7 +238,9 @@ static void hits_rec(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, int64_t 
     out->n = 0;
     out->inside0 = 0;
     out->overflow = 0;
-    if (!rt_box_meets(&o->box, S, c))
+    /* a shape's own test costs no more than its box's: boxes are for
+     * subtrees and meshes */
+    if ((o->kind >= FX_RT_MESH) && !rt_box_meets(&o->box, S, c))
         return;
     if (o->kind == FX_RT_MESH) {
         rt_mesh_hits(o->mesh, i, rt_xform(&o->inv, S, 1), rt_xform_dir24(&o->inv, c), tmin, out);
