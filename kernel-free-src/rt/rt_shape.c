@@ -267,7 +267,10 @@ static void cylinder(int idx, fx16 s, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
             fx16 t = div24((cap ? ONE : 0) - S.z, c.z);
             fx_vec3 p = at(S, c, t);
             int64_t rim = (cap ? (int64_t)s : ONE) + RIM;
-            if ((int64_t)p.x * p.x + (int64_t)p.y * p.y > rim * rim)
+            /* a crossing far out (a ray almost parallel to the cap) has a
+             * saturated point whose squares would overflow their sum */
+            if (p.x < -rim || p.x > rim || p.y < -rim || p.y > rim ||
+                (int64_t)p.x * p.x + (int64_t)p.y * p.y > rim * rim)
                 continue;
             tc[n] = t;
             nc[n++] = fx_vec3_make(0, 0, cap ? FX16_ONE : -FX16_ONE);

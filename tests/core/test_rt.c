@@ -263,6 +263,10 @@ FX_TEST(rt_no_overflow_at_the_scene_limit)
                 c = fx_vec3_make(m.m[0][3] - S.x, m.m[1][3] - S.y, m.m[2][3] - S.z);
                 if (fx_vec3_normalize(&c) < 0)
                     continue;
+            } else if (j % 4 == 2) { /* almost parallel to the caps / faces: crossings far out */
+                c = fx_vec3_make(m.m[0][0] + (fx16)(fx_test_rand(&seed) % 64) - 32, m.m[1][0], m.m[2][0]);
+                if (fx_vec3_normalize(&c) < 0)
+                    continue;
             }
             fx_rt_hitlist l;
             fx_rt_hits(&s, 0, S, c, &l);
