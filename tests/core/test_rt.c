@@ -14,8 +14,10 @@
 
 #include "fixel/error.h"
 #include "fixel/rt.h"
+#include "fixel/scene.h"
 #include "fixel/surface.h"
 #include "fx_test.h"
+#include "scenebuf.h"
 #include "../../tools/fixel-bench/rtref.h"
 #include "../../kernel-free-src/rt/rt_int.h" /* white box: the box test */
 
@@ -713,4 +715,56 @@ FX_TEST(rt_mesh_build_errors)
     FX_CHECK(fx_rt_first_hit(&s, fx_vec3_make(FX16_ONE / 4, FX16_ONE / 4, -2 * FX16_ONE), fx_vec3_make(0, 0, FX16_ONE),
                              0, &h, &n));
     FX_CHECK_EQ(h.t, 2 * FX16_ONE);
+}
+
+/* ---- the script commands ---- */
+
+typedef struct script_host {
+    scene_buf buf;
+    lines *out;
+} script_host;
+
+static int host_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surface *o)
+{
+    return scene_buf_make(&((script_host *)u)->buf, w, h, f, o);
+}
+
+static void host_trace(void *u, const char *line) { collect(((script_host *)u)->out, line); }
+
+FX_TEST(rt_script_renders_and_traces_a_pixel)
+{
+    static uint32_t px[64 * 48];
+    script_host h = {{px, 64 * 48}, calloc(1, sizeof(lines))};
+    fx_scene_host hs = {&h, host_surface, 0, 0, host_trace};
+    size_t arena_size = 1 << 20;
+    void *arena = malloc(arena_size);
+    fx_scene sc;
+    fx_scene_init(&sc, &hs, arena, arena_size);
+    static const char script[] = "size 64 48\n"
+                                 "rtcamera 0 0 5 0 0 0 0 1 0 40\n"
+                                 "rtlight 3 4 5 #FFFFFF\n"
+                                 "rtmaterial #000000 #FF0000 #000000 0\n"
+                                 "rtshape sphere\n"
+                                 "rtscale 2 0.5 2\n"
+                                 "rtshape cube\n"
+                                 "rtcsg difference\n"
+                                 "raytrace\n"
+                                 "rttrace 32 14\n";
+    FX_CHECK_EQ(fx_scene_run(&sc, script, sizeof script - 1), 0);
+    /* the centre row is cut away (the slab), above it the red sphere */
+    FX_CHECK_EQ_HEX(px[24 * 64 + 32] & 0xFFFFFF, 0);
+    FX_CHECK((px[14 * 64 + 32] >> 16 & 255) > 100 && (px[14 * 64 + 32] & 0xFFFF) == 0);
+    char want[64];
+    snprintf(want, sizeof want, "rttrace pixel (32, 14) = #%06X", px[14 * 64 + 32] & 0xFFFFFF);
+    FX_CHECK_MSG(strstr(h.out->text, want) != 0, "%s not in:\n%s", want, h.out->text);
+    FX_CHECK(strstr(h.out->text, "hit object 2 (sphere, entering)") != 0 ||
+             strstr(h.out->text, "hit object 0 (sphere, entering)") != 0);
+    FX_CHECK(strstr(h.out->text, "light 0: visible") != 0);
+    /* a range error names the argument and its range */
+    fx_scene_init(&sc, &hs, arena, arena_size);
+    static const char bad[] = "rtshape taper 3\n";
+    FX_CHECK(fx_scene_run(&sc, bad, sizeof bad - 1) < 0);
+    FX_CHECK_MSG(strstr(sc.err, "0..2") != 0, "%s", sc.err);
+    free(arena);
+    free(h.out);
 }
