@@ -203,7 +203,9 @@ A(rttrace, I("X", 0, 16383), I("Y", 0, 16383));
 
 #define TRIS "at most 262144 triangles (FX_SCENE_MAX_TRIANGLES)"
 #define TEX "texture checker 8 8 2 #000000 #FFFFFF"
-#define RTWORK "one primary ray per pixel of the tile (clipped to the surface), each at most 2^(DEPTH+1) - 1 rays (rtdepth)"
+#define RTWORK                                                                                                \
+    "one primary ray per pixel of the tile (clipped to the surface); each at most 2^(DEPTH+1) - 1 rays (rtdepth), " \
+    "each with at most 4 shadow feelers, each tested against at most 256 objects"
 #define L3 "light 0 point 0 6 0 #FFFFFF"
 
 const fx_scene_argspec fx_scene_argspecs[] = {
