@@ -9,6 +9,7 @@
  * of a pixel, the tile renderer and the --trace ray tree. */
 #include "fixel/fixed.h"
 #include "rt_int.h"
+#include "../base/fx_internal.h"
 
 #define ONE ((int64_t)FX16_ONE)
 
@@ -147,18 +148,6 @@ static fx_vec3 vadd_scaled(fx_vec3 a, fx_vec3 b, int64_t k)
     return fx_vec3_make(rt_sat(a.x + rt_mul(b.x, k)), rt_sat(a.y + rt_mul(b.y, k)), rt_sat(a.z + rt_mul(b.z, k)));
 }
 
-static fx16 powi(fx16 x, int32_t f)
-{
-    fx16 r = FX16_ONE;
-    while (f > 0) {
-        if (f & 1)
-            r = fx16_mul(r, x);
-        x = fx16_mul(x, x);
-        f >>= 1;
-    }
-    return r;
-}
-
 static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 weight)
 {
     const fx_rt_scene *s = tr->s;
@@ -227,7 +216,7 @@ static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 we
             if (fx_vec3_normalize(&h) == 0) {
                 fx16 mh = dot(m, h);
                 if (mh > 0)
-                    Ispec = rgb_add(Ispec, rgb_scale(rgb_mul(Il, mat->specular), powi(mh, mat->shininess)));
+                    Ispec = rgb_add(Ispec, rgb_scale(rgb_mul(Il, mat->specular), fx16_powi(mh, mat->shininess)));
             }
         }
     }
