@@ -7,6 +7,7 @@
 #include <stdatomic.h>
 
 #include "fixel/error.h"
+#include "posix_int.h"
 
 /* Bands this tall keep the per-band overhead (one walk set-up per row) tiny
  * while leaving dozens of bands per thread to even out the work: rows
@@ -50,19 +51,7 @@ int fx_fractal_render_mt(const fx_surface *s, fx_rect r, const fx_fractal_view *
         return 0;
     atomic_init(&j.next, 0);
     atomic_init(&j.err, 0);
-    pthread_t t[64];
-    int started = 0, spawn_err = 0;
-    for (int i = 1; i < nthreads; i++) {
-        int e = pthread_create(&t[started], 0, worker, &j);
-        if (e) {
-            spawn_err = -e;
-            break;
-        }
-        started++;
-    }
-    worker(&j);
-    for (int i = 0; i < started; i++)
-        pthread_join(t[i], 0);
+    int spawn_err = fx_posix_workers(worker, &j, nthreads);
     int e = atomic_load(&j.err);
     return e < 0 ? e : spawn_err;
 }

@@ -27,6 +27,13 @@ void fx_log_stderr(fx_log_priority p, void *user, const char *fmt, va_list ap);
 /* When open() on path fails with EACCES, name the group that owns the node. */
 void fx_log_access_hint(const fx_logger *l, const char *path);
 
+/* ---- worker threads (workers.c) ---- */
+
+/* Run fn(arg) on nthreads threads (1..64): nthreads - 1 started, and the
+ * caller's; returns when all have returned: 0, or the -errno of a thread
+ * that could not start (those that did start still do all the work). */
+int fx_posix_workers(void *(*fn)(void *), void *arg, int nthreads);
+
 /* ---- blocking calls with a timeout (waiter.c) ---- */
 
 typedef struct fx_waiter fx_waiter;

@@ -108,18 +108,6 @@ static void rgb_madd(fx3d_rgb *acc, fx3d_rgb a, fx16 s)
     acc->b = fx_sat32((int64_t)acc->b + fx16_mul(a.b, s));
 }
 
-/* x^n for x in [0, 1] by square-and-multiply. */
-static fx16 fx_pow_int(fx16 x, int32_t n)
-{
-    fx16 r = FX16_ONE;
-    while (n > 0) {
-        if (n & 1)
-            r = fx16_mul(r, x);
-        x = fx16_mul(x, x);
-        n >>= 1;
-    }
-    return r;
-}
 
 /* ------------------------------------------------------------------ */
 /* lighting                                                             */
@@ -178,7 +166,7 @@ static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec
             fx16 sd = -fx_vec3_dot(L, e->dir);
             if (sd < e->cos_cut)
                 continue;
-            sf = fx_pow_int(sd, e->exp);
+            sf = fx16_powi(sd, e->exp);
         }
         fx3d_rgb c = rgb_mul(e->amb, m->ambient);
         fx16 ndl = fx_vec3_dot(N, L);
@@ -197,7 +185,7 @@ static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec
                 if (rv > 0) {
                     if (rv > FX16_ONE)
                         rv = FX16_ONE;
-                    rgb_madd(&c, rgb_mul(e->spec, m->specular), fx_pow_int(rv, m->shininess));
+                    rgb_madd(&c, rgb_mul(e->spec, m->specular), fx16_powi(rv, m->shininess));
                 }
             }
         }

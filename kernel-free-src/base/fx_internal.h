@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "fixel/fixed.h"
 #include "fixel/surface.h"
 
 /* The core may call only the mem* functions of libc; the builtins make that
@@ -26,6 +27,20 @@
         if (r_ < 0)              \
             return r_;           \
     } while (0)
+
+/* x^n for x in [0, 1] by square-and-multiply, each product fx16_mul
+ * (the Phong highlights of render3d and the ray tracer). */
+static inline fx16 fx16_powi(fx16 x, int32_t n)
+{
+    fx16 r = FX16_ONE;
+    while (n > 0) {
+        if (n & 1)
+            r = fx16_mul(r, x);
+        x = fx16_mul(x, x);
+        n >>= 1;
+    }
+    return r;
+}
 
 static inline uint8_t *fx_row(const struct fx_surface *s, int32_t y)
 {

@@ -6,6 +6,7 @@
 #include "fixel/error.h"
 #include "fixel/render3d.h"
 #include "fixel/scene.h"
+#include "scene_mesh.h"
 
 #define TRY(x)                   \
     do {                         \
@@ -498,9 +499,8 @@ static int cmd_cylinder(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_CYLINDER, 2,
 static int cmd_teapot(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_TEAPOT, 1, 1); }
 static int cmd_floor(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_PLANE, 1, 1); }
 
-static int cmd_obj(fx_scene *sc)
+int fx_scene_obj_mesh(fx_scene *sc, fx_mesh *out)
 {
-    GET(s);
     char path[256];
     TRY(fx_scene_arg_string(sc, path, sizeof path));
     TRY(fx_scene_end(sc));
@@ -525,6 +525,15 @@ static int cmd_obj(fx_scene *sc)
     fx_mesh m = {mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt};
     if (fx_mesh_obj_parse(&m, (const char *)data, len, &err) < 0)
         return fx_scene_error(sc, "%s: %s", path, err.msg);
+    *out = m;
+    return 0;
+}
+
+static int cmd_obj(fx_scene *sc)
+{
+    GET(s);
+    fx_mesh m;
+    TRY(fx_scene_obj_mesh(sc, &m));
     s->r.ctx = sc->ctx;
     return fx3d_draw(&s->r, &m);
 }

@@ -21,6 +21,7 @@
 #include "fixel/texture.h"
 #include "fixel/curve.h"
 #include "fixel/mesh.h"
+#include "fixel/rt.h"
 
 #define CO 1048576 /* coordinate bound, 2^20 */
 #define G3 1024    /* 3D geometry bound */
@@ -181,8 +182,30 @@ A(shadowplane, FORM("off"), FORM(0), P3("A"), P3("B"), P3("C"), P3("D"), I("LIGH
 A(shadowmap, FORM("end"), FORM("off"), FORM("begin"), IW("SIZE", 16, 4096), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1),
   P3("TX"), P3("TY"), P3("TZ"), F("FOV", -32768, 32767), P3("NEAR"), P3("FAR"));
 
+/* ---- ray tracer (scene_rt.c): world coordinates within the scene limit ---- */
+#define WR(n) F(n, -FX_RT_WORLD, FX_RT_WORLD)
+A(rtcamera, WR("EX"), WR("EY"), WR("EZ"), WR("LX"), WR("LY"), WR("LZ"), WR("UX"), WR("UY"), WR("UZ"),
+  F("FOVY", 1, 179));
+A(rtlight, WR("X"), WR("Y"), WR("Z"), C("COLOR"), OPT, F("ATTEN", 0, 1));
+A(rtmaterial, C("AMB"), C("DIFF"), C("SPEC"), I("SHININESS", 0, 256), OPT, F("REFLECT", 0, 1), F("TRANSP", 0, 1),
+  F("IOR", 1, 4));
+A(rttexture, FORM("none"), FORM(0), W("wood|marble|checker"), C("COLOR"), FR("SCALE", 4096, 64 * 65536));
+A(rtdepth, I("DEPTH", 0, FX_RT_MAX_RECURSION), OPT, F("CUTOFF", 0, 1));
+A(rttranslate, WR("X"), WR("Y"), WR("Z"));
+A(rtscale, F("SX", -16, 16), F("SY", -16, 16), F("SZ", -16, 16));
+A(rtrotate, DEG("DEG"), WR("AX"), WR("AY"), WR("AZ"));
+A(rtshape, FORM("taper"), F("S", 0, 2), FORM(0), W("sphere|cube|square|plane|cylinder|cone"));
+A(rtcsg, W("union|intersection|difference"));
+A(rtmesh, FORM("teapot"), IW("N", 1, 16), FORM("torus"), F("R", 0, 16), F("r", 0, 8), IW("SIDES", 3, 256),
+  IW("RINGS", 3, 256), FORM("obj"), S("FILE"));
+A(raytrace, OPT, XY("X"), XY("Y"), I("W", 0, 16384), I("H", 0, 16384));
+A(rttrace, I("X", 0, 16383), I("Y", 0, 16383));
+
 #define TRIS "at most 262144 triangles (FX_SCENE_MAX_TRIANGLES)"
 #define TEX "texture checker 8 8 2 #000000 #FFFFFF"
+#define RTWORK                                                                                                \
+    "one primary ray per pixel of the tile (clipped to the surface); each at most 2^(DEPTH+1) - 1 rays (rtdepth), " \
+    "each with at most 4 shadow feelers, each tested against at most 256 objects"
 #define L3 "light 0 point 0 6 0 #FFFFFF"
 
 const fx_scene_argspec fx_scene_argspecs[] = {
@@ -231,6 +254,14 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"torus", a_torus, 0, TRIS}, {"cone", a_cone, 0, TRIS}, {"cylinder", a_cone, 0, TRIS}, {"teapot", a_sizen, 0, TRIS},
     {"floor", a_sizen, 0, TRIS}, {"obj", a_obj, 0, TRIS}, {"shadowplane", a_shadowplane, L3, 0},
     {"shadowmap", a_shadowmap, L3, 0},
+    {"rtcamera", a_rtcamera, 0, 0}, {"rtlight", a_rtlight, 0, 0}, {"rtambient", a_color, 0, 0},
+    {"rtbackground", a_color, 0, 0}, {"rtmaterial", a_rtmaterial, 0, 0}, {"rttexture", a_rttexture, 0, 0},
+    {"rtdepth", a_rtdepth, 0, 0}, {"rtidentity", a_none, 0, 0}, {"rtpush", a_none, 0, 0},
+    {"rtpop", a_none, "rtpush", 0}, {"rttranslate", a_rttranslate, 0, 0}, {"rtscale", a_rtscale, 0, 0},
+    {"rtrotate", a_rtrotate, 0, 0}, {"rtshape", a_rtshape, 0, 0},
+    {"rtmesh", a_rtmesh, 0, "at most 262144 triangles (FX_SCENE_MAX_TRIANGLES), the BVH 2 nodes a triangle"},
+    {"rtcsg", a_rtcsg, "rtshape sphere\nrttranslate 0.5 0 0\nrtshape cube", 0},
+    {"raytrace", a_raytrace, 0, RTWORK}, {"rttrace", a_rttrace, 0, RTWORK},
     {0, 0, 0, 0},
 };
 

@@ -133,5 +133,8 @@ static inline void midpoint_circle_step(int *x, int *y, int *d)
 void extras_run(const char *only, int fmt_mask, int trials, double min_s, int quiet,
                 int (*listed)(const char *, const char *));
 void extras_print(FILE *o);
+/* TABLE 5 (raytrace.c): the ray tracer against its double reference. */
+void raytrace_run(int quiet);
+void raytrace_print(FILE *o);
 
 #endif

@@ -1,0 +1,14 @@
+/* SPDX-License-Identifier: MIT */
+/* Meshes the 3D and ray-tracing commands share (private to the core). */
+#ifndef FIXEL_SCENE_MESH_H
+#define FIXEL_SCENE_MESH_H
+
+#include "fixel/mesh.h"
+#include "fixel/scene.h"
+
+/* The rest of the line is "FILE": read it through the host, parse it as
+ * Wavefront OBJ into arena memory (at most FX_SCENE_MAX_TRIANGLES
+ * triangles). 0, or the error recorded on the scene. */
+int fx_scene_obj_mesh(fx_scene *sc, fx_mesh *m);
+
+#endif

@@ -1,0 +1,397 @@
+/* SPDX-License-Identifier: MIT */
+/* fixel — scene commands of the ray tracer (fixel/rt.h): camera, lights,
+ * materials and solid textures, a transform stack, the generic shapes, CSG
+ * nodes over the last two objects, `raytrace` (a tile or the whole surface)
+ * and `rttrace` (one pixel's ray tree to the host's trace). State lives in
+ * the arena (sc->mod[FX_SCENE_MOD_RT]); the first rt command creates it. */
+#include "fixel/error.h"
+#include "fixel/rt.h"
+#include "fixel/scene.h"
+#include "../base/fx_internal.h"
+#include "scene_mesh.h"
+
+#define RT_OBJECTS 256
+#define RT_STACK 16
+
+typedef struct srt {
+    fx_rt_scene s;
+    fx_rt_object obj[RT_OBJECTS];
+    fx_mat4 stack[RT_STACK];
+    int top;
+    fx_rt_material mat;
+} srt;
+
+static int get(fx_scene *sc, srt **out)
+{
+    srt *r = sc->mod[FX_SCENE_MOD_RT];
+    if (!r) {
+        r = fx_scene_alloc(sc, sizeof *r);
+        if (!r)
+            return fx_scene_error(sc, "out of scene memory for the ray tracer");
+        fx_rt_scene_init(&r->s, r->obj, RT_OBJECTS);
+        fx_mat4_identity(&r->stack[0]);
+        r->mat.ambient = fx3d_rgb_from_color(0x333333);
+        r->mat.diffuse = fx3d_rgb_from_color(0xC0C0C0);
+        r->mat.specular = fx3d_rgb_from_color(0x808080);
+        r->mat.shininess = 20;
+        r->mat.ior = FX16_ONE;
+        r->s.ambient = fx3d_rgb_from_color(0x404040);
+        sc->mod[FX_SCENE_MOD_RT] = r;
+    }
+    *out = r;
+    return 0;
+}
+
+#define GET(r)                   \
+    srt *r;                      \
+    TRY(get(sc, &r))
+
+static int fxs(fx_scene *sc, fx16 *v, int n)
+{
+    for (int i = 0; i < n; i++)
+        TRY(fx_scene_arg_fx16(sc, &v[i]));
+    return 0;
+}
+
+static fx_vec3 v3(const fx16 *v) { return fx_vec3_make(v[0], v[1], v[2]); }
+
+static int cmd_camera(fx_scene *sc)
+{
+    GET(r);
+    fx16 v[10];
+    TRY(fxs(sc, v, 10));
+    TRY(fx_scene_end(sc));
+    if (fx_rt_set_camera(&r->s, v3(v), v3(v + 3), v3(v + 6), v[9]) < 0)
+        return fx_scene_error(sc, "rtcamera: eye equals look, up is parallel to the view, or FOVY is not 1..179");
+    return 0;
+}
+
+static int cmd_light(fx_scene *sc)
+{
+    GET(r);
+    fx16 v[3], att = 0;
+    fx_color c;
+    TRY(fxs(sc, v, 3));
+    TRY(fx_scene_arg_color(sc, &c));
+    if (fx_scene_more(sc))
+        TRY(fx_scene_arg_fx16(sc, &att));
+    TRY(fx_scene_end(sc));
+    int e = fx_rt_add_light(&r->s, v3(v), fx3d_rgb_from_color(c), att);
+    if (e == -FX_ENOSPC)
+        return fx_scene_error(sc, "rtlight: at most %d lights", FX_RT_MAX_LIGHTS);
+    return e < 0 ? fx_scene_error(sc, "rtlight: position outside the scene limit") : 0;
+}
+
+/* A colour argument as linear RGB, ending the line. */
+static int rgb_line(fx_scene *sc, fx3d_rgb *out)
+{
+    fx_color c;
+    TRY(fx_scene_arg_color(sc, &c));
+    TRY(fx_scene_end(sc));
+    *out = fx3d_rgb_from_color(c);
+    return 0;
+}
+
+static int cmd_ambient(fx_scene *sc)
+{
+    GET(r);
+    return rgb_line(sc, &r->s.ambient);
+}
+
+static int cmd_background(fx_scene *sc)
+{
+    GET(r);
+    return rgb_line(sc, &r->s.background);
+}
+
+static int cmd_material(fx_scene *sc)
+{
+    GET(r);
+    fx_color a, d, sp;
+    int32_t f;
+    TRY(fx_scene_arg_color(sc, &a));
+    TRY(fx_scene_arg_color(sc, &d));
+    TRY(fx_scene_arg_color(sc, &sp));
+    TRY(fx_scene_arg_int(sc, &f));
+    fx16 k[3] = {0, 0, FX16_ONE};
+    if (fx_scene_more(sc))
+        TRY(fxs(sc, k, 3));
+    TRY(fx_scene_end(sc));
+    if (f < 0 || f > 256 || k[0] < 0 || k[0] > FX16_ONE || k[1] < 0 || k[1] > FX16_ONE || k[2] < FX16_ONE ||
+        k[2] > 4 * FX16_ONE)
+        return fx_scene_error(sc, "rtmaterial: SHININESS 0..256, REFLECT and TRANSP 0..1, IOR 1..4");
+    r->mat.ambient = fx3d_rgb_from_color(a);
+    r->mat.diffuse = fx3d_rgb_from_color(d);
+    r->mat.specular = fx3d_rgb_from_color(sp);
+    r->mat.shininess = f;
+    r->mat.reflectivity = k[0];
+    r->mat.transparency = k[1];
+    r->mat.ior = k[2];
+    return 0;
+}
+
+static int cmd_texture(fx_scene *sc)
+{
+    GET(r);
+    static const char *const ch[] = {"none", "wood", "marble", "checker", NULL};
+    int t;
+    TRY(t = fx_scene_arg_choice(sc, ch));
+    fx_color c = 0;
+    fx16 scale = FX16_ONE;
+    if (t) {
+        TRY(fx_scene_arg_color(sc, &c));
+        TRY(fx_scene_arg_fx16(sc, &scale));
+        if (scale < FX16_ONE / 16 || scale > 64 * FX16_ONE)
+            return fx_scene_error(sc, "rttexture: SCALE 0.0625..64");
+    }
+    TRY(fx_scene_end(sc));
+    r->mat.texture = (fx_rt_texture)t;
+    r->mat.tex_color = fx3d_rgb_from_color(c);
+    r->mat.tex_scale = scale;
+    return 0;
+}
+
+static int cmd_depth(fx_scene *sc)
+{
+    GET(r);
+    int32_t d;
+    fx16 cut = r->s.cutoff;
+    TRY(fx_scene_arg_int(sc, &d));
+    if (fx_scene_more(sc))
+        TRY(fx_scene_arg_fx16(sc, &cut));
+    TRY(fx_scene_end(sc));
+    if (d < 0 || d > FX_RT_MAX_RECURSION || cut < 0 || cut > FX16_ONE)
+        return fx_scene_error(sc, "rtdepth: DEPTH 0..%d, CUTOFF 0..1", FX_RT_MAX_RECURSION);
+    r->s.max_depth = d;
+    r->s.cutoff = cut;
+    return 0;
+}
+
+static void mult(srt *r, const fx_mat4 *m)
+{
+    fx_mat4 t;
+    fx_mat4_mul(&t, &r->stack[r->top], m);
+    r->stack[r->top] = t;
+}
+
+static int cmd_identity(fx_scene *sc)
+{
+    GET(r);
+    TRY(fx_scene_end(sc));
+    fx_mat4_identity(&r->stack[r->top]);
+    return 0;
+}
+
+static int cmd_push(fx_scene *sc)
+{
+    GET(r);
+    TRY(fx_scene_end(sc));
+    if (r->top + 1 >= RT_STACK)
+        return fx_scene_error(sc, "rtpush: stack full (%d)", RT_STACK);
+    r->stack[r->top + 1] = r->stack[r->top];
+    r->top++;
+    return 0;
+}
+
+static int cmd_pop(fx_scene *sc)
+{
+    GET(r);
+    TRY(fx_scene_end(sc));
+    if (r->top == 0)
+        return fx_scene_error(sc, "rtpop without rtpush");
+    r->top--;
+    return 0;
+}
+
+/* translate (0) or scale (1) by three values */
+static int xyz_cmd(fx_scene *sc, int scale)
+{
+    GET(r);
+    fx16 v[3];
+    TRY(fxs(sc, v, 3));
+    TRY(fx_scene_end(sc));
+    fx_mat4 m;
+    if (scale)
+        fx_mat4_scale(&m, v[0], v[1], v[2]);
+    else
+        fx_mat4_translate(&m, v[0], v[1], v[2]);
+    mult(r, &m);
+    return 0;
+}
+
+static int cmd_translate(fx_scene *sc) { return xyz_cmd(sc, 0); }
+static int cmd_scale(fx_scene *sc) { return xyz_cmd(sc, 1); }
+
+static int cmd_rotate(fx_scene *sc)
+{
+    GET(r);
+    fx16 v[4];
+    TRY(fxs(sc, v, 4));
+    TRY(fx_scene_end(sc));
+    fx_mat4 m;
+    if (fx_mat4_rotate(&m, fx_angle_from_deg16(v[0]), v3(v + 1)) < 0)
+        return fx_scene_error(sc, "rtrotate: the axis is zero");
+    mult(r, &m);
+    return 0;
+}
+
+static int cmd_shape(fx_scene *sc)
+{
+    GET(r);
+    static const char *const ch[] = {"sphere", "cube", "square", "plane", "cylinder", "cone", "taper", NULL};
+    int k;
+    TRY(k = fx_scene_arg_choice(sc, ch));
+    fx16 s = k == 5 ? 0 : FX16_ONE;
+    if (k == 6)
+        TRY(fx_scene_arg_fx16(sc, &s));
+    TRY(fx_scene_end(sc));
+    fx_rt_kind kind = k >= 4 ? FX_RT_CYLINDER : (fx_rt_kind)k;
+    int e = fx_rt_add_shape(&r->s, kind, s, &r->stack[r->top], &r->mat);
+    if (e == -FX_ENOSPC)
+        return fx_scene_error(sc, "rtshape: at most %d objects", RT_OBJECTS);
+    if (e == -FX_EDOM)
+        return fx_scene_error(sc, "rtshape: the transform is singular or scales an axis below 1/16");
+    if (e == -FX_ERANGE)
+        return fx_scene_error(sc, "rtshape: the shape leaves the scene limit (+-%d units)", FX_RT_WORLD);
+    return e < 0 ? fx_scene_error(sc, "rtshape: TAPER 0..2") : 0;
+}
+
+/* Arena memory for a mesh of nv vertices and nt triangles, its BVH, and
+ * the object that refers to it. */
+static int add_mesh(fx_scene *sc, srt *r, fx_mesh *m, const char *what)
+{
+    fx_rt_mesh *rm = fx_scene_alloc(sc, sizeof *rm);
+    fx_rt_bvh_node *nodes = fx_scene_alloc(sc, (size_t)m->ntris * 2 * sizeof *nodes);
+    uint32_t *order = fx_scene_alloc(sc, (size_t)m->ntris * sizeof *order);
+    fx_mesh *keep = fx_scene_alloc(sc, sizeof *keep);
+    if (!rm || !nodes || !order || !keep)
+        return fx_scene_error(sc, "out of scene memory for the %s's BVH (%d triangles)", what, m->ntris);
+    *keep = *m;
+    int e = fx_rt_mesh_build(rm, keep, nodes, m->ntris * 2, order);
+    if (e == -FX_ERANGE)
+        return fx_scene_error(sc, "rtmesh: the %s has a vertex beyond +-%d units", what, FX_RT_MESH_LIMIT);
+    if (e < 0)
+        return fx_scene_error(sc, "rtmesh: the %s cannot be built (%s)", what, fx_strerror(e));
+    e = fx_rt_add_mesh(&r->s, rm, &r->stack[r->top], &r->mat);
+    if (e == -FX_ENOSPC)
+        return fx_scene_error(sc, "rtmesh: at most %d objects", RT_OBJECTS);
+    if (e == -FX_EDOM)
+        return fx_scene_error(sc, "rtmesh: the transform is singular or scales an axis below 1/16");
+    return e < 0 ? fx_scene_error(sc, "rtmesh: the %s leaves the scene limit (+-%d units)", what, FX_RT_WORLD) : 0;
+}
+
+static int cmd_mesh(fx_scene *sc)
+{
+    GET(r);
+    static const char *const ch[] = {"teapot", "torus", "obj", NULL};
+    int k;
+    TRY(k = fx_scene_arg_choice(sc, ch));
+    fx_mesh m = {0, 0, 0, 0, 0, 0, 0};
+    if (k == 2) {
+        TRY(fx_scene_obj_mesh(sc, &m));
+        if (m.ntris < 1)
+            return fx_scene_error(sc, "rtmesh: the OBJ file has no triangles");
+        return add_mesh(sc, r, &m, "OBJ mesh");
+    }
+    fx_mesh_params p = {k == 0 ? FX_MESH_TEAPOT : FX_MESH_TORUS, FX16_ONE, 0, 0, 0, 0};
+    if (k == 0) {
+        TRY(fx_scene_arg_int(sc, &p.n));
+    } else {
+        TRY(fx_scene_arg_fx16(sc, &p.a));
+        TRY(fx_scene_arg_fx16(sc, &p.b));
+        TRY(fx_scene_arg_int(sc, &p.n));
+        TRY(fx_scene_arg_int(sc, &p.k));
+    }
+    TRY(fx_scene_end(sc));
+    int32_t nv, nt;
+    if (fx_mesh_size(&p, &nv, &nt) < 0)
+        return fx_scene_error(sc, "rtmesh: bad tessellation");
+    fx_vec3 *mem = fx_scene_alloc(sc, (size_t)nv * 2 * sizeof(fx_vec3) + (size_t)nt * 3 * sizeof(uint32_t));
+    if (!mem)
+        return fx_scene_error(sc, "out of scene memory for the mesh (%d vertices)", nv);
+    m = (fx_mesh){mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt};
+    if (fx_mesh_make(&m, &p) < 0)
+        return fx_scene_error(sc, "rtmesh: bad tessellation");
+    return add_mesh(sc, r, &m, k == 0 ? "teapot" : "torus");
+}
+
+static int cmd_csg(fx_scene *sc)
+{
+    GET(r);
+    static const char *const ch[] = {"union", "intersection", "difference", NULL};
+    int k;
+    TRY(k = fx_scene_arg_choice(sc, ch));
+    TRY(fx_scene_end(sc));
+    /* the last two top-level objects, in the order they were made */
+    int b = r->s.n - 1;
+    while (b >= 0 && !r->obj[b].top)
+        b--;
+    int a = b - 1;
+    while (a >= 0 && !r->obj[a].top)
+        a--;
+    if (a < 0)
+        return fx_scene_error(sc, "rtcsg needs two objects");
+    int e = fx_rt_add_csg(&r->s, (fx_rt_kind)(FX_RT_UNION + k), a, b);
+    if (e == -FX_ENOSPC)
+        return fx_scene_error(sc, "rtcsg: at most %d objects", RT_OBJECTS);
+    return e < 0 ? fx_scene_error(sc, "rtcsg: the tree would be deeper than %d", FX_RT_MAX_DEPTH) : 0;
+}
+
+static int cmd_raytrace(fx_scene *sc)
+{
+    GET(r);
+    int32_t v[4] = {0, 0, sc->ctx.surf.w, sc->ctx.surf.h};
+    if (fx_scene_more(sc))
+        for (int i = 0; i < 4; i++)
+            TRY(fx_scene_arg_int(sc, &v[i]));
+    TRY(fx_scene_end(sc));
+    fx_rt_render(&r->s, &sc->ctx.surf, v[0], v[1], v[2], v[3]);
+    return 0;
+}
+
+static int cmd_trace(fx_scene *sc)
+{
+    GET(r);
+    int32_t x, y;
+    TRY(fx_scene_arg_int(sc, &x));
+    TRY(fx_scene_arg_int(sc, &y));
+    TRY(fx_scene_end(sc));
+    if (x < 0 || y < 0 || x >= sc->ctx.surf.w || y >= sc->ctx.surf.h)
+        return fx_scene_error(sc, "rttrace: pixel (%d, %d) is outside the %dx%d surface", x, y, sc->ctx.surf.w,
+                              sc->ctx.surf.h);
+    if (sc->host.trace) {
+        char line[64];
+        fx_fmt(line, sizeof line, "rttrace pixel (%d, %d)", x, y);
+        sc->host.trace(sc->host.user, line);
+    }
+    fx_color c = fx_rt_trace_pixel(&r->s, sc->ctx.surf.w, sc->ctx.surf.h, x, y, sc->host.trace, sc->host.user);
+    if (sc->host.trace) {
+        char line[64];
+        fx_fmt(line, sizeof line, "rttrace pixel (%d, %d) = #%06X", x, y, (unsigned)(c & 0xFFFFFF));
+        sc->host.trace(sc->host.user, line);
+    }
+    return 0;
+}
+
+#define D FX_SCENE_DRAWS
+const fx_scene_cmd fx_scene_cmds_rt[] = {
+    {"rtcamera", cmd_camera, "rtcamera EX EY EZ LX LY LZ UX UY UZ FOVY", D},
+    {"rtlight", cmd_light, "rtlight X Y Z #RGB [ATTEN]", D},
+    {"rtambient", cmd_ambient, "rtambient #RGB", D},
+    {"rtbackground", cmd_background, "rtbackground #RGB", D},
+    {"rtmaterial", cmd_material, "rtmaterial #AMB #DIFF #SPEC SHININESS [REFLECT TRANSP IOR]", D},
+    {"rttexture", cmd_texture, "rttexture none | wood|marble|checker #RGB SCALE", D},
+    {"rtdepth", cmd_depth, "rtdepth DEPTH [CUTOFF]", D},
+    {"rtidentity", cmd_identity, "rtidentity", D},
+    {"rtpush", cmd_push, "rtpush", D},
+    {"rtpop", cmd_pop, "rtpop", D},
+    {"rttranslate", cmd_translate, "rttranslate X Y Z", D},
+    {"rtscale", cmd_scale, "rtscale SX SY SZ", D},
+    {"rtrotate", cmd_rotate, "rtrotate DEG AX AY AZ", D},
+    {"rtshape", cmd_shape, "rtshape sphere|cube|square|plane|cylinder|cone | rtshape taper S", D},
+    {"rtmesh", cmd_mesh, "rtmesh teapot N | rtmesh torus R r SIDES RINGS | rtmesh obj \"FILE\"", D},
+    {"rtcsg", cmd_csg, "rtcsg union|intersection|difference", D},
+    {"raytrace", cmd_raytrace, "raytrace [X Y W H]", D},
+    {"rttrace", cmd_trace, "rttrace X Y", D},
+    {0, 0, 0, 0},
+};

@@ -1,0 +1,70 @@
+/* SPDX-License-Identifier: MIT */
+/* The ray tracer on several threads (boards/posix/rt_mt.c): the same
+ * picture as one thread, every row reported finished exactly once. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "fixel/error.h"
+#include "fixel/rt_mt.h"
+#include "fixel/surface.h"
+#include "fx_test.h"
+
+static void scene(fx_rt_scene *s, fx_rt_object *mem)
+{
+    fx_rt_scene_init(s, mem, 4);
+    fx_rt_material m;
+    memset(&m, 0, sizeof m);
+    m.diffuse = fx3d_rgb_from_color(0xC08040);
+    m.specular = fx3d_rgb_from_color(0xFFFFFF);
+    m.shininess = 30;
+    m.reflectivity = FX16_ONE / 4;
+    fx_mat4 a, b;
+    fx_mat4_translate(&a, -FX16_ONE / 2, 0, 0);
+    fx_rt_add_shape(s, FX_RT_SPHERE, 0, &a, &m);
+    fx_mat4_translate(&b, FX16_ONE / 2, 0, 0);
+    fx_rt_add_shape(s, FX_RT_CUBE, 0, &b, &m);
+    fx_rt_add_csg(s, FX_RT_DIFFERENCE, 0, 1);
+    fx_rt_add_light(s, fx_vec3_make(3 * FX16_ONE, 4 * FX16_ONE, 5 * FX16_ONE), fx3d_rgb_from_color(0xFFFFFF), 0);
+    s->ambient = fx3d_rgb_from_color(0x202020);
+}
+
+typedef struct rows {
+    int count[61];
+    int calls;
+} rows;
+
+static void on_rows(void *u, int32_t y0, int32_t y1)
+{
+    rows *r = u;
+    r->calls++;
+    for (int32_t y = y0; y < y1; y++)
+        if (y >= 0 && y < 61)
+            r->count[y]++;
+}
+
+FX_TEST(rt_mt_threads_make_the_one_thread_picture)
+{
+    fx_rt_object mem[4];
+    fx_rt_scene s;
+    scene(&s, mem);
+    enum { W = 50, H = 61 };
+    static uint32_t a[W * H], b[W * H];
+    fx_surface sa, sb;
+    fx_surface_init(&sa, a, W, H, W * 4, FX_FMT_XRGB8888);
+    fx_surface_init(&sb, b, W, H, W * 4, FX_FMT_XRGB8888);
+    fx_rt_render(&s, &sa, 0, 0, W, H);
+    for (int n = 1; n <= 4; n++) {
+        memset(b, 0, sizeof b);
+        rows r;
+        memset(&r, 0, sizeof r);
+        FX_CHECK_EQ(fx_rt_render_mt(&s, &sb, n, 3, on_rows, &r), 0);
+        FX_CHECK(memcmp(a, b, sizeof a) == 0);
+        for (int y = 0; y < H; y++)
+            FX_CHECK_EQ(r.count[y], 1);
+        FX_CHECK_EQ(r.calls, (H + 2) / 3);
+    }
+    FX_CHECK_EQ(fx_rt_render_mt(&s, &sb, 0, 0, 0, 0), -FX_EINVAL);
+    FX_CHECK_EQ(fx_rt_render_mt(&s, &sb, 65, 0, 0, 0), -FX_EINVAL);
+    FX_CHECK_EQ(fx_rt_render_mt(&s, &sb, 2, H + 1, 0, 0), -FX_EINVAL);
+    FX_CHECK(fx_rt_cpu_count() >= 1);
+}

@@ -1,0 +1,770 @@
+/* SPDX-License-Identifier: MIT */
+/* The fixed-point ray tracer (fixel/rt.h) against the double-precision
+ * reference tracer of tests/lib/rtref.c: intersections on random rays
+ * (worst-case error of t), CSG hit lists against the solids' definitions,
+ * no overflow at the scene-scale limit (run under UBSan by SAN=1), the
+ * lighting terms (shadows, reflection, refraction and total internal
+ * reflection, recursion limit), tiles, the ray-tree trace and the
+ * documented errors. The reference and the scenes are the benchmark's
+ * (tools/fixel-bench/rtref.c). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fixel/error.h"
+#include "fixel/rt.h"
+#include "fixel/scene.h"
+#include "fixel/surface.h"
+#include "fx_test.h"
+#include "scenebuf.h"
+#include "../../tools/fixel-bench/rtref.h"
+#include "../../kernel-free-src/rt/rt_int.h" /* white box: the box test */
+
+#define Q (1.0 / 65536.0)
+#define FX(v) ((fx16)lround((v) * 65536.0))
+
+static double urand(uint32_t *s, double lo, double hi) { return lo + (hi - lo) * (fx_test_rand(s) / 4294967296.0); }
+
+/* A random placement: rotation about a random axis, scales in [lo, hi]
+ * per axis, translation within +-tr. */
+static void random_matrix(uint32_t *s, double lo, double hi, double tr, fx_mat4 *m)
+{
+    fx_mat4 a, b, t;
+    fx_mat4_translate(&a, FX(urand(s, -tr, tr)), FX(urand(s, -tr, tr)), FX(urand(s, -tr, tr)));
+    fx_mat4_rotate(&b, fx_angle_from_deg(lround(urand(s, 0, 360))),
+                   fx_vec3_make(FX(urand(s, -1, 1)), FX(urand(s, -1, 1)), FX(urand(s, 0.1, 1))));
+    fx_mat4_mul(&t, &a, &b);
+    fx_mat4_scale(&a, FX(urand(s, lo, hi)), FX(urand(s, lo, hi)), FX(urand(s, lo, hi)));
+    fx_mat4_mul(m, &t, &a);
+}
+
+static void random_ray(uint32_t *s, double range, fx_vec3 *S, fx_vec3 *c)
+{
+    *S = fx_vec3_make(FX(urand(s, -range, range)), FX(urand(s, -range, range)), FX(urand(s, -range, range)));
+    *c = fx_vec3_make(FX(urand(s, -1, 1)), FX(urand(s, -1, 1)), FX(urand(s, -1, 1)));
+    if (fx_vec3_normalize(c) < 0)
+        *c = fx_vec3_make(FX16_ONE, 0, 0);
+}
+
+static void to_d(fx_vec3 v, double o[3]) { o[0] = v.x * Q, o[1] = v.y * Q, o[2] = v.z * Q; }
+
+FX_TEST(rt_isqrt_of_the_discriminant_is_exact)
+{
+    /* through a sphere's hits: a ray from (0,0,-d) along +z meets the unit
+     * sphere at exactly d - 1 and d + 1 for every representable d */
+    fx_rt_object mem[1];
+    fx_rt_scene s;
+    fx_rt_scene_init(&s, mem, 1);
+    fx_mat4 m;
+    fx_mat4_identity(&m);
+    FX_CHECK_EQ(fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &m, 0), 0);
+    uint32_t seed = 5;
+    for (int i = 0; i < 20000; i++) {
+        fx16 d = (fx16)(fx_test_rand(&seed) % (100u << 16));
+        fx_rt_hitlist l;
+        fx_rt_hits(&s, 0, fx_vec3_make(0, 0, -d), fx_vec3_make(0, 0, FX16_ONE), &l);
+        FX_CHECK_EQ(l.n, 2);
+        FX_CHECK_EQ(l.h[0].t, d - FX16_ONE);
+        FX_CHECK_EQ(l.h[1].t, d + FX16_ONE);
+    }
+}
+
+/* The worst |t - t_ref| over random placements and rays for each shape,
+ * skipping near-tangent rays (where t itself is ill-conditioned). */
+static double errs[100000];
+static int nerr;
+static int cmp_d(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static double shape_error(fx_rt_kind kind, fx16 taper, int n, double *worst_rel)
+{
+    nerr = 0;
+    uint32_t seed = 1234 + (uint32_t)kind * 77 + (uint32_t)taper;
+    double worst = 0;
+    *worst_rel = 0;
+    int compared = 0;
+    for (int i = 0; i < n; i++) {
+        fx_rt_object mem[1];
+        fx_rt_scene s;
+        fx_rt_scene_init(&s, mem, 1);
+        fx_mat4 m;
+        random_matrix(&seed, 0.25, 4, 20, &m);
+        if (fx_rt_add_shape(&s, kind, taper, &m, 0) < 0)
+            continue;
+        fx_vec3 S, c;
+        random_ray(&seed, 40, &S, &c);
+        /* aim at the object half the time so most rays hit */
+        if (i & 1) {
+            fx_vec3 target = fx_vec3_make(m.m[0][3] + FX(urand(&seed, -1, 1)), m.m[1][3] + FX(urand(&seed, -1, 1)),
+                                          m.m[2][3] + FX(urand(&seed, -1, 1)));
+            c = fx_vec3_make(target.x - S.x, target.y - S.y, target.z - S.z);
+            if (fx_vec3_normalize(&c) < 0)
+                continue;
+        }
+        fx_rt_hitlist l;
+        rtref_list r;
+        double Sd[3], cd[3];
+        to_d(S, Sd);
+        to_d(c, cd);
+        fx_rt_hits(&s, 0, S, c, &l);
+        rtref_hits(&s, 0, Sd, cd, &r);
+        if (kind != FX_RT_SQUARE && r.n == 2 && fabs(r.h[1].t - r.h[0].t) < 0.05)
+            continue; /* grazing: tested separately */
+        if (l.n != r.n) {
+            /* a miss/hit disagreement is allowed only at a graze */
+            FX_CHECK_MSG(r.n == 0 || kind == FX_RT_SQUARE || fabs(r.h[1].t - r.h[0].t) < 0.05, "kind %d: %d hits, reference %d (t %f %f)",
+                         kind, l.n, r.n, r.n ? r.h[0].t : 0, r.n ? r.h[1].t : 0);
+            continue;
+        }
+        for (int k = 0; k < l.n; k++) {
+            if (fabs(r.h[k].t) > 2 * FX_RT_WORLD * 2)
+                continue; /* beyond the world: such t saturate and are never used */
+            double e = fabs(l.h[k].t * Q - r.h[k].t);
+            if (nerr < (int)(sizeof errs / sizeof errs[0]))
+                errs[nerr++] = e / fmax(1, fabs(r.h[k].t));
+            if (e > worst)
+                worst = e;
+            double rel = e / fmax(1, fabs(r.h[k].t));
+            if (rel > *worst_rel)
+                *worst_rel = rel;
+            FX_CHECK_EQ(l.h[k].entering, r.h[k].entering);
+        }
+        compared++;
+    }
+    FX_CHECK_MSG(compared > n / 4, "only %d of %d rays compared", compared, n);
+    return worst;
+}
+
+FX_TEST(rt_shapes_match_double_on_random_rays)
+{
+    static const struct { fx_rt_kind k; fx16 taper; const char *name; double bound; } shapes[] = {
+        /* bounds on the error relative to max(1, |t|), docs/RAYTRACE.md */
+        {FX_RT_SPHERE, 0, "sphere", 1.0 / 16384},   {FX_RT_CUBE, 0, "cube", 1.0 / 16384},
+        {FX_RT_SQUARE, 0, "square", 1.0 / 16384},   {FX_RT_PLANE, 0, "plane", 1.0 / 256},
+        {FX_RT_CYLINDER, FX16_ONE, "cylinder", 1.0 / 512}, {FX_RT_CYLINDER, 0, "cone", 1.0 / 512},
+        {FX_RT_CYLINDER, FX16_ONE / 2, "tapered cylinder", 1.0 / 512},
+    };
+    for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; i++) {
+        double rel, e = shape_error(shapes[i].k, shapes[i].taper, 20000, &rel);
+        qsort(errs, (size_t)nerr, sizeof errs[0], cmp_d);
+        printf("    %-17s worst |t - t_double| = %.3g; relative to max(1, |t|): worst %.3g, 99.9%% %.3g, median %.3g "
+               "(%d hits)\n",
+               shapes[i].name, e, rel, nerr ? errs[nerr * 999 / 1000] : 0, nerr ? errs[nerr / 2] : 0, nerr);
+        FX_CHECK_MSG(rel <= shapes[i].bound, "%s: relative t error %g above %g", shapes[i].name, rel,
+                     shapes[i].bound);
+    }
+}
+
+/* ---- CSG ---- */
+
+
+FX_TEST(rt_csg_hit_lists_follow_the_solids_definition)
+{
+    uint32_t seed = 99;
+    for (int which = 0; which < 3; which++) {
+        fx_rt_object mem[16];
+        fx_rt_scene s;
+        fx_rt_scene_init(&s, mem, 16);
+        int root = rtref_csg(&s, which);
+        FX_CHECK(root >= 0);
+        int checked = 0, nonempty = 0;
+        for (int i = 0; i < 4000; i++) {
+            fx_vec3 S, c;
+            random_ray(&seed, 4, &S, &c);
+            fx_vec3 target = fx_vec3_make(FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)));
+            c = fx_vec3_make(target.x - S.x, target.y - S.y, target.z - S.z);
+            if (fx_vec3_normalize(&c) < 0)
+                continue;
+            fx_rt_hitlist l;
+            fx_rt_hits(&s, root, S, c, &l);
+            FX_CHECK(!l.overflow);
+            nonempty += l.n > 0;
+            double Sd[3], cd[3];
+            to_d(S, Sd);
+            to_d(c, cd);
+            /* between consecutive hits (and before the first, after the
+             * last) the list's state equals the definition at the middle */
+            int in = l.inside0;
+            for (int k = 0; k <= l.n; k++) {
+                double t0 = k ? l.h[k - 1].t * Q : (l.n ? l.h[0].t * Q - 1 : 0);
+                double t1 = k < l.n ? l.h[k].t * Q : (l.n ? l.h[l.n - 1].t * Q + 1 : 1);
+                if (k)
+                    in = l.h[k - 1].entering;
+                if (k && k < l.n)
+                    FX_CHECK(t1 >= t0);
+                if (t1 - t0 < 1.0 / 1024)
+                    continue; /* too thin to sample away from the surfaces */
+                double tm = (t0 + t1) / 2, p[3] = {Sd[0] + cd[0] * tm, Sd[1] + cd[1] * tm, Sd[2] + cd[2] * tm};
+                FX_CHECK_MSG(in == rtref_inside(&s, root, p), "csg %d ray %d interval %d: state %d", which, i, k, in);
+                checked++;
+            }
+            /* the hits alternate entering and leaving */
+            for (int k = 0; k < l.n; k++)
+                FX_CHECK_EQ(l.h[k].entering, k == 0 ? !l.inside0 : !l.h[k - 1].entering);
+        }
+        FX_CHECK(checked > 4000);
+        FX_CHECK(nonempty > 1000);
+    }
+}
+
+FX_TEST(rt_bounding_boxes_skip_only_missed_shapes)
+{
+    /* a ray the box test rejects has no hit on the shape itself */
+    fx_rt_object mem[16];
+    fx_rt_scene s;
+    fx_rt_scene_init(&s, mem, 16);
+    int root = rtref_csg(&s, 2);
+    uint32_t seed = 4;
+    int skipped = 0;
+    for (int i = 0; i < 20000; i++) {
+        fx_vec3 S, c;
+        random_ray(&seed, 3, &S, &c);
+        for (int o = 0; o <= root; o++) {
+            if (s.obj[o].kind >= FX_RT_UNION || rt_box_meets(&s.obj[o].box, S, c))
+                continue;
+            skipped++;
+            fx_rt_hitlist l = {0, 0, 0, {{0}}};
+            rt_leaf_hits(&s.obj[o], o, rt_xform(&s.obj[o].inv, S, 1), rt_xform_dir24(&s.obj[o].inv, c), &l);
+            FX_CHECK_MSG(l.n == 0, "ray %d: object %d skipped but hit at t %d", i, o, l.h[0].t);
+        }
+    }
+    FX_CHECK(skipped > 10000);
+}
+
+FX_TEST(rt_no_overflow_at_the_scene_limit)
+{
+    /* extreme placements (scales 1/16 and 8, far translations) and rays
+     * from anywhere in the world box: every list sorted, no sanitizer
+     * report (SAN=1 runs this under UBSan) */
+    uint32_t seed = 77;
+    const double W = FX_RT_WORLD;
+    int made = 0, hits = 0;
+    for (int i = 0; i < 3000; i++) {
+        fx_rt_object mem[4];
+        fx_rt_scene s;
+        fx_rt_scene_init(&s, mem, 4);
+        fx_mat4 m;
+        double lo = (i & 1) ? 1.0 / 16 : 1, hi = (i & 1) ? 0.2 : 8;
+        random_matrix(&seed, lo, hi, W - 30, &m);
+        int k = (int)(fx_test_rand(&seed) % 5);
+        fx16 taper = (fx16)(fx_test_rand(&seed) % (2u * FX16_ONE + 1));
+        int r = fx_rt_add_shape(&s, (fx_rt_kind)k, taper, &m, 0);
+        if (r < 0) {
+            FX_CHECK(r == -FX_ERANGE || r == -FX_EDOM);
+            continue;
+        }
+        made++;
+        for (int j = 0; j < 50; j++) {
+            fx_vec3 S, c;
+            random_ray(&seed, W, &S, &c);
+            if (j & 1) { /* toward the object */
+                c = fx_vec3_make(m.m[0][3] - S.x, m.m[1][3] - S.y, m.m[2][3] - S.z);
+                if (fx_vec3_normalize(&c) < 0)
+                    continue;
+            } else if (j % 4 == 2) { /* almost parallel to the caps / faces: crossings far out */
+                c = fx_vec3_make(m.m[0][0] + (fx16)(fx_test_rand(&seed) % 64) - 32, m.m[1][0], m.m[2][0]);
+                if (fx_vec3_normalize(&c) < 0)
+                    continue;
+            }
+            fx_rt_hitlist l;
+            fx_rt_hits(&s, 0, S, c, &l);
+            hits += l.n > 0;
+            for (int q = 1; q < l.n; q++)
+                FX_CHECK(l.h[q].t >= l.h[q - 1].t);
+            fx_rt_hit h;
+            fx_vec3 n;
+            if (fx_rt_first_hit(&s, S, c, 0, &h, &n)) {
+                /* the normal is unit */
+                double len = sqrt((double)n.x * n.x + (double)n.y * n.y + (double)n.z * n.z) * Q;
+                FX_CHECK_MSG(fabs(len - 1) < 1.0 / 1024, "normal length %f", len);
+            }
+        }
+    }
+    FX_CHECK(made > 1000);
+    FX_CHECK(hits > 5000);
+}
+
+FX_TEST(rt_grazing_rays_and_self_intersection)
+{
+    fx_rt_object mem[2];
+    fx_rt_scene s;
+    fx_rt_scene_init(&s, mem, 2);
+    fx_mat4 m;
+    fx_mat4_identity(&m);
+    fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &m, 0);
+    fx_rt_hitlist l;
+    /* tangent at x = 1 exactly: one double root, entering then leaving */
+    fx_rt_hits(&s, 0, fx_vec3_make(FX16_ONE, 0, -5 * FX16_ONE), fx_vec3_make(0, 0, FX16_ONE), &l);
+    FX_CHECK_EQ(l.n, 2);
+    FX_CHECK_EQ(l.h[0].t, 5 * FX16_ONE);
+    FX_CHECK_EQ(l.h[1].t, 5 * FX16_ONE);
+    /* just outside: a miss */
+    fx_rt_hits(&s, 0, fx_vec3_make(FX16_ONE + 1, 0, -5 * FX16_ONE), fx_vec3_make(0, 0, FX16_ONE), &l);
+    FX_CHECK_EQ(l.n, 0);
+    /* from every surface point, a ray leaving along the outward normal
+     * must not see the surface it starts on (t > FX_RT_EPS) */
+    uint32_t seed = 3;
+    for (int i = 0; i < 20000; i++) {
+        fx_vec3 d = fx_vec3_make(FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)));
+        if (fx_vec3_normalize(&d) < 0)
+            continue;
+        fx_rt_hit h;
+        /* P on the sphere (to rounding), leaving outward and tangentially */
+        fx_vec3 out = d;
+        out.x = d.x + (fx16)(urand(&seed, -0.5, 0.5) * 65536);
+        if (fx_vec3_normalize(&out) < 0 || fx_vec3_dot(out, d) <= FX16_ONE / 8)
+            continue;
+        FX_CHECK_MSG(!fx_rt_first_hit(&s, d, out, FX_RT_EPS, &h, 0), "self-hit at t %d", h.t);
+    }
+}
+
+/* ---- lighting ---- */
+
+static fx_rt_material matte(fx_color c)
+{
+    fx_rt_material m;
+    memset(&m, 0, sizeof m);
+    m.diffuse = fx3d_rgb_from_color(c);
+    m.ior = FX16_ONE;
+    return m;
+}
+
+static fx_mat4 floor_matrix(void)
+{
+    fx_mat4 a, b, m;
+    fx_mat4_translate(&a, 0, -FX16_ONE, 0);
+    fx_mat4_rotate_x(&b, fx_angle_from_deg(-90));
+    fx_mat4_mul(&m, &a, &b);
+    return m;
+}
+
+FX_TEST(rt_shadow_feelers_darken_what_the_light_cannot_see)
+{
+    fx_rt_object mem[4];
+    fx_rt_scene s;
+    fx_rt_scene_init(&s, mem, 4);
+    fx_mat4 fl = floor_matrix(), sp;
+    fx_rt_material white = matte(0xFFFFFF);
+    fx_rt_add_shape(&s, FX_RT_PLANE, 0, &fl, &white);
+    fx_mat4_scale(&sp, FX16_HALF, FX16_HALF, FX16_HALF);
+    fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &sp, &white);
+    fx_rt_add_light(&s, fx_vec3_make(0, 10 * FX16_ONE, 0), fx3d_rgb_from_color(0xFFFFFF), 0);
+    /* straight down onto the floor below the sphere, and beside it */
+    fx_vec3 down = fx_vec3_make(0, -FX16_ONE, 0);
+    fx3d_rgb under = fx_rt_trace_ray(&s, fx_vec3_make(FX16_ONE / 100, -FX16_ONE / 2 - 100, 0), down, 0, 0);
+    fx3d_rgb beside = fx_rt_trace_ray(&s, fx_vec3_make(3 * FX16_ONE, 0, 0), down, 0, 0);
+    FX_CHECK_EQ(under.r, 0); /* no ambient: the shadow is black */
+    FX_CHECK(beside.r > FX16_ONE / 2);
+    /* attenuation 1 / (1 + k d^2): k = 1 at d ~ 11 divides by ~122 */
+    s.light[0].atten = FX16_ONE;
+    fx3d_rgb att = fx_rt_trace_ray(&s, fx_vec3_make(3 * FX16_ONE, 0, 0), down, 0, 0);
+    double d2 = 9 + 121, want = beside.r * Q / (1 + d2);
+    FX_CHECK_MSG(fabs(att.r * Q - want) < 1.0 / 256, "attenuated %f, want %f", att.r * Q, want);
+}
+
+typedef struct lines {
+    char text[1 << 16];
+    size_t len;
+    int rays, tir, hits;
+} lines;
+
+static void collect(void *u, const char *line)
+{
+    lines *l = u;
+    size_t n = strlen(line);
+    if (l->len + n + 2 < sizeof l->text) {
+        memcpy(l->text + l->len, line, n);
+        l->len += n;
+        l->text[l->len++] = '\n';
+        l->text[l->len] = 0;
+    }
+    l->rays += strstr(line, "ray from") != 0;
+    l->tir += strstr(line, "total internal reflection") != 0;
+    l->hits += strstr(line, "hit object") != 0;
+}
+
+FX_TEST(rt_reflection_and_refraction_follow_the_laws)
+{
+    fx_rt_object mem[4];
+    fx_rt_scene s;
+    fx_rt_scene_init(&s, mem, 4);
+    s.background = fx3d_rgb_from_color(0x0000FF);
+    fx_rt_material glass = matte(0);
+    glass.transparency = FX16_ONE;
+    glass.ior = FX16_ONE * 3 / 2;
+    fx_mat4 m;
+    fx_mat4_identity(&m);
+    fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &m, &glass);
+    /* through the centre: no bending, the background comes through whole */
+    fx3d_rgb c = fx_rt_trace_ray(&s, fx_vec3_make(0, 0, 5 * FX16_ONE), fx_vec3_make(0, 0, -FX16_ONE), 0, 0);
+    FX_CHECK(abs(c.b - FX16_ONE) < 16 && c.r == 0);
+    /* from inside at a steep angle to the surface: total internal
+     * reflection (critical angle asin(1/1.5) = 41.8 degrees) */
+    lines *L = calloc(1, sizeof *L);
+    s.max_depth = 3;
+    fx_vec3 d = fx_vec3_make(FX16_ONE, FX16_ONE / 10, 0);
+    fx_vec3_normalize(&d);
+    fx_rt_trace_ray(&s, fx_vec3_make(0, FX16_ONE * 9 / 10, 0), d, collect, L);
+    FX_CHECK_MSG(L->tir >= 1, "no total internal reflection in:\n%s", L->text);
+    /* the recursion limit bounds the ray tree: depth 3 -> at most 4 rays on a chain */
+    FX_CHECK(L->rays <= 4);
+    FX_CHECK(L->rays >= 2);
+    free(L);
+
+    /* a mirror: r = d - 2 (d.m) m, seen as the colour of what it reflects */
+    fx_rt_object mem2[4];
+    fx_rt_scene t;
+    fx_rt_scene_init(&t, mem2, 4);
+    fx_rt_material mirror = matte(0);
+    mirror.reflectivity = FX16_ONE;
+    fx_mat4 fl = floor_matrix();
+    fx_rt_add_shape(&t, FX_RT_PLANE, 0, &fl, &mirror);
+    fx_rt_material red = matte(0xFF0000);
+    red.ambient = fx3d_rgb_from_color(0xFF0000);
+    t.ambient = fx3d_rgb_from_color(0xFFFFFF);
+    fx_mat4 sq = rtref_place(4, 1, 0, 0.5, 0.5, 0.5);
+    fx_rt_add_shape(&t, FX_RT_SPHERE, 0, &sq, &red);
+    /* from (0,1,0) down at 45 degrees toward +x: bounces at (2,-1,0) and
+     * rises into the sphere about (4,1,0) */
+    fx_vec3 dd = fx_vec3_make(FX16_ONE, -FX16_ONE, 0);
+    fx_vec3_normalize(&dd);
+    fx3d_rgb seen = fx_rt_trace_ray(&t, fx_vec3_make(0, FX16_ONE, 0), dd, 0, 0);
+    FX_CHECK(seen.r > FX16_ONE / 2 && seen.g == 0);
+    t.max_depth = 0; /* no recursion: the mirror shows only its own (black) terms */
+    seen = fx_rt_trace_ray(&t, fx_vec3_make(0, FX16_ONE, 0), dd, 0, 0);
+    FX_CHECK_EQ(seen.r, 0);
+}
+
+FX_TEST(rt_image_agrees_with_the_double_reference)
+{
+    fx_rt_object mem[8];
+    fx_rt_scene s;
+    FX_CHECK_EQ(rtref_scene(&s, mem, 8, 3), 0);
+    const int W = 120, H = 80;
+    int differ = 0, worst = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            fx_color a = fx_rt_trace_pixel(&s, W, H, x, y, 0, 0), b = rtref_pixel(&s, W, H, x, y, 0);
+            int d = 0;
+            for (int k = 0; k < 24; k += 8) {
+                int e = abs((int)((a >> k) & 255) - (int)((b >> k) & 255));
+                d = e > d ? e : d;
+            }
+            differ += d > 2;
+            worst = d > worst ? d : worst;
+        }
+    printf("    spheres %dx%d: %d of %d pixels differ by more than 2 levels from double (worst %d)\n", W, H, differ,
+           W * H, worst);
+    FX_CHECK_MSG(differ * 100 <= W * H, "%d pixels differ", differ); /* at most 1% */
+}
+
+FX_TEST(rt_tiles_make_the_same_image)
+{
+    fx_rt_object mem[8];
+    fx_rt_scene s;
+    FX_CHECK_EQ(rtref_scene(&s, mem, 8, 3), 0);
+    const int W = 64, H = 40;
+    static uint32_t a[64 * 40], b[64 * 40];
+    fx_surface sa, sb;
+    fx_surface_init(&sa, a, W, H, W * 4, FX_FMT_XRGB8888);
+    fx_surface_init(&sb, b, W, H, W * 4, FX_FMT_XRGB8888);
+    fx_rt_render(&s, &sa, 0, 0, W, H);
+    for (int ty = -5; ty < H; ty += 13)
+        for (int tx = -7; tx < W; tx += 17)
+            fx_rt_render(&s, &sb, tx, ty, 17, 13);
+    FX_CHECK(memcmp(a, b, sizeof a) == 0);
+    /* and each pixel is the one-pixel trace */
+    FX_CHECK_EQ_HEX(a[17 * W + 33] | 0xFF000000u, fx_rt_trace_pixel(&s, W, H, 33, 17, 0, 0));
+}
+
+FX_TEST(rt_trace_prints_the_ray_tree)
+{
+    fx_rt_object mem[8];
+    fx_rt_scene s;
+    FX_CHECK_EQ(rtref_scene(&s, mem, 8, 3), 0);
+    lines *L = calloc(1, sizeof *L);
+    /* a pixel on the glass sphere: primary, reflected and refracted rays */
+    fx_rt_trace_pixel(&s, 240, 160, 80, 80, collect, L);
+    FX_CHECK(strstr(L->text, "primary ray from (0.0000, 1.6000, 6.0000)") != 0);
+    FX_CHECK_MSG(L->hits >= 3, "%s", L->text);
+    FX_CHECK(strstr(L->text, "I = amb + diff + spec + refl + tran") != 0);
+    FX_CHECK(strstr(L->text, "(sphere, entering) t ") != 0);
+    FX_CHECK(strstr(L->text, "(sphere, leaving) t ") != 0);
+    free(L);
+}
+
+FX_TEST(rt_documented_errors)
+{
+    fx_rt_object mem[20];
+    fx_rt_scene s;
+    fx_rt_scene_init(&s, mem, 20);
+    fx_mat4 m;
+    fx_mat4_scale(&m, 0, FX16_ONE, FX16_ONE);
+    FX_CHECK_EQ(fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &m, 0), -FX_EDOM); /* singular */
+    fx_mat4_scale(&m, FX16_ONE / 32, FX16_ONE, FX16_ONE);
+    FX_CHECK_EQ(fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &m, 0), -FX_EDOM); /* below 1/16 */
+    m = rtref_place(FX_RT_WORLD - 0.5, 0, 0, 1, 1, 1);
+    FX_CHECK_EQ(fx_rt_add_shape(&s, FX_RT_CUBE, 0, &m, 0), -FX_ERANGE);
+    fx_mat4_identity(&m);
+    FX_CHECK_EQ(fx_rt_add_shape(&s, FX_RT_CYLINDER, 3 * FX16_ONE, &m, 0), -FX_EINVAL);
+    FX_CHECK_EQ(fx_rt_add_shape(&s, FX_RT_UNION, 0, &m, 0), -FX_EINVAL);
+    int a = fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &m, 0);
+    FX_CHECK_EQ(fx_rt_add_csg(&s, FX_RT_UNION, a, a), -FX_EINVAL);
+    for (int i = 0; i < 16; i++) {
+        int b = fx_rt_add_shape(&s, FX_RT_CUBE, 0, &m, 0);
+        int r = fx_rt_add_csg(&s, FX_RT_UNION, a, b);
+        if (r == -FX_E2BIG || r == -FX_ENOSPC) {
+            FX_CHECK(i >= 8);
+            break;
+        }
+        FX_CHECK(r >= 0);
+        a = r;
+    }
+    FX_CHECK_EQ(fx_rt_add_csg(&s, FX_RT_UNION, a, 0), -FX_EINVAL); /* 0 is inside the tree */
+    fx_rt_scene_init(&s, mem, 1);
+    FX_CHECK_EQ(fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &m, 0), 0);
+    FX_CHECK_EQ(fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &m, 0), -FX_ENOSPC);
+    FX_CHECK_EQ(fx_rt_set_camera(&s, fx_vec3_make(0, 0, 0), fx_vec3_make(0, 0, 0), fx_vec3_make(0, FX16_ONE, 0),
+                                 45 * FX16_ONE),
+                -FX_EDOM);
+    FX_CHECK_EQ(fx_rt_set_camera(&s, fx_vec3_make(0, 0, 200 * FX16_ONE), fx_vec3_make(0, 0, 0),
+                                 fx_vec3_make(0, FX16_ONE, 0), 45 * FX16_ONE),
+                -FX_EDOM);
+}
+
+/* ---- meshes through the BVH ---- */
+
+typedef struct tmesh {
+    fx_mesh m;
+    fx_rt_mesh rm;
+    fx_vec3 *mem;
+    fx_rt_bvh_node *nodes;
+    uint32_t *order;
+} tmesh;
+
+static int make_mesh(tmesh *t, fx_mesh_kind kind, fx16 a, fx16 b, int n, int k)
+{
+    fx_mesh_params p = {kind, a, b, 0, n, k};
+    int32_t nv, nt;
+    if (fx_mesh_size(&p, &nv, &nt) < 0)
+        return -1;
+    t->mem = calloc((size_t)nv * 2 + (size_t)nt, sizeof(fx_vec3));
+    t->m = (fx_mesh){t->mem, t->mem + nv, (uint32_t *)(t->mem + 2 * nv), 0, 0, nv, nt};
+    if (fx_mesh_make(&t->m, &p) < 0)
+        return -1;
+    t->nodes = calloc((size_t)nt * 2, sizeof *t->nodes);
+    t->order = calloc((size_t)nt, sizeof *t->order);
+    return fx_rt_mesh_build(&t->rm, &t->m, t->nodes, nt * 2, t->order);
+}
+
+static void free_mesh(tmesh *t)
+{
+    free(t->mem);
+    free(t->nodes);
+    free(t->order);
+}
+
+/* The nearest crossing over every triangle, in double (t > 0), and how
+ * close it is to a triangle's edge (min barycentric). */
+static double brute_nearest(const fx_mesh *m, const double S[3], const double c[3], double *edge)
+{
+    double best = -1;
+    *edge = 1;
+    for (int32_t i = 0; i < m->ntris; i++) {
+        double v[3][3];
+        for (int k = 0; k < 3; k++) {
+            fx_vec3 p = m->pos[m->tri[3 * i + k]];
+            v[k][0] = p.x * Q, v[k][1] = p.y * Q, v[k][2] = p.z * Q;
+        }
+        double e1[3], e2[3], tv[3], p[3], q[3];
+        for (int k = 0; k < 3; k++)
+            e1[k] = v[1][k] - v[0][k], e2[k] = v[2][k] - v[0][k], tv[k] = S[k] - v[0][k];
+        p[0] = c[1] * e2[2] - c[2] * e2[1], p[1] = c[2] * e2[0] - c[0] * e2[2], p[2] = c[0] * e2[1] - c[1] * e2[0];
+        double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
+        if (det == 0)
+            continue;
+        double u = (tv[0] * p[0] + tv[1] * p[1] + tv[2] * p[2]) / det;
+        q[0] = tv[1] * e1[2] - tv[2] * e1[1], q[1] = tv[2] * e1[0] - tv[0] * e1[2], q[2] = tv[0] * e1[1] - tv[1] * e1[0];
+        double w = (c[0] * q[0] + c[1] * q[1] + c[2] * q[2]) / det;
+        double t = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
+        if (u < 0 || w < 0 || u + w > 1 || t <= 0)
+            continue;
+        if (best < 0 || t < best) {
+            best = t;
+            *edge = fmin(fmin(u, w), 1 - u - w);
+        }
+    }
+    return best;
+}
+
+/* A scene of the one mesh, untransformed. */
+static void mesh_scene(fx_rt_scene *s, fx_rt_object *mem, const tmesh *t)
+{
+    fx_rt_scene_init(s, mem, 1);
+    fx_mat4 id;
+    fx_mat4_identity(&id);
+    FX_CHECK_EQ(fx_rt_add_mesh(s, &t->rm, &id, 0), 0);
+}
+
+FX_TEST(rt_mesh_bvh_finds_the_nearest_triangle)
+{
+    tmesh t;
+    FX_CHECK_EQ(make_mesh(&t, FX_MESH_TEAPOT, FX16_ONE, 0, 4, 0), 0);
+    FX_CHECK(t.rm.nnodes <= 2 * t.m.ntris);
+    fx_rt_object mem[1];
+    fx_rt_scene s;
+    mesh_scene(&s, mem, &t);
+    uint32_t seed = 21;
+    int hits = 0, compared = 0;
+    double worst = 0;
+    for (int i = 0; i < 3000; i++) {
+        fx_vec3 S, c;
+        random_ray(&seed, 8, &S, &c);
+        fx_vec3 target = fx_vec3_make(FX(urand(&seed, -2, 2)), FX(urand(&seed, 0, 3)), FX(urand(&seed, -2, 2)));
+        c = fx_vec3_make(target.x - S.x, target.y - S.y, target.z - S.z);
+        if (fx_vec3_normalize(&c) < 0)
+            continue;
+        double Sd[3], cd[3], edge;
+        to_d(S, Sd);
+        to_d(c, cd);
+        double want = brute_nearest(&t.m, Sd, cd, &edge);
+        fx_rt_hit h;
+        fx_vec3 n;
+        int got = fx_rt_first_hit(&s, S, c, 0, &h, &n);
+        if (edge < 1e-3) /* through an edge or a vertex: either neighbour will do */
+            continue;
+        compared++;
+        FX_CHECK_MSG(got == (want > 0), "ray %d: fixed %s, double %s (t %f)", i, got ? "hits" : "misses",
+                     want > 0 ? "hits" : "misses", want);
+        if (got && want > 0) {
+            hits++;
+            double e = fabs(h.t * Q - want) / fmax(1, want);
+            worst = e > worst ? e : worst;
+        }
+    }
+    printf("    teapot (%d triangles, %d BVH nodes): %d hits of %d rays, worst relative t error %.3g\n", t.m.ntris,
+           t.rm.nnodes, hits, compared, worst);
+    FX_CHECK(hits > 800);
+    FX_CHECK_MSG(worst < 1.0 / 16384, "worst %g", worst);
+    free_mesh(&t);
+}
+
+FX_TEST(rt_mesh_is_watertight)
+{
+    /* rays from inside a closed mesh (a tessellated sphere) always leave
+     * through a triangle: the exact inside test leaves no crack along a
+     * shared edge or at a shared vertex */
+    tmesh t;
+    FX_CHECK_EQ(make_mesh(&t, FX_MESH_SPHERE, 2 * FX16_ONE, 0, 12, 6), 0);
+    fx_rt_object mem[1];
+    fx_rt_scene s;
+    mesh_scene(&s, mem, &t);
+    uint32_t seed = 8;
+    int missed = 0;
+    for (int i = 0; i < 20000; i++) {
+        fx_vec3 S = fx_vec3_make(FX(urand(&seed, -0.5, 0.5)), FX(urand(&seed, -0.5, 0.5)), FX(urand(&seed, -0.5, 0.5)));
+        fx_vec3 c;
+        if (i < 2000) { /* straight at the vertices, where many triangles meet */
+            fx_vec3 v = t.m.pos[fx_test_rand(&seed) % (uint32_t)t.m.nverts];
+            S = fx_vec3_make(0, 0, 0);
+            c = v;
+        } else {
+            c = fx_vec3_make(FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)));
+        }
+        if (fx_vec3_normalize(&c) < 0)
+            continue;
+        fx_rt_hit h;
+        missed += !fx_rt_first_hit(&s, S, c, 0, &h, 0);
+    }
+    FX_CHECK_EQ(missed, 0);
+    free_mesh(&t);
+}
+
+FX_TEST(rt_mesh_build_errors)
+{
+    fx_vec3 pos[3] = {{0, 0, 0}, {FX16_ONE, 0, 0}, {0, 40 * FX16_ONE, 0}};
+    fx_vec3 nrm[3] = {{0, 0, FX16_ONE}, {0, 0, FX16_ONE}, {0, 0, FX16_ONE}};
+    uint32_t tri[3] = {0, 1, 2}, order[1];
+    fx_rt_bvh_node nodes[2];
+    fx_mesh m = {pos, nrm, tri, 3, 1, 3, 1};
+    fx_rt_mesh rm;
+    FX_CHECK_EQ(fx_rt_mesh_build(&rm, &m, nodes, 2, order), -FX_ERANGE); /* y = 40 > 32 */
+    pos[2].y = FX16_ONE;
+    FX_CHECK_EQ(fx_rt_mesh_build(&rm, &m, nodes, 1, order), -FX_ENOSPC);
+    tri[2] = 3;
+    FX_CHECK_EQ(fx_rt_mesh_build(&rm, &m, nodes, 2, order), -FX_EINVAL);
+    tri[2] = 2;
+    FX_CHECK_EQ(fx_rt_mesh_build(&rm, &m, nodes, 2, order), 0);
+    /* one triangle: the ray through its middle, from both sides */
+    fx_rt_object mem[1];
+    fx_rt_scene s;
+    fx_rt_scene_init(&s, mem, 1);
+    fx_mat4 id;
+    fx_mat4_identity(&id);
+    FX_CHECK_EQ(fx_rt_add_mesh(&s, &rm, &id, 0), 0);
+    fx_rt_hit h;
+    fx_vec3 n;
+    FX_CHECK(fx_rt_first_hit(&s, fx_vec3_make(FX16_ONE / 4, FX16_ONE / 4, 3 * FX16_ONE), fx_vec3_make(0, 0, -FX16_ONE),
+                             0, &h, &n));
+    FX_CHECK_EQ(h.t, 3 * FX16_ONE);
+    FX_CHECK_EQ(n.z, FX16_ONE);
+    FX_CHECK(fx_rt_first_hit(&s, fx_vec3_make(FX16_ONE / 4, FX16_ONE / 4, -2 * FX16_ONE), fx_vec3_make(0, 0, FX16_ONE),
+                             0, &h, &n));
+    FX_CHECK_EQ(h.t, 2 * FX16_ONE);
+}
+
+/* ---- the script commands ---- */
+
+typedef struct script_host {
+    scene_buf buf;
+    lines *out;
+} script_host;
+
+static int host_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surface *o)
+{
+    return scene_buf_make(&((script_host *)u)->buf, w, h, f, o);
+}
+
+static void host_trace(void *u, const char *line) { collect(((script_host *)u)->out, line); }
+
+FX_TEST(rt_script_renders_and_traces_a_pixel)
+{
+    static uint32_t px[64 * 48];
+    script_host h = {{px, 64 * 48}, calloc(1, sizeof(lines))};
+    fx_scene_host hs = {&h, host_surface, 0, 0, host_trace};
+    size_t arena_size = 1 << 20;
+    void *arena = malloc(arena_size);
+    fx_scene sc;
+    fx_scene_init(&sc, &hs, arena, arena_size);
+    static const char script[] = "size 64 48\n"
+                                 "rtcamera 0 0 5 0 0 0 0 1 0 40\n"
+                                 "rtlight 3 4 5 #FFFFFF\n"
+                                 "rtmaterial #000000 #FF0000 #000000 0\n"
+                                 "rtshape sphere\n"
+                                 "rtscale 2 0.5 2\n"
+                                 "rtshape cube\n"
+                                 "rtcsg difference\n"
+                                 "raytrace\n"
+                                 "rttrace 32 14\n";
+    FX_CHECK_EQ(fx_scene_run(&sc, script, sizeof script - 1), 0);
+    /* the centre row is cut away (the slab), above it the red sphere */
+    FX_CHECK_EQ_HEX(px[24 * 64 + 32] & 0xFFFFFF, 0);
+    FX_CHECK((px[14 * 64 + 32] >> 16 & 255) > 100 && (px[14 * 64 + 32] & 0xFFFF) == 0);
+    char want[64];
+    snprintf(want, sizeof want, "rttrace pixel (32, 14) = #%06X", px[14 * 64 + 32] & 0xFFFFFF);
+    FX_CHECK_MSG(strstr(h.out->text, want) != 0, "%s not in:\n%s", want, h.out->text);
+    FX_CHECK(strstr(h.out->text, "hit object 2 (sphere, entering)") != 0 ||
+             strstr(h.out->text, "hit object 0 (sphere, entering)") != 0);
+    FX_CHECK(strstr(h.out->text, "light 0: visible") != 0);
+    /* a range error names the argument and its range */
+    fx_scene_init(&sc, &hs, arena, arena_size);
+    static const char bad[] = "rtshape taper 3\n";
+    FX_CHECK(fx_scene_run(&sc, bad, sizeof bad - 1) < 0);
+    FX_CHECK_MSG(strstr(sc.err, "0..2") != 0, "%s", sc.err);
+    free(arena);
+    free(h.out);
+}
