@@ -21,6 +21,7 @@
 #include "fixel/texture.h"
 #include "fixel/curve.h"
 #include "fixel/mesh.h"
+#include "fixel/vsd.h"
 
 #define CO 1048576 /* coordinate bound, 2^20 */
 #define G3 1024    /* 3D geometry bound */
@@ -147,6 +148,12 @@ A(contour, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("N", 1, 64), OPT, 
 A(quiver, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), OPT, IW("STEP", 1, CO));
 A(stream, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("N", 1, 64));
 /* ---- 3D ---- */
+/* ---- visible-surface detection (fixel/vsd.h bounds: 0..2047) ---- */
+A(vsdscene, IW("N", 0, 1000));
+A(vsdpoly, C("COLOR"), REP("vertex", 3, FX_VSD_MAX_VERTS), I("X", 0, FX_VSD_COORD_MAX),
+  I("Y", 0, FX_VSD_COORD_MAX), I("Z", 0, FX_VSD_COORD_MAX));
+A(vsdcull, W("on|off"));
+A(vsd, W("zbuffer|painter|newell|bsp|scanline|warnock|raycast|abuffer"), OPT, I("ROW", 0, FX_VSD_COORD_MAX));
 A(viewport3d, XY("X"), XY("Y"), I("W", 1, 16384), I("H", 1, 16384));
 A(depth, W("16|32|off"));
 A(painter, OPT, IW("MAXTRIANGLES", 1, 1048576));
@@ -184,6 +191,7 @@ A(shadowmap, FORM("end"), FORM("off"), FORM("begin"), IW("SIZE", 16, 4096), I("L
 #define TRIS "at most 262144 triangles (FX_SCENE_MAX_TRIANGLES)"
 #define TEX "texture checker 8 8 2 #000000 #FFFFFF"
 #define L3 "light 0 point 0 6 0 #FFFFFF"
+#define VSDW "at most 1024 polygons (vsdscene, vsdpoly), 16 pieces per polygon"
 
 const fx_scene_argspec fx_scene_argspecs[] = {
     {"size", a_size, 0, 0}, {"format", a_format, 0, 0}, {"clear", a_clear, 0, 0}, {"color", a_color, 0, 0},
@@ -231,6 +239,8 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"torus", a_torus, 0, TRIS}, {"cone", a_cone, 0, TRIS}, {"cylinder", a_cone, 0, TRIS}, {"teapot", a_sizen, 0, TRIS},
     {"floor", a_sizen, 0, TRIS}, {"obj", a_obj, 0, TRIS}, {"shadowplane", a_shadowplane, L3, 0},
     {"shadowmap", a_shadowmap, L3, 0},
+    {"vsdscene", a_vsdscene, 0, 0}, {"vsdpoly", a_vsdpoly, 0, 0}, {"vsdclear", a_none, 0, 0},
+    {"vsdcull", a_vsdcull, 0, 0}, {"vsd", a_vsd, "vsdscene 0", VSDW},
     {0, 0, 0, 0},
 };
 

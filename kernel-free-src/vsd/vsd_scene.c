@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* fixel — the visible-surface test scene (fixel/vsd.h). Designed on a
  * 200 x 150 grid with depths 0..200 and scaled by the largest whole factor
- * that fits the screen, so every vertex stays an integer and every quad
+ * that fits the screen (1 on a smaller one), so every vertex stays an integer and every quad
  * stays exactly planar. */
 #include "vsd_int.h"
 #include "fixel/fixed.h"
@@ -28,9 +28,11 @@ static int add_front(fx_vsd_scene *s, fx_vsd_vertex *v, int n, int32_t k, fx_col
 
 int fx_vsd_demo_scene(fx_vsd_scene *s, int32_t n)
 {
-    if (!s || n < 0 || s->w < 200 || s->h < 150)
+    if (!s || n < 0)
         return -FX_EINVAL;
     int32_t k = s->w / 200 < s->h / 150 ? s->w / 200 : s->h / 150;
+    if (k < 1)
+        k = 1; /* a smaller screen shows the top-left part */
     if (k > 10)
         k = 10; /* depths up to 200 k stay within FX_VSD_COORD_MAX */
     int e;
