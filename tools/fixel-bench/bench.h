@@ -133,5 +133,8 @@ static inline void midpoint_circle_step(int *x, int *y, int *d)
 void extras_run(const char *only, int fmt_mask, int trials, double min_s, int quiet,
                 int (*listed)(const char *, const char *));
 void extras_print(FILE *o);
+/* TABLE 5 (vsd_bench.c): the visible-surface methods at two scene sizes. */
+void vsd_bench_run(int trials, double min_s, int quiet);
+void vsd_bench_print(FILE *o);
 
 #endif
