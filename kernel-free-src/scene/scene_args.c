@@ -153,6 +153,7 @@ A(vsdscene, IW("N", 0, 1000));
 A(vsdpoly, C("COLOR"), REP("vertex", 3, FX_VSD_MAX_VERTS), I("X", 0, FX_VSD_COORD_MAX),
   I("Y", 0, FX_VSD_COORD_MAX), I("Z", 0, FX_VSD_COORD_MAX));
 A(vsdcull, W("on|off"));
+A(vsdoctree, IW("K", 1, 6), IW("SCALE", 1, 64));
 A(vsd, W("zbuffer|painter|newell|bsp|scanline|warnock|raycast|abuffer"), OPT, I("ROW", 0, FX_VSD_COORD_MAX));
 A(viewport3d, XY("X"), XY("Y"), I("W", 1, 16384), I("H", 1, 16384));
 A(depth, W("16|32|off"));
@@ -240,7 +241,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"floor", a_sizen, 0, TRIS}, {"obj", a_obj, 0, TRIS}, {"shadowplane", a_shadowplane, L3, 0},
     {"shadowmap", a_shadowmap, L3, 0},
     {"vsdscene", a_vsdscene, 0, 0}, {"vsdpoly", a_vsdpoly, 0, 0}, {"vsdclear", a_none, 0, 0},
-    {"vsdcull", a_vsdcull, 0, 0}, {"vsd", a_vsd, "vsdscene 0", VSDW},
+    {"vsdcull", a_vsdcull, 0, 0}, {"vsdoctree", a_vsdoctree, 0, 0}, {"vsd", a_vsd, "vsdscene 0", VSDW},
     {0, 0, 0, 0},
 };
 

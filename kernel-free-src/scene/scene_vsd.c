@@ -7,6 +7,8 @@
  *   vsdclear                empty the scene
  *   vsd METHOD [ROW]        draw it with one method; --trace shows the
  *                           method working (ROW: the scan line traced)
+ *   vsdoctree K SCALE       the course's voxel solid (2^K cube) by the octree
+ *                           method, SCALE pixels per voxel, grey by depth
  * State lives in the arena (sc->mod[FX_SCENE_MOD_VSD]). */
 #include "fixel/error.h"
 #include "fixel/scene.h"
@@ -172,12 +174,50 @@ static int cmd_vsd(fx_scene *sc)
     return 0;
 }
 
+static int cmd_vsdoctree(fx_scene *sc)
+{
+    int32_t k, scale;
+    TRY(fx_scene_arg_int(sc, &k));
+    TRY(fx_scene_arg_int(sc, &scale));
+    TRY(fx_scene_end(sc));
+    TRY(fx_scene_surface(sc));
+    if (k < 1 || k > 6 || scale < 1 || scale > 64)
+        return fx_scene_error(sc, "vsdoctree: K 1..6, SCALE 1..64");
+    int32_t n = (int32_t)1 << k, cap = (((int32_t)1 << (3 * k + 3)) - 1) / 7;
+    int32_t w = sc->w < n * scale ? sc->w : n * scale, h = sc->h < n * scale ? sc->h : n * scale;
+    uint8_t *vox = fx_scene_alloc(sc, (size_t)n * (size_t)n * (size_t)n);
+    fx_vsd_onode *nodes = fx_scene_alloc(sc, (size_t)cap * sizeof *nodes);
+    int32_t *depth = fx_scene_alloc(sc, (size_t)w * (size_t)h * sizeof *depth);
+    if (!vox || !nodes || !depth)
+        return fx_scene_error(sc, "vsdoctree: out of scene memory");
+    fx_vsd_demo_solid(vox, k);
+    fx_vsd_octree o;
+    if (fx_vsd_octree_build(&o, nodes, cap, vox, k) < 0)
+        return fx_scene_error(sc, "vsdoctree: the octree did not fit");
+    int32_t visited = fx_vsd_octree_render(&o, scale, depth, w, h);
+    if (visited < 0)
+        return fx_scene_error(sc, "vsdoctree failed (%d)", visited);
+    for (int32_t y = 0; y < h; y++)
+        for (int32_t x = 0; x < w; x++) {
+            int32_t z = depth[(size_t)y * (size_t)w + (size_t)x];
+            if (z < 0)
+                continue;
+            uint32_t g = (uint32_t)(230 - z * 170 / n);
+            fx_surface_put(&sc->ctx.surf, x, y, 0xFF000000u | g << 16 | g << 8 | (g * 3 / 4));
+        }
+    if (sc->ctx.trace)
+        fx_trace(&sc->ctx, "vsdoctree: %d nodes, %d visited front to back (the rest hidden)", o.nnode,
+                 visited);
+    return 0;
+}
+
 #define D FX_SCENE_DRAWS
 const fx_scene_cmd fx_scene_cmds_vsd[] = {
     {"vsdscene", cmd_vsdscene, "vsdscene N", 0},
     {"vsdpoly", cmd_vsdpoly, "vsdpoly #RGB X Y Z X Y Z X Y Z ...", 0},
     {"vsdcull", cmd_vsdcull, "vsdcull on|off", 0},
     {"vsdclear", cmd_vsdclear, "vsdclear", 0},
+    {"vsdoctree", cmd_vsdoctree, "vsdoctree K SCALE", D},
     {"vsd", cmd_vsd, "vsd zbuffer|painter|newell|bsp|scanline|warnock|raycast|abuffer [ROW]", D},
     {0, 0, 0, 0},
 };

@@ -318,3 +318,59 @@ FX_TEST(vsd_traces_show_the_methods_working)
     free(ids);
     free(t);
 }
+
+FX_TEST(vsd_octree_front_to_back_matches_the_zbuffer_of_its_voxels)
+{
+    enum { K = 4, N = 16, SC = 5 };
+    static uint8_t vox[N * N * N];
+    fx_vsd_demo_solid(vox, K);
+    static fx_vsd_onode nodes[4681];
+    fx_vsd_octree o;
+    FX_CHECK_EQ(fx_vsd_octree_build(&o, nodes, 4681, vox, K), 0);
+    FX_CHECK(o.nnode > 9 && o.nnode < 4681);
+    FX_CHECK_EQ(nodes[0].kind, 2);
+    fx_vsd_octree small;
+    FX_CHECK_EQ(fx_vsd_octree_build(&small, nodes, 9, vox, K), -FX_ENOSPC);
+    FX_CHECK_EQ(fx_vsd_octree_build(&o, nodes, 4681, vox, K), 0);
+    /* the same solid as polygons: every voxel's front face, z-buffered */
+    int32_t w = N * SC, h = N * SC;
+    int32_t nv = 0;
+    for (int i = 0; i < N * N * N; i++)
+        nv += vox[i] != 0;
+    fx_vsd_vertex *v = malloc(sizeof *v * 4 * (size_t)nv);
+    fx_vsd_edge *e = malloc(sizeof *e * 4 * (size_t)nv);
+    fx_vsd_poly *p = malloc(sizeof *p * (size_t)nv);
+    fx_vsd_scene s;
+    fx_vsd_init(&s, w, h, v, 4 * nv, e, 4 * nv, p, nv);
+    int32_t *zof = malloc(sizeof *zof * (size_t)nv);
+    for (int z = 0; z < N; z++)
+        for (int y = 0; y < N; y++)
+            for (int x = 0; x < N; x++)
+                if (vox[(z * N + y) * N + x]) {
+                    fx_vsd_vertex q[4] = {{x * SC, y * SC, z * SC}, {x * SC, y * SC + SC, z * SC},
+                                          {x * SC + SC, y * SC + SC, z * SC}, {x * SC + SC, y * SC, z * SC}};
+                    zof[s.npoly] = z;
+                    FX_CHECK_EQ(fx_vsd_add(&s, q, 4, 0), 0);
+                }
+    FX_CHECK_EQ(s.npoly, nv);
+    int32_t *ids = malloc(sizeof *ids * (size_t)(w * h)), *depth = malloc(sizeof *depth * (size_t)(w * h));
+    FX_CHECK_EQ(fx_vsd_render(&s, FX_VSD_ZBUFFER, ids, NULL, 0, NULL, 0, NULL), 0);
+    int32_t visited = fx_vsd_octree_render(&o, SC, depth, w, h);
+    FX_CHECK(visited > 0 && visited < o.nnode); /* some octants skipped as hidden */
+    int32_t d = 0, seen = 0, deep = 0;
+    for (int32_t i = 0; i < w * h; i++) {
+        int32_t want = ids[i] < 0 ? -1 : zof[ids[i]];
+        d += want != depth[i];
+        seen += depth[i] >= 0;
+        deep += depth[i] > 0; /* the notch and the tunnel show voxels behind the front */
+    }
+    FX_CHECK_EQ(d, 0);
+    FX_CHECK(seen > w * h / 3);
+    FX_CHECK(deep > 0);
+    free(ids);
+    free(depth);
+    free(zof);
+    free(v);
+    free(e);
+    free(p);
+}

@@ -154,6 +154,34 @@ void fx_vsd_paint(const fx_vsd_scene *s, const int32_t *ids, const fx_surface *d
 int fx_vsd_abuffer(const fx_vsd_scene *s, const fx_surface *dst, int32_t ox, int32_t oy, void *work,
                    size_t bytes, int32_t *edge_px);
 
+/* Octree method: a solid of 2^k x 2^k x 2^k voxels (k <= 8) as an octree
+ * (a node is empty, full, or mixed with 8 children), drawn looking along
+ * +z with each voxel a scale x scale pixel square: octants are visited
+ * front to back (the four nearer ones first), a full node paints the
+ * pixels of its square not yet painted, and a node whose square is already
+ * painted everywhere is skipped with everything behind it. */
+typedef struct fx_vsd_onode {
+    int32_t kind;  /* 0 empty, 1 full, 2 mixed */
+    int32_t child; /* mixed: index of the first of its 8 children
+                    * (octant bit 0 = +x, bit 1 = +y, bit 2 = +z) */
+} fx_vsd_onode;
+
+typedef struct fx_vsd_octree {
+    fx_vsd_onode *node;
+    int32_t nnode, cap, k;
+} fx_vsd_octree;
+
+/* Build from vox (size^3 bytes, index (z * size + y) * size + x, non-zero
+ * = solid) into the caller's nodes. -FX_ENOSPC when they do not suffice
+ * (a solid needs at most 1 + 8 + 64 + ... nodes, (8^(k+1) - 1) / 7). */
+int fx_vsd_octree_build(fx_vsd_octree *o, fx_vsd_onode *mem, int32_t cap, const uint8_t *vox, int32_t k);
+/* Render into depth (w * h, row stride w): the z of the first voxel seen
+ * at each pixel, -1 where none. Returns the number of nodes visited. */
+int32_t fx_vsd_octree_render(const fx_vsd_octree *o, int32_t scale, int32_t *depth, int32_t w, int32_t h);
+/* The course's voxel solid: a ball with a tunnel through it toward the
+ * viewer and a notch cut out of its front, before a wall, in a 2^k cube. */
+void fx_vsd_demo_solid(uint8_t *vox, int32_t k);
+
 /* The course's test scene: three bars, each over the next and under the one
  * before (a cyclic overlap no ordering of whole polygons draws right), a
  * pair of interpenetrating triangles, and n further tilted quads scattered
