@@ -46,6 +46,9 @@ int vsd_frag_sides(const fx_vsd_scene *s, const vsd_frag *f, int32_t q);
  * back may be f itself. -FX_ENOSPC when f carries FX_VSD_MAX_CUTS cuts. */
 int vsd_frag_split(const fx_vsd_scene *s, const vsd_frag *f, int32_t q, vsd_frag *back,
                    vsd_frag *front);
+/* Split work for the piece methods: pieces, then 2 int32 per piece.
+ * Returns how many pieces fit, -FX_ENOSPC when not even the polygons do. */
+int32_t vsd_frag_work(const fx_vsd_scene *s, void *work, size_t bytes, vsd_frag **fr, int32_t **ints);
 /* Write f's pixels into ids (painting over what is there). */
 void vsd_frag_paint(const fx_vsd_scene *s, const vsd_frag *f, int32_t *ids);
 

@@ -88,14 +88,11 @@ static void insert_sorted(const vsd_frag *fr, int32_t *list, int32_t from, int32
 int vsd_newell(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, const fx_ctx *c,
                fx_vsd_stats *st)
 {
-    size_t per = sizeof(vsd_frag) + 2 * sizeof(int32_t);
-    if (!work && s->npoly)
-        return -FX_ENOSPC;
-    int32_t cap = (int32_t)((bytes / per) > INT32_MAX ? INT32_MAX : bytes / per);
-    if (cap < s->npoly)
-        return -FX_ENOSPC;
-    vsd_frag *fr = work;
-    int32_t *list = (int32_t *)(fr + cap);
+    vsd_frag *fr;
+    int32_t *list;
+    int32_t cap = vsd_frag_work(s, work, bytes, &fr, &list);
+    if (cap < 0)
+        return cap;
     int32_t nf = 0, n = 0;
     for (int32_t p = 0; p < s->npoly; p++) {
         vsd_frag_from_poly(s, p, &fr[nf]);

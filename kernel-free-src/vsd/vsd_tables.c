@@ -237,6 +237,17 @@ void vsd_frag_paint(const fx_vsd_scene *s, const vsd_frag *f, int32_t *ids)
     }
 }
 
+int32_t vsd_frag_work(const fx_vsd_scene *s, void *work, size_t bytes, vsd_frag **fr, int32_t **ints)
+{
+    size_t per = sizeof(vsd_frag) + 2 * sizeof(int32_t);
+    int32_t cap = (int32_t)((bytes / per) > INT32_MAX ? INT32_MAX : bytes / per);
+    if ((!work && s->npoly) || cap < s->npoly)
+        return -FX_ENOSPC;
+    *fr = work;
+    *ints = (int32_t *)(*fr + cap);
+    return cap;
+}
+
 static void frag_extents(vsd_frag *f)
 {
     f->x0 = f->x1 = f->x[0];
@@ -490,7 +501,7 @@ size_t fx_vsd_work_bytes(const fx_vsd_scene *s, fx_vsd_method m, int32_t max_fra
         return (size_t)s->npoly * 2 * sizeof(int64_t) + 8;
     case FX_VSD_NEWELL:
     case FX_VSD_BSP:
-        return (size_t)max_frags * (sizeof(vsd_frag) + 2 * sizeof(int32_t)) + 16;
+        return (size_t)max_frags * (sizeof(vsd_frag) + 2 * sizeof(int32_t)) + 16; /* vsd_frag_work */
     case FX_VSD_SCANLINE:
         return vsd_scanline_bytes(s);
     case FX_VSD_WARNOCK:
