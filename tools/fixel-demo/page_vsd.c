@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* fixel-demo — the visible-surface page (issue #23): the course scene drawn
  * by one method at a time, keys 1-8 switching like the clipping page's
- * clippers, with an overlay of the method at work collected from its trace:
+ * clippers (9: the octree method on a voxel solid), with an overlay of the method at work collected from its trace:
  * Warnock's regions, the BSP tree, the active edge list of one scan line,
  * Newell's moves and cuts. */
 #include <stdio.h>
@@ -45,9 +45,38 @@ static void collect(void *user, const char *line)
         snprintf(lg->line[lg->nline++], sizeof lg->line[0], "%s", line);
 }
 
-static const char *const titles[FX_VSD_METHODS] = {
+static const char *const titles[FX_VSD_METHODS + 1] = {
     "z-buffer", "painter (mean depth)", "Newell depth sort", "BSP tree",
-    "scan-line", "Warnock subdivision", "ray casting", "A-buffer"};
+    "scan-line", "Warnock subdivision", "ray casting", "A-buffer", "octree (voxels)"};
+
+/* The octree method works on a voxel solid, not on the polygons. */
+static void octree_view(fx_ctx *c, const fx_surface *view, int32_t px, int32_t y)
+{
+    enum { K = 5, N = 32, SC = 9 };
+    static uint8_t vox[N * N * N];
+    static fx_vsd_onode nodes[(8 * N * N * N - 1) / 7 + 8];
+    static int32_t depth[N * SC * N * SC];
+    fx_vsd_demo_solid(vox, K);
+    fx_vsd_octree o;
+    if (fx_vsd_octree_build(&o, nodes, (int32_t)(sizeof nodes / sizeof nodes[0]), vox, K) < 0)
+        return;
+    int32_t visited = fx_vsd_octree_render(&o, SC, depth, N * SC, N * SC);
+    fx_surface_clear(view, 0xFF0C121Au);
+    for (int32_t yy = 0; yy < N * SC && yy < view->h; yy++)
+        for (int32_t x = 0; x < N * SC && x < view->w; x++) {
+            int32_t z = depth[yy * N * SC + x];
+            if (z >= 0) {
+                uint32_t g = (uint32_t)(230 - z * 170 / N);
+                fx_surface_put(view, x + (view->w - N * SC) / 2, yy + (view->h - N * SC) / 2,
+                               0xFF000000u | g << 16 | g << 8 | (g * 3 / 4));
+            }
+        }
+    demo_text(c, px + 6, y, 0xFFE8E8E8u, "a 32^3 voxel solid, %d octree nodes", o.nnode);
+    demo_text(c, px + 6, y + 12, 0xFFE8E8E8u, "%d visited front to back; the rest", visited);
+    demo_text(c, px + 6, y + 24, 0xFFE8E8E8u, "lie behind squares already painted");
+    demo_text(c, px + 6, y + 40, 0xFF7A8AA0u, "grey by depth: the tunnel shows the wall,");
+    demo_text(c, px + 6, y + 52, 0xFF7A8AA0u, "the bite the inside of the ball");
+}
 
 void demo_vsd_page(fx_ctx *c, demo_state *st, int32_t top)
 {
@@ -62,6 +91,15 @@ void demo_vsd_page(fx_ctx *c, demo_state *st, int32_t top)
     fx_vsd_demo_scene(&s, st->vsd_extra);
     int32_t ox = 10, oy = top + 2;
     fx_surface view = fx_surface_sub(c->surf, (fx_rect){ox, oy, ox + VW, oy + VH});
+    if (m == FX_VSD_METHODS) {
+        int32_t px = 420;
+        fx_ctx_set_color(c, 0xFF18263Au);
+        fx_fill_rect(c, px, top, st->w - px - 8, st->h - 8 - top);
+        demo_text(c, px + 6, top + 5, 0xFFF2C14Eu, "Visible surfaces: %s", titles[m]);
+        demo_text(c, px + 6, top + 19, 0xFF7A8AA0u, "keys 1-9 method");
+        octree_view(c, &view, px, top + 60);
+        return;
+    }
     memset(&lg, 0, sizeof lg);
     fx_ctx tc = *c;
     tc.trace = collect;
@@ -112,9 +150,9 @@ void demo_vsd_page(fx_ctx *c, demo_state *st, int32_t top)
     fx_ctx_set_color(c, 0xFF18263Au);
     fx_fill_rect(c, px, y, st->w - px - 8, st->h - 8 - y);
     demo_text(c, px + 6, y + 5, 0xFFF2C14Eu, "Visible surfaces: %s", titles[m]);
-    demo_text(c, px + 6, y + 19, 0xFF7A8AA0u, "keys 1-8 method, [ ] scan line, +/- triangles");
+    demo_text(c, px + 6, y + 19, 0xFF7A8AA0u, "keys 1-9 method, [ ] scan line, +/- triangles");
     demo_text(c, px + 6, y + 31, 0xFF7A8AA0u, "1 zbuf 2 painter 3 newell 4 bsp 5 scan 6 warnock");
-    demo_text(c, px + 6, y + 43, 0xFF7A8AA0u, "7 ray 8 a-buffer");
+    demo_text(c, px + 6, y + 43, 0xFF7A8AA0u, "7 ray 8 a-buffer 9 octree");
     y += 60;
     if (err) {
         demo_text(c, px + 6, y, 0xFFE15554u, "error %d (out of work memory?)", err);
@@ -180,7 +218,7 @@ void demo_vsd_page(fx_ctx *c, demo_state *st, int32_t top)
 
 int demo_vsd_key(demo_state *st, int key)
 {
-    if (key >= '1' && key <= '8') {
+    if (key >= '1' && key <= '9') {
         st->vsd_method = key - '1';
         return 1;
     }
