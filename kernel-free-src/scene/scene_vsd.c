@@ -169,6 +169,9 @@ static int cmd_vsd(fx_scene *sc)
     if (e == -FX_ENOSPC)
         return fx_scene_error(sc, "vsd %s: the scene needs more than %d pieces (or %lu bytes)",
                               names[m], frags, (unsigned long)st->work_bytes);
+    if (e == -FX_E2BIG)
+        return fx_scene_error(sc, "vsd %s: a piece would need more than %d cutting planes", names[m],
+                              FX_VSD_MAX_CUTS);
     if (e < 0)
         return fx_scene_error(sc, "vsd %s failed (%d)", names[m], e);
     return 0;

@@ -343,7 +343,7 @@ int vsd_frag_split(const fx_vsd_scene *s, const vsd_frag *f, int32_t q, vsd_frag
                    vsd_frag *front)
 {
     if (f->ncut >= FX_VSD_MAX_CUTS)
-        return -FX_ENOSPC;
+        return -FX_E2BIG;
     const fx_vsd_poly *P = &s->poly[f->poly], *Q = &s->poly[q];
     /* The point of P over pixel (x, y) is behind Q when
      * c_P (a_Q x + b_Q y + d_Q) - c_Q (a_P x + b_P y + d_P) >= 0 (c_P > 0):

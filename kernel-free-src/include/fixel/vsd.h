@@ -38,7 +38,8 @@
  *
  * Memory: fx_vsd_work_bytes says what each method needs; the caller gives
  * it. Too little is -FX_ENOSPC; more pieces than the work holds is
- * -FX_ENOSPC too (never an overflow). The output of every method but the
+ * -FX_ENOSPC too, and a piece that would need more than FX_VSD_MAX_CUTS
+ * splitting planes shaping it at once is -FX_E2BIG (never an overflow). The output of every method but the
  * A-buffer is an id buffer: w * h int32 polygon indices, -1 for background;
  * fx_vsd_paint colours a surface from it.
  */
