@@ -49,6 +49,8 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "fixel/draw.h"
+#include "fixel/mat3d.h"
+#include "fixel/mesh.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -114,6 +116,18 @@ int fx_vsd_init(fx_vsd_scene *s, int32_t w, int32_t h, fx_vsd_vertex *vert, int3
  * coordinate out of range or a concave or non-planar polygon, -FX_ENOSPC
  * when a table is full. */
 int fx_vsd_add(fx_vsd_scene *s, const fx_vsd_vertex *v, int n, fx_color color);
+
+/* Add a mesh of the 3D pipeline as triangles: each vertex goes through
+ * mvp (object -> clip, as fx3d's projection x view x model) and the
+ * perspective division onto the w x h screen (x = (x/w + 1) W / 2,
+ * y = (1 - y/w) H / 2, depth = (z/w + 1) 2047 / 2, each rounded to the
+ * nearest integer). The colour is flat-shaded by a light at the viewer:
+ * color scaled by |cos| of the angle between the face and the view
+ * direction, at least 1/4. There is no clipping: a triangle with a vertex
+ * behind the eye or off the screen or the depth range is left out, as
+ * are triangles that round to a line; they and culled back faces count in
+ * s->culled. Returns 0, -FX_EINVAL, or -FX_ENOSPC when a table fills. */
+int fx_vsd_add_mesh(fx_vsd_scene *s, const fx_mat4 *mvp, const fx_mesh *m, fx_color color);
 
 /* Sign of depth(p) - depth(q) at pixel centre (x, y): < 0 when p is nearer. */
 int fx_vsd_depth_cmp(const fx_vsd_scene *s, int32_t p, int32_t q, int32_t x, int32_t y);
