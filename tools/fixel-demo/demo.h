@@ -37,6 +37,8 @@ typedef struct demo_state {
     int vsd_method;     /* fx_vsd_method */
     int32_t vsd_row;    /* the scan line traced */
     int32_t vsd_extra;  /* random triangles added to the course scene */
+    int vsd_mesh;       /* 1: a torus of the 3D pipeline instead of the course scene */
+    int32_t vsd_turn;   /* its rotation, degrees */
     /* animation */
     uint32_t frame;
 } demo_state;

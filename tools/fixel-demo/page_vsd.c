@@ -88,7 +88,27 @@ void demo_vsd_page(fx_ctx *c, demo_state *st, int32_t top)
     int m = st->vsd_method;
     fx_vsd_init(&s, VW, VH, v, 4096, e, 4096, p, 1024);
     s.background = 0xFF0C121Au;
-    fx_vsd_demo_scene(&s, st->vsd_extra);
+    if (st->vsd_mesh) {
+        static fx_vec3 pos[24 * 12 + 64], nrm[24 * 12 + 64];
+        static uint32_t tri[3 * 2 * 24 * 12 + 64];
+        fx_mesh_params mp = {FX_MESH_TORUS, FX16_ONE * 3 / 2, FX16_ONE * 3 / 5, 0, 24, 12};
+        fx_mesh mesh = {pos, nrm, tri, 0, 0, 24 * 12 + 64, 2 * 24 * 12 + 21};
+        fx_mesh_make(&mesh, &mp);
+        fx_mat4 proj, view, model, pv, mvp;
+        fx_camera cam;
+        fx_camera_set(&cam, fx_vec3_make(0, 2 * FX16_ONE, 5 * FX16_ONE), fx_vec3_make(0, 0, 0),
+                      fx_vec3_make(0, FX16_ONE, 0));
+        fx_camera_view(&cam, &view);
+        fx_mat4_perspective(&proj, fx_angle_from_deg(45), FX16_ONE * 4 / 3, FX16_ONE, 20 * FX16_ONE);
+        fx_mat4_identity(&model);
+        fx_mat4_rotate(&model, fx_angle_from_deg(st->vsd_turn), fx_vec3_make(FX16_ONE, FX16_ONE / 2, 0));
+        fx_mat4_mul(&pv, &proj, &view);
+        fx_mat4_mul(&mvp, &pv, &model);
+        s.cull = 1;
+        fx_vsd_add_mesh(&s, &mvp, &mesh, 0xFF4D9DE0u);
+    } else {
+        fx_vsd_demo_scene(&s, st->vsd_extra);
+    }
     int32_t ox = 10, oy = top + 2;
     fx_surface view = fx_surface_sub(c->surf, (fx_rect){ox, oy, ox + VW, oy + VH});
     if (m == FX_VSD_METHODS) {
@@ -150,15 +170,19 @@ void demo_vsd_page(fx_ctx *c, demo_state *st, int32_t top)
     fx_ctx_set_color(c, 0xFF18263Au);
     fx_fill_rect(c, px, y, st->w - px - 8, st->h - 8 - y);
     demo_text(c, px + 6, y + 5, 0xFFF2C14Eu, "Visible surfaces: %s", titles[m]);
-    demo_text(c, px + 6, y + 19, 0xFF7A8AA0u, "keys 1-9 method, [ ] scan line, +/- triangles");
+    demo_text(c, px + 6, y + 19, 0xFF7A8AA0u, "keys 1-9 method, [ ] scan line, m torus/scene,");
+    demo_text(c, px + 6, y + 55, 0xFF7A8AA0u, "+/- more triangles (scene) or turn (torus)");
     demo_text(c, px + 6, y + 31, 0xFF7A8AA0u, "1 zbuf 2 painter 3 newell 4 bsp 5 scan 6 warnock");
     demo_text(c, px + 6, y + 43, 0xFF7A8AA0u, "7 ray 8 a-buffer 9 octree");
-    y += 60;
+    y += 72;
     if (err) {
         demo_text(c, px + 6, y, 0xFFE15554u, "error %d (out of work memory?)", err);
         return;
     }
-    demo_text(c, px + 6, y, 0xFFE8E8E8u, "%d polygons (%d random)", s.npoly, st->vsd_extra);
+    if (st->vsd_mesh)
+        demo_text(c, px + 6, y, 0xFFE8E8E8u, "torus: %d triangles, %d culled or off screen", s.npoly, s.culled);
+    else
+        demo_text(c, px + 6, y, 0xFFE8E8E8u, "%d polygons (%d random)", s.npoly, st->vsd_extra);
     y += 12;
     if (differ >= 0) {
         demo_text(c, px + 6, y, differ ? 0xFFE15554u : 0xFF7BC96Fu, "%d pixels differ from the z-buffer", differ);
@@ -228,6 +252,14 @@ int demo_vsd_key(demo_state *st, int key)
     }
     if (key == ']' && st->vsd_row < VH - 4) {
         st->vsd_row += 4;
+        return 1;
+    }
+    if (key == 'm') {
+        st->vsd_mesh = !st->vsd_mesh;
+        return 1;
+    }
+    if (st->vsd_mesh && (key == '+' || key == '-')) {
+        st->vsd_turn = (st->vsd_turn + (key == '+' ? 10 : 350)) % 360;
         return 1;
     }
     if (key == '+' && st->vsd_extra < 400) {
