@@ -143,7 +143,10 @@ typedef struct fx_vsd_stats {
     int32_t frags;    /* pieces after splitting (Newell, BSP) */
     int32_t splits;   /* polygons split */
     int32_t moves;    /* Newell: polygons moved to be drawn earlier */
-    int32_t unresolved; /* Newell: pairs left in an order no test proved */
+    int32_t unresolved; /* Newell: pairs left in an order no test proved
+                         * (a cycle no cut it tried broke, as on an
+                         * unculled mesh folding over itself): pixels of
+                         * such pairs can be wrong */
     int32_t nodes;    /* BSP nodes */
     int32_t depth;    /* BSP tree depth */
     int32_t regions;  /* Warnock: regions visited */
