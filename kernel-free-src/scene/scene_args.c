@@ -22,6 +22,7 @@
 #include "fixel/curve.h"
 #include "fixel/mesh.h"
 #include "fixel/rt.h"
+#include "fixel/vsd.h"
 
 #define CO 1048576 /* coordinate bound, 2^20 */
 #define G3 1024    /* 3D geometry bound */
@@ -148,6 +149,13 @@ A(contour, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("N", 1, 64), OPT, 
 A(quiver, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), OPT, IW("STEP", 1, CO));
 A(stream, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("N", 1, 64));
 /* ---- 3D ---- */
+/* ---- visible-surface detection (fixel/vsd.h bounds: 0..2047) ---- */
+A(vsdscene, IW("N", 0, 1000));
+A(vsdpoly, C("COLOR"), REP("vertex", 3, FX_VSD_MAX_VERTS), I("X", 0, FX_VSD_COORD_MAX),
+  I("Y", 0, FX_VSD_COORD_MAX), I("Z", 0, FX_VSD_COORD_MAX));
+A(vsdcull, W("on|off"));
+A(vsdoctree, IW("K", 1, 6), IW("SCALE", 1, 64));
+A(vsd, W("zbuffer|painter|newell|bsp|scanline|warnock|raycast|abuffer"), OPT, I("ROW", 0, FX_VSD_COORD_MAX));
 A(viewport3d, XY("X"), XY("Y"), I("W", 1, 16384), I("H", 1, 16384));
 A(depth, W("16|32|off"));
 A(painter, OPT, IW("MAXTRIANGLES", 1, 1048576));
@@ -207,6 +215,7 @@ A(rttrace, I("X", 0, 16383), I("Y", 0, 16383));
     "one primary ray per pixel of the tile (clipped to the surface); each at most 2^(DEPTH+1) - 1 rays (rtdepth), " \
     "each with at most 4 shadow feelers, each tested against at most 256 objects"
 #define L3 "light 0 point 0 6 0 #FFFFFF"
+#define VSDW "at most 1024 polygons (vsdscene, vsdpoly), 16 pieces per polygon"
 
 const fx_scene_argspec fx_scene_argspecs[] = {
     {"size", a_size, 0, 0}, {"format", a_format, 0, 0}, {"clear", a_clear, 0, 0}, {"color", a_color, 0, 0},
@@ -262,6 +271,8 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"rtmesh", a_rtmesh, 0, "at most 262144 triangles (FX_SCENE_MAX_TRIANGLES), the BVH 2 nodes a triangle"},
     {"rtcsg", a_rtcsg, "rtshape sphere\nrttranslate 0.5 0 0\nrtshape cube", 0},
     {"raytrace", a_raytrace, 0, RTWORK}, {"rttrace", a_rttrace, 0, RTWORK},
+    {"vsdscene", a_vsdscene, 0, 0}, {"vsdpoly", a_vsdpoly, 0, 0}, {"vsdclear", a_none, 0, 0},
+    {"vsdcull", a_vsdcull, 0, 0}, {"vsdoctree", a_vsdoctree, 0, 0}, {"vsd", a_vsd, "vsdscene 0", VSDW},
     {0, 0, 0, 0},
 };
 

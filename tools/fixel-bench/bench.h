@@ -136,5 +136,8 @@ void extras_print(FILE *o);
 /* TABLE 5 (raytrace.c): the ray tracer against its double reference. */
 void raytrace_run(int quiet);
 void raytrace_print(FILE *o);
+/* TABLE 6 (vsd_bench.c): the visible-surface methods at two scene sizes. */
+void vsd_bench_run(int trials, double min_s, int quiet);
+void vsd_bench_print(FILE *o);
 
 #endif

@@ -880,7 +880,8 @@ static void usage_to(FILE *f, int status)
             "  default: fixel with the libc and ref ceilings; --peers adds cairo, pixman, sdl2, sdlgfx\n"
             "  -q: no progress on stderr; -x: skip the reference-picture comparison (TABLE 3)\n"
             "  TABLE 4 (presentation, teapot, deep zoom, idle loop) runs unless --no-extras;\n"
-            "  -w present,teapot,deepzoom,idle picks parts of it; TABLE 5 (raytrace) likewise\n"
+            "  -w present,teapot,deepzoom,idle picks parts of it; TABLE 5 (raytrace) likewise;\n"
+            "  TABLE 6 (visible-surface methods at two scene sizes) runs with it, or alone with -w vsd\n"
             "  --check: verify nominal counts, checksums and W9 agreement only, then exit\n");
     exit(status);
 }
@@ -965,6 +966,8 @@ int main(int argc, char **argv)
         extras_run(opt_w, fm, opt_t, opt_m, opt_quiet, listed);
         if (!opt_w || listed(opt_w, "raytrace"))
             raytrace_run(opt_quiet);
+        if (!opt_w || listed(opt_w, "vsd"))
+            vsd_bench_run(opt_t, opt_m, opt_quiet);
     }
     machine(stdout);
     printf("\n");
@@ -973,6 +976,7 @@ int main(int argc, char **argv)
     print_diffs(stdout);
     extras_print(stdout);
     raytrace_print(stdout);
+    vsd_bench_print(stdout);
     if (opt_md) {
         FILE *o = fopen(opt_md, "w");
         if (o) {
@@ -983,6 +987,7 @@ int main(int argc, char **argv)
             print_diffs(o);
             extras_print(o);
             raytrace_print(o);
+            vsd_bench_print(o);
             fclose(o);
         }
     }

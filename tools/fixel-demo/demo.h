@@ -33,6 +33,12 @@ typedef struct demo_state {
     /* 3D */
     fx_camera cam;
     int shading;        /* fx3d_shading */
+    /* visible surfaces */
+    int vsd_method;     /* fx_vsd_method */
+    int32_t vsd_row;    /* the scan line traced */
+    int32_t vsd_extra;  /* random triangles added to the course scene */
+    int vsd_mesh;       /* 1: a torus of the 3D pipeline instead of the course scene */
+    int32_t vsd_turn;   /* its rotation, degrees */
     /* animation */
     uint32_t frame;
 } demo_state;
@@ -53,6 +59,10 @@ void demo_draw(fx_ctx *c, demo_state *st);
 void demo_pointer(demo_state *st, int32_t x, int32_t y, int down);
 /* A character key for the current page; returns 1 when it was used. */
 int demo_key(demo_state *st, int key);
+
+/* the visible-surface page (page_vsd.c) */
+void demo_vsd_page(fx_ctx *c, demo_state *st, int32_t top);
+int demo_vsd_key(demo_state *st, int key);
 
 /* helpers */
 void demo_text(const fx_ctx *c, int32_t x, int32_t y, fx_color col, const char *fmt, ...)

@@ -38,7 +38,9 @@ static void usage(FILE *f)
             "clipping: drag the line's ends or the window; c/l/n Cohen-Sutherland/Liang-Barsky/NLN\n"
             "fills: click to flood-fill   colour: click the wheel\n"
             "fractals: click zooms in, right click out, the Julia set follows the pointer, 0-6 Koch order\n"
-            "3d: s shading; camera u/d up/down, f/b forward/back, h/j left/right, y/Y yaw, t/T pitch, o/O roll\n");
+            "3d: s shading; camera u/d up/down, f/b forward/back, h/j left/right, y/Y yaw, t/T pitch, o/O roll\n"
+            "hidden: 1-9 z-buffer/painter/Newell/BSP/scan-line/Warnock/ray casting/A-buffer/octree,\n"
+            "        [ ] move the traced scan line, m torus / course scene, +/- triangles or turn\n");
 }
 
 static int find_page(const char *name)

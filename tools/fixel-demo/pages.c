@@ -807,6 +807,8 @@ static void page_viz(fx_ctx *c, demo_state *st)
     }
 }
 
+static void page_vsd(fx_ctx *c, demo_state *st) { demo_vsd_page(c, st, DEMO_TAB_H + 8); }
+
 const demo_page demo_pages[] = {
     {"lines", "Lines", page_lines},
     {"circles", "Circles", page_circles},
@@ -816,6 +818,7 @@ const demo_page demo_pages[] = {
     {"transforms", "Transforms", page_transforms},
     {"colour", "Colour", page_colour},
     {"3d", "3D", page_3d},
+    {"vsd", "Hidden", page_vsd},
     {"fractals", "Fractals", page_fractals},
     {"viz", "Viz", page_viz},
 };
@@ -850,6 +853,8 @@ void demo_state_init(demo_state *st, int32_t w, int32_t h)
     fx_camera_set(&st->cam, fx_vec3_make(0, 3 * FX16_ONE, 7 * FX16_ONE), fx_vec3_make(0, FX16_ONE, 0),
                   fx_vec3_make(0, FX16_ONE, 0));
     st->shading = FX3D_GOURAUD;
+    st->vsd_method = 5; /* Warnock: the picture shows its regions */
+    st->vsd_row = 80;
 }
 
 void demo_draw(fx_ctx *c, demo_state *st)
@@ -955,6 +960,8 @@ int demo_key(demo_state *st, int key)
             return 0;
         return 1;
     }
+    if (!strcmp(name, "vsd"))
+        return demo_vsd_key(st, key);
     if (!strcmp(name, "3d")) {
         fx16 d = FX16_ONE / 4;
         fx_angle a = FX_ANGLE_45 / 9;

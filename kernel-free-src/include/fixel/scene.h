@@ -54,6 +54,7 @@ enum {
     FX_SCENE_MOD_INPUT,
     FX_SCENE_MOD_APP,
     FX_SCENE_MOD_RT,
+    FX_SCENE_MOD_VSD,
     FX_SCENE_MOD_COUNT
 };
 
