@@ -458,7 +458,6 @@ static const char *kv_parse(kiosk_config *k, const char *scope, tok t, const kio
     *val = (tok){t.s + eq + 1, t.n - eq - 1};
     *qq = q;
     if (!q || q->name[0] < 'a') return NULL; /* the caller names the keys */
-    k->errat = val->s;
     if (q->type == 'i') {
         if (parse_int(*val, (int)q->min, (int)q->max, iv)) return range_msg(k, q, *val);
     } else if (q->type == 't' || q->type == 'f') {
