@@ -18,7 +18,8 @@ FUZZ_EXTRA_fuzz_kiosk := tools/fixel-kiosk/kiosk_parse.c
 # MQTT (docs/kiosk.md, "MQTT"): libmosquitto and cJSON when pkg-config finds
 # them; without, fixel-kiosk builds and refuses a config with "mqtt" saying why.
 KIOSK_MQTT_PKGS := libmosquitto libcjson
-HAVE_KIOSK_MQTT := $(shell $(PKG_CONFIG) --exists $(KIOSK_MQTT_PKGS) 2>/dev/null && echo 1)
+# Debian ships them shared only: a STATIC=1 kiosk goes without.
+HAVE_KIOSK_MQTT := $(if $(filter 1,$(STATIC)),,$(shell $(PKG_CONFIG) --exists $(KIOSK_MQTT_PKGS) 2>/dev/null && echo 1))
 ifeq ($(HAVE_KIOSK_MQTT),1)
 $(BUILD)/obj/tools/fixel-kiosk/%.o: CPPFLAGS += -DKIOSK_HAVE_MQTT $(shell $(PKG_CONFIG) --cflags $(KIOSK_MQTT_PKGS))
 TOOL_LIBS_fixel-kiosk += $(shell $(PKG_CONFIG) --libs $(KIOSK_MQTT_PKGS))
