@@ -4,6 +4,7 @@
 # library: a fresh machine has python3 but not PIL.
 #   img.py same A B X0 Y0 X1 Y1     exit 0 when the rectangles are identical
 #   img.py count A X0 Y0 X1 Y1 RRGGBB   print how many pixels have that colour
+#   img.py ppm A OUT                 A as a binary PPM (decoded once, compared often)
 import struct, sys, zlib
 
 def load(path):
@@ -59,6 +60,10 @@ if cmd == 'same':
     a, b = load(sys.argv[2]), load(sys.argv[3])
     r = [int(v) for v in sys.argv[4:8]]
     sys.exit(0 if rect(a, *r) == rect(b, *r) else 1)
+elif cmd == 'ppm':
+    w, h, bpp, px = load(sys.argv[2])
+    rgb = px if bpp == 3 else b''.join(px[i:i + 3] for i in range(0, len(px), 4))
+    open(sys.argv[3], 'wb').write(b'P6\n%d %d\n255\n' % (w, h) + rgb)
 elif cmd == 'count':
     a = load(sys.argv[2])
     r = [int(v) for v in sys.argv[3:7]]
