@@ -262,7 +262,10 @@ kmq *kmq_start(const kiosk_mqtt_cfg *cfg, const char *version, char *err, size_t
 void kmq_stop(kmq *m)
 {
     if (!m) return;
-    if (m->cfg.prefix[0] && m->st.connected) {
+    pthread_mutex_lock(&m->lock);
+    int up = m->st.connected;
+    pthread_mutex_unlock(&m->lock);
+    if (m->cfg.prefix[0] && up) {
         /* a clean disconnect sends no will: say it ourselves */
         int mid;
         if (mosquitto_publish(m->mosq, &mid, m->will_topic, 7, "offline", 1, true) == MOSQ_ERR_SUCCESS) {
@@ -313,7 +316,10 @@ void kmq_get_state(kmq *m, kmq_state *st)
 void kmq_publish(kmq *m, const char *sub, const char *payload, int retain)
 {
     char t[KIOSK_TOPIC_MAX + 32];
-    if (!m->cfg.prefix[0] || !m->st.connected) return;
+    pthread_mutex_lock(&m->lock);
+    int up = m->st.connected;
+    pthread_mutex_unlock(&m->lock);
+    if (!m->cfg.prefix[0] || !up) return;
     snprintf(t, sizeof t, "%s/%s", m->cfg.prefix, sub);
     mosquitto_publish(m->mosq, NULL, t, (int)strlen(payload), payload, 1, retain != 0);
 }
