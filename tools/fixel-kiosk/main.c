@@ -42,6 +42,12 @@
 #ifndef FX_NO_PNG
 #include <png.h>
 #endif
+#ifdef KIOSK_HAVE_SYSTEMD
+#include <systemd/sd-daemon.h>
+#else
+/* without libsystemd: no service manager to tell */
+static int sd_notify(int unset, const char *state) { (void)unset; (void)state; return 0; }
+#endif
 
 #define TITLE_H 22
 #define STATUS_H 14
@@ -107,6 +113,8 @@ typedef struct kiosk {
     int identify_phase;
     uint32_t reloads;
     char cfg_error[200];  /* why the last reload was refused ("" : it was not) */
+    int ready_sent;       /* systemd: READY=1 after the first frame */
+    int64_t wd_ms, wd_last; /* systemd watchdog: ping interval (0: none), last ping */
 } kiosk;
 
 static int64_t mono_ms(void)
@@ -756,6 +764,11 @@ static void render(kiosk *k)
     else if (n) fx_app_present(k->app, dmg, n);
     if (whole || n) {
         k->frames++;
+        if (!k->headless && !k->ready_sent) {
+            /* Type=notify: the unit is up once something is on the screen */
+            sd_notify(0, "READY=1\nSTATUS=drawing");
+            k->ready_sent = 1;
+        }
         if (k->live_out) {
             char path[4096], tmp[4100];
             snprintf(path, sizeof path, "%s/live.ppm", k->live_out);
@@ -1014,7 +1027,13 @@ static void on_tick(void *user, int value)
     k->now_ms = mono_ms();
     feed_available(k);
     mqtt_pump(k);
-    check_images(k); /* a stat() per image widget: cheap at 10 Hz */
+    check_images(k);
+    /* WatchdogSec=: pinged from the main loop's own timer, so a hung loop
+     * (not just a dead process) gets the kiosk restarted */
+    if (k->wd_ms && k->now_ms - k->wd_last >= k->wd_ms) {
+        sd_notify(0, "WATCHDOG=1");
+        k->wd_last = k->now_ms;
+    } /* a stat() per image widget: cheap at 10 Hz */
     update_stale(k);
     if (any_dirty(k)) fx_app_post_redisplay(k->app);
     fx_app_timer(k->app, 100, on_tick, 0);
@@ -1258,6 +1277,10 @@ int main(int argc, char **argv)
             return 1;
         }
         k->live_out = out;
+#ifdef KIOSK_HAVE_SYSTEMD
+        uint64_t wd_us;
+        if (sd_watchdog_enabled(0, &wd_us) > 0) k->wd_ms = wd_us / 2000 < 100 ? 100 : (int64_t)(wd_us / 2000);
+#endif
         if (k->cfg.mqtt.enabled) {
             char merr[300] = "";
             if (!(k->mq = kmq_start(&k->cfg.mqtt, FX_VERSION_STRING, merr, sizeof merr))) {
