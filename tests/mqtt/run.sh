@@ -111,7 +111,20 @@ start() { # start N: kiosk N in the background, its frames in $out/kN
     FIXEL_BACKEND=memory "$bin" --out "$out/k$1" "$out/k$1.conf" </dev/null >>"$out/k$1.log" 2>&1 &
     eval "K$1=\$!"; pids="$pids $!"
 }
-for k in 1 2 3 4 5; do start $k; done
+# k7: the widgets k1 and k2 do not have, fed by MQTT
+logo=$(cd "$here/../.." && pwd)/examples/kiosk-logo.png
+cat > "$out/k7.conf" <<EOC
+grid 3x1
+size 480x320
+stale 60
+mqtt host=127.0.0.1 port=$PA prefix=fleet/k7 backoff=1 backoff_max=2
+subscribe k7/lines qos=1
+subscribe k7/cam source=cam qos=1
+widget spark s col=0 row=0
+widget bar s col=1 row=0 min=0 max=10
+widget image cam col=2 row=0
+EOC
+for k in 1 2 3 4 5 7; do start $k; done
 # k6: k2's config under valgrind through everything below, with MQTT_VALGRIND=1
 # (on a loaded two-core machine it slows every other kiosk down; not for an
 # ASan build, which valgrind cannot run)
@@ -139,6 +152,7 @@ expect() { # expect NAME CONF LINES...
 R00="4 4 238 151"; R10="244 4 478 151"; R01="4 157 238 304"; W0="4 4 238 304"
 shows() { [ -s "$out/$1/live.ppm" ] && img same "$out/$1/live.ppm" "$out/exp-$2/last.ppm" $3 $4 $5 $6; }
 # the expected frames first: values age into STALE while the checks wait
+expect k7 "$out/k7.conf" s=1 s=7 s=3 "cam=$logo"
 expect t215 "$out/k1.conf" temp=21.5
 expect t216 "$out/k1.conf" temp=21.6
 expect h4525 "$out/k1.conf" hum=45.25
@@ -162,6 +176,16 @@ pub -t csv/site1 -m '12:01,1013.25,running'
 waitfor 50 shows k2 csv $W0 && ok || bad "k2 CSV rows over MQTT differ from stdin"
 waitfor 50 shows k2 csv "244 4 478 304" && ok || bad "k2 CSV text column"
 if [ $vg = 1 ]; then waitfor 150 shows k6 csv $W0 && ok || bad "k6 (valgrind) CSV rows over MQTT differ from stdin"; fi
+# spark (history of three messages), bar, image path
+waitfor 50 online k7 || bad "k7 never said online"
+for v in 1 7 3; do pub -q 1 -t k7/lines -m "s=$v"; done
+pub -q 1 -t k7/cam -m "$logo"
+waitfor 50 shows k7 k7 "4 4 158 304" && ok || bad "k7 spark of three MQTT values differs from stdin"
+waitfor 50 shows k7 k7 "164 4 318 304" && ok || bad "k7 bar differs from stdin"
+waitfor 50 shows k7 k7 "324 4 478 304" && ok || bad "k7 image named over MQTT differs from stdin"
+# and it is the picture, not a placeholder both would draw alike: a quarter
+# of the cell differs from the panel colour
+[ "$(img count "$out/k7/live.ppm" 324 4 478 304 1b222b)" -lt 35000 ] && ok || bad "k7 shows no image"
 # TLS with a client certificate, a password and the broker's name checked
 waitfor 60 grep -q "mqtt connected" "$out/k3.log" && ok || bad "k3 (TLS) did not connect: $(cat "$out/k3.log")"
 mosquitto_pub -h localhost -p $PB --cafile "$out/ca.crt" --cert "$out/client.crt" --key "$out/client.key" \
@@ -300,7 +324,7 @@ step 7
 kill -TERM $K2; wait $K2; rc=$?
 [ $rc = 0 ] && ok || bad "k2 exited $rc on SIGTERM"
 [ "$(retained fleet/k2/online)" = offline ] && ok || bad "k2 did not publish offline on a clean stop"
-for k in 1 3 4 5; do eval "p=\$K$k"; kill -0 $p 2>/dev/null && ok || bad "k$k died: $(tail -3 "$out/k$k.log")"; done
+for k in 1 3 4 5 7; do eval "p=\$K$k"; kill -0 $p 2>/dev/null && ok || bad "k$k died: $(tail -3 "$out/k$k.log")"; done
 if [ $vg = 1 ]; then
     kill -TERM $K6; wait $K6; rc=$?
     [ $rc = 0 ] && grep -q "ERROR SUMMARY: 0 errors" "$out/k6.log" && ok || bad "valgrind (exit $rc): $(grep -E 'ERROR SUMMARY|definitely' "$out/k6.log")"
