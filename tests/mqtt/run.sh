@@ -18,7 +18,8 @@ step() { echo "mqtt: $(( $(date +%s) - t0 )) s: $*"; }
 bad() { F=$((F + 1)); echo "FAIL: $*"; }
 here=$(cd "$(dirname "$0")" && pwd)
 img() { python3 "$here/img.py" "$@"; }
-for t in mosquitto mosquitto_pub mosquitto_sub openssl python3; do
+PATH=$PATH:/usr/sbin:/sbin # Debian puts the broker in /usr/sbin, off a user's PATH
+for t in mosquitto mosquitto_passwd mosquitto_pub mosquitto_sub openssl python3; do
     command -v $t >/dev/null 2>&1 || { echo "mqtt: $t missing (make test installs mosquitto mosquitto-clients openssl python3)"; echo "mqtt: 0 passed, 1 failed"; exit 1; }
 done
 rm -rf "$out"; mkdir -p "$out"; out=$(cd "$out" && pwd)
