@@ -244,3 +244,69 @@ FX_TEST(kiosk_csv_header)
     FX_CHECK_EQ(line("t,m,x", 1), KIOSK_LINE_BAD); /* heat maps take no CSV column */
     FX_CHECK_EQ(K.ncols, 0);
 }
+
+FX_TEST(kiosk_mqtt_directives)
+{
+    char err[128];
+    FX_CHECK_EQ(cfg("mqtt host=broker.lan port=8883 client=hall keepalive=60 session=persistent prefix=fleet/hall "
+                    "backoff=2 backoff_max=30 auth=/etc/fixel/mqtt.auth status=5\n"
+                    "mqtt_tls ca=/etc/ca.crt cert=/etc/c.crt key=/etc/c.key verify=1\n"
+                    "subscribe home/+/temp source=temp json=sensors.values[2].t qos=1\n"
+                    "subscribe fleet/lines/#\n"
+                    "widget number temp\n",
+                    err), 0);
+    FX_CHECK_EQ(K.mqtt.enabled, 1);
+    FX_CHECK(strcmp(K.mqtt.host, "broker.lan") == 0);
+    FX_CHECK_EQ(K.mqtt.port, 8883);
+    FX_CHECK_EQ(K.mqtt.persistent, 1);
+    FX_CHECK_EQ(K.mqtt.tls, 1);
+    FX_CHECK_EQ(K.mqtt.nsubs, 2);
+    FX_CHECK_EQ(K.mqtt.subs[0].source, 0);
+    FX_CHECK_EQ(K.mqtt.subs[0].qos, 1);
+    FX_CHECK_EQ(K.mqtt.subs[1].source, -1);
+    kiosk_jstep st[KIOSK_JPATH_DEPTH];
+    FX_CHECK_EQ(kiosk_jpath_steps(K.mqtt.subs[0].json, st, KIOSK_JPATH_DEPTH), 4);
+    FX_CHECK_EQ(st[2].index, 2);
+    FX_CHECK(st[3].name && st[3].len == 1 && st[3].name[0] == 't');
+    FX_CHECK_EQ(kiosk_jpath_steps("a..b", st, KIOSK_JPATH_DEPTH), -1);
+    FX_CHECK_EQ(kiosk_jpath_steps("a[x]", st, KIOSK_JPATH_DEPTH), -1);
+    /* errors: FILE:LINE:COL comes from errline/errcol, the range from the table */
+    FX_CHECK_EQ(cfg("grid 2x2\nmqtt host=h port=0\n", err), -1);
+    FX_CHECK(strstr(err, "port=0: expected 1..65535") != NULL);
+    FX_CHECK_EQ(K.errline, 2);
+    FX_CHECK_EQ(K.errcol, 13);
+    FX_CHECK_EQ(cfg("mqtt host=h\nsubscribe a/b+ qos=1\n", err), -1);
+    FX_CHECK_EQ(K.errcol, 11);
+    FX_CHECK_EQ(cfg("mqtt host=h\nsubscribe # qos=1 json=a\n", err), -1); /* json without source */
+    FX_CHECK_EQ(cfg("subscribe a\n", err), -1);                           /* no broker */
+    FX_CHECK_EQ(cfg("mqtt port=1\n", err), -1);                            /* no host */
+    FX_CHECK_EQ(cfg("mqtt host=h session=sometimes\n", err), -1);
+    FX_CHECK_EQ(cfg("mqtt host=h\nmqtt_tls cert=a\n", err), -1);
+    FX_CHECK_EQ(cfg("mqtt host=h prefix=a/#\n", err), -1);
+    FX_CHECK_EQ(cfg("mqtt host=h backoff=10 backoff_max=5\n", err), -1);
+}
+
+FX_TEST(kiosk_topic_match_and_set_value)
+{
+    FX_CHECK(kiosk_topic_match("a/+/c", "a/b/c", 5));
+    FX_CHECK(!kiosk_topic_match("a/+/c", "a/b/d", 5));
+    FX_CHECK(!kiosk_topic_match("a/+", "a/b/c", 5));
+    FX_CHECK(kiosk_topic_match("a/#", "a/b/c", 5));
+    FX_CHECK(kiosk_topic_match("a/#", "a", 1));
+    FX_CHECK(kiosk_topic_match("#", "x/y", 3));
+    FX_CHECK(!kiosk_topic_match("#", "$SYS/x", 6));
+    FX_CHECK(!kiosk_topic_match("a/b", "a/bc", 4));
+    FX_CHECK(!kiosk_topic_match("a/bc", "a/b", 3));
+    FX_CHECK(kiosk_topic_match("a/+", "a/", 2));
+    char err[128];
+    FX_CHECK_EQ(cfg("widget number t\nwidget heat h col=1 cells=2x1 min=0 max=1\nwidget text s row=1\n", err), 0);
+    FX_CHECK_EQ(kiosk_set_value(&K, 0, " 21.5\n", 6, 10), KIOSK_LINE_OK);
+    FX_CHECK_EQ(K.sources[0].value, 21500);
+    FX_CHECK_EQ(kiosk_set_value(&K, 0, "warm", 4, 10), KIOSK_LINE_BAD);
+    FX_CHECK_EQ(kiosk_set_value(&K, 0, "1\0002", 3, 10), KIOSK_LINE_BAD);
+    FX_CHECK_EQ(kiosk_set_value(&K, 1, "0.5,1", 5, 10), KIOSK_LINE_OK);
+    FX_CHECK_EQ(K.sources[1].cells[1], 1000);
+    FX_CHECK_EQ(kiosk_set_value(&K, 1, "0.5", 3, 10), KIOSK_LINE_BAD);
+    FX_CHECK_EQ(kiosk_set_value(&K, 2, "running", 7, 10), KIOSK_LINE_OK);
+    FX_CHECK_EQ(kiosk_set_value(&K, 5, "1", 1, 10), KIOSK_LINE_BAD);
+}

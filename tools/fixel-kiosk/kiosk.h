@@ -62,6 +62,39 @@ typedef struct kiosk_source {
     uint32_t path_gen;         /* image: bumped by every line naming a path (forces a reload) */
 } kiosk_source;
 
+/* MQTT (docs/kiosk.md, "MQTT"): the broker and the topics that feed
+ * sources. Parsed here like every other directive (ranges in kiosk_keys);
+ * the client itself is kiosk_mqtt.c, built only with libmosquitto. */
+#define KIOSK_MQTT_SUBS 16
+#define KIOSK_TOPIC_MAX 128 /* topic filters and the control prefix, including the NUL */
+#define KIOSK_HOST_MAX 128
+#define KIOSK_JPATH_MAX 64  /* a JSON path such as sensors.temp or values[2] */
+#define KIOSK_JPATH_DEPTH 16 /* steps of one JSON path */
+
+typedef struct kiosk_sub {
+    char topic[KIOSK_TOPIC_MAX]; /* a filter: + and # wildcards */
+    int qos;                     /* 0..2 */
+    int source;                  /* -1: the payload is data lines, exactly as on stdin */
+    char json[KIOSK_JPATH_MAX];  /* "": the payload itself is the value */
+    int line, col;               /* where it was declared (errors found after the whole file) */
+    char srcname[KIOSK_NAME_MAX];
+} kiosk_sub;
+
+typedef struct kiosk_mqtt_cfg {
+    int enabled;                 /* an "mqtt" directive was given */
+    char host[KIOSK_HOST_MAX];
+    int port, keepalive, persistent; /* persistent: clean session off */
+    int backoff_min, backoff_max;    /* reconnect delay, seconds: doubles from min up to max */
+    int status_s;                /* status republished at least this often */
+    char client[64];             /* "" : fixel-kiosk-HOSTNAME-PID */
+    char prefix[KIOSK_TOPIC_MAX];/* control and status topics live below it; "" : none */
+    char auth[KIOSK_PATH_MAX];   /* file: user on the first line, password on the second */
+    int tls, verify;             /* verify: check the broker's name against its certificate */
+    char ca[KIOSK_PATH_MAX], cert[KIOSK_PATH_MAX], key[KIOSK_PATH_MAX];
+    int nsubs;
+    kiosk_sub subs[KIOSK_MQTT_SUBS];
+} kiosk_mqtt_cfg;
+
 typedef struct kiosk_config {
     int cols, rows;
     int width, height;         /* 0: the display's size */
@@ -76,6 +109,9 @@ typedef struct kiosk_config {
     kiosk_widget widgets[KIOSK_MAX_WIDGETS];
     kiosk_source sources[KIOSK_MAX_SOURCES];
     char msg[96];              /* the last range message (from kiosk_keys) */
+    kiosk_mqtt_cfg mqtt;
+    const char *errat;         /* parser scratch: the token an error is about */
+    int errline, errcol;       /* of the last config error, 1-based (col 1 when the line as a whole is wrong) */
 } kiosk_config;
 
 /* Parse a config in buf[0..len). On error returns -1 and writes "line N:
@@ -126,6 +162,20 @@ typedef enum kiosk_line_result {
  * Returns a kiosk_line_result; on OK *src is one source updated and
  * k->changed has a bit for every source updated. */
 int kiosk_data_line(kiosk_config *k, const char *line, size_t len, int64_t now_ms, int *src);
+
+/* Give source s the value v[0..n) (a number, text, path or heat cells as
+ * its widgets want) at now_ms, as a "name=value" line would. MQTT topics
+ * bound to a source use it. Returns KIOSK_LINE_OK or KIOSK_LINE_BAD. */
+int kiosk_set_value(kiosk_config *k, int s, const char *v, size_t n, int64_t now_ms);
+
+/* Does topic filter f (MQTT 3.1.1: + one level, # the rest) accept topic
+ * t[0..n)? Topics starting with '$' only match filters that name it. */
+int kiosk_topic_match(const char *f, const char *t, size_t n);
+
+/* One step of a JSON path: a member name, or an array index (name NULL). */
+typedef struct kiosk_jstep { const char *name; size_t len; int index; } kiosk_jstep;
+/* Split a path checked by the config parser into steps; returns their count. */
+int kiosk_jpath_steps(const char *path, kiosk_jstep *steps, int max);
 
 /* History entry i of source s, 0 = oldest of the last n (n <= count). */
 int64_t kiosk_hist_at(const kiosk_source *s, uint32_t n, uint32_t i);

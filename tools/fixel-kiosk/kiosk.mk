@@ -15,3 +15,21 @@ kiosk-soak: $(BUILD)/bin/fixel-kiosk
 # The fuzz target tests/fuzz/fuzz_kiosk.c needs the pure parser file.
 FUZZ_EXTRA_kiosk := tools/fixel-kiosk/kiosk_parse.c
 FUZZ_EXTRA_fuzz_kiosk := tools/fixel-kiosk/kiosk_parse.c
+# MQTT (docs/kiosk.md, "MQTT"): libmosquitto and cJSON when pkg-config finds
+# them; without, fixel-kiosk builds and refuses a config with "mqtt" saying why.
+KIOSK_MQTT_PKGS := libmosquitto libcjson
+# Debian ships them shared only: a STATIC=1 kiosk goes without.
+HAVE_KIOSK_MQTT := $(if $(filter 1,$(STATIC)),,$(shell $(PKG_CONFIG) --exists $(KIOSK_MQTT_PKGS) 2>/dev/null && echo 1))
+ifeq ($(HAVE_KIOSK_MQTT),1)
+$(BUILD)/obj/tools/fixel-kiosk/%.o: CPPFLAGS += -DKIOSK_HAVE_MQTT $(shell $(PKG_CONFIG) --cflags $(KIOSK_MQTT_PKGS))
+TOOL_LIBS_fixel-kiosk += $(shell $(PKG_CONFIG) --libs $(KIOSK_MQTT_PKGS))
+endif
+# systemd (Type=notify, WatchdogSec=): READY=1 after the first frame,
+# WATCHDOG=1 from the main loop; without libsystemd the kiosk tells nobody.
+HAVE_KIOSK_SYSTEMD := $(if $(filter 1,$(STATIC)),,$(shell $(PKG_CONFIG) --exists libsystemd 2>/dev/null && echo 1))
+ifeq ($(HAVE_KIOSK_SYSTEMD),1)
+$(BUILD)/obj/tools/fixel-kiosk/%.o: CPPFLAGS += -DKIOSK_HAVE_SYSTEMD
+TOOL_LIBS_fixel-kiosk += $(shell $(PKG_CONFIG) --libs libsystemd)
+endif
+TEST_SUITES += "sh tests/kiosk/notify.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-notify"
+TEST_DEB_PKGS += libsystemd-dev python3

@@ -171,6 +171,9 @@ const kiosk_key kiosk_keys[] = {
     {"directive", "fg", 'c', 0, 0, 0, "#rrggbb"},
     {"directive", "columns", 't', 0, 0, 0, "name,name,... (up to 32)"},
     {"directive", "widget", 't', 0, 0, 0, "TYPE SOURCE key=value..."},
+    {"directive", "mqtt", 't', 0, 0, 0, "key=value...: the broker (keys: scope mqtt)"},
+    {"directive", "mqtt_tls", 't', 0, 0, 0, "key=value...: TLS to the broker (keys: scope mqtt_tls)"},
+    {"directive", "subscribe", 't', 0, 0, 0, "TOPIC key=value...: a topic feeding sources (keys: scope subscribe)"},
     {"widget", "col", 'i', 0, 63, ALLW, "first cell column"},
     {"widget", "row", 'i', 0, 63, ALLW, "first cell row"},
     {"widget", "w", 'i', 1, 64, ALLW, "cells wide"},
@@ -186,6 +189,24 @@ const kiosk_key kiosk_keys[] = {
     {"widget", "smooth", 'i', 0, 1, HEATW, "bilinear heat map"},
     {"widget", "filter", 'w', 0, 0, IMGW, "nearest|bilinear"},
     {"widget", "path", 'f', 1, KIOSK_PATH_MAX - 1, IMGW, "image file (PNG or PPM)"},
+    {"mqtt", "host", 't', 1, KIOSK_HOST_MAX - 1, 0, "broker name or address"},
+    {"mqtt", "port", 'i', 1, 65535, 0, "broker port (1883; 8883 with TLS)"},
+    {"mqtt", "client", 't', 1, 63, 0, "client id (default fixel-kiosk-HOST-PID)"},
+    {"mqtt", "keepalive", 'i', 5, 3600, 0, "seconds between pings"},
+    {"mqtt", "session", 'w', 0, 0, 0, "clean|persistent (persistent: the broker keeps QoS 1/2 messages)"},
+    {"mqtt", "prefix", 't', 1, KIOSK_TOPIC_MAX - 1, 0, "control and status topics live below it"},
+    {"mqtt", "backoff", 'i', 1, 300, 0, "first reconnect delay, seconds"},
+    {"mqtt", "backoff_max", 'i', 1, 3600, 0, "longest reconnect delay, seconds"},
+    {"mqtt", "auth", 'f', 1, KIOSK_PATH_MAX - 1, 0, "file: user line, password line"},
+    {"mqtt", "status", 'i', 1, 3600, 0, "seconds between status publications"},
+    {"mqtt_tls", "ca", 'f', 1, KIOSK_PATH_MAX - 1, 0, "CA certificate file (PEM)"},
+    {"mqtt_tls", "cert", 'f', 1, KIOSK_PATH_MAX - 1, 0, "client certificate (PEM)"},
+    {"mqtt_tls", "key", 'f', 1, KIOSK_PATH_MAX - 1, 0, "client key (PEM)"},
+    {"mqtt_tls", "verify", 'i', 0, 1, 0, "check the broker's name against its certificate"},
+    {"subscribe", "TOPIC", 't', 1, KIOSK_TOPIC_MAX - 1, 0, "topic filter (+ and # wildcards)"},
+    {"subscribe", "qos", 'i', 0, 2, 0, "quality of service"},
+    {"subscribe", "source", 't', 1, KIOSK_NAME_MAX - 1, 0, "the payload feeds this source (else: data lines)"},
+    {"subscribe", "json", 't', 1, KIOSK_JPATH_MAX - 1, 0, "take this field of a JSON payload (a.b[2].c)"},
     {"data", "VALUE", 'm', -VMAX, VMAX, 0, "name=value, name,value or CSV: every number"},
     {0, 0, 0, 0, 0, 0, 0},
 };
@@ -268,6 +289,7 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
     kiosk_widget *w = &k->widgets[k->nwidgets];
     memset(w, 0, sizeof *w);
     if (next_tok(&p, end, &t) != 1) return "widget needs a type";
+    k->errat = t.s;
     int ty = -1;
     for (int i = 0; i < KIOSK_NTYPES; i++)
         if (tok_is(t, type_names[i])) ty = i;
@@ -283,6 +305,7 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
     int cw = 0, ch = 0;
     if (w->type != KIOSK_CLOCK) {
         if (next_tok(&p, end, &t) != 1) return "widget needs a source name";
+        k->errat = t.s;
         for (size_t i = 0; i < t.n; i++)
             if (!is_name_char(t.s[i])) return "bad source name";
         if (t.n >= KIOSK_NAME_MAX) return "source name too long";
@@ -299,6 +322,7 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
     int r;
     while ((r = next_tok(&p, end, &t)) == 1) {
         size_t eq = 0;
+        k->errat = t.s;
         while (eq < t.n && t.s[eq] != '=') eq++;
         if (eq == t.n) return "expected key=value";
         tok key = {t.s, eq}, val = {t.s + eq + 1, t.n - eq - 1};
@@ -372,6 +396,184 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
     return NULL;
 }
 
+/* ---- MQTT directives ---- */
+
+/* A topic: printable, no spaces or quotes; with wildcards (a filter) '+'
+ * fills a whole level and '#' is the whole last one. */
+static int topic_ok(const char *s, size_t n, int filter)
+{
+    if (n == 0 || n >= KIOSK_TOPIC_MAX) return 0;
+    for (size_t i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)s[i];
+        if (c <= 0x20 || c == 0x7f || c == '"') return 0;
+        if (c == '+' || c == '#') {
+            if (!filter) return 0;
+            if (i > 0 && s[i - 1] != '/') return 0;
+            if (c == '+' && i + 1 < n && s[i + 1] != '/') return 0;
+            if (c == '#' && i + 1 != n) return 0;
+        }
+    }
+    return 1;
+}
+
+int kiosk_jpath_steps(const char *path, kiosk_jstep *st, int max)
+{
+    int n = 0;
+    const char *p = path;
+    while (*p) {
+        if (n == max) return -1;
+        if (*p == '[') {
+            int v = 0, d = 0;
+            for (p++; *p >= '0' && *p <= '9' && d < 6; p++, d++) v = v * 10 + (*p - '0');
+            if (!d || *p != ']') return -1;
+            p++;
+            st[n].name = NULL;
+            st[n].len = 0;
+            st[n++].index = v;
+        } else {
+            if (n && *p != '.') return -1;
+            if (*p == '.') p++;
+            const char *a = p;
+            while ((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') ||
+                   *p == '_' || *p == '-')
+                p++;
+            if (p == a) return -1;
+            st[n].name = a;
+            st[n].len = (size_t)(p - a);
+            st[n++].index = -1;
+        }
+    }
+    return n;
+}
+
+/* "key=value" of scope; fills *q, *val and, for integers, *iv. NULL or the
+ * error (with k->errat on the token). */
+static const char *kv_parse(kiosk_config *k, const char *scope, tok t, const kiosk_key **qq, tok *val, int *iv)
+{
+    size_t eq = 0;
+    k->errat = t.s;
+    while (eq < t.n && t.s[eq] != '=') eq++;
+    if (eq == t.n) return "expected key=value";
+    const kiosk_key *q = kiosk_key_find(scope, t.s, eq);
+    *val = (tok){t.s + eq + 1, t.n - eq - 1};
+    *qq = q;
+    if (!q || q->name[0] < 'a') return NULL; /* the caller names the keys */
+    if (q->type == 'i') {
+        if (parse_int(*val, (int)q->min, (int)q->max, iv)) return range_msg(k, q, *val);
+    } else if (q->type == 't' || q->type == 'f') {
+        tok v = *val;
+        if (v.n >= 2 && v.s[0] == '"' && v.s[v.n - 1] == '"') { v.s++; v.n -= 2; }
+        if (v.n < (size_t)q->min || v.n > (size_t)q->max) return range_msg(k, q, *val);
+        for (size_t i = 0; i < v.n; i++)
+            if ((unsigned char)v.s[i] < 0x20 || v.s[i] == 0x7f || v.s[i] == '"') return "control character or quote in value";
+        *val = v;
+    }
+    return NULL;
+}
+
+static void kv_copy(char *dst, size_t size, tok v) { copy_str(dst, size, v.s, v.n); }
+
+static const char *parse_mqtt(kiosk_config *k, const char *p, const char *end)
+{
+    kiosk_mqtt_cfg *m = &k->mqtt;
+    tok t, v;
+    const kiosk_key *q;
+    int iv = 0, r;
+    if (m->enabled) { k->errat = NULL; return "a second mqtt directive (one broker per kiosk)"; }
+    m->enabled = 1;
+    while ((r = next_tok(&p, end, &t)) == 1) {
+        const char *e = kv_parse(k, "mqtt", t, &q, &v, &iv);
+        if (e) return e;
+        if (!q) return "unknown mqtt key (host port client keepalive session prefix backoff backoff_max auth status)";
+        if (!strcmp(q->name, "host")) {
+            for (size_t i = 0; i < v.n; i++)
+                if (!is_name_char(v.s[i]) && v.s[i] != ':') return "host: letters, digits, . - : only";
+            kv_copy(m->host, sizeof m->host, v);
+        } else if (!strcmp(q->name, "port")) m->port = iv;
+        else if (!strcmp(q->name, "client")) kv_copy(m->client, sizeof m->client, v);
+        else if (!strcmp(q->name, "keepalive")) m->keepalive = iv;
+        else if (!strcmp(q->name, "session")) {
+            if (tok_is(v, "clean")) m->persistent = 0;
+            else if (tok_is(v, "persistent")) m->persistent = 1;
+            else return "session=: expected clean or persistent";
+        } else if (!strcmp(q->name, "prefix")) {
+            if (!topic_ok(v.s, v.n, 0) || v.s[v.n - 1] == '/') return "prefix: a topic without wildcards, spaces or a final /";
+            kv_copy(m->prefix, sizeof m->prefix, v);
+        } else if (!strcmp(q->name, "backoff")) m->backoff_min = iv;
+        else if (!strcmp(q->name, "backoff_max")) m->backoff_max = iv;
+        else if (!strcmp(q->name, "auth")) kv_copy(m->auth, sizeof m->auth, v);
+        else m->status_s = iv;
+    }
+    if (r < 0) return "unterminated quote";
+    k->errat = NULL;
+    if (!m->host[0]) return "mqtt needs host=";
+    if (m->backoff_max < m->backoff_min) return "backoff_max must not be below backoff";
+    return NULL;
+}
+
+static const char *parse_mqtt_tls(kiosk_config *k, const char *p, const char *end)
+{
+    kiosk_mqtt_cfg *m = &k->mqtt;
+    tok t, v;
+    const kiosk_key *q;
+    int iv = 0, r;
+    m->tls = 1;
+    while ((r = next_tok(&p, end, &t)) == 1) {
+        const char *e = kv_parse(k, "mqtt_tls", t, &q, &v, &iv);
+        if (e) return e;
+        if (!q) return "unknown mqtt_tls key (ca cert key verify)";
+        if (!strcmp(q->name, "ca")) kv_copy(m->ca, sizeof m->ca, v);
+        else if (!strcmp(q->name, "cert")) kv_copy(m->cert, sizeof m->cert, v);
+        else if (!strcmp(q->name, "key")) kv_copy(m->key, sizeof m->key, v);
+        else m->verify = iv;
+    }
+    if (r < 0) return "unterminated quote";
+    k->errat = NULL;
+    if (!m->ca[0]) return "mqtt_tls needs ca=";
+    if (!m->cert[0] != !m->key[0]) return "mqtt_tls: cert= and key= go together";
+    return NULL;
+}
+
+static const char *parse_subscribe(kiosk_config *k, const char *line, const char *p, const char *end, int lineno)
+{
+    kiosk_mqtt_cfg *m = &k->mqtt;
+    tok t, v;
+    const kiosk_key *q;
+    int iv = 0, r;
+    if (next_tok(&p, end, &t) != 1) { k->errat = NULL; return "subscribe needs a topic"; }
+    k->errat = t.s;
+    if (m->nsubs >= KIOSK_MQTT_SUBS) return "too many subscriptions (16)";
+    if (t.n >= KIOSK_TOPIC_MAX) return range_msg(k, kiosk_key_find("subscribe", "TOPIC", 5), t);
+    if (!topic_ok(t.s, t.n, 1)) return "bad topic filter (no spaces; + a whole level, # the whole last one)";
+    kiosk_sub *s = &m->subs[m->nsubs];
+    memset(s, 0, sizeof *s);
+    s->source = -1;
+    s->line = lineno;
+    s->col = (int)(t.s - line) + 1;
+    copy_str(s->topic, sizeof s->topic, t.s, t.n);
+    while ((r = next_tok(&p, end, &t)) == 1) {
+        const char *e = kv_parse(k, "subscribe", t, &q, &v, &iv);
+        if (e) return e;
+        if (!q || q->name[0] < 'a') return "unknown subscribe key (qos source json)";
+        if (!strcmp(q->name, "qos")) s->qos = iv;
+        else if (!strcmp(q->name, "source")) {
+            for (size_t i = 0; i < v.n; i++)
+                if (!is_name_char(v.s[i])) return "bad source name";
+            kv_copy(s->srcname, sizeof s->srcname, v);
+            s->col = (int)(t.s - line) + 1;
+        } else {
+            kiosk_jstep st[KIOSK_JPATH_DEPTH];
+            kv_copy(s->json, sizeof s->json, v);
+            if (kiosk_jpath_steps(s->json, st, KIOSK_JPATH_DEPTH) <= 0)
+                return "json=: a path like a.b[2].c (names of letters, digits, _ -; up to 16 steps)";
+        }
+    }
+    if (r < 0) return "unterminated quote";
+    if (s->json[0] && !s->srcname[0]) { k->errat = NULL; return "json= needs source="; }
+    m->nsubs++;
+    return NULL;
+}
+
 int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, size_t errsize)
 {
     const char *p = buf, *end = buf + len;
@@ -383,12 +585,19 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
     k->bg = 0xFF0E1116u;
     k->panel = 0xFF1B222Bu;
     k->fg = 0xFFE8EAEDu;
+    k->mqtt.port = 1883;
+    k->mqtt.keepalive = 30;
+    k->mqtt.backoff_min = 1;
+    k->mqtt.backoff_max = 60;
+    k->mqtt.status_s = 30;
+    k->mqtt.verify = 1;
     if (err && errsize) err[0] = 0;
     while (p < end) {
         const char *eol = memchr(p, '\n', (size_t)(end - p));
         if (!eol) eol = end;
         line++;
         const char *q = p, *msg = NULL;
+        k->errat = NULL;
         tok t;
         while (q < eol && is_space(*q)) q++;
         int r = q < eol && *q == '#' ? 0 : next_tok(&q, eol, &t);
@@ -397,10 +606,14 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
         if (r < 0) msg = "unreadable line";
         else if (r == 0) msg = NULL;
         else if (tok_is(t, "widget")) msg = parse_widget(k, q, eol);
+        else if (tok_is(t, "mqtt")) msg = parse_mqtt(k, q, eol);
+        else if (tok_is(t, "mqtt_tls")) msg = parse_mqtt_tls(k, q, eol);
+        else if (tok_is(t, "subscribe")) msg = parse_subscribe(k, p, q, eol, line);
         else {
             tok v;
             int rv = next_tok(&q, eol, &v);
             tok extra;
+            k->errat = rv == 1 ? v.s : NULL;
             if (rv != 1) msg = "missing value";
             else if (tok_is(t, "title")) {
                 /* the rest of the line, so titles need no quotes */
@@ -426,10 +639,12 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
             else if (tok_is(t, "fg")) msg = parse_color(v, &k->fg) ? "bad colour (#rrggbb)" : NULL;
             else if (tok_is(t, "columns"))
                 msg = parse_header(k, v.s, 0, v.n, 2) ? "columns wants name,name,... (up to 32, no heat sources)" : NULL;
-            else msg = "unknown directive (title grid size stale history bg panel fg columns widget)";
-            if (!msg && next_tok(&q, eol, &extra) != 0) msg = "extra text after value";
+            else { k->errat = t.s; msg = "unknown directive (title grid size stale history bg panel fg columns widget mqtt mqtt_tls subscribe)"; }
+            if (!msg && next_tok(&q, eol, &extra) != 0) { k->errat = extra.s; msg = "extra text after value"; }
         }
         if (msg) {
+            k->errline = line;
+            k->errcol = k->errat && k->errat >= p && k->errat <= eol ? (int)(k->errat - p) + 1 : 1;
             if (err && errsize) {
                 /* no snprintf: this file stays free of stdio for the fuzzer */
                 char num[16];
@@ -453,6 +668,23 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
         for (; err && m[o] && o + 1 < errsize; o++) err[o] = m[o];
         if (err && errsize) err[o] = 0;
         return -1;
+    }
+    for (int i = 0; i < k->mqtt.nsubs; i++) {
+        kiosk_sub *sb = &k->mqtt.subs[i];
+        const char *m = NULL;
+        if (!k->mqtt.enabled) m = "subscribe without an mqtt directive (host=...)";
+        else if (sb->srcname[0] && (sb->source = find_source(k, sb->srcname, strlen(sb->srcname))) < 0)
+            m = "source= names no widget's source";
+        else if (sb->source >= 0 && k->sources[sb->source].kind == KIOSK_KIND_IMAGE && sb->json[0])
+            m = "json= on an image source (paths come as plain payloads)";
+        if (m) {
+            size_t o = 0;
+            k->errline = sb->line;
+            k->errcol = sb->col;
+            for (; err && m[o] && o + 1 < errsize; o++) err[o] = m[o];
+            if (err && errsize) err[o] = 0;
+            return -1;
+        }
     }
     for (int i = 0; i < k->nwidgets; i++) {
         const kiosk_widget *w = &k->widgets[i];
@@ -647,4 +879,42 @@ int kiosk_data_line(kiosk_config *k, const char *line, size_t len, int64_t now_m
     store(k, s, line + vs, b - vs, now_ms);
     if (src) *src = s;
     return KIOSK_LINE_OK;
+}
+
+int kiosk_set_value(kiosk_config *k, int s, const char *v, size_t n, int64_t now_ms)
+{
+    size_t a = 0, b = n;
+    k->changed = 0;
+    if (s < 0 || s >= k->nsources) return KIOSK_LINE_BAD;
+    while (a < b && (is_space(v[a]) || v[a] == '\n')) a++;
+    while (b > a && (is_space(v[b - 1]) || v[b - 1] == '\n')) b--;
+    if (a == b || b - a > KIOSK_LINE_MAX) return KIOSK_LINE_BAD;
+    for (size_t i = a; i < b; i++)
+        if ((unsigned char)v[i] < 0x20 || v[i] == 0x7f) return KIOSK_LINE_BAD;
+    if (k->sources[s].kind == KIOSK_KIND_HEAT) return store_heat(k, s, -1, v, a, b, now_ms);
+    if (!value_ok(k, s, v + a, b - a)) return KIOSK_LINE_BAD;
+    store(k, s, v + a, b - a, now_ms);
+    return KIOSK_LINE_OK;
+}
+
+int kiosk_topic_match(const char *f, const char *t, size_t n)
+{
+    size_t i = 0;
+    if (n && t[0] == '$' && f[0] != '$') return 0;
+    for (;;) {
+        if (f[0] == '#') return 1; /* the rest, including the parent level itself */
+        if (f[0] == '+') {
+            while (i < n && t[i] != '/') i++;
+            f++;
+        } else {
+            while (*f && *f != '/' && i < n && t[i] != '/' && *f == t[i]) { f++; i++; }
+            if (*f && *f != '/') return 0;
+            if (i < n && t[i] != '/') return 0;
+        }
+        /* both at the end of a level */
+        if (!*f) return i == n;
+        if (i == n) return f[1] == '#' && !f[2]; /* "a/#" accepts "a" */
+        f++;
+        i++;
+    }
 }

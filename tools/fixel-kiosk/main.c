@@ -10,6 +10,8 @@
  * are redrawn and presented (damage rectangles).
  */
 #include "kiosk.h"
+#include "kiosk_mqtt.h"
+#include "kiosk_screen.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -34,10 +36,17 @@
 #include "fixel/line.h"
 #include "fixel/memfb.h"
 #include "fixel/texture.h"
+#include "fixel/version.h"
 #include "fixel/viz.h"
 
 #ifndef FX_NO_PNG
 #include <png.h>
+#endif
+#ifdef KIOSK_HAVE_SYSTEMD
+#include <systemd/sd-daemon.h>
+#else
+/* without libsystemd: no service manager to tell */
+static int sd_notify(int unset, const char *state) { (void)unset; (void)state; return 0; }
 #endif
 
 #define TITLE_H 22
@@ -90,6 +99,22 @@ typedef struct kiosk {
     int always_full; /* --full: redraw everything each frame (tests check damage against it) */
     kimg img[KIOSK_MAX_WIDGETS];
     uint32_t img_errors;  /* image loads that failed (missing, corrupt, too large) */
+    /* live mode: MQTT, control and status (docs/kiosk.md, "MQTT") */
+    const char *cfgpath;
+    const char *live_out; /* --out in live mode: DIR/live.ppm after every frame drawn */
+    kmq *mq;
+    kmq_state mst;        /* as last seen by the main loop */
+    uint32_t frames, frames_at_status;
+    int64_t start_ms, status_ms;
+    int status_due;
+    int screen_on, brightness;
+    kiosk_screen_ops screen;
+    int64_t identify_until;
+    int identify_phase;
+    uint32_t reloads;
+    char cfg_error[200];  /* why the last reload was refused ("" : it was not) */
+    int ready_sent;       /* systemd: READY=1 after the first frame */
+    int64_t wd_ms, wd_last; /* systemd watchdog: ping interval (0: none), last ping */
 } kiosk;
 
 static int64_t mono_ms(void)
@@ -688,6 +713,16 @@ static void draw_status(kiosk *k, fx_ctx *base)
         snprintf(buf, sizeof buf, "image errors %u", k->img_errors);
         text_at(&c, x, r.y0 + 2, 1, BAD_RED, buf);
     }
+    if (k->mq && !k->mst.connected) {
+        /* the values above age into STALE on their own; this says why */
+        time_t t = (time_t)k->mst.offline_since;
+        struct tm tmv;
+        if (localtime_r(&t, &tmv))
+            snprintf(buf, sizeof buf, "broker offline since %02d:%02d:%02d", tmv.tm_hour, tmv.tm_min, tmv.tm_sec);
+        else
+            snprintf(buf, sizeof buf, "broker offline");
+        text_at(&c, r.x1 - 6 - text_w(buf, 1), r.y0 + 2, 1, BAD_RED, buf);
+    }
 }
 
 /* Draw what changed and present exactly those rectangles. */
@@ -715,8 +750,33 @@ static void render(kiosk *k)
         k->status_dirty = 0;
         dmg[n++] = status_rect(k);
     }
-    if (k->full || k->always_full) fx_app_present(k->app, NULL, 0);
+    int whole = k->full || k->always_full;
+    if (k->identify_phase) {
+        /* identify: a frame around the whole screen, alternating colours;
+         * each phase change is a full redraw (the frame crosses every widget gap) */
+        fx_color col = k->identify_phase == 1 ? AMBER : 0xFFFFFFFFu;
+        fill(&c, col, 0, 0, k->W, 6);
+        fill(&c, col, 0, k->H - 6, k->W, 6);
+        fill(&c, col, 0, 0, 6, k->H);
+        fill(&c, col, k->W - 6, 0, 6, k->H);
+    }
+    if (whole) fx_app_present(k->app, NULL, 0);
     else if (n) fx_app_present(k->app, dmg, n);
+    if (whole || n) {
+        k->frames++;
+        if (!k->headless && !k->ready_sent) {
+            /* Type=notify: the unit is up once something is on the screen */
+            sd_notify(0, "READY=1\nSTATUS=drawing");
+            k->ready_sent = 1;
+        }
+        if (k->live_out) {
+            char path[4096], tmp[4100];
+            snprintf(path, sizeof path, "%s/live.ppm", k->live_out);
+            snprintf(tmp, sizeof tmp, "%s/live.tmp.ppm", k->live_out);
+            fx_surface sf = fx_app_surface(k->app);
+            if (fx_write_image(tmp, &sf) == 0) rename(tmp, path); /* readers never see half a frame */
+        }
+    }
     k->full = 0;
 }
 
@@ -749,13 +809,231 @@ static int any_dirty(const kiosk *k)
 
 static kiosk *g_kiosk; /* the timer callback's only way back to the state */
 
+/* Read and parse the config at path into *cfg. On error -1 and
+ * "PATH:LINE:COL: reason" (or "PATH: reason") in err. Startup and the
+ * MQTT reload command share it: a reload that fails keeps the old config. */
+static int load_config(const char *path, kiosk_config *cfg, char *err, size_t errsize)
+{
+    static char cbuf[65536];
+    /* never blocks in open (a FIFO without writer), refuses what is not a
+     * file, and a config of exactly 65536 bytes is fine (issue #26) */
+    int cfd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    struct stat cst;
+    if (cfd < 0) { snprintf(err, errsize, "%s: %s", path, strerror(errno)); return -1; }
+    if (fstat(cfd, &cst) < 0 || !S_ISREG(cst.st_mode)) {
+        snprintf(err, errsize, "%s: %s", path, S_ISDIR(cst.st_mode) ? "is a directory" : "not a regular file");
+        close(cfd);
+        return -1;
+    }
+    fcntl(cfd, F_SETFL, fcntl(cfd, F_GETFL) & ~O_NONBLOCK);
+    FILE *cf = fdopen(cfd, "rb");
+    if (!cf) { snprintf(err, errsize, "%s: %s", path, strerror(errno)); close(cfd); return -1; }
+    size_t clen = fread(cbuf, 1, sizeof cbuf, cf);
+    int toolong = clen == sizeof cbuf && fgetc(cf) != EOF, rerr = ferror(cf);
+    fclose(cf);
+    if (rerr) { snprintf(err, errsize, "%s: read error", path); return -1; }
+    if (toolong) { snprintf(err, errsize, "%s: larger than %zu bytes", path, sizeof cbuf); return -1; }
+    char e[160];
+    if (kiosk_config_parse(cfg, cbuf, clen, e, sizeof e) < 0) {
+        const char *msg = e;
+        /* the parser says "line N: reason"; the place goes in front as FILE:LINE:COL */
+        if (!strncmp(msg, "line ", 5)) {
+            const char *c = strchr(msg, ':');
+            if (c) msg = c + 2;
+        }
+        if (cfg->errline) snprintf(err, errsize, "%s:%d:%d: %s", path, cfg->errline, cfg->errcol, msg);
+        else snprintf(err, errsize, "%s: %s", path, msg);
+        return -1;
+    }
+    return 0;
+}
+
+/* ---- MQTT: data, control, status ---- */
+
+static void count_line(kiosk *k, int r)
+{
+    k->lines++;
+    k->status_dirty = 1;
+    if (r == KIOSK_LINE_BAD) k->bad++;
+    else if (r == KIOSK_LINE_IGNORED) k->ignored++;
+    else if (r == KIOSK_LINE_OK) mark_sources(k, k->cfg.changed);
+}
+
+static void publish_status(kiosk *k)
+{
+    char js[1024], err[260];
+    long rss_kb = -1, pages, res;
+    FILE *f = fopen("/proc/self/statm", "r");
+    if (f) {
+        if (fscanf(f, "%ld %ld", &pages, &res) == 2) rss_kb = res * (sysconf(_SC_PAGESIZE) / 1024);
+        fclose(f);
+    }
+    unsigned long long heap = 0;
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+    struct mallinfo2 mi = mallinfo2();
+    heap = (unsigned long long)mi.uordblks + mi.hblkhd;
+#endif
+    int nstale = 0;
+    for (int i = 0; i < k->cfg.nwidgets; i++) nstale += k->stale[i];
+    int64_t dt = k->now_ms - k->status_ms;
+    uint32_t df = k->frames - k->frames_at_status;
+    int64_t fps10 = dt > 0 ? (int64_t)df * 10000 / dt : 0;
+    /* the reason holds a file name and parser text: escaped for JSON */
+    size_t o = 0;
+    for (const char *c = k->cfg_error; *c && o + 3 < sizeof err; c++) {
+        if (*c == '"' || *c == '\\') err[o++] = '\\';
+        err[o++] = (unsigned char)*c < 0x20 ? '?' : *c;
+    }
+    err[o] = 0;
+    snprintf(js, sizeof js,
+             "{\"version\":\"%s\",\"state\":\"online\",\"page\":0,\"pages\":1,\"frames\":%u,"
+             "\"fps\":%lld.%lld,\"lines\":%u,\"bad\":%u,\"ignored\":%u,\"stale\":%d,\"uptime\":%lld,"
+             "\"screen\":\"%s\",\"brightness\":%d,\"screen_hw\":\"%s\",\"identify\":%d,"
+             "\"connects\":%u,\"dropped\":%u,\"reloads\":%u,\"config_error\":\"%s\","
+             "\"heap\":%llu,\"rss_kb\":%ld}",
+             FX_VERSION_STRING, k->frames, (long long)(fps10 / 10), (long long)(fps10 % 10), k->lines, k->bad,
+             k->ignored, nstale, (long long)((k->now_ms - k->start_ms) / 1000), k->screen_on ? "on" : "off",
+             k->brightness, k->screen.name, k->identify_phase != 0, k->mst.connects, k->mst.dropped, k->reloads,
+             err, heap, rss_kb);
+    kmq_publish(k->mq, "status", js, 1);
+    k->status_ms = k->now_ms;
+    k->frames_at_status = k->frames;
+    k->status_due = 0;
+}
+
+static void reload(kiosk *k)
+{
+    static kiosk_config fresh; /* as large as the model: not on the stack */
+    char err[200];
+    if (load_config(k->cfgpath, &fresh, err, sizeof err) < 0) {
+        /* the old config keeps running; the status says why */
+        snprintf(k->cfg_error, sizeof k->cfg_error, "%s", err);
+        fprintf(stderr, "fixel-kiosk: reload refused: %s\n", err);
+        return;
+    }
+    k->cfg_error[0] = 0;
+    k->cfg = fresh;
+    for (int i = 0; i < k->cfg.nsources; i++) k->cfg.sources[i].last_ms = k->now_ms;
+    free_images(k);
+    memset(k->img, 0, sizeof k->img);
+    memset(k->stale, 0, sizeof k->stale);
+    k->full = 1;
+    k->reloads++;
+    kmq_set_subs(k->mq, &k->cfg.mqtt);
+    fprintf(stderr, "fixel-kiosk: reloaded %s\n", k->cfgpath);
+}
+
+/* PREFIX/set/WHAT: screen on|off, brightness 0..100, identify [seconds],
+ * reload, page N. Anything else, or a value out of range, is a bad line. */
+static int control(kiosk *k, const char *what, const char *v, size_t n)
+{
+    char val[32];
+    if (n >= sizeof val) return KIOSK_LINE_BAD;
+    memcpy(val, v, n);
+    val[n] = 0;
+    while (n && (val[n - 1] == ' ' || val[n - 1] == '\n' || val[n - 1] == '\r')) val[--n] = 0;
+    int64_t x = 0;
+    int isnum = n && kiosk_parse_milli(val, n, &x) == 0 && x % 1000 == 0;
+    k->status_due = 1;
+    if (!strcmp(what, "screen")) {
+        int on = !strcasecmp(val, "on") || !strcmp(val, "1") ? 1 : !strcasecmp(val, "off") || !strcmp(val, "0") ? 0 : -1;
+        if (on < 0) return KIOSK_LINE_BAD;
+        if (k->screen.set_power && k->screen.set_power(k->screen.ctx, on) < 0) return KIOSK_LINE_BAD;
+        k->screen_on = on;
+    } else if (!strcmp(what, "brightness")) {
+        if (!isnum || x < 0 || x > 100000) return KIOSK_LINE_BAD;
+        if (k->screen.set_brightness && k->screen.set_brightness(k->screen.ctx, (int)(x / 1000)) < 0)
+            return KIOSK_LINE_BAD;
+        k->brightness = (int)(x / 1000);
+    } else if (!strcmp(what, "identify")) {
+        int64_t sec = n ? x / 1000 : 5;
+        if ((n && !isnum) || sec < 1 || sec > 60) return KIOSK_LINE_BAD;
+        k->identify_until = k->now_ms + sec * 1000;
+        if (!k->identify_phase) { k->identify_phase = 1; k->full = 1; }
+    } else if (!strcmp(what, "reload")) {
+        reload(k);
+        if (k->cfg_error[0]) return KIOSK_LINE_BAD;
+    } else if (!strcmp(what, "page")) {
+        /* one page only (pages are another part of issue #24): 0 is where we are */
+        if (!isnum || x != 0) return KIOSK_LINE_BAD;
+    } else
+        return KIOSK_LINE_BAD;
+    return KIOSK_LINE_OK;
+}
+
+static void mqtt_message(kiosk *k, const kmq_msg *m)
+{
+    const kiosk_mqtt_cfg *c = &k->cfg.mqtt;
+    size_t tl = strlen(m->topic), pl = strlen(c->prefix);
+    if (m->oversize) { count_line(k, KIOSK_LINE_BAD); return; }
+    if (pl && tl > pl + 5 && !memcmp(m->topic, c->prefix, pl) && !memcmp(m->topic + pl, "/set/", 5)) {
+        count_line(k, control(k, m->topic + pl + 5, m->payload, m->plen));
+        return;
+    }
+    int matched = 0;
+    for (int i = 0; i < c->nsubs; i++) {
+        const kiosk_sub *sb = &c->subs[i];
+        if (!kiosk_topic_match(sb->topic, m->topic, tl)) continue;
+        matched = 1;
+        if (sb->source < 0) {
+            /* data lines, exactly as on stdin; a last line needs no newline */
+            feed(k, m->payload, m->plen);
+            if (k->linelen || k->overlong) end_line(k);
+            continue;
+        }
+        char v[KIOSK_LINE_MAX + 1];
+        const char *val = m->payload;
+        size_t vn = m->plen;
+        if (sb->json[0]) {
+            if (kmq_json_field(m->payload, m->plen, sb->json, v, sizeof v) < 0) {
+                count_line(k, KIOSK_LINE_BAD);
+                continue;
+            }
+            val = v;
+            vn = strlen(v);
+        }
+        count_line(k, kiosk_set_value(&k->cfg, sb->source, val, vn, k->now_ms));
+    }
+    if (!matched) count_line(k, KIOSK_LINE_IGNORED);
+}
+
+static void mqtt_pump(kiosk *k)
+{
+    static kmq_msg msg; /* 8 KiB: not on the stack */
+    if (!k->mq) return;
+    /* bounded: the ring holds 128 and the thread refills it while we work */
+    for (int i = 0; i < 1024 && kmq_take(k->mq, &msg); i++) mqtt_message(k, &msg);
+    kmq_state st;
+    kmq_get_state(k->mq, &st);
+    if (st.connected != k->mst.connected || st.offline_since != k->mst.offline_since) k->status_dirty = 1;
+    if (st.connects != k->mst.connects) k->status_due = 1; /* a new session: say who we are at once */
+    if (st.dropped != k->mst.dropped) {
+        k->bad += st.dropped - k->mst.dropped; /* lost to a full ring or an absurd topic: bad lines */
+        k->status_dirty = 1;
+    }
+    k->mst = st;
+    if (k->identify_phase) {
+        int ph = k->now_ms >= k->identify_until ? 0 : 1 + (int)((k->identify_until - k->now_ms) / 500 % 2);
+        if (ph != k->identify_phase) { k->identify_phase = ph; k->full = 1; k->status_due = 1; }
+    }
+    if (st.connected && (k->status_due || k->now_ms - k->status_ms >= (int64_t)k->cfg.mqtt.status_s * 1000))
+        publish_status(k);
+}
+
 static void on_tick(void *user, int value)
 {
     kiosk *k = g_kiosk;
     (void)user; (void)value;
     k->now_ms = mono_ms();
     feed_available(k);
-    check_images(k); /* a stat() per image widget: cheap at 10 Hz */
+    mqtt_pump(k);
+    check_images(k);
+    /* WatchdogSec=: pinged from the main loop's own timer, so a hung loop
+     * (not just a dead process) gets the kiosk restarted */
+    if (k->wd_ms && k->now_ms - k->wd_last >= k->wd_ms) {
+        sd_notify(0, "WATCHDOG=1");
+        k->wd_last = k->now_ms;
+    } /* a stat() per image widget: cheap at 10 Hz */
     update_stale(k);
     if (any_dirty(k)) fx_app_post_redisplay(k->app);
     fx_app_timer(k->app, 100, on_tick, 0);
@@ -821,7 +1099,8 @@ static void usage(FILE *f)
             "  --keys            list every directive, widget key and data value with its range\n"
             "  --frames N        headless: frames to draw (default 1); each frame reads the data up\n"
             "                    to the next \"@frame [MS]\" line, then the clock advances MS (1000)\n"
-            "  --out DIR         headless: write DIR/frame-NNNN.png for every frame\n"
+            "  --out DIR         headless: write DIR/frame-NNNN.png for every frame; live (on\n"
+            "                    FIXEL_BACKEND=memory, say): DIR/live.ppm after every frame drawn\n"
             "  --last            headless: write only the last frame (DIR/last.png)\n"
             "  --full            redraw every widget each frame (default: only changed ones)\n"
             "  --mem-report N    headless: print RSS and heap in use after frame N and at the end\n"
@@ -895,31 +1174,12 @@ int main(int argc, char **argv)
     static char outbuf[BUFSIZ];
     if (mem_frame >= 0) setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
 
-    static char cbuf[65536];
-    /* never blocks in open (a FIFO without writer), refuses what is not a
-     * file, and a config of exactly 65536 bytes is fine (issue #26) */
-    int cfd = open(cfgpath, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-    struct stat cst;
-    if (cfd < 0) { fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, strerror(errno)); return 1; }
-    if (fstat(cfd, &cst) < 0 || !S_ISREG(cst.st_mode)) {
-        fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath,
-                S_ISDIR(cst.st_mode) ? "is a directory" : "not a regular file");
-        close(cfd);
+    char err[300];
+    if (load_config(cfgpath, &k->cfg, err, sizeof err) < 0) {
+        fprintf(stderr, "fixel-kiosk: %s\n", err);
         return 1;
     }
-    fcntl(cfd, F_SETFL, fcntl(cfd, F_GETFL) & ~O_NONBLOCK);
-    FILE *cf = fdopen(cfd, "rb");
-    if (!cf) { fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, strerror(errno)); close(cfd); return 1; }
-    size_t clen = fread(cbuf, 1, sizeof cbuf, cf);
-    int toolong = clen == sizeof cbuf && fgetc(cf) != EOF, rerr = ferror(cf);
-    fclose(cf);
-    if (rerr) { fprintf(stderr, "fixel-kiosk: %s: read error\n", cfgpath); return 1; }
-    if (toolong) { fprintf(stderr, "fixel-kiosk: %s: larger than %zu bytes\n", cfgpath, sizeof cbuf); return 1; }
-    char err[160];
-    if (kiosk_config_parse(&k->cfg, cbuf, clen, err, sizeof err) < 0) {
-        fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, err);
-        return 1;
-    }
+    k->cfgpath = cfgpath;
 
     if (!strcmp(data, "-")) k->fd = 0;
     else if ((k->fd = open(data, O_RDONLY | O_NONBLOCK | O_CLOEXEC)) < 0) {
@@ -942,8 +1202,13 @@ int main(int argc, char **argv)
         o.input = 0;
         /* blocking reads: a scripted stream is consumed frame by frame */
         fcntl(k->fd, F_SETFL, fcntl(k->fd, F_GETFL) & ~O_NONBLOCK);
-    } else
+    } else {
         fcntl(k->fd, F_SETFL, fcntl(k->fd, F_GETFL) | O_NONBLOCK);
+        /* FIXEL_BACKEND=memory runs the live kiosk with nobody watching
+         * (the MQTT tests): the size as headless would pick it */
+        o.display.memory_w = sw ? sw : k->cfg.width ? k->cfg.width : 480;
+        o.display.memory_h = sh ? sh : k->cfg.height ? k->cfg.height : 320;
+    }
     if (fx_app_options_from_env(&o) < 0 || fx_app_open(&k->app, &o) < 0) return 1;
     if (k->headless) {
         /* fx_app_open blocks SIGINT/SIGTERM/SIGHUP for its signalfd, which
@@ -1002,6 +1267,29 @@ int main(int argc, char **argv)
         fx_callbacks cb = {.display = on_display, .keyboard = on_key, .reshape = on_reshape};
         g_kiosk = k;
         k->now_ms = mono_ms();
+        k->start_ms = k->status_ms = k->now_ms;
+        k->screen_on = 1;
+        k->brightness = 100;
+        k->screen = (kiosk_screen_ops){"none", NULL, NULL, NULL}; /* state kept and published only */
+        if (out && mkdir_parents(out) < 0) {
+            fprintf(stderr, "fixel-kiosk: cannot create %s: %s\n", out, strerror(errno));
+            fx_app_close(k->app);
+            return 1;
+        }
+        k->live_out = out;
+#ifdef KIOSK_HAVE_SYSTEMD
+        uint64_t wd_us;
+        if (sd_watchdog_enabled(0, &wd_us) > 0) k->wd_ms = wd_us / 2000 < 100 ? 100 : (int64_t)(wd_us / 2000);
+#endif
+        if (k->cfg.mqtt.enabled) {
+            char merr[300] = "";
+            if (!(k->mq = kmq_start(&k->cfg.mqtt, FX_VERSION_STRING, merr, sizeof merr))) {
+                fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, merr);
+                fx_app_close(k->app);
+                return 1;
+            }
+            kmq_get_state(k->mq, &k->mst);
+        }
         /* stale timing starts now, not at the monotonic clock's origin */
         for (int i = 0; i < k->cfg.nsources; i++) k->cfg.sources[i].last_ms = k->now_ms;
         k->clock_sec = -1;
@@ -1009,6 +1297,7 @@ int main(int argc, char **argv)
         fx_app_post_redisplay(k->app);
         fx_app_timer(k->app, 100, on_tick, 0);
         rc = fx_app_main_loop(k->app) < 0;
+        kmq_stop(k->mq);
     }
     fx_app_close(k->app);
     free_images(k);

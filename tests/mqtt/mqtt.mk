@@ -1,0 +1,4 @@
+# SPDX-License-Identifier: MIT
+# fixel-kiosk over MQTT against real mosquitto brokers (tests/mqtt/run.sh).
+TEST_SUITES += "sh tests/mqtt/run.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/mqtt"
+TEST_DEB_PKGS += mosquitto mosquitto-clients openssl python3 libmosquitto-dev libcjson-dev

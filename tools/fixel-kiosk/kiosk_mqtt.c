@@ -1,0 +1,402 @@
+/* SPDX-License-Identifier: MIT */
+/* fixel-kiosk's MQTT client: see kiosk_mqtt.h. Built with libmosquitto and
+ * cJSON when pkg-config finds them (tools/fixel-kiosk/kiosk.mk), else every
+ * entry point says MQTT is missing. */
+#include "kiosk_mqtt.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef KIOSK_HAVE_MQTT
+#include <math.h>
+#include <pthread.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <cJSON.h>
+#include <mosquitto.h>
+
+struct kmq {
+    kiosk_mqtt_cfg cfg;
+    struct mosquitto *mosq;
+    pthread_t thread;
+    int started;
+    pthread_mutex_t lock;
+    pthread_cond_t room;       /* the main loop took messages out */
+    volatile int stop;
+    kmq_state st;
+    int sock_up;               /* mosquitto has a socket (maybe not yet CONNACKed) */
+    int backoff;               /* seconds before the next attempt */
+    char will_topic[KIOSK_TOPIC_MAX + 16];
+    char user[256], pass[256];
+    /* the ring */
+    kmq_msg *q;
+    unsigned head, count;
+};
+
+int kmq_available(void) { return 1; }
+
+static void set_error(kmq *m, const char *what)
+{
+    pthread_mutex_lock(&m->lock);
+    if (strcmp(m->st.last_error, what)) {
+        snprintf(m->st.last_error, sizeof m->st.last_error, "%s", what);
+        fprintf(stderr, "fixel-kiosk: mqtt %s:%d: %s\n", m->cfg.host, m->cfg.port, what);
+    }
+    pthread_mutex_unlock(&m->lock);
+}
+
+static void subscribe_all(kmq *m)
+{
+    kiosk_mqtt_cfg *c = &m->cfg;
+    for (int i = 0; i < c->nsubs; i++) mosquitto_subscribe(m->mosq, NULL, c->subs[i].topic, c->subs[i].qos);
+    if (c->prefix[0]) {
+        char t[KIOSK_TOPIC_MAX + 16];
+        snprintf(t, sizeof t, "%s/set/#", c->prefix);
+        mosquitto_subscribe(m->mosq, NULL, t, 1);
+    }
+}
+
+static void on_connect(struct mosquitto *mosq, void *user, int rc)
+{
+    kmq *m = user;
+    (void)mosq;
+    if (rc != 0) {
+        char why[96];
+        snprintf(why, sizeof why, "refused: %s", mosquitto_connack_string(rc));
+        set_error(m, why);
+        return;
+    }
+    pthread_mutex_lock(&m->lock);
+    m->st.connected = 1;
+    m->st.offline_since = 0;
+    m->st.connects++;
+    m->st.last_error[0] = 0;
+    m->backoff = m->cfg.backoff_min;
+    subscribe_all(m);
+    pthread_mutex_unlock(&m->lock);
+    if (m->cfg.prefix[0]) mosquitto_publish(m->mosq, NULL, m->will_topic, 6, "online", 1, true);
+    fprintf(stderr, "fixel-kiosk: mqtt connected to %s:%d\n", m->cfg.host, m->cfg.port);
+}
+
+static void went_offline(kmq *m)
+{
+    pthread_mutex_lock(&m->lock);
+    if (m->st.connected || !m->st.offline_since) m->st.offline_since = (int64_t)time(NULL);
+    m->st.connected = 0;
+    pthread_mutex_unlock(&m->lock);
+}
+
+static void on_disconnect(struct mosquitto *mosq, void *user, int rc)
+{
+    (void)mosq;
+    (void)rc;
+    went_offline(user);
+}
+
+static void on_message(struct mosquitto *mosq, void *user, const struct mosquitto_message *msg)
+{
+    kmq *m = user;
+    (void)mosq;
+    size_t tl = msg->topic ? strlen(msg->topic) : 0;
+    pthread_mutex_lock(&m->lock);
+    if (tl == 0 || tl >= KMQ_TOPIC_MAX) {
+        m->st.dropped++;
+        pthread_mutex_unlock(&m->lock);
+        return;
+    }
+    /* a full ring waits for the main loop (it drains every tick) rather
+     * than growing; after 2 s of no room the message is dropped and counted */
+    struct timespec dl;
+    clock_gettime(CLOCK_REALTIME, &dl);
+    dl.tv_sec += 2;
+    while (m->count == KMQ_QUEUE && !m->stop)
+        if (pthread_cond_timedwait(&m->room, &m->lock, &dl) == ETIMEDOUT) break;
+    if (m->count == KMQ_QUEUE || m->stop) {
+        m->st.dropped++;
+        pthread_mutex_unlock(&m->lock);
+        return;
+    }
+    kmq_msg *e = &m->q[(m->head + m->count) % KMQ_QUEUE];
+    memcpy(e->topic, msg->topic, tl + 1);
+    e->oversize = msg->payloadlen < 0 || msg->payloadlen > KMQ_PAYLOAD_MAX;
+    e->plen = e->oversize ? 0 : (size_t)msg->payloadlen;
+    if (e->plen) memcpy(e->payload, msg->payload, e->plen);
+    e->payload[e->plen] = 0;
+    m->count++;
+    pthread_mutex_unlock(&m->lock);
+}
+
+/* Sleep s seconds in short steps, so kmq_stop never waits for a backoff. */
+static void nap(kmq *m, int s)
+{
+    for (int i = 0; i < s * 10 && !m->stop; i++) {
+        struct timespec ts = {0, 100 * 1000000L};
+        nanosleep(&ts, NULL);
+    }
+}
+
+static void *run(void *arg)
+{
+    kmq *m = arg;
+    int first = 1;
+    while (!m->stop) {
+        if (!m->sock_up) {
+            int rc = first ? mosquitto_connect(m->mosq, m->cfg.host, m->cfg.port, m->cfg.keepalive)
+                           : mosquitto_reconnect(m->mosq);
+            if (rc == MOSQ_ERR_SUCCESS) {
+                first = 0;
+                m->sock_up = 1;
+                continue;
+            }
+            set_error(m, rc == MOSQ_ERR_ERRNO ? strerror(errno) : mosquitto_strerror(rc));
+            went_offline(m);
+            /* doubling from backoff up to backoff_max; reset on a CONNACK */
+            int d = m->backoff;
+            m->backoff = m->backoff * 2 > m->cfg.backoff_max ? m->cfg.backoff_max : m->backoff * 2;
+            nap(m, d);
+            continue;
+        }
+        int rc = mosquitto_loop(m->mosq, 100, 1);
+        if (rc != MOSQ_ERR_SUCCESS && !m->stop) {
+            set_error(m, rc == MOSQ_ERR_ERRNO ? strerror(errno)
+                       : rc == MOSQ_ERR_CONN_LOST ? "connection lost" : mosquitto_strerror(rc));
+            went_offline(m);
+            m->sock_up = 0;
+            first = 0;
+            int d = m->backoff;
+            m->backoff = m->backoff * 2 > m->cfg.backoff_max ? m->cfg.backoff_max : m->backoff * 2;
+            nap(m, d);
+        }
+    }
+    return NULL;
+}
+
+/* user and password from a file of two lines: never on the command line,
+ * where ps would show them to every user */
+static int read_auth(kmq *m, char *err, size_t errsize)
+{
+    FILE *f = fopen(m->cfg.auth, "r");
+    if (!f) {
+        snprintf(err, errsize, "mqtt auth=%s: %s", m->cfg.auth, strerror(errno));
+        return -1;
+    }
+    struct stat st;
+    if (fstat(fileno(f), &st) == 0 && (st.st_mode & 077))
+        fprintf(stderr, "fixel-kiosk: warning: %s is readable by others (chmod 600)\n", m->cfg.auth);
+    int ok = fgets(m->user, sizeof m->user, f) != NULL;
+    if (ok && !fgets(m->pass, sizeof m->pass, f)) m->pass[0] = 0;
+    fclose(f);
+    m->user[strcspn(m->user, "\r\n")] = 0;
+    m->pass[strcspn(m->pass, "\r\n")] = 0;
+    if (!ok || !m->user[0]) {
+        snprintf(err, errsize, "mqtt auth=%s: expected a user line and a password line", m->cfg.auth);
+        return -1;
+    }
+    return 0;
+}
+
+kmq *kmq_start(const kiosk_mqtt_cfg *cfg, const char *version, char *err, size_t errsize)
+{
+    (void)version;
+    mosquitto_lib_init(); /* kmq_stop's mosquitto_lib_cleanup pairs with it */
+    kmq *m = calloc(1, sizeof *m);
+    if (!m || !(m->q = calloc(KMQ_QUEUE, sizeof *m->q))) {
+        if (m) free(m);
+        snprintf(err, errsize, "mqtt: out of memory");
+        return NULL;
+    }
+    m->cfg = *cfg;
+    m->backoff = cfg->backoff_min;
+    pthread_mutex_init(&m->lock, NULL);
+    pthread_cond_init(&m->room, NULL);
+    m->st.offline_since = (int64_t)time(NULL);
+    char id[64];
+    if (cfg->client[0]) snprintf(id, sizeof id, "%s", cfg->client);
+    else {
+        char h[32] = "host";
+        gethostname(h, sizeof h - 1);
+        h[sizeof h - 1] = 0;
+        snprintf(id, sizeof id, "fixel-kiosk-%s-%ld", h, (long)getpid());
+    }
+    m->mosq = mosquitto_new(id, !cfg->persistent, m);
+    const char *fail = NULL;
+    if (!m->mosq) fail = "mosquitto_new failed";
+    else if (cfg->auth[0] && read_auth(m, err, errsize) < 0) fail = "";
+    else if (cfg->auth[0] && mosquitto_username_pw_set(m->mosq, m->user, m->pass[0] ? m->pass : NULL))
+        fail = "cannot set the user";
+    else if (cfg->tls && mosquitto_tls_set(m->mosq, cfg->ca, NULL, cfg->cert[0] ? cfg->cert : NULL,
+                                           cfg->key[0] ? cfg->key : NULL, NULL))
+        fail = "TLS set-up failed (ca/cert/key files readable? key matches cert?)";
+    else if (cfg->tls && mosquitto_tls_insecure_set(m->mosq, !cfg->verify)) fail = "TLS set-up failed";
+    if (!fail && cfg->prefix[0]) {
+        snprintf(m->will_topic, sizeof m->will_topic, "%s/online", cfg->prefix);
+        if (mosquitto_will_set(m->mosq, m->will_topic, 7, "offline", 1, true)) fail = "cannot set the last will";
+    }
+    memset(m->pass, 0, sizeof m->pass); /* libmosquitto has its own copy */
+    if (fail) {
+        if (*fail) snprintf(err, errsize, "mqtt: %s", fail);
+        if (m->mosq) mosquitto_destroy(m->mosq);
+        free(m->q);
+        free(m);
+        return NULL;
+    }
+    mosquitto_threaded_set(m->mosq, true);
+    mosquitto_connect_callback_set(m->mosq, on_connect);
+    mosquitto_disconnect_callback_set(m->mosq, on_disconnect);
+    mosquitto_message_callback_set(m->mosq, on_message);
+    if (pthread_create(&m->thread, NULL, run, m)) {
+        snprintf(err, errsize, "mqtt: cannot start its thread");
+        mosquitto_destroy(m->mosq);
+        free(m->q);
+        free(m);
+        return NULL;
+    }
+    m->started = 1;
+    return m;
+}
+
+void kmq_stop(kmq *m)
+{
+    if (!m) return;
+    pthread_mutex_lock(&m->lock);
+    int up = m->st.connected;
+    pthread_mutex_unlock(&m->lock);
+    if (m->cfg.prefix[0] && up) {
+        /* a clean disconnect sends no will: say it ourselves */
+        int mid;
+        if (mosquitto_publish(m->mosq, &mid, m->will_topic, 7, "offline", 1, true) == MOSQ_ERR_SUCCESS) {
+            struct timespec ts = {0, 100 * 1000000L};
+            nanosleep(&ts, NULL); /* the thread's loop writes it out */
+        }
+    }
+    pthread_mutex_lock(&m->lock);
+    m->stop = 1;
+    pthread_cond_broadcast(&m->room);
+    pthread_mutex_unlock(&m->lock);
+    mosquitto_disconnect(m->mosq);
+    if (m->started) pthread_join(m->thread, NULL);
+    mosquitto_destroy(m->mosq);
+    pthread_cond_destroy(&m->room);
+    pthread_mutex_destroy(&m->lock);
+    free(m->q);
+    free(m);
+    mosquitto_lib_cleanup();
+}
+
+int kmq_take(kmq *m, kmq_msg *out)
+{
+    int got = 0;
+    pthread_mutex_lock(&m->lock);
+    if (m->count) {
+        kmq_msg *e = &m->q[m->head];
+        memcpy(out->topic, e->topic, strlen(e->topic) + 1);
+        out->plen = e->plen;
+        out->oversize = e->oversize;
+        memcpy(out->payload, e->payload, e->plen + 1);
+        m->head = (m->head + 1) % KMQ_QUEUE;
+        m->count--;
+        pthread_cond_signal(&m->room);
+        got = 1;
+    }
+    pthread_mutex_unlock(&m->lock);
+    return got;
+}
+
+void kmq_get_state(kmq *m, kmq_state *st)
+{
+    pthread_mutex_lock(&m->lock);
+    *st = m->st;
+    pthread_mutex_unlock(&m->lock);
+}
+
+void kmq_publish(kmq *m, const char *sub, const char *payload, int retain)
+{
+    char t[KIOSK_TOPIC_MAX + 32];
+    pthread_mutex_lock(&m->lock);
+    int up = m->st.connected;
+    pthread_mutex_unlock(&m->lock);
+    if (!m->cfg.prefix[0] || !up) return;
+    snprintf(t, sizeof t, "%s/%s", m->cfg.prefix, sub);
+    mosquitto_publish(m->mosq, NULL, t, (int)strlen(payload), payload, 1, retain != 0);
+}
+
+void kmq_set_subs(kmq *m, const kiosk_mqtt_cfg *cfg)
+{
+    pthread_mutex_lock(&m->lock);
+    for (int i = 0; i < m->cfg.nsubs; i++) mosquitto_unsubscribe(m->mosq, NULL, m->cfg.subs[i].topic);
+    m->cfg.nsubs = cfg->nsubs;
+    memcpy(m->cfg.subs, cfg->subs, sizeof cfg->subs);
+    /* subscribing again also brings the retained values of the topics */
+    if (m->st.connected) subscribe_all(m);
+    pthread_mutex_unlock(&m->lock);
+}
+
+int kmq_json_field(const char *payload, size_t n, const char *path, char *out, size_t size)
+{
+    kiosk_jstep st[KIOSK_JPATH_DEPTH];
+    int ns = kiosk_jpath_steps(path, st, KIOSK_JPATH_DEPTH);
+    if (ns <= 0) return -1;
+    /* cJSON refuses nesting deeper than CJSON_NESTING_LIMIT (1000): a
+     * hostile payload costs a bounded stack and at most a few times its size */
+    cJSON *root = cJSON_ParseWithLength(payload, n);
+    if (!root) return -1;
+    const cJSON *j = root;
+    for (int i = 0; i < ns && j; i++) {
+        if (st[i].name) {
+            char name[KIOSK_JPATH_MAX];
+            memcpy(name, st[i].name, st[i].len);
+            name[st[i].len] = 0;
+            j = cJSON_IsObject(j) ? cJSON_GetObjectItemCaseSensitive(j, name) : NULL;
+        } else
+            j = cJSON_IsArray(j) ? cJSON_GetArrayItem(j, st[i].index) : NULL;
+    }
+    int r = -1;
+    if (j && cJSON_IsNumber(j) && isfinite(j->valuedouble) && fabs(j->valuedouble) <= 1e15) {
+        /* thousandths, as the kiosk keeps numbers; trailing zeros dropped */
+        int len = snprintf(out, size, "%.3f", j->valuedouble);
+        if (len > 0 && (size_t)len < size) {
+            while (len > 1 && out[len - 1] == '0') out[--len] = 0;
+            if (out[len - 1] == '.') out[--len] = 0;
+            r = 0;
+        }
+    } else if (j && cJSON_IsString(j) && strlen(j->valuestring) < size) {
+        memcpy(out, j->valuestring, strlen(j->valuestring) + 1);
+        r = 0;
+    } else if (j && cJSON_IsBool(j) && size >= 2) {
+        snprintf(out, size, "%d", cJSON_IsTrue(j) ? 1 : 0);
+        r = 0;
+    }
+    cJSON_Delete(root);
+    return r;
+}
+
+#else /* built without libmosquitto or cJSON */
+
+struct kmq { int unused; };
+int kmq_available(void) { return 0; }
+kmq *kmq_start(const kiosk_mqtt_cfg *cfg, const char *version, char *err, size_t errsize)
+{
+    (void)cfg;
+    (void)version;
+    snprintf(err, errsize, "this fixel-kiosk was built without MQTT (install libmosquitto-dev and libcjson-dev, "
+                           "then rebuild)");
+    return NULL;
+}
+void kmq_stop(kmq *m) { (void)m; }
+int kmq_take(kmq *m, kmq_msg *out) { (void)m; (void)out; return 0; }
+void kmq_get_state(kmq *m, kmq_state *st) { (void)m; memset(st, 0, sizeof *st); }
+void kmq_publish(kmq *m, const char *sub, const char *payload, int retain)
+{
+    (void)m; (void)sub; (void)payload; (void)retain;
+}
+void kmq_set_subs(kmq *m, const kiosk_mqtt_cfg *cfg) { (void)m; (void)cfg; }
+int kmq_json_field(const char *payload, size_t n, const char *path, char *out, size_t size)
+{
+    (void)payload; (void)n; (void)path; (void)out; (void)size;
+    return -1;
+}
+#endif
