@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* Naming DRM cards and choosing the output (boards/linux/display/cards.c) on
  * fake card descriptions: a Raspberry Pi 5 (one card per display engine),
- * a Pi 4 (one vc4 card with three connectors), a qemu guest with two cards
- * whose connectors share a name. */
+ * a Pi 4 (one vc4 card with three connectors), two cards whose connectors
+ * share a name (Linux numbers each connector type across all cards, so
+ * names are unique while it runs, but the choice must not depend on it). */
 #include <stdio.h>
 #include <string.h>
 
@@ -144,7 +145,7 @@ FX_TEST(cards_pick_pi4_connector_on_one_card)
     FX_CHECK_EQ(ki, 1); /* auto takes only "connected" */
 }
 
-/* qemu: bochs and virtio-gpu both call their output Virtual-1. */
+/* Two cards with a Virtual-1 each: the first card wins unless qualified. */
 FX_TEST(cards_pick_same_connector_name_on_two_cards)
 {
     fx_card_desc c[2];

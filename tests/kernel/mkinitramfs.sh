@@ -55,8 +55,24 @@ for k in ${OPTIONAL_KO:-}; do
     basename "$k" >> "$S/modules.optional"
 done
 
+# A second card's driver (guest/outputs.c): CARD_MODULES="name...", its
+# dependencies not loaded at boot listed in /modules.cards in order.
+: > "$S/modules.cards"
+for m in ${CARD_MODULES:-}; do
+    modprobe -d "$KROOT" -S "$KVER" --show-depends "$m" | while read -r cmd path _; do
+        [ "$cmd" = insmod ] || continue
+        rel=${path#"$KROOT"/lib/modules/"$KVER"/}
+        grep -qx "$rel" "$S/modules.load" "$S/modules.cards" && continue
+        mkdir -p "$S/lib/modules/$(dirname "$rel")"
+        cp "$path" "$S/lib/modules/$rel"
+        echo "$rel" >> "$S/modules.cards"
+    done
+done
+
+# RIG_TESTS="outputs display": only these guest programs (while developing).
 for t in "$BINS"/*; do
-    [ -x "$t" ] && cp "$t" "$S/tests/"
+    [ -x "$t" ] || continue
+    case " ${RIG_TESTS:-${t##*/}} " in *" ${t##*/} "*) cp "$t" "$S/tests/" ;; esac
 done
 # Tools the tests run as commands (tools.mk builds them into BINS/../bin).
 for t in "$BINS"/../bin/*; do
