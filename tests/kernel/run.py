@@ -23,6 +23,11 @@ import threading
 import time
 import zlib
 
+# The second card's output (Virtual-2 once guest/outputs.c loads its driver)
+# is a panel mounted turned: its connector gets a "panel orientation"
+# property. Nothing else sees Virtual-2 but kms.c's vkms, which always asks
+# for a rotation.
+PANEL = "video=Virtual-2:panel_orientation=right_side_up"
 QEMU = {
     "x86_64": lambda k, i: [
         "qemu-system-x86_64", "-accel", "tcg", "-M", "pc", "-m", "256M", "-smp", "1",
@@ -31,14 +36,14 @@ QEMU = {
         # a second card (guest/outputs.c loads its driver): SCREEN ... gpu1
         "-device", "virtio-gpu-pci,id=gpu1,addr=0x8,xres=640,yres=400",
         "-kernel", k, "-initrd", i,
-        "-append", "console=ttyS0 panic=-1 loglevel=4"],
+        "-append", "console=ttyS0 panic=-1 loglevel=4 " + PANEL],
     "aarch64": lambda k, i: [
         "qemu-system-aarch64", "-M", "virt", "-cpu", "cortex-a72", "-m", "256M", "-smp", "1",
         "-device", "virtio-gpu-pci,xres=800,yres=480",
         "-device", "virtio-tablet-pci", "-device", "virtio-keyboard-pci",
         "-device", "bochs-display,id=gpu1,addr=0x8,xres=640,yres=400",
         "-kernel", k, "-initrd", i,
-        "-append", "console=ttyAMA0 panic=-1 loglevel=4"],
+        "-append", "console=ttyAMA0 panic=-1 loglevel=4 " + PANEL],
 }
 COMMON = ["-no-reboot", "-display", "none", "-serial", "stdio", "-monitor", "none"]
 

@@ -189,6 +189,40 @@ static void probe_plane(int fd, int ci, struct plane_info *pi)
     drmModeFreePlaneResources(pr);
 }
 
+/* A panel mounted turned (DSI panels in portrait, tablets) says so in its
+ * connector's "panel orientation" property, from the panel driver, the
+ * device tree's rotation or video=<connector>:panel_orientation=...; unless
+ * the program or FIXEL_ROTATION asked for a rotation, show it upright. */
+static void panel_orientation(fx_display *d, int fd, uint32_t conn)
+{
+    drmModeObjectPropertiesPtr props = drmModeObjectGetProperties(fd, conn, DRM_MODE_OBJECT_CONNECTOR);
+    for (uint32_t k = 0; props && k < props->count_props; k++) {
+        drmModePropertyPtr pr = drmModeGetProperty(fd, props->props[k]);
+        if (pr && !strcmp(pr->name, "panel orientation") && (pr->flags & DRM_MODE_PROP_ENUM)) {
+            for (int e = 0; e < pr->count_enums; e++) {
+                if (pr->enums[e].value != props->prop_values[k])
+                    continue;
+                int rot = fx_panel_orientation_rotation(pr->enums[e].name);
+                if (rot < 0)
+                    break;
+                if (d->rotation_asked) {
+                    if (rot != d->opt.rotation)
+                        fx_log(&d->log, FX_LOG_INFO, "%s: panel orientation \"%s\" would be rotation %d; "
+                               "rotation %d was asked for", d->connector, pr->enums[e].name, rot,
+                               d->opt.rotation);
+                } else {
+                    if (rot != d->opt.rotation)
+                        fx_log(&d->log, FX_LOG_INFO, "%s: panel orientation \"%s\": rotation %d "
+                               "(FIXEL_ROTATION overrides)", d->connector, pr->enums[e].name, rot);
+                    d->opt.rotation = d->sw_rotation = rot;
+                }
+            }
+        }
+        drmModeFreeProperty(pr);
+    }
+    drmModeFreeObjectProperties(props);
+}
+
 /* ---- buffers ------------------------------------------------------------ */
 
 static int create_buf(int fd, struct drm_buf *b, uint32_t w, uint32_t h, uint32_t fourcc, int bpp)
@@ -712,6 +746,7 @@ int fx_drm_open(fx_display *d)
         return -FX_ENODEV;
     }
     p->conn_id = c->connector_id;
+    panel_orientation(d, fd, c->connector_id);
     r = pick_mode(d, c, &p->mode);
     if (r == 0) {
         p->crtc_id = pick_crtc(fd, res, c, &ci);

@@ -12,7 +12,11 @@
  * one clear error listing the cards; fixel-info lists the second card with
  * its driver, by-path name, connector status/modes/preferred mode (against
  * sysfs), its EDID monitor name (against sysfs's edid file) and says it
- * would open it. The driver is unloaded at the end. */
+ * would open it. Orientation: run.py gives card1's connector a "panel
+ * orientation" of right side up on the kernel command line; opened without
+ * a rotation the picture is turned 90 (host screendump), FIXEL_ROTATION=0
+ * overrides it, and a uinput touchscreen's corners land on the logical
+ * corners of the turned picture. The driver is unloaded at the end. */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
@@ -26,13 +30,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <libevdev/libevdev-uinput.h>
+#include <libevdev/libevdev.h>
 #include <xf86drm.h>
 
+#include "fixel/app.h"
 #include "fixel/display.h"
 #include "fixel/env.h"
 #include "fixel/error.h"
 #include "guest.h"
 #include "scenes.h"
+#include "uinput.h"
 
 #if defined(__x86_64__)
 #define CARD1_DRIVER "virtio_gpu"
@@ -268,6 +276,134 @@ static void info_checks(void)
                 cc ? cline : "(none)");
 }
 
+/* ---- the panel's orientation ----------------------------------------------- */
+
+static void panel_child(void *arg)
+{
+    const char *rot = arg; /* FIXEL_ROTATION or NULL */
+    setenv("FIXEL_CONNECTOR", conn1, 1);
+    if (rot)
+        setenv("FIXEL_ROTATION", rot, 1);
+    fx_display_options o;
+    fx_display_options_init(&o);
+    o.backend = FX_BACKEND_DRM;
+    o.console = 0;
+    o.log = capture_log;
+    o.log_priority = FX_LOG_DEBUG;
+    fx_display_options_from_env(&o);
+    logbuf[0] = 0;
+    const char *name = rot ? "outputs-panel-rotation-overridden" : "outputs-panel-orientation";
+    fx_display *d;
+    if (guest_open(name, &d, &o) < 0)
+        return;
+    fx_display_info in;
+    fx_display_get_info(d, &in);
+    int want = rot ? 0 : 90;
+    int said = rot ? strstr(logbuf, "rotation 0 was asked for") != NULL
+                   : strstr(logbuf, "panel orientation \"Right Side Up\": rotation 90") != NULL;
+    fx_surface s = fx_display_surface(d); /* logical: turned for 90 */
+    guest_check(name, in.rotation == want && s.w == (want ? 400 : 640) && s.h == (want ? 640 : 400) && said,
+                "%s %s: rotation %d (want %d), logical %dx%d, log says why: %s", in.device, in.connector, in.rotation,
+                want, s.w, s.h, said ? "yes" : "no");
+    scene_draw(rot ? "checker" : "bars", &s);
+    fx_display_present(d, NULL, 0);
+    fx_display_wait(d, 1000);
+    /* the host turns its render by the rotation given here, not the guest's */
+    guest_request("SCREEN %s-picture 640 400 %d %s gpu1", name, want, rot ? "checker" : "bars");
+    fx_display_close(d);
+}
+
+struct rec {
+    char ev[16][48];
+    int n;
+    fx_app *app;
+    struct libevdev_uinput *ts;
+};
+static void rec_add(struct rec *r, const char *kind, int x, int y)
+{
+    if (r->n < 16)
+        snprintf(r->ev[r->n++], 48, "%s %d %d", kind, x, y);
+    printf("  event: %s %d %d\n", kind, x, y);
+}
+static void on_touch(void *u, int id, int x, int y, int ph)
+{
+    (void)id;
+    rec_add(u, ph == 0 ? "down" : ph == 1 ? "move" : "up", x, y);
+}
+static void tw(struct libevdev_uinput *u, unsigned t, unsigned c, int v) { libevdev_uinput_write_event(u, t, c, v); }
+static void tap(struct libevdev_uinput *u, int x, int y)
+{
+    tw(u, EV_ABS, ABS_MT_SLOT, 0);
+    tw(u, EV_ABS, ABS_MT_TRACKING_ID, 11);
+    tw(u, EV_ABS, ABS_MT_POSITION_X, x);
+    tw(u, EV_ABS, ABS_MT_POSITION_Y, y);
+    tw(u, EV_ABS, ABS_X, x);
+    tw(u, EV_ABS, ABS_Y, y);
+    tw(u, EV_KEY, BTN_TOUCH, 1);
+    tw(u, EV_SYN, SYN_REPORT, 0);
+    tw(u, EV_ABS, ABS_MT_TRACKING_ID, -1);
+    tw(u, EV_KEY, BTN_TOUCH, 0);
+    tw(u, EV_SYN, SYN_REPORT, 0);
+}
+static void touch_step(void *u, int k)
+{
+    struct rec *r = u;
+    /* raw 0..4095 spans the physical 640x400 panel */
+    if (k == 0)
+        tap(r->ts, 4095, 0);    /* the panel's top-right corner: the viewer's top-left */
+    else if (k == 1)
+        tap(r->ts, 0, 4095);    /* bottom-left: the viewer's bottom-right */
+    else if (k == 2)
+        tap(r->ts, 4095, 4095); /* bottom-right: the viewer's top-right */
+    else
+        fx_app_quit(r->app);
+}
+
+static void panel_touch_child(void *arg)
+{
+    (void)arg;
+    struct libevdev *dev = libevdev_new();
+    libevdev_set_name(dev, "fixel outputs touchscreen");
+    uinput_enable_multitouch(dev, 1);
+    static struct rec r;
+    r.ts = uinput_create(dev);
+    if (!r.ts) {
+        guest_check("outputs-panel-touch", 0, "no uinput touchscreen");
+        return;
+    }
+    setenv("FIXEL_CONNECTOR", conn1, 1);
+    fx_app_options o;
+    fx_app_options_init(&o);
+    fx_app_options_from_env(&o);
+    o.display.backend = FX_BACKEND_DRM;
+    o.display.console = 0;
+    o.display.log = capture_log;
+    o.display.log_priority = FX_LOG_DEBUG;
+    o.pointercal = NULL; /* the guest has no /etc/pointercal: range scaling */
+    if (fx_app_open(&r.app, &o) < 0) {
+        guest_check("outputs-panel-touch", 0, "fx_app_open failed");
+        return;
+    }
+    fx_callbacks cb = {.touch = on_touch};
+    fx_app_set_callbacks(r.app, &cb, &r);
+    for (int k = 0; k < 4; k++)
+        fx_app_timer(r.app, (unsigned)(100 + 150 * k), touch_step, k);
+    fx_app_main_loop(r.app);
+    int32_t w, h;
+    fx_app_size(r.app, &w, &h);
+    static const char *const want[] = {"down 0 0", "up 0 0", "down 399 639", "up 399 639", "down 399 0", "up 399 0"};
+    int ok = r.n == 6 && w == 400 && h == 640;
+    for (int i = 0; ok && i < 6; i++)
+        ok = !strcmp(r.ev[i], want[i]);
+    char got[400] = "";
+    for (int i = 0; i < r.n; i++)
+        snprintf(got + strlen(got), sizeof got - strlen(got), "%s%s", i ? "; " : "", r.ev[i]);
+    guest_check("outputs-panel-touch", ok, "logical %dx%d; touches [%s], want [down 0 0; up 0 0; down 399 639; "
+                "up 399 639; down 399 0; up 399 0]", w, h, got);
+    fx_app_close(r.app);
+    libevdev_uinput_destroy(r.ts);
+}
+
 int main(void)
 {
     setvbuf(stdout, NULL, _IOLBF, 0);
@@ -320,6 +456,9 @@ int main(void)
         in_child(open_child, (void *)&cases[i]);
     }
     info_checks();
+    in_child(panel_child, NULL);
+    in_child(panel_child, "0");
+    in_child(panel_touch_child, NULL);
 
     char cmd[64];
     snprintf(cmd, sizeof cmd, "rmmod %s 2>&1", CARD1_MODULE);
