@@ -106,7 +106,12 @@ static int open_touch(const char *want, char *path, size_t n)
 /* One touch: the mean raw position over its reports, taken at release. */
 static int read_touch(int fd, int timeout_s, double *rx, double *ry)
 {
-    int x = 0, y = 0, down = 0;
+    /* The kernel sends only changed values: a touch where the last one
+     * ended reports no ABS_X at all, so start from the device's state. */
+    struct input_absinfo ax = {0}, ay = {0};
+    ioctl(fd, EVIOCGABS(ABS_X), &ax);
+    ioctl(fd, EVIOCGABS(ABS_Y), &ay);
+    int x = ax.value, y = ay.value, down = 0;
     double sx = 0, sy = 0;
     long cnt = 0;
     struct timespec t0, t;

@@ -23,6 +23,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -404,6 +405,95 @@ static void panel_touch_child(void *arg)
     libevdev_uinput_destroy(r.ts);
 }
 
+/* ---- fixel-calibrate on the turned panel ------------------------------------ */
+
+/* The touchscreen's wiring, known here: raw = 6*px + 100, 4000 - 9*py for
+ * the physical pixel (px, py) of the 640x400 panel. */
+static int raw_x(int px) { return 6 * px + 100; }
+static int raw_y(int py) { return 4000 - 9 * py; }
+
+static void calibrate_checks(void)
+{
+    struct libevdev *dev = libevdev_new();
+    libevdev_set_name(dev, "fixel calibrate touchscreen");
+    uinput_enable_multitouch(dev, 1);
+    struct libevdev_uinput *ts = uinput_create(dev);
+    if (!ts) {
+        guest_check("outputs-calibrate", 0, "no uinput touchscreen");
+        return;
+    }
+    /* the targets fixel-calibrate places, worked out here: logical 400x640
+     * (rotation 90 from the panel), margin 30, then turned to physical */
+    const int lw = 400, lh = 640, m = 30;
+    const int lx[6] = {m, lw - 1 - m, lw - 1 - m, m, lw / 2, lw / 4};
+    const int ly[6] = {m, m, lh - 1 - m, lh - 1 - m, lh / 2, (3 * lh) / 4};
+    int fds[2];
+    if (pipe(fds) < 0)
+        return;
+    unlink("/tmp/pointercal");
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0) {
+        dup2(fds[1], 1);
+        close(fds[0]);
+        setenv("FIXEL_CONNECTOR", conn1, 1);
+        execl("/bin/fixel-calibrate", "fixel-calibrate", "-i", libevdev_uinput_get_devnode(ts), "-o",
+              "/tmp/pointercal", "--timeout", "20", (char *)NULL);
+        _exit(127);
+    }
+    close(fds[1]);
+    FILE *f = fdopen(fds[0], "r");
+    char line[256], said[2048] = "";
+    int k = 0;
+    while (f && fgets(line, sizeof line, f)) {
+        printf("  calibrate: %s", line);
+        if (strlen(said) + strlen(line) < sizeof said)
+            strcat(said, line);
+        if (!strncmp(line, "touch the cross", 15) && k < 6) {
+            int px = 640 - 1 - ly[k], py = lx[k]; /* rotation 90: (W-1-y, x) */
+            if (k == 0)
+                guest_request("SCREEN outputs-calibrate-target 640 400 90 !black gpu1");
+            for (int rep = 0; rep < 3; rep++) { /* a touch of three reports */
+                tw(ts, EV_ABS, ABS_MT_SLOT, 0);
+                tw(ts, EV_ABS, ABS_MT_TRACKING_ID, 21);
+                tw(ts, EV_ABS, ABS_MT_POSITION_X, raw_x(px));
+                tw(ts, EV_ABS, ABS_MT_POSITION_Y, raw_y(py));
+                tw(ts, EV_ABS, ABS_X, raw_x(px));
+                tw(ts, EV_ABS, ABS_Y, raw_y(py));
+                if (rep == 0)
+                    tw(ts, EV_KEY, BTN_TOUCH, 1);
+                tw(ts, EV_SYN, SYN_REPORT, 0);
+            }
+            tw(ts, EV_ABS, ABS_MT_TRACKING_ID, -1);
+            tw(ts, EV_KEY, BTN_TOUCH, 0);
+            tw(ts, EV_SYN, SYN_REPORT, 0);
+            k++;
+        }
+    }
+    if (f)
+        fclose(f);
+    int st = 0;
+    waitpid(pid, &st, 0);
+    libevdev_uinput_destroy(ts);
+    /* the inverse of the wiring, as tslib stores it */
+    long want[9] = {lround(65536.0 / 6), 0, lround(-100 * 65536.0 / 6), 0, lround(-65536.0 / 9),
+                    lround(4000 * 65536.0 / 9), 65536, 640, 400};
+    long got[9] = {0};
+    char file[256] = "";
+    read_file("/tmp/pointercal", file, sizeof file);
+    int n = sscanf(file, "%ld %ld %ld %ld %ld %ld %ld %ld %ld", &got[0], &got[1], &got[2], &got[3], &got[4], &got[5],
+                   &got[6], &got[7], &got[8]);
+    int same = n == 9;
+    for (int i = 0; same && i < 9; i++)
+        same = got[i] == want[i];
+    guest_check("outputs-calibrate", WIFEXITED(st) && WEXITSTATUS(st) == 0 && k == 6 && same,
+                "exit %d, %d touches asked, file \"%.*s\", want %ld %ld %ld %ld %ld %ld %ld %ld %ld",
+                WIFEXITED(st) ? WEXITSTATUS(st) : -1, k, (int)strcspn(file, "\n"), file, want[0], want[1], want[2],
+                want[3], want[4], want[5], want[6], want[7], want[8]);
+    guest_check("outputs-calibrate-said", strstr(said, "rotation 90") && strstr(said, "FIXEL_POINTERCAL=/tmp/pointercal"),
+                "the tool names the rotation and the config line");
+}
+
 int main(void)
 {
     setvbuf(stdout, NULL, _IOLBF, 0);
@@ -459,6 +549,7 @@ int main(void)
     in_child(panel_child, NULL);
     in_child(panel_child, "0");
     in_child(panel_touch_child, NULL);
+    calibrate_checks();
 
     char cmd[64];
     snprintf(cmd, sizeof cmd, "rmmod %s 2>&1", CARD1_MODULE);
