@@ -69,6 +69,6 @@ fx_card_pick fx_card_pick_output(const fx_card_desc *cards, int n, const char *d
 int fx_drm_cards(fx_card_desc *out, int max);
 
 #ifdef __cplusplus
-}
+}  /* extern "C" */
 #endif
 #endif
