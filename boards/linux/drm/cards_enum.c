@@ -76,9 +76,10 @@ static void describe(fx_card_desc *c)
     int fd = open(c->path, O_RDWR | O_CLOEXEC);
     if (fd < 0)
         fd = open(c->path, O_RDONLY | O_CLOEXEC);
+    int e = errno; /* before the sysfs walk, whose failed readlinks set it */
     by_path_name(c->minor, c->path_name, sizeof c->path_name);
     if (fd < 0) {
-        c->error = -errno;
+        c->error = -e;
         return;
     }
     drmVersionPtr v = drmGetVersion(fd);

@@ -356,26 +356,7 @@ static int crc_of(const char *dev, const char *crcdir, fx_format f, int variant,
 
 static int load_optional_modules(char *detail, size_t n)
 {
-    FILE *f = fopen("/modules.optional", "r");
-    char line[200], cmd[300];
-    int loaded = 0;
-    detail[0] = 0;
-    if (!f) {
-        snprintf(detail, n, "no /modules.optional");
-        return -1;
-    }
-    while (fgets(line, sizeof line, f)) {
-        line[strcspn(line, "\n")] = 0;
-        if (!*line)
-            continue;
-        snprintf(cmd, sizeof cmd, "insmod /lib/modules/%s 2>&1", line);
-        int st = system(cmd);
-        size_t l = strlen(detail);
-        snprintf(detail + l, n - l, "%s%s%s", l ? " " : "", line, st == 0 ? "" : "(failed)");
-        loaded += st == 0;
-    }
-    fclose(f);
-    return loaded;
+    return guest_load_modules("/modules.optional", detail, n);
 }
 
 static void vkms_checks(void)

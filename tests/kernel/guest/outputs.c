@@ -58,40 +58,6 @@
 #define CARD0_DRIVER "virtio_gpu"
 #endif
 
-static int load_card_modules(char *detail, size_t n)
-{
-    FILE *f = fopen("/modules.cards", "r");
-    char line[200], cmd[300];
-    int bad = 0;
-    detail[0] = 0;
-    if (!f) {
-        snprintf(detail, n, "no /modules.cards");
-        return -1;
-    }
-    while (fgets(line, sizeof line, f)) {
-        line[strcspn(line, "\n")] = 0;
-        if (!*line)
-            continue;
-        /* kms.c may have loaded a shared helper (drm_shmem_helper) already */
-        char mod[200], sys[240];
-        const char *b = strrchr(line, '/');
-        snprintf(mod, sizeof mod, "%s", b ? b + 1 : line);
-        mod[strcspn(mod, ".")] = 0;
-        for (char *q = mod; *q; q++)
-            if (*q == '-')
-                *q = '_';
-        snprintf(sys, sizeof sys, "/sys/module/%s", mod);
-        if (access(sys, F_OK) == 0)
-            continue;
-        snprintf(cmd, sizeof cmd, "insmod /lib/modules/%s 2>&1", line);
-        int st = system(cmd);
-        size_t l = strlen(detail);
-        snprintf(detail + l, n - l, "%s%s%s", l ? " " : "", mod, st == 0 ? "" : "(failed)");
-        bad += st != 0;
-    }
-    fclose(f);
-    return bad ? -1 : 0;
-}
 
 static const char *driver_of(const char *dev, char *out, size_t n)
 {
@@ -165,15 +131,7 @@ static void open_child(void *arg)
 
 static void in_child(void (*fn)(void *), void *arg)
 {
-    fflush(stdout);
-    pid_t pid = fork();
-    if (pid == 0) {
-        fn(arg);
-        fflush(stdout);
-        _exit(guest_failed);
-    }
-    int st = 0;
-    waitpid(pid, &st, 0);
+    int st = guest_in_child(fn, arg);
     if (!WIFEXITED(st) || WEXITSTATUS(st))
         guest_failed = 1;
 }
@@ -182,17 +140,7 @@ static void in_child(void (*fn)(void *), void *arg)
 
 static char out[1 << 16];
 
-static const char *line_with(const char *text, const char *needle, char *line, size_t n)
-{
-    const char *p = strstr(text, needle);
-    if (!p)
-        return NULL;
-    while (p > text && p[-1] != '\n')
-        p--;
-    size_t l = strcspn(p, "\n");
-    snprintf(line, n, "%.*s", (int)(l < n ? l : n - 1), p);
-    return p;
-}
+#define line_with guest_line_with
 
 /* The monitor name descriptor of an EDID read from sysfs. */
 static void edid_monitor(const char *path, char *name, size_t n)
@@ -498,7 +446,7 @@ int main(void)
 {
     setvbuf(stdout, NULL, _IOLBF, 0);
     char detail[300], drv[32];
-    int lr = load_card_modules(detail, sizeof detail);
+    int lr = guest_load_modules("/modules.cards", detail, sizeof detail) < 0 || strstr(detail, "(failed)") ? -1 : 0;
     int ok = 0;
     for (int t = 0; t < 50 && !ok; t++) {
         DIR *dir = opendir("/sys/class/drm");
