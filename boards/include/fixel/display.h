@@ -115,6 +115,16 @@ void fx_display_options_init(fx_display_options *o);
 
 /* Open a display. On failure *out is NULL and the reason has been logged. */
 int fx_display_open(fx_display **out, const fx_display_options *o);
+/* Headless boot: block until the output o asks for (o->drm_device / device,
+ * o->connector, else any) has a connected connector with modes, logging one
+ * line when it has to wait; it wakes on DRM hotplug uevents and re-checks
+ * every 5 s for drivers that send none. timeout_ms < 0 waits for ever.
+ * Returns 0 when the output is there (or o asks for fbdev or memory), -FX_ENODEV
+ * at once when there is nothing to wait for (no KMS card and no output
+ * named), -FX_EACCES when the cards may not be opened, 1 on timeout. Call it
+ * before fx_display_open / fx_app_open (fixel-kiosk does by default). */
+int fx_display_wait_connected(const fx_display_options *o, int timeout_ms);
+
 /* Restore the console and CRTC, free everything. NULL is accepted. */
 void fx_display_close(fx_display *d);
 

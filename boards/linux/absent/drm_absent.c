@@ -12,6 +12,12 @@ int fx_drm_open(fx_display *d)
     return -FX_ENOTSUP;
 }
 
+int fx_display_wait_connected(const fx_display_options *o, int timeout_ms)
+{
+    (void)timeout_ms;
+    return o->backend == FX_BACKEND_DRM || o->backend == FX_BACKEND_AUTO ? -FX_ENODEV : 0;
+}
+
 int fx_drm_cards(fx_card_desc *out, int max)
 {
     (void)out, (void)max;

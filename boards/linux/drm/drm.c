@@ -18,6 +18,7 @@
 #include <sys/mman.h>
 #include <sys/socket.h>
 #include <linux/netlink.h>
+#include <stdint.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -864,4 +865,103 @@ int fx_drm_open(fx_display *d)
     if (frame > 0) /* clock is in kHz */
         d->info.refresh_mhz = (int32_t)((int64_t)p->mode.clock * 1000000 / frame);
     return 0;
+}
+
+/* ---- waiting for a display (headless boot) ------------------------------- */
+
+static int uevent_socket(void)
+{
+    int fd = socket(AF_NETLINK, SOCK_DGRAM | SOCK_CLOEXEC | SOCK_NONBLOCK, NETLINK_KOBJECT_UEVENT);
+    struct sockaddr_nl a = {.nl_family = AF_NETLINK, .nl_groups = 1};
+    if (fd >= 0 && bind(fd, (struct sockaddr *)&a, sizeof a) < 0) {
+        close(fd);
+        fd = -1;
+    }
+    return fd;
+}
+
+/* 1 when a drm uevent was among those queued (all are read). */
+static int drain_drm_uevents(int fd)
+{
+    char buf[4096];
+    ssize_t n;
+    int drm = 0;
+    while ((n = recv(fd, buf, sizeof buf - 1, 0)) > 0) {
+        buf[n] = 0;
+        for (char *k = buf; k < buf + n; k += strlen(k) + 1)
+            drm |= !strcmp(k, "SUBSYSTEM=drm");
+    }
+    return drm;
+}
+
+int fx_display_wait_connected(const fx_display_options *o, int timeout_ms)
+{
+    if (o->backend == FX_BACKEND_FBDEV || o->backend == FX_BACKEND_MEMORY)
+        return 0;
+    fx_logger l = {o->log ? o->log : fx_log_stderr, o->log_user, o->log_priority ? o->log_priority : FX_LOG_INFO};
+    const char *want = o->device;
+    if (want && (!*want || (want[0] == '/' && !strstr(want, "/dri/"))))
+        want = NULL;
+    if (!want)
+        want = o->drm_device && *o->drm_device ? o->drm_device : NULL;
+    char spec[64], real[PATH_MAX];
+    const char *base;
+    if (want && want[0] == '/' && realpath(want, real) && (base = strrchr(real, '/'))) {
+        snprintf(spec, sizeof spec, "%s", base + 1);
+        want = spec;
+    }
+    const char *cwant = o->connector && *o->connector ? o->connector : NULL;
+    int ufd = uevent_socket(); /* before the first look: no event slips between */
+    int64_t end = timeout_ms < 0 ? INT64_MAX : now_ms() + timeout_ms;
+    int waited = 0, r;
+    for (;;) {
+        fx_card_desc cards[FX_CARDS_MAX];
+        int n = fx_drm_cards(cards, FX_CARDS_MAX), ci, ki, kms = 0, denied = 0;
+        for (int i = 0; i < n; i++) {
+            kms += !cards[i].error;
+            denied += cards[i].error == -EACCES || cards[i].error == -EPERM;
+        }
+        if (fx_card_pick_output(cards, n, want, cwant, &ci, &ki) == FX_PICK_OK) {
+            if (waited)
+                fx_log(&l, FX_LOG_INFO, "display connected: %s %s", cards[ci].path, cards[ci].conn[ki].name);
+            r = 0;
+            break;
+        }
+        if (denied && !kms) {
+            fx_log_access_hint(&l, cards[0].path);
+            r = -FX_EACCES;
+            break;
+        }
+        if (!kms && !want && !cwant) {
+            r = -FX_ENODEV; /* no KMS card: fbdev or memory is the display */
+            break;
+        }
+        if (!waited)
+            fx_log(&l, FX_LOG_INFO, "no display connected%s%s%s%s; waiting for one", want ? " on " : "",
+                   want ? want : "", cwant ? " at " : "", cwant ? cwant : "");
+        waited = 1;
+        int64_t left = end - now_ms();
+        if (left <= 0) {
+            r = 1; /* timed out: still none */
+            break;
+        }
+        /* uevents, else a look every 5 s (drivers without hotplug interrupts) */
+        int64_t slice = left < 5000 ? left : 5000;
+        int64_t until = now_ms() + slice;
+        int drm = 0;
+        while (!drm && now_ms() < until) {
+            struct pollfd p = {.fd = ufd, .events = POLLIN};
+            int64_t w = until - now_ms();
+            if (ufd < 0) {
+                struct timespec ts = {(time_t)(w / 1000), (long)(w % 1000) * 1000000L};
+                nanosleep(&ts, NULL);
+                break;
+            }
+            if (poll(&p, 1, (int)(w > 0 ? w : 0)) > 0)
+                drm = drain_drm_uevents(ufd);
+        }
+    }
+    if (ufd >= 0)
+        close(ufd);
+    return r;
 }

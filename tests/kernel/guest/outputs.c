@@ -16,7 +16,9 @@
  * orientation" of right side up on the kernel command line; opened without
  * a rotation the picture is turned 90 (host screendump), FIXEL_ROTATION=0
  * overrides it, and a uinput touchscreen's corners land on the logical
- * corners of the turned picture. The driver is unloaded at the end. */
+ * corners of the turned picture. fixel-calibrate driven by uinput touches.
+ * Headless boot: with card1's connector forced off a program waits in
+ * fx_display_wait_connected (one log line) and draws once it is forced on. The driver is unloaded at the end. */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
@@ -442,6 +444,69 @@ static void calibrate_checks(void)
                 "the tool names the rotation and the config line");
 }
 
+/* ---- headless boot: waiting for the display ---------------------------------- */
+
+static void wait_child(void)
+{
+    fx_display_options o;
+    fx_display_options_init(&o);
+    o.backend = FX_BACKEND_DRM;
+    o.connector = conn1;
+    o.console = 0;
+    o.log = capture_log;
+    o.log_priority = FX_LOG_DEBUG;
+    logbuf[0] = 0;
+    int r = fx_display_wait_connected(&o, 20000);
+    int lines = 0;
+    for (const char *q = logbuf; (q = strstr(q, "waiting for one")); q++)
+        lines++;
+    guest_check("outputs-wait-connected", r == 0 && lines == 1 && strstr(logbuf, "display connected: /dev/dri/card1"),
+                "returned %d once the connector came back; %d waiting line(s); log: %.200s", r, lines, logbuf);
+    fx_display *d;
+    if (r != 0 || guest_open("outputs-wait-open", &d, &o) < 0)
+        return;
+    fx_display_info in;
+    fx_display_get_info(d, &in);
+    fx_surface s = fx_display_surface(d);
+    scene_draw("bars", &s);
+    fx_display_present(d, NULL, 0);
+    fx_display_wait(d, 1000);
+    guest_request("SCREEN outputs-wait-picture %d %d %d bars gpu1", in.width, in.height, in.rotation);
+    fx_display_close(d);
+}
+
+/* The connector forced off through sysfs (with the card's change uevent a
+ * hotplug interrupt would send), a program waits; forced on, it draws. */
+static void wait_checks(void)
+{
+    char status[96];
+    snprintf(status, sizeof status, "/sys/class/drm/card1-%s/status", conn1);
+    int w = write_file(status, "off");
+    if (w == 0)
+        w = write_file("/sys/class/drm/card1/uevent", "change");
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0) {
+        wait_child();
+        fflush(stdout);
+        _exit(guest_failed);
+    }
+    msleep(1500);
+    int st = 0;
+    pid_t done = waitpid(pid, &st, WNOHANG);
+    guest_check("outputs-wait-blocks", w == 0 && done == 0, "connector forced off (%d); after 1.5 s the program %s",
+                w, done == 0 ? "still waits" : "returned");
+    w = write_file(status, "on");
+    if (w == 0)
+        w = write_file("/sys/class/drm/card1/uevent", "change");
+    if (done == 0)
+        waitpid(pid, &st, 0);
+    if (!WIFEXITED(st) || WEXITSTATUS(st))
+        guest_failed = 1;
+    write_file(status, "detect");
+    write_file("/sys/class/drm/card1/uevent", "change");
+}
+
 int main(void)
 {
     setvbuf(stdout, NULL, _IOLBF, 0);
@@ -498,6 +563,7 @@ int main(void)
     in_child(panel_child, "0");
     in_child(panel_touch_child, NULL);
     calibrate_checks();
+    wait_checks();
 
     char cmd[64];
     snprintf(cmd, sizeof cmd, "rmmod %s 2>&1", CARD1_MODULE);
