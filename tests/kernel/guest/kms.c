@@ -33,6 +33,7 @@
 #include "fixel/display.h"
 #include "fixel/error.h"
 #include "guest.h"
+#include "guest_drm.h"
 
 static void opts(fx_display_options *o, const char *device, int rotation)
 {
@@ -104,20 +105,7 @@ static void plane_facts(const char *dev, struct plane_facts *pf)
     close(fd);
 }
 
-static const char *driver_name(const char *dev, char *out, size_t n)
-{
-    snprintf(out, n, "?");
-    int fd = open(dev, O_RDWR | O_CLOEXEC);
-    if (fd < 0)
-        return out;
-    drmVersionPtr v = drmGetVersion(fd);
-    if (v) {
-        snprintf(out, n, "%s", v->name);
-        drmFreeVersion(v);
-    }
-    close(fd);
-    return out;
-}
+#define driver_name guest_drm_driver
 
 /* ---- plane rotation vs software ------------------------------------------ */
 

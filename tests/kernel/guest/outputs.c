@@ -35,13 +35,13 @@
 
 #include <libevdev/libevdev-uinput.h>
 #include <libevdev/libevdev.h>
-#include <xf86drm.h>
 
 #include "fixel/app.h"
 #include "fixel/display.h"
 #include "fixel/env.h"
 #include "fixel/error.h"
 #include "guest.h"
+#include "guest_drm.h"
 #include "scenes.h"
 #include "uinput.h"
 
@@ -61,20 +61,6 @@
 #endif
 
 
-static const char *driver_of(const char *dev, char *out, size_t n)
-{
-    snprintf(out, n, "?");
-    int fd = open(dev, O_RDWR | O_CLOEXEC);
-    if (fd < 0)
-        return out;
-    drmVersionPtr v = drmGetVersion(fd);
-    if (v) {
-        snprintf(out, n, "%s", v->name);
-        drmFreeVersion(v);
-    }
-    close(fd);
-    return out;
-}
 
 /* ---- opening by name, in a child each (DRM master, console) ------------- */
 
@@ -525,7 +511,7 @@ int main(void)
         if (!ok)
             msleep(100);
     }
-    driver_of("/dev/dri/card1", drv, sizeof drv);
+    guest_drm_driver("/dev/dri/card1", drv, sizeof drv);
     /* one pool of numbers per connector type, across cards */
     guest_check("outputs-second-card", lr == 0 && ok && !strcmp(drv, CARD1_DRIVER) && !strcmp(conn1, "Virtual-2"),
                 "loaded %s; card1 %s, driver %s, connectors: card0 %s, card1 %s", detail, ok ? "present" : "missing",
