@@ -109,6 +109,7 @@ static void reset_backend(fx_display *d)
     memset(d->scan, 0, sizeof d->scan);
     memset(&d->info, 0, sizeof d->info);
     d->nbuf = 0;
+    d->opt.rotation = d->rotation_default; /* the failed backend may have taken a panel's */
     d->sw_rotation = d->opt.rotation;
     d->rotation_why = NULL;
     /* else the next backend's log line names the device that failed */
@@ -202,8 +203,10 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
         d->ptr.save[i].cap = FX_SPRITE_MAX * FX_SPRITE_MAX;
     }
 
+    d->rotation_asked = d->opt.rotation >= 0;
     if (d->opt.rotation < 0)
         d->opt.rotation = FX_BOARD_ROTATION;
+    d->rotation_default = d->opt.rotation;
     if (d->opt.rotation != 0 && d->opt.rotation != 90 && d->opt.rotation != 180 &&
         d->opt.rotation != 270) {
         fx_display_log(d, FX_LOG_ERROR, "rotation %d is not 0, 90, 180 or 270", d->opt.rotation);

@@ -66,6 +66,11 @@ int fx_plane_rotation_choose(int rotation, int has_property, uint32_t mask, int 
  * requested format the plane lacks falls back to the other. FX_FMT_COUNT
  * when nothing usable is offered or want is another format. */
 fx_format fx_drm_format_choose(fx_format want, int has_xrgb, int has_565, const char **why);
+/* The clockwise rotation that shows a picture upright on a panel whose
+ * connector property "panel orientation" has this enum name ("Normal",
+ * "Upside Down", "Left Side Up", "Right Side Up"), as the kernel's own
+ * console turns it; -1 for any other name. */
+int fx_panel_orientation_rotation(const char *name);
 
 /* ---- the display object ---- */
 
@@ -109,6 +114,10 @@ struct fx_display {
     fx_damage prev;         /* logical damage of the last presented frame */
 
     int sw_rotation;        /* rotation done by copying (0 when the plane rotates) */
+    int rotation_asked;     /* the program or FIXEL_ROTATION gave opt.rotation: a panel's
+                               orientation property must not change it */
+    int rotation_default;   /* opt.rotation as resolved before any backend (each retry starts
+                               from it; the DRM backend may take the panel's instead) */
     const char *rotation_why; /* how the rotation is done, for the log line */
 
     fx_surface shadow;      /* shadow mode: logical back buffer */

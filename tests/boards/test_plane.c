@@ -100,3 +100,20 @@ FX_TEST(drm_format_choice)
     FX_CHECK_EQ(fx_drm_format_choose(FX_FMT_BGR565, 1, 1, &why), FX_FMT_COUNT);
     FX_CHECK_EQ(fx_drm_format_choose(FX_FMT_MONO1, 1, 1, NULL), FX_FMT_COUNT);
 }
+
+/* The connector's "panel orientation" names, turned the way the kernel's
+ * console turns them (drm_client_rotation: right side up is DRM rotate-270,
+ * counter-clockwise, so 90 clockwise in fixel's terms). */
+FX_TEST(panel_orientation_to_rotation)
+{
+    FX_CHECK_EQ(fx_panel_orientation_rotation("Normal"), 0);
+    FX_CHECK_EQ(fx_panel_orientation_rotation("Upside Down"), 180);
+    FX_CHECK_EQ(fx_panel_orientation_rotation("Left Side Up"), 270);
+    FX_CHECK_EQ(fx_panel_orientation_rotation("Right Side Up"), 90);
+    /* and the DRM bit fixel would set for it is the console's */
+    FX_CHECK_EQ(fx_plane_rotation_bit(fx_panel_orientation_rotation("Right Side Up")), FX_PLANE_ROTATE_270);
+    FX_CHECK_EQ(fx_plane_rotation_bit(fx_panel_orientation_rotation("Left Side Up")), FX_PLANE_ROTATE_90);
+    FX_CHECK_EQ(fx_panel_orientation_rotation("right side up"), -1);
+    FX_CHECK_EQ(fx_panel_orientation_rotation(""), -1);
+    FX_CHECK_EQ(fx_panel_orientation_rotation(NULL), -1);
+}

@@ -39,24 +39,39 @@ echo gpio-sim-oot.ko >> "$S/modules.load"
 # the guest program needing them insmods /modules.optional in order.
 # OPTIONAL_MODULES="name..." (from the image), OPTIONAL_KO="file.ko..."
 : > "$S/modules.optional"
-for m in ${OPTIONAL_MODULES:-}; do
-    modprobe -d "$KROOT" -S "$KVER" --show-depends "$m" | while read -r cmd path _; do
-        [ "$cmd" = insmod ] || continue
-        rel=${path#"$KROOT"/lib/modules/"$KVER"/}
-        grep -qx "$rel" "$S/modules.load" "$S/modules.optional" && continue
-        mkdir -p "$S/lib/modules/$(dirname "$rel")"
-        cp "$path" "$S/lib/modules/$rel"
-        echo "$rel" >> "$S/modules.optional"
+# add_list LIST MODULE...: the modules and their dependencies not loaded at
+# boot, copied and appended to LIST in insmod order
+add_list() {
+    list=$1; shift
+    for m in "$@"; do
+        modprobe -d "$KROOT" -S "$KVER" --show-depends "$m" | while read -r cmd path _; do
+            [ "$cmd" = insmod ] || continue
+            rel=${path#"$KROOT"/lib/modules/"$KVER"/}
+            grep -qx "$rel" "$S/modules.load" "$list" && continue
+            mkdir -p "$S/lib/modules/$(dirname "$rel")"
+            cp "$path" "$S/lib/modules/$rel"
+            echo "$rel" >> "$list"
+        done
     done
-done
+}
+# shellcheck disable=SC2086 # word lists
+add_list "$S/modules.optional" ${OPTIONAL_MODULES:-}
 for k in ${OPTIONAL_KO:-}; do
     [ -f "$k" ] || continue
     cp "$k" "$S/lib/modules/"
     basename "$k" >> "$S/modules.optional"
 done
 
+# A second card's driver (guest/outputs.c): CARD_MODULES="name...", its
+# dependencies not loaded at boot listed in /modules.cards in order.
+: > "$S/modules.cards"
+# shellcheck disable=SC2086
+add_list "$S/modules.cards" ${CARD_MODULES:-}
+
+# RIG_TESTS="outputs display": only these guest programs (while developing).
 for t in "$BINS"/*; do
-    [ -x "$t" ] && cp "$t" "$S/tests/"
+    [ -x "$t" ] || continue
+    case " ${RIG_TESTS:-${t##*/}} " in *" ${t##*/} "*) cp "$t" "$S/tests/" ;; esac
 done
 # Tools the tests run as commands (tools.mk builds them into BINS/../bin).
 for t in "$BINS"/../bin/*; do

@@ -9,11 +9,11 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 D=$(sh "$HERE/fetch.sh" "$CACHE" | tail -1)
 ABI=$(basename "$D")
 mkdir -p "$B/work"
-OPTIONAL_MODULES=drm_shmem_helper OPTIONAL_KO="$D/amd64/vkms.ko" \
+OPTIONAL_MODULES=drm_shmem_helper OPTIONAL_KO="$D/amd64/vkms.ko" CARD_MODULES=virtio-gpu \
 sh "$HERE/mkinitramfs.sh" "$D/amd64/root" "$ABI-amd64" /bin/busybox "$D/amd64/gpio-sim-oot.ko" \
     "$B/x86_64/tests" "$B/work/initrd-x86_64.cpio.gz" \
     bochs virtio_pci virtio_input uinput evdev configfs
-OPTIONAL_MODULES=drm_shmem_helper OPTIONAL_KO="$D/arm64/vkms.ko" \
+OPTIONAL_MODULES=drm_shmem_helper OPTIONAL_KO="$D/arm64/vkms.ko" CARD_MODULES=bochs \
 sh "$HERE/mkinitramfs.sh" "$D/arm64/root" "$ABI-arm64" "$D/arm64/busybox" "$D/arm64/gpio-sim-oot.ko" \
     "$B/aarch64/tests" "$B/work/initrd-aarch64.cpio.gz" \
     virtio_pci virtio-gpu virtio_input uinput evdev configfs

@@ -10,7 +10,12 @@ $(KT_BUILD)/$(1)/bin/%: tools/%/main.c $(KT_BUILD)/$(1)/libfixel.a $(KT_BUILD)/$
 	@mkdir -p $$(@D)
 	$(KT_CC_$(1)) $(KT_CFLAGS) $(KT_TOOL_FLAGS) $(KT_DEPFLAGS) $$< -o $$@ \
 	    $(KT_BUILD)/$(1)/obj/boards/memory/memfb.o $(KT_BUILD)/$(1)/libfixel.a $(KT_LDLIBS) -lpng16 -lz -lm
-kernel-guests: $(addprefix $(KT_BUILD)/$(1)/bin/,$(KT_TOOLS))
+kernel-guests: $(addprefix $(KT_BUILD)/$(1)/bin/,$(KT_TOOLS)) $(KT_BUILD)/$(1)/bin/fixel-calibrate
+# fixel-calibrate has its fit in a second file (guest/outputs.c runs it)
+$(KT_BUILD)/$(1)/bin/fixel-calibrate: tools/fixel-calibrate/main.c tools/fixel-calibrate/fit.c $(KT_BUILD)/$(1)/libfixel.a | $(KT_BUILD)/deps.stamp
+	@mkdir -p $$(@D)
+	$(KT_CC_$(1)) $(KT_CFLAGS) -D_GNU_SOURCE $(KT_DEPFLAGS) tools/fixel-calibrate/main.c tools/fixel-calibrate/fit.c -o $$@ \
+	    $(KT_BUILD)/$(1)/libfixel.a $(KT_LDLIBS)
 # guest/tools.c reads the screenshots back (libpng) and sends them zlib'd:
 # an explicit rule, so it replaces kernel.mk's pattern rule for this one.
 $(KT_BUILD)/$(1)/tests/tools: $(KT_DIR)/guest/tools.c $(KT_BUILD)/$(1)/libfixel.a $(KT_BUILD)/$(1)/obj/boards/memory/memfb.o $(wildcard $(KT_DIR)/guest/*.h) | $(KT_BUILD)/deps.stamp

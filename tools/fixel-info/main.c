@@ -14,6 +14,7 @@
 #include <unistd.h>
 #include <linux/fb.h>
 
+#include "fixel/cards.h"
 #include "fixel/display.h"
 #include "fixel/env.h"
 #include "fixel/input.h"
@@ -69,6 +70,79 @@ static void fourcc(uint32_t f, char out[5])
     out[4] = 0;
 }
 
+#ifdef FX_INFO_HAVE_OPT
+/* An enum property's current value by name ("DPMS", "panel orientation"),
+ * NULL when the object lacks it. */
+static const char *enum_prop(int fd, uint32_t obj, uint32_t type, const char *want, char *out, size_t n)
+{
+    const char *r = NULL;
+    drmModeObjectPropertiesPtr props = drmModeObjectGetProperties(fd, obj, type);
+    for (uint32_t k = 0; props && k < props->count_props && !r; k++) {
+        drmModePropertyPtr pr = drmModeGetProperty(fd, props->props[k]);
+        if (pr && !strcmp(pr->name, want) && (pr->flags & DRM_MODE_PROP_ENUM)) {
+            snprintf(out, n, "?%llu", (unsigned long long)props->prop_values[k]);
+            for (int e = 0; e < pr->count_enums; e++)
+                if (pr->enums[e].value == props->prop_values[k])
+                    snprintf(out, n, "%s", pr->enums[e].name);
+            r = out;
+        }
+        drmModeFreeProperty(pr);
+    }
+    drmModeFreeObjectProperties(props);
+    return r;
+}
+
+/* The monitor name descriptor (tag 0xFC) of the connector's EDID. */
+static const char *edid_name(int fd, uint32_t conn, char *out, size_t n)
+{
+    const char *r = NULL;
+    drmModeObjectPropertiesPtr props = drmModeObjectGetProperties(fd, conn, DRM_MODE_OBJECT_CONNECTOR);
+    for (uint32_t k = 0; props && k < props->count_props && !r; k++) {
+        drmModePropertyPtr pr = drmModeGetProperty(fd, props->props[k]);
+        if (pr && !strcmp(pr->name, "EDID") && (pr->flags & DRM_MODE_PROP_BLOB) && props->prop_values[k]) {
+            drmModePropertyBlobPtr b = drmModeGetPropertyBlob(fd, (uint32_t)props->prop_values[k]);
+            const unsigned char *e = b ? b->data : NULL;
+            for (int d = 54; e && b->length >= 128 && d <= 108 && !r; d += 18)
+                if (!e[d] && !e[d + 1] && !e[d + 2] && e[d + 3] == 0xFC) {
+                    size_t l = 0;
+                    while (l < 13 && e[d + 5 + l] != 0x0A && e[d + 5 + l] >= 32 && e[d + 5 + l] < 127)
+                        l++;
+                    snprintf(out, n, "%.*s", (int)l, (const char *)e + d + 5);
+                    r = out;
+                }
+            drmModeFreePropertyBlob(b);
+        }
+        drmModeFreeProperty(pr);
+    }
+    drmModeFreeObjectProperties(props);
+    return r;
+}
+
+/* A plane's type and rotation property ("rotate-0 rotate-180", or "none"). */
+static void plane_props(int fd, uint32_t plane, const char **type, char *rot, size_t n)
+{
+    static const char *const types[] = {"overlay", "primary", "cursor"};
+    *type = "?";
+    snprintf(rot, n, "none");
+    drmModeObjectPropertiesPtr props = drmModeObjectGetProperties(fd, plane, DRM_MODE_OBJECT_PLANE);
+    for (uint32_t k = 0; props && k < props->count_props; k++) {
+        drmModePropertyPtr pr = drmModeGetProperty(fd, props->props[k]);
+        if (pr && !strcmp(pr->name, "type") && props->prop_values[k] < 3)
+            *type = types[props->prop_values[k]];
+        if (pr && !strcmp(pr->name, "rotation") && (pr->flags & DRM_MODE_PROP_BITMASK)) {
+            size_t at = 0;
+            rot[0] = 0;
+            for (int e = 0; e < pr->count_enums && at + 1 < n; e++) {
+                int w = snprintf(rot + at, n - at, "%s%s", at ? "|" : "", pr->enums[e].name);
+                at += w > 0 ? (size_t)w : 0;
+            }
+        }
+        drmModeFreeProperty(pr);
+    }
+    drmModeFreeObjectProperties(props);
+}
+#endif
+
 static void drm_section(void)
 {
     char names[32][64];
@@ -76,9 +150,15 @@ static void drm_section(void)
     int n = list_nodes("/dev/dri", "card", names, 32);
     if (n == 0) { printf("  none found\n"); return; }
 #ifdef FX_INFO_HAVE_OPT
+    /* driver and by-path names as fixel matches them (FIXEL_DRM_DEVICE) */
+    static fx_card_desc cards[FX_CARDS_MAX];
+    int ncards = fx_drm_cards(cards, FX_CARDS_MAX);
     for (int i = 0; i < n; i++) {
         char path[128];
         snprintf(path, sizeof path, "/dev/dri/%.63s", names[i]);
+        const fx_card_desc *cd = NULL;
+        for (int k = 0; k < ncards; k++)
+            if (!strcmp(cards[k].path, path)) cd = &cards[k];
         int fd = open(path, O_RDWR | O_CLOEXEC);
         if (fd < 0) {
             display_denied |= errno == EACCES;
@@ -87,7 +167,10 @@ static void drm_section(void)
             continue;
         }
         drmVersionPtr v = drmGetVersion(fd);
-        printf("  %s: driver %s (%s)\n", path, v ? v->name : "?", v ? v->desc : "?");
+        printf("  %s: driver %s (%s), by-path %s\n", path, v ? v->name : "?", v ? v->desc : "?",
+               cd && cd->path_name[0] ? cd->path_name : "unknown");
+        if (v && cd && cd->path_name[0])
+            printf("    named by FIXEL_DRM_DEVICE=%s or %s or %s\n", v->name, cd->path_name, names[i]);
         if (v) drmFreeVersion(v);
         uint64_t dumb = 0;
         drmGetCap(fd, DRM_CAP_DUMB_BUFFER, &dumb);
@@ -100,9 +183,21 @@ static void drm_section(void)
             if (!con) continue;
             const char *st = con->connection == DRM_MODE_CONNECTED ? "connected"
                            : con->connection == DRM_MODE_DISCONNECTED ? "disconnected" : "unknown";
-            printf("    connector %u %s-%u: %s, %d modes\n", con->connector_id,
+            printf("    connector %u %s-%u: %s, %d modes", con->connector_id,
                    drmModeGetConnectorTypeName(con->connector_type) ? drmModeGetConnectorTypeName(con->connector_type) : "?",
                    con->connector_type_id, st, con->count_modes);
+            for (int m = 0; m < con->count_modes; m++)
+                if (con->modes[m].type & DRM_MODE_TYPE_PREFERRED) {
+                    printf(", preferred %ux%u@%u", con->modes[m].hdisplay, con->modes[m].vdisplay, con->modes[m].vrefresh);
+                    break;
+                }
+            char pv[64];
+            if (edid_name(fd, con->connector_id, pv, sizeof pv)) printf(", monitor \"%s\"", pv);
+            if (enum_prop(fd, con->connector_id, DRM_MODE_OBJECT_CONNECTOR, "DPMS", pv, sizeof pv))
+                printf(", DPMS %s", pv);
+            printf(", panel orientation %s\n",
+                   enum_prop(fd, con->connector_id, DRM_MODE_OBJECT_CONNECTOR, "panel orientation", pv, sizeof pv)
+                       ? pv : "not given");
             for (int m = 0; m < con->count_modes && m < 12; m++)
                 printf("      %s %ux%u@%u%s\n", con->modes[m].name, con->modes[m].hdisplay, con->modes[m].vdisplay,
                        con->modes[m].vrefresh, con->modes[m].type & DRM_MODE_TYPE_PREFERRED ? " preferred" : "");
@@ -120,7 +215,10 @@ static void drm_section(void)
         for (uint32_t p = 0; pr && p < pr->count_planes; p++) {
             drmModePlanePtr pl = drmModeGetPlane(fd, pr->planes[p]);
             if (!pl) continue;
-            printf("    plane %u: crtcs 0x%x, formats", pl->plane_id, pl->possible_crtcs);
+            const char *ptype;
+            char rot[160];
+            plane_props(fd, pl->plane_id, &ptype, rot, sizeof rot);
+            printf("    plane %u: %s, crtcs 0x%x, rotation %s, formats", pl->plane_id, ptype, pl->possible_crtcs, rot);
             for (uint32_t f = 0; f < pl->count_formats; f++) {
                 char cc[5];
                 fourcc(pl->formats[f], cc);
@@ -278,6 +376,17 @@ static int choice_section(void)
            in.connector[0] ? ", connector " : "", in.connector, in.width, in.height);
     if (in.refresh_mhz) printf("@%d.%03d", in.refresh_mhz / 1000, in.refresh_mhz % 1000);
     printf(", %s, %d buffer%s, rotation %d\n", fi ? fi->name : "?", in.buffers, in.buffers == 1 ? "" : "s", in.rotation);
+#ifdef FX_INFO_HAVE_OPT
+    if (in.backend == FX_BACKEND_DRM) {
+        static fx_card_desc cards[FX_CARDS_MAX];
+        int nc = fx_drm_cards(cards, FX_CARDS_MAX);
+        for (int k = 0; k < nc; k++)
+            if (!strcmp(cards[k].path, in.device))
+                printf("  card %s: driver %s, by-path %s; by name: FIXEL_CONNECTOR=%s:%s\n", cards[k].path,
+                       cards[k].driver[0] ? cards[k].driver : "?", cards[k].path_name[0] ? cards[k].path_name : "unknown",
+                       cards[k].path_name[0] ? cards[k].path_name : cards[k].path + 9, in.connector);
+    }
+#endif
     const char *forced = getenv("FIXEL_BACKEND");
     if (forced && *forced && strcasecmp(forced, "auto"))
         printf("  why: FIXEL_BACKEND=%s asks for it\n", forced);
@@ -290,6 +399,10 @@ static int choice_section(void)
         printf("  why: no usable DRM card or fbdev device here, so programs draw into memory (headless)\n");
     else if (in.backend == FX_BACKEND_FBDEV)
         printf("  why: no DRM card with a connected connector and dumb buffers; fbdev works\n");
+    else if (getenv("FIXEL_CONNECTOR") && *getenv("FIXEL_CONNECTOR"))
+        printf("  why: FIXEL_CONNECTOR=%s names it\n", getenv("FIXEL_CONNECTOR"));
+    else if (getenv("FIXEL_DRM_DEVICE") && *getenv("FIXEL_DRM_DEVICE"))
+        printf("  why: FIXEL_DRM_DEVICE=%s names the card, its first connected connector\n", getenv("FIXEL_DRM_DEVICE"));
     else
         printf("  why: a DRM card with a connected connector (preferred over fbdev)\n");
     fx_display_close(d);
@@ -301,7 +414,9 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             printf("usage: fixel-info\n"
-                   "Lists DRM cards (driver, connectors and modes, CRTCs, planes and formats), fbdev\n"
+                   "Lists DRM cards (driver, by-path name, connectors with status, modes, preferred\n"
+                   "mode, monitor name, DPMS and panel orientation, CRTCs, planes with rotations and\n"
+                   "formats), fbdev\n"
                    "devices and their pixel formats, input devices as fixel classifies them, GPIO\n"
                    "chips and lines, and the display fixel would open here and why.\n"
                    "Missing hardware prints \"none found\"; the exit status is 0 unless an option is\n"

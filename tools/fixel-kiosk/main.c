@@ -1209,7 +1209,15 @@ int main(int argc, char **argv)
         o.display.memory_w = sw ? sw : k->cfg.width ? k->cfg.width : 480;
         o.display.memory_h = sh ? sh : k->cfg.height ? k->cfg.height : 320;
     }
-    if (fx_app_options_from_env(&o) < 0 || fx_app_open(&k->app, &o) < 0) return 1;
+    if (fx_app_options_from_env(&o) < 0) return 1;
+    /* A kiosk booted before its screen is plugged in (or switched on) waits
+     * for it instead of drawing into memory; FIXEL_WAIT_DISPLAY=0 does not. */
+    const char *wd = getenv("FIXEL_WAIT_DISPLAY");
+    if (!k->headless && !(wd && !strcmp(wd, "0"))) {
+        int w = fx_display_wait_connected(&o.display, -1);
+        if (w < 0 && w != -FX_ENODEV) return 1;
+    }
+    if (fx_app_open(&k->app, &o) < 0) return 1;
     if (k->headless) {
         /* fx_app_open blocks SIGINT/SIGTERM/SIGHUP for its signalfd, which
          * only the main loop reads: the headless loop never does, so Ctrl-C

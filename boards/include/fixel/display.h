@@ -83,15 +83,18 @@ typedef struct fx_display_options {
      * drm_device / fb_device, else the first card with a connected
      * connector / /dev/fb0. */
     const char *device;
-    const char *drm_device; /* [env FIXEL_DRM_DEVICE] NULL */
+    const char *drm_device; /* [env FIXEL_DRM_DEVICE] NULL; a path or a card name (driver,
+                               by-path name, cardN: fixel/cards.h, docs/displays.md) */
     const char *fb_device;  /* [env FIXEL_FB_DEVICE] NULL */
-    const char *connector; /* [env FIXEL_CONNECTOR] DRM connector name ("HDMI-A-1"); NULL: first connected */
+    const char *connector; /* [env FIXEL_CONNECTOR] DRM connector name ("HDMI-A-1", searched on
+                              every card) or "CARD:NAME" ("vc4:HDMI-A-2"); NULL: first connected */
     const char *mode;      /* [env FIXEL_MODE] "WxH" or "WxH@Hz"; NULL: the preferred mode */
     fx_format format;      /* FX_FMT_XRGB8888 or FX_FMT_RGB565 for DRM (a plane lacking it gets the
                               other), the memory backend's format; FX_FMT_COUNT: drm_format */
     fx_format drm_format;  /* [env FIXEL_DRM_FORMAT=XRGB8888|RGB565] FX_FMT_COUNT: the board
                               profile's BOARD_DRM_FORMAT, else XRGB8888 unless the plane has only RGB565 */
-    int rotation;          /* [env FIXEL_ROTATION] 0, 90, 180, 270; -1: the board profile's or 0 */
+    int rotation;          /* [env FIXEL_ROTATION] 0, 90, 180, 270; -1: the DRM panel's "panel
+                              orientation", else the board profile's, else 0 */
     int sw_rotation;       /* [env FIXEL_SW_ROTATION=1] 1: rotate in software even where the DRM
                               plane has a rotation property; 0: the plane rotates when it can */
     int console;           /* 1: KD_GRAPHICS + keyboard off while open (default); 0: leave the VT alone */
@@ -112,6 +115,16 @@ void fx_display_options_init(fx_display_options *o);
 
 /* Open a display. On failure *out is NULL and the reason has been logged. */
 int fx_display_open(fx_display **out, const fx_display_options *o);
+/* Headless boot: block until the output o asks for (o->drm_device / device,
+ * o->connector, else any) has a connected connector with modes, logging one
+ * line when it has to wait; it wakes on DRM hotplug uevents and re-checks
+ * every 5 s for drivers that send none. timeout_ms < 0 waits for ever.
+ * Returns 0 when the output is there (or o asks for fbdev or memory), -FX_ENODEV
+ * at once when there is nothing to wait for (no KMS card and no output
+ * named), -FX_EACCES when the cards may not be opened, 1 on timeout. Call it
+ * before fx_display_open / fx_app_open (fixel-kiosk does by default). */
+int fx_display_wait_connected(const fx_display_options *o, int timeout_ms);
+
 /* Restore the console and CRTC, free everything. NULL is accepted. */
 void fx_display_close(fx_display *d);
 

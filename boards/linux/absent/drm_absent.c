@@ -3,10 +3,23 @@
  * toolchain without the target's libraries): the DRM backend reports
  * itself unavailable, so the automatic order goes on to fbdev and memory. */
 #include "../../display/display_int.h"
+#include "fixel/cards.h"
 #include "fixel/error.h"
 
 int fx_drm_open(fx_display *d)
 {
     fx_log(&d->log, FX_LOG_DEBUG, "drm: this build has no libdrm");
     return -FX_ENOTSUP;
+}
+
+int fx_display_wait_connected(const fx_display_options *o, int timeout_ms)
+{
+    (void)timeout_ms;
+    return o->backend == FX_BACKEND_DRM || o->backend == FX_BACKEND_AUTO ? -FX_ENODEV : 0;
+}
+
+int fx_drm_cards(fx_card_desc *out, int max)
+{
+    (void)out, (void)max;
+    return 0;
 }

@@ -166,8 +166,8 @@ static int try_double_buffer(struct fb_priv *p)
 int fx_fbdev_open(fx_display *d)
 {
     const char *path = d->opt.device;
-    if (path && !strstr(path, "fb"))
-        path = NULL; /* a /dev/dri/cardN device is for the DRM backend */
+    if (path && (path[0] != '/' || !strstr(path, "fb")))
+        path = NULL; /* a /dev/dri/cardN device or a card name is for the DRM backend */
     if (!path)
         path = d->opt.fb_device;
     if (!path || !*path)

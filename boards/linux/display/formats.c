@@ -121,6 +121,21 @@ uint32_t fx_plane_rotation_mask(const fx_prop_enum *e, int n)
     return mask;
 }
 
+int fx_panel_orientation_rotation(const char *name)
+{
+    /* The kernel's console turns "right side up" by DRM rotate-270 (counter-
+     * clockwise), i.e. 90 clockwise: the picture's top goes to the panel's
+     * right edge, which is the viewer's up. */
+    static const struct {
+        const char *name;
+        int rotation;
+    } map[] = {{"Normal", 0}, {"Upside Down", 180}, {"Left Side Up", 270}, {"Right Side Up", 90}};
+    for (size_t i = 0; name && i < sizeof map / sizeof map[0]; i++)
+        if (!strcmp(name, map[i].name))
+            return map[i].rotation;
+    return -1;
+}
+
 uint32_t fx_plane_rotation_bit(int rotation)
 {
     /* fixel turns the picture clockwise; DRM's rotate-N is counter-clockwise. */

@@ -8,6 +8,7 @@
 #endif
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <poll.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,6 +18,7 @@
 #include <sys/mman.h>
 #include <sys/socket.h>
 #include <linux/netlink.h>
+#include <stdint.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -25,6 +27,7 @@
 #include <xf86drmMode.h>
 
 #include "../../display/display_int.h"
+#include "fixel/cards.h"
 #include "fixel/error.h"
 
 struct drm_buf {
@@ -64,30 +67,6 @@ static int neg_errno(void)
 }
 
 /* ---- choosing card, connector, mode, CRTC ------------------------------- */
-
-static void connector_name(const drmModeConnector *c, char *out, size_t n)
-{
-    const char *t = drmModeGetConnectorTypeName(c->connector_type);
-    snprintf(out, n, "%s-%u", t ? t : "Unknown", c->connector_type_id);
-}
-
-static drmModeConnectorPtr pick_connector(fx_display *d, int fd, drmModeResPtr res, const char *want)
-{
-    for (int i = 0; i < res->count_connectors; i++) {
-        drmModeConnectorPtr c = drmModeGetConnector(fd, res->connectors[i]);
-        if (!c)
-            continue;
-        char name[32];
-        connector_name(c, name, sizeof name);
-        int ok = want ? !strcmp(name, want) : c->connection == DRM_MODE_CONNECTED && c->count_modes > 0;
-        if (ok && c->count_modes > 0) {
-            snprintf(d->connector, sizeof d->connector, "%s", name);
-            return c;
-        }
-        drmModeFreeConnector(c);
-    }
-    return NULL;
-}
 
 static int pick_mode(fx_display *d, drmModeConnectorPtr c, drmModeModeInfo *out)
 {
@@ -209,6 +188,40 @@ static void probe_plane(int fd, int ci, struct plane_info *pi)
         drmModeFreePlane(p);
     }
     drmModeFreePlaneResources(pr);
+}
+
+/* A panel mounted turned (DSI panels in portrait, tablets) says so in its
+ * connector's "panel orientation" property, from the panel driver, the
+ * device tree's rotation or video=<connector>:panel_orientation=...; unless
+ * the program or FIXEL_ROTATION asked for a rotation, show it upright. */
+static void panel_orientation(fx_display *d, int fd, uint32_t conn)
+{
+    drmModeObjectPropertiesPtr props = drmModeObjectGetProperties(fd, conn, DRM_MODE_OBJECT_CONNECTOR);
+    for (uint32_t k = 0; props && k < props->count_props; k++) {
+        drmModePropertyPtr pr = drmModeGetProperty(fd, props->props[k]);
+        if (pr && !strcmp(pr->name, "panel orientation") && (pr->flags & DRM_MODE_PROP_ENUM)) {
+            for (int e = 0; e < pr->count_enums; e++) {
+                if (pr->enums[e].value != props->prop_values[k])
+                    continue;
+                int rot = fx_panel_orientation_rotation(pr->enums[e].name);
+                if (rot < 0)
+                    break;
+                if (d->rotation_asked) {
+                    if (rot != d->opt.rotation)
+                        fx_log(&d->log, FX_LOG_INFO, "%s: panel orientation \"%s\" would be rotation %d; "
+                               "rotation %d was asked for", d->connector, pr->enums[e].name, rot,
+                               d->opt.rotation);
+                } else {
+                    if (rot != d->opt.rotation)
+                        fx_log(&d->log, FX_LOG_INFO, "%s: panel orientation \"%s\": rotation %d "
+                               "(FIXEL_ROTATION overrides)", d->connector, pr->enums[e].name, rot);
+                    d->opt.rotation = d->sw_rotation = rot;
+                }
+            }
+        }
+        drmModeFreeProperty(pr);
+    }
+    drmModeFreeObjectProperties(props);
 }
 
 /* ---- buffers ------------------------------------------------------------ */
@@ -558,20 +571,6 @@ static const struct fx_backend_ops drm_ops = {drm_show, drm_wait, drm_dispatch, 
 
 /* ---- open --------------------------------------------------------------- */
 
-static int card_has_connected(int fd)
-{
-    drmModeResPtr res = drmModeGetResources(fd);
-    int found = 0;
-    for (int i = 0; res && i < res->count_connectors && !found; i++) {
-        drmModeConnectorPtr c = drmModeGetConnector(fd, res->connectors[i]);
-        if (c && c->connection == DRM_MODE_CONNECTED && c->count_modes > 0)
-            found = 1;
-        drmModeFreeConnector(c);
-    }
-    drmModeFreeResources(res);
-    return found;
-}
-
 static int open_card(fx_display *d, const char *path, int quiet_enoent)
 {
     int fd = open(path, O_RDWR | O_CLOEXEC);
@@ -591,46 +590,116 @@ static int open_card(fx_display *d, const char *path, int quiet_enoent)
     return fd;
 }
 
-static int find_card(fx_display *d, int *fd_out)
+/* A device given as a path: /dev/dri/cardN itself or a link to it (the
+ * udev by-path links). Other paths are opened only to report why not. */
+static int path_to_card(fx_display *d, const char *path, char *spec, size_t n)
+{
+    char real[PATH_MAX];
+    const char *base;
+    if (realpath(path, real) && !strncmp(real, "/dev/dri/card", 13) && (base = strrchr(real, '/'))) {
+        snprintf(spec, n, "%s", base + 1);
+        return 0;
+    }
+    snprintf(d->device, sizeof d->device, "%s", path); /* named in errors */
+    int fd = open_card(d, path, 0);
+    if (fd < 0)
+        return fd;
+    close(fd);
+    fx_log(&d->log, FX_LOG_ERROR, "%.200s is not a DRM card (/dev/dri/cardN or a link to one)", path);
+    return -FX_ENODEV;
+}
+
+static void list_cards(const fx_card_desc *c, int n, char *out, size_t len)
+{
+    size_t at = 0;
+    out[0] = 0;
+    for (int i = 0; i < n && at < len; i++) {
+        int k = snprintf(out + at, len - at, "%s%s %s %s", i ? ", " : "", c[i].path + 9,
+                         c[i].driver[0] ? c[i].driver : "?", c[i].path_name[0] ? c[i].path_name : "-");
+        if (k < 0)
+            break;
+        at += (size_t)k;
+    }
+    if (!n)
+        snprintf(out, len, "none");
+}
+
+/* Enumerate every card, choose the output by name (fixel/cards.h), open
+ * the chosen card. */
+static int find_card(fx_display *d, int *fd_out, uint32_t *conn_id)
 {
     const char *want = d->opt.device;
-    if (want && !strstr(want, "/dri/"))
+    if (want && (!*want || (want[0] == '/' && !strstr(want, "/dri/"))))
         want = NULL; /* a /dev/fbN device is for the fbdev backend */
     if (!want)
         want = d->opt.drm_device;
-    if (want && *want) {
-        snprintf(d->device, sizeof d->device, "%s", want); /* named in errors */
-        int fd = open_card(d, want, 0);
-        if (fd < 0)
-            return fd;
-        snprintf(d->device, sizeof d->device, "%s", want);
-        *fd_out = fd;
-        return 0;
+    if (want && !*want)
+        want = NULL;
+    const char *cwant = d->opt.connector && *d->opt.connector ? d->opt.connector : NULL;
+    char spec[64];
+    if (want && want[0] == '/') {
+        int r = path_to_card(d, want, spec, sizeof spec);
+        if (r < 0)
+            return r;
+        want = spec;
     }
-    int err = -FX_ENODEV;
-    for (int i = 0; i < 16; i++) {
-        char path[32];
-        snprintf(path, sizeof path, "/dev/dri/card%d", i);
-        int fd = open_card(d, path, 1);
-        if (fd < 0) {
-            if (fd != -ENOENT)
-                err = fd;
-            continue;
+    fx_card_desc cards[FX_CARDS_MAX];
+    int n = fx_drm_cards(cards, FX_CARDS_MAX), ci = -1, ki = -1;
+    fx_card_pick pk = fx_card_pick_output(cards, n, want, cwant, &ci, &ki);
+    if (pk != FX_PICK_OK) {
+        /* A card we may not open explains it best (the group to join). */
+        int err = 0;
+        for (int i = 0; i < n; i++) {
+            int e = cards[i].error;
+            if (!e || (want && !fx_card_matches(&cards[i], want)))
+                continue;
+            if (e == -EACCES || e == -EPERM)
+                fx_log_access_hint(&d->log, cards[i].path);
+            else if (want)
+                fx_log(&d->log, FX_LOG_ERROR, "%s: %s", cards[i].path, strerror(-e));
+            if (!err || e == -EACCES || e == -EPERM)
+                err = e;
         }
-        if (card_has_connected(fd)) {
-            snprintf(d->device, sizeof d->device, "%s", path);
-            *fd_out = fd;
-            return 0;
-        }
-        close(fd);
+        char names[512];
+        list_cards(cards, n, names, sizeof names);
+        snprintf(d->device, sizeof d->device, "%s", want ? want : "/dev/dri");
+        if (err && pk != FX_PICK_DISCONNECTED)
+            return err;
+        if (pk == FX_PICK_NO_CARD)
+            fx_log(&d->log, FX_LOG_ERROR, "no DRM card named %s%s%s (cards: %s)", want ? want : "",
+                   want && cwant && strchr(cwant, ':') ? " with " : "",
+                   want && cwant && strchr(cwant, ':') ? cwant : (!want && cwant ? cwant : ""), names);
+        else if (pk == FX_PICK_NO_CONNECTOR)
+            fx_log(&d->log, FX_LOG_ERROR, "no connector named %s on %s (cards: %s)", cwant,
+                   want ? want : "any DRM card", names);
+        else if (pk == FX_PICK_DISCONNECTED)
+            fx_log(&d->log, FX_LOG_ERROR, "%s: connector %s is disconnected (no modes)", cards[ci].path,
+                   cards[ci].conn[ki].name);
+        else if (want || n)
+            fx_log(&d->log, want ? FX_LOG_ERROR : FX_LOG_DEBUG, "%s: no connected connector (cards: %s)",
+                   want ? want : "DRM", names);
+        return -FX_ENODEV;
     }
-    return err;
+    snprintf(d->device, sizeof d->device, "%s", cards[ci].path);
+    snprintf(d->connector, sizeof d->connector, "%s", cards[ci].conn[ki].name);
+    int fd = open_card(d, cards[ci].path, 0);
+    if (fd < 0)
+        return fd;
+    if (want || cwant)
+        fx_log(&d->log, FX_LOG_DEBUG, "%s%s%s%s chose %s (%s, %s) connector %s", want ? "card " : "",
+               want ? want : "", want && cwant ? ", " : "", cwant ? cwant : "", cards[ci].path,
+               cards[ci].driver, cards[ci].path_name[0] ? cards[ci].path_name : "no by-path name",
+               d->connector);
+    *conn_id = cards[ci].conn[ki].id;
+    *fd_out = fd;
+    return 0;
 }
 
 int fx_drm_open(fx_display *d)
 {
     int fd = -1, r, ci = 0;
-    r = find_card(d, &fd);
+    uint32_t conn_id = 0;
+    r = find_card(d, &fd, &conn_id);
     if (r < 0)
         return r;
 
@@ -670,17 +739,15 @@ int fx_drm_open(fx_display *d)
         fx_log(&d->log, FX_LOG_ERROR, "%s: cannot read KMS resources: %s", d->device, strerror(errno));
         return neg_errno();
     }
-    const char *want = d->opt.connector;
-    if (want && !*want)
-        want = NULL;
-    drmModeConnectorPtr c = pick_connector(d, fd, res, want);
-    if (!c) {
-        fx_log(&d->log, FX_LOG_ERROR, "%s: %s%s", d->device,
-                       want ? "no connector named " : "no connected connector", want ? want : "");
+    drmModeConnectorPtr c = drmModeGetConnector(fd, conn_id);
+    if (!c || c->count_modes <= 0) {
+        fx_log(&d->log, FX_LOG_ERROR, "%s: connector %s went away", d->device, d->connector);
+        drmModeFreeConnector(c);
         drmModeFreeResources(res);
         return -FX_ENODEV;
     }
     p->conn_id = c->connector_id;
+    panel_orientation(d, fd, c->connector_id);
     r = pick_mode(d, c, &p->mode);
     if (r == 0) {
         p->crtc_id = pick_crtc(fd, res, c, &ci);
@@ -798,4 +865,103 @@ int fx_drm_open(fx_display *d)
     if (frame > 0) /* clock is in kHz */
         d->info.refresh_mhz = (int32_t)((int64_t)p->mode.clock * 1000000 / frame);
     return 0;
+}
+
+/* ---- waiting for a display (headless boot) ------------------------------- */
+
+static int uevent_socket(void)
+{
+    int fd = socket(AF_NETLINK, SOCK_DGRAM | SOCK_CLOEXEC | SOCK_NONBLOCK, NETLINK_KOBJECT_UEVENT);
+    struct sockaddr_nl a = {.nl_family = AF_NETLINK, .nl_groups = 1};
+    if (fd >= 0 && bind(fd, (struct sockaddr *)&a, sizeof a) < 0) {
+        close(fd);
+        fd = -1;
+    }
+    return fd;
+}
+
+/* 1 when a drm uevent was among those queued (all are read). */
+static int drain_drm_uevents(int fd)
+{
+    char buf[4096];
+    ssize_t n;
+    int drm = 0;
+    while ((n = recv(fd, buf, sizeof buf - 1, 0)) > 0) {
+        buf[n] = 0;
+        for (char *k = buf; k < buf + n; k += strlen(k) + 1)
+            drm |= !strcmp(k, "SUBSYSTEM=drm");
+    }
+    return drm;
+}
+
+int fx_display_wait_connected(const fx_display_options *o, int timeout_ms)
+{
+    if (o->backend == FX_BACKEND_FBDEV || o->backend == FX_BACKEND_MEMORY)
+        return 0;
+    fx_logger l = {o->log ? o->log : fx_log_stderr, o->log_user, o->log_priority ? o->log_priority : FX_LOG_INFO};
+    const char *want = o->device;
+    if (want && (!*want || (want[0] == '/' && !strstr(want, "/dri/"))))
+        want = NULL;
+    if (!want)
+        want = o->drm_device && *o->drm_device ? o->drm_device : NULL;
+    char spec[64], real[PATH_MAX];
+    const char *base;
+    if (want && want[0] == '/' && realpath(want, real) && (base = strrchr(real, '/'))) {
+        snprintf(spec, sizeof spec, "%s", base + 1);
+        want = spec;
+    }
+    const char *cwant = o->connector && *o->connector ? o->connector : NULL;
+    int ufd = uevent_socket(); /* before the first look: no event slips between */
+    int64_t end = timeout_ms < 0 ? INT64_MAX : now_ms() + timeout_ms;
+    int waited = 0, r;
+    for (;;) {
+        fx_card_desc cards[FX_CARDS_MAX];
+        int n = fx_drm_cards(cards, FX_CARDS_MAX), ci, ki, kms = 0, denied = 0;
+        for (int i = 0; i < n; i++) {
+            kms += !cards[i].error;
+            denied += cards[i].error == -EACCES || cards[i].error == -EPERM;
+        }
+        if (fx_card_pick_output(cards, n, want, cwant, &ci, &ki) == FX_PICK_OK) {
+            if (waited)
+                fx_log(&l, FX_LOG_INFO, "display connected: %s %s", cards[ci].path, cards[ci].conn[ki].name);
+            r = 0;
+            break;
+        }
+        if (denied && !kms) {
+            fx_log_access_hint(&l, cards[0].path);
+            r = -FX_EACCES;
+            break;
+        }
+        if (!kms && !want && !cwant) {
+            r = -FX_ENODEV; /* no KMS card: fbdev or memory is the display */
+            break;
+        }
+        if (!waited)
+            fx_log(&l, FX_LOG_INFO, "no display connected%s%s%s%s; waiting for one", want ? " on " : "",
+                   want ? want : "", cwant ? " at " : "", cwant ? cwant : "");
+        waited = 1;
+        int64_t left = end - now_ms();
+        if (left <= 0) {
+            r = 1; /* timed out: still none */
+            break;
+        }
+        /* uevents, else a look every 5 s (drivers without hotplug interrupts) */
+        int64_t slice = left < 5000 ? left : 5000;
+        int64_t until = now_ms() + slice;
+        int drm = 0;
+        while (!drm && now_ms() < until) {
+            struct pollfd p = {.fd = ufd, .events = POLLIN};
+            int64_t w = until - now_ms();
+            if (ufd < 0) {
+                struct timespec ts = {(time_t)(w / 1000), (long)(w % 1000) * 1000000L};
+                nanosleep(&ts, NULL);
+                break;
+            }
+            if (poll(&p, 1, (int)(w > 0 ? w : 0)) > 0)
+                drm = drain_drm_uevents(ufd);
+        }
+    }
+    if (ufd >= 0)
+        close(ufd);
+    return r;
 }

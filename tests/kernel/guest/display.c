@@ -43,20 +43,7 @@ static void opts(fx_display_options *o, fx_backend b, fx_present_mode pm, int ro
     o->log_priority = FX_LOG_DEBUG;
 }
 
-/* Run fn in a child; returns its wait status. */
-static int in_child(void (*fn)(void *), void *arg)
-{
-    fflush(stdout);
-    pid_t pid = fork();
-    if (pid == 0) {
-        fn(arg);
-        fflush(stdout);
-        _exit(guest_failed);
-    }
-    int st = 0;
-    waitpid(pid, &st, 0);
-    return st;
-}
+#define in_child guest_in_child
 
 static int screen(const char *name, fx_display *d, const char *spec)
 {

@@ -8,9 +8,11 @@
 #include <fcntl.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
+#include <sys/wait.h>
 
 #include "fixel/display.h"
 #include "fixel/env.h"
@@ -128,6 +130,77 @@ static int read_line(const char *path, char *buf, size_t n)
     int r = read_file(path, buf, n);
     buf[strcspn(buf, "\n")] = 0;
     return r;
+}
+
+
+/* Run fn in a forked child (DRM master, console state and crashes stay
+ * there); returns its wait status. */
+static int guest_in_child(void (*fn)(void *), void *arg) __attribute__((unused));
+static int guest_in_child(void (*fn)(void *), void *arg)
+{
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0) {
+        fn(arg);
+        fflush(stdout);
+        _exit(guest_failed);
+    }
+    int st = 0;
+    waitpid(pid, &st, 0);
+    return st;
+}
+
+/* The whole line of text containing needle (copied into line), or NULL. */
+static const char *guest_line_with(const char *text, const char *needle, char *line, size_t n)
+    __attribute__((unused));
+static const char *guest_line_with(const char *text, const char *needle, char *line, size_t n)
+{
+    const char *p = strstr(text, needle);
+    if (!p)
+        return NULL;
+    while (p > text && p[-1] != '\n')
+        p--;
+    size_t l = strcspn(p, "\n");
+    snprintf(line, n, "%.*s", (int)(l < n ? l : n - 1), p);
+    return p;
+}
+
+/* insmod every module a list (/modules.optional, /modules.cards) names,
+ * in order, skipping those already loaded (a helper two lists share);
+ * detail lists what was loaded, "(failed)" after a refusal. Returns how
+ * many were loaded, -1 without the list. */
+static int guest_load_modules(const char *list, char *detail, size_t n) __attribute__((unused));
+static int guest_load_modules(const char *list, char *detail, size_t n)
+{
+    FILE *f = fopen(list, "r");
+    char line[200], cmd[300], mod[200], sys[240];
+    int loaded = 0;
+    detail[0] = 0;
+    if (!f) {
+        snprintf(detail, n, "no %s", list);
+        return -1;
+    }
+    while (fgets(line, sizeof line, f)) {
+        line[strcspn(line, "\n")] = 0;
+        if (!*line)
+            continue;
+        const char *b = strrchr(line, '/');
+        snprintf(mod, sizeof mod, "%s", b ? b + 1 : line);
+        mod[strcspn(mod, ".")] = 0;
+        for (char *q = mod; *q; q++)
+            if (*q == '-')
+                *q = '_';
+        snprintf(sys, sizeof sys, "/sys/module/%s", mod);
+        if (access(sys, F_OK) == 0)
+            continue;
+        snprintf(cmd, sizeof cmd, "insmod /lib/modules/%s 2>&1", line);
+        int st = system(cmd);
+        size_t l = strlen(detail);
+        snprintf(detail + l, n - l, "%s%s%s", l ? " " : "", line, st == 0 ? "" : "(failed)");
+        loaded += st == 0;
+    }
+    fclose(f);
+    return loaded;
 }
 
 #endif

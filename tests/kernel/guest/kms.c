@@ -33,6 +33,7 @@
 #include "fixel/display.h"
 #include "fixel/error.h"
 #include "guest.h"
+#include "guest_drm.h"
 
 static void opts(fx_display_options *o, const char *device, int rotation)
 {
@@ -104,20 +105,7 @@ static void plane_facts(const char *dev, struct plane_facts *pf)
     close(fd);
 }
 
-static const char *driver_name(const char *dev, char *out, size_t n)
-{
-    snprintf(out, n, "?");
-    int fd = open(dev, O_RDWR | O_CLOEXEC);
-    if (fd < 0)
-        return out;
-    drmVersionPtr v = drmGetVersion(fd);
-    if (v) {
-        snprintf(out, n, "%s", v->name);
-        drmFreeVersion(v);
-    }
-    close(fd);
-    return out;
-}
+#define driver_name guest_drm_driver
 
 /* ---- plane rotation vs software ------------------------------------------ */
 
@@ -356,26 +344,7 @@ static int crc_of(const char *dev, const char *crcdir, fx_format f, int variant,
 
 static int load_optional_modules(char *detail, size_t n)
 {
-    FILE *f = fopen("/modules.optional", "r");
-    char line[200], cmd[300];
-    int loaded = 0;
-    detail[0] = 0;
-    if (!f) {
-        snprintf(detail, n, "no /modules.optional");
-        return -1;
-    }
-    while (fgets(line, sizeof line, f)) {
-        line[strcspn(line, "\n")] = 0;
-        if (!*line)
-            continue;
-        snprintf(cmd, sizeof cmd, "insmod /lib/modules/%s 2>&1", line);
-        int st = system(cmd);
-        size_t l = strlen(detail);
-        snprintf(detail + l, n - l, "%s%s%s", l ? " " : "", line, st == 0 ? "" : "(failed)");
-        loaded += st == 0;
-    }
-    fclose(f);
-    return loaded;
+    return guest_load_modules("/modules.optional", detail, n);
 }
 
 static void vkms_checks(void)

@@ -85,18 +85,7 @@ static int run(int who, const char *env, const char *const *argv)
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
-/* The whole line of text containing needle (copied into line), or NULL. */
-static const char *line_with(const char *text, const char *needle, char *line, size_t n)
-{
-    const char *p = strstr(text, needle);
-    if (!p)
-        return NULL;
-    while (p > text && p[-1] != '\n')
-        p--;
-    size_t l = strcspn(p, "\n");
-    snprintf(line, n, "%.*s", (int)(l < n ? l : n - 1), p);
-    return p;
-}
+#define line_with guest_line_with
 
 /* Names in dir matching prefix followed by a digit, in readdir order. */
 static int list(const char *dir, const char *prefix, char names[][64], int max)
