@@ -5,6 +5,7 @@
  * fixel/glcore.h for the rules. Integer only, freestanding. */
 #include "fixel/fill.h"
 #include "fixel/glcore.h"
+#include "../base/fx_internal.h"
 
 static inline int64_t floordiv(int64_t a, int64_t b) /* b > 0 */
 {
@@ -360,6 +361,51 @@ static inline void persp_weights(const uint64_t *val, int kq, int64_t *w1, int64
     l2 = l2 < 0 ? 0 : l2 > FX16_ONE - l1 ? FX16_ONE - l1 : l2;
     *w1 = l1, *w2 = l2;
 }
+/* The depth comparison with the function as a constant where the caller
+ * passes one (the span loops below are specialised per function, so the
+ * switch of depth_pass leaves the per-pixel path); -1: t's function. */
+static inline __attribute__((always_inline)) int depth_cmp(const fx_gl_target *t, int func,
+                                                           uint32_t z, uint32_t d)
+{
+    switch (func) {
+    case FX_GL_DEPTH_LESS: return z < d;
+    case FX_GL_DEPTH_LEQUAL: return z <= d;
+    default: return depth_pass(t, z, d);
+    }
+}
+
+/* One span of a perspective-correct Gouraud triangle on the plain target
+ * with the depth test: the general loop of persp_triangle with the
+ * attributes in registers, the depth function fixed, no alpha (the XRGB
+ * store drops it) and no colour clamp: with both weights in [0, 1] and
+ * their sum <= 1 (persp_weights clamps them so) every level is a convex
+ * combination of the vertex levels, in [0, 255 * 2^16] after rounding, so
+ * the clamps of the general loop never change a value. Same bits. */
+static inline __attribute__((always_inline)) void
+persp_span_plain(const fx_gl_target *t, int func, uint32_t *prow, uint32_t *drow, int32_t x0,
+                 int32_t x1, const uint64_t val[4], const uint64_t g[4], const int64_t c0h[3],
+                 const int64_t d1[3], const int64_t d2[3])
+{
+    uint64_t vz = val[0], vq = val[1], v1 = val[2], v2 = val[3];
+    const uint64_t gz = g[0], gq = g[1], g1 = g[2], g2 = g[3];
+    const int dw = t->depth_write;
+    for (int32_t x = x0; x < x1; x++, vz += gz, vq += gq, v1 += g1, v2 += g2) {
+        int32_t zz = fx_tri_attr_round(vz);
+        uint32_t z = zz < 0 ? 0 : zz > 0xFFFFFF ? 0xFFFFFF : (uint32_t)zz;
+        if (!depth_cmp(t, func, z, drow[x]))
+            continue;
+        if (dw)
+            drow[x] = z;
+        uint64_t q3[3] = {vq, v1, v2};
+        int64_t l1, l2;
+        persp_weights(q3, 0, &l1, &l2);
+        uint32_t r = (uint32_t)((c0h[0] + ((l1 * d1[0] + l2 * d2[0] + 0x8000) >> 16)) >> 16);
+        uint32_t gg = (uint32_t)((c0h[1] + ((l1 * d1[1] + l2 * d2[1] + 0x8000) >> 16)) >> 16);
+        uint32_t b = (uint32_t)((c0h[2] + ((l1 * d1[2] + l2 * d2[2] + 0x8000) >> 16)) >> 16);
+        prow[x] = (r << 16) | (gg << 8) | b;
+    }
+}
+
 /* Perspective-correct colours and texture coordinates: the attributes
  * interpolated in window space are 1/w (q, normalised to 2^22 at the
  * nearest vertex, which keeps sliver triangles' gradients in range) and the
@@ -414,6 +460,27 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
             cf[k] = level(flat[k]);
     int plain = plain_target(t);
     fx_tri_span sp;
+    if (plain && use_z && use_c && !use_t) {
+        int64_t c0h[3] = {c0[0] + 0x8000, c0[1] + 0x8000, c0[2] + 0x8000};
+        int func = t->depth_func == FX_GL_DEPTH_LESS     ? FX_GL_DEPTH_LESS
+                   : t->depth_func == FX_GL_DEPTH_LEQUAL ? FX_GL_DEPTH_LEQUAL
+                                                         : -1;
+        while (fx_tri_next_span(&tri, &sp)) {
+            uint64_t val[4];
+            for (int k = 0; k < 4; k++)
+                val[k] = fx_tri_attr_at(&tri, k, sp.x0, sp.y);
+            int32_t row = t->surf.h - 1 - sp.y;
+            uint32_t *prow = (uint32_t *)(t->surf.pixels + (intptr_t)row * t->surf.stride);
+            uint32_t *drow = t->depth + (size_t)row * (size_t)t->surf.w;
+            if (func == FX_GL_DEPTH_LESS)
+                persp_span_plain(t, FX_GL_DEPTH_LESS, prow, drow, sp.x0, sp.x1, val, tri.gx, c0h, d1, d2);
+            else if (func == FX_GL_DEPTH_LEQUAL)
+                persp_span_plain(t, FX_GL_DEPTH_LEQUAL, prow, drow, sp.x0, sp.x1, val, tri.gx, c0h, d1, d2);
+            else
+                persp_span_plain(t, -1, prow, drow, sp.x0, sp.x1, val, tri.gx, c0h, d1, d2);
+        }
+        return;
+    }
     while (fx_tri_next_span(&tri, &sp)) {
         uint64_t val[4];
         for (int k = 0; k < na; k++)
@@ -549,10 +616,16 @@ void fx_gl_clear(fx_gl_target *t, fx_rect r, fx_color c, int color, uint32_t dep
     fx_rect sr = {r.x0, t->surf.h - r.y1, r.x1, t->surf.h - r.y0};
     if (color)
         fx_rect_fill_native(&t->surf, sr, fx_pack(t->surf.format, c));
-    if (depth_on && t->depth)
-        for (int32_t y = sr.y0; y < sr.y1; y++)
-            for (int32_t x = sr.x0; x < sr.x1; x++)
-                t->depth[(size_t)y * (size_t)t->surf.w + (size_t)x] = depth;
+    /* the colour's solid runs for the depth rows too: a whole-width clear
+     * (every frame's glClear) is one run over the buffer */
+    if (depth_on && t->depth) {
+        size_t w = (size_t)t->surf.w;
+        if (sr.x0 == 0 && sr.x1 == t->surf.w && (size_t)(sr.y1 - sr.y0) * w <= INT32_MAX)
+            fx_run32(t->depth + (size_t)sr.y0 * w, (int32_t)((size_t)(sr.y1 - sr.y0) * w), depth);
+        else
+            for (int32_t y = sr.y0; y < sr.y1; y++)
+                fx_run32(t->depth + (size_t)y * w + (size_t)sr.x0, sr.x1 - sr.x0, depth);
+    }
 }
 
 /* ---- clipping ---- */
