@@ -6,6 +6,7 @@
 #include "fixel/fill.h"
 #include "fixel/glcore.h"
 #include "../base/fx_internal.h"
+#include "../fill/tri_walk.h"
 
 static inline int64_t floordiv(int64_t a, int64_t b) /* b > 0 */
 {
@@ -377,28 +378,48 @@ static inline __attribute__((always_inline)) int depth_cmp(const fx_gl_target *t
 /* One span of a perspective-correct Gouraud triangle on the plain target
  * with the depth test: the general loop of persp_triangle with the
  * attributes in registers, the depth function fixed, no alpha (the XRGB
- * store drops it) and no colour clamp: with both weights in [0, 1] and
- * their sum <= 1 (persp_weights clamps them so) every level is a convex
- * combination of the vertex levels, in [0, 255 * 2^16] after rounding, so
- * the clamps of the general loop never change a value. Same bits. */
+ * store drops it), and what cannot change a value left out (same bits):
+ *  - no colour clamp: with both weights in [0, 1] and their sum <= 1
+ *    every level is a convex combination of the vertex levels, in
+ *    [0, 255 * 2^16] after rounding;
+ *  - persp_weights inline for q >= 2^31 (always, inside the triangle: q is
+ *    at least 2^32 there), where its guards on q and the shift are idle,
+ *    and without the clamp of l1 to [0, 1]: L1 <= Q makes
+ *    (L1 >> sh) * inv <= (Q >> sh) * (2^62 / (Q >> sh)) <= 2^62;
+ *  - the depth's rounding bias added once, the clamp as a rare branch.
+ * (Two passes, the depth tests first and then the colours of the pixels
+ * that passed, ran slower here: the spans are a few pixels long.) */
 static inline __attribute__((always_inline)) void
 persp_span_plain(const fx_gl_target *t, int func, uint32_t *prow, uint32_t *drow, int32_t x0,
                  int32_t x1, const uint64_t val[4], const uint64_t g[4], const int64_t c0h[3],
                  const int64_t d1[3], const int64_t d2[3])
 {
-    uint64_t vz = val[0], vq = val[1], v1 = val[2], v2 = val[3];
+    uint64_t vz = val[0] + 0x80000000u, vq = val[1], v1 = val[2], v2 = val[3];
     const uint64_t gz = g[0], gq = g[1], g1 = g[2], g2 = g[3];
     const int dw = t->depth_write;
     for (int32_t x = x0; x < x1; x++, vz += gz, vq += gq, v1 += g1, v2 += g2) {
-        int32_t zz = fx_tri_attr_round(vz);
-        uint32_t z = zz < 0 ? 0 : zz > 0xFFFFFF ? 0xFFFFFF : (uint32_t)zz;
+        int32_t zz = (int32_t)((int64_t)vz >> 32); /* fx_tri_attr_round */
+        uint32_t z = (uint32_t)zz;
+        if (__builtin_expect(z > 0xFFFFFF, 0))
+            z = zz < 0 ? 0 : 0xFFFFFF;
         if (!depth_cmp(t, func, z, drow[x]))
             continue;
         if (dw)
             drow[x] = z;
-        uint64_t q3[3] = {vq, v1, v2};
-        int64_t l1, l2;
-        persp_weights(q3, 0, &l1, &l2);
+        int64_t l1, l2, Qv = (int64_t)vq;
+        if (__builtin_expect(Qv >= ((int64_t)1 << 31), 1)) {
+            int sh = 33 - __builtin_clzll((uint64_t)Qv);
+            uint64_t inv = ((uint64_t)1 << 62) / ((uint64_t)Qv >> sh);
+            int64_t L1 = (int64_t)v1, L2 = (int64_t)v2;
+            L1 = L1 < 0 ? 0 : L1 > Qv ? Qv : L1;
+            L2 = L2 < 0 ? 0 : L2 > Qv ? Qv : L2;
+            l1 = (int64_t)((((uint64_t)L1 >> sh) * inv) >> 46);
+            l2 = (int64_t)((((uint64_t)L2 >> sh) * inv) >> 46);
+            l2 = l2 > FX16_ONE - l1 ? FX16_ONE - l1 : l2;
+        } else {
+            uint64_t q3[3] = {vq, v1, v2};
+            persp_weights(q3, 0, &l1, &l2);
+        }
         uint32_t r = (uint32_t)((c0h[0] + ((l1 * d1[0] + l2 * d2[0] + 0x8000) >> 16)) >> 16);
         uint32_t gg = (uint32_t)((c0h[1] + ((l1 * d1[1] + l2 * d2[1] + 0x8000) >> 16)) >> 16);
         uint32_t b = (uint32_t)((c0h[2] + ((l1 * d1[2] + l2 * d2[2] + 0x8000) >> 16)) >> 16);
@@ -465,7 +486,7 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
         int func = t->depth_func == FX_GL_DEPTH_LESS     ? FX_GL_DEPTH_LESS
                    : t->depth_func == FX_GL_DEPTH_LEQUAL ? FX_GL_DEPTH_LEQUAL
                                                          : -1;
-        while (fx_tri_next_span(&tri, &sp)) {
+        while (tri_next(&tri, &sp)) {
             uint64_t val[4];
             for (int k = 0; k < 4; k++)
                 val[k] = fx_tri_attr_at(&tri, k, sp.x0, sp.y);
@@ -481,7 +502,7 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
         }
         return;
     }
-    while (fx_tri_next_span(&tri, &sp)) {
+    while (tri_next(&tri, &sp)) {
         uint64_t val[4];
         for (int k = 0; k < na; k++)
             val[k] = fx_tri_attr_at(&tri, k, sp.x0, sp.y);
@@ -572,7 +593,7 @@ void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
             cf[k] = level(flat[k]);
     int plain = plain_target(t);
     fx_tri_span sp;
-    while (fx_tri_next_span(&tri, &sp)) {
+    while (tri_next(&tri, &sp)) {
         uint64_t val[FX_TRI_MAX_ATTR];
         for (int k = 0; k < na; k++)
             val[k] = fx_tri_attr_at(&tri, k, sp.x0, sp.y);

@@ -76,7 +76,10 @@ static inline fx32 fx32_mul(fx32 a, fx32 b)
 {
 #ifdef __SIZEOF_INT128__
     __int128 r = ((__int128)a * b + ((__int128)1 << 31)) >> 32;
-    return r > INT64_MAX ? INT64_MAX : r < INT64_MIN ? INT64_MIN : (int64_t)r;
+    int64_t r64 = (int64_t)r; /* the result unless it saturates (rare) */
+    if (__builtin_expect(r != r64, 0))
+        return r < 0 ? INT64_MIN : INT64_MAX;
+    return r64;
 #else
     return fx_mul64_shift(a, b, 32);
 #endif
