@@ -750,6 +750,37 @@ static int in_limit(const fx8 *xy)
     return 1;
 }
 
+#if defined(__SIZEOF_INT128__) && defined(__x86_64__) && !defined(FX_NO_INT128) && !defined(FX_NO_ASM)
+/* The attribute planes in the compiler's 128-bit type with one divq a
+ * gradient: the operations of the portable code below (fx_w_rounddiv_up of
+ * the numerator shifted by 40, modulo 2^128 like fx_wide.h), so the same
+ * bits; set-up is a large part of a small triangle's cost (the GL layer's
+ * meshes). */
+#define TRI_I128 1
+__extension__ typedef __int128 tri_i128;
+__extension__ typedef unsigned __int128 tri_u128;
+static inline int64_t plane_grad(tri_i128 n, int64_t d)
+{
+    tri_u128 m = (tri_u128)n << 40;
+    if (d < 0) {
+        m = -m;
+        d = -d;
+    }
+    m = (m << 1) + (tri_u128)(tri_i128)d; /* 2n + d over 2d, floored: ties up */
+    int neg = (tri_i128)m < 0;
+    if (neg)
+        m = -m;
+    uint64_t d2 = (uint64_t)d * 2, hi = (uint64_t)(m >> 64), lo = (uint64_t)m, q, r;
+    if (hi >= d2)
+        return neg ? INT64_MIN : INT64_MAX;
+    __asm__("divq %4" : "=a"(q), "=d"(r) : "a"(lo), "d"(hi), "rm"(d2) : "cc");
+    if (!neg)
+        return q > (uint64_t)INT64_MAX ? INT64_MAX : (int64_t)q;
+    q += r != 0; /* floor of a negative quotient */
+    return q > (uint64_t)INT64_MAX ? INT64_MIN : -(int64_t)q;
+}
+#endif
+
 int fx_tri_begin(fx_tri *t, fx_rect clip, const fx8 *xy, const int32_t *attr, int32_t nattr)
 {
     if (nattr < 0 || nattr > FX_TRI_MAX_ATTR || (nattr > 0 && !attr))
@@ -797,6 +828,15 @@ int fx_tri_begin(fx_tri *t, fx_rect clip, const fx8 *xy, const int32_t *attr, in
         int64_t area = e1x * e2y - e1y * e2x;
         for (int32_t k = 0; k < nattr; k++) {
             int64_t a0 = attr[k], da1 = (int64_t)attr[nattr + k] - a0, da2 = (int64_t)attr[2 * nattr + k] - a0;
+#ifdef TRI_I128
+            tri_i128 nx = (tri_i128)da1 * e2y - (tri_i128)da2 * e1y;
+            tri_i128 ny = (tri_i128)da2 * e1x - (tri_i128)da1 * e2x;
+            int64_t gx = plane_grad(nx, area), gy = plane_grad(ny, area);
+            tri_i128 sum = (tri_i128)gx * px + (tri_i128)gy * py + 128;
+            t->c[k] = ((uint64_t)a0 << 32) - (uint64_t)(sum >> 8);
+            t->gx[k] = (uint64_t)gx;
+            t->gy[k] = (uint64_t)gy;
+#else
             fx_s128 nx = fx_w_sub(fx_w_mul(da1, e2y), fx_w_mul(da2, e1y));
             fx_s128 ny = fx_w_sub(fx_w_mul(da2, e1x), fx_w_mul(da1, e2x));
             int64_t gx = fx_w_rounddiv_up(fx_w_shl(nx, 40), area);
@@ -807,6 +847,7 @@ int fx_tri_begin(fx_tri *t, fx_rect clip, const fx8 *xy, const int32_t *attr, in
             t->c[k] = ((uint64_t)a0 << 32) - shifted;
             t->gx[k] = (uint64_t)gx;
             t->gy[k] = (uint64_t)gy;
+#endif
         }
         t->nattr = nattr;
     }
