@@ -78,7 +78,10 @@ static inline int tri_next(fx_tri *t, fx_tri_span *s)
             edge_setup(&t->sht, t->vx[1], t->vy[1], t->vx[2], t->vy[2], 8, y);
             t->ymid = INT32_MIN;
         }
-        int64_t xl = t->long_left ? t->lng.x : t->sht.x, xr = t->long_left ? t->sht.x : t->lng.x;
+        /* selected by mask: compiled as a branch it was mispredicted on
+         * about every other small triangle */
+        int64_t m = -(int64_t)(t->long_left != 0), a = t->lng.x, b = t->sht.x;
+        int64_t xl = (a & m) | (b & ~m), xr = (b & m) | (a & ~m);
         t->y = y + 1;
         edge_step(&t->lng);
         edge_step(&t->sht);

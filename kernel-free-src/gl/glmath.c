@@ -319,12 +319,14 @@ static int64_t log2_q20(fx16 x)
     }
     uint64_t m30 = m << 14; /* [1, 2) in Q30 */
     int64_t frac = 0;
+    /* branch-free: each bit is as likely 0 as 1, and every lit vertex
+     * with a highlight comes here (m30 is in [1, 4) after squaring, so
+     * bit 31 is the test m30 >= 2) */
     for (int i = 1; i <= 20; i++) {
         m30 = (m30 * m30) >> 30;
-        if (m30 >= ((uint64_t)2 << 30)) {
-            m30 >>= 1;
-            frac |= (int64_t)1 << (20 - i);
-        }
+        uint64_t b = m30 >> 31;
+        m30 >>= b;
+        frac |= (int64_t)b << (20 - i);
     }
     return (int64_t)ip * (1 << 20) + frac;
 }
@@ -342,9 +344,13 @@ static fx16 exp2_q20(int64_t p)
     if (k < -40)
         return 0;
     uint64_t r = (uint64_t)1 << 30;
-    for (int i = 0; i < 20; i++)
-        if (f & (1u << (19 - i)))
-            r = (r * exp2_frac[i] + ((uint64_t)1 << 29)) >> 30;
+    /* a clear bit multiplies by 1.0 (2^30), which rounds back to r
+     * exactly: the same r without a branch per bit */
+    for (int i = 0; i < 20; i++) {
+        uint64_t bit = (f >> (19 - i)) & 1u;
+        uint64_t fi = ((uint64_t)1 << 30) + ((exp2_frac[i] - ((uint64_t)1 << 30)) & (0 - bit));
+        r = (r * fi + ((uint64_t)1 << 29)) >> 30;
+    }
     /* r in Q30, times 2^k, to Q16 */
     int sh = 14 - (int)k;
     if (sh >= 64)
