@@ -427,27 +427,23 @@ persp_span_plain(const fx_gl_target *t, int func, uint32_t *prow, uint32_t *drow
     }
 }
 
-/* The spans of such a triangle. The walker, the gradients and the
- * buffers' geometry are copied into locals first: the pixel stores could
- * otherwise alias them (the walker has 32-bit fields), and each store
- * would reload them. */
+/* The spans of such a triangle, the walk stepped inline (tri_walk.h). */
 static inline __attribute__((always_inline)) void
-persp_plain(const fx_gl_target *t, int func, const fx_tri *tri0, const int64_t c0[4],
+persp_plain(const fx_gl_target *t, int func, fx_tri *tri, const int64_t c0[4],
             const int64_t d1[6], const int64_t d2[6])
 {
-    fx_tri tri = *tri0;
     const int64_t c0h[3] = {c0[0] + 0x8000, c0[1] + 0x8000, c0[2] + 0x8000};
     const int64_t e1[3] = {d1[0], d1[1], d1[2]}, e2[3] = {d2[0], d2[1], d2[2]};
-    const uint64_t g[4] = {tri.gx[0], tri.gx[1], tri.gx[2], tri.gx[3]};
+    const uint64_t g[4] = {tri->gx[0], tri->gx[1], tri->gx[2], tri->gx[3]};
     uint8_t *pixels = t->surf.pixels;
     const int32_t h1 = t->surf.h - 1, stride = t->surf.stride;
     uint32_t *depth = t->depth;
     const size_t dw = (size_t)t->surf.w;
     fx_tri_span sp;
-    while (tri_next(&tri, &sp)) {
+    while (tri_next(tri, &sp)) {
         uint64_t val[4];
         for (int k = 0; k < 4; k++)
-            val[k] = fx_tri_attr_at(&tri, k, sp.x0, sp.y);
+            val[k] = fx_tri_attr_at(tri, k, sp.x0, sp.y);
         int32_t row = h1 - sp.y;
         uint32_t *prow = (uint32_t *)(pixels + (intptr_t)row * stride);
         uint32_t *drow = depth + (size_t)row * dw;
