@@ -1058,7 +1058,9 @@ static void process_vertex(fx32 x, fx32 y, fx32 z, fx32 w, fx_gl_cvert *o)
         if (fxg.normalize || fxg.rescale)
             fx_glv3_normalize(n);
         fx32 p[4] = {e.x, e.y, e.z, e.w};
-        fx_gl_shade(&fxg.L, &fxg.mat[0], p, n, o->c);
+        /* directional lights' vectors once, not per vertex (same bits) */
+        static fx_gl_shade_cache shade_cache;
+        fx_gl_shade_cached(&fxg.L, &shade_cache, &fxg.mat[0], p, n, o->c);
     } else {
         for (int k = 0; k < 4; k++)
             o->c[k] = fxg.color[k];

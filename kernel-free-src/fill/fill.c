@@ -14,64 +14,7 @@
 #include "../base/fx_internal.h"
 #include "../base/fx_span.h"
 #include "../base/fx_wide.h"
-
-static int64_t ceil_shift(int64_t v, unsigned s) { return (v + (((int64_t)1 << s) - 1)) >> s; }
-
-/* ---- exact edge stepping ----
- * The edge (x0, y0) -> (x1, y1), y0 < y1, in vertex units with s fraction
- * bits, set up at pixel row y (y0 <= y << s < y1). x = ceil(xc / 2^s) and
- * e = x*D - N where D = dy << s and N = x0*dy + t*dx, t = (y << s) - y0. */
-/* floor division with remainder for d > 0, on 32 bits when the operands
- * fit (a 64-bit divide costs several times more on common cores). */
-static inline void floordivmod(int64_t n, int64_t d, int64_t *q, int64_t *r)
-{
-    int64_t qq, rr;
-    if (n >= INT32_MIN && n <= INT32_MAX && d <= INT32_MAX) {
-        int32_t n32 = (int32_t)n, d32 = (int32_t)d;
-        qq = n32 / d32;
-        rr = n32 % d32;
-    } else {
-        qq = n / d;
-        rr = n % d;
-    }
-    if (rr < 0) {
-        qq--;
-        rr += d;
-    }
-    *q = qq;
-    *r = rr;
-}
-
-static void edge_setup(fx_tri_edge *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, unsigned s,
-                       int64_t y)
-{
-    int64_t dx = x1 - x0, dy = y1 - y0, t = y * ((int64_t)1 << s) - y0, qa, ra;
-    int64_t adx = dx < 0 ? -dx : dx;
-    if (t < ((int64_t)1 << 31) && adx < ((int64_t)1 << 31))
-        floordivmod(t * dx, dy, &qa, &ra);
-    else
-        fx_w_floordivmod(fx_w_mul(t, dx), dy, &qa, &ra);
-    int64_t m = x0 + qa;
-    int64_t x = (m + (ra > 0) + (((int64_t)1 << s) - 1)) >> s;
-    g->x = x;
-    g->d = dy * ((int64_t)1 << s);
-    g->e = dy * (x * ((int64_t)1 << s) - m) - ra;
-    /* per-row step S = dx << s = qs*D + rs */
-    int64_t q, r;
-    floordivmod(dx, dy, &q, &r);
-    g->qs = q;
-    g->rs = r * ((int64_t)1 << s);
-}
-
-/* Branch-free: whether the error wraps is close to random from row to row
- * on a sloped edge, and the edges of a row do not depend on each other, so
- * a mask costs less than the mispredicted branches. */
-static inline void edge_step(fx_tri_edge *g)
-{
-    int64_t e = g->e - g->rs, m = -(int64_t)(e < 0);
-    g->e = e + (g->d & m);
-    g->x += g->qs - m;
-}
+#include "tri_walk.h"
 
 /* ---- span loops ---- */
 
@@ -168,8 +111,6 @@ static int plain_solid(const fx_ctx *c)
     return !c->exterior && (!c->fill_style || c->fill_style->kind == FX_FILL_SOLID) &&
            (c->blend == FX_BLEND_SRC || (c->color >> 24) == 255);
 }
-
-static int64_t clamp64(int64_t v, int32_t lo, int32_t hi) { return v < lo ? lo : v > hi ? hi : v; }
 
 /* ---- general polygons: edge table + active edge list ---- */
 
@@ -809,6 +750,37 @@ static int in_limit(const fx8 *xy)
     return 1;
 }
 
+#if defined(__SIZEOF_INT128__) && defined(__x86_64__) && !defined(FX_NO_INT128) && !defined(FX_NO_ASM)
+/* The attribute planes in the compiler's 128-bit type with one divq a
+ * gradient: the operations of the portable code below (fx_w_rounddiv_up of
+ * the numerator shifted by 40, modulo 2^128 like fx_wide.h), so the same
+ * bits; set-up is a large part of a small triangle's cost (the GL layer's
+ * meshes). */
+#define TRI_I128 1
+__extension__ typedef __int128 tri_i128;
+__extension__ typedef unsigned __int128 tri_u128;
+static inline int64_t plane_grad(tri_i128 n, int64_t d)
+{
+    tri_u128 m = (tri_u128)n << 40;
+    if (d < 0) {
+        m = -m;
+        d = -d;
+    }
+    m = (m << 1) + (tri_u128)(tri_i128)d; /* 2n + d over 2d, floored: ties up */
+    int neg = (tri_i128)m < 0;
+    if (neg)
+        m = -m;
+    uint64_t d2 = (uint64_t)d * 2, hi = (uint64_t)(m >> 64), lo = (uint64_t)m, q, r;
+    if (hi >= d2)
+        return neg ? INT64_MIN : INT64_MAX;
+    __asm__("divq %4" : "=a"(q), "=d"(r) : "a"(lo), "d"(hi), "rm"(d2) : "cc");
+    if (!neg)
+        return q > (uint64_t)INT64_MAX ? INT64_MAX : (int64_t)q;
+    q += r != 0; /* floor of a negative quotient */
+    return q > (uint64_t)INT64_MAX ? INT64_MIN : -(int64_t)q;
+}
+#endif
+
 int fx_tri_begin(fx_tri *t, fx_rect clip, const fx8 *xy, const int32_t *attr, int32_t nattr)
 {
     if (nattr < 0 || nattr > FX_TRI_MAX_ATTR || (nattr > 0 && !attr))
@@ -856,6 +828,15 @@ int fx_tri_begin(fx_tri *t, fx_rect clip, const fx8 *xy, const int32_t *attr, in
         int64_t area = e1x * e2y - e1y * e2x;
         for (int32_t k = 0; k < nattr; k++) {
             int64_t a0 = attr[k], da1 = (int64_t)attr[nattr + k] - a0, da2 = (int64_t)attr[2 * nattr + k] - a0;
+#ifdef TRI_I128
+            tri_i128 nx = (tri_i128)da1 * e2y - (tri_i128)da2 * e1y;
+            tri_i128 ny = (tri_i128)da2 * e1x - (tri_i128)da1 * e2x;
+            int64_t gx = plane_grad(nx, area), gy = plane_grad(ny, area);
+            tri_i128 sum = (tri_i128)gx * px + (tri_i128)gy * py + 128;
+            t->c[k] = ((uint64_t)a0 << 32) - (uint64_t)(sum >> 8);
+            t->gx[k] = (uint64_t)gx;
+            t->gy[k] = (uint64_t)gy;
+#else
             fx_s128 nx = fx_w_sub(fx_w_mul(da1, e2y), fx_w_mul(da2, e1y));
             fx_s128 ny = fx_w_sub(fx_w_mul(da2, e1x), fx_w_mul(da1, e2x));
             int64_t gx = fx_w_rounddiv_up(fx_w_shl(nx, 40), area);
@@ -866,35 +847,11 @@ int fx_tri_begin(fx_tri *t, fx_rect clip, const fx8 *xy, const int32_t *attr, in
             t->c[k] = ((uint64_t)a0 << 32) - shifted;
             t->gx[k] = (uint64_t)gx;
             t->gy[k] = (uint64_t)gy;
+#endif
         }
         t->nattr = nattr;
     }
     return 1;
-}
-
-static inline int tri_next(fx_tri *t, fx_tri_span *s)
-{
-    while (t->y < t->yend) {
-        int32_t y = t->y;
-        if (y == t->ymid) {
-            /* switch to the lower short edge; ymid == y happens once */
-            edge_setup(&t->sht, t->vx[1], t->vy[1], t->vx[2], t->vy[2], 8, y);
-            t->ymid = INT32_MIN;
-        }
-        int64_t xl = t->long_left ? t->lng.x : t->sht.x, xr = t->long_left ? t->sht.x : t->lng.x;
-        t->y = y + 1;
-        edge_step(&t->lng);
-        edge_step(&t->sht);
-        xl = clamp64(xl, t->clip.x0, t->clip.x1);
-        xr = clamp64(xr, t->clip.x0, t->clip.x1);
-        if (xl < xr) {
-            s->y = y;
-            s->x0 = (int32_t)xl;
-            s->x1 = (int32_t)xr;
-            return 1;
-        }
-    }
-    return 0;
 }
 
 int fx_tri_next_span(fx_tri *t, fx_tri_span *s) { return tri_next(t, s); }

@@ -2,39 +2,10 @@
 /* fixel — Q32.32 arithmetic, GL matrices and the lighting equation for the
  * GLUT layer (see fixel/glcore.h). Integer only, freestanding. */
 #include "fixel/glcore.h"
+#include "../base/fx_wide.h"
 
 
 static inline uint64_t uabs64(int64_t v) { return v < 0 ? 0 - (uint64_t)v : (uint64_t)v; }
-
-/* (hi * 2^64 + lo) / d for hi < d: the divisor normalised to its top bit,
- * then two quotient digits of 32 bits, each estimated from the divisor's
- * high half and corrected (at most twice) -- Knuth's algorithm D. Only
- * 64-bit operations, so no libgcc 128-bit division (__udivti3) in the core. */
-static uint64_t udiv128_64(uint64_t hi, uint64_t lo, uint64_t d)
-{
-    int s = __builtin_clzll(d);
-    if (s) {
-        d <<= s;
-        hi = (hi << s) | (lo >> (64 - s));
-        lo <<= s;
-    }
-    uint64_t dh = d >> 32, dl = d & 0xFFFFFFFFu, l1 = lo >> 32, l0 = lo & 0xFFFFFFFFu;
-    uint64_t q1 = hi / dh, r = hi - q1 * dh;
-    while ((q1 >> 32) || q1 * dl > ((r << 32) | l1)) {
-        q1--, r += dh;
-        if (r >> 32)
-            break;
-    }
-    uint64_t h2 = ((hi << 32) | l1) - q1 * d;
-    uint64_t q0 = h2 / dh;
-    r = h2 - q0 * dh;
-    while ((q0 >> 32) || q0 * dl > ((r << 32) | l0)) {
-        q0--, r += dh;
-        if (r >> 32)
-            break;
-    }
-    return (q1 << 32) | q0;
-}
 
 int64_t fx_muldiv64(int64_t a, int64_t b, int64_t c)
 {
@@ -50,14 +21,14 @@ int64_t fx_muldiv64(int64_t a, int64_t b, int64_t c)
         return neg ? -(int64_t)q : (int64_t)q;
     }
     uint64_t hi, lo;
-    fx_umul64_wide(ua, ub, &hi, &lo);
+    fx_w_umul(ua, ub, &hi, &lo);
     /* + c/2 for rounding to nearest (ties away from zero) */
     uint64_t lo2 = lo + uc / 2;
     hi += lo2 < lo;
     lo = lo2;
     if (hi >= uc) /* quotient does not fit in 64 bits */
         return neg ? INT64_MIN : INT64_MAX;
-    uint64_t q = udiv128_64(hi, lo, uc);
+    uint64_t r, q = fx_w_udivmod(hi, lo, uc, &r);
     if (q > (uint64_t)INT64_MAX)
         return neg ? INT64_MIN : INT64_MAX;
     return neg ? -(int64_t)q : (int64_t)q;
@@ -144,19 +115,17 @@ void fx_glm_mul(fx_glm *r, const fx_glm *a, const fx_glm *b)
     *r = t;
 }
 
+/* Every vertex passes here (twice when lit): straight products, without
+ * fx_glm_mul's shortcuts for 0 and 1, which fx32_mul gives exactly anyway
+ * (round(0 * y) = 0, round(2^32 * y / 2^32) = y). */
 fx_glv4 fx_glm_apply(const fx_glm *m, fx_glv4 v)
 {
-    fx32 in[4] = {v.x, v.y, v.z, v.w}, out[4];
-    for (int r = 0; r < 4; r++) {
-        fx32 s = 0;
-        for (int k = 0; k < 4; k++) {
-            fx32 x = m->m[k * 4 + r], y = in[k];
-            if (x && y)
-                s += (x == FX32_ONE) ? y : (y == FX32_ONE) ? x : fx32_mul(x, y);
-        }
-        out[r] = s;
-    }
-    fx_glv4 o = {out[0], out[1], out[2], out[3]};
+    const fx32 *a = m->m;
+    fx_glv4 o;
+    o.x = fx32_mul(a[0], v.x) + fx32_mul(a[4], v.y) + fx32_mul(a[8], v.z) + fx32_mul(a[12], v.w);
+    o.y = fx32_mul(a[1], v.x) + fx32_mul(a[5], v.y) + fx32_mul(a[9], v.z) + fx32_mul(a[13], v.w);
+    o.z = fx32_mul(a[2], v.x) + fx32_mul(a[6], v.y) + fx32_mul(a[10], v.z) + fx32_mul(a[14], v.w);
+    o.w = fx32_mul(a[3], v.x) + fx32_mul(a[7], v.y) + fx32_mul(a[11], v.z) + fx32_mul(a[15], v.w);
     return o;
 }
 
@@ -350,12 +319,14 @@ static int64_t log2_q20(fx16 x)
     }
     uint64_t m30 = m << 14; /* [1, 2) in Q30 */
     int64_t frac = 0;
+    /* branch-free: each bit is as likely 0 as 1, and every lit vertex
+     * with a highlight comes here (m30 is in [1, 4) after squaring, so
+     * bit 31 is the test m30 >= 2) */
     for (int i = 1; i <= 20; i++) {
         m30 = (m30 * m30) >> 30;
-        if (m30 >= ((uint64_t)2 << 30)) {
-            m30 >>= 1;
-            frac |= (int64_t)1 << (20 - i);
-        }
+        uint64_t b = m30 >> 31;
+        m30 >>= b;
+        frac |= (int64_t)b << (20 - i);
     }
     return (int64_t)ip * (1 << 20) + frac;
 }
@@ -373,9 +344,13 @@ static fx16 exp2_q20(int64_t p)
     if (k < -40)
         return 0;
     uint64_t r = (uint64_t)1 << 30;
-    for (int i = 0; i < 20; i++)
-        if (f & (1u << (19 - i)))
-            r = (r * exp2_frac[i] + ((uint64_t)1 << 29)) >> 30;
+    /* a clear bit multiplies by 1.0 (2^30), which rounds back to r
+     * exactly: the same r without a branch per bit */
+    for (int i = 0; i < 20; i++) {
+        uint64_t bit = (f >> (19 - i)) & 1u;
+        uint64_t fi = ((uint64_t)1 << 30) + ((exp2_frac[i] - ((uint64_t)1 << 30)) & (0 - bit));
+        r = (r * fi + ((uint64_t)1 << 29)) >> 30;
+    }
     /* r in Q30, times 2^k, to Q16 */
     int sh = 14 - (int)k;
     if (sh >= 64)
@@ -398,8 +373,43 @@ fx16 fx_gl_pow(fx16 x, fx16 e)
 
 static fx16 clamp01(int64_t v) { return v < 0 ? 0 : v > FX16_ONE ? FX16_ONE : (fx16)v; }
 
+/* The per-light vectors that do not depend on the vertex, computed the
+ * way the per-vertex code computed them (so the cache changes no bit) and
+ * kept with the light parameters they came from. */
+static const fx_gl_shade_light *cached_light(const fx_gl_light *li, fx_gl_shade_light *c)
+{
+    int same = c->valid;
+    for (int k = 0; k < 4 && same; k++)
+        same = c->pos[k] == li->pos[k];
+    for (int k = 0; k < 3 && same; k++)
+        same = c->spot_dir[k] == li->spot_dir[k];
+    if (same)
+        return c;
+    for (int k = 0; k < 4; k++)
+        c->pos[k] = li->pos[k];
+    for (int k = 0; k < 3; k++)
+        c->spot_dir[k] = c->sd[k] = li->spot_dir[k];
+    fx_glv3_normalize(c->sd);
+    for (int k = 0; k < 3; k++)
+        c->vp[k] = li->pos[k];
+    fx_glv3_normalize(c->vp);
+    c->h[0] = c->vp[0], c->h[1] = c->vp[1], c->h[2] = c->vp[2] + FX32_ONE;
+    fx_glv3_normalize(c->h);
+    c->valid = 1;
+    return c;
+}
+
 void fx_gl_shade(const fx_gl_lighting *L, const fx_gl_material *m, const fx32 p[4],
                  const fx32 n[3], fx16 out[4])
+{
+    fx_gl_shade_cache c;
+    for (int i = 0; i < FX_GL_MAX_LIGHTS; i++)
+        c.light[i].valid = 0;
+    fx_gl_shade_cached(L, &c, m, p, n, out);
+}
+
+void fx_gl_shade_cached(const fx_gl_lighting *L, fx_gl_shade_cache *cache,
+                        const fx_gl_material *m, const fx32 p[4], const fx32 n[3], fx16 out[4])
 {
     int64_t acc[3];
     for (int k = 0; k < 3; k++)
@@ -413,11 +423,12 @@ void fx_gl_shade(const fx_gl_lighting *L, const fx_gl_material *m, const fx32 p[
         const fx_gl_light *li = &L->light[i];
         if (!li->enabled)
             continue;
+        const fx_gl_shade_light *cl = cached_light(li, &cache->light[i]);
         fx32 VP[3];
         fx32 att = FX32_ONE;
-        if (li->pos[3] == 0) {
-            VP[0] = li->pos[0], VP[1] = li->pos[1], VP[2] = li->pos[2];
-            fx_glv3_normalize(VP);
+        int directional = li->pos[3] == 0;
+        if (directional) {
+            VP[0] = cl->vp[0], VP[1] = cl->vp[1], VP[2] = cl->vp[2];
         } else {
             fx32 lp[3] = {li->pos[0], li->pos[1], li->pos[2]};
             if (li->pos[3] != FX32_ONE)
@@ -433,8 +444,7 @@ void fx_gl_shade(const fx_gl_lighting *L, const fx_gl_material *m, const fx32 p[
                 att = den > 0 ? fx_muldiv64(FX32_ONE, FX32_ONE, den) : FX32_ONE;
             }
             if (li->spot_cut) {
-                fx32 sd[3] = {li->spot_dir[0], li->spot_dir[1], li->spot_dir[2]};
-                fx_glv3_normalize(sd);
+                const fx32 *sd = cl->sd;
                 fx32 c = -(fx32_mul(VP[0], sd[0]) + fx32_mul(VP[1], sd[1]) +
                            fx32_mul(VP[2], sd[2]));
                 if (c < li->spot_cos)
@@ -450,7 +460,10 @@ void fx_gl_shade(const fx_gl_lighting *L, const fx_gl_material *m, const fx32 p[
         fx16 spec = 0;
         if (ndl > 0) {
             fx32 H[3] = {VP[0], VP[1], VP[2] + FX32_ONE};
-            fx_glv3_normalize(H);
+            if (directional)
+                H[0] = cl->h[0], H[1] = cl->h[1], H[2] = cl->h[2];
+            else
+                fx_glv3_normalize(H);
             fx32 ndh = fx32_mul(n[0], H[0]) + fx32_mul(n[1], H[1]) + fx32_mul(n[2], H[2]);
             if (ndh > 0) {
                 fx16 b = ndh >= FX32_ONE ? FX16_ONE : (fx16)(ndh >> 16);

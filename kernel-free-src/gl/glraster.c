@@ -5,6 +5,8 @@
  * fixel/glcore.h for the rules. Integer only, freestanding. */
 #include "fixel/fill.h"
 #include "fixel/glcore.h"
+#include "../base/fx_internal.h"
+#include "../fill/tri_walk.h"
 
 static inline int64_t floordiv(int64_t a, int64_t b) /* b > 0 */
 {
@@ -360,6 +362,95 @@ static inline void persp_weights(const uint64_t *val, int kq, int64_t *w1, int64
     l2 = l2 < 0 ? 0 : l2 > FX16_ONE - l1 ? FX16_ONE - l1 : l2;
     *w1 = l1, *w2 = l2;
 }
+/* The depth comparison with the function as a constant where the caller
+ * passes one (the span loops below are specialised per function, so the
+ * switch of depth_pass leaves the per-pixel path); -1: t's function. */
+static inline __attribute__((always_inline)) int depth_cmp(const fx_gl_target *t, int func,
+                                                           uint32_t z, uint32_t d)
+{
+    switch (func) {
+    case FX_GL_DEPTH_LESS: return z < d;
+    case FX_GL_DEPTH_LEQUAL: return z <= d;
+    default: return depth_pass(t, z, d);
+    }
+}
+
+/* One span of a perspective-correct Gouraud triangle on the plain target
+ * with the depth test: the general loop of persp_triangle with the
+ * attributes in registers, the depth function fixed, no alpha (the XRGB
+ * store drops it), and what cannot change a value left out (same bits):
+ *  - no colour clamp: with both weights in [0, 1] and their sum <= 1
+ *    every level is a convex combination of the vertex levels, in
+ *    [0, 255 * 2^16] after rounding;
+ *  - persp_weights inline for q >= 2^31 (always, inside the triangle: q is
+ *    at least 2^32 there), where its guards on q and the shift are idle,
+ *    and without the clamp of l1 to [0, 1]: L1 <= Q makes
+ *    (L1 >> sh) * inv <= (Q >> sh) * (2^62 / (Q >> sh)) <= 2^62;
+ *  - the depth's rounding bias added once, the clamp as a rare branch.
+ * (Two passes, the depth tests first and then the colours of the pixels
+ * that passed, ran slower here: the spans are a few pixels long.) */
+static inline __attribute__((always_inline)) void
+persp_span_plain(const fx_gl_target *t, int func, uint32_t *prow, uint32_t *drow, int32_t x0,
+                 int32_t x1, const uint64_t val[4], const uint64_t g[4], const int64_t c0h[3],
+                 const int64_t d1[3], const int64_t d2[3])
+{
+    uint64_t vz = val[0] + 0x80000000u, vq = val[1], v1 = val[2], v2 = val[3];
+    const uint64_t gz = g[0], gq = g[1], g1 = g[2], g2 = g[3];
+    const int dw = t->depth_write;
+    for (int32_t x = x0; x < x1; x++, vz += gz, vq += gq, v1 += g1, v2 += g2) {
+        int32_t zz = (int32_t)((int64_t)vz >> 32); /* fx_tri_attr_round */
+        uint32_t z = (uint32_t)zz;
+        if (__builtin_expect(z > 0xFFFFFF, 0))
+            z = zz < 0 ? 0 : 0xFFFFFF;
+        if (!depth_cmp(t, func, z, drow[x]))
+            continue;
+        if (dw)
+            drow[x] = z;
+        int64_t l1, l2, Qv = (int64_t)vq;
+        if (__builtin_expect(Qv >= ((int64_t)1 << 31), 1)) {
+            int sh = 33 - __builtin_clzll((uint64_t)Qv);
+            uint64_t inv = ((uint64_t)1 << 62) / ((uint64_t)Qv >> sh);
+            int64_t L1 = (int64_t)v1, L2 = (int64_t)v2;
+            L1 = L1 < 0 ? 0 : L1 > Qv ? Qv : L1;
+            L2 = L2 < 0 ? 0 : L2 > Qv ? Qv : L2;
+            l1 = (int64_t)((((uint64_t)L1 >> sh) * inv) >> 46);
+            l2 = (int64_t)((((uint64_t)L2 >> sh) * inv) >> 46);
+            l2 = l2 > FX16_ONE - l1 ? FX16_ONE - l1 : l2;
+        } else {
+            uint64_t q3[3] = {vq, v1, v2};
+            persp_weights(q3, 0, &l1, &l2);
+        }
+        uint32_t r = (uint32_t)((c0h[0] + ((l1 * d1[0] + l2 * d2[0] + 0x8000) >> 16)) >> 16);
+        uint32_t gg = (uint32_t)((c0h[1] + ((l1 * d1[1] + l2 * d2[1] + 0x8000) >> 16)) >> 16);
+        uint32_t b = (uint32_t)((c0h[2] + ((l1 * d1[2] + l2 * d2[2] + 0x8000) >> 16)) >> 16);
+        prow[x] = (r << 16) | (gg << 8) | b;
+    }
+}
+
+/* The spans of such a triangle, the walk stepped inline (tri_walk.h). */
+static inline __attribute__((always_inline)) void
+persp_plain(const fx_gl_target *t, int func, fx_tri *tri, const int64_t c0[4],
+            const int64_t d1[6], const int64_t d2[6])
+{
+    const int64_t c0h[3] = {c0[0] + 0x8000, c0[1] + 0x8000, c0[2] + 0x8000};
+    const int64_t e1[3] = {d1[0], d1[1], d1[2]}, e2[3] = {d2[0], d2[1], d2[2]};
+    const uint64_t g[4] = {tri->gx[0], tri->gx[1], tri->gx[2], tri->gx[3]};
+    uint8_t *pixels = t->surf.pixels;
+    const int32_t h1 = t->surf.h - 1, stride = t->surf.stride;
+    uint32_t *depth = t->depth;
+    const size_t dw = (size_t)t->surf.w;
+    fx_tri_span sp;
+    while (tri_next(tri, &sp)) {
+        uint64_t val[4];
+        for (int k = 0; k < 4; k++)
+            val[k] = fx_tri_attr_at(tri, k, sp.x0, sp.y);
+        int32_t row = h1 - sp.y;
+        uint32_t *prow = (uint32_t *)(pixels + (intptr_t)row * stride);
+        uint32_t *drow = depth + (size_t)row * dw;
+        persp_span_plain(t, func, prow, drow, sp.x0, sp.x1, val, g, c0h, e1, e2);
+    }
+}
+
 /* Perspective-correct colours and texture coordinates: the attributes
  * interpolated in window space are 1/w (q, normalised to 2^22 at the
  * nearest vertex, which keeps sliver triangles' gradients in range) and the
@@ -414,7 +505,16 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
             cf[k] = level(flat[k]);
     int plain = plain_target(t);
     fx_tri_span sp;
-    while (fx_tri_next_span(&tri, &sp)) {
+    if (plain && use_z && use_c && !use_t) {
+        if (t->depth_func == FX_GL_DEPTH_LESS)
+            persp_plain(t, FX_GL_DEPTH_LESS, &tri, c0, d1, d2);
+        else if (t->depth_func == FX_GL_DEPTH_LEQUAL)
+            persp_plain(t, FX_GL_DEPTH_LEQUAL, &tri, c0, d1, d2);
+        else
+            persp_plain(t, -1, &tri, c0, d1, d2);
+        return;
+    }
+    while (tri_next(&tri, &sp)) {
         uint64_t val[4];
         for (int k = 0; k < na; k++)
             val[k] = fx_tri_attr_at(&tri, k, sp.x0, sp.y);
@@ -505,7 +605,7 @@ void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
             cf[k] = level(flat[k]);
     int plain = plain_target(t);
     fx_tri_span sp;
-    while (fx_tri_next_span(&tri, &sp)) {
+    while (tri_next(&tri, &sp)) {
         uint64_t val[FX_TRI_MAX_ATTR];
         for (int k = 0; k < na; k++)
             val[k] = fx_tri_attr_at(&tri, k, sp.x0, sp.y);
@@ -549,10 +649,16 @@ void fx_gl_clear(fx_gl_target *t, fx_rect r, fx_color c, int color, uint32_t dep
     fx_rect sr = {r.x0, t->surf.h - r.y1, r.x1, t->surf.h - r.y0};
     if (color)
         fx_rect_fill_native(&t->surf, sr, fx_pack(t->surf.format, c));
-    if (depth_on && t->depth)
-        for (int32_t y = sr.y0; y < sr.y1; y++)
-            for (int32_t x = sr.x0; x < sr.x1; x++)
-                t->depth[(size_t)y * (size_t)t->surf.w + (size_t)x] = depth;
+    /* the colour's solid runs for the depth rows too: a whole-width clear
+     * (every frame's glClear) is one run over the buffer */
+    if (depth_on && t->depth) {
+        size_t w = (size_t)t->surf.w;
+        if (sr.x0 == 0 && sr.x1 == t->surf.w && (size_t)(sr.y1 - sr.y0) * w <= INT32_MAX)
+            fx_run32(t->depth + (size_t)sr.y0 * w, (int32_t)((size_t)(sr.y1 - sr.y0) * w), depth);
+        else
+            for (int32_t y = sr.y0; y < sr.y1; y++)
+                fx_run32(t->depth + (size_t)y * w + (size_t)sr.x0, sr.x1 - sr.x0, depth);
+    }
 }
 
 /* ---- clipping ---- */

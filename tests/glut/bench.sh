@@ -7,10 +7,13 @@
 #   sh tests/glut/bench.sh [--build DIR] [--out DIR]
 # Both sides time themselves with FIXEL_GLUT_BENCH=1 (Mesa through the shim,
 # fixel in its GLUT layer): wall clock from the end of frame 1 to the end of
-# frame N, so start-up and the first frame are left out. Each renderer runs
-# GLUT_BENCH_REPS times (default 3) interleaved with the others, and the
-# fastest run is reported (the machine may be shared). GLUT_BENCH_TEAPOT / GLUT_BENCH_MANDEL set the frames after the
-# first (default 100 and 3).
+# frame N, so start-up and the first frame are left out. The machine may be
+# shared, so each renderer runs GLUT_BENCH_REPS times (default 5, at least
+# 1), the renderers interleaved run by run, and the table gives the median
+# frames per second, the range (slowest-fastest run) and fixel's median over
+# the row's median (> 1: fixel is faster). GLUT_BENCH_TEAPOT /
+# GLUT_BENCH_MANDEL set the frames after the first (default 100 and 3).
+# The table is also written to OUT/glut-bench.txt.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -35,9 +38,9 @@ if [ -z "${DISPLAY_READY:-}" ]; then
     DISPLAY_READY=1 exec xvfb-run -a -s "-screen 0 1600x1200x24 -nolisten tcp" sh "$0" --build "$build" --out "$out"
 fi
 
-row() { printf 'glut-bench: %-11s %-22s %6s %9s %9s\n' "$@"; }
-row program renderer frames seconds fps
-reps=${GLUT_BENCH_REPS:-3}
+row() { printf 'glut-bench: %-11s %-20s %6s %5s %10s %17s %11s\n' "$@"; }
+reps=${GLUT_BENCH_REPS:-5}
+[ "$reps" -ge 1 ] 2>/dev/null || reps=1
 lib=$build/libfixel-glut.a
 GLUT_FIXEL_LIBS=${GLUT_FIXEL_LIBS:-$(pkg-config --libs libpng zlib libdrm libevdev libgpiod 2>/dev/null) -lpthread -lm}
 for p in teapot mandelbrot; do
@@ -56,9 +59,12 @@ run_fixel() {  # PROGRAM FRAMES
     FIXEL_BACKEND=memory FIXEL_GLUT_BENCH=1 FIXEL_GLUT_FRAMES=$(($2 + 1)) "$out/$1.fixel" 2>/dev/null |
         grep '^fixel-glut: frames' | sed -n 's/.* in \([0-9.]*\) s = \([0-9.]*\) fps/\1 \2/p'
 }
-# The machine may be shared: every renderer runs GLUT_BENCH_REPS times
-# (default 3), interleaved, and its fastest run is reported.
-best() { awk 'NF == 2 && $2 > f { f = $2; t = $1 } END { if (f) print t, f }'; }
+# median and range of the fps column of a results file: "MEDIAN MIN MAX N"
+stats() { awk 'NF == 2 { print $2 }' "$1" | sort -g | awk '{ v[NR] = $1 } END {
+    if (!NR) exit; m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
+    printf "%.2f %.2f %.2f %d\n", m, v[1], v[NR], NR }'; }
+{
+row program renderer frames runs "median fps" "range fps" "fixel/this"
 for p in teapot mandelbrot; do
     k=$kt; [ $p = mandelbrot ] && k=$km
     : > "$out/$p.l1" ; : > "$out/$p.ln" ; : > "$out/$p.sp" ; : > "$out/$p.fx"
@@ -70,9 +76,17 @@ for p in teapot mandelbrot; do
         run_fixel $p $k >> "$out/$p.fx"
         i=$((i + 1))
     done
+    fx=$(stats "$out/$p.fx")
     for r in "l1:llvmpipe 1 thread" "ln:llvmpipe $(nproc) threads" "sp:softpipe" "fx:fixel 1 thread"; do
-        b=$(best < "$out/$p.${r%%:*}")
-        [ "${r%%:*}" = fx ] && [ ! -x "$out/$p.fixel" ] && { row $p "fixel" "$k" - "not built"; continue; }
-        row "$p" "${r#*:}" "$k" "${b% *}" "${b#* }"
+        if [ "${r%%:*}" = fx ] && [ ! -x "$out/$p.fixel" ]; then
+            row "$p" "fixel" "$k" 0 - "not built" -; continue
+        fi
+        st=$(stats "$out/$p.${r%%:*}")
+        [ -n "$st" ] || { row "$p" "${r#*:}" "$k" 0 - "failed" -; continue; }
+        set -- $st
+        ratio=-
+        [ -n "$fx" ] && ratio=$(echo "${fx%% *} $1" | awk '{ printf "%.2f", $1 / $2 }')
+        row "$p" "${r#*:}" "$k" "$4" "$1" "$2-$3" "$ratio"
     done
 done
+} | tee "$out/glut-bench.txt"

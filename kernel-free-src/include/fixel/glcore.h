@@ -76,7 +76,10 @@ static inline fx32 fx32_mul(fx32 a, fx32 b)
 {
 #ifdef __SIZEOF_INT128__
     __int128 r = ((__int128)a * b + ((__int128)1 << 31)) >> 32;
-    return r > INT64_MAX ? INT64_MAX : r < INT64_MIN ? INT64_MIN : (int64_t)r;
+    int64_t r64 = (int64_t)r; /* the result unless it saturates (rare) */
+    if (__builtin_expect(r != r64, 0))
+        return r < 0 ? INT64_MIN : INT64_MAX;
+    return r64;
 #else
     return fx_mul64_shift(a, b, 32);
 #endif
@@ -157,6 +160,21 @@ typedef struct fx_gl_lighting {
  * repeated squaring of the integer part times a 16-step interpolated root. */
 void fx_gl_shade(const fx_gl_lighting *L, const fx_gl_material *m, const fx32 p[4],
                  const fx32 n[3], fx16 out[4]);
+/* fx_gl_shade for many vertices: what depends only on a light (the unit
+ * vector and half vector of a directional light, the unit spot direction)
+ * is kept in the caller's cache between calls, with the light position and
+ * spot direction it was computed from, and computed again when they change.
+ * Gives fx_gl_shade's bits. A cache starts zeroed (or with valid = 0). */
+typedef struct fx_gl_shade_light {
+    int valid;
+    fx32 pos[4], spot_dir[3]; /* what vp, h, sd were computed from */
+    fx32 vp[3], h[3], sd[3];
+} fx_gl_shade_light;
+typedef struct fx_gl_shade_cache {
+    fx_gl_shade_light light[FX_GL_MAX_LIGHTS];
+} fx_gl_shade_cache;
+void fx_gl_shade_cached(const fx_gl_lighting *L, fx_gl_shade_cache *cache,
+                        const fx_gl_material *m, const fx32 p[4], const fx32 n[3], fx16 out[4]);
 /* x^e for x in [0, 1] (Q16.16) and e >= 0 (Q16.16). */
 fx16 fx_gl_pow(fx16 x, fx16 e);
 
