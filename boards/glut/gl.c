@@ -1461,6 +1461,19 @@ void glRasterPos2fv(const GLfloat *v) { raster_pos(v[0], v[1], 0, 1); }
 void glRasterPos2iv(const GLint *v) { raster_pos(v[0], v[1], 0, 1); }
 void glRasterPos2dv(const GLdouble *v) { raster_pos(v[0], v[1], 0, 1); }
 void glRasterPos3fv(const GLfloat *v) { raster_pos(v[0], v[1], v[2], 1); }
+/* the rest of the 24 glRasterPos forms GL 1.1 has (Mesa's gl.h declares all) */
+void glRasterPos2sv(const GLshort *v) { raster_pos(v[0], v[1], 0, 1); }
+void glRasterPos3s(GLshort x, GLshort y, GLshort z) { raster_pos(x, y, z, 1); }
+void glRasterPos3sv(const GLshort *v) { raster_pos(v[0], v[1], v[2], 1); }
+void glRasterPos3iv(const GLint *v) { raster_pos(v[0], v[1], v[2], 1); }
+void glRasterPos3dv(const GLdouble *v) { raster_pos(v[0], v[1], v[2], 1); }
+void glRasterPos4s(GLshort x, GLshort y, GLshort z, GLshort w) { raster_pos(x, y, z, w); }
+void glRasterPos4sv(const GLshort *v) { raster_pos(v[0], v[1], v[2], v[3]); }
+void glRasterPos4i(GLint x, GLint y, GLint z, GLint w) { raster_pos(x, y, z, w); }
+void glRasterPos4iv(const GLint *v) { raster_pos(v[0], v[1], v[2], v[3]); }
+void glRasterPos4fv(const GLfloat *v) { raster_pos(v[0], v[1], v[2], v[3]); }
+void glRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { raster_pos(x, y, z, w); }
+void glRasterPos4dv(const GLdouble *v) { raster_pos(v[0], v[1], v[2], v[3]); }
 void glWindowPos2i(GLint x, GLint y)
 {
     fxg.rx = (int64_t)x * 256, fxg.ry = (int64_t)y * 256;
