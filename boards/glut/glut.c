@@ -241,6 +241,22 @@ int glutCreateWindow(const char *title)
     G.created = 1;
     return 1;
 }
+int fx_glut_offscreen_window(int w, int h)
+{
+    if (G.created || w <= 0 || h <= 0)
+        return 0;
+    glutInit(NULL, NULL);
+    /* no frame limit, output file or replay of the environment: the caller
+     * owns the loop and the pictures */
+    G.env.headless = 1;
+    G.env.frames = 0;
+    G.env.out = NULL;
+    G.env.bench = 0;
+    G.env.fullscreen = 0;
+    G.rp.n = 0;
+    G.init_w = w, G.init_h = h;
+    return glutCreateWindow("fixel offscreen");
+}
 int glutCreateSubWindow(int win, int x, int y, int w, int h)
 {
     (void)win, (void)x, (void)y, (void)w, (void)h;
