@@ -499,6 +499,7 @@ static int *cap_flag(GLenum cap)
     default: return NULL;
     }
 }
+static void apply_color_material(void);
 static void set_cap(GLenum cap, int on)
 {
     if (cap >= GL_LIGHT0 && cap <= GL_LIGHT7) {
@@ -512,6 +513,8 @@ static void set_cap(GLenum cap, int on)
             update_clip();
         if (cap == GL_LIGHTING)
             fxg.nmat_dirty = 1;
+        if (cap == GL_COLOR_MATERIAL && on)
+            apply_color_material(); /* the current colour is taken at once, as in Mesa */
         return;
     }
     switch (cap) {
