@@ -185,6 +185,7 @@ static void app_event_mouse(void *u, int b, int s, int x, int y);
 static void app_event_motion(void *u, int x, int y);
 static void app_event_passive(void *u, int x, int y);
 static void app_event_wheel(void *u, int d, int x, int y);
+static void app_event_touch(void *u, int id, int x, int y, int phase);
 static void app_idle(void *u);
 static void app_close(void *u);
 static void install_app_callbacks(void);
@@ -824,6 +825,24 @@ static void app_event_wheel(void *u, int d, int x, int y)
     (void)u;
     do_wheel(d, x - G.win_x, y - G.win_y);
 }
+/* Touch: one finger is the left button (fx_input makes it so). A touch
+ * screen has no right button, so a second finger put down while the first
+ * is held opens the menu attached to the right button (else the middle
+ * one) where the first finger is; a tap on an entry then picks it, as a
+ * click does. The first finger's lift picks nothing. */
+static void app_event_touch(void *u, int id, int x, int y, int phase)
+{
+    (void)u, (void)x, (void)y;
+    if (phase != FX_TOUCH_DOWN || id == 0 || G.open_depth)
+        return;
+    int b = G.attached[GLUT_RIGHT_BUTTON] ? GLUT_RIGHT_BUTTON
+            : G.attached[GLUT_MIDDLE_BUTTON] ? GLUT_MIDDLE_BUTTON : -1;
+    if (b < 0)
+        return;
+    open_menu(G.attached[b], G.px, G.py);
+    G.menu_button = -1;
+    glutPostRedisplay();
+}
 static void app_idle(void *u)
 {
     (void)u;
@@ -1053,6 +1072,7 @@ static void install_app_callbacks(void)
     cb.motion = app_event_motion;
     cb.passive_motion = app_event_passive;
     cb.wheel = app_event_wheel;
+    cb.touch = app_event_touch;
     cb.close = app_close;
     cb.idle = G.idle ? app_idle : NULL;
     fx_app_set_callbacks(G.app, &cb, NULL);

@@ -155,6 +155,50 @@ static int course_main(int argc, char **argv)
     return 0;
 }
 
+/* ---- a second course program: a pop-up menu with a submenu ---------- */
+
+static void menu_display(void)
+{
+    glClear(GL_COLOR_BUFFER_BIT);
+    glFlush();
+    if (++frames == 1)
+        printf("window %d %d %d %d %d %d\n", glutGet(GLUT_WINDOW_X), glutGet(GLUT_WINDOW_Y),
+               glutGet(GLUT_WINDOW_WIDTH), glutGet(GLUT_WINDOW_HEIGHT), glutGet(GLUT_SCREEN_WIDTH),
+               glutGet(GLUT_SCREEN_HEIGHT));
+    printf("display %d\n", frames);
+    fflush(stdout);
+}
+
+static void menu_pick(int value)
+{
+    printf("menu %d %d\n", value, glutGetMenu());
+    fflush(stdout);
+    if (value == 99)
+        exit(0);
+    glutPostRedisplay();
+}
+
+static int menu_main(int argc, char **argv)
+{
+    glutInit(&argc, argv);
+    glutInitDisplayMode(GLUT_SINGLE | GLUT_RGB);
+    glutInitWindowSize(320, 240);
+    glutInitWindowPosition(40, 30);
+    glutCreateWindow("menu");
+    glutDisplayFunc(menu_display);
+    int size = glutCreateMenu(menu_pick);
+    glutAddMenuEntry("Small", 10);
+    glutAddMenuEntry("Large", 11);
+    glutCreateMenu(menu_pick);
+    glutAddMenuEntry("Red", 1);
+    glutAddMenuEntry("Green", 2);
+    glutAddSubMenu("Size", size);
+    glutAddMenuEntry("Quit", 99);
+    glutAttachMenu(GLUT_RIGHT_BUTTON);
+    glutMainLoop();
+    return 0;
+}
+
 /* ---- the driver ---------------------------------------------------------- */
 
 static struct libevdev_uinput *mouse_dev, *kbd_dev;
@@ -247,6 +291,7 @@ static winfo read_window(void)
     return w;
 }
 
+static int (*course)(int, char **) = course_main;
 static pid_t start_course(const char *const *env, int cw, int ch)
 {
     int fds[2];
@@ -260,8 +305,8 @@ static pid_t start_course(const char *const *env, int cw, int ch)
         for (int i = 0; env[i]; i += 2)
             setenv(env[i], env[i + 1], 1);
         course_w = cw, course_h = ch;
-        char *argv[] = {"polyline", NULL};
-        _exit(course_main(1, argv));
+        char *argv[] = {"course", NULL};
+        _exit(course(1, argv));
     }
     close(fds[1]);
     if (from_child >= 0)
@@ -282,6 +327,125 @@ static int finish(pid_t pid, int ms)
     kill(pid, SIGTERM);
     waitpid(pid, &st, 0);
     return -1;
+}
+
+/* The pointer to window point (X, Y): sx, sy track it on the screen. */
+#define GOTO(X, Y) (move((X) + w.x - sx, (Y) + w.y - sy), sx = (X) + w.x, sy = (Y) + w.y)
+
+/* ---- menus by mouse, keys and touch ---- */
+static struct libevdev_uinput *touch_dev;
+static void rbutton(int down)
+{
+    ev(mouse_dev, EV_KEY, BTN_RIGHT, down);
+    syn(mouse_dev);
+}
+/* A contact in slot at screen (sx, sy) of a W x H screen (0..4095 on both
+ * axes, rounded so fixel's scaling lands on that pixel); slot 0 also moves
+ * the legacy axes and holds BTN_TOUCH, as a kernel driver reports it. */
+static void touch(int slot, int down, int sx, int sy, int W, int H)
+{
+    ev(touch_dev, EV_ABS, ABS_MT_SLOT, slot);
+    if (down) {
+        int rx = (sx * 4095 * 2 + (W - 1)) / (2 * (W - 1)), ry = (sy * 4095 * 2 + (H - 1)) / (2 * (H - 1));
+        ev(touch_dev, EV_ABS, ABS_MT_TRACKING_ID, 100 + slot);
+        ev(touch_dev, EV_ABS, ABS_MT_POSITION_X, rx);
+        ev(touch_dev, EV_ABS, ABS_MT_POSITION_Y, ry);
+        if (slot == 0) {
+            ev(touch_dev, EV_ABS, ABS_X, rx);
+            ev(touch_dev, EV_ABS, ABS_Y, ry);
+            ev(touch_dev, EV_KEY, BTN_TOUCH, 1);
+        }
+    } else {
+        ev(touch_dev, EV_ABS, ABS_MT_TRACKING_ID, -1);
+        if (slot == 0)
+            ev(touch_dev, EV_KEY, BTN_TOUCH, 0);
+    }
+    syn(touch_dev);
+}
+static void expect_menu(const char *check, int value, const char *how)
+{
+    char line[256];
+    int got = -1, id = 0;
+    if (wait_for("menu ", line, sizeof line))
+        sscanf(line, "menu %d %d", &got, &id);
+    guest_check(check, got == value && id > 0, "%s: menu callback %d (menu %d), want %d", how, got, id, value);
+}
+
+/* The layer's popup geometry (boards/glut/glut.c): opened at the pointer,
+ * entries 16 px high from 2 px below its top, a submenu opened beside its
+ * entry; the top menu here is 54 px wide ("Green": 5 x 6 + 24). Entry i's
+ * centre is at (x + 20, y + 2 + 16 i + 8). */
+static void menu_cases(void)
+{
+    course = menu_main;
+    static const char *const env[] = {NULL};
+    pid_t pid = start_course(env, 320, 240);
+    winfo w = read_window();
+    char line[256];
+    wait_for("display 1", line, sizeof line);
+    if (!w.ok) {
+        guest_check("glut-menu-mouse", 0, "no window");
+        finish(pid, 100);
+        return;
+    }
+    /* this program's pointer starts at the screen's centre: to the corner */
+    move(-20000, -20000);
+    int sx = 0, sy = 0;
+    const int mx = 100, my = 80; /* where the menu opens, window coordinates */
+    /* mouse: press right, release on the spot (the menu stays), click "Green" */
+    GOTO(mx, my);
+    rbutton(1);
+    rbutton(0);
+    GOTO(mx + 20, my + 2 + 16 * 1 + 8);
+    button(1);
+    button(0);
+    expect_menu("glut-menu-mouse", 2, "right click, then a left click on Green");
+    /* mouse into the submenu: Size opens it beside (x = 54 - 2), Large */
+    GOTO(mx, my);
+    rbutton(1);
+    rbutton(0);
+    GOTO(mx + 20, my + 2 + 16 * 2 + 8);
+    button(1);
+    button(0);
+    GOTO(mx + 52 + 20, my + 2 + 16 * 2 + 2 + 16 * 1 + 8);
+    button(1);
+    button(0);
+    expect_menu("glut-menu-submenu-mouse", 11, "Size > Large by mouse");
+    /* keys: open with the mouse, Down x3 to Size, Right, Down, Enter: Small */
+    GOTO(mx, my);
+    rbutton(1);
+    rbutton(0);
+    for (int i = 0; i < 3; i++) {
+        key(KEY_DOWN, 1);
+        key(KEY_DOWN, 0);
+    }
+    key(KEY_RIGHT, 1);
+    key(KEY_RIGHT, 0);
+    key(KEY_DOWN, 1);
+    key(KEY_DOWN, 0);
+    key(KEY_ENTER, 1);
+    key(KEY_ENTER, 0);
+    expect_menu("glut-menu-submenu-keys", 10, "Down Down Down Right Down Enter");
+    /* touch: a finger at (mx, my), a second finger opens the menu there,
+     * both lift, a tap on Red */
+    touch(0, 1, w.x + mx, w.y + my, w.sw, w.sh);
+    touch(1, 1, w.x + mx + 150, w.y + my + 100, w.sw, w.sh);
+    touch(1, 0, 0, 0, w.sw, w.sh);
+    touch(0, 0, 0, 0, w.sw, w.sh);
+    touch(0, 1, w.x + mx + 20, w.y + my + 2 + 8, w.sw, w.sh);
+    touch(0, 0, 0, 0, w.sw, w.sh);
+    expect_menu("glut-menu-touch", 1, "two fingers, then a tap on Red");
+    /* Quit by mouse: the program exits from its menu callback */
+    GOTO(mx, my);
+    rbutton(1);
+    rbutton(0);
+    GOTO(mx + 20, my + 2 + 16 * 3 + 8);
+    button(1);
+    button(0);
+    expect_menu("glut-menu-quit", 99, "Quit");
+    int st = finish(pid, 20000);
+    guest_check("glut-menu-exit", st == 0, "exit status %d", st);
+    course = course_main;
 }
 
 /* Window placement: a window larger than the screen is scaled down with its
@@ -371,8 +535,13 @@ int main(void)
     for (int k = KEY_ESC; k <= KEY_F10; k++)
         libevdev_enable_event_code(d, EV_KEY, (unsigned)k, NULL);
     libevdev_enable_event_code(d, EV_KEY, KEY_RIGHT, NULL);
+    libevdev_enable_event_code(d, EV_KEY, KEY_DOWN, NULL);
     kbd_dev = uinput_create(d);
-    if (!mouse_dev || !kbd_dev) {
+    d = libevdev_new();
+    libevdev_set_name(d, "fixel glut touch");
+    uinput_enable_multitouch(d, 4);
+    touch_dev = uinput_create(d);
+    if (!mouse_dev || !kbd_dev || !touch_dev) {
         guest_check("glut-uinput", 0, "uinput devices not created");
         return 1;
     }
@@ -397,7 +566,6 @@ int main(void)
     move(-20000, -20000);
     wait_for("passive ", line, sizeof line);
     int sx = 0, sy = 0; /* pointer on screen */
-#define GOTO(X, Y) (move((X) + w.x - sx, (Y) + w.y - sy), sx = (X) + w.x, sy = (Y) + w.y)
     GOTO(50, 60);
     expect("glut-passive", "passive 50 60");
     button(1);
@@ -466,7 +634,9 @@ int main(void)
     int st = finish(drm_pid, 20000);
     guest_check("glut-quit-key", st == 0, "exit status %d after 'q'", st);
 
+    menu_cases();
     placement_cases();
+    libevdev_uinput_destroy(touch_dev);
     libevdev_uinput_destroy(mouse_dev);
     libevdev_uinput_destroy(kbd_dev);
     return guest_failed;
