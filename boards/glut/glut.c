@@ -57,6 +57,7 @@ static struct {
     int32_t win_x, win_y; /* on screen */
     long frames;
     int redisplay, leave;
+    int on_close; /* GLUT_ACTION_ON_WINDOW_CLOSE: what the end of glutMainLoop does */
     uint64_t t0_us, vclock_us;
     unsigned mods;
     char title[128];
@@ -387,6 +388,7 @@ int glutGet(GLenum q)
     case GLUT_MENU_NUM_ITEMS: return G.cur_menu ? G.menus[G.cur_menu].n : 0;
     case GLUT_WINDOW_BORDER_WIDTH: case GLUT_WINDOW_HEADER_HEIGHT: return 0;
     case GLUT_VERSION: return 30400;
+    case GLUT_ACTION_ON_WINDOW_CLOSE: return G.on_close;
     default: return 0;
     }
 }
@@ -403,7 +405,11 @@ int glutLayerGet(GLenum q)
     (void)q;
     return 0;
 }
-void glutSetOption(GLenum o, int v) { (void)o, (void)v; }
+void glutSetOption(GLenum o, int v)
+{
+    if (o == GLUT_ACTION_ON_WINDOW_CLOSE && v >= GLUT_ACTION_EXIT && v <= GLUT_ACTION_CONTINUE_EXECUTION)
+        G.on_close = v;
+}
 int glutExtensionSupported(const char *e)
 {
     (void)e;
@@ -1087,15 +1093,18 @@ void glutMainLoop(void)
     G.leave = 0;
     if (G.headless) {
         headless_loop();
-        return;
+    } else {
+        install_app_callbacks();
+        fx_app_main_loop(G.app);
+        fx_app_close(G.app);
+        G.app = NULL;
+        if (G.close)
+            G.close();
     }
-    install_app_callbacks();
-    fx_app_main_loop(G.app);
-    fx_app_close(G.app);
-    G.app = NULL;
-    if (G.close)
-        G.close();
-    exit(0);
+    /* As freeglut: the loop's end (glutLeaveMainLoop, the window closed)
+     * exits the program unless GLUT_ACTION_ON_WINDOW_CLOSE says to return. */
+    if (G.on_close == GLUT_ACTION_EXIT)
+        exit(0);
 }
 void glutMainLoopEvent(void)
 {
