@@ -677,6 +677,24 @@ static void do_key(unsigned char k, int x, int y, int up)
 }
 static void do_special(int k, int x, int y, int up)
 {
+    if (k == FX_KEY_MENU) {
+        /* not a GLUT key: the Menu key (or a GPIO button) opens the menu
+         * attached to the right (else middle, else left) button at the
+         * pointer, or closes an open one; the program never sees it */
+        if (up)
+            return;
+        if (G.open_depth) {
+            close_menus();
+            return;
+        }
+        for (int b = GLUT_RIGHT_BUTTON; b >= GLUT_LEFT_BUTTON; b--)
+            if (G.attached[b]) {
+                open_menu(G.attached[b], x, y);
+                G.menu_button = -1;
+                return;
+            }
+        return;
+    }
     if (G.open_depth && !up) {
         int l = G.open_depth - 1, n = G.menus[G.open_menu[l]].n;
         if (k == GLUT_KEY_DOWN)

@@ -6,7 +6,8 @@
  *                      metrics against what they draw, glGet round trips
  *   layer leave-return glutLeaveMainLoop with GLUT_ACTION_CONTINUE_EXECUTION:
  *                      glutMainLoop returns (prints "returned", exit 7)
- *   layer leave-exit   the same without the option: exit(0) inside, as freeglut */
+ *   layer leave-exit   the same without the option: exit(0) inside, as freeglut
+ *   layer menu-keys    a pop-up menu opened and used with keys alone */
 #include <GL/freeglut.h>
 #include <stdio.h>
 #include <string.h>
@@ -146,6 +147,23 @@ static void leave_idle(void)
         glutPostRedisplay();
 }
 
+/* layer menu-keys: a menu with a submenu on the right button, driven by
+ * keys alone (raw evdev through the keymap: the Menu key, arrows, Enter) */
+static void menu_display(void)
+{
+    glClear(GL_COLOR_BUFFER_BIT);
+    glutSwapBuffers();
+}
+static void menu_pick(int v)
+{
+    printf("menu %d\n", v);
+    glutPostRedisplay();
+}
+static void menu_special(int k, int x, int y)
+{
+    printf("special %d %d %d\n", k, x, y);
+}
+
 int main(int argc, char **argv)
 {
     const char *mode = argc > 1 ? argv[1] : "api";
@@ -155,6 +173,17 @@ int main(int argc, char **argv)
     glutCreateWindow("layer");
     if (!strcmp(mode, "api")) {
         glutDisplayFunc(api_display);
+    } else if (!strcmp(mode, "menu-keys")) {
+        int sub = glutCreateMenu(menu_pick);
+        glutAddMenuEntry("Small", 10);
+        glutAddMenuEntry("Large", 11);
+        glutCreateMenu(menu_pick);
+        glutAddMenuEntry("Red", 1);
+        glutAddMenuEntry("Green", 2);
+        glutAddSubMenu("Size", sub);
+        glutAttachMenu(GLUT_RIGHT_BUTTON);
+        glutDisplayFunc(menu_display);
+        glutSpecialFunc(menu_special);
     } else {
         if (!strcmp(mode, "leave-return"))
             glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_CONTINUE_EXECUTION);

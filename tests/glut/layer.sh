@@ -24,5 +24,29 @@ run "$out/layer" leave-return
 judge "leave-returns" '[ "$(cat $out/rc)" = 7 ] && grep -qx "returned frames=3 action=2" "$out/run.log"'
 run "$out/layer" leave-exit
 judge "leave-exits" '[ "$(cat $out/rc)" = 0 ] && ! grep -q returned "$out/run.log"'
+# Keys alone (raw evdev: 127 is the Menu key, 108 Down, 106 Right, 28
+# Enter): Menu, Down, Down, Enter picks Green; Menu, Down x3, Right, Down,
+# Down, Enter picks Large in the submenu; Menu twice opens and closes, and
+# F5 then reaches the program (the Menu key itself never does).
+cat > "$out/menu-keys.txt" <<'R'
+frame 1: evdev keyboard 1 127 1
+frame 1: evdev keyboard 1 127 0
+frame 1: evdev keyboard 1 108 1
+frame 1: evdev keyboard 1 108 1
+frame 1: evdev keyboard 1 28 1
+frame 2: evdev keyboard 1 127 1
+frame 2: evdev keyboard 1 108 1
+frame 2: evdev keyboard 1 108 1
+frame 2: evdev keyboard 1 108 1
+frame 2: evdev keyboard 1 106 1
+frame 2: evdev keyboard 1 108 1
+frame 2: evdev keyboard 1 108 1
+frame 2: evdev keyboard 1 28 1
+frame 3: evdev keyboard 1 127 1
+frame 3: evdev keyboard 1 127 1
+frame 3: evdev keyboard 1 63 1
+R
+run env FIXEL_GLUT_FRAMES=4 FIXEL_GLUT_REPLAY="$out/menu-keys.txt" "$out/layer" menu-keys
+judge "menu-keys" '[ "$(cat $out/rc)" = 0 ] && [ "$(grep -E "^(menu|special)" "$out/run.log" | tr "\n" " ")" = "menu 2 menu 11 special 5 0 0 " ]'
 echo "glut-layer: $P passed, $F failed"
 [ $F -eq 0 ]

@@ -426,6 +426,16 @@ static void menu_cases(void)
     key(KEY_ENTER, 1);
     key(KEY_ENTER, 0);
     expect_menu("glut-menu-submenu-keys", 10, "Down Down Down Right Down Enter");
+    /* keys alone: the Menu key opens it at the pointer, Down Down Enter */
+    key(KEY_COMPOSE, 1);
+    key(KEY_COMPOSE, 0);
+    for (int i = 0; i < 2; i++) {
+        key(KEY_DOWN, 1);
+        key(KEY_DOWN, 0);
+    }
+    key(KEY_ENTER, 1);
+    key(KEY_ENTER, 0);
+    expect_menu("glut-menu-keys-only", 2, "Menu key, Down Down Enter");
     /* touch: a finger at (mx, my), a second finger opens the menu there,
      * both lift, a tap on Red */
     touch(0, 1, w.x + mx, w.y + my, w.sw, w.sh);
@@ -536,6 +546,7 @@ int main(void)
         libevdev_enable_event_code(d, EV_KEY, (unsigned)k, NULL);
     libevdev_enable_event_code(d, EV_KEY, KEY_RIGHT, NULL);
     libevdev_enable_event_code(d, EV_KEY, KEY_DOWN, NULL);
+    libevdev_enable_event_code(d, EV_KEY, KEY_COMPOSE, NULL);
     kbd_dev = uinput_create(d);
     d = libevdev_new();
     libevdev_set_name(d, "fixel glut touch");
