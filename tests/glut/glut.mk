@@ -36,8 +36,9 @@ bench: bench-glut
 
 # fixel's layer alone (tests/glut/layer.sh): glutGet, text metrics, glGet,
 # how glutMainLoop ends after glutLeaveMainLoop. About 2 s; part of make test.
+# With SAN=1 the program is built with the sanitizers too.
 test-glut-layer: $(LIB_A) $(GLUT_LIB)
-	@CC="$(CC)" GLUT_FIXEL_LIBS="$(LDLIBS)" sh tests/glut/layer.sh $(BUILD)
+	@CC="$(CC) $(SANFLAGS)" GLUT_FIXEL_LIBS="$(LDLIBS)" sh tests/glut/layer.sh $(BUILD)
 .PHONY: test-glut-layer
 TEST_SUITES += "$(MAKE) --no-print-directory -s test-glut-layer"
 
