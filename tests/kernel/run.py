@@ -94,6 +94,14 @@ class Renderer:
         return bytes(base)
 
 
+def first_difference(got, want, w, h):
+    """How two w x h RGB pictures of the same size differ, for a check's detail."""
+    bad = [i for i in range(0, len(want), 3) if got[i:i + 3] != want[i:i + 3]]
+    i = bad[0] // 3
+    return "%d of %d pixels differ, first at (%d,%d) got %s want %s" % (
+        len(bad), w * h, i % w, i // w, got[bad[0]:bad[0] + 3].hex(), want[bad[0]:bad[0] + 3].hex())
+
+
 def rotate(px, w, h, rotation):
     """Logical w x h image to the physical screen; rotation is clockwise and
     must agree with fixel/display.h: logical (x, y) lands at
@@ -206,10 +214,7 @@ class Guest:
             elif negate:
                 detail = "screen still shows %s" % spec
             else:
-                bad = [i for i in range(0, len(want), 3) if got[i:i + 3] != want[i:i + 3]]
-                i = bad[0] // 3
-                detail = "%d of %d pixels differ, first at (%d,%d) got %s want %s" % (
-                    len(bad), w * h, i % w, i // w, got[bad[0]:bad[0] + 3].hex(), want[bad[0]:bad[0] + 3].hex())
+                detail = first_difference(got, want, w, h)
             time.sleep(0.05)
         with open(path + ".expected.ppm", "wb") as f:
             f.write(b"P6\n%d %d\n255\n" % (w, h) + want)
@@ -250,10 +255,7 @@ class Guest:
         if len(got) != len(want):
             detail = "%d bytes, want %d" % (len(got), len(want))
         else:
-            bad = [i for i in range(0, len(want), 3) if got[i:i + 3] != want[i:i + 3]]
-            i = bad[0] // 3
-            detail = "%d of %d pixels differ, first at (%d,%d) got %s want %s" % (
-                len(bad), w * h, i % w, i // w, got[bad[0]:bad[0] + 3].hex(), want[bad[0]:bad[0] + 3].hex())
+            detail = first_difference(got, want, w, h)
         self.check(name, False, "%s (%s.ppm)" % (detail, path))
         return "FAIL"
 
@@ -277,10 +279,7 @@ class Guest:
                 self.check(name, True, "%d pixels equal (the %dx%d rectangle at (%d,%d), dump %d)" % (
                     w * h, w, h, x0, y0, tries))
                 return "PASS"
-            bad = [i for i in range(0, len(got), 3) if crop[i:i + 3] != got[i:i + 3]]
-            i = bad[0] // 3
-            detail = "%d of %d pixels differ, first at (%d,%d) of the rectangle: screen %s, want %s" % (
-                len(bad), w * h, i % w, i // w, crop[bad[0]:bad[0] + 3].hex(), got[bad[0]:bad[0] + 3].hex())
+            detail = first_difference(crop, got, w, h) + " in the rectangle"
             time.sleep(0.05)
         with open(path + ".expected.ppm", "wb") as f:
             f.write(b"P6\n%d %d\n255\n" % (w, h) + got)

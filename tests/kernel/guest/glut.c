@@ -331,6 +331,16 @@ static int finish(pid_t pid, int ms)
 
 /* The pointer to window point (X, Y): sx, sy track it on the screen. */
 #define GOTO(X, Y) (move((X) + w.x - sx, (Y) + w.y - sy), sx = (X) + w.x, sy = (Y) + w.y)
+/* A right click (opens the menu), a left click, at window point (X, Y). */
+#define RIGHT_CLICK(X, Y) (GOTO(X, Y), rbutton(1), rbutton(0))
+#define LEFT_CLICK(X, Y) (GOTO(X, Y), button(1), button(0))
+static void tap_key(unsigned code, int times)
+{
+    for (int i = 0; i < times; i++) {
+        key(code, 1);
+        key(code, 0);
+    }
+}
 
 /* ---- menus by mouse, keys and touch ---- */
 static struct libevdev_uinput *touch_dev;
@@ -393,48 +403,25 @@ static void menu_cases(void)
     int sx = 0, sy = 0;
     const int mx = 100, my = 80; /* where the menu opens, window coordinates */
     /* mouse: press right, release on the spot (the menu stays), click "Green" */
-    GOTO(mx, my);
-    rbutton(1);
-    rbutton(0);
-    GOTO(mx + 20, my + 2 + 16 * 1 + 8);
-    button(1);
-    button(0);
+    RIGHT_CLICK(mx, my);
+    LEFT_CLICK(mx + 20, my + 2 + 16 * 1 + 8);
     expect_menu("glut-menu-mouse", 2, "right click, then a left click on Green");
     /* mouse into the submenu: Size opens it beside (x = 54 - 2), Large */
-    GOTO(mx, my);
-    rbutton(1);
-    rbutton(0);
-    GOTO(mx + 20, my + 2 + 16 * 2 + 8);
-    button(1);
-    button(0);
-    GOTO(mx + 52 + 20, my + 2 + 16 * 2 + 2 + 16 * 1 + 8);
-    button(1);
-    button(0);
+    RIGHT_CLICK(mx, my);
+    LEFT_CLICK(mx + 20, my + 2 + 16 * 2 + 8);
+    LEFT_CLICK(mx + 52 + 20, my + 2 + 16 * 2 + 2 + 16 * 1 + 8);
     expect_menu("glut-menu-submenu-mouse", 11, "Size > Large by mouse");
     /* keys: open with the mouse, Down x3 to Size, Right, Down, Enter: Small */
-    GOTO(mx, my);
-    rbutton(1);
-    rbutton(0);
-    for (int i = 0; i < 3; i++) {
-        key(KEY_DOWN, 1);
-        key(KEY_DOWN, 0);
-    }
-    key(KEY_RIGHT, 1);
-    key(KEY_RIGHT, 0);
-    key(KEY_DOWN, 1);
-    key(KEY_DOWN, 0);
-    key(KEY_ENTER, 1);
-    key(KEY_ENTER, 0);
+    RIGHT_CLICK(mx, my);
+    tap_key(KEY_DOWN, 3);
+    tap_key(KEY_RIGHT, 1);
+    tap_key(KEY_DOWN, 1);
+    tap_key(KEY_ENTER, 1);
     expect_menu("glut-menu-submenu-keys", 10, "Down Down Down Right Down Enter");
     /* keys alone: the Menu key opens it at the pointer, Down Down Enter */
-    key(KEY_COMPOSE, 1);
-    key(KEY_COMPOSE, 0);
-    for (int i = 0; i < 2; i++) {
-        key(KEY_DOWN, 1);
-        key(KEY_DOWN, 0);
-    }
-    key(KEY_ENTER, 1);
-    key(KEY_ENTER, 0);
+    tap_key(KEY_COMPOSE, 1);
+    tap_key(KEY_DOWN, 2);
+    tap_key(KEY_ENTER, 1);
     expect_menu("glut-menu-keys-only", 2, "Menu key, Down Down Enter");
     /* touch: a finger at (mx, my), a second finger opens the menu there,
      * both lift, a tap on Red */
@@ -446,12 +433,8 @@ static void menu_cases(void)
     touch(0, 0, 0, 0, w.sw, w.sh);
     expect_menu("glut-menu-touch", 1, "two fingers, then a tap on Red");
     /* Quit by mouse: the program exits from its menu callback */
-    GOTO(mx, my);
-    rbutton(1);
-    rbutton(0);
-    GOTO(mx + 20, my + 2 + 16 * 3 + 8);
-    button(1);
-    button(0);
+    RIGHT_CLICK(mx, my);
+    LEFT_CLICK(mx + 20, my + 2 + 16 * 3 + 8);
     expect_menu("glut-menu-quit", 99, "Quit");
     int st = finish(pid, 20000);
     guest_check("glut-menu-exit", st == 0, "exit status %d", st);
