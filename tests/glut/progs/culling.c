@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The ten GLUT solids with back faces culled (GL_CCW fronts, as GLUT
  * draws them; the teapot is GL_CW in freeglut, so it is drawn with
- * glFrontFace(GL_CW)), each one turned a little. */
+ * glFrontFace(GL_CW)), each one turned a little, and a wire cylinder. */
 #include <GL/freeglut.h>
 
 void place(float x, float y)
@@ -22,6 +22,9 @@ void display(void)
     glColor3f(0.9, 0.5, 0.1); place(0.0, 0.0);
     glFrontFace(GL_CW); glutSolidTeapot(0.6); glFrontFace(GL_CCW);
     glColor3f(0.5, 0.5, 1.0); place(-4.6, 0.0); glRotatef(-90, 1, 0, 0); glutSolidCylinder(0.4, 1.0, 16, 2);
+    glDisable(GL_LIGHTING); /* wire solids are lines: culling leaves them */
+    glColor3f(1.0, 1.0, 1.0); place(4.6, 0.0); glRotatef(-90, 1, 0, 0); glutWireCylinder(0.4, 1.0, 12, 3);
+    glEnable(GL_LIGHTING);
     glColor3f(0.2, 0.9, 0.9); place(2.6, 0.0);  glutSolidIcosahedron();
     glColor3f(0.9, 0.2, 0.9); place(-2.6, -2.0); glScalef(0.45, 0.45, 0.45); glutSolidDodecahedron();
     glColor3f(0.8, 0.8, 0.8); place(0.0, -2.0); glutSolidOctahedron();
