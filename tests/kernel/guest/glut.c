@@ -13,7 +13,8 @@
  * compares with Mesa) writes its window, and the host's screendump must
  * show exactly that picture where the window is. Also checked: the window
  * position given by glutInitWindowPosition, a window larger than the screen
- * scaled down with its aspect and centred, FIXEL_GLUT_FULLSCREEN=1. */
+ * scaled down with its aspect and centred, FIXEL_GLUT_FULLSCREEN=1 and
+ * glutFullScreen(). */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
@@ -36,7 +37,7 @@
 #define MAXP 64
 static int px[MAXP], py[MAXP], np;
 static int winW = 320, winH = 240, frames, dragging, closed, red;
-static int course_w = 320, course_h = 240;
+static int course_w = 320, course_h = 240, course_fullscreen;
 
 static void display(void)
 {
@@ -142,6 +143,8 @@ static int course_main(int argc, char **argv)
     glutInitWindowSize(course_w, course_h);
     glutInitWindowPosition(40, 30);
     glutCreateWindow("polyline");
+    if (course_fullscreen)
+        glutFullScreen();
     glClearColor(1.0f, 1.0f, 0.9f, 1.0f);
     glutDisplayFunc(display);
     glutReshapeFunc(reshape);
@@ -442,7 +445,8 @@ static void menu_cases(void)
 }
 
 /* Window placement: a window larger than the screen is scaled down with its
- * aspect and centred; FIXEL_GLUT_FULLSCREEN=1 takes the whole screen. */
+ * aspect and centred; FIXEL_GLUT_FULLSCREEN=1 and glutFullScreen() take the
+ * whole screen. */
 static void placement_cases(void)
 {
     static const char *const big_env[] = {"FIXEL_GLUT_FRAMES", "1", NULL};
@@ -467,6 +471,13 @@ static void placement_cases(void)
     st = finish(pid, 20000);
     guest_check("glut-fullscreen-env", w.ok && w.w == w.sw && w.h == w.sh && w.x == 0 && w.y == 0 && st == 0,
                 "FIXEL_GLUT_FULLSCREEN=1: %dx%d at (%d,%d) on %dx%d; exit %d", w.w, w.h, w.x, w.y, w.sw, w.sh, st);
+    course_fullscreen = 1;
+    pid = start_course(big_env, 320, 240);
+    w = read_window();
+    st = finish(pid, 20000);
+    course_fullscreen = 0;
+    guest_check("glut-fullscreen-call", w.ok && w.w == w.sw && w.h == w.sh && w.x == 0 && w.y == 0 && st == 0,
+                "glutFullScreen(): %dx%d at (%d,%d) on %dx%d; exit %d", w.w, w.h, w.x, w.y, w.sw, w.sh, st);
 }
 
 /* The events of the DRM run as a replay file (window coordinates), for the
