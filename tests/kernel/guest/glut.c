@@ -181,6 +181,21 @@ static void menu_pick(int value)
     glutPostRedisplay();
 }
 
+static void menu_timer(int value)
+{
+    printf("timer %d\n", value);
+    fflush(stdout);
+}
+static int idles;
+static void menu_idle(void)
+{
+    if (++idles == 3) {
+        glutIdleFunc(NULL); /* the loop goes back to sleeping on input */
+        printf("idle %d\n", idles);
+        fflush(stdout);
+    }
+}
+
 static int menu_main(int argc, char **argv)
 {
     glutInit(&argc, argv);
@@ -198,6 +213,8 @@ static int menu_main(int argc, char **argv)
     glutAddSubMenu("Size", size);
     glutAddMenuEntry("Quit", 99);
     glutAttachMenu(GLUT_RIGHT_BUTTON);
+    glutTimerFunc(50, menu_timer, 5);
+    glutIdleFunc(menu_idle);
     glutMainLoop();
     return 0;
 }
@@ -396,6 +413,15 @@ static void menu_cases(void)
     winfo w = read_window();
     char line[256];
     wait_for("display 1", line, sizeof line);
+    /* the timer and the idle callback run on the display's loop too */
+    int timer = -1, idle = -1;
+    while ((timer < 0 || idle < 0) && next_line(line, sizeof line, 20000)) {
+        printf("  glut child: %s\n", line);
+        sscanf(line, "timer %d", &timer);
+        sscanf(line, "idle %d", &idle);
+    }
+    guest_check("glut-timer", timer == 5, "glutTimerFunc(50, f, 5): f(%d)", timer);
+    guest_check("glut-idle", idle == 3, "idle callback ran %d times, then glutIdleFunc(NULL)", idle);
     if (!w.ok) {
         guest_check("glut-menu-mouse", 0, "no window");
         finish(pid, 100);
