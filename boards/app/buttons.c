@@ -19,7 +19,7 @@ static const struct {
     {"right", FX_KEY_RIGHT, 1},   {"pageup", FX_KEY_PAGE_UP, 1}, {"pagedown", FX_KEY_PAGE_DOWN, 1},
     {"home", FX_KEY_HOME, 1},     {"end", FX_KEY_END, 1},     {"insert", FX_KEY_INSERT, 1},
     {"enter", 13, 0},             {"esc", 27, 0},             {"space", ' ', 0},
-    {"tab", 9, 0},
+    {"tab", 9, 0},                {"menu", FX_KEY_MENU, 1},
 };
 
 int fx_gpio_parse_buttons(char *buf, fx_gpio_button *out, int max)

@@ -133,7 +133,8 @@ static void record(int op, int n, const double *a)
         l->pool = p, l->cappool = nc;
     }
     l->rec[l->nrec++] = (fxg_rec){(uint16_t)op, (uint16_t)n, (uint32_t)l->npool};
-    memcpy(l->pool + l->npool, a, (size_t)n * sizeof *a);
+    if (n) /* a call of no arguments before the pool exists: memcpy(NULL, ...) is undefined */
+        memcpy(l->pool + l->npool, a, (size_t)n * sizeof *a);
     l->npool += n;
 }
 
@@ -499,6 +500,7 @@ static int *cap_flag(GLenum cap)
     default: return NULL;
     }
 }
+static void apply_color_material(void);
 static void set_cap(GLenum cap, int on)
 {
     if (cap >= GL_LIGHT0 && cap <= GL_LIGHT7) {
@@ -512,6 +514,8 @@ static void set_cap(GLenum cap, int on)
             update_clip();
         if (cap == GL_LIGHTING)
             fxg.nmat_dirty = 1;
+        if (cap == GL_COLOR_MATERIAL && on)
+            apply_color_material(); /* the current colour is taken at once, as in Mesa */
         return;
     }
     switch (cap) {
@@ -1463,6 +1467,19 @@ void glRasterPos2fv(const GLfloat *v) { raster_pos(v[0], v[1], 0, 1); }
 void glRasterPos2iv(const GLint *v) { raster_pos(v[0], v[1], 0, 1); }
 void glRasterPos2dv(const GLdouble *v) { raster_pos(v[0], v[1], 0, 1); }
 void glRasterPos3fv(const GLfloat *v) { raster_pos(v[0], v[1], v[2], 1); }
+/* the rest of the 24 glRasterPos forms GL 1.1 has (Mesa's gl.h declares all) */
+void glRasterPos2sv(const GLshort *v) { raster_pos(v[0], v[1], 0, 1); }
+void glRasterPos3s(GLshort x, GLshort y, GLshort z) { raster_pos(x, y, z, 1); }
+void glRasterPos3sv(const GLshort *v) { raster_pos(v[0], v[1], v[2], 1); }
+void glRasterPos3iv(const GLint *v) { raster_pos(v[0], v[1], v[2], 1); }
+void glRasterPos3dv(const GLdouble *v) { raster_pos(v[0], v[1], v[2], 1); }
+void glRasterPos4s(GLshort x, GLshort y, GLshort z, GLshort w) { raster_pos(x, y, z, w); }
+void glRasterPos4sv(const GLshort *v) { raster_pos(v[0], v[1], v[2], v[3]); }
+void glRasterPos4i(GLint x, GLint y, GLint z, GLint w) { raster_pos(x, y, z, w); }
+void glRasterPos4iv(const GLint *v) { raster_pos(v[0], v[1], v[2], v[3]); }
+void glRasterPos4fv(const GLfloat *v) { raster_pos(v[0], v[1], v[2], v[3]); }
+void glRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { raster_pos(x, y, z, w); }
+void glRasterPos4dv(const GLdouble *v) { raster_pos(v[0], v[1], v[2], v[3]); }
 void glWindowPos2i(GLint x, GLint y)
 {
     fxg.rx = (int64_t)x * 256, fxg.ry = (int64_t)y * 256;

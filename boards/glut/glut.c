@@ -57,6 +57,7 @@ static struct {
     int32_t win_x, win_y; /* on screen */
     long frames;
     int redisplay, leave;
+    int on_close; /* GLUT_ACTION_ON_WINDOW_CLOSE: what the end of glutMainLoop does */
     uint64_t t0_us, vclock_us;
     unsigned mods;
     char title[128];
@@ -185,6 +186,7 @@ static void app_event_mouse(void *u, int b, int s, int x, int y);
 static void app_event_motion(void *u, int x, int y);
 static void app_event_passive(void *u, int x, int y);
 static void app_event_wheel(void *u, int d, int x, int y);
+static void app_event_touch(void *u, int id, int x, int y, int phase);
 static void app_idle(void *u);
 static void app_close(void *u);
 static void install_app_callbacks(void);
@@ -240,6 +242,22 @@ int glutCreateWindow(const char *title)
         install_app_callbacks();
     G.created = 1;
     return 1;
+}
+int fx_glut_offscreen_window(int w, int h)
+{
+    if (G.created || w <= 0 || h <= 0)
+        return 0;
+    glutInit(NULL, NULL);
+    /* no frame limit, output file or replay of the environment: the caller
+     * owns the loop and the pictures */
+    G.env.headless = 1;
+    G.env.frames = 0;
+    G.env.out = NULL;
+    G.env.bench = 0;
+    G.env.fullscreen = 0;
+    G.rp.n = 0;
+    G.init_w = w, G.init_h = h;
+    return glutCreateWindow("fixel offscreen");
 }
 int glutCreateSubWindow(int win, int x, int y, int w, int h)
 {
@@ -370,6 +388,7 @@ int glutGet(GLenum q)
     case GLUT_MENU_NUM_ITEMS: return G.cur_menu ? G.menus[G.cur_menu].n : 0;
     case GLUT_WINDOW_BORDER_WIDTH: case GLUT_WINDOW_HEADER_HEIGHT: return 0;
     case GLUT_VERSION: return 30400;
+    case GLUT_ACTION_ON_WINDOW_CLOSE: return G.on_close;
     default: return 0;
     }
 }
@@ -386,7 +405,11 @@ int glutLayerGet(GLenum q)
     (void)q;
     return 0;
 }
-void glutSetOption(GLenum o, int v) { (void)o, (void)v; }
+void glutSetOption(GLenum o, int v)
+{
+    if (o == GLUT_ACTION_ON_WINDOW_CLOSE && v >= GLUT_ACTION_EXIT && v <= GLUT_ACTION_CONTINUE_EXECUTION)
+        G.on_close = v;
+}
 int glutExtensionSupported(const char *e)
 {
     (void)e;
@@ -654,6 +677,24 @@ static void do_key(unsigned char k, int x, int y, int up)
 }
 static void do_special(int k, int x, int y, int up)
 {
+    if (k == FX_KEY_MENU) {
+        /* not a GLUT key: the Menu key (or a GPIO button) opens the menu
+         * attached to the right (else middle, else left) button at the
+         * pointer, or closes an open one; the program never sees it */
+        if (up)
+            return;
+        if (G.open_depth) {
+            close_menus();
+            return;
+        }
+        for (int b = GLUT_RIGHT_BUTTON; b >= GLUT_LEFT_BUTTON; b--)
+            if (G.attached[b]) {
+                open_menu(G.attached[b], x, y);
+                G.menu_button = -1;
+                return;
+            }
+        return;
+    }
     if (G.open_depth && !up) {
         int l = G.open_depth - 1, n = G.menus[G.open_menu[l]].n;
         if (k == GLUT_KEY_DOWN)
@@ -807,6 +848,24 @@ static void app_event_wheel(void *u, int d, int x, int y)
 {
     (void)u;
     do_wheel(d, x - G.win_x, y - G.win_y);
+}
+/* Touch: one finger is the left button (fx_input makes it so). A touch
+ * screen has no right button, so a second finger put down while the first
+ * is held opens the menu attached to the right button (else the middle
+ * one) where the first finger is; a tap on an entry then picks it, as a
+ * click does. The first finger's lift picks nothing. */
+static void app_event_touch(void *u, int id, int x, int y, int phase)
+{
+    (void)u, (void)x, (void)y;
+    if (phase != FX_TOUCH_DOWN || id == 0 || G.open_depth)
+        return;
+    int b = G.attached[GLUT_RIGHT_BUTTON] ? GLUT_RIGHT_BUTTON
+            : G.attached[GLUT_MIDDLE_BUTTON] ? GLUT_MIDDLE_BUTTON : -1;
+    if (b < 0)
+        return;
+    open_menu(G.attached[b], G.px, G.py);
+    G.menu_button = -1;
+    glutPostRedisplay();
 }
 static void app_idle(void *u)
 {
@@ -1037,6 +1096,7 @@ static void install_app_callbacks(void)
     cb.motion = app_event_motion;
     cb.passive_motion = app_event_passive;
     cb.wheel = app_event_wheel;
+    cb.touch = app_event_touch;
     cb.close = app_close;
     cb.idle = G.idle ? app_idle : NULL;
     fx_app_set_callbacks(G.app, &cb, NULL);
@@ -1051,15 +1111,18 @@ void glutMainLoop(void)
     G.leave = 0;
     if (G.headless) {
         headless_loop();
-        return;
+    } else {
+        install_app_callbacks();
+        fx_app_main_loop(G.app);
+        fx_app_close(G.app);
+        G.app = NULL;
+        if (G.close)
+            G.close();
     }
-    install_app_callbacks();
-    fx_app_main_loop(G.app);
-    fx_app_close(G.app);
-    G.app = NULL;
-    if (G.close)
-        G.close();
-    exit(0);
+    /* As freeglut: the loop's end (glutLeaveMainLoop, the window closed)
+     * exits the program unless GLUT_ACTION_ON_WINDOW_CLOSE says to return. */
+    if (G.on_close == GLUT_ACTION_EXIT)
+        exit(0);
 }
 void glutMainLoopEvent(void)
 {

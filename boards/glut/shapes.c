@@ -18,7 +18,9 @@
  *     line loop per face (no diagonals);
  *   - the teapot: Newell's 32 patches (fixel's mesh data) sampled 8 x 8
  *     (solid) or 10 x 10 (wire, line strips both ways), scaled into the
- *     vertices (so unit normals stay unit), centred at 1.575 like freeglut.
+ *     vertices (so unit normals stay unit), centred at 1.575 like freeglut,
+ *     its triangles clockwise seen from outside as freeglut's are (every
+ *     other solid is counter-clockwise, as GL's default front face).
  * Coordinates are computed in float as freeglut does (sin/cos tables, then
  * products), and handed to GL with glNormal3f/glVertex3f like a program. */
 #include <math.h>
@@ -449,7 +451,23 @@ static void teapot(double size, int wire)
     glPushMatrix();
     glTranslated(0, -1.575 * 0.5 * size, 0);
     if (!wire) {
-        fxg_draw_tris_q16(&m->pos[0].x, &m->nrm[0].x, m->tri, m->ntris, 0);
+        /* freeglut's teapot faces are clockwise seen from outside (its
+         * patches run the other way from fixel's mesh): a program culls it
+         * with glFrontFace(GL_CW), so each triangle goes in reversed */
+        static uint32_t *rev;
+        static int32_t rev_n;
+        static const uint32_t *rev_of;
+        if (rev_of != m->tri || rev_n != m->ntris) {
+            uint32_t *r = realloc(rev, (size_t)m->ntris * 3 * sizeof *r);
+            if (!r) {
+                glPopMatrix();
+                return;
+            }
+            for (int32_t t = 0; t < m->ntris; t++)
+                r[3 * t] = m->tri[3 * t], r[3 * t + 1] = m->tri[3 * t + 2], r[3 * t + 2] = m->tri[3 * t + 1];
+            rev = r, rev_n = m->ntris, rev_of = m->tri;
+        }
+        fxg_draw_tris_q16(&m->pos[0].x, &m->nrm[0].x, rev, m->ntris, 0);
     } else {
         const int32_t *pos = &m->pos[0].x, *nrm = &m->nrm[0].x;
         int side = n + 1, per = side * side;

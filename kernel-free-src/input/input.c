@@ -386,6 +386,8 @@ int fx_keymap_us(unsigned code, unsigned mods, int caps)
     case 109: return -FX_KEY_PAGE_DOWN;
     case 110: return -FX_KEY_INSERT;
     case 111: return 127; /* Delete, as GLUT reports it */
+    case 127:             /* KEY_COMPOSE: the Menu key beside the right Ctrl */
+    case 139: return -FX_KEY_MENU; /* KEY_MENU */
     case 96: return 13;   /* keypad Enter */
     case 98: return '/';
     case 74: return '-';

@@ -52,6 +52,8 @@ for spec in "rpi4 aarch64-linux-gnu- aarch64-linux-gnu qemu-aarch64-static -ffre
         [ -x build/tests/golden ] || make --no-print-directory -j2 test-bins > /dev/null 2>&1
         run_suite "$board golden" build/tests/golden --dir tests/golden --out build/$board/golden --compare-ppm build/$board/golden-ppm
     fi
+    # The GLUT layer's course programs: the same frames as on x86-64.
+    run_suite "$board glut frames" sh tests/arm/glut-frames.sh "$board" "$cross" $qemu
     FX_FS_FLAGS="$fsflags" run_suite "$board integer-only core" \
         sh tests/check-freestanding.sh "${cross}gcc" "${cross}nm" "build/$board/freestanding" $(make --no-print-directory -s print-CORE_SRC)
 done

@@ -25,6 +25,9 @@ FX_TEST(gpio_button_spec_parsing)
     char anychip[] = ":GPIO17=up/low";
     FX_CHECK_EQ(fx_gpio_parse_buttons(anychip, b, 8), 1);
     FX_CHECK(b[0].chip == NULL && !strcmp(b[0].name, "GPIO17") && b[0].active_low);
+    char menu[] = "c:5=menu"; /* opens a GLUT program's pop-up menu */
+    FX_CHECK_EQ(fx_gpio_parse_buttons(menu, b, 8), 1);
+    FX_CHECK(b[0].special && b[0].key == FX_KEY_MENU);
     char many[] = "c:1=a,c:2=b,c:3=c";
     FX_CHECK(fx_gpio_parse_buttons(many, b, 2) < 0);
 }

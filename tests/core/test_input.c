@@ -192,6 +192,8 @@ FX_TEST(keymap_us_layout)
     FX_CHECK_EQ(fx_keymap_us(2, FX_MOD_SHIFT, 1), '!'); /* caps does not shift digits */
     FX_CHECK_EQ(fx_keymap_us(46, FX_MOD_CTRL, 0), 3);   /* Ctrl-C */
     FX_CHECK_EQ(fx_keymap_us(28, 0, 0), 13);
+    FX_CHECK_EQ(fx_keymap_us(127, 0, 0), -FX_KEY_MENU); /* KEY_COMPOSE, the Menu key */
+    FX_CHECK_EQ(fx_keymap_us(139, 0, 0), -FX_KEY_MENU); /* KEY_MENU */
     FX_CHECK_EQ(fx_keymap_us(1, 0, 0), 27);
     FX_CHECK_EQ(fx_keymap_us(111, 0, 0), 127);
     FX_CHECK_EQ(fx_keymap_us(59, 0, 0), -FX_KEY_F1);

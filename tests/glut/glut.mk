@@ -34,6 +34,14 @@ bench-glut-mesa: $(GLUT_DEPS_STAMP) $(LIB_A) $(GLUT_LIB_DEP)
 bench-glut: bench-glut-mesa
 bench: bench-glut
 
+# fixel's layer alone (tests/glut/layer.sh): glutGet, text metrics, glGet,
+# how glutMainLoop ends after glutLeaveMainLoop. About 2 s; part of make test.
+# With SAN=1 the program is built with the sanitizers too.
+test-glut-layer: $(LIB_A) $(GLUT_LIB)
+	@CC="$(CC) $(SANFLAGS)" GLUT_FIXEL_LIBS="$(LDLIBS)" sh tests/glut/layer.sh $(BUILD)
+.PHONY: test-glut-layer
+TEST_SUITES += "$(MAKE) --no-print-directory -s test-glut-layer"
+
 # Part of `make test` (about 45 s on 2 cores, most of it Mesa's million-point
 # Mandelbrot); FIXEL_SKIP_GLUT_MESA=1 leaves it out.
 ifneq ($(FIXEL_SKIP_GLUT_MESA),1)

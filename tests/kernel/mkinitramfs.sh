@@ -68,10 +68,11 @@ done
 # shellcheck disable=SC2086
 add_list "$S/modules.cards" ${CARD_MODULES:-}
 
-# RIG_TESTS="outputs display": only these guest programs (while developing).
+# RIG_TESTS="outputs display" (or RIG_ONLY): only these guest programs (while
+# developing; make test leaves both unset: all of them).
 for t in "$BINS"/*; do
     [ -x "$t" ] || continue
-    case " ${RIG_TESTS:-${t##*/}} " in *" ${t##*/} "*) cp "$t" "$S/tests/" ;; esac
+    case " ${RIG_TESTS:-${RIG_ONLY:-${t##*/}}} " in *" ${t##*/} "*) cp "$t" "$S/tests/" ;; esac
 done
 # Tools the tests run as commands (tools.mk builds them into BINS/../bin).
 for t in "$BINS"/../bin/*; do

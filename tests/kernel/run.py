@@ -102,6 +102,14 @@ class Renderer:
         return bytes(base)
 
 
+def first_difference(got, want, w, h):
+    """How two w x h RGB pictures of the same size differ, for a check's detail."""
+    bad = [i for i in range(0, len(want), 3) if got[i:i + 3] != want[i:i + 3]]
+    i = bad[0] // 3
+    return "%d of %d pixels differ, first at (%d,%d) got %s want %s" % (
+        len(bad), w * h, i % w, i // w, got[bad[0]:bad[0] + 3].hex(), want[bad[0]:bad[0] + 3].hex())
+
+
 def rotate(px, w, h, rotation):
     """Logical w x h image to the physical screen; rotation is clockwise and
     must agree with fixel/display.h: logical (x, y) lands at
@@ -215,10 +223,7 @@ class Guest:
             elif negate:
                 detail = "screen still shows %s" % spec
             else:
-                bad = [i for i in range(0, len(want), 3) if got[i:i + 3] != want[i:i + 3]]
-                i = bad[0] // 3
-                detail = "%d of %d pixels differ, first at (%d,%d) got %s want %s" % (
-                    len(bad), w * h, i % w, i // w, got[bad[0]:bad[0] + 3].hex(), want[bad[0]:bad[0] + 3].hex())
+                detail = first_difference(got, want, w, h)
             time.sleep(0.05)
         with open(path + ".expected.ppm", "wb") as f:
             f.write(b"P6\n%d %d\n255\n" % (w, h) + want)
@@ -233,7 +238,7 @@ class Guest:
         self.image = {"name": args[0], "w": int(args[1]), "h": int(args[2]), "spec": args[3],
                       "left": int(args[4]), "b64": []}
 
-    def image_line(self, data):
+    def image_line(self, qmp, data):
         im = self.image
         im["b64"].append(data)
         im["left"] -= len(data)
@@ -246,6 +251,8 @@ class Guest:
         except (ValueError, zlib.error) as e:
             self.check(name, False, "undecodable image: %s" % e)
             return "FAIL"
+        if spec.startswith("screen@"):
+            return self.image_on_screen(qmp, name, w, h, spec, got)
         want = self.r.expected(spec, w, h)
         if got == want:
             self.check(name, True, "%d pixels equal (%s)" % (w * h, spec))
@@ -257,11 +264,35 @@ class Guest:
         if len(got) != len(want):
             detail = "%d bytes, want %d" % (len(got), len(want))
         else:
-            bad = [i for i in range(0, len(want), 3) if got[i:i + 3] != want[i:i + 3]]
-            i = bad[0] // 3
-            detail = "%d of %d pixels differ, first at (%d,%d) got %s want %s" % (
-                len(bad), w * h, i % w, i // w, got[bad[0]:bad[0] + 3].hex(), want[bad[0]:bad[0] + 3].hex())
+            detail = first_difference(got, want, w, h)
         self.check(name, False, "%s (%s.ppm)" % (detail, path))
+        return "FAIL"
+
+    # IMAGE <name> <W> <H> screen@X,Y <chars>: the picture must be what the
+    # screen shows at X,Y (physical pixels) -- the guest's own expectation of
+    # a picture it cannot render from a scene (a GLUT program's window). The
+    # screen is dumped until it matches, for up to 2 s, like SCREEN.
+    def image_on_screen(self, qmp, name, w, h, spec, got):
+        x0, y0 = (int(v) for v in spec[len("screen@"):].split(","))
+        path = os.path.join(self.work, "screen-%s-%s.ppm" % (self.arch, name))
+        detail, tries = "", 0
+        for tries in range(1, 41):
+            qmp.cmd("screendump", filename=path)
+            sw, sh, scr = read_ppm(path)
+            if x0 < 0 or y0 < 0 or x0 + w > sw or y0 + h > sh or len(got) != w * h * 3:
+                self.check(name, False, "a %dx%d picture at (%d,%d) is not inside the %dx%d screen" % (
+                    w, h, x0, y0, sw, sh))
+                return "FAIL"
+            crop = b"".join(scr[((y0 + y) * sw + x0) * 3:((y0 + y) * sw + x0 + w) * 3] for y in range(h))
+            if crop == got:
+                self.check(name, True, "%d pixels equal (the %dx%d rectangle at (%d,%d), dump %d)" % (
+                    w * h, w, h, x0, y0, tries))
+                return "PASS"
+            detail = first_difference(crop, got, w, h) + " in the rectangle"
+            time.sleep(0.05)
+        with open(path + ".expected.ppm", "wb") as f:
+            f.write(b"P6\n%d %d\n255\n" % (w, h) + got)
+        self.check(name, False, "%s (after %d dumps; %s)" % (detail, tries, path))
         return "FAIL"
 
     def run(self):
@@ -299,7 +330,7 @@ class Guest:
                         continue
                     ack = None
                     if self.image is not None and words[0] == "IMG" and len(words) == 2:
-                        ack = self.image_line(words[1])
+                        ack = self.image_line(qmp, words[1])
                     elif words[0] == "IMAGE" and len(words) == 6:
                         self.image_start(words[1:])
                     elif words[0] == "CHECK" and len(words) >= 3:

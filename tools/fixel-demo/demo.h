@@ -51,6 +51,9 @@ typedef struct demo_page {
 
 extern const demo_page demo_pages[];
 extern const int demo_npages;
+extern const int demo_ntabs; /* the first demo_ntabs pages have a tab */
+/* The GLUT page (glutpage.c): a course program through boards/glut. */
+void demo_page_glut(fx_ctx *c, demo_state *st);
 
 void demo_state_init(demo_state *st, int32_t w, int32_t h);
 /* Draw page st->page with its tab bar into c's surface. */

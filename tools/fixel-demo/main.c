@@ -266,9 +266,9 @@ static void on_special(void *user, int key, int x, int y)
 static void pointer(demo_app *d, int x, int y, int down)
 {
     if (down == 1 && y < DEMO_TAB_H) {
-        int tw = d->st.w / demo_npages;
+        int tw = d->st.w / demo_ntabs;
         int p = tw ? x / tw : 0;
-        if (p >= 0 && p < demo_npages)
+        if (p >= 0 && p < demo_ntabs)
             d->st.page = p;
     } else {
         demo_pointer(&d->st, x, y, down);

@@ -821,8 +821,12 @@ const demo_page demo_pages[] = {
     {"vsd", "Hidden", page_vsd},
     {"fractals", "Fractals", page_fractals},
     {"viz", "Viz", page_viz},
+    {"glut", "GLUT", demo_page_glut},
 };
 const int demo_npages = (int)(sizeof demo_pages / sizeof demo_pages[0]);
+/* Every page has a tab: twelve 66-pixel tabs still hold the longest label
+ * ("Transforms", 60 px) at 800 px. */
+const int demo_ntabs = (int)(sizeof demo_pages / sizeof demo_pages[0]);
 
 void demo_state_init(demo_state *st, int32_t w, int32_t h)
 {
@@ -863,8 +867,8 @@ void demo_draw(fx_ctx *c, demo_state *st)
     color(c, BG);
     fx_clear(c);
     /* the tab bar */
-    int32_t tw = st->w / demo_npages;
-    for (int i = 0; i < demo_npages; i++) {
+    int32_t tw = st->w / demo_ntabs;
+    for (int i = 0; i < demo_ntabs; i++) {
         color(c, i == st->page ? 0xFF2E4A6Bu : 0xFF16202Eu);
         fx_fill_rect(c, i * tw, 0, tw - 1, DEMO_TAB_H);
         int64_t ww, hh;

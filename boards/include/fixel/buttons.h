@@ -24,7 +24,7 @@ typedef struct fx_gpio_button {
  * CHIP searches every chip for the line name; /low: active low with the
  * pull-up enabled; @MS: debounce time; KEY: a
  * single character, or up, down, left, right, pageup, pagedown, home, end,
- * insert, f1..f12, enter, esc, space, tab). Names point into buf, which is
+ * insert, f1..f12, enter, esc, space, tab, menu). Names point into buf, which is
  * modified. Returns the number of buttons, or -FX_EINVAL. */
 int fx_gpio_parse_buttons(char *buf, fx_gpio_button *out, int max);
 

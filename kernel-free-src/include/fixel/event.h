@@ -21,7 +21,7 @@ typedef enum fx_event_type {
     FX_EVENT_NONE,
     FX_EVENT_KEY,          /* key: a character (ASCII, control chars for Ctrl) */
     FX_EVENT_KEY_UP,
-    FX_EVENT_SPECIAL,      /* key: FX_KEY_F1.. FX_KEY_INSERT */
+    FX_EVENT_SPECIAL,      /* key: FX_KEY_F1.. FX_KEY_INSERT, FX_KEY_MENU */
     FX_EVENT_SPECIAL_UP,
     FX_EVENT_MOUSE,        /* button, state, x, y */
     FX_EVENT_MOTION,       /* x, y with a button held */
@@ -42,6 +42,10 @@ enum {
     FX_KEY_LEFT = 100, FX_KEY_UP = 101, FX_KEY_RIGHT = 102, FX_KEY_DOWN = 103,
     FX_KEY_PAGE_UP = 104, FX_KEY_PAGE_DOWN = 105, FX_KEY_HOME = 106, FX_KEY_END = 107,
     FX_KEY_INSERT = 108,
+    /* The PC keyboard's Menu key (or a GPIO button named "menu"): no GLUT
+     * key has this code; the GLUT layer opens the program's pop-up menu
+     * with it, so a menu works without a pointer. */
+    FX_KEY_MENU = 0x100,
 };
 /* Modifier bits in fx_event.mods (GLUT's values). */
 enum { FX_MOD_SHIFT = 1, FX_MOD_CTRL = 2, FX_MOD_ALT = 4 };

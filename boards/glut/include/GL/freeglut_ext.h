@@ -99,6 +99,13 @@ FGAPI void FGAPIENTRY glutInitContextProfile(int profile);
 FGAPI void FGAPIENTRY glutInitErrorFunc(void (*callback)(const char *fmt, va_list ap));
 FGAPI void FGAPIENTRY glutInitWarningFunc(void (*callback)(const char *fmt, va_list ap));
 
+/* fixel's own: the GLUT window without a display or a main loop, w x h
+ * pixels in memory, for a fixel program that runs a course program's
+ * reshape and display callbacks itself and takes the picture with
+ * glReadPixels (fixel-demo's GLUT page). The FIXEL_GLUT_* variables do not
+ * apply to it. Returns the window id (1), or 0 when a window exists. */
+FGAPI int FGAPIENTRY fx_glut_offscreen_window(int w, int h);
+
 #ifdef __cplusplus
 }
 #endif

@@ -651,6 +651,18 @@ GLAPI void GLAPIENTRY glRasterPos2fv(const GLfloat *v);
 GLAPI void GLAPIENTRY glRasterPos2iv(const GLint *v);
 GLAPI void GLAPIENTRY glRasterPos2dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glRasterPos3fv(const GLfloat *v);
+GLAPI void GLAPIENTRY glRasterPos2sv(const GLshort *v);
+GLAPI void GLAPIENTRY glRasterPos3s(GLshort x, GLshort y, GLshort z);
+GLAPI void GLAPIENTRY glRasterPos3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glRasterPos3iv(const GLint *v);
+GLAPI void GLAPIENTRY glRasterPos3dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glRasterPos4s(GLshort x, GLshort y, GLshort z, GLshort w);
+GLAPI void GLAPIENTRY glRasterPos4sv(const GLshort *v);
+GLAPI void GLAPIENTRY glRasterPos4i(GLint x, GLint y, GLint z, GLint w);
+GLAPI void GLAPIENTRY glRasterPos4iv(const GLint *v);
+GLAPI void GLAPIENTRY glRasterPos4fv(const GLfloat *v);
+GLAPI void GLAPIENTRY glRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w);
+GLAPI void GLAPIENTRY glRasterPos4dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glWindowPos2i(GLint x, GLint y);
 GLAPI void GLAPIENTRY glWindowPos2f(GLfloat x, GLfloat y);
 
