@@ -184,6 +184,17 @@ if [ $rc -eq 0 ] && [ "$n" -gt 0 ] && ! grep -q '^  sudo ' "$W/user-run-2.log"; 
 else
     tail -n 30 "$W/user-run-2.log"; fail "user make run after the install: exit $rc, $n pictures"
 fi
+# A cross build without the target's toolchain and libraries stops before
+# compiling anything, naming them and the commands that install them.
+as_user $MK BOARD=rpi4 > "$W/user-cross.log" 2>&1; rc=$?
+if [ $rc -ne 0 ] && grep -qx '  sudo dpkg --add-architecture arm64' "$W/user-cross.log" &&
+   grep -E "$APTLINE" "$W/user-cross.log" | grep -q ' gcc-aarch64-linux-gnu' &&
+   grep -E '^  sudo apt-get install -y --no-install-recommends ' "$W/user-cross.log" | grep -q ' libpng-dev:arm64' &&
+   [ ! -e "$U/home/fx/fixel/build/rpi4" ]; then
+    pass "user make BOARD=rpi4 stops before compiling (exit $rc) with the arm64 packages and their commands"
+else
+    cat "$W/user-cross.log"; fail "user make BOARD=rpi4 without the arm64 packages: exit $rc"
+fi
 
 if [ $do_test = 1 ]; then
     t0=$(now)
