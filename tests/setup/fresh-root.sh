@@ -127,11 +127,12 @@ if ! command -v mmdebstrap >/dev/null 2>&1; then
         { apt-get -o DPkg::Lock::Timeout=300 update -qq; DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=300 install -y -qq --no-install-recommends mmdebstrap >/dev/null; }
 fi
 # Valid-Until off: a machine whose clock runs ahead must not refuse the
-# security suite's Release file (apt's own option, nothing of fixel's).
+# security suite's Release file; Retries: a file whose download fails is
+# fetched again (apt's own options, in the roots too; nothing of fixel's).
 bootstrap() {
     rm -rf --one-file-system "$W/pristine"
     mmdebstrap --variant=apt --include=make,git,ca-certificates \
-        --aptopt='Acquire::Check-Valid-Until "false"' \
+        --aptopt='Acquire::Check-Valid-Until "false"' --aptopt='Acquire::Retries "3"' \
         bookworm "$W/pristine" \
         "deb $MIRROR bookworm main" "deb $MIRROR bookworm-updates main" \
         "deb http://deb.debian.org/debian-security bookworm-security main" > "$W/mmdebstrap.log" 2>&1
