@@ -322,7 +322,7 @@ deps deps-check:
 # CI runs this after the host's make test, so within CI's time the roots'
 # make test runs its core suites (TEST_SUITES= : unit, golden and script
 # errors, plain and ASan, freestanding, layers) after installing the whole
-# test set and building everything; tests/README.md, "CI", says why and how
+# test set; tests/README.md, "CI", says why and how
 # long. SETUP_TEST_ARGS= SETUP_USER_TEST_ARGS= runs every suite in the roots.
 # DEBS=build/deb (make deb's output) adds the package install test.
 SETUP_TEST_ARGS ?= TEST_SUITES=
