@@ -161,6 +161,13 @@ as_user() {
     chroot --userspec=1000:1000 "$U" /usr/bin/env -i HOME=/home/fx PATH=/usr/local/bin:/usr/bin:/bin \
         LANG=C.UTF-8 TERM=dumb CI=${CI:-} sh -c "cd /home/fx/fixel && $*"
 }
+root_runs() { # log, the lines printed for the user, label: root runs them, in order
+    if [ -n "$2" ] && in_root "$U" "set -e; $(echo "$2" | sed 's/sudo //g; s/$/;/' | tr '\n' ' ')" > "$W/$1" 2>&1; then
+        pass "$3 ($(( $(now) - t0 )) s since the step began)"
+    else
+        tail -n 20 "$W/$1"; fail "$3: failed as root"
+    fi
+}
 sp() { case " $1 " in *" $2 "*) return 0 ;; esac; return 1; } # word $2 in list $1
 APTLINE='^  sudo apt-get update && sudo apt-get install -y --no-install-recommends( [a-z0-9.+-]+)+$'
 as_user $MK run > "$W/user-run-1.log" 2>&1; rc=$?
@@ -173,11 +180,7 @@ if [ $rc -ne 0 ] && [ "$(echo "$line" | wc -l)" = 1 ] && [ -n "$line" ] &&
 else
     cat "$W/user-run-1.log"; fail "user make run: exit $rc, not one exact sudo apt-get line of the run set before any build"
 fi
-if [ -n "$line" ] && in_root "$U" "$(echo "$line" | sed 's/sudo //g')" > "$W/user-run-apt.log" 2>&1; then
-    pass "root ran that line"
-else
-    tail -n 20 "$W/user-run-apt.log"; fail "the printed line failed as root"
-fi
+root_runs user-run-apt.log "$line" "root ran that line"
 as_user $MK run > "$W/user-run-2.log" 2>&1; rc=$?
 n=$(ls "$U"/home/fx/fixel/out/*.png 2>/dev/null | wc -l)
 if [ $rc -eq 0 ] && [ "$n" -gt 0 ] && ! grep -q '^  sudo ' "$W/user-run-2.log"; then
@@ -213,11 +216,7 @@ if [ $do_test = 1 ]; then
     else
         cat "$W/user-test-1.log"; fail "user make test: exit $rc, not the exact lines of the test set before any build"
     fi
-    if [ -n "$lines" ] && in_root "$U" "set -e; $(echo "$lines" | sed 's/sudo //g; s/$/;/' | tr '\n' ' ')" > "$W/user-test-apt.log" 2>&1; then
-        pass "root ran those lines ($(( $(now) - t0 )) s)"
-    else
-        tail -n 20 "$W/user-test-apt.log"; fail "the printed lines failed as root"
-    fi
+    root_runs user-test-apt.log "$lines" "root ran those lines"
     t0=$(now)
     as_user $MK test $USER_TEST_ARGS > "$W/user-test-2.log" 2>&1; rc=$?
     grep -q '^  sudo ' "$W/user-test-2.log" && { grep -B2 '^  sudo ' "$W/user-test-2.log"; fail "user make test asked for packages again"; }
