@@ -194,8 +194,8 @@ as_user $MK BOARD=rpi4 > "$W/user-cross.log" 2>&1; rc=$?
 if [ $rc -ne 0 ] && grep -qx '  sudo dpkg --add-architecture arm64' "$W/user-cross.log" &&
    grep -E "$APTLINE" "$W/user-cross.log" | grep -q ' gcc-aarch64-linux-gnu' &&
    grep -E '^  sudo apt-get install -y --no-install-recommends ' "$W/user-cross.log" | grep -q ' libpng-dev:arm64' &&
-   [ ! -e "$U/home/fx/fixel/build/rpi4" ]; then
-    pass "user make BOARD=rpi4 stops before compiling (exit $rc) with the arm64 packages and their commands"
+   [ -z "$(find "$U/home/fx/fixel/build/rpi4" -name '*.o' 2>/dev/null)" ]; then
+    pass "user make BOARD=rpi4 stops before compiling (exit $rc, no object) with the arm64 packages and their commands"
 else
     cat "$W/user-cross.log"; fail "user make BOARD=rpi4 without the arm64 packages: exit $rc"
 fi
