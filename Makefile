@@ -300,6 +300,11 @@ ifneq ($(CROSS_DEB_ARCH),)
 ifneq ($(HAVE_PNG)$(HAVE_OPT),11)
 # (workloads.o is core-only benchmark code the unit tests link: not guarded)
 $(filter-out %/workloads.o,$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/*/*.c))) $(TOOL_BINS): | cross-deps-check
+# A goal that builds the tools (make BOARD=..., the default) stops before
+# compiling anything, the library's objects included.
+ifneq ($(if $(MAKECMDGOALS),$(filter all tools run-nodeps install-build,$(MAKECMDGOALS)),all),)
+$(LIB_OBJ) $(GLUT_OBJ): | cross-deps-check
+endif
 endif
 endif
 
@@ -313,13 +318,21 @@ deps deps-check:
 	@sh tests/deps.sh --for "make deps" $(sort $(DEB_PKGS) $(TEST_DEB_PKGS) $(BENCH_DEB_PKGS))
 
 # First-try set-up in fresh bookworm roots (tests/setup/fresh-root.sh; root,
-# needs the Debian mirror): a user's make run, root's make run, and root's
-# whole make test (SETUP_TEST_ARGS= to pass it variables). CI runs this.
+# needs the Debian mirror): a user's and root's first make run and make test.
+# CI runs this after the host's make test, so within CI's time the roots'
+# make test runs its core suites (TEST_SUITES= : unit, golden and script
+# errors, plain and ASan, freestanding, layers) after installing the whole
+# test set; tests/README.md, "CI", says why and how
+# long. SETUP_TEST_ARGS= SETUP_USER_TEST_ARGS= runs every suite in the roots.
 # DEBS=build/deb (make deb's output) adds the package install test.
+SETUP_TEST_ARGS ?= TEST_SUITES=
+SETUP_USER_TEST_ARGS ?= TEST_SUITES=
+SETUP_MAKE ?= make -j2
 test-setup:
-	@sh tests/setup/fresh-root.sh --test $(if $(DEBS),--debs $(DEBS)) build/setup
+	@SETUP_TEST_ARGS='$(SETUP_TEST_ARGS)' SETUP_USER_TEST_ARGS='$(SETUP_USER_TEST_ARGS)' SETUP_MAKE='$(SETUP_MAKE)' \
+	  sh tests/setup/fresh-root.sh $(if $(DEBS),--debs $(DEBS)) build/setup
 test-setup-run:
-	@sh tests/setup/fresh-root.sh $(if $(DEBS),--debs $(DEBS)) build/setup
+	@SETUP_MAKE='$(SETUP_MAKE)' sh tests/setup/fresh-root.sh --no-test $(if $(DEBS),--debs $(DEBS)) build/setup
 
 # ---- install (tools/install.sh: one file list for install and uninstall) ----
 # Every directory can be set on the command line; LIBDIR may be multiarch

@@ -42,7 +42,11 @@ if [ "$(id -u)" -eq 0 ] && [ $noinstall = 0 ]; then
     # of step with the others (a mirror mid-sync, seen for armhf) must not stop
     # the rest (tests/arm/test-arm.sh skips an architecture without them, saying so).
     native=$(for p in $missing; do case $p in *:*) ;; *) echo "$p" ;; esac; done)
+    # A download that fails (a dropped connection, a mirror mid-sync) is
+    # retried once after a fresh update; failing twice stops.
     [ -z "$native" ] || $APT install -y -qq --no-install-recommends $native >/dev/null ||
+        { echo "deps: apt-get install failed; updating and retrying once"; sleep 10; $APT update -qq
+          $APT install -y -qq --no-install-recommends $native >/dev/null; } ||
         { echo "deps: apt-get install failed for:" $native; exit 1; }
     for a in $(for p in $missing; do case $p in *:*) echo "${p#*:}" ;; esac; done | sort -u); do
         $APT install -y -qq --no-install-recommends $(for p in $missing; do case $p in *:$a) echo "$p" ;; esac; done) >/dev/null ||

@@ -21,7 +21,7 @@ $(GLUT_A): $(GLUT_OBJ)
 	$(AR) rcs $@ $^
 
 $(GLUT_SO): $(GLUT_OBJ) $(LIB_SO)
-	$(CC) -shared -Wl,-soname,libfixel-glut.so.$(SOMAJOR) $(SANFLAGS) -o $@ $(GLUT_OBJ) -L$(BUILD) -lfixel $(LDLIBS) -lm
+	$(CC) -shared -Wl,-soname,libfixel-glut.so.$(SOMAJOR) $(SANFLAGS) $(LDFLAGS) -o $@ $(GLUT_OBJ) -L$(BUILD) -lfixel $(LDLIBS) -lm
 	ln -sf libfixel-glut.so.$(VERSION) $(BUILD)/libfixel-glut.so.$(SOMAJOR)
 	ln -sf libfixel-glut.so.$(VERSION) $(BUILD)/libfixel-glut.so
 

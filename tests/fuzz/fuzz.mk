@@ -5,7 +5,7 @@
 # The core sources (the top Makefile's CORE_SRC) are compiled into each
 # target by clang with the same sanitizers (the gcc-built libfixel.a is not
 # instrumented for coverage).
-EXTRA_DEB_PKGS += clang libclang-rt-14-dev
+TEST_DEB_PKGS += clang libclang-rt-14-dev
 FUZZ_CC      ?= clang
 FUZZ_BUILD   := build/fuzz
 FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))

@@ -21,6 +21,9 @@ $(GLUT_DEPS_STAMP): tests/glut/deps.sh
 	@touch $@
 glut-deps deps-glut:
 	@sh tests/glut/deps.sh
+# ...and `make test`'s package step names them with the rest, so that a
+# normal user's first make test stops once, with one line for everything.
+TEST_DEB_PKGS += $(shell sh tests/glut/deps.sh --list)
 # `make deps` (CI's first step) installs them too.
 deps: deps-glut
 

@@ -2,28 +2,41 @@
 # SPDX-License-Identifier: MIT
 # First-try set-up, the way a new user meets it (issue #20): a fresh Debian 12
 # (bookworm) root made by mmdebstrap with only make, git and ca-certificates,
-# a clone of this repository copied in, and chroot:
-#   user  a normal user's `make run` stops with the exact sudo apt-get line
-#         (exit non-zero); after root runs that line, the same `make run` works
-#   run   root's first `make run` in a second untouched root succeeds (out/*.png)
-#   test  root's first `make test` in a third untouched root: the whole suite
-#         (--test; its total is added to this script's own)
-# Nothing is kept between runs: every root is bootstrapped anew and removed on
-# every exit path; the packages come from the Debian mirror each time.
-#
+# a clone of this repository in it, entered with chroot.
+#   user  a normal user's `make run` stops, exit non-zero and before compiling,
+#         with the exact `sudo apt-get ...` line of the run set; root runs
+#         that line; the same `make run` then renders out/*.png. The user's
+#         `make test` then stops the same way with the lines of the test set
+#         only (dpkg --add-architecture, apt-get); root runs them; the user's
+#         `make test $SETUP_USER_TEST_ARGS` then passes.
+#   root  in a second untouched root, root's first `make run` installs the
+#         run set (and nothing of the test set) and renders; root's first
+#         `make test $SETUP_TEST_ARGS` then installs the test set and passes.
 #   debs  with --debs DIR (make deb's output): apt-get installs DIR/<arch>'s
-#         libfixel0, libfixel-dev and fixel-tools into a fourth untouched root,
-#         and the README's example builds there with pkg-config and runs
-# usage: fresh-root.sh [--test] [--debs DIR] [WORKDIR]   (root; default WORKDIR build/setup)
-#   SETUP_TEST_ARGS="QUICK=1 FIXEL_SKIP_KERNEL=1" runs a subset in the test root.
-#   SETUP_KEEP=1 leaves the roots in WORKDIR (for a look; remove them by hand).
+#         libfixel0, libfixel-dev and fixel-tools into a third untouched root,
+#         the README's example builds there with pkg-config and runs, and the
+#         packaged fixel-draw renders.
+# The suites' totals are added to this script's own. Every root is copied
+# from one mmdebstrap run and removed on every exit path; packages come from
+# the Debian mirror. Within one run the roots share one apt archive directory
+# (bind-mounted /var/cache/apt/archives), so a package is downloaded once per
+# run, not once per root; apt still resolves and installs everything in each.
+#
+# usage: fresh-root.sh [--no-test] [--debs DIR] [WORKDIR]   (root; default WORKDIR build/setup)
+#   --no-test                skips both make test runs (make test-setup-run)
+#   SETUP_TEST_ARGS=...      variables for root's make test (make test-setup
+#                            passes the CI subset: tests/README.md, "CI")
+#   SETUP_USER_TEST_ARGS=... the same for the user's make test (default: as root's)
+#   SETUP_MAKE="make -j2"    how make is called in the roots (default: make)
+#   SETUP_KEEP=1             leaves the roots in WORKDIR (remove them by hand)
 # Ends with "setup: N passed, N failed". Commits only: the copy is a clone of
 # HEAD, uncommitted changes are not in it.
 set -u
-do_test=0; debs=""
+do_test=1; debs=""
 while :; do
     case ${1:-} in
     --test) do_test=1; shift ;;
+    --no-test) do_test=0; shift ;;
     --debs) debs=$(cd "$2" && pwd); shift 2 ;;
     *) break ;;
     esac
@@ -32,11 +45,15 @@ SRC=$(cd "$(dirname "$0")/../.." && pwd)
 W=${1:-build/setup}
 mkdir -p "$W" && W=$(cd "$W" && pwd)
 MIRROR=${SETUP_MIRROR:-http://deb.debian.org/debian}
+MK=${SETUP_MAKE:-make}
+TEST_ARGS=${SETUP_TEST_ARGS:-}
+USER_TEST_ARGS=${SETUP_USER_TEST_ARGS-$TEST_ARGS}
 P=0; F=0
 pass() { echo "PASS $*"; P=$((P + 1)); }
 fail() { echo "FAIL $*"; F=$((F + 1)); }
 now() { date +%s; }
 finish() { echo "setup: $P passed, $F failed"; [ "$F" -eq 0 ]; exit $?; }
+T_ALL=$(now)
 
 if [ "$(id -u)" != 0 ]; then
     echo "fresh-root.sh: needs root (mmdebstrap, chroot, mount)"
@@ -50,6 +67,7 @@ exec 9> "$W/.lock"
 if ! flock -n 9; then fail "another fresh-root.sh runs in $W"; exit 1; fi
 if grep -q " $W/" /proc/mounts; then fail "mounts left under $W (umount -R them)"; exit 1; fi
 
+ROOTS="$W/pristine $W/user $W/root $W/deb $W/archives"
 MOUNTED=""
 umount_all() {
     for m in $MOUNTED; do umount -R "$m" 2>/dev/null || umount -R -l "$m" 2>/dev/null; done
@@ -61,51 +79,77 @@ cleanup() {
     if grep -q " $W/" /proc/mounts; then
         echo "fresh-root.sh: mounts left under $W; not removing it"
     elif [ "${SETUP_KEEP:-0}" != 1 ]; then
-        rm -rf --one-file-system "$W/pristine" "$W/user" "$W/run" "$W/test" "$W/deb"
+        rm -rf --one-file-system $ROOTS
     fi
 }
 trap cleanup EXIT
 trap 'exit 130' INT TERM HUP
 
-mount_in() { # root: /proc, /sys and /dev (qemu's /dev/kvm, ptys, /dev/shm)
+mount_in() { # root: /proc, /sys, /dev (qemu's /dev/kvm, ptys, /dev/shm), the shared apt archives
     mount -t proc proc "$1/proc" && MOUNTED="$1/proc $MOUNTED"
     mount --rbind /sys "$1/sys" && mount --make-rslave "$1/sys" && MOUNTED="$1/sys $MOUNTED"
     mount --rbind /dev "$1/dev" && mount --make-rslave "$1/dev" && MOUNTED="$1/dev $MOUNTED"
+    mount --bind "$W/archives" "$1/var/cache/apt/archives" && MOUNTED="$1/var/cache/apt/archives $MOUNTED"
 }
 in_root() { # root, command: runs as root inside, with a plain environment
     r=$1; shift
     chroot "$r" /usr/bin/env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-        LANG=C.UTF-8 TERM=dumb sh -c "$*"
+        LANG=C.UTF-8 TERM=dumb CI=${CI:-} sh -c "$*"
 }
 clone_into() { # root, dir
     git clone -q --no-hardlinks "$SRC" "$1$2" || return 1
 }
+installed() { # root, package: installed in that root?
+    in_root "$1" "dpkg-query -W -f='\${Status}' $2 2>/dev/null | grep -q 'install ok installed'"
+}
+# make test's closing total, added to ours: suite_total LOG RC LABEL
+suite_total() {
+    total=$(grep -E '^total: [0-9]+ passed, [0-9]+ failed' "$1" | tail -n 1)
+    tp=$(echo "$total" | sed -nE 's/^total: ([0-9]+) passed.*/\1/p')
+    tf=$(echo "$total" | sed -nE 's/.* ([0-9]+) failed.*/\1/p')
+    grep -E '^(FAIL|!!|SKIP|deps:)|passed, [0-9]+ failed' "$1" | sed 's/^/    /'
+    if [ "$2" -eq 0 ] && [ -n "$tp" ] && [ "$tf" = 0 ]; then
+        P=$((P + tp))
+        pass "$3: $total ($(( $(now) - t0 )) s)"
+    else
+        tail -n 40 "$1"
+        P=$((P + ${tp:-0})); F=$((F + ${tf:-0}))
+        fail "$3: exit $2, ${total:-no total}"
+    fi
+}
 
-# --- the fresh root ---------------------------------------------------------
+# --- the fresh root -----------------------------------------------------------
 t0=$(now)
-rm -rf --one-file-system "$W/pristine" "$W/user" "$W/run" "$W/test" "$W/deb"
+rm -rf --one-file-system $ROOTS
+mkdir -p "$W/archives/partial"
 if ! command -v mmdebstrap >/dev/null 2>&1; then
     DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=300 install -y -qq --no-install-recommends mmdebstrap >/dev/null ||
         { apt-get -o DPkg::Lock::Timeout=300 update -qq; DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=300 install -y -qq --no-install-recommends mmdebstrap >/dev/null; }
 fi
 # Valid-Until off: a machine whose clock runs ahead must not refuse the
-# security suite's Release file (apt's own option, nothing of fixel's).
-if mmdebstrap --variant=apt --include=make,git,ca-certificates \
-        --aptopt='Acquire::Check-Valid-Until "false"' \
+# security suite's Release file; Retries: a file whose download fails is
+# fetched again (apt's own options, in the roots too; nothing of fixel's).
+bootstrap() {
+    rm -rf --one-file-system "$W/pristine"
+    mmdebstrap --variant=apt --include=make,git,ca-certificates \
+        --aptopt='Acquire::Check-Valid-Until "false"' --aptopt='Acquire::Retries "3"' \
         bookworm "$W/pristine" \
         "deb $MIRROR bookworm main" "deb $MIRROR bookworm-updates main" \
-        "deb http://deb.debian.org/debian-security bookworm-security main" > "$W/mmdebstrap.log" 2>&1; then
-    pass "mmdebstrap bookworm ($(( $(now) - t0 )) s)"
+        "deb http://deb.debian.org/debian-security bookworm-security main" > "$W/mmdebstrap.log" 2>&1
+}
+# The download is retried once (a mirror mid-sync or a dropped connection);
+# failing twice is a failure: nothing below can be checked without the root.
+if bootstrap || { tail -n 5 "$W/mmdebstrap.log"; echo "fresh-root.sh: mmdebstrap failed; retrying once in 30 s"; sleep 30; bootstrap; }; then
+    pass "mmdebstrap bookworm: make, git, ca-certificates ($(( $(now) - t0 )) s)"
 else
-    tail -n 20 "$W/mmdebstrap.log"; fail "mmdebstrap bookworm"; finish
+    tail -n 20 "$W/mmdebstrap.log"; fail "mmdebstrap bookworm, twice (mirror unreachable?)"; finish
 fi
-for r in user run test deb; do
-    [ $r = test ] && [ $do_test = 0 ] && continue
+for r in user root deb; do
     [ $r = deb ] && [ -z "$debs" ] && continue
     cp -a "$W/pristine" "$W/$r"
 done
 
-# --- a normal user: the exact line, then success -----------------------------
+# --- a normal user: the exact line, then success --------------------------------
 t0=$(now)
 U=$W/user
 echo 'fx:x:1000:1000:fixel user:/home/fx:/bin/sh' >> "$U/etc/passwd"
@@ -115,48 +159,93 @@ mkdir -p "$U/home/fx" && clone_into "$U" /home/fx/fixel && chown -R 1000:1000 "$
 mount_in "$U"
 as_user() {
     chroot --userspec=1000:1000 "$U" /usr/bin/env -i HOME=/home/fx PATH=/usr/local/bin:/usr/bin:/bin \
-        LANG=C.UTF-8 TERM=dumb sh -c "cd /home/fx/fixel && $*"
+        LANG=C.UTF-8 TERM=dumb CI=${CI:-} sh -c "cd /home/fx/fixel && $*"
 }
-as_user make run > "$W/user-1.log" 2>&1; rc=$?
-line=$(grep -E '^  sudo apt-get update && sudo apt-get install -y --no-install-recommends( [a-z0-9.+:-]+)+$' "$W/user-1.log")
-if [ $rc -ne 0 ] && [ -n "$line" ] && ! grep -q 'error\|No such file' "$W/user-1.log" &&
-   echo "$line" | grep -qw gcc && echo "$line" | grep -qw libpng-dev && ! echo "$line" | grep -qw 'clang\|valgrind\|libcairo2-dev'; then
-    pass "user make run stops (exit $rc) with:$(echo "$line" | sed 's/^ */ /')"
+root_runs() { # log, the lines printed for the user, label: root runs them, in order
+    if [ -n "$2" ] && in_root "$U" "set -e; $(echo "$2" | sed 's/sudo //g; s/$/;/' | tr '\n' ' ')" > "$W/$1" 2>&1; then
+        pass "$3 ($(( $(now) - t0 )) s since the step began)"
+    else
+        tail -n 20 "$W/$1"; fail "$3: failed as root"
+    fi
+}
+sp() { case " $1 " in *" $2 "*) return 0 ;; esac; return 1; } # word $2 in list $1
+APTLINE='^  sudo apt-get update && sudo apt-get install -y --no-install-recommends( [a-z0-9.+-]+)+$'
+as_user $MK run > "$W/user-run-1.log" 2>&1; rc=$?
+line=$(grep -E "$APTLINE" "$W/user-run-1.log")
+pk=$(echo "$line" | sed 's/.*--no-install-recommends//')
+if [ $rc -ne 0 ] && [ "$(echo "$line" | wc -l)" = 1 ] && [ -n "$line" ] &&
+   [ "$(grep -c '^  sudo ' "$W/user-run-1.log")" = 1 ] && [ ! -e "$U/home/fx/fixel/build" ] &&
+   sp "$pk" gcc && sp "$pk" libpng-dev && sp "$pk" pkg-config && ! sp "$pk" clang && ! sp "$pk" valgrind && ! sp "$pk" libcairo2-dev; then
+    pass "user make run stops (exit $rc, nothing built) with:$(echo "$line" | sed 's/^ */ /')"
 else
-    cat "$W/user-1.log"; fail "user make run: exit $rc, no exact sudo apt-get line of the run set"
+    cat "$W/user-run-1.log"; fail "user make run: exit $rc, not one exact sudo apt-get line of the run set before any build"
 fi
-if [ -n "$line" ] && in_root "$U" "$(echo "$line" | sed 's/sudo //g')" > "$W/user-apt.log" 2>&1; then
-    pass "root ran that line"
-else
-    tail -n 20 "$W/user-apt.log"; fail "the printed line failed as root"
-fi
-as_user make run > "$W/user-2.log" 2>&1; rc=$?
+root_runs user-run-apt.log "$line" "root ran that line"
+as_user $MK run > "$W/user-run-2.log" 2>&1; rc=$?
 n=$(ls "$U"/home/fx/fixel/out/*.png 2>/dev/null | wc -l)
-if [ $rc -eq 0 ] && [ "$n" -gt 0 ]; then
-    pass "user make run after it: $n pictures in out/ ($(( $(now) - t0 )) s for the user part)"
+if [ $rc -eq 0 ] && [ "$n" -gt 0 ] && ! grep -q '^  sudo ' "$W/user-run-2.log"; then
+    pass "user make run after it: $n pictures in out/ ($(( $(now) - t0 )) s for the user's make run)"
 else
-    tail -n 30 "$W/user-2.log"; fail "user make run after the install: exit $rc, $n pictures"
+    tail -n 30 "$W/user-run-2.log"; fail "user make run after the install: exit $rc, $n pictures"
+fi
+# A cross build without the target's toolchain and libraries stops before
+# compiling anything, naming them and the commands that install them.
+as_user $MK BOARD=rpi4 > "$W/user-cross.log" 2>&1; rc=$?
+if [ $rc -ne 0 ] && grep -qx '  sudo dpkg --add-architecture arm64' "$W/user-cross.log" &&
+   grep -E "$APTLINE" "$W/user-cross.log" | grep -q ' gcc-aarch64-linux-gnu' &&
+   grep -E '^  sudo apt-get install -y --no-install-recommends ' "$W/user-cross.log" | grep -q ' libpng-dev:arm64' &&
+   [ -z "$(find "$U/home/fx/fixel/build/rpi4" -name '*.o' 2>/dev/null)" ]; then
+    pass "user make BOARD=rpi4 stops before compiling (exit $rc, no object) with the arm64 packages and their commands"
+else
+    cat "$W/user-cross.log"; fail "user make BOARD=rpi4 without the arm64 packages: exit $rc"
+fi
+
+if [ $do_test = 1 ]; then
+    t0=$(now)
+    as_user $MK test > "$W/user-test-1.log" 2>&1; rc=$?
+    lines=$(grep '^  sudo ' "$W/user-test-1.log")
+    bad=$(echo "$lines" | grep -vE "$APTLINE" | grep -vE '^  sudo dpkg --add-architecture [a-z0-9]+$' |
+          grep -vE '^  sudo apt-get install -y --no-install-recommends( [a-z0-9.+-]+:[a-z0-9]+)+$')
+    native=$(echo "$lines" | grep -E "$APTLINE" | sed 's/.*--no-install-recommends//')
+    allp=$(echo "$lines" | sed -n 's/.*--no-install-recommends//p' | tr '\n' ' ')
+    if [ $rc -ne 0 ] && [ -n "$lines" ] && [ -z "$bad" ] && [ ! -e "$U/home/fx/fixel/build/asan" ] &&
+       echo "$lines" | grep -qx '  sudo dpkg --add-architecture arm64' && echo "$lines" | grep -qx '  sudo dpkg --add-architecture armhf' &&
+       sp "$native" clang && sp "$native" valgrind && sp "$native" xvfb && sp "$native" libcairo2-dev && sp "$allp" libpng-dev:arm64 &&
+       ! sp "$native" gcc && ! sp "$native" libpng-dev; then
+        pass "user make test stops (exit $rc, nothing built) with the test set only: $(echo "$lines" | wc -l) lines, $(echo "$allp" | wc -w) packages"
+    else
+        cat "$W/user-test-1.log"; fail "user make test: exit $rc, not the exact lines of the test set before any build"
+    fi
+    root_runs user-test-apt.log "$lines" "root ran those lines"
+    t0=$(now)
+    as_user $MK test $USER_TEST_ARGS > "$W/user-test-2.log" 2>&1; rc=$?
+    grep -q '^  sudo ' "$W/user-test-2.log" && { grep -B2 '^  sudo ' "$W/user-test-2.log"; fail "user make test asked for packages again"; }
+    suite_total "$W/user-test-2.log" $rc "user make test $USER_TEST_ARGS after it"
 fi
 umount_all
 
-# --- root's first make run -----------------------------------------------------
+# --- root: make run, then make test, each on its first try ----------------------------
 t0=$(now)
-R=$W/run
+R=$W/root
 clone_into "$R" /root/fixel
 mount_in "$R"
-in_root "$R" "cd /root/fixel && make run" > "$W/run.log" 2>&1; rc=$?
+in_root "$R" "cd /root/fixel && $MK run" > "$W/root-run.log" 2>&1; rc=$?
 n=$(ls "$R"/root/fixel/out/*.png 2>/dev/null | wc -l)
-if [ $rc -eq 0 ] && [ "$n" -gt 0 ]; then
-    pass "root make run, first try: $n pictures in out/ ($(( $(now) - t0 )) s)"
+if [ $rc -eq 0 ] && [ "$n" -gt 0 ] && grep -q '^deps: make run installs' "$W/root-run.log"; then
+    pass "root make run, first try: installed the run set, $n pictures in out/ ($(( $(now) - t0 )) s)"
 else
-    tail -n 30 "$W/run.log"; fail "root make run, first try: exit $rc, $n pictures"
+    tail -n 30 "$W/root-run.log"; fail "root make run, first try: exit $rc, $n pictures"
 fi
 # what the run set leaves out
-for p in clang valgrind libcairo2-dev libsdl2-dev qemu-user-static; do
-    if in_root "$R" "dpkg-query -W -f='\${Status}' $p 2>/dev/null | grep -q 'install ok installed'"; then
-        fail "make run installed $p (a test or bench package)"
-    fi
+for p in clang valgrind libcairo2-dev qemu-user-static xvfb; do
+    installed "$R" $p && fail "make run installed $p (a test or bench package)"
 done
+if [ $do_test = 1 ]; then
+    t0=$(now)
+    in_root "$R" "cd /root/fixel && $MK test $TEST_ARGS" > "$W/root-test.log" 2>&1; rc=$?
+    grep -q '^deps: make test installs' "$W/root-test.log" || fail "root make test installed nothing (the test set was there?)"
+    suite_total "$W/root-test.log" $rc "root make test $TEST_ARGS, first try"
+fi
 umount_all
 
 # --- the Debian packages in a fresh root ----------------------------------------
@@ -186,26 +275,5 @@ if [ -n "$debs" ]; then
     fi
     umount_all
 fi
-
-# --- root's first make test (the whole suite) -----------------------------------
-if [ $do_test = 1 ]; then
-    t0=$(now)
-    T=$W/test
-    clone_into "$T" /root/fixel
-    mount_in "$T"
-    in_root "$T" "cd /root/fixel && CI=${CI:-} make test ${SETUP_TEST_ARGS:-}" > "$W/test.log" 2>&1; rc=$?
-    total=$(grep -E '^total: [0-9]+ passed, [0-9]+ failed' "$W/test.log" | tail -n 1)
-    tp=$(echo "$total" | sed -nE 's/^total: ([0-9]+) passed.*/\1/p')
-    tf=$(echo "$total" | sed -nE 's/.* ([0-9]+) failed.*/\1/p')
-    grep -E '^(== |FAIL|!!|SKIP|total:|deps:)|passed, [0-9]+ failed' "$W/test.log"
-    if [ $rc -eq 0 ] && [ -n "$tp" ] && [ "$tf" = 0 ]; then
-        P=$((P + tp))
-        pass "root make test ${SETUP_TEST_ARGS:-}, first try: $total ($(( $(now) - t0 )) s)"
-    else
-        tail -n 40 "$W/test.log"
-        P=$((P + ${tp:-0})); F=$((F + ${tf:-0}))
-        fail "root make test, first try: exit $rc, ${total:-no total}"
-    fi
-    umount_all
-fi
+echo "fresh-root.sh: $(( $(now) - T_ALL )) s in all"
 finish

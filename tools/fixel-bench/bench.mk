@@ -10,7 +10,10 @@
 # libraries (before `make deps`) it still builds and measures fixel against
 # the ceilings, and bench-peers says so.
 
-EXTRA_DEB_PKGS += libcairo2-dev libpixman-1-dev libsdl2-dev libsdl2-gfx-dev
+# The peers: `make bench-peers` installs them (root) or names them first;
+# `make test` too, as `fixel-bench --check` verifies the peers' checksums.
+BENCH_DEB_PKGS += libcairo2-dev libpixman-1-dev libsdl2-dev libsdl2-gfx-dev
+TEST_DEB_PKGS += $(BENCH_DEB_PKGS)
 
 BENCH_PKGS := cairo pixman-1 sdl2 SDL2_gfx
 BENCH_HAVE_PEERS := $(shell $(PKG_CONFIG) --exists $(BENCH_PKGS) 2>/dev/null && echo yes)
@@ -39,12 +42,17 @@ $(BUILD)/obj/tools/fixel-bench/ref/ref_native.o: tools/fixel-bench/ref/ref_nativ
 bench: $(BUILD)/bin/fixel-bench
 	$(BUILD)/bin/fixel-bench -o $(BUILD)/bench.txt
 
-bench-peers: $(BUILD)/bin/fixel-bench
+# A new make after the install, so that BENCH_HAVE_PEERS sees the peers.
+bench-peers:
+	@sh tests/deps.sh --for "make bench-peers" $(sort $(DEB_PKGS) $(BENCH_DEB_PKGS))
+	@$(MAKE) --no-print-directory bench-peers-nodeps
+
+bench-peers-nodeps: $(BUILD)/bin/fixel-bench
 	$(BUILD)/bin/fixel-bench --peers -o $(BUILD)/bench-peers.txt
 
 TEST_SUITES += "$(BUILD)/bin/fixel-bench --check"
 
-.PHONY: bench bench-peers
+.PHONY: bench bench-peers bench-peers-nodeps
 
 # The workload frames (workloads.c) are benchmark code, not library API; the
 # unit tests that check them (tests/core/test_3d.c, test_fractal.c) link them in.
