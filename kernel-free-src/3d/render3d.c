@@ -11,11 +11,14 @@ static inline fx16 neg_sat(fx16 v) { return v == INT32_MIN ? INT32_MAX : -v; }
 
 /* Interpolated attributes after the depth: 0-2 colour (or normal for Phong),
  * 3-5 the colour without the shadow light (or eye position for Phong), 6-8
- * the light's screen position and depth for the shadow buffer. */
-#define NA 9
+ * the light's screen position and depth for the shadow buffer, 9-11 the
+ * texture: s, t (Q16.16) up to projection, then per triangle q, (s - s0) q
+ * and (t - t0) q for perspective-correct interpolation (see tex_setup). */
+#define NA 12
 #define A_COL 0
 #define A_POS 3
 #define A_SM  6
+#define A_TEX 9
 
 typedef struct cvert { /* clip space */
     int32_t c[4];      /* x, y, z, w in Q16.16 */
@@ -25,6 +28,7 @@ typedef struct cvert { /* clip space */
 typedef struct svert { /* screen space */
     int32_t x, y;      /* 24.8, integer values at pixel centres */
     int32_t z;         /* depth, 0 (near) .. 2^30 (far) */
+    int32_t w;         /* clip w (Q16.16, > 0), for perspective-correct textures */
     int32_t a[NA];
 } svert;
 
@@ -44,6 +48,7 @@ typedef struct tri_mode {
     uint8_t kind, na, ztest, zwrite, use_sm;
     uint8_t outline;     /* 0 fill, 1 fill and edges, 2 edges only, 3 fill pushed back */
     uint8_t lines_ztest; /* edges depth-tested */
+    uint8_t tex;         /* textured: attributes A_TEX.. carry s, t */
     int32_t zbias;
     fx_color flat[2]; /* lit, shadowed */
 } tri_mode;
@@ -316,6 +321,12 @@ int fx3d_oblique(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 zn, fx16 zf, fx_
     return 0;
 }
 
+void fx3d_texture(fx3d *r, const fx_texture *tx, fx3d_texmode mode)
+{
+    r->tex = tx;
+    r->tex_mode = mode;
+}
+
 void fx3d_plane_shadow(fx3d *r, const fx16 plane[4], int light, fx_color c)
 {
     for (int i = 0; i < 4; i++)
@@ -469,10 +480,74 @@ static void put_px(const fx_surface *s, uint8_t *row, int32_t x, int32_t y, uint
     }
 }
 
+/* The textured triangle's attributes A_TEX.. become q = w_min / w in Q22
+ * and (s - s0) q, (t - t0) q with s0, t0 vertex 0's coordinates: both are
+ * affine in screen space, so the planes interpolate them exactly and
+ * s = s0 + ((s - s0) q) / q per pixel is perspective-correct. Relative to
+ * s0, the products fit 31 bits unless s spans more than 2^9 units across
+ * the triangle, where q's scale drops to keep them in range. */
+static void tex_setup(svert *o, const svert *const v[3], int32_t st0[2])
+{
+    int32_t wmin = v[0]->w;
+    for (int i = 1; i < 3; i++)
+        wmin = FX_MIN(wmin, v[i]->w);
+    int64_t span = 0;
+    for (int i = 1; i < 3; i++)
+        for (int k = 0; k < 2; k++) {
+            int64_t d = (int64_t)v[i]->a[A_TEX + k] - v[0]->a[A_TEX + k];
+            span = FX_MAX(span, d < 0 ? -d : d);
+        }
+    int qbits = 22;
+    while (qbits > 8 && (span << qbits) >= ((int64_t)1 << 46))
+        qbits--;
+    st0[0] = v[0]->a[A_TEX];
+    st0[1] = v[0]->a[A_TEX + 1];
+    for (int i = 0; i < 3; i++) {
+        o[i] = *v[i];
+        int64_t q = ((int64_t)wmin << qbits) / (v[i]->w > 0 ? v[i]->w : 1);
+        q = q < 1 ? 1 : q;
+        int64_t ds = (int64_t)v[i]->a[A_TEX] - st0[0], dt = (int64_t)v[i]->a[A_TEX + 1] - st0[1];
+        o[i].a[A_TEX] = (int32_t)q;
+        o[i].a[A_TEX + 1] = (int32_t)((ds * q) >> 16);
+        o[i].a[A_TEX + 2] = (int32_t)((dt * q) >> 16);
+    }
+}
+
+/* The texel at the pixel whose planes hold val, combined with the lit
+ * colour col as r->tex_mode says. */
+static fx_color tex_apply(const fx3d *r, const int64_t *val, const int32_t st0[2], fx_color col)
+{
+    int64_t q = val[1 + A_TEX];
+    q = q < 1 ? 1 : q;
+    int64_t s = st0[0] + fx_mul64_shift(val[1 + A_TEX + 1], ((int64_t)1 << 62) / q, 46);
+    int64_t t = st0[1] + fx_mul64_shift(val[1 + A_TEX + 2], ((int64_t)1 << 62) / q, 46);
+    fx_color tc = fx_tex_sample(r->tex, fx_sat32(s), fx_sat32(t));
+    if (r->tex_mode == FX3D_TEX_REPLACE)
+        return tc | 0xFF000000u;
+    uint32_t out = 0xFF000000u;
+    uint32_t ta = tc >> 24;
+    for (int sh = 0; sh < 24; sh += 8) {
+        uint32_t c = (col >> sh) & 255, x = (tc >> sh) & 255, v;
+        if (r->tex_mode == FX3D_TEX_DECAL)
+            v = (c * (255 - ta) + x * ta + 127) / 255;
+        else
+            v = (c * x + 127) / 255;
+        out |= v << sh;
+    }
+    return out;
+}
+
 /* Fill triangle v0 v1 v2 (either orientation) with mode m. */
 static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const svert *v2,
                        const tri_mode *m)
 {
+    svert tv[3];
+    int32_t st0[2] = {0, 0};
+    if (m->tex) {
+        const svert *vv[3] = {v0, v1, v2};
+        tex_setup(tv, vv, st0);
+        v0 = &tv[0], v1 = &tv[1], v2 = &tv[2];
+    }
     int64_t area2 = ((int64_t)v1->x - v0->x) * ((int64_t)v2->y - v0->y) -
                     ((int64_t)v2->x - v0->x) * ((int64_t)v1->y - v0->y);
     if (area2 == 0)
@@ -567,6 +642,8 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
                     fx_vec3_normalize(&N);
                     col = fx3d_rgb_to_color(shade(pc->r, pc->el, pc->nl, P, N, sh ? pc->sm->light : -1));
                 }
+                if (m->tex)
+                    col = tex_apply(pc->r, val, st0, col);
                 put_px(s, row, (int32_t)x, y, fx_pack(s->format, col));
             }
             for (int k = 0; k < ps.n; k++)
@@ -675,6 +752,7 @@ static void project(const pctx *pc, const cvert *c, svert *s, int na)
     int64_t x = c->c[0], y = c->c[1], z = c->c[2], w = c->c[3];
     if (w <= 0)
         w = 1;
+    s->w = (int32_t)w;
     int64_t hx = (int64_t)pc->vw * 128, hy = (int64_t)pc->vh * 128;
     int64_t nx = (x + w) * hx, ny = (w - y) * hy;
     s->x = (int32_t)((int64_t)pc->vx * 256 - 128 + (nx >= 0 ? nx + w / 2 : nx - w / 2) / w);
@@ -922,7 +1000,11 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
         tm.kind = r->shading == FX3D_FLAT ? K_FLAT : r->shading == FX3D_GOURAUD ? K_GOURAUD : K_PHONG;
         tm.na = tm.kind == K_FLAT ? 0 : 6;
         if (tm.use_sm)
+            tm.na = 9;
+        if (r->tex && m->uv && r->tex->img.pixels && r->tex->img.w > 0 && r->tex->img.h > 0) {
+            tm.tex = 1;
             tm.na = NA;
+        }
     } else {
         tm.kind = K_FLAT;
         tm.use_sm = 0;
@@ -971,6 +1053,11 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
             int flip = f < 0;
             if (flip)
                 fn = fx_vec3_make(-fn.x, -fn.y, -fn.z);
+            if (tm.tex)
+                for (int i = 0; i < 3; i++) {
+                    v[i].a[A_TEX] = m->uv[2 * idx[i]];
+                    v[i].a[A_TEX + 1] = m->uv[2 * idx[i] + 1];
+                }
             if (tm.use_sm) {
                 for (int i = 0; i < 3; i++) {
                     fx_vec4 w4 = fx_mat4_apply_point(model, m->pos[idx[i]]);

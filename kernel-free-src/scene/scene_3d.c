@@ -455,6 +455,8 @@ static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
     if (nt > FX_SCENE_MAX_TRIANGLES)
         return fx_scene_error(sc, "%d triangles: more than the %d one command may draw", nt, FX_SCENE_MAX_TRIANGLES);
     size_t need = (size_t)nv * 2 * sizeof(fx_vec3) + (size_t)nt * 3 * sizeof(uint32_t);
+    if (s->r.tex)
+        need += (size_t)nv * 2 * sizeof(fx16);
     if (need > s->mesh_bytes) {
         s->mesh_mem = fx_scene_alloc(sc, need);
         if (!s->mesh_mem)
@@ -467,6 +469,7 @@ static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
     m.tri = (uint32_t *)(m.nrm + nv);
     m.cap_verts = nv;
     m.cap_tris = nt;
+    m.uv = s->r.tex ? (fx16 *)(m.tri + 3 * (size_t)nt) : NULL;
     TRY(fx_mesh_make(&m, p));
     s->r.ctx = sc->ctx;
     return fx3d_draw(&s->r, &m);
@@ -522,7 +525,7 @@ int fx_scene_obj_mesh(fx_scene *sc, fx_mesh *out)
     fx_vec3 *mem = fx_scene_alloc(sc, need);
     if (!mem)
         return fx_scene_error(sc, "out of scene memory for '%s' (%d vertices)", path, nv);
-    fx_mesh m = {mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt};
+    fx_mesh m = {mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt, NULL};
     if (fx_mesh_obj_parse(&m, (const char *)data, len, &err) < 0)
         return fx_scene_error(sc, "%s: %s", path, err.msg);
     *out = m;
@@ -536,6 +539,28 @@ static int cmd_obj(fx_scene *sc)
     TRY(fx_scene_obj_mesh(sc, &m));
     s->r.ctx = sc->ctx;
     return fx3d_draw(&s->r, &m);
+}
+
+/* ---- textures ---- */
+
+/* Bind the 2D module's current texture (the 'texture' command) to the
+ * meshes drawn next; later 'texture filter|wrap' lines apply to it too. */
+static int cmd_texture3d(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"modulate", "replace", "decal", "off", NULL};
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    TRY(fx_scene_end(sc));
+    if (c == 3) {
+        fx3d_texture(&s->r, NULL, FX3D_TEX_MODULATE);
+        return 0;
+    }
+    const fx_texture *tx = fx_scene_texture(sc);
+    if (!tx)
+        return fx_scene_error(sc, "no texture yet (use 'texture' first)");
+    fx3d_texture(&s->r, tx, (fx3d_texmode)c);
+    return 0;
 }
 
 /* ---- shadows ---- */
@@ -657,6 +682,7 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
     {"floor", cmd_floor, "floor SIZE N", D},
     {"obj", cmd_obj, "obj \"FILE\"", D},
     {"shadowplane", cmd_shadowplane, "shadowplane A B C D LIGHT #RGB | shadowplane off", D},
+    {"texture3d", cmd_texture3d, "texture3d modulate|replace|decal | texture3d off", D},
     {"shadowmap", cmd_shadowmap, "shadowmap begin SIZE LIGHT TX TY TZ FOV NEAR FAR | shadowmap end | shadowmap off", D},
     {0, 0, 0, 0},
 };

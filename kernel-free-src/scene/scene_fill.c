@@ -5,6 +5,7 @@
 #include "fixel/error.h"
 #include "fixel/fill.h"
 #include "fixel/scene.h"
+#include "scene_mesh.h"
 #include "fixel/texture.h"
 #include "../base/fx_internal.h"
 
@@ -393,24 +394,27 @@ static int cmd_texture(fx_scene *sc)
     if (k != 5 && fx_scene_more(sc))
         TRY(fx_scene_arg_int(sc, &seed));
     TRY(fx_scene_end(sc));
-    for (int32_t y = 0; y < h; y++)
-        for (int32_t x = 0; x < w; x++) {
-            fx_color c;
-            if (k == 5) {
-                c = ((x / cell + y / cell) & 1) ? c1 : c0;
-            } else { /* texel centres sample the unit square */
-                fx16 s = (fx16)(((int64_t)x * 2 + 1) * FX16_ONE / (2 * w));
-                fx16 t = (fx16)(((int64_t)y * 2 + 1) * FX16_ONE / (2 * h));
-                c = fx_color_lerp(c0, c1, fx_proc_eval(k, s, t, (uint32_t)seed));
-            }
-            st->texpx[y * w + x] = c;
-        }
     uint8_t filter = st->tex.filter, wrap = st->tex.wrap;
     fx_surface_init(&st->tex.img, st->texpx, w, h, w * 4, FX_FMT_ARGB8888);
+    if (k == 5)
+        fx_tex_checker(&st->tex.img, cell, c0, c1);
+    else
+        for (int32_t y = 0; y < h; y++)
+            for (int32_t x = 0; x < w; x++) { /* texel centres sample the unit square */
+                fx16 s = (fx16)(((int64_t)x * 2 + 1) * FX16_ONE / (2 * w));
+                fx16 t = (fx16)(((int64_t)y * 2 + 1) * FX16_ONE / (2 * h));
+                st->texpx[y * w + x] = fx_color_lerp(c0, c1, fx_proc_eval(k, s, t, (uint32_t)seed));
+            }
     st->tex.filter = filter;
     st->tex.wrap = wrap;
     st->have_tex = 1;
     return 0;
+}
+
+const fx_texture *fx_scene_texture(fx_scene *sc)
+{
+    const fill_state *st = sc->mod[FX_SCENE_MOD_FILL];
+    return st && st->have_tex ? &st->tex : NULL;
 }
 
 static int need_tex(fx_scene *sc, fill_state *st)

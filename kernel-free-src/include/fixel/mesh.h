@@ -32,6 +32,13 @@ typedef struct fx_mesh {
     uint32_t *tri; /* 3 indices per triangle */
     int32_t nverts, ntris;
     int32_t cap_verts, cap_tris; /* sizes of the arrays above */
+    /* Texture coordinates, 2 per vertex (s, t in Q16.16, cap_verts pairs),
+     * or NULL: untextured. The generators fill them when given: plane, cube
+     * (each face the unit square), sphere and ellipsoid (s around the axis,
+     * t from the north pole), the sides of cone and cylinder, and
+     * the teapot (each Bezier patch its own (u, v) square); the other
+     * Platonic solids, the torus and the caps get (0, 0). */
+    fx16 *uv;
 } fx_mesh;
 
 /* Tessellation parameters and their limits (-FX_EINVAL outside). */

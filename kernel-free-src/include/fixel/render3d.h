@@ -50,6 +50,7 @@
 #include "fixel/draw.h"
 #include "fixel/mat3d.h"
 #include "fixel/mesh.h"
+#include "fixel/texture.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -115,6 +116,12 @@ typedef struct fx3d_shadowmap {
 
 #define FX3D_MAX_LIGHTS 8
 
+/* How the texel T combines with the lit colour C (OpenGL 1.x texture
+ * environment, channels in [0, 1]): modulate C * T (lighting shows through
+ * the image), replace T, decal C (1 - Ta) + T Ta (the image's alpha paints
+ * it over the lit surface). */
+typedef enum fx3d_texmode { FX3D_TEX_MODULATE, FX3D_TEX_REPLACE, FX3D_TEX_DECAL } fx3d_texmode;
+
 typedef struct fx3d {
     fx_ctx ctx;          /* surface, clip rectangle, wireframe colour */
     fx_rect viewport;
@@ -145,6 +152,9 @@ typedef struct fx3d {
     int sm_phase;         /* 0 off, 1 rendering the map, 2 using it */
     /* statistics of the last fx3d_draw (for tests and benches) */
     int32_t stat_culled, stat_drawn, stat_clipped;
+    /* Texture (fx3d_texture): meshes with uv are drawn with it in FX3D_FILL. */
+    const fx_texture *tex;
+    fx3d_texmode tex_mode;
 } fx3d;
 
 /* A pipeline on surface s: viewport = whole surface, identity matrices,
@@ -174,6 +184,25 @@ int fx3d_perspective(fx3d *r, fx_angle fovy, fx16 aspect, fx16 znear, fx16 zfar)
 int fx3d_ortho(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar);
 int fx3d_oblique(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar,
                  fx_angle alpha, fx16 len, fx16 plane);
+
+/* Texture the meshes drawn from now on (NULL: none). A mesh is textured
+ * when it has uv and the polygon mode is FX3D_FILL. Sampling is
+ * fx_tex_sample's (texture.h): nearest or bilinear, repeat or clamp, as the
+ * fx_texture says; the texture stays the caller's and must outlive the
+ * draws (in painter's mode, until fx3d_flush).
+ *
+ * Texture coordinates are interpolated perspective-correctly: per triangle
+ * the rasterizer interpolates q = w_min / w (2^22 at the nearest vertex)
+ * and (s - s0) q, (t - t0) q linearly in screen space and divides per
+ * pixel, so a texel lands where the eye-space point it belongs to projects
+ * (tests/core/test_3d_tex.c checks this against a double-precision ray
+ * cast within one texel). Colours keep the affine Gouraud scheme above.
+ *
+ * No mipmaps: one level is sampled, so a texture minified many times (a
+ * floor far away) aliases; choosing a level needs the screen-space
+ * derivatives of s and t per pixel, a second division per pixel, and the
+ * caller's memory for the pyramid. Left for later (issue #22). */
+void fx3d_texture(fx3d *r, const fx_texture *tx, fx3d_texmode mode);
 
 /* Draw a mesh with the current state. Returns 0 or a negative error. */
 int fx3d_draw(fx3d *r, const fx_mesh *m);
