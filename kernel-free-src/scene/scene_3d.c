@@ -463,7 +463,7 @@ static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
             return fx_scene_error(sc, "out of scene memory for a mesh of %d vertices", nv);
         s->mesh_bytes = need;
     }
-    fx_mesh m;
+    fx_mesh m = {0};
     m.pos = s->mesh_mem;
     m.nrm = m.pos + nv;
     m.tri = (uint32_t *)(m.nrm + nv);
@@ -535,7 +535,7 @@ int fx_scene_obj_mesh(fx_scene *sc, fx_mesh *out)
 static int cmd_obj(fx_scene *sc)
 {
     GET(s);
-    fx_mesh m;
+    fx_mesh m = {0};
     TRY(fx_scene_obj_mesh(sc, &m));
     s->r.ctx = sc->ctx;
     return fx3d_draw(&s->r, &m);

@@ -37,7 +37,9 @@ typedef struct fx_mesh {
      * (each face the unit square), sphere and ellipsoid (s around the axis,
      * t from the north pole), the sides of cone and cylinder, and
      * the teapot (each Bezier patch its own (u, v) square); the other
-     * Platonic solids, the torus and the caps get (0, 0). */
+     * Platonic solids, the torus and the caps get (0, 0). Added after
+     * the other members: a caller filling them one by one must zero-
+     * initialise the struct (fx_mesh m = {0}) so that uv is NULL. */
     fx16 *uv;
 } fx_mesh;
 
