@@ -96,7 +96,8 @@ A(gradient, FORM("off"), FORM("linear"), XY("X0"), XY("Y0"), XY("X1"), XY("Y1"),
   REP("colour stop", 2, FX_GRADIENT_MAX_STOPS), C("COLOR"));
 A(proctex, FORM("off"), FORM(0), W("fakesphere|noise|turbulence|wood|marble"), XY("X0"), XY("Y0"),
   I("SIZE", 1, CO), C("C0"), C("C1"), OPT, I("SEED", INT32_MIN, INT32_MAX));
-A(texture, FORM("filter"), W("nearest|bilinear"), FORM("wrap"), W("repeat|clamp"), FORM("checker"),
+A(texture, FORM("filter"), W("nearest|bilinear"), FORM("wrap"), W("repeat|clamp"), FORM("image"), S("PATH"),
+  FORM("checker"),
   I("W", 1, 256), I("H", 1, 256), I("CELL", 1, 256), C("C0"), C("C1"), FORM(0),
   W("fakesphere|noise|turbulence|wood|marble"), I("W", 1, 256), I("H", 1, 256), C("C0"), C("C1"), OPT,
   I("SEED", INT32_MIN, INT32_MAX));

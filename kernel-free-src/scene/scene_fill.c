@@ -364,9 +364,25 @@ static int cmd_texture(fx_scene *sc)
     if (!st)
         return -FX_ENOMEM;
     static const char *const kinds[] = {"fakesphere", "noise", "turbulence", "wood", "marble", "checker",
-                                        "filter", "wrap", 0};
+                                        "filter", "wrap", "image", 0};
     int k = fx_scene_arg_choice(sc, kinds);
     TRY(k);
+    if (k == 8) {
+        char path[256];
+        fx_surface img;
+        TRY(fx_scene_arg_string(sc, path, sizeof path));
+        TRY(fx_scene_end(sc));
+        if (!sc->host.load_image)
+            return fx_scene_error(sc, "images not available");
+        int e = sc->host.load_image(sc->host.user, path, &img);
+        if (e < 0)
+            return fx_scene_error(sc, "cannot read image '%s': %s", path, fx_strerror(e));
+        if (img.w < 1 || img.h < 1 || !img.pixels)
+            return fx_scene_error(sc, "image '%s' is empty", path);
+        st->tex.img = img;
+        st->have_tex = 1;
+        return 0;
+    }
     if (k == 6 || k == 7) {
         static const char *const filters[] = {"nearest", "bilinear", 0}, *const wraps[] = {"repeat", "clamp", 0};
         int v = fx_scene_arg_choice(sc, k == 6 ? filters : wraps);
@@ -494,7 +510,7 @@ const fx_scene_cmd fx_scene_cmds_fill[] = {
      FX_SCENE_DRAWS},
     {"texture", cmd_texture,
      "texture checker W H CELL #C0 #C1 | texture fakesphere|noise|turbulence|wood|marble W H #C0 #C1 [SEED] | "
-     "texture filter nearest|bilinear | texture wrap repeat|clamp",
+     "texture filter nearest|bilinear | texture wrap repeat|clamp | texture image PATH",
      0},
     {"textri", cmd_textri, "textri X0 Y0 S0 T0 X1 Y1 S1 T1 X2 Y2 S2 T2", FX_SCENE_DRAWS},
     {"texpoly", cmd_texpoly, "texpoly X0 Y0 S0 T0 X1 Y1 S1 T1 ... (convex)", FX_SCENE_DRAWS},

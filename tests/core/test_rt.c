@@ -735,7 +735,7 @@ FX_TEST(rt_script_renders_and_traces_a_pixel)
 {
     static uint32_t px[64 * 48];
     script_host h = {{px, 64 * 48}, calloc(1, sizeof(lines))};
-    fx_scene_host hs = {&h, host_surface, 0, 0, host_trace};
+    fx_scene_host hs = {&h, host_surface, 0, 0, host_trace, NULL};
     size_t arena_size = 1 << 20;
     void *arena = malloc(arena_size);
     fx_scene sc;
