@@ -41,6 +41,8 @@ typedef struct elight {
     fx16 cos_cut;
     int32_t exp;
     fx3d_rgb amb, diff, spec;
+    int atten;
+    fx16 kc, kl, kq;
 } elight;
 
 /* What one triangle needs in the rasterizer. */
@@ -141,6 +143,10 @@ static void prepare_lights(const fx3d *r, elight *el, int *nl)
         e->amb = l->ambient;
         e->diff = l->diffuse;
         e->spec = l->specular;
+        e->kc = l->att_const > 0 ? l->att_const : 0;
+        e->kl = l->att_linear > 0 ? l->att_linear : 0;
+        e->kq = l->att_quad > 0 ? l->att_quad : 0;
+        e->atten = l->type != FX3D_LIGHT_DIRECTIONAL && (e->kc | e->kl | e->kq) != 0;
     }
     *nl = n;
 }
@@ -161,17 +167,28 @@ static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec
         if (e->type == FX3D_LIGHT_OFF)
             continue;
         fx_vec3 L = e->pos;
+        fx16 sf = FX16_ONE;
         if (e->type != FX3D_LIGHT_DIRECTIONAL) {
             L = fx_vec3_sub(e->pos, P);
+            if (e->atten) {
+                /* 1 / (kc + kl d + kq d^2) in Q16, the denominator in Q32 */
+                int64_t d = fx_vec3_length(L);
+                int64_t q = ((int64_t)e->kq * d) >> 16; /* kq d, Q16: below 2^42 */
+                int64_t den = ((int64_t)e->kc << 16) + (int64_t)e->kl * d;
+                den = q && d > (INT64_MAX / 2) / q ? INT64_MAX / 2 : den + q * d;
+                if (den <= 0)
+                    continue;
+                int64_t a = ((int64_t)1 << 48) / den;
+                sf = a > INT32_MAX ? INT32_MAX : (fx16)a;
+            }
             if (fx_vec3_normalize(&L) < 0)
                 continue;
         }
-        fx16 sf = FX16_ONE;
         if (e->type == FX3D_LIGHT_SPOT) {
             fx16 sd = -fx_vec3_dot(L, e->dir);
             if (sd < e->cos_cut)
                 continue;
-            sf = fx16_powi(sd, e->exp);
+            sf = fx16_mul(sf, fx16_powi(sd, e->exp));
         }
         fx3d_rgb c = rgb_mul(e->amb, m->ambient);
         fx16 ndl = fx_vec3_dot(N, L);

@@ -359,7 +359,30 @@ static int cmd_light(fx_scene *sc)
         return fx_scene_error(sc, "a directional light needs a non-zero direction");
     l.ambient = fx3d_rgb_from_color(0);
     l.diffuse = l.specular = fx3d_rgb_from_color(col);
+    /* as glLight: a new position or colour keeps the attenuation */
+    l.att_const = s->r.light[i].att_const;
+    l.att_linear = s->r.light[i].att_linear;
+    l.att_quad = s->r.light[i].att_quad;
     s->r.light[i] = l;
+    return 0;
+}
+
+static int cmd_attenuation(fx_scene *sc)
+{
+    GET(s);
+    int32_t i;
+    fx16 k[3];
+    TRY(fx_scene_arg_int(sc, &i));
+    for (int j = 0; j < 3; j++)
+        TRY(fx_scene_arg_fx16(sc, &k[j]));
+    TRY(fx_scene_end(sc));
+    if (i < 0 || i >= FX3D_MAX_LIGHTS)
+        return fx_scene_error(sc, "light number %d out of range (0..%d)", i, FX3D_MAX_LIGHTS - 1);
+    if (k[0] < 0 || k[1] < 0 || k[2] < 0)
+        return fx_scene_error(sc, "attenuation factors must be >= 0");
+    s->r.light[i].att_const = k[0];
+    s->r.light[i].att_linear = k[1];
+    s->r.light[i].att_quad = k[2];
     return 0;
 }
 
@@ -682,6 +705,7 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
     {"floor", cmd_floor, "floor SIZE N", D},
     {"obj", cmd_obj, "obj \"FILE\"", D},
     {"shadowplane", cmd_shadowplane, "shadowplane A B C D LIGHT #RGB | shadowplane off", D},
+    {"attenuation", cmd_attenuation, "attenuation LIGHT KC KL KQ", D},
     {"texture3d", cmd_texture3d, "texture3d modulate|replace|decal | texture3d off", D},
     {"shadowmap", cmd_shadowmap, "shadowmap begin SIZE LIGHT TX TY TZ FOV NEAR FAR | shadowmap end | shadowmap off", D},
     {0, 0, 0, 0},

@@ -261,3 +261,40 @@ FX_TEST(tex3d_generators_write_texture_coordinates)
             FX_CHECK_EQ(uv[2 * (9 * p + i) + 1], (i % 3) * ONE / 2);
         }
 }
+
+FX_TEST(light_attenuation_constant_linear_quadratic)
+{
+    trig *g = trig_new(60);
+    fx3d *r = &g->r;
+    r->ambient = fx3d_rgb_from_color(0);
+    r->mat.ambient = r->mat.specular = r->mat.emission = fx3d_rgb_from_color(0);
+    r->mat.diffuse = fx3d_rgb_from_color(0xFFFFFF);
+    r->light[0].type = FX3D_LIGHT_POINT;
+    r->light[0].pos = fx_vec3_make(0, 0, 4 * ONE); /* 4 units in front of P, along N */
+    fx_vec3 P = fx_vec3_make(0, 0, 0), N = fx_vec3_make(0, 0, ONE);
+    FX_CHECK(abs(fx3d_shade(r, P, N).r - ONE) <= 2); /* no attenuation: full diffuse */
+    /* 1 / (1 + 0.25 * 4 + 0.0625 * 16) = 1/3 */
+    r->light[0].att_const = ONE;
+    r->light[0].att_linear = ONE / 4;
+    r->light[0].att_quad = ONE / 16;
+    FX_CHECK_MSG(abs(fx3d_shade(r, P, N).g - ONE / 3) <= 4, "%d", fx3d_shade(r, P, N).g);
+    /* each term alone */
+    r->light[0].att_linear = r->light[0].att_quad = 0;
+    r->light[0].att_const = 2 * ONE;
+    FX_CHECK(abs(fx3d_shade(r, P, N).b - ONE / 2) <= 4);
+    r->light[0].att_const = 0;
+    r->light[0].att_linear = ONE;
+    FX_CHECK(abs(fx3d_shade(r, P, N).b - ONE / 4) <= 4);
+    r->light[0].att_linear = 0;
+    r->light[0].att_quad = ONE;
+    FX_CHECK(abs(fx3d_shade(r, P, N).b - ONE / 16) <= 4);
+    /* a far light fades to nothing without overflow */
+    r->light[0].pos = fx_vec3_make(0, 0, 30000 * ONE);
+    r->light[0].att_quad = 1024 * ONE;
+    FX_CHECK_EQ(fx3d_shade(r, P, N).b, 0);
+    /* directional lights are never attenuated */
+    r->light[0].type = FX3D_LIGHT_DIRECTIONAL;
+    r->light[0].pos = N;
+    FX_CHECK(abs(fx3d_shade(r, P, N).r - ONE) <= 2);
+    free(g);
+}

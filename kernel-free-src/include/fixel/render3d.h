@@ -75,8 +75,11 @@ typedef enum fx3d_light_type {
  *   I = spot * (Ia ka + Id kd max(N.L, 0) + Is ks max(R.V, 0)^shininess)
  * with R = 2 (N.L) N - L the reflection of L, V toward the viewer, and
  * spot = max(-L.D, 0)^exponent inside the cut-off cone (0 outside), 1 for
- * other lights. The total adds emission and global ambient * ka. No
- * distance attenuation. */
+ * other lights. The total adds emission and global ambient * ka. Point and
+ * spot lights may fade with the distance d to the light as in OpenGL 1.x:
+ * the light's whole term is multiplied by 1 / (kc + kl d + kq d^2)
+ * (att_const, att_linear, att_quad); all three 0, as fx3d_init and a
+ * zeroed light leave them, means no attenuation (GL's kc = 1). */
 typedef struct fx3d_light {
     fx3d_light_type type;
     fx_vec3 pos;      /* world: position, or direction toward a directional light */
@@ -84,6 +87,7 @@ typedef struct fx3d_light {
     fx_angle cutoff;  /* half-angle of the spot cone (< 90 degrees) */
     int32_t spot_exp; /* 0..128 */
     fx3d_rgb ambient, diffuse, specular;
+    fx16 att_const, att_linear, att_quad; /* >= 0 */
 } fx3d_light;
 
 typedef struct fx3d_material {
