@@ -11,14 +11,15 @@ static inline fx16 neg_sat(fx16 v) { return v == INT32_MIN ? INT32_MAX : -v; }
 
 /* Interpolated attributes after the depth: 0-2 colour (or normal for Phong),
  * 3-5 the colour without the shadow light (or eye position for Phong), 6-8
- * the light's screen position and depth for the shadow buffer, 9-11 the
- * texture: s, t (Q16.16) up to projection, then per triangle q, (s - s0) q
+ * the light's screen position and depth for the shadow buffer, 12-14 the
+ * vertex colour under Phong shading, 9-11 the texture: s, t (Q16.16) up to projection, then per triangle q, (s - s0) q
  * and (t - t0) q for perspective-correct interpolation (see tex_setup). */
-#define NA 12
+#define NA 15
 #define A_COL 0
 #define A_POS 3
 #define A_SM  6
 #define A_TEX 9
+#define A_VCOL 12 /* Phong with vertex colours: the colour, interpolated */
 
 typedef struct cvert { /* clip space */
     int32_t c[4];      /* x, y, z, w in Q16.16 */
@@ -51,6 +52,7 @@ typedef struct tri_mode {
     uint8_t outline;     /* 0 fill, 1 fill and edges, 2 edges only, 3 fill pushed back */
     uint8_t lines_ztest; /* edges depth-tested */
     uint8_t tex;         /* textured: attributes A_TEX.. carry s, t */
+    uint8_t vcol;        /* Phong with vertex colours in A_VCOL.. */
     int32_t zbias;
     fx_color flat[2]; /* lit, shadowed */
 } tri_mode;
@@ -153,10 +155,19 @@ static void prepare_lights(const fx3d *r, elight *el, int *nl)
 
 /* The lighting model of render3d.h at eye-space point P with unit normal
  * N; light `skip` (the one in whose shadow P lies, or -1) contributes its
- * ambient term only. */
-static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec3 N, int skip)
+ * ambient term only. vcol, when given, is the vertex colour that stands
+ * for the material's ambient and diffuse reflectance (glColorMaterial's
+ * GL_AMBIENT_AND_DIFFUSE). */
+static fx3d_rgb shade_c(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec3 N, int skip,
+                        const fx3d_rgb *vcol)
 {
+    fx3d_material mc;
     const fx3d_material *m = &r->mat;
+    if (vcol) {
+        mc = r->mat;
+        mc.ambient = mc.diffuse = *vcol;
+        m = &mc;
+    }
     fx3d_rgb acc = m->emission;
     fx3d_rgb ga = rgb_mul(r->ambient, m->ambient);
     rgb_madd(&acc, ga, FX16_ONE);
@@ -214,6 +225,11 @@ static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec
         rgb_madd(&acc, c, sf);
     }
     return acc;
+}
+
+static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec3 N, int skip)
+{
+    return shade_c(r, el, nl, P, N, skip, NULL);
 }
 
 fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal)
@@ -657,7 +673,10 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
                     fx_vec3 N = fx_vec3_make((fx16)(val[1] >> 16), (fx16)(val[2] >> 16), (fx16)(val[3] >> 16));
                     fx_vec3 P = fx_vec3_make((fx16)(val[4] >> 16), (fx16)(val[5] >> 16), (fx16)(val[6] >> 16));
                     fx_vec3_normalize(&N);
-                    col = fx3d_rgb_to_color(shade(pc->r, pc->el, pc->nl, P, N, sh ? pc->sm->light : -1));
+                    fx3d_rgb vc = {(fx16)(val[1 + A_VCOL] >> 16), (fx16)(val[2 + A_VCOL] >> 16),
+                                   (fx16)(val[3 + A_VCOL] >> 16)};
+                    col = fx3d_rgb_to_color(shade_c(pc->r, pc->el, pc->nl, P, N, sh ? pc->sm->light : -1,
+                                                    m->vcol ? &vc : NULL));
                 }
                 if (m->tex)
                     col = tex_apply(pc->r, val, st0, col);
@@ -1020,6 +1039,10 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
             tm.na = 9;
         if (r->tex && m->uv && r->tex->img.pixels && r->tex->img.w > 0 && r->tex->img.h > 0) {
             tm.tex = 1;
+            tm.na = 12;
+        }
+        if (m->col && tm.kind == K_PHONG) {
+            tm.vcol = 1;
             tm.na = NA;
         }
     } else {
@@ -1088,8 +1111,14 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                         (fx16)(((int64_t)ep[0].x + ep[1].x + ep[2].x) / 3),
                         (fx16)(((int64_t)ep[0].y + ep[1].y + ep[2].y) / 3),
                         (fx16)(((int64_t)ep[0].z + ep[1].z + ep[2].z) / 3));
-                    tm.flat[0] = fx3d_rgb_to_color(shade(r, pc.el, pc.nl, cen, fn, -1));
-                    tm.flat[1] = tm.use_sm ? fx3d_rgb_to_color(shade(r, pc.el, pc.nl, cen, fn, pc.sm->light))
+                    /* GL's flat shading takes the last vertex's colour */
+                    fx3d_rgb pv, *pvc = NULL;
+                    if (m->col) {
+                        pv = fx3d_rgb_from_color(m->col[idx[2]]);
+                        pvc = &pv;
+                    }
+                    tm.flat[0] = fx3d_rgb_to_color(shade_c(r, pc.el, pc.nl, cen, fn, -1, pvc));
+                    tm.flat[1] = tm.use_sm ? fx3d_rgb_to_color(shade_c(r, pc.el, pc.nl, cen, fn, pc.sm->light, pvc))
                                            : tm.flat[0];
                 } else {
                     for (int i = 0; i < 3; i++) {
@@ -1101,13 +1130,20 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                             else if (flip)
                                 n = fx_vec3_make(-n.x, -n.y, -n.z);
                         }
+                        fx3d_rgb vc, *vcp = NULL;
+                        if (m->col) {
+                            vc = fx3d_rgb_from_color(m->col[idx[i]]);
+                            vcp = &vc;
+                        }
                         if (tm.kind == K_GOURAUD) {
-                            set_rgb(&v[i].a[A_COL], shade(r, pc.el, pc.nl, ep[i], n, -1));
+                            set_rgb(&v[i].a[A_COL], shade_c(r, pc.el, pc.nl, ep[i], n, -1, vcp));
                             if (tm.use_sm)
-                                set_rgb(&v[i].a[A_POS], shade(r, pc.el, pc.nl, ep[i], n, pc.sm->light));
+                                set_rgb(&v[i].a[A_POS], shade_c(r, pc.el, pc.nl, ep[i], n, pc.sm->light, vcp));
                         } else {
                             set_vec(&v[i].a[A_COL], n);
                             set_vec(&v[i].a[A_POS], ep[i]);
+                            if (vcp)
+                                set_rgb(&v[i].a[A_VCOL], vc);
                         }
                     }
                 }

@@ -548,7 +548,7 @@ int fx_scene_obj_mesh(fx_scene *sc, fx_mesh *out)
     fx_vec3 *mem = fx_scene_alloc(sc, need);
     if (!mem)
         return fx_scene_error(sc, "out of scene memory for '%s' (%d vertices)", path, nv);
-    fx_mesh m = {mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt, NULL};
+    fx_mesh m = {mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt, NULL, NULL};
     if (fx_mesh_obj_parse(&m, (const char *)data, len, &err) < 0)
         return fx_scene_error(sc, "%s: %s", path, err.msg);
     *out = m;
@@ -560,6 +560,36 @@ static int cmd_obj(fx_scene *sc)
     GET(s);
     fx_mesh m = {0};
     TRY(fx_scene_obj_mesh(sc, &m));
+    s->r.ctx = sc->ctx;
+    return fx3d_draw(&s->r, &m);
+}
+
+/* A convex polygon with a colour per vertex, e.g. the course's quad with
+ * four colours, lit with the vertex colours as ambient and diffuse
+ * reflectance (texture coordinates: none). */
+static int cmd_polygon3d(fx_scene *sc)
+{
+    GET(s);
+    fx_vec3 pos[16];
+    uint32_t col[16], tri[3 * 14];
+    int n = 0;
+    while (fx_scene_more(sc)) {
+        if (n == 16)
+            return fx_scene_error(sc, "more than 16 vertices");
+        fx16 v[3];
+        for (int k = 0; k < 3; k++)
+            TRY(fx_scene_arg_fx16(sc, &v[k]));
+        TRY(fx_scene_arg_color(sc, &col[n]));
+        pos[n++] = fx_vec3_make(v[0], v[1], v[2]);
+    }
+    if (n < 3)
+        return fx_scene_error(sc, "polygon3d needs at least 3 vertices (X Y Z #RRGGBB each)");
+    for (int i = 1; i + 1 < n; i++) {
+        tri[3 * (i - 1)] = 0;
+        tri[3 * (i - 1) + 1] = (uint32_t)i;
+        tri[3 * (i - 1) + 2] = (uint32_t)i + 1;
+    }
+    fx_mesh m = {pos, NULL, tri, n, n - 2, n, n - 2, NULL, col};
     s->r.ctx = sc->ctx;
     return fx3d_draw(&s->r, &m);
 }
@@ -705,6 +735,7 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
     {"floor", cmd_floor, "floor SIZE N", D},
     {"obj", cmd_obj, "obj \"FILE\"", D},
     {"shadowplane", cmd_shadowplane, "shadowplane A B C D LIGHT #RGB | shadowplane off", D},
+    {"polygon3d", cmd_polygon3d, "polygon3d X0 Y0 Z0 #C0 X1 Y1 Z1 #C1 X2 Y2 Z2 #C2 ... (convex, <= 16)", D},
     {"attenuation", cmd_attenuation, "attenuation LIGHT KC KL KQ", D},
     {"texture3d", cmd_texture3d, "texture3d modulate|replace|decal | texture3d off", D},
     {"shadowmap", cmd_shadowmap, "shadowmap begin SIZE LIGHT TX TY TZ FOV NEAR FAR | shadowmap end | shadowmap off", D},

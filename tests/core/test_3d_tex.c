@@ -55,7 +55,7 @@ static void floor_quad(fx3d *r)
                       fx_vec3_make(10 * ONE, -ONE, -21 * ONE), fx_vec3_make(-10 * ONE, -ONE, -21 * ONE)};
     fx16 uv[8] = {0, 0, ONE, 0, ONE, ONE, 0, ONE};
     uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
-    fx_mesh m = {pos, NULL, tri, 4, 2, 4, 2, uv};
+    fx_mesh m = {pos, NULL, tri, 4, 2, 4, 2, uv, NULL};
     FX_CHECK_EQ(fx3d_draw(r, &m), 0);
 }
 
@@ -130,7 +130,7 @@ static void facing_quad(fx3d *r, fx16 lo, fx16 hi)
                       fx_vec3_make(hx, hy, -2 * ONE), fx_vec3_make(-hx, hy, -2 * ONE)};
     fx16 uv[8] = {lo, lo, hi, lo, hi, hi, lo, hi};
     uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
-    fx_mesh m = {pos, NULL, tri, 4, 2, 4, 2, uv};
+    fx_mesh m = {pos, NULL, tri, 4, 2, 4, 2, uv, NULL};
     FX_CHECK_EQ(fx3d_draw(r, &m), 0);
 }
 
@@ -175,7 +175,7 @@ FX_TEST(tex3d_modulate_replace_decal_combine_texel_and_light)
     fx_vec3 pos[3] = {fx_vec3_make(-ONE, -ONE, -2 * ONE), fx_vec3_make(ONE, -ONE, -2 * ONE),
                       fx_vec3_make(0, ONE, -2 * ONE)};
     uint32_t tri[3] = {0, 1, 2};
-    fx_mesh m = {pos, NULL, tri, 3, 1, 3, 1, NULL};
+    fx_mesh m = {pos, NULL, tri, 3, 1, 3, 1, NULL, NULL};
     FX_CHECK_EQ(fx3d_draw(&g->r, &m), 0);
     FX_CHECK_EQ(g->px[60 * W + 80] & 0xFFFFFF, lit);
     free(g);
@@ -232,7 +232,7 @@ FX_TEST(tex3d_generators_write_texture_coordinates)
     static fx_vec3 pos[2000], nrm[2000];
     static uint32_t tri[3 * 4000];
     static fx16 uv[4000];
-    fx_mesh m = {pos, nrm, tri, 0, 0, 2000, 4000, uv};
+    fx_mesh m = {pos, nrm, tri, 0, 0, 2000, 4000, uv, NULL};
     fx_mesh_params cube = {FX_MESH_CUBE, ONE, 0, 0, 0, 0};
     FX_CHECK_EQ(fx_mesh_make(&m, &cube), 0);
     for (int f = 0; f < 6; f++) { /* each face the unit square, once per corner */
@@ -296,5 +296,40 @@ FX_TEST(light_attenuation_constant_linear_quadratic)
     r->light[0].type = FX3D_LIGHT_DIRECTIONAL;
     r->light[0].pos = N;
     FX_CHECK(abs(fx3d_shade(r, P, N).r - ONE) <= 2);
+    free(g);
+}
+
+FX_TEST(vertex_colours_stand_for_ambient_and_diffuse)
+{
+    trig *g = trig_new(53);
+    fx3d *r = &g->r;
+    r->light[0].type = FX3D_LIGHT_OFF;
+    r->ambient = fx3d_rgb_from_color(0xFFFFFF);
+    r->mat.ambient = r->mat.diffuse = fx3d_rgb_from_color(0x101010); /* replaced by the vertex colours */
+    r->mat.specular = fx3d_rgb_from_color(0);
+    fx16 hx = ONE * 2 / 3, hy = ONE / 2;
+    fx_vec3 pos[4] = {fx_vec3_make(-hx, -hy, -2 * ONE), fx_vec3_make(hx, -hy, -2 * ONE),
+                      fx_vec3_make(hx, hy, -2 * ONE), fx_vec3_make(-hx, hy, -2 * ONE)};
+    uint32_t col[4] = {0xFF0000, 0x00FF00, 0x0000FF, 0xFFFF00};
+    uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
+    fx_mesh m = {pos, NULL, tri, 4, 2, 4, 2, NULL, col};
+    for (int mode = 0; mode < 3; mode++) {
+        r->shading = mode == 0 ? FX3D_GOURAUD : mode == 1 ? FX3D_PHONG : FX3D_FLAT;
+        FX_CHECK_EQ(fx3d_draw(r, &m), 0);
+        /* the corner pixels (40, 89) bottom left ... (119, 30) top right */
+        uint32_t bl = g->px[89 * W + 40] & 0xFFFFFF, tr = g->px[30 * W + 119] & 0xFFFFFF;
+        uint32_t mid = g->px[60 * W + 80] & 0xFFFFFF;
+        if (mode < 2) {
+            FX_CHECK_MSG((bl >> 16) > 0xF0 && (bl & 0xFFFF) < 0x1010, "mode %d bottom left %06x", mode, bl);
+            FX_CHECK_MSG((tr & 0xFF) > 0xF0 && (tr >> 8) < 0x1010, "mode %d top right %06x", mode, tr);
+            /* the middle lies on the diagonal 0-2: half red, half blue */
+            FX_CHECK_MSG((mid >> 16) > 0x70 && (mid >> 16) < 0x90 && (mid >> 8 & 255) < 0x10 &&
+                             (mid & 255) > 0x70 && (mid & 255) < 0x90,
+                         "mode %d middle %06x", mode, mid);
+        } else { /* flat: each triangle its last vertex's colour */
+            FX_CHECK_EQ(g->px[85 * W + 110] & 0xFFFFFF, 0x0000FFu); /* triangle 0 1 2 */
+            FX_CHECK_EQ(g->px[35 * W + 50] & 0xFFFFFF, 0xFFFF00u);  /* triangle 0 2 3 */
+        }
+    }
     free(g);
 }

@@ -41,6 +41,12 @@ typedef struct fx_mesh {
      * the other members: a caller filling them one by one must zero-
      * initialise the struct (fx_mesh m = {0}) so that uv is NULL. */
     fx16 *uv;
+    /* Per-vertex colours (cap_verts of them) or NULL. A vertex colour
+     * stands for the material's ambient and diffuse reflectance where the
+     * vertex is lit (OpenGL's glColorMaterial(GL_AMBIENT_AND_DIFFUSE)):
+     * Gouraud interpolates the lit colours, Phong the vertex colours, flat
+     * shading takes the triangle's last vertex as GL does. */
+    uint32_t *col; /* fx_color, 0xAARRGGBB */
 } fx_mesh;
 
 /* Tessellation parameters and their limits (-FX_EINVAL outside). */
