@@ -5,6 +5,7 @@
  * All drawing of 3D primitives to the surface happens in this file. */
 #include "fixel/render3d.h"
 #include "fixel/error.h"
+#include "fixel/rt.h"
 #include "../base/fx_internal.h"
 
 static inline fx16 neg_sat(fx16 v) { return v == INT32_MIN ? INT32_MAX : -v; }
@@ -14,12 +15,13 @@ static inline fx16 neg_sat(fx16 v) { return v == INT32_MIN ? INT32_MAX : -v; }
  * the light's screen position and depth for the shadow buffer, 12-14 the
  * vertex colour under Phong shading, 9-11 the texture: s, t (Q16.16) up to projection, then per triangle q, (s - s0) q
  * and (t - t0) q for perspective-correct interpolation (see tex_setup). */
-#define NA 15
+#define NA 18
 #define A_COL 0
 #define A_POS 3
 #define A_SM  6
 #define A_TEX 9
 #define A_VCOL 12 /* Phong with vertex colours: the colour, interpolated */
+#define A_OBJ 15  /* solid textures: the object-space point / scale */
 
 typedef struct cvert { /* clip space */
     int32_t c[4];      /* x, y, z, w in Q16.16 */
@@ -53,6 +55,7 @@ typedef struct tri_mode {
     uint8_t lines_ztest; /* edges depth-tested */
     uint8_t tex;         /* textured: attributes A_TEX.. carry s, t */
     uint8_t vcol;        /* Phong with vertex colours in A_VCOL.. */
+    uint8_t solid;       /* solid texture from A_OBJ.. */
     int32_t zbias;
     fx_color flat[2]; /* lit, shadowed */
 } tri_mode;
@@ -360,6 +363,14 @@ void fx3d_texture(fx3d *r, const fx_texture *tx, fx3d_texmode mode)
     r->tex_mode = mode;
 }
 
+void fx3d_solid(fx3d *r, int kind, fx_color c0, fx_color c1, fx16 scale)
+{
+    r->solid = kind;
+    r->solid_c0 = c0;
+    r->solid_c1 = c1;
+    r->solid_scale = scale > 0 ? scale : FX16_ONE;
+}
+
 void fx3d_plane_shadow(fx3d *r, const fx16 plane[4], int light, fx_color c)
 {
     for (int i = 0; i < 4; i++)
@@ -546,6 +557,14 @@ static void tex_setup(svert *o, const svert *const v[3], int32_t st0[2])
     }
 }
 
+static fx_color modulate(fx_color col, fx_color tc)
+{
+    uint32_t out = 0xFF000000u;
+    for (int sh = 0; sh < 24; sh += 8)
+        out |= ((((col >> sh) & 255) * ((tc >> sh) & 255) + 127) / 255) << sh;
+    return out;
+}
+
 /* The texel at the pixel whose planes hold val, combined with the lit
  * colour col as r->tex_mode says. */
 static fx_color tex_apply(const fx3d *r, const int64_t *val, const int32_t st0[2], fx_color col)
@@ -557,15 +576,13 @@ static fx_color tex_apply(const fx3d *r, const int64_t *val, const int32_t st0[2
     fx_color tc = fx_tex_sample(r->tex, fx_sat32(s), fx_sat32(t));
     if (r->tex_mode == FX3D_TEX_REPLACE)
         return tc | 0xFF000000u;
+    if (r->tex_mode != FX3D_TEX_DECAL)
+        return modulate(col, tc);
     uint32_t out = 0xFF000000u;
     uint32_t ta = tc >> 24;
     for (int sh = 0; sh < 24; sh += 8) {
-        uint32_t c = (col >> sh) & 255, x = (tc >> sh) & 255, v;
-        if (r->tex_mode == FX3D_TEX_DECAL)
-            v = (c * (255 - ta) + x * ta + 127) / 255;
-        else
-            v = (c * x + 127) / 255;
-        out |= v << sh;
+        uint32_t c = (col >> sh) & 255, x = (tc >> sh) & 255;
+        out |= ((c * (255 - ta) + x * ta + 127) / 255) << sh;
     }
     return out;
 }
@@ -680,6 +697,12 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
                 }
                 if (m->tex)
                     col = tex_apply(pc->r, val, st0, col);
+                if (m->solid) {
+                    fx_vec3 q = fx_vec3_make((fx16)(val[1 + A_OBJ] >> 16), (fx16)(val[2 + A_OBJ] >> 16),
+                                             (fx16)(val[3 + A_OBJ] >> 16));
+                    fx16 w = fx_rt_solid(pc->r->solid, q);
+                    col = modulate(col, fx_color_lerp(pc->r->solid_c0, pc->r->solid_c1, w));
+                }
                 put_px(s, row, (int32_t)x, y, fx_pack(s->format, col));
             }
             for (int k = 0; k < ps.n; k++)
@@ -1043,6 +1066,10 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
         }
         if (m->col && tm.kind == K_PHONG) {
             tm.vcol = 1;
+            tm.na = 15;
+        }
+        if (r->solid > 0 && r->solid < 4) {
+            tm.solid = 1;
             tm.na = NA;
         }
     } else {
@@ -1093,6 +1120,14 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
             int flip = f < 0;
             if (flip)
                 fn = fx_vec3_make(-fn.x, -fn.y, -fn.z);
+            if (tm.solid)
+                for (int i = 0; i < 3; i++) {
+                    fx_vec3 o = m->pos[idx[i]];
+                    fx16 sc = r->solid_scale > 0 ? r->solid_scale : FX16_ONE;
+                    v[i].a[A_OBJ] = fx_sat32(((int64_t)o.x << 16) / sc);
+                    v[i].a[A_OBJ + 1] = fx_sat32(((int64_t)o.y << 16) / sc);
+                    v[i].a[A_OBJ + 2] = fx_sat32(((int64_t)o.z << 16) / sc);
+                }
             if (tm.tex)
                 for (int i = 0; i < 3; i++) {
                     v[i].a[A_TEX] = m->uv[2 * idx[i]];

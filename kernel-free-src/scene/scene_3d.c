@@ -596,6 +596,27 @@ static int cmd_polygon3d(fx_scene *sc)
 
 /* ---- textures ---- */
 
+static int cmd_solid3d(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"off", "wood", "marble", "checker", NULL};
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    fx_color c0 = 0, c1 = 0;
+    fx16 scale = FX16_ONE;
+    if (c != 0) {
+        TRY(fx_scene_arg_color(sc, &c0));
+        TRY(fx_scene_arg_color(sc, &c1));
+        TRY(fx_scene_arg_fx16(sc, &scale));
+        if (scale < FX16_ONE / 16 || scale > 64 * FX16_ONE)
+            return fx_scene_error(sc, "scale out of range (0.0625..64)");
+    }
+    TRY(fx_scene_end(sc));
+    /* the choice order is rt.h's: none, wood, marble, checker */
+    fx3d_solid(&s->r, c, c0, c1, scale);
+    return 0;
+}
+
 /* Bind the 2D module's current texture (the 'texture' command) to the
  * meshes drawn next; later 'texture filter|wrap' lines apply to it too. */
 static int cmd_texture3d(fx_scene *sc)
@@ -736,6 +757,7 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
     {"obj", cmd_obj, "obj \"FILE\"", D},
     {"shadowplane", cmd_shadowplane, "shadowplane A B C D LIGHT #RGB | shadowplane off", D},
     {"polygon3d", cmd_polygon3d, "polygon3d X0 Y0 Z0 #C0 X1 Y1 Z1 #C1 X2 Y2 Z2 #C2 ... (convex, <= 16)", D},
+    {"solid3d", cmd_solid3d, "solid3d wood|marble|checker #C0 #C1 SCALE | solid3d off", D},
     {"attenuation", cmd_attenuation, "attenuation LIGHT KC KL KQ", D},
     {"texture3d", cmd_texture3d, "texture3d modulate|replace|decal | texture3d off", D},
     {"shadowmap", cmd_shadowmap, "shadowmap begin SIZE LIGHT TX TY TZ FOV NEAR FAR | shadowmap end | shadowmap off", D},

@@ -8,6 +8,7 @@
 #include <string.h>
 #include "fixel/error.h"
 #include "fixel/render3d.h"
+#include "fixel/rt.h"
 #include "fx_test.h"
 
 #define ONE FX16_ONE
@@ -331,5 +332,45 @@ FX_TEST(vertex_colours_stand_for_ambient_and_diffuse)
             FX_CHECK_EQ(g->px[35 * W + 50] & 0xFFFFFF, 0xFFFF00u);  /* triangle 0 2 3 */
         }
     }
+    free(g);
+}
+
+FX_TEST(solid_textures_use_the_ray_tracers_function_in_object_space)
+{
+    trig *g = trig_new(53);
+    fx3d *r = &g->r;
+    r->light[0].type = FX3D_LIGHT_OFF;
+    r->ambient = fx3d_rgb_from_color(0xFFFFFF);
+    r->mat.ambient = fx3d_rgb_from_color(0xFFFFFF); /* lit colour white: the pixel is the mix */
+    r->mat.specular = fx3d_rgb_from_color(0);
+    fx3d_solid(r, FX_RT_TEX_CHECKER, 0x204060, 0xC08040, ONE);
+    facing_quad(r, 0, ONE);
+    /* unit cells: object x < 0, y < 0, z = -2 sums to an even cell (c0);
+     * crossing x = 0 or y = 0 flips it */
+    FX_CHECK_EQ(g->px[80 * W + 50] & 0xFFFFFF, 0x204060u);
+    FX_CHECK_EQ(g->px[80 * W + 110] & 0xFFFFFF, 0xC08040u);
+    FX_CHECK_EQ(g->px[40 * W + 50] & 0xFFFFFF, 0xC08040u);
+    FX_CHECK_EQ(g->px[40 * W + 110] & 0xFFFFFF, 0x204060u);
+    /* marble: each pixel the mix fx_rt_solid gives at its object point,
+     * here at the quad's centre (object (0, 0, -2)) */
+    fx3d_solid(r, FX_RT_TEX_MARBLE, 0x000000, 0xFFFFFF, ONE);
+    facing_quad(r, 0, ONE);
+    /* pixel (80, 60)'s centre: 60 pixels a unit, half a pixel right of and
+     * below the centre */
+    fx16 w = fx_rt_solid(FX_RT_TEX_MARBLE, fx_vec3_make(ONE / 120, -ONE / 120, -2 * ONE));
+    int want = (int)(((int64_t)w * 255 + 0x8000) >> 16);
+    int got = (int)(g->px[60 * W + 80] & 255);
+    FX_CHECK_MSG(abs(got - want) <= 3, "marble %d, want %d", got, want);
+    /* the grain moves with the object: translating the quad in x keeps the
+     * pixel pattern relative to the quad */
+    fx3d_solid(r, FX_RT_TEX_CHECKER, 0x204060, 0xC08040, ONE);
+    facing_quad(r, 0, ONE);
+    FX_CHECK_EQ(g->px[80 * W + 80] & 0xFFFFFF, 0xC08040u); /* world and object x > 0 */
+    fx_mat4 t;
+    fx_mat4_translate(&t, ONE / 4, 0, 0);
+    fx_mat_stack_load(&r->model, &t);
+    memset(g->px, 0, sizeof g->px);
+    facing_quad(r, 0, ONE);
+    FX_CHECK_EQ(g->px[80 * W + 80] & 0xFFFFFF, 0x204060u); /* object x = -0.24 */
     free(g);
 }

@@ -159,6 +159,10 @@ typedef struct fx3d {
     /* Texture (fx3d_texture): meshes with uv are drawn with it in FX3D_FILL. */
     const fx_texture *tex;
     fx3d_texmode tex_mode;
+    /* Solid texture (fx3d_solid) */
+    int solid;                 /* FX_RT_TEX_* of rt.h; 0 none */
+    fx_color solid_c0, solid_c1;
+    fx16 solid_scale;
 } fx3d;
 
 /* A pipeline on surface s: viewport = whole surface, identity matrices,
@@ -207,6 +211,16 @@ int fx3d_oblique(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar
  * derivatives of s and t per pixel, a second division per pixel, and the
  * caller's memory for the pyramid. Left for later (issue #22). */
 void fx3d_texture(fx3d *r, const fx_texture *tx, fx3d_texmode mode);
+
+/* Solid textures on rasterized meshes (OpenGL has none; the course's
+ * wood and marble): kind is FX_RT_TEX_WOOD, _MARBLE or _CHECKER of rt.h
+ * (0 turns it off), evaluated by fx_rt_solid, the ray tracer's function, at
+ * the object-space point / scale, so the grain moves with the object. The
+ * weight w mixes c0 (w = 0) to c1, and the lit colour is multiplied by it
+ * (like FX3D_TEX_MODULATE). The object-space point is interpolated in
+ * screen space like Phong's eye position (affine, not perspective
+ * corrected), on FX3D_FILL meshes. */
+void fx3d_solid(fx3d *r, int kind, fx_color c0, fx_color c1, fx16 scale);
 
 /* Draw a mesh with the current state. Returns 0 or a negative error. */
 int fx3d_draw(fx3d *r, const fx_mesh *m);
