@@ -300,14 +300,22 @@ FX_TEST(light_attenuation_constant_linear_quadratic)
     free(g);
 }
 
-FX_TEST(vertex_colours_stand_for_ambient_and_diffuse)
+/* No lights, white global ambient: a pixel's colour is the ambient
+ * reflectance (material ka, ambient a). */
+static trig *unlit_rig(fx_color ka)
 {
     trig *g = trig_new(53);
+    g->r.light[0].type = FX3D_LIGHT_OFF;
+    g->r.ambient = fx3d_rgb_from_color(0xFFFFFF);
+    g->r.mat.ambient = g->r.mat.diffuse = fx3d_rgb_from_color(ka);
+    g->r.mat.specular = fx3d_rgb_from_color(0);
+    return g;
+}
+
+FX_TEST(vertex_colours_stand_for_ambient_and_diffuse)
+{
+    trig *g = unlit_rig(0x101010); /* replaced by the vertex colours */
     fx3d *r = &g->r;
-    r->light[0].type = FX3D_LIGHT_OFF;
-    r->ambient = fx3d_rgb_from_color(0xFFFFFF);
-    r->mat.ambient = r->mat.diffuse = fx3d_rgb_from_color(0x101010); /* replaced by the vertex colours */
-    r->mat.specular = fx3d_rgb_from_color(0);
     fx16 hx = ONE * 2 / 3, hy = ONE / 2;
     fx_vec3 pos[4] = {fx_vec3_make(-hx, -hy, -2 * ONE), fx_vec3_make(hx, -hy, -2 * ONE),
                       fx_vec3_make(hx, hy, -2 * ONE), fx_vec3_make(-hx, hy, -2 * ONE)};
@@ -337,12 +345,8 @@ FX_TEST(vertex_colours_stand_for_ambient_and_diffuse)
 
 FX_TEST(solid_textures_use_the_ray_tracers_function_in_object_space)
 {
-    trig *g = trig_new(53);
+    trig *g = unlit_rig(0xFFFFFF); /* lit colour white: the pixel is the mix */
     fx3d *r = &g->r;
-    r->light[0].type = FX3D_LIGHT_OFF;
-    r->ambient = fx3d_rgb_from_color(0xFFFFFF);
-    r->mat.ambient = fx3d_rgb_from_color(0xFFFFFF); /* lit colour white: the pixel is the mix */
-    r->mat.specular = fx3d_rgb_from_color(0);
     fx3d_solid(r, FX_RT_TEX_CHECKER, 0x204060, 0xC08040, ONE);
     facing_quad(r, 0, ONE);
     /* unit cells: object x < 0, y < 0, z = -2 sums to an even cell (c0);
