@@ -1124,9 +1124,9 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                 for (int i = 0; i < 3; i++) {
                     fx_vec3 o = m->pos[idx[i]];
                     fx16 sc = r->solid_scale > 0 ? r->solid_scale : FX16_ONE;
-                    v[i].a[A_OBJ] = fx_sat32(((int64_t)o.x << 16) / sc);
-                    v[i].a[A_OBJ + 1] = fx_sat32(((int64_t)o.y << 16) / sc);
-                    v[i].a[A_OBJ + 2] = fx_sat32(((int64_t)o.z << 16) / sc);
+                    v[i].a[A_OBJ] = fx_sat32((int64_t)o.x * 65536 / sc);
+                    v[i].a[A_OBJ + 1] = fx_sat32((int64_t)o.y * 65536 / sc);
+                    v[i].a[A_OBJ + 2] = fx_sat32((int64_t)o.z * 65536 / sc);
                 }
             if (tm.tex)
                 for (int i = 0; i < 3; i++) {
