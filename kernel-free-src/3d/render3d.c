@@ -363,6 +363,27 @@ void fx3d_texture(fx3d *r, const fx_texture *tx, fx3d_texmode mode)
     r->tex_mode = mode;
 }
 
+void fx3d_sphere_map(fx3d *r, int on) { r->tex_sphere_map = on != 0; }
+
+/* The sphere map's (s, t) for eye-space point P with unit normal N. */
+static void sphere_st(fx_vec3 P, fx_vec3 N, int parallel, int32_t *st)
+{
+    fx_vec3 u = parallel ? fx_vec3_make(0, 0, -FX16_ONE) : P;
+    if (!parallel && fx_vec3_normalize(&u) < 0)
+        u = fx_vec3_make(0, 0, -FX16_ONE);
+    fx16 nu = fx_vec3_dot(N, u);
+    fx_vec3 rr = fx_vec3_sub(u, fx_vec3_scale(N, 2 * nu));
+    int64_t rz1 = (int64_t)rr.z + FX16_ONE;
+    uint64_t sq = (uint64_t)((int64_t)rr.x * rr.x + (int64_t)rr.y * rr.y + rz1 * rz1); /* Q32 */
+    int64_t m = 2 * (int64_t)fx_isqrt64(sq); /* Q16 */
+    if (m < 1) { /* r = (0, 0, -1): the map's rim */
+        st[0] = st[1] = FX16_HALF;
+        return;
+    }
+    st[0] = (int32_t)((int64_t)rr.x * 65536 / m + FX16_HALF);
+    st[1] = (int32_t)((int64_t)rr.y * 65536 / m + FX16_HALF);
+}
+
 void fx3d_solid(fx3d *r, int kind, fx_color c0, fx_color c1, fx16 scale)
 {
     r->solid = kind;
@@ -1060,7 +1081,7 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
         tm.na = tm.kind == K_FLAT ? 0 : 6;
         if (tm.use_sm)
             tm.na = 9;
-        if (r->tex && m->uv && r->tex->img.pixels && r->tex->img.w > 0 && r->tex->img.h > 0) {
+        if (r->tex && (m->uv || r->tex_sphere_map) && r->tex->img.pixels && r->tex->img.w > 0 && r->tex->img.h > 0) {
             tm.tex = 1;
             tm.na = 12;
         }
@@ -1130,8 +1151,18 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                 }
             if (tm.tex)
                 for (int i = 0; i < 3; i++) {
-                    v[i].a[A_TEX] = m->uv[2 * idx[i]];
-                    v[i].a[A_TEX + 1] = m->uv[2 * idx[i] + 1];
+                    if (r->tex_sphere_map) {
+                        fx_vec3 n = fn;
+                        if (smooth) {
+                            n = fx_mat4_apply_dir(&nm, m->nrm[idx[i]]);
+                            if (fx_vec3_normalize(&n) < 0)
+                                n = fn;
+                        }
+                        sphere_st(ep[i], n, r->parallel, &v[i].a[A_TEX]);
+                    } else {
+                        v[i].a[A_TEX] = m->uv[2 * idx[i]];
+                        v[i].a[A_TEX + 1] = m->uv[2 * idx[i] + 1];
+                    }
                 }
             if (tm.use_sm) {
                 for (int i = 0; i < 3; i++) {

@@ -596,6 +596,17 @@ static int cmd_polygon3d(fx_scene *sc)
 
 /* ---- textures ---- */
 
+static int cmd_texgen(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"off", "sphere", NULL};
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    TRY(fx_scene_end(sc));
+    fx3d_sphere_map(&s->r, c);
+    return 0;
+}
+
 static int cmd_solid3d(fx_scene *sc)
 {
     GET(s);
@@ -757,6 +768,7 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
     {"obj", cmd_obj, "obj \"FILE\"", D},
     {"shadowplane", cmd_shadowplane, "shadowplane A B C D LIGHT #RGB | shadowplane off", D},
     {"polygon3d", cmd_polygon3d, "polygon3d X0 Y0 Z0 #C0 X1 Y1 Z1 #C1 X2 Y2 Z2 #C2 ... (convex, <= 16)", D},
+    {"texgen", cmd_texgen, "texgen sphere|off", D},
     {"solid3d", cmd_solid3d, "solid3d wood|marble|checker #C0 #C1 SCALE | solid3d off", D},
     {"attenuation", cmd_attenuation, "attenuation LIGHT KC KL KQ", D},
     {"texture3d", cmd_texture3d, "texture3d modulate|replace|decal | texture3d off", D},

@@ -378,3 +378,32 @@ FX_TEST(solid_textures_use_the_ray_tracers_function_in_object_space)
     FX_CHECK_EQ(g->px[80 * W + 80] & 0xFFFFFF, 0x204060u); /* object x = -0.24 */
     free(g);
 }
+
+FX_TEST(sphere_map_reflects_the_view_direction)
+{
+    /* A sphere straight ahead: at its centre the normal faces the eye, the
+     * reflection is (0, 0, 1) and the map's centre texel (128, 128) shows;
+     * towards the rim s grows to the right, t upwards (as r does). */
+    trig *g = trig_new(53);
+    fx_texture tx;
+    coord_texture(&tx);
+    fx3d_texture(&g->r, &tx, FX3D_TEX_REPLACE);
+    fx3d_sphere_map(&g->r, 1);
+    g->r.cull = FX3D_CULL_BACK;
+    static fx_vec3 pos[2000], nrm[2000];
+    static uint32_t tri[3 * 4000];
+    fx_mesh m = {0};
+    m.pos = pos, m.nrm = nrm, m.tri = tri, m.cap_verts = 2000, m.cap_tris = 4000;
+    fx_mesh_params sp = {FX_MESH_SPHERE, ONE / 2, 0, 0, 48, 24};
+    FX_CHECK_EQ(fx_mesh_make(&m, &sp), 0);
+    fx_mat4 t;
+    fx_mat4_translate(&t, 0, 0, -2 * ONE);
+    fx_mat_stack_load(&g->r.model, &t);
+    FX_CHECK_EQ(fx3d_draw(&g->r, &m), 0);
+    uint32_t c = g->px[60 * W + 80];
+    FX_CHECK_MSG(abs((int)(c >> 16 & 255) - 128) <= 3 && abs((int)(c >> 8 & 255) - 128) <= 3, "centre %08x", c);
+    uint32_t right = g->px[60 * W + 100], up = g->px[45 * W + 80];
+    FX_CHECK_MSG((int)(right >> 16 & 255) > 150, "right %08x", right);
+    FX_CHECK_MSG((int)(up >> 8 & 255) > 150, "up %08x", up);
+    free(g);
+}

@@ -163,6 +163,7 @@ typedef struct fx3d {
     int solid;                 /* FX_RT_TEX_* of rt.h; 0 none */
     fx_color solid_c0, solid_c1;
     fx16 solid_scale;
+    int tex_sphere_map;        /* fx3d_sphere_map */
 } fx3d;
 
 /* A pipeline on surface s: viewport = whole surface, identity matrices,
@@ -211,6 +212,15 @@ int fx3d_oblique(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar
  * derivatives of s and t per pixel, a second division per pixel, and the
  * caller's memory for the pyramid. Left for later (issue #22). */
 void fx3d_texture(fx3d *r, const fx_texture *tx, fx3d_texmode mode);
+
+/* Environment mapping (GL_SPHERE_MAP texture generation): on (1), every
+ * vertex's texture coordinates come from its eye-space reflection vector
+ * r = u - 2 (n . u) n (u the unit vector from the eye to the vertex) as
+ * s = rx / m + 1/2, t = ry / m + 1/2, m = 2 sqrt(rx^2 + ry^2 + (rz + 1)^2),
+ * so the texture, a picture of the surroundings as seen in a mirrored ball,
+ * reflects in the object; meshes need no uv then, only normals. The
+ * texture of fx3d_texture is used with its mode. */
+void fx3d_sphere_map(fx3d *r, int on);
 
 /* Solid textures on rasterized meshes (OpenGL has none; the course's
  * wood and marble): kind is FX_RT_TEX_WOOD, _MARBLE or _CHECKER of rt.h
