@@ -32,8 +32,10 @@
  *
  * Why a second triangle rasterizer (render3d.c rather than fx_tri_begin of
  * fill.h): the coverage rule is the same, the attribute arithmetic is not.
- * The 3D triangle carries depth plus 9 attributes (colour or normal, eye
- * position, shadow-map position and depth), more than FX_TRI_MAX_ATTR = 8;
+ * The 3D triangle carries depth plus up to 18 attributes (colour or
+ * normal, eye position, shadow-map position and depth, texture q and
+ * (s, t) q, vertex colour, solid-texture point), more than
+ * FX_TRI_MAX_ATTR = 8;
  * its planes use one reciprocal of the area per triangle and 16 fraction
  * bits (fx_tri_begin divides exactly, in 128 bits, per attribute, into
  * Q32.32), which is what makes a 4096-triangle frame affordable; slivers
