@@ -83,6 +83,15 @@ static void put_v(fx_mesh *m, fx_vec3 p, fx_vec3 n)
     m->nverts++;
 }
 
+/* Texture coordinates of the vertex put last (a mesh without uv ignores them). */
+static void put_uv(fx_mesh *m, fx16 s, fx16 t)
+{
+    if (m->uv) {
+        m->uv[2 * (m->nverts - 1)] = s;
+        m->uv[2 * (m->nverts - 1) + 1] = t;
+    }
+}
+
 static void put_t(fx_mesh *m, int32_t a, int32_t b, int32_t c)
 {
     uint32_t *t = &m->tri[3 * m->ntris++];
@@ -274,6 +283,7 @@ static void make_cube(fx_mesh *m, fx16 a)
                 for (int i = 0; i < 3; i++)
                     c[i] = fx16_mul(h, n[i] + cu[kk] * u[i] + cv[kk] * v[i]);
                 put_v(m, fx_vec3_make(c[0], c[1], c[2]), nn);
+                put_uv(m, cu[kk] > 0 ? FX16_ONE : 0, cv[kk] > 0 ? FX16_ONE : 0);
             }
             put_t(m, b, b + 1, b + 2);
             put_t(m, b, b + 2, b + 3);
@@ -297,6 +307,7 @@ static void make_ellipsoid(fx_mesh *m, fx16 ra, fx16 rb, fx16 rc, int32_t n, int
             if (fx_vec3_normalize(&nn) < 0)
                 nn = u;
             put_v(m, p, nn);
+            put_uv(m, fx16_from_ratio(j, n), fx16_from_ratio(i, k));
         }
     }
     for (int32_t i = 0; i < k; i++)
@@ -343,6 +354,7 @@ static void make_cone_cyl(fx_mesh *m, fx16 ra, fx16 h, int32_t n, int cone)
         fx_vec3 nn = cone ? fx_vec3_make(fx16_mul(h, s), ra, fx16_mul(h, c)) : fx_vec3_make(s, 0, c);
         fx_vec3_normalize(&nn);
         put_v(m, fx_vec3_make(fx16_mul(ra, s), 0, fx16_mul(ra, c)), nn);
+        put_uv(m, fx16_from_ratio(j, n), FX16_ONE);
     }
     int32_t top = m->nverts;
     for (int32_t j = 0; j < n + !cone; j++) {
@@ -355,6 +367,7 @@ static void make_cone_cyl(fx_mesh *m, fx16 ra, fx16 h, int32_t n, int cone)
         fx_vec3_normalize(&nn);
         fx_vec3 p = cone ? fx_vec3_make(0, h, 0) : fx_vec3_make(fx16_mul(ra, s), h, fx16_mul(ra, c));
         put_v(m, p, nn);
+        put_uv(m, cone ? (fx16)(((2 * (int64_t)j + 1) << 15) / n) : fx16_from_ratio(j, n), 0);
     }
     for (int32_t j = 0; j < n; j++) {
         if (cone) {
@@ -390,6 +403,7 @@ static void make_plane(fx_mesh *m, fx16 a, int32_t n)
         for (int32_t j = 0; j <= n; j++) {
             fx16 x = fx16_from_ratio(j, n) - FX16_HALF, z = fx16_from_ratio(i, n) - FX16_HALF;
             put_v(m, fx_vec3_make(fx16_mul(x, a), 0, fx16_mul(z, a)), up);
+            put_uv(m, fx16_from_ratio(j, n), fx16_from_ratio(i, n));
         }
     for (int32_t i = 0; i < n; i++)
         for (int32_t j = 0; j < n; j++) {
@@ -466,6 +480,7 @@ static void make_teapot(fx_mesh *m, fx16 scale, int32_t n)
                         nn = fx_vec3_make(0, pt.y > 0x18000 ? FX16_ONE : -FX16_ONE, 0);
                 }
                 put_v(m, pt, nn);
+                put_uv(m, u, v);
             }
         for (int32_t i = 0; i < n; i++)
             for (int32_t j = 0; j < n; j++) {
@@ -488,6 +503,8 @@ int fx_mesh_make(fx_mesh *m, const fx_mesh_params *p)
     if (nv > m->cap_verts || nt > m->cap_tris)
         return -FX_ENOSPC;
     m->nverts = m->ntris = 0;
+    if (m->uv)
+        fx_memset(m->uv, 0, sizeof(fx16) * 2 * (size_t)nv);
     switch (p->kind) {
     case FX_MESH_CUBE: make_cube(m, p->a); break;
     case FX_MESH_TETRAHEDRON:

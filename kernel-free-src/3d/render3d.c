@@ -5,17 +5,23 @@
  * All drawing of 3D primitives to the surface happens in this file. */
 #include "fixel/render3d.h"
 #include "fixel/error.h"
+#include "fixel/rt.h"
 #include "../base/fx_internal.h"
 
 static inline fx16 neg_sat(fx16 v) { return v == INT32_MIN ? INT32_MAX : -v; }
 
 /* Interpolated attributes after the depth: 0-2 colour (or normal for Phong),
  * 3-5 the colour without the shadow light (or eye position for Phong), 6-8
- * the light's screen position and depth for the shadow buffer. */
-#define NA 9
+ * the light's screen position and depth for the shadow buffer, 12-14 the
+ * vertex colour under Phong shading, 9-11 the texture: s, t (Q16.16) up to projection, then per triangle q, (s - s0) q
+ * and (t - t0) q for perspective-correct interpolation (see tex_setup). */
+#define NA 18
 #define A_COL 0
 #define A_POS 3
 #define A_SM  6
+#define A_TEX 9
+#define A_VCOL 12 /* Phong with vertex colours: the colour, interpolated */
+#define A_OBJ 15  /* solid textures: the object-space point / scale */
 
 typedef struct cvert { /* clip space */
     int32_t c[4];      /* x, y, z, w in Q16.16 */
@@ -25,6 +31,7 @@ typedef struct cvert { /* clip space */
 typedef struct svert { /* screen space */
     int32_t x, y;      /* 24.8, integer values at pixel centres */
     int32_t z;         /* depth, 0 (near) .. 2^30 (far) */
+    int32_t w;         /* clip w (Q16.16, > 0), for perspective-correct textures */
     int32_t a[NA];
 } svert;
 
@@ -37,6 +44,8 @@ typedef struct elight {
     fx16 cos_cut;
     int32_t exp;
     fx3d_rgb amb, diff, spec;
+    int atten;
+    fx16 kc, kl, kq;
 } elight;
 
 /* What one triangle needs in the rasterizer. */
@@ -44,6 +53,9 @@ typedef struct tri_mode {
     uint8_t kind, na, ztest, zwrite, use_sm;
     uint8_t outline;     /* 0 fill, 1 fill and edges, 2 edges only, 3 fill pushed back */
     uint8_t lines_ztest; /* edges depth-tested */
+    uint8_t tex;         /* textured: attributes A_TEX.. carry s, t */
+    uint8_t vcol;        /* Phong with vertex colours in A_VCOL.. */
+    uint8_t solid;       /* solid texture from A_OBJ.. */
     int32_t zbias;
     fx_color flat[2]; /* lit, shadowed */
 } tri_mode;
@@ -136,16 +148,29 @@ static void prepare_lights(const fx3d *r, elight *el, int *nl)
         e->amb = l->ambient;
         e->diff = l->diffuse;
         e->spec = l->specular;
+        e->kc = l->att_const > 0 ? l->att_const : 0;
+        e->kl = l->att_linear > 0 ? l->att_linear : 0;
+        e->kq = l->att_quad > 0 ? l->att_quad : 0;
+        e->atten = l->type != FX3D_LIGHT_DIRECTIONAL && (e->kc | e->kl | e->kq) != 0;
     }
     *nl = n;
 }
 
 /* The lighting model of render3d.h at eye-space point P with unit normal
  * N; light `skip` (the one in whose shadow P lies, or -1) contributes its
- * ambient term only. */
-static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec3 N, int skip)
+ * ambient term only. vcol, when given, is the vertex colour that stands
+ * for the material's ambient and diffuse reflectance (glColorMaterial's
+ * GL_AMBIENT_AND_DIFFUSE). */
+static fx3d_rgb shade_c(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec3 N, int skip,
+                        const fx3d_rgb *vcol)
 {
+    fx3d_material mc;
     const fx3d_material *m = &r->mat;
+    if (vcol) {
+        mc = r->mat;
+        mc.ambient = mc.diffuse = *vcol;
+        m = &mc;
+    }
     fx3d_rgb acc = m->emission;
     fx3d_rgb ga = rgb_mul(r->ambient, m->ambient);
     rgb_madd(&acc, ga, FX16_ONE);
@@ -156,17 +181,28 @@ static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec
         if (e->type == FX3D_LIGHT_OFF)
             continue;
         fx_vec3 L = e->pos;
+        fx16 sf = FX16_ONE;
         if (e->type != FX3D_LIGHT_DIRECTIONAL) {
             L = fx_vec3_sub(e->pos, P);
+            if (e->atten) {
+                /* 1 / (kc + kl d + kq d^2) in Q16, the denominator in Q32 */
+                int64_t d = fx_vec3_length(L);
+                int64_t q = ((int64_t)e->kq * d) >> 16; /* kq d, Q16: below 2^42 */
+                int64_t den = ((int64_t)e->kc << 16) + (int64_t)e->kl * d;
+                den = q && d > (INT64_MAX / 2) / q ? INT64_MAX / 2 : den + q * d;
+                if (den <= 0)
+                    continue;
+                int64_t a = ((int64_t)1 << 48) / den;
+                sf = a > INT32_MAX ? INT32_MAX : (fx16)a;
+            }
             if (fx_vec3_normalize(&L) < 0)
                 continue;
         }
-        fx16 sf = FX16_ONE;
         if (e->type == FX3D_LIGHT_SPOT) {
             fx16 sd = -fx_vec3_dot(L, e->dir);
             if (sd < e->cos_cut)
                 continue;
-            sf = fx16_powi(sd, e->exp);
+            sf = fx16_mul(sf, fx16_powi(sd, e->exp));
         }
         fx3d_rgb c = rgb_mul(e->amb, m->ambient);
         fx16 ndl = fx_vec3_dot(N, L);
@@ -192,6 +228,11 @@ static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec
         rgb_madd(&acc, c, sf);
     }
     return acc;
+}
+
+static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec3 N, int skip)
+{
+    return shade_c(r, el, nl, P, N, skip, NULL);
 }
 
 fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal)
@@ -314,6 +355,41 @@ int fx3d_oblique(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 zn, fx16 zf, fx_
     fx_mat_stack_load(&r->proj, &m);
     r->parallel = 1;
     return 0;
+}
+
+void fx3d_texture(fx3d *r, const fx_texture *tx, fx3d_texmode mode)
+{
+    r->tex = tx;
+    r->tex_mode = mode;
+}
+
+void fx3d_sphere_map(fx3d *r, int on) { r->tex_sphere_map = on != 0; }
+
+/* The sphere map's (s, t) for eye-space point P with unit normal N. */
+static void sphere_st(fx_vec3 P, fx_vec3 N, int parallel, int32_t *st)
+{
+    fx_vec3 u = parallel ? fx_vec3_make(0, 0, -FX16_ONE) : P;
+    if (!parallel && fx_vec3_normalize(&u) < 0)
+        u = fx_vec3_make(0, 0, -FX16_ONE);
+    fx16 nu = fx_vec3_dot(N, u);
+    fx_vec3 rr = fx_vec3_sub(u, fx_vec3_scale(N, 2 * nu));
+    int64_t rz1 = (int64_t)rr.z + FX16_ONE;
+    uint64_t sq = (uint64_t)((int64_t)rr.x * rr.x + (int64_t)rr.y * rr.y + rz1 * rz1); /* Q32 */
+    int64_t m = 2 * (int64_t)fx_isqrt64(sq); /* Q16 */
+    if (m < 1) { /* r = (0, 0, -1): the map's rim */
+        st[0] = st[1] = FX16_HALF;
+        return;
+    }
+    st[0] = (int32_t)((int64_t)rr.x * 65536 / m + FX16_HALF);
+    st[1] = (int32_t)((int64_t)rr.y * 65536 / m + FX16_HALF);
+}
+
+void fx3d_solid(fx3d *r, int kind, fx_color c0, fx_color c1, fx16 scale)
+{
+    r->solid = kind;
+    r->solid_c0 = c0;
+    r->solid_c1 = c1;
+    r->solid_scale = scale > 0 ? scale : FX16_ONE;
 }
 
 void fx3d_plane_shadow(fx3d *r, const fx16 plane[4], int light, fx_color c)
@@ -469,10 +545,80 @@ static void put_px(const fx_surface *s, uint8_t *row, int32_t x, int32_t y, uint
     }
 }
 
+/* The textured triangle's attributes A_TEX.. become q = w_min / w in Q22
+ * and (s - s0) q, (t - t0) q with s0, t0 vertex 0's coordinates: both are
+ * affine in screen space, so the planes interpolate them exactly and
+ * s = s0 + ((s - s0) q) / q per pixel is perspective-correct. Relative to
+ * s0, the products fit 31 bits unless s spans more than 2^9 units across
+ * the triangle, where q's scale drops to keep them in range. */
+static void tex_setup(svert *o, const svert *const v[3], int32_t st0[2])
+{
+    int32_t wmin = v[0]->w;
+    for (int i = 1; i < 3; i++)
+        wmin = FX_MIN(wmin, v[i]->w);
+    int64_t span = 0;
+    for (int i = 1; i < 3; i++)
+        for (int k = 0; k < 2; k++) {
+            int64_t d = (int64_t)v[i]->a[A_TEX + k] - v[0]->a[A_TEX + k];
+            span = FX_MAX(span, d < 0 ? -d : d);
+        }
+    int qbits = 22;
+    while (qbits > 8 && (span << qbits) >= ((int64_t)1 << 46))
+        qbits--;
+    st0[0] = v[0]->a[A_TEX];
+    st0[1] = v[0]->a[A_TEX + 1];
+    for (int i = 0; i < 3; i++) {
+        o[i] = *v[i];
+        int64_t q = ((int64_t)wmin << qbits) / (v[i]->w > 0 ? v[i]->w : 1);
+        q = q < 1 ? 1 : q;
+        int64_t ds = (int64_t)v[i]->a[A_TEX] - st0[0], dt = (int64_t)v[i]->a[A_TEX + 1] - st0[1];
+        o[i].a[A_TEX] = (int32_t)q;
+        o[i].a[A_TEX + 1] = (int32_t)((ds * q) >> 16);
+        o[i].a[A_TEX + 2] = (int32_t)((dt * q) >> 16);
+    }
+}
+
+static fx_color modulate(fx_color col, fx_color tc)
+{
+    uint32_t out = 0xFF000000u;
+    for (int sh = 0; sh < 24; sh += 8)
+        out |= ((((col >> sh) & 255) * ((tc >> sh) & 255) + 127) / 255) << sh;
+    return out;
+}
+
+/* The texel at the pixel whose planes hold val, combined with the lit
+ * colour col as r->tex_mode says. */
+static fx_color tex_apply(const fx3d *r, const int64_t *val, const int32_t st0[2], fx_color col)
+{
+    int64_t q = val[1 + A_TEX];
+    q = q < 1 ? 1 : q;
+    int64_t s = st0[0] + fx_mul64_shift(val[1 + A_TEX + 1], ((int64_t)1 << 62) / q, 46);
+    int64_t t = st0[1] + fx_mul64_shift(val[1 + A_TEX + 2], ((int64_t)1 << 62) / q, 46);
+    fx_color tc = fx_tex_sample(r->tex, fx_sat32(s), fx_sat32(t));
+    if (r->tex_mode == FX3D_TEX_REPLACE)
+        return tc | 0xFF000000u;
+    if (r->tex_mode != FX3D_TEX_DECAL)
+        return modulate(col, tc);
+    uint32_t out = 0xFF000000u;
+    uint32_t ta = tc >> 24;
+    for (int sh = 0; sh < 24; sh += 8) {
+        uint32_t c = (col >> sh) & 255, x = (tc >> sh) & 255;
+        out |= ((c * (255 - ta) + x * ta + 127) / 255) << sh;
+    }
+    return out;
+}
+
 /* Fill triangle v0 v1 v2 (either orientation) with mode m. */
 static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const svert *v2,
                        const tri_mode *m)
 {
+    svert tv[3];
+    int32_t st0[2] = {0, 0};
+    if (m->tex) {
+        const svert *vv[3] = {v0, v1, v2};
+        tex_setup(tv, vv, st0);
+        v0 = &tv[0], v1 = &tv[1], v2 = &tv[2];
+    }
     int64_t area2 = ((int64_t)v1->x - v0->x) * ((int64_t)v2->y - v0->y) -
                     ((int64_t)v2->x - v0->x) * ((int64_t)v1->y - v0->y);
     if (area2 == 0)
@@ -565,7 +711,18 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
                     fx_vec3 N = fx_vec3_make((fx16)(val[1] >> 16), (fx16)(val[2] >> 16), (fx16)(val[3] >> 16));
                     fx_vec3 P = fx_vec3_make((fx16)(val[4] >> 16), (fx16)(val[5] >> 16), (fx16)(val[6] >> 16));
                     fx_vec3_normalize(&N);
-                    col = fx3d_rgb_to_color(shade(pc->r, pc->el, pc->nl, P, N, sh ? pc->sm->light : -1));
+                    fx3d_rgb vc = {(fx16)(val[1 + A_VCOL] >> 16), (fx16)(val[2 + A_VCOL] >> 16),
+                                   (fx16)(val[3 + A_VCOL] >> 16)};
+                    col = fx3d_rgb_to_color(shade_c(pc->r, pc->el, pc->nl, P, N, sh ? pc->sm->light : -1,
+                                                    m->vcol ? &vc : NULL));
+                }
+                if (m->tex)
+                    col = tex_apply(pc->r, val, st0, col);
+                if (m->solid) {
+                    fx_vec3 q = fx_vec3_make((fx16)(val[1 + A_OBJ] >> 16), (fx16)(val[2 + A_OBJ] >> 16),
+                                             (fx16)(val[3 + A_OBJ] >> 16));
+                    fx16 w = fx_rt_solid(pc->r->solid, q);
+                    col = modulate(col, fx_color_lerp(pc->r->solid_c0, pc->r->solid_c1, w));
                 }
                 put_px(s, row, (int32_t)x, y, fx_pack(s->format, col));
             }
@@ -675,6 +832,7 @@ static void project(const pctx *pc, const cvert *c, svert *s, int na)
     int64_t x = c->c[0], y = c->c[1], z = c->c[2], w = c->c[3];
     if (w <= 0)
         w = 1;
+    s->w = (int32_t)w;
     int64_t hx = (int64_t)pc->vw * 128, hy = (int64_t)pc->vh * 128;
     int64_t nx = (x + w) * hx, ny = (w - y) * hy;
     s->x = (int32_t)((int64_t)pc->vx * 256 - 128 + (nx >= 0 ? nx + w / 2 : nx - w / 2) / w);
@@ -922,7 +1080,19 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
         tm.kind = r->shading == FX3D_FLAT ? K_FLAT : r->shading == FX3D_GOURAUD ? K_GOURAUD : K_PHONG;
         tm.na = tm.kind == K_FLAT ? 0 : 6;
         if (tm.use_sm)
+            tm.na = 9;
+        if (r->tex && (m->uv || r->tex_sphere_map) && r->tex->img.pixels && r->tex->img.w > 0 && r->tex->img.h > 0) {
+            tm.tex = 1;
+            tm.na = 12;
+        }
+        if (m->col && tm.kind == K_PHONG) {
+            tm.vcol = 1;
+            tm.na = 15;
+        }
+        if (r->solid > 0 && r->solid < 4) {
+            tm.solid = 1;
             tm.na = NA;
+        }
     } else {
         tm.kind = K_FLAT;
         tm.use_sm = 0;
@@ -971,6 +1141,29 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
             int flip = f < 0;
             if (flip)
                 fn = fx_vec3_make(-fn.x, -fn.y, -fn.z);
+            if (tm.solid)
+                for (int i = 0; i < 3; i++) {
+                    fx_vec3 o = m->pos[idx[i]];
+                    fx16 sc = r->solid_scale > 0 ? r->solid_scale : FX16_ONE;
+                    v[i].a[A_OBJ] = fx_sat32((int64_t)o.x * 65536 / sc);
+                    v[i].a[A_OBJ + 1] = fx_sat32((int64_t)o.y * 65536 / sc);
+                    v[i].a[A_OBJ + 2] = fx_sat32((int64_t)o.z * 65536 / sc);
+                }
+            if (tm.tex)
+                for (int i = 0; i < 3; i++) {
+                    if (r->tex_sphere_map) {
+                        fx_vec3 n = fn;
+                        if (smooth) {
+                            n = fx_mat4_apply_dir(&nm, m->nrm[idx[i]]);
+                            if (fx_vec3_normalize(&n) < 0)
+                                n = fn;
+                        }
+                        sphere_st(ep[i], n, r->parallel, &v[i].a[A_TEX]);
+                    } else {
+                        v[i].a[A_TEX] = m->uv[2 * idx[i]];
+                        v[i].a[A_TEX + 1] = m->uv[2 * idx[i] + 1];
+                    }
+                }
             if (tm.use_sm) {
                 for (int i = 0; i < 3; i++) {
                     fx_vec4 w4 = fx_mat4_apply_point(model, m->pos[idx[i]]);
@@ -984,8 +1177,14 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                         (fx16)(((int64_t)ep[0].x + ep[1].x + ep[2].x) / 3),
                         (fx16)(((int64_t)ep[0].y + ep[1].y + ep[2].y) / 3),
                         (fx16)(((int64_t)ep[0].z + ep[1].z + ep[2].z) / 3));
-                    tm.flat[0] = fx3d_rgb_to_color(shade(r, pc.el, pc.nl, cen, fn, -1));
-                    tm.flat[1] = tm.use_sm ? fx3d_rgb_to_color(shade(r, pc.el, pc.nl, cen, fn, pc.sm->light))
+                    /* GL's flat shading takes the last vertex's colour */
+                    fx3d_rgb pv, *pvc = NULL;
+                    if (m->col) {
+                        pv = fx3d_rgb_from_color(m->col[idx[2]]);
+                        pvc = &pv;
+                    }
+                    tm.flat[0] = fx3d_rgb_to_color(shade_c(r, pc.el, pc.nl, cen, fn, -1, pvc));
+                    tm.flat[1] = tm.use_sm ? fx3d_rgb_to_color(shade_c(r, pc.el, pc.nl, cen, fn, pc.sm->light, pvc))
                                            : tm.flat[0];
                 } else {
                     for (int i = 0; i < 3; i++) {
@@ -997,13 +1196,20 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                             else if (flip)
                                 n = fx_vec3_make(-n.x, -n.y, -n.z);
                         }
+                        fx3d_rgb vc, *vcp = NULL;
+                        if (m->col) {
+                            vc = fx3d_rgb_from_color(m->col[idx[i]]);
+                            vcp = &vc;
+                        }
                         if (tm.kind == K_GOURAUD) {
-                            set_rgb(&v[i].a[A_COL], shade(r, pc.el, pc.nl, ep[i], n, -1));
+                            set_rgb(&v[i].a[A_COL], shade_c(r, pc.el, pc.nl, ep[i], n, -1, vcp));
                             if (tm.use_sm)
-                                set_rgb(&v[i].a[A_POS], shade(r, pc.el, pc.nl, ep[i], n, pc.sm->light));
+                                set_rgb(&v[i].a[A_POS], shade_c(r, pc.el, pc.nl, ep[i], n, pc.sm->light, vcp));
                         } else {
                             set_vec(&v[i].a[A_COL], n);
                             set_vec(&v[i].a[A_POS], ep[i]);
+                            if (vcp)
+                                set_rgb(&v[i].a[A_VCOL], vc);
                         }
                     }
                 }

@@ -37,6 +37,16 @@ fx_color fx_tex_lookup(const fx_texture *tx, fx16 s, fx16 t)
     return texel(tx, lookup_index(s, tx->img.w, tx->wrap), lookup_index(t, tx->img.h, tx->wrap));
 }
 
+void fx_tex_checker(const fx_surface *img, int32_t cell, fx_color c0, fx_color c1)
+{
+    if (cell < 1)
+        cell = 1;
+    uint32_t n0 = fx_pack(img->format, c0), n1 = fx_pack(img->format, c1);
+    for (int32_t y = 0; y < img->h; y++)
+        for (int32_t x = 0; x < img->w; x++)
+            fx_surface_put_native(img, x, y, ((x / cell + y / cell) & 1) ? n1 : n0);
+}
+
 fx_color fx_tex_sample(const fx_texture *tx, fx16 s, fx16 t)
 {
     if (tx->filter != FX_TEX_BILINEAR)

@@ -82,16 +82,14 @@ fx16 fx_rt_turbulence3(fx_vec3 p, int octaves)
     return (fx16)(sum * ONE / norm);
 }
 
-static fx3d_rgb texture(const fx_rt_material *m, fx_vec3 P)
+fx16 fx_rt_solid(int kind, fx_vec3 q)
 {
-    if (m->texture == FX_RT_TEX_NONE)
-        return m->diffuse;
-    fx16 sc = m->tex_scale > 0 ? m->tex_scale : FX16_ONE;
-    fx_vec3 q = fx_vec3_make(fx16_div(P.x, sc), fx16_div(P.y, sc), fx16_div(P.z, sc));
     fx16 w;
-    if (m->texture == FX_RT_TEX_CHECKER) {
+    if (kind == FX_RT_TEX_NONE) {
+        w = 0;
+    } else if (kind == FX_RT_TEX_CHECKER) {
         w = (((q.x >> 16) + (q.y >> 16) + (q.z >> 16)) & 1) ? FX16_ONE : 0;
-    } else if (m->texture == FX_RT_TEX_MARBLE) {
+    } else if (kind == FX_RT_TEX_MARBLE) {
         /* stripes across x, bent by turbulence: (1 + sin(2 pi (x + turb))) / 2 */
         int64_t u = (int64_t)q.x + (int64_t)fx_rt_turbulence3(q, 5);
         w = (fx16)((ONE + fx_sin((fx_angle)((uint64_t)u << 16))) / 2);
@@ -101,7 +99,16 @@ static fx3d_rgb texture(const fx_rt_material *m, fx_vec3 P)
         w = (fx16)((r * 4) & 0xFFFF);
         w = w < FX16_HALF ? 2 * w : 2 * (FX16_ONE - w);
     }
-    return rgb_lerp(m->diffuse, m->tex_color, w);
+    return w;
+}
+
+static fx3d_rgb texture(const fx_rt_material *m, fx_vec3 P)
+{
+    if (m->texture == FX_RT_TEX_NONE)
+        return m->diffuse;
+    fx16 sc = m->tex_scale > 0 ? m->tex_scale : FX16_ONE;
+    fx_vec3 q = fx_vec3_make(fx16_div(P.x, sc), fx16_div(P.y, sc), fx16_div(P.z, sc));
+    return rgb_lerp(m->diffuse, m->tex_color, fx_rt_solid(m->texture, q));
 }
 
 /* ---- tracing ---- */

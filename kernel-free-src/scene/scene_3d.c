@@ -359,7 +359,30 @@ static int cmd_light(fx_scene *sc)
         return fx_scene_error(sc, "a directional light needs a non-zero direction");
     l.ambient = fx3d_rgb_from_color(0);
     l.diffuse = l.specular = fx3d_rgb_from_color(col);
+    /* as glLight: a new position or colour keeps the attenuation */
+    l.att_const = s->r.light[i].att_const;
+    l.att_linear = s->r.light[i].att_linear;
+    l.att_quad = s->r.light[i].att_quad;
     s->r.light[i] = l;
+    return 0;
+}
+
+static int cmd_attenuation(fx_scene *sc)
+{
+    GET(s);
+    int32_t i;
+    fx16 k[3];
+    TRY(fx_scene_arg_int(sc, &i));
+    for (int j = 0; j < 3; j++)
+        TRY(fx_scene_arg_fx16(sc, &k[j]));
+    TRY(fx_scene_end(sc));
+    if (i < 0 || i >= FX3D_MAX_LIGHTS)
+        return fx_scene_error(sc, "light number %d out of range (0..%d)", i, FX3D_MAX_LIGHTS - 1);
+    if (k[0] < 0 || k[1] < 0 || k[2] < 0)
+        return fx_scene_error(sc, "attenuation factors must be >= 0");
+    s->r.light[i].att_const = k[0];
+    s->r.light[i].att_linear = k[1];
+    s->r.light[i].att_quad = k[2];
     return 0;
 }
 
@@ -455,18 +478,21 @@ static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
     if (nt > FX_SCENE_MAX_TRIANGLES)
         return fx_scene_error(sc, "%d triangles: more than the %d one command may draw", nt, FX_SCENE_MAX_TRIANGLES);
     size_t need = (size_t)nv * 2 * sizeof(fx_vec3) + (size_t)nt * 3 * sizeof(uint32_t);
+    if (s->r.tex)
+        need += (size_t)nv * 2 * sizeof(fx16);
     if (need > s->mesh_bytes) {
         s->mesh_mem = fx_scene_alloc(sc, need);
         if (!s->mesh_mem)
             return fx_scene_error(sc, "out of scene memory for a mesh of %d vertices", nv);
         s->mesh_bytes = need;
     }
-    fx_mesh m;
+    fx_mesh m = {0};
     m.pos = s->mesh_mem;
     m.nrm = m.pos + nv;
     m.tri = (uint32_t *)(m.nrm + nv);
     m.cap_verts = nv;
     m.cap_tris = nt;
+    m.uv = s->r.tex ? (fx16 *)(m.tri + 3 * (size_t)nt) : NULL;
     TRY(fx_mesh_make(&m, p));
     s->r.ctx = sc->ctx;
     return fx3d_draw(&s->r, &m);
@@ -522,7 +548,7 @@ int fx_scene_obj_mesh(fx_scene *sc, fx_mesh *out)
     fx_vec3 *mem = fx_scene_alloc(sc, need);
     if (!mem)
         return fx_scene_error(sc, "out of scene memory for '%s' (%d vertices)", path, nv);
-    fx_mesh m = {mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt};
+    fx_mesh m = {mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt, NULL, NULL};
     if (fx_mesh_obj_parse(&m, (const char *)data, len, &err) < 0)
         return fx_scene_error(sc, "%s: %s", path, err.msg);
     *out = m;
@@ -532,10 +558,94 @@ int fx_scene_obj_mesh(fx_scene *sc, fx_mesh *out)
 static int cmd_obj(fx_scene *sc)
 {
     GET(s);
-    fx_mesh m;
+    fx_mesh m = {0};
     TRY(fx_scene_obj_mesh(sc, &m));
     s->r.ctx = sc->ctx;
     return fx3d_draw(&s->r, &m);
+}
+
+/* A convex polygon with a colour per vertex, e.g. the course's quad with
+ * four colours, lit with the vertex colours as ambient and diffuse
+ * reflectance (texture coordinates: none). */
+static int cmd_polygon3d(fx_scene *sc)
+{
+    GET(s);
+    fx_vec3 pos[16];
+    uint32_t col[16], tri[3 * 14];
+    int n = 0;
+    while (fx_scene_more(sc)) {
+        if (n == 16)
+            return fx_scene_error(sc, "more than 16 vertices");
+        fx16 v[3];
+        for (int k = 0; k < 3; k++)
+            TRY(fx_scene_arg_fx16(sc, &v[k]));
+        TRY(fx_scene_arg_color(sc, &col[n]));
+        pos[n++] = fx_vec3_make(v[0], v[1], v[2]);
+    }
+    if (n < 3)
+        return fx_scene_error(sc, "polygon3d needs at least 3 vertices (X Y Z #RRGGBB each)");
+    for (int i = 1; i + 1 < n; i++) {
+        tri[3 * (i - 1)] = 0;
+        tri[3 * (i - 1) + 1] = (uint32_t)i;
+        tri[3 * (i - 1) + 2] = (uint32_t)i + 1;
+    }
+    fx_mesh m = {pos, NULL, tri, n, n - 2, n, n - 2, NULL, col};
+    s->r.ctx = sc->ctx;
+    return fx3d_draw(&s->r, &m);
+}
+
+/* ---- textures ---- */
+
+static int cmd_texgen(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"off", "sphere", NULL};
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    TRY(fx_scene_end(sc));
+    fx3d_sphere_map(&s->r, c);
+    return 0;
+}
+
+static int cmd_solid3d(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"off", "wood", "marble", "checker", NULL};
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    fx_color c0 = 0, c1 = 0;
+    fx16 scale = FX16_ONE;
+    if (c != 0) {
+        TRY(fx_scene_arg_color(sc, &c0));
+        TRY(fx_scene_arg_color(sc, &c1));
+        TRY(fx_scene_arg_fx16(sc, &scale));
+        if (scale < FX16_ONE / 16 || scale > 64 * FX16_ONE)
+            return fx_scene_error(sc, "scale out of range (0.0625..64)");
+    }
+    TRY(fx_scene_end(sc));
+    /* the choice order is rt.h's: none, wood, marble, checker */
+    fx3d_solid(&s->r, c, c0, c1, scale);
+    return 0;
+}
+
+/* Bind the 2D module's current texture (the 'texture' command) to the
+ * meshes drawn next; later 'texture filter|wrap' lines apply to it too. */
+static int cmd_texture3d(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"modulate", "replace", "decal", "off", NULL};
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    TRY(fx_scene_end(sc));
+    if (c == 3) {
+        fx3d_texture(&s->r, NULL, FX3D_TEX_MODULATE);
+        return 0;
+    }
+    const fx_texture *tx = fx_scene_texture(sc);
+    if (!tx)
+        return fx_scene_error(sc, "no texture yet (use 'texture' first)");
+    fx3d_texture(&s->r, tx, (fx3d_texmode)c);
+    return 0;
 }
 
 /* ---- shadows ---- */
@@ -657,6 +767,11 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
     {"floor", cmd_floor, "floor SIZE N", D},
     {"obj", cmd_obj, "obj \"FILE\"", D},
     {"shadowplane", cmd_shadowplane, "shadowplane A B C D LIGHT #RGB | shadowplane off", D},
+    {"polygon3d", cmd_polygon3d, "polygon3d X0 Y0 Z0 #C0 X1 Y1 Z1 #C1 X2 Y2 Z2 #C2 ... (convex, <= 16)", D},
+    {"texgen", cmd_texgen, "texgen sphere|off", D},
+    {"solid3d", cmd_solid3d, "solid3d wood|marble|checker #C0 #C1 SCALE | solid3d off", D},
+    {"attenuation", cmd_attenuation, "attenuation LIGHT KC KL KQ", D},
+    {"texture3d", cmd_texture3d, "texture3d modulate|replace|decal | texture3d off", D},
     {"shadowmap", cmd_shadowmap, "shadowmap begin SIZE LIGHT TX TY TZ FOV NEAR FAR | shadowmap end | shadowmap off", D},
     {0, 0, 0, 0},
 };

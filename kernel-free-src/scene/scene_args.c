@@ -97,7 +97,8 @@ A(gradient, FORM("off"), FORM("linear"), XY("X0"), XY("Y0"), XY("X1"), XY("Y1"),
   REP("colour stop", 2, FX_GRADIENT_MAX_STOPS), C("COLOR"));
 A(proctex, FORM("off"), FORM(0), W("fakesphere|noise|turbulence|wood|marble"), XY("X0"), XY("Y0"),
   I("SIZE", 1, CO), C("C0"), C("C1"), OPT, I("SEED", INT32_MIN, INT32_MAX));
-A(texture, FORM("filter"), W("nearest|bilinear"), FORM("wrap"), W("repeat|clamp"), FORM("checker"),
+A(texture, FORM("filter"), W("nearest|bilinear"), FORM("wrap"), W("repeat|clamp"), FORM("image"), S("PATH"),
+  FORM("checker"),
   I("W", 1, 256), I("H", 1, 256), I("CELL", 1, 256), C("C0"), C("C1"), FORM(0),
   W("fakesphere|noise|turbulence|wood|marble"), I("W", 1, 256), I("H", 1, 256), C("C0"), C("C1"), OPT,
   I("SEED", INT32_MIN, INT32_MAX));
@@ -187,6 +188,11 @@ A(sizen, P3("SIZE"), IW("N", 0, FX_MESH_MAX_SEG));
 A(obj, S("FILE"));
 A(shadowplane, FORM("off"), FORM(0), P3("A"), P3("B"), P3("C"), P3("D"), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1),
   C("COLOR"));
+A(polygon3d, REP("vertex", 3, 16), P3("X"), P3("Y"), P3("Z"), C("COLOR"));
+A(solid3d, FORM("off"), FORM(0), W("wood|marble|checker"), C("C0"), C("C1"), FR("SCALE", 4096, 64 * 65536));
+A(texgen, W("sphere|off"));
+A(attenuation, I("LIGHT", 0, FX3D_MAX_LIGHTS - 1), F("KC", 0, 1024), F("KL", 0, 1024), F("KQ", 0, 1024));
+A(texture3d, W("modulate|replace|decal|off"));
 A(shadowmap, FORM("end"), FORM("off"), FORM("begin"), IW("SIZE", 16, 4096), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1),
   P3("TX"), P3("TY"), P3("TZ"), F("FOV", -32768, 32767), P3("NEAR"), P3("FAR"));
 
@@ -262,7 +268,9 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"icosahedron", a_size3, 0, TRIS}, {"sphere", a_sphere, 0, TRIS}, {"ellipsoid", a_ellipsoid, 0, TRIS},
     {"torus", a_torus, 0, TRIS}, {"cone", a_cone, 0, TRIS}, {"cylinder", a_cone, 0, TRIS}, {"teapot", a_sizen, 0, TRIS},
     {"floor", a_sizen, 0, TRIS}, {"obj", a_obj, 0, TRIS}, {"shadowplane", a_shadowplane, L3, 0},
-    {"shadowmap", a_shadowmap, L3, 0},
+    {"shadowmap", a_shadowmap, L3, 0}, {"texture3d", a_texture3d, TEX, 0},
+    {"attenuation", a_attenuation, 0, 0}, {"polygon3d", a_polygon3d, 0, 0},
+    {"solid3d", a_solid3d, 0, 0}, {"texgen", a_texgen, 0, 0},
     {"rtcamera", a_rtcamera, 0, 0}, {"rtlight", a_rtlight, 0, 0}, {"rtambient", a_color, 0, 0},
     {"rtbackground", a_color, 0, 0}, {"rtmaterial", a_rtmaterial, 0, 0}, {"rttexture", a_rttexture, 0, 0},
     {"rtdepth", a_rtdepth, 0, 0}, {"rtidentity", a_none, 0, 0}, {"rtpush", a_none, 0, 0},

@@ -5,6 +5,7 @@
 #include "fixel/error.h"
 #include "fixel/fill.h"
 #include "fixel/scene.h"
+#include "scene_mesh.h"
 #include "fixel/texture.h"
 #include "../base/fx_internal.h"
 
@@ -363,9 +364,25 @@ static int cmd_texture(fx_scene *sc)
     if (!st)
         return -FX_ENOMEM;
     static const char *const kinds[] = {"fakesphere", "noise", "turbulence", "wood", "marble", "checker",
-                                        "filter", "wrap", 0};
+                                        "filter", "wrap", "image", 0};
     int k = fx_scene_arg_choice(sc, kinds);
     TRY(k);
+    if (k == 8) {
+        char path[256];
+        fx_surface img;
+        TRY(fx_scene_arg_string(sc, path, sizeof path));
+        TRY(fx_scene_end(sc));
+        if (!sc->host.load_image)
+            return fx_scene_error(sc, "images not available");
+        int e = sc->host.load_image(sc->host.user, path, &img);
+        if (e < 0)
+            return fx_scene_error(sc, "cannot read image '%s': %s", path, fx_strerror(e));
+        if (img.w < 1 || img.h < 1 || !img.pixels)
+            return fx_scene_error(sc, "image '%s' is empty", path);
+        st->tex.img = img;
+        st->have_tex = 1;
+        return 0;
+    }
     if (k == 6 || k == 7) {
         static const char *const filters[] = {"nearest", "bilinear", 0}, *const wraps[] = {"repeat", "clamp", 0};
         int v = fx_scene_arg_choice(sc, k == 6 ? filters : wraps);
@@ -393,24 +410,27 @@ static int cmd_texture(fx_scene *sc)
     if (k != 5 && fx_scene_more(sc))
         TRY(fx_scene_arg_int(sc, &seed));
     TRY(fx_scene_end(sc));
-    for (int32_t y = 0; y < h; y++)
-        for (int32_t x = 0; x < w; x++) {
-            fx_color c;
-            if (k == 5) {
-                c = ((x / cell + y / cell) & 1) ? c1 : c0;
-            } else { /* texel centres sample the unit square */
-                fx16 s = (fx16)(((int64_t)x * 2 + 1) * FX16_ONE / (2 * w));
-                fx16 t = (fx16)(((int64_t)y * 2 + 1) * FX16_ONE / (2 * h));
-                c = fx_color_lerp(c0, c1, fx_proc_eval(k, s, t, (uint32_t)seed));
-            }
-            st->texpx[y * w + x] = c;
-        }
     uint8_t filter = st->tex.filter, wrap = st->tex.wrap;
     fx_surface_init(&st->tex.img, st->texpx, w, h, w * 4, FX_FMT_ARGB8888);
+    if (k == 5)
+        fx_tex_checker(&st->tex.img, cell, c0, c1);
+    else
+        for (int32_t y = 0; y < h; y++)
+            for (int32_t x = 0; x < w; x++) { /* texel centres sample the unit square */
+                fx16 s = (fx16)(((int64_t)x * 2 + 1) * FX16_ONE / (2 * w));
+                fx16 t = (fx16)(((int64_t)y * 2 + 1) * FX16_ONE / (2 * h));
+                st->texpx[y * w + x] = fx_color_lerp(c0, c1, fx_proc_eval(k, s, t, (uint32_t)seed));
+            }
     st->tex.filter = filter;
     st->tex.wrap = wrap;
     st->have_tex = 1;
     return 0;
+}
+
+const fx_texture *fx_scene_texture(fx_scene *sc)
+{
+    const fill_state *st = sc->mod[FX_SCENE_MOD_FILL];
+    return st && st->have_tex ? &st->tex : NULL;
 }
 
 static int need_tex(fx_scene *sc, fill_state *st)
@@ -490,7 +510,7 @@ const fx_scene_cmd fx_scene_cmds_fill[] = {
      FX_SCENE_DRAWS},
     {"texture", cmd_texture,
      "texture checker W H CELL #C0 #C1 | texture fakesphere|noise|turbulence|wood|marble W H #C0 #C1 [SEED] | "
-     "texture filter nearest|bilinear | texture wrap repeat|clamp",
+     "texture filter nearest|bilinear | texture wrap repeat|clamp | texture image PATH",
      0},
     {"textri", cmd_textri, "textri X0 Y0 S0 T0 X1 Y1 S1 T1 X2 Y2 S2 T2", FX_SCENE_DRAWS},
     {"texpoly", cmd_texpoly, "texpoly X0 Y0 S0 T0 X1 Y1 S1 T1 ... (convex)", FX_SCENE_DRAWS},

@@ -5,10 +5,14 @@
 
 #include "fixel/mesh.h"
 #include "fixel/scene.h"
+#include "fixel/texture.h"
 
 /* The rest of the line is "FILE": read it through the host, parse it as
  * Wavefront OBJ into arena memory (at most FX_SCENE_MAX_TRIANGLES
  * triangles). 0, or the error recorded on the scene. */
 int fx_scene_obj_mesh(fx_scene *sc, fx_mesh *m);
+
+/* The texture the last 'texture' command made (scene_fill.c), or NULL. */
+const fx_texture *fx_scene_texture(fx_scene *sc);
 
 #endif

@@ -286,7 +286,7 @@ static int cmd_mesh(fx_scene *sc)
     static const char *const ch[] = {"teapot", "torus", "obj", NULL};
     int k;
     TRY(k = fx_scene_arg_choice(sc, ch));
-    fx_mesh m = {0, 0, 0, 0, 0, 0, 0};
+    fx_mesh m = {0};
     if (k == 2) {
         TRY(fx_scene_obj_mesh(sc, &m));
         if (m.ntris < 1)
@@ -309,7 +309,7 @@ static int cmd_mesh(fx_scene *sc)
     fx_vec3 *mem = fx_scene_alloc(sc, (size_t)nv * 2 * sizeof(fx_vec3) + (size_t)nt * 3 * sizeof(uint32_t));
     if (!mem)
         return fx_scene_error(sc, "out of scene memory for the mesh (%d vertices)", nv);
-    m = (fx_mesh){mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt};
+    m = (fx_mesh){mem, mem + nv, (uint32_t *)(mem + 2 * nv), 0, 0, nv, nt, NULL, NULL};
     if (fx_mesh_make(&m, &p) < 0)
         return fx_scene_error(sc, "rtmesh: bad tessellation");
     return add_mesh(sc, r, &m, k == 0 ? "teapot" : "torus");

@@ -250,7 +250,7 @@ static void quad(fx3d *r, fx_vec3 a, fx_vec3 b, fx_vec3 c, fx_vec3 d)
 {
     fx_vec3 pos[4] = {a, b, c, d};
     uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
-    fx_mesh m = {pos, NULL, tri, 4, 2, 4, 2};
+    fx_mesh m = {pos, NULL, tri, 4, 2, 4, 2, NULL, NULL};
     FX_CHECK_EQ(fx3d_draw(r, &m), 0);
 }
 
@@ -296,7 +296,7 @@ FX_TEST(render3d_back_faces_are_culled)
     g->r.cull = FX3D_CULL_BACK;
     fx_vec3 pos[24], nrm[24];
     uint32_t tri[36];
-    fx_mesh m = {pos, nrm, tri, 0, 0, 24, 12};
+    fx_mesh m = {pos, nrm, tri, 0, 0, 24, 12, NULL, NULL};
     fx_mesh_params p = {FX_MESH_CUBE, ONE, 0, 0, 0, 0};
     FX_CHECK_EQ(fx_mesh_make(&m, &p), 0);
     fx_mat4 t;
@@ -389,7 +389,7 @@ FX_TEST(render3d_hidden_lines_hide_back_edges)
     rig *g = rig_new();
     fx_vec3 pos[24], nrm[24];
     uint32_t tri[36];
-    fx_mesh m = {pos, nrm, tri, 0, 0, 24, 12};
+    fx_mesh m = {pos, nrm, tri, 0, 0, 24, 12, NULL, NULL};
     fx_mesh_params p = {FX_MESH_CUBE, 2 * ONE, 0, 0, 0, 0};
     FX_CHECK_EQ(fx_mesh_make(&m, &p), 0);
     fx_mat4 t, rot;
@@ -457,7 +457,7 @@ FX_TEST(render3d_gouraud_interpolates_between_vertex_colours)
     fx_vec3 nrm[4] = {fx_vec3_make(0, 0, ONE), fx_vec3_make(ONE, 0, 0), fx_vec3_make(ONE, 0, 0),
                       fx_vec3_make(0, 0, ONE)};
     uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
-    fx_mesh m = {pos, nrm, tri, 4, 2, 4, 2};
+    fx_mesh m = {pos, nrm, tri, 4, 2, 4, 2, NULL, NULL};
     for (int mode = FX3D_GOURAUD; mode <= FX3D_PHONG; mode++) {
         g->r.shading = (fx3d_shading)mode;
         FX_CHECK_EQ(fx3d_draw(&g->r, &m), 0);

@@ -95,7 +95,7 @@ FX_TEST(mesh_platonic_solids_are_closed_and_outward)
         {FX_MESH_ICOSAHEDRON, "icosahedron", 2.53615},
     };
     for (size_t i = 0; i < sizeof solids / sizeof solids[0]; i++) {
-        fx_mesh m;
+        fx_mesh m = {0};
         fx_mesh_params p = {solids[i].k, ONE, 0, 0, 0, 0};
         FX_CHECK_EQ(make(&m, p), 0);
         check_mesh(&m, solids[i].name, 1, 0);
@@ -124,7 +124,7 @@ FX_TEST(mesh_curved_surfaces_have_their_volume)
         {{FX_MESH_CYLINDER, ONE, 2 * ONE, 0, 64, 0}, "cylinder", 1, ONE, pi * 2, 0.01},
     };
     for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
-        fx_mesh m;
+        fx_mesh m = {0};
         FX_CHECK_EQ(make(&m, c[i].p), 0);
         check_mesh(&m, c[i].name, c[i].convex, c[i].cy);
         double v = volume(&m);
@@ -139,7 +139,7 @@ FX_TEST(mesh_curved_surfaces_have_their_volume)
 
 FX_TEST(mesh_teapot_from_32_patches)
 {
-    fx_mesh m;
+    fx_mesh m = {0};
     fx_mesh_params p = {FX_MESH_TEAPOT, ONE, 0, 0, 6, 0};
     FX_CHECK_EQ(make(&m, p), 0);
     FX_CHECK_EQ(m.nverts, 32 * 7 * 7);
@@ -190,7 +190,7 @@ FX_TEST(obj_parses_vertices_faces_and_numbers)
                     "s off\n"
                     "f 1/1/1 2/1/1 3/1/1 4/1/1\n" /* quad, two triangles */
                     "f 2//1 1//1 5//1\nf 3 2 5\nf 4 3 5\nf -5 -2 -1\n";
-    fx_mesh m;
+    fx_mesh m = {0};
     fx_obj_error err;
     FX_CHECK_EQ(obj(t, &m, &err), 0);
     FX_CHECK_EQ(m.nverts, 5);

@@ -449,7 +449,7 @@ static int scene_run(const char *text)
 {
     static uint8_t arena[1 << 16];
     fx_scene sc;
-    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL};
+    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL, NULL};
     fx_scene_init(&sc, &h, arena, sizeof arena);
     return fx_scene_run(&sc, text, strlen(text));
 }

@@ -553,7 +553,7 @@ static int make_mesh(tmesh *t, fx_mesh_kind kind, fx16 a, fx16 b, int n, int k)
     if (fx_mesh_size(&p, &nv, &nt) < 0)
         return -1;
     t->mem = calloc((size_t)nv * 2 + (size_t)nt, sizeof(fx_vec3));
-    t->m = (fx_mesh){t->mem, t->mem + nv, (uint32_t *)(t->mem + 2 * nv), 0, 0, nv, nt};
+    t->m = (fx_mesh){t->mem, t->mem + nv, (uint32_t *)(t->mem + 2 * nv), 0, 0, nv, nt, NULL, NULL};
     if (fx_mesh_make(&t->m, &p) < 0)
         return -1;
     t->nodes = calloc((size_t)nt * 2, sizeof *t->nodes);
@@ -690,7 +690,7 @@ FX_TEST(rt_mesh_build_errors)
     fx_vec3 nrm[3] = {{0, 0, FX16_ONE}, {0, 0, FX16_ONE}, {0, 0, FX16_ONE}};
     uint32_t tri[3] = {0, 1, 2}, order[1];
     fx_rt_bvh_node nodes[2];
-    fx_mesh m = {pos, nrm, tri, 3, 1, 3, 1};
+    fx_mesh m = {pos, nrm, tri, 3, 1, 3, 1, NULL, NULL};
     fx_rt_mesh rm;
     FX_CHECK_EQ(fx_rt_mesh_build(&rm, &m, nodes, 2, order), -FX_ERANGE); /* y = 40 > 32 */
     pos[2].y = FX16_ONE;
@@ -735,7 +735,7 @@ FX_TEST(rt_script_renders_and_traces_a_pixel)
 {
     static uint32_t px[64 * 48];
     script_host h = {{px, 64 * 48}, calloc(1, sizeof(lines))};
-    fx_scene_host hs = {&h, host_surface, 0, 0, host_trace};
+    fx_scene_host hs = {&h, host_surface, 0, 0, host_trace, NULL};
     size_t arena_size = 1 << 20;
     void *arena = malloc(arena_size);
     fx_scene sc;

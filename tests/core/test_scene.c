@@ -15,7 +15,7 @@ static scene_buf buf = {mem, 64 * 64};
 static int run(fx_scene *sc, const char *text)
 {
     static uint8_t arena[4096];
-    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL};
+    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL, NULL};
     fx_scene_init(sc, &h, arena, sizeof arena);
     return fx_scene_run(sc, text, strlen(text));
 }
@@ -67,7 +67,7 @@ static int probe(fx_scene *sc)
 FX_TEST(scene_argument_helpers)
 {
     fx_scene sc;
-    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL};
+    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL, NULL};
     uint8_t arena[256];
     fx_scene_init(&sc, &h, arena, sizeof arena);
     const fx_scene_cmd cmd = {"probe", probe, "probe", 0};
@@ -98,7 +98,7 @@ FX_TEST(scene_command_names_with_nul_bytes)
     fx_scene sc;
     static const char text[] = "size 8 8\nline\0xyz 1 2 3 4\n";
     static uint8_t arena[256];
-    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL};
+    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL, NULL};
     fx_scene_init(&sc, &h, arena, sizeof arena);
     FX_CHECK_EQ(fx_scene_run(&sc, text, sizeof text - 1), -FX_EINVAL);
     FX_CHECK_EQ(sc.err_line, 2);

@@ -19,7 +19,7 @@ static fx_scene sc;
 static int run(const char *text)
 {
     static uint64_t arena[1024];
-    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL};
+    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL, NULL};
     fx_scene_init(&sc, &h, arena, sizeof arena);
     return fx_scene_run(&sc, text, strlen(text));
 }

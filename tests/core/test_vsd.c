@@ -419,7 +419,7 @@ static void mesh_scene(vs *t, fx_mesh_kind kind, int cull, fx_angle turn)
     int32_t nv, nt;
     FX_CHECK_EQ(fx_mesh_size(&mp, &nv, &nt), 0);
     fx_mesh m = {malloc(sizeof(fx_vec3) * (size_t)nv), malloc(sizeof(fx_vec3) * (size_t)nv),
-                 malloc(12 * (size_t)nt), 0, 0, nv, nt};
+                 malloc(12 * (size_t)nt), 0, 0, nv, nt, NULL, NULL};
     FX_CHECK_EQ(fx_mesh_make(&m, &mp), 0);
     fx_mat4 proj, view, model, pv, mvp;
     fx_camera cam;

@@ -134,7 +134,7 @@ static void valence(const fx_surface *s)
     pos[2] = fx_vec3_make(0, FX16_ONE, 0);
     for (int i = 0; i < NT; i++)
         tri[3 * i] = 0, tri[3 * i + 1] = 1, tri[3 * i + 2] = 2;
-    fx_mesh m = {pos, nrm, tri, 3, NT, 3, NT};
+    fx_mesh m = {pos, nrm, tri, 3, NT, 3, NT, NULL, NULL};
     fx_mesh_compute_normals(&m);
     WANT(nrm[0].z > 0 && nrm[0].x == 0 && nrm[0].y == 0);
 }

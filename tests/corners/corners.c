@@ -77,7 +77,7 @@ static void child(const char *script, int fd)
     if (!arena)
         _exit(12);
     fx_scene sc;
-    fx_scene_host host = {0, make_surface, load_file, 0, 0};
+    fx_scene_host host = {0, make_surface, load_file, 0, 0, NULL};
     fx_scene_init(&sc, &host, arena, arena_size);
     fx_scene_fix_size(&sc, 64, 48);
     int r = fx_scene_run(&sc, script, strlen(script));

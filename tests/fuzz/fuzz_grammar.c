@@ -200,7 +200,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         print = getenv("FUZZ_GRAMMAR_PRINT") != NULL; /* triage: show the generated script */
     if (print)
         fputs(text, stderr);
-    fx_scene_host host = {NULL, make_surface, load_file, NULL, NULL};
+    fx_scene_host host = {NULL, make_surface, load_file, NULL, NULL, NULL};
     fx_scene_init(&sc, &host, arena, sizeof arena);
     /* each line alone, so that one error does not hide the lines after it */
     size_t i = 0;

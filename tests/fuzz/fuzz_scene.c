@@ -23,7 +23,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     static fx_scene sc;
     if (size > 4096)
         return 0;
-    fx_scene_host host = {NULL, make_surface, load_file, NULL, size & 1 ? trace : NULL};
+    fx_scene_host host = {NULL, make_surface, load_file, NULL, size & 1 ? trace : NULL, NULL};
     fx_scene_init(&sc, &host, arena, sizeof arena);
     fx_scene_run(&sc, (const char *)data, size);
     free_surface();

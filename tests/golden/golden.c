@@ -68,6 +68,29 @@ static int load_file(void *u, const char *path, const uint8_t **data, size_t *le
     return 0;
 }
 
+/* 'texture image PATH': a PNG as an opaque ARGB8888 surface. */
+static int load_image(void *u, const char *path, fx_surface *out)
+{
+    host *H = u;
+    if (H->nfiles == 64)
+        return -FX_ENOMEM;
+    uint8_t *rgb;
+    int32_t w, h;
+    int r = fx_read_png_rgb(path, &rgb, &w, &h);
+    if (r < 0)
+        return r;
+    uint32_t *px = malloc((size_t)w * (size_t)h * 4);
+    if (!px) {
+        free(rgb);
+        return -FX_ENOMEM;
+    }
+    for (size_t i = 0; i < (size_t)w * (size_t)h; i++)
+        px[i] = 0xFF000000u | (uint32_t)rgb[3 * i] << 16 | (uint32_t)rgb[3 * i + 1] << 8 | rgb[3 * i + 2];
+    free(rgb);
+    H->files[H->nfiles++] = (char *)px;
+    return fx_surface_init(out, px, w, h, w * 4, FX_FMT_ARGB8888);
+}
+
 static void mkdirs(const char *dir)
 {
     char tmp[1024];
@@ -150,7 +173,7 @@ int main(int argc, char **argv)
             const char *fname = fx_format_get((fx_format)f)->name;
             host H;
             memset(&H, 0, sizeof H);
-            fx_scene_host hs = {&H, make_surface, load_file, NULL, NULL};
+            fx_scene_host hs = {&H, make_surface, load_file, NULL, NULL, load_image};
             static fx_scene sc;
             fx_scene_init(&sc, &hs, arena, arena_size);
             fx_scene_fix_format(&sc, (fx_format)f);

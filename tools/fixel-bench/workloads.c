@@ -39,7 +39,7 @@ int bench_teapot(const fx_surface *s, void *mem, size_t bytes, fx_angle angle)
     fx_mesh_params mp = {FX_MESH_TEAPOT, FX16_ONE, 0, 0, TEAPOT_N, 0};
     int32_t nv, nt;
     fx_mesh_size(&mp, &nv, &nt);
-    fx_mesh m;
+    fx_mesh m = {0};
     m.pos = (fx_vec3 *)p;
     m.nrm = m.pos + nv;
     p += align8((size_t)nv * 2 * sizeof(fx_vec3));

@@ -92,7 +92,7 @@ void demo_vsd_page(fx_ctx *c, demo_state *st, int32_t top)
         static fx_vec3 pos[24 * 12 + 64], nrm[24 * 12 + 64];
         static uint32_t tri[3 * 2 * 24 * 12 + 64];
         fx_mesh_params mp = {FX_MESH_TORUS, FX16_ONE * 3 / 2, FX16_ONE * 3 / 5, 0, 24, 12};
-        fx_mesh mesh = {pos, nrm, tri, 0, 0, 24 * 12 + 64, 2 * 24 * 12 + 21};
+        fx_mesh mesh = {pos, nrm, tri, 0, 0, 24 * 12 + 64, 2 * 24 * 12 + 21, NULL, NULL};
         fx_mesh_make(&mesh, &mp);
         fx_mat4 proj, view, model, pv, mvp;
         fx_camera cam;

@@ -616,7 +616,7 @@ static void draw_object(fx_ctx *c, demo_state *st, fx_rect r, fx_mesh_kind kind,
     int32_t nv, nt;
     if (fx_mesh_size(&mp, &nv, &nt) < 0)
         return;
-    fx_mesh m;
+    fx_mesh m = {0};
     memset(&m, 0, sizeof m);
     m.pos = malloc((size_t)nv * 2 * sizeof(fx_vec3));
     m.tri = malloc((size_t)nt * 3 * sizeof(uint32_t));

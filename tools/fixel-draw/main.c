@@ -257,6 +257,35 @@ static int load_file(void *u, const char *path, const uint8_t **data, size_t *le
     return 0;
 }
 
+/* 'texture image PATH': a PNG decoded into ARGB8888 (opaque), kept on
+ * the same list as loaded files; at most 4096 pixels a side, 4 Mpixels. */
+static int load_image(void *u, const char *path, fx_surface *out)
+{
+    host *H = u;
+    FILE *f = open_input(path, 0);
+    if (!f)
+        return fx_code(errno);
+    uint8_t *rgb;
+    int32_t w, h;
+    int r = fx_read_png_rgb_stream(f, 4096, (size_t)4 << 20, &rgb, &w, &h);
+    fclose(f);
+    if (r < 0)
+        return r;
+    uint32_t *px = malloc((size_t)w * (size_t)h * 4);
+    struct loaded *l = malloc(sizeof *l);
+    if (!px || !l) {
+        free(rgb), free(px), free(l);
+        return -FX_ENOMEM;
+    }
+    for (size_t i = 0; i < (size_t)w * (size_t)h; i++)
+        px[i] = 0xFF000000u | (uint32_t)rgb[3 * i] << 16 | (uint32_t)rgb[3 * i + 1] << 8 | rgb[3 * i + 2];
+    free(rgb);
+    l->data = (uint8_t *)px;
+    l->next = H->files;
+    H->files = l;
+    return fx_surface_init(out, px, w, h, w * 4, FX_FMT_ARGB8888);
+}
+
 static void trace_line(void *u, const char *line)
 {
     (void)u;
@@ -485,7 +514,7 @@ int main(int argc, char **argv)
 
     host H;
     memset(&H, 0, sizeof H);
-    fx_scene_host hs = {&H, make_surface, load_file, NULL, trace ? trace_line : NULL};
+    fx_scene_host hs = {&H, make_surface, load_file, NULL, trace ? trace_line : NULL, load_image};
     size_t arena_size = (size_t)128 << 20;
     void *arena = malloc(arena_size);
     if (!arena) {

@@ -32,6 +32,21 @@ typedef struct fx_mesh {
     uint32_t *tri; /* 3 indices per triangle */
     int32_t nverts, ntris;
     int32_t cap_verts, cap_tris; /* sizes of the arrays above */
+    /* Texture coordinates, 2 per vertex (s, t in Q16.16, cap_verts pairs),
+     * or NULL: untextured. The generators fill them when given: plane, cube
+     * (each face the unit square), sphere and ellipsoid (s around the axis,
+     * t from the north pole), the sides of cone and cylinder, and
+     * the teapot (each Bezier patch its own (u, v) square); the other
+     * Platonic solids, the torus and the caps get (0, 0). Added after
+     * the other members: a caller filling them one by one must zero-
+     * initialise the struct (fx_mesh m = {0}) so that uv is NULL. */
+    fx16 *uv;
+    /* Per-vertex colours (cap_verts of them) or NULL. A vertex colour
+     * stands for the material's ambient and diffuse reflectance where the
+     * vertex is lit (OpenGL's glColorMaterial(GL_AMBIENT_AND_DIFFUSE)):
+     * Gouraud interpolates the lit colours, Phong the vertex colours, flat
+     * shading takes the triangle's last vertex as GL does. */
+    uint32_t *col; /* fx_color, 0xAARRGGBB */
 } fx_mesh;
 
 /* Tessellation parameters and their limits (-FX_EINVAL outside). */

@@ -32,8 +32,10 @@
  *
  * Why a second triangle rasterizer (render3d.c rather than fx_tri_begin of
  * fill.h): the coverage rule is the same, the attribute arithmetic is not.
- * The 3D triangle carries depth plus 9 attributes (colour or normal, eye
- * position, shadow-map position and depth), more than FX_TRI_MAX_ATTR = 8;
+ * The 3D triangle carries depth plus up to 18 attributes (colour or
+ * normal, eye position, shadow-map position and depth, texture q and
+ * (s, t) q, vertex colour, solid-texture point), more than
+ * FX_TRI_MAX_ATTR = 8;
  * its planes use one reciprocal of the area per triangle and 16 fraction
  * bits (fx_tri_begin divides exactly, in 128 bits, per attribute, into
  * Q32.32), which is what makes a 4096-triangle frame affordable; slivers
@@ -50,6 +52,7 @@
 #include "fixel/draw.h"
 #include "fixel/mat3d.h"
 #include "fixel/mesh.h"
+#include "fixel/texture.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -74,8 +77,11 @@ typedef enum fx3d_light_type {
  *   I = spot * (Ia ka + Id kd max(N.L, 0) + Is ks max(R.V, 0)^shininess)
  * with R = 2 (N.L) N - L the reflection of L, V toward the viewer, and
  * spot = max(-L.D, 0)^exponent inside the cut-off cone (0 outside), 1 for
- * other lights. The total adds emission and global ambient * ka. No
- * distance attenuation. */
+ * other lights. The total adds emission and global ambient * ka. Point and
+ * spot lights may fade with the distance d to the light as in OpenGL 1.x:
+ * the light's whole term is multiplied by 1 / (kc + kl d + kq d^2)
+ * (att_const, att_linear, att_quad); all three 0, as fx3d_init and a
+ * zeroed light leave them, means no attenuation (GL's kc = 1). */
 typedef struct fx3d_light {
     fx3d_light_type type;
     fx_vec3 pos;      /* world: position, or direction toward a directional light */
@@ -83,6 +89,7 @@ typedef struct fx3d_light {
     fx_angle cutoff;  /* half-angle of the spot cone (< 90 degrees) */
     int32_t spot_exp; /* 0..128 */
     fx3d_rgb ambient, diffuse, specular;
+    fx16 att_const, att_linear, att_quad; /* >= 0 */
 } fx3d_light;
 
 typedef struct fx3d_material {
@@ -115,6 +122,12 @@ typedef struct fx3d_shadowmap {
 
 #define FX3D_MAX_LIGHTS 8
 
+/* How the texel T combines with the lit colour C (OpenGL 1.x texture
+ * environment, channels in [0, 1]): modulate C * T (lighting shows through
+ * the image), replace T, decal C (1 - Ta) + T Ta (the image's alpha paints
+ * it over the lit surface). */
+typedef enum fx3d_texmode { FX3D_TEX_MODULATE, FX3D_TEX_REPLACE, FX3D_TEX_DECAL } fx3d_texmode;
+
 typedef struct fx3d {
     fx_ctx ctx;          /* surface, clip rectangle, wireframe colour */
     fx_rect viewport;
@@ -145,6 +158,14 @@ typedef struct fx3d {
     int sm_phase;         /* 0 off, 1 rendering the map, 2 using it */
     /* statistics of the last fx3d_draw (for tests and benches) */
     int32_t stat_culled, stat_drawn, stat_clipped;
+    /* Texture (fx3d_texture): meshes with uv are drawn with it in FX3D_FILL. */
+    const fx_texture *tex;
+    fx3d_texmode tex_mode;
+    /* Solid texture (fx3d_solid) */
+    int solid;                 /* FX_RT_TEX_* of rt.h; 0 none */
+    fx_color solid_c0, solid_c1;
+    fx16 solid_scale;
+    int tex_sphere_map;        /* fx3d_sphere_map */
 } fx3d;
 
 /* A pipeline on surface s: viewport = whole surface, identity matrices,
@@ -174,6 +195,44 @@ int fx3d_perspective(fx3d *r, fx_angle fovy, fx16 aspect, fx16 znear, fx16 zfar)
 int fx3d_ortho(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar);
 int fx3d_oblique(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar,
                  fx_angle alpha, fx16 len, fx16 plane);
+
+/* Texture the meshes drawn from now on (NULL: none). A mesh is textured
+ * when it has uv and the polygon mode is FX3D_FILL. Sampling is
+ * fx_tex_sample's (texture.h): nearest or bilinear, repeat or clamp, as the
+ * fx_texture says; the texture stays the caller's and must outlive the
+ * draws (in painter's mode, until fx3d_flush).
+ *
+ * Texture coordinates are interpolated perspective-correctly: per triangle
+ * the rasterizer interpolates q = w_min / w (2^22 at the nearest vertex)
+ * and (s - s0) q, (t - t0) q linearly in screen space and divides per
+ * pixel, so a texel lands where the eye-space point it belongs to projects
+ * (tests/core/test_3d_tex.c checks this against a double-precision ray
+ * cast within one texel). Colours keep the affine Gouraud scheme above.
+ *
+ * No mipmaps: one level is sampled, so a texture minified many times (a
+ * floor far away) aliases; choosing a level needs the screen-space
+ * derivatives of s and t per pixel, a second division per pixel, and the
+ * caller's memory for the pyramid. Left for later (issue #22). */
+void fx3d_texture(fx3d *r, const fx_texture *tx, fx3d_texmode mode);
+
+/* Environment mapping (GL_SPHERE_MAP texture generation): on (1), every
+ * vertex's texture coordinates come from its eye-space reflection vector
+ * r = u - 2 (n . u) n (u the unit vector from the eye to the vertex) as
+ * s = rx / m + 1/2, t = ry / m + 1/2, m = 2 sqrt(rx^2 + ry^2 + (rz + 1)^2),
+ * so the texture, a picture of the surroundings as seen in a mirrored ball,
+ * reflects in the object; meshes need no uv then, only normals. The
+ * texture of fx3d_texture is used with its mode. */
+void fx3d_sphere_map(fx3d *r, int on);
+
+/* Solid textures on rasterized meshes (OpenGL has none; the course's
+ * wood and marble): kind is FX_RT_TEX_WOOD, _MARBLE or _CHECKER of rt.h
+ * (0 turns it off), evaluated by fx_rt_solid, the ray tracer's function, at
+ * the object-space point / scale, so the grain moves with the object. The
+ * weight w mixes c0 (w = 0) to c1, and the lit colour is multiplied by it
+ * (like FX3D_TEX_MODULATE). The object-space point is interpolated in
+ * screen space like Phong's eye position (affine, not perspective
+ * corrected), on FX3D_FILL meshes. */
+void fx3d_solid(fx3d *r, int kind, fx_color c0, fx_color c1, fx16 scale);
 
 /* Draw a mesh with the current state. Returns 0 or a negative error. */
 int fx3d_draw(fx3d *r, const fx_mesh *m);

@@ -192,6 +192,11 @@ fx_color fx_rt_trace_pixel(const fx_rt_scene *s, int32_t w, int32_t h, int32_t x
 /* 3D value noise in [0, 1) and turbulence, as the solid textures use them. */
 fx16 fx_rt_noise3(fx_vec3 p);
 fx16 fx_rt_turbulence3(fx_vec3 p, int octaves);
+/* A solid texture's mix weight in [0, 1] at texture-space point q (world
+ * position / scale): kind FX_RT_TEX_WOOD rings about the y axis wobbled by
+ * noise, MARBLE turbulent stripes across x, CHECKER unit cubes, NONE 0.
+ * The ray tracer and the rasterizer (fx3d_solid) both colour with it. */
+fx16 fx_rt_solid(int kind, fx_vec3 q);
 
 #ifdef __cplusplus
 }  /* extern "C" */

@@ -39,6 +39,10 @@ typedef struct fx_scene_host {
     int (*present)(void *user);
     /* Receives --trace lines; NULL: tracing off. */
     fx_trace_fn trace;
+    /* Decode an image file named by the script ('texture image PATH') into
+     * a surface whose pixels the host owns until the scene ends. NULL:
+     * image commands fail with "images not available". */
+    int (*load_image)(void *user, const char *path, fx_surface *out);
 } fx_scene_host;
 
 /* Per-module state lives in the arena, found through these slots. */

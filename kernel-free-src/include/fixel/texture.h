@@ -59,6 +59,12 @@ typedef struct fx_tex_map {
 } fx_tex_map;
 void fx_tex_shade(const void *map, int32_t y, int32_t x, int32_t n, fx_color *out);
 
+/* A checkerboard image for a texture: img (the caller's pixels, any
+ * format) gets squares of cell x cell texels, c0 where the square's column
+ * plus row is even (the one at texel (0, 0)), c1 where it is odd.
+ * cell < 1 counts as 1. */
+void fx_tex_checker(const fx_surface *img, int32_t cell, fx_color c0, fx_color c1);
+
 /* ---- procedural textures: (s, t) -> intensity in [0, 1] (Q16.16) ---- */
 
 /* The course's fakesphere: 1 at the centre (1/2, 1/2) falling linearly to 0
