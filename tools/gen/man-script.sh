@@ -46,13 +46,23 @@ Each command with its arguments, as
 .B fixel-draw \\-\\-commands
 prints them:
 EOT
+# --commands prints each command's usage line, then one indented line per
+# argument with its type and range (the argument table); those go under the
+# command, one line each.
+esc() { # roff: backslashes and dashes literal
+    printf '%s' "$1" | sed -e 's/\\/\\e/g' -e 's/-/\\-/g' -e 's/|/|\\:/g' -e "s/^'/\\\\\\&'/" -e 's/^\./\\\&./'
+}
 "$DRAW" --commands | while IFS= read -r line; do
+    case $line in
+    " "*)
+        arg=$(printf '%s' "$line" | sed -e 's/^ *//' -e 's/  */ /g' -e 's/ *$//')
+        printf '.br\n%s\n' "$(esc "  $arg")"
+        continue ;;
+    esac
     name=${line%% *}
     rest=${line#"$name"}
     rest=${rest# }
-    # roff: backslashes and dashes literal
-    rest=$(printf '%s' "$rest" | sed -e 's/\\/\\e/g' -e 's/-/\\-/g' -e 's/|/|\\:/g' -e "s/^'/\\\\\\&'/" -e 's/^\./\\\&./')
-    printf '.TP\n.B %s\n%s\n' "$name" "${rest:-(no arguments)}"
+    printf '.TP\n.B %s\n%s\n' "$name" "$(esc "${rest:-(no arguments)}")"
 done
 cat <<'EOT'
 .SH EXAMPLE
