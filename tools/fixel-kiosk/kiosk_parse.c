@@ -174,6 +174,7 @@ const kiosk_key kiosk_keys[] = {
     {"directive", "mqtt", 't', 0, 0, 0, "key=value...: the broker (keys: scope mqtt)"},
     {"directive", "mqtt_tls", 't', 0, 0, 0, "key=value...: TLS to the broker (keys: scope mqtt_tls)"},
     {"directive", "subscribe", 't', 0, 0, 0, "TOPIC key=value...: a topic feeding sources (keys: scope subscribe)"},
+    {"directive", "screen", 't', 0, 0, 0, "key=value...: screen power and backlight (keys: scope screen)"},
     {"widget", "col", 'i', 0, 63, ALLW, "first cell column"},
     {"widget", "row", 'i', 0, 63, ALLW, "first cell row"},
     {"widget", "w", 'i', 1, 64, ALLW, "cells wide"},
@@ -207,6 +208,9 @@ const kiosk_key kiosk_keys[] = {
     {"subscribe", "qos", 'i', 0, 2, 0, "quality of service"},
     {"subscribe", "source", 't', 1, KIOSK_NAME_MAX - 1, 0, "the payload feeds this source (else: data lines)"},
     {"subscribe", "json", 't', 1, KIOSK_JPATH_MAX - 1, 0, "take this field of a JSON payload (a.b[2].c)"},
+    {"screen", "backlight", 't', 1, 63, 0, "auto (the first found, none is fine: HDMI), none, or a device name"},
+    {"screen", "sysfs", 'f', 1, KIOSK_PATH_MAX - 1, 0, "backlight class directory (/sys/class/backlight)"},
+    {"screen", "brightness", 'i', 0, 100, 0, "percent set at start (default: leave it)"},
     {"data", "VALUE", 'm', -VMAX, VMAX, 0, "name=value, name,value or CSV: every number"},
     {0, 0, 0, 0, 0, 0, 0},
 };
@@ -511,6 +515,28 @@ static const char *parse_mqtt(kiosk_config *k, const char *p, const char *end)
     return NULL;
 }
 
+static const char *parse_screen(kiosk_config *k, const char *p, const char *end)
+{
+    kiosk_screen_cfg *c = &k->screen;
+    tok t, v;
+    const kiosk_key *q;
+    int iv = 0, r;
+    while ((r = next_tok(&p, end, &t)) == 1) {
+        const char *e = kv_parse(k, "screen", t, &q, &v, &iv);
+        if (e) return e;
+        if (!q) return "unknown screen key (backlight sysfs brightness)";
+        if (!strcmp(q->name, "backlight")) {
+            for (size_t i = 0; i < v.n; i++)
+                if ((!is_name_char(v.s[i]) && v.s[i] != ':') || v.s[i] == '/') return "backlight: a device name (letters, digits, . - _ :)";
+            kv_copy(c->backlight, sizeof c->backlight, v);
+        } else if (!strcmp(q->name, "sysfs")) kv_copy(c->sysfs, sizeof c->sysfs, v);
+        else c->brightness = iv;
+    }
+    if (r < 0) return "unterminated quote";
+    k->errat = NULL;
+    return NULL;
+}
+
 static const char *parse_mqtt_tls(kiosk_config *k, const char *p, const char *end)
 {
     kiosk_mqtt_cfg *m = &k->mqtt;
@@ -591,6 +617,8 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
     k->mqtt.backoff_max = 60;
     k->mqtt.status_s = 30;
     k->mqtt.verify = 1;
+    strcpy(k->screen.backlight, "auto");
+    k->screen.brightness = -1;
     if (err && errsize) err[0] = 0;
     while (p < end) {
         const char *eol = memchr(p, '\n', (size_t)(end - p));
@@ -608,6 +636,7 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
         else if (tok_is(t, "widget")) msg = parse_widget(k, q, eol);
         else if (tok_is(t, "mqtt")) msg = parse_mqtt(k, q, eol);
         else if (tok_is(t, "mqtt_tls")) msg = parse_mqtt_tls(k, q, eol);
+        else if (tok_is(t, "screen")) msg = parse_screen(k, q, eol);
         else if (tok_is(t, "subscribe")) msg = parse_subscribe(k, p, q, eol, line);
         else {
             tok v;

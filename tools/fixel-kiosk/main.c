@@ -109,6 +109,7 @@ typedef struct kiosk {
     int status_due;
     int screen_on, brightness;
     kiosk_screen_ops screen;
+    kiosk_screen_hw screen_hw;
     int64_t identify_until;
     int identify_phase;
     uint32_t reloads;
@@ -1278,9 +1279,24 @@ int main(int argc, char **argv)
         k->start_ms = k->status_ms = k->now_ms;
         k->screen_on = 1;
         k->brightness = 100;
-        k->screen = (kiosk_screen_ops){"none", NULL, NULL, NULL}; /* state kept and published only */
+        {
+            char serr[400];
+            if (kiosk_screen_open(&k->screen_hw, &k->screen, fx_app_display(k->app), &k->cfg.screen, serr,
+                                  sizeof serr) < 0) {
+                fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, serr);
+                fx_app_close(k->app);
+                return 1;
+            }
+            if (k->screen_hw.have_bl) {
+                int b = fx_backlight_brightness(&k->screen_hw.bl);
+                if (b >= 0) k->brightness = b;
+            }
+            fprintf(stderr, "fixel-kiosk: screen power: %s%s\n", k->screen.name,
+                    k->screen_hw.have_bl ? "" : " (no backlight: on/off only)");
+        }
         if (out && mkdir_parents(out) < 0) {
             fprintf(stderr, "fixel-kiosk: cannot create %s: %s\n", out, strerror(errno));
+            kiosk_screen_close(&k->screen_hw);
             fx_app_close(k->app);
             return 1;
         }
@@ -1293,6 +1309,7 @@ int main(int argc, char **argv)
             char merr[300] = "";
             if (!(k->mq = kmq_start(&k->cfg.mqtt, FX_VERSION_STRING, merr, sizeof merr))) {
                 fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, merr);
+                kiosk_screen_close(&k->screen_hw);
                 fx_app_close(k->app);
                 return 1;
             }
@@ -1306,6 +1323,7 @@ int main(int argc, char **argv)
         fx_app_timer(k->app, 100, on_tick, 0);
         rc = fx_app_main_loop(k->app) < 0;
         kmq_stop(k->mq);
+        kiosk_screen_close(&k->screen_hw);
     }
     fx_app_close(k->app);
     free_images(k);
