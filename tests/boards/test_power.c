@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* Screen power without a screen: the DPMS enum on fake property data
- * (formats.c), a sysfs backlight in a directory the test builds
+/* Screen power without a screen (the DPMS enum on fake property data is in
+ * test_plane.c with the other property helpers): a sysfs backlight in a
+ * directory the test builds
  * (boards/linux/display/backlight.c), and fx_display_set_power on the
- * memory backend (remembered, restored at close). */
+ * memory backend (remembered; the rig checks the restore at close). */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
@@ -16,39 +17,6 @@
 #include "fixel/backlight.h"
 #include "fixel/error.h"
 #include "fx_test.h"
-
-static fx_prop_enum ent(uint64_t v, const char *name)
-{
-    fx_prop_enum e;
-    memset(&e, 0, sizeof e);
-    e.value = v;
-    strncpy(e.name, name, sizeof e.name - 1);
-    return e;
-}
-
-/* What drm_connector.c lists for every connector. */
-FX_TEST(dpms_values_kernel_list)
-{
-    fx_prop_enum e[4] = {ent(0, "On"), ent(1, "Standby"), ent(2, "Suspend"), ent(3, "Off")};
-    uint64_t on = 9, off = 9;
-    FX_CHECK_EQ(fx_dpms_values(e, 4, &on, &off), 0);
-    FX_CHECK_EQ(on, 0u);
-    FX_CHECK_EQ(off, 3u);
-}
-
-/* Values are taken from the entries, not assumed; a list without "Off"
- * (or with a near name) is not a usable DPMS property. */
-FX_TEST(dpms_values_from_entries_and_incomplete)
-{
-    fx_prop_enum e[2] = {ent(7, "Off"), ent(5, "On")};
-    uint64_t on = 0, off = 0;
-    FX_CHECK_EQ(fx_dpms_values(e, 2, &on, &off), 0);
-    FX_CHECK_EQ(on, 5u);
-    FX_CHECK_EQ(off, 7u);
-    fx_prop_enum f[3] = {ent(0, "On"), ent(1, "Standby"), ent(3, "off")};
-    FX_CHECK_EQ(fx_dpms_values(f, 3, &on, &off), -1);
-    FX_CHECK_EQ(fx_dpms_values(NULL, 0, &on, &off), -1);
-}
 
 static void put(const char *dir, const char *file, const char *text)
 {
