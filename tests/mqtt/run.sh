@@ -351,6 +351,26 @@ grep -q "ERROR: AddressSanitizer\|runtime error" "$out"/k*.log && bad "sanitizer
 
 # 8. config errors name FILE:LINE:COL and the range
 step 8
+# the key that wakes a dark screen is swallowed, the next is delivered: k8
+# replays "q" twice (FIXEL_REPLAY); the screen is switched off over MQTT
+# before the first, which must only wake it; the second quits
+step 9
+printf 'grid 1x1\nsize 160x120\nmqtt host=127.0.0.1 port=%s prefix=fleet/k8 status=1 backoff=1 backoff_max=2\nwidget text msg col=0 row=0\n' $PA > "$out/k8.conf"
+printf "wait 12000\nevent key 'q'\nwait 4000\nevent key 'q'\nwait 60000\n" > "$out/k8.replay"
+mkdir -p "$out/k8"
+FIXEL_BACKEND=memory FIXEL_REPLAY="$out/k8.replay" "$bin" --out "$out/k8" "$out/k8.conf" </dev/null >"$out/k8.log" 2>&1 &
+K8=$!; pids="$pids $K8"; t8=$(date +%s)
+waitfor 80 online k8 || bad "k8 never said online: $(cat "$out/k8.log")"
+pub -q 1 -t fleet/k8/set/screen -m off
+waitfor 50 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k8/status -C 1 -W 2 | sed -n 's/.*\"screen\":\"\([a-z]*\)\".*/\1/p')\" = off ]" && ok || bad "k8 did not go dark"
+[ $(( $(date +%s) - t8 )) -lt 11 ] || bad "k8 went dark too late for the test's timing (loaded machine?)"
+# after the first q (at 12 s): alive, and lit
+waitfor 150 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k8/status -C 1 -W 2 | sed -n 's/.*\"screen\":\"\([a-z]*\)\".*/\1/p')\" = on ]" && ok || bad "the key on a dark screen did not wake it: $(retained fleet/k8/status)"
+[ $(( $(date +%s) - t8 )) -lt 16 ] && kill -0 $K8 2>/dev/null && ok || bad "the waking q was not swallowed: k8 quit (or the wake came too late)"
+# the second q (at 16 s) reaches the kiosk: it quits
+i=0; while [ $i -lt 150 ] && kill -0 $K8 2>/dev/null; do sleep 0.1; i=$((i + 1)); done
+kill -0 $K8 2>/dev/null && bad "the q on a lit screen did not quit k8" || ok
+
 cfgerr() { # cfgerr NAME CONFIG-TEXT EXPECTED-MESSAGE
     printf "$2" > "$out/$1.conf"
     if "$bin" --headless "$out/$1.conf" </dev/null 2>"$out/$1.txt"; then bad "$1: config accepted"
@@ -365,6 +385,12 @@ cfgerr keepalive 'mqtt host=h keepalive=1\n' "1:13: keepalive=1: expected 5..360
 cfgerr bright 'screen brightness=101\n' "1:8: brightness=101: expected 0..100"
 cfgerr blname 'grid 1x1\nscreen backlight=a/b\n' "2:8: backlight: a device name"
 "$bin" --keys | grep -q "^screen *sysfs " && ok || bad "--keys lacks the screen keys"
+cfgerr sched1 'schedule on=25:00 off=22:30\n' "1:10: on: expected HH:MM, 00:00..23:59"
+cfgerr sched2 'schedule on=07:00 off=22:30 days=mon-xyz\n' "1:29: days: mon tue wed"
+cfgerr sched3 'schedule on=07:00\n' "1:1: schedule needs on= and off="
+cfgerr idle 'screen idle=2000\n' "1:8: idle=2000: expected 0..1440"
+printf 'schedule on=7:00 off=22:30 days=mon-fri\nschedule on=22:00 off=1:00 days=fri-sun\nscreen idle=10\n' > "$out/sched.conf"
+"$bin" --headless "$out/sched.conf" </dev/null >/dev/null 2>"$out/sched.txt" && ok || bad "good schedules refused: $(cat "$out/sched.txt")"
 # a backlight named but not there stops the live kiosk, saying where it looked
 printf 'screen backlight=nope sysfs=%s\n' "$out/bl1" > "$out/nobl.conf"
 if FIXEL_BACKEND=memory FIXEL_FRAMES=1 timeout 20 "$bin" "$out/nobl.conf" </dev/null >"$out/nobl.txt" 2>&1; then bad "a missing backlight was accepted"

@@ -5,6 +5,7 @@
 #ifndef FIXEL_KIOSK_H
 #define FIXEL_KIOSK_H
 
+#include "kiosk_power.h"
 #include <stddef.h>
 #include <stdint.h>
 
@@ -100,6 +101,9 @@ typedef struct kiosk_screen_cfg {
     char backlight[64];        /* "auto" (the first, if any), "none" or a device name */
     char sysfs[KIOSK_PATH_MAX]; /* the backlight class directory ("": /sys/class/backlight) */
     int brightness;            /* percent set at start; -1: leave it */
+    int idle_min;              /* blank after this many minutes without input; 0: never */
+    kiosk_sched sched[KIOSK_SCHED_MAX]; /* "schedule" lines: when the screen is on */
+    int nsched;
 } kiosk_screen_cfg;
 
 typedef struct kiosk_config {
