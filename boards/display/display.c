@@ -323,6 +323,9 @@ void fx_display_close(fx_display *d)
         d->ops->wait(d, 200);
     if (d->opt.signals && d->info.backend != FX_BACKEND_MEMORY)
         fx_signals_unregister(emergency_restore, d);
+    /* A kiosk stopped at night must not leave the console dark. */
+    if (d->ops && d->power_off && d->ops->set_power)
+        d->ops->set_power(d, 1);
     if (d->ops)
         d->ops->close(d);
     if (d->vt)
@@ -404,6 +407,36 @@ int fx_display_set_pointer_sprite(fx_display *d, const fx_sprite *s)
     if (d->ptr.visible)
         ptr_refresh(d);
     return 0;
+}
+
+int fx_display_set_power(fx_display *d, int on)
+{
+    on = on != 0;
+    if (!d->ops)
+        return -FX_EINVAL;
+    if (on == !d->power_off)
+        return 0;
+    if (d->ops->set_power) {
+        int r = d->ops->set_power(d, on);
+        if (r < 0) {
+            fx_log(&d->log, FX_LOG_ERROR, "screen %s (%s) failed: %s", on ? "on" : "off",
+                   fx_display_power_method(d), strerror(-r));
+            return r;
+        }
+    }
+    d->power_off = !on;
+    fx_log(&d->log, FX_LOG_INFO, "screen %s (%s)", on ? "on" : "off", fx_display_power_method(d));
+    return 0;
+}
+
+int fx_display_power(const fx_display *d)
+{
+    return !d->power_off;
+}
+
+const char *fx_display_power_method(const fx_display *d)
+{
+    return d->power_method ? d->power_method : "none";
 }
 
 fx_surface fx_display_screen(const fx_display *d)

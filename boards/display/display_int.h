@@ -71,6 +71,10 @@ fx_format fx_drm_format_choose(fx_format want, int has_xrgb, int has_565, const 
  * "Upside Down", "Left Side Up", "Right Side Up"), as the kernel's own
  * console turns it; -1 for any other name. */
 int fx_panel_orientation_rotation(const char *name);
+/* The values of a connector's "DPMS" enum property for on and off (the
+ * kernel's entries are "On", "Standby", "Suspend", "Off"). Returns 0, or -1
+ * when either entry is missing (the property is not usable). */
+int fx_dpms_values(const fx_prop_enum *e, int n, uint64_t *on, uint64_t *off);
 
 /* ---- the display object ---- */
 
@@ -92,6 +96,8 @@ struct fx_backend_ops {
      * (CRTC, plane rotation) with async-signal-safe calls only; NULL when
      * there is nothing to restore. */
     void (*emergency_restore)(fx_display *d);
+    /* Screen power (fx_display_set_power); NULL: only remembered. */
+    int (*set_power)(fx_display *d, int on);
 };
 
 struct fx_display {
@@ -130,6 +136,8 @@ struct fx_display {
     struct fx_vt *vt;       /* the console (boards/linux/console), NULL when none */
     int epoll_fd;           /* DRM fd + VT signal pipe, for event loops */
     int away;               /* our VT is not on screen */
+    int power_off;          /* fx_display_set_power(d, 0): presents are not shown */
+    const char *power_method; /* set by the backend: "dpms", "crtc", "fbblank"; NULL: "none" */
     void (*vt_cb)(fx_display *d, int active, void *user);
     void *vt_user;
     void (*reshape_cb)(fx_display *d, int32_t w, int32_t h, void *user);

@@ -18,7 +18,7 @@ static int mem_fd(const fx_display *d) { (void)d; return -1; }
 static void mem_close(fx_display *d) { free(d->memory_mem); d->memory_mem = NULL; }
 
 static const struct fx_backend_ops mem_ops = {mem_show, mem_wait, mem_dispatch, mem_fd, mem_close,
-                                              NULL, NULL, NULL, NULL};
+                                              NULL, NULL, NULL, NULL, NULL};
 
 int fx_memory_open(fx_display *d)
 {

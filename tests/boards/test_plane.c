@@ -117,3 +117,27 @@ FX_TEST(panel_orientation_to_rotation)
     FX_CHECK_EQ(fx_panel_orientation_rotation(""), -1);
     FX_CHECK_EQ(fx_panel_orientation_rotation(NULL), -1);
 }
+
+/* What drm_connector.c lists for every connector. */
+FX_TEST(dpms_values_kernel_list)
+{
+    fx_prop_enum e[4] = {ent(0, "On"), ent(1, "Standby"), ent(2, "Suspend"), ent(3, "Off")};
+    uint64_t on = 9, off = 9;
+    FX_CHECK_EQ(fx_dpms_values(e, 4, &on, &off), 0);
+    FX_CHECK_EQ(on, 0u);
+    FX_CHECK_EQ(off, 3u);
+}
+
+/* Values are taken from the entries, not assumed; a list without "Off"
+ * (or with a near name) is not a usable DPMS property. */
+FX_TEST(dpms_values_from_entries_and_incomplete)
+{
+    fx_prop_enum e[2] = {ent(7, "Off"), ent(5, "On")};
+    uint64_t on = 0, off = 0;
+    FX_CHECK_EQ(fx_dpms_values(e, 2, &on, &off), 0);
+    FX_CHECK_EQ(on, 5u);
+    FX_CHECK_EQ(off, 7u);
+    fx_prop_enum f[3] = {ent(0, "On"), ent(1, "Standby"), ent(3, "off")};
+    FX_CHECK_EQ(fx_dpms_values(f, 3, &on, &off), -1);
+    FX_CHECK_EQ(fx_dpms_values(NULL, 0, &on, &off), -1);
+}

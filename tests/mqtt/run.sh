@@ -74,10 +74,15 @@ mosquitto -c "$out/b.conf" 2>"$out/b.err" & pids="$pids $!"
 waitfor 50 pub -t probe -m x 2>/dev/null && ok || bad "broker A did not come up: $(cat "$out/a.err")"
 
 # ---- kiosks ----
+# fake sysfs backlights (screen sysfs=): k1's named, k2's found by "auto"
+mkbl() { mkdir -p "$out/$1/$2"; echo "$3" > "$out/$1/$2/max_brightness"; echo "$4" > "$out/$1/$2/brightness"; echo 0 > "$out/$1/$2/bl_power"; }
+bl() { cat "$out/$1/$2"; }
+mkbl bl1 panel 1000 500; mkbl bl2 rpi_backlight 255 64; mkbl bl6 rpi_backlight 255 64
 cat > "$out/k1.conf" <<EOC
 grid 2x2
 size 480x320
 stale 60
+screen backlight=panel sysfs=$out/bl1 brightness=100
 mqtt host=127.0.0.1 port=$PA client=k1 keepalive=5 session=persistent backoff=1 backoff_max=2 prefix=fleet/k1 status=1
 subscribe home/temp source=temp qos=1
 subscribe home/+/json source=hum json=sensors.hum[1] qos=1
@@ -91,6 +96,7 @@ cat > "$out/k2.conf" <<EOC
 grid 2x1
 size 480x320
 stale 8
+screen sysfs=$out/bl2
 mqtt host=127.0.0.1 port=$PA keepalive=10 backoff=1 backoff_max=2 prefix=fleet/k2 status=1
 subscribe csv/# qos=0
 subscribe junk/#
@@ -134,7 +140,7 @@ if [ "${MQTT_VALGRIND:-0}" != 1 ] || grep -q __asan_init "$bin"; then :
 elif ! command -v valgrind >/dev/null 2>&1; then bad "valgrind is missing (make deps)"
 else
     vg=1
-    sed 's|prefix=fleet/k2|prefix=fleet/k6|' "$out/k2.conf" > "$out/k6.conf"
+    sed 's|prefix=fleet/k2|prefix=fleet/k6|; s|/bl2|/bl6|' "$out/k2.conf" > "$out/k6.conf"
     mkdir -p "$out/k6"
     FIXEL_BACKEND=memory valgrind --leak-check=full --errors-for-leak-kinds=definite --error-exitcode=99 \
         "$bin" --out "$out/k6" "$out/k6.conf" </dev/null >"$out/k6.log" 2>&1 &
@@ -207,6 +213,9 @@ v=$(field k1 version); [ -n "$want" ] && [ "$v" = "$want" ] && ok || bad "k1 sta
 waitfor 30 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | sed -n 's/.*\"lines\":\([0-9]*\).*/\1/p')\" = 5 ]" && ok || bad "k1 status lines != 5: $(retained fleet/k1/status)"
 [ "$(field k1 bad)" = 0 ] && ok || bad "k1 status bad != 0"
 [ "$(field k1 screen)" = on ] && [ "$(field k1 brightness)" = 100 ] && ok || bad "k1 screen state at start"
+[ "$(field k1 screen_hw)" = backlight ] && ok || bad "k1 screen_hw '$(field k1 screen_hw)', wanted backlight (memory backend + fake sysfs)"
+[ "$(bl bl1/panel brightness)" = 1000 ] && ok || bad "k1 screen brightness=100 wrote $(bl bl1/panel brightness) to the fake backlight, wanted 1000"
+[ "$(field k2 brightness)" = 25 ] && ok || bad "k2 status brightness '$(field k2 brightness)': 64 of 255 found at start is 25%"
 heap0=$(field k2 heap); rss0=$(field k2 rss_kb)
 
 # 3. control
@@ -218,6 +227,11 @@ pub -t fleet/k1/set/brightness -m abc
 pub -t fleet/k1/set/frobnicate -m 1
 waitfor 30 sh -c "mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | grep -q '\"screen\":\"off\",\"brightness\":40'" && ok || bad "screen off / brightness 40 not in the status: $(retained fleet/k1/status)"
 waitfor 30 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | sed -n 's/.*\"bad\":\([0-9]*\).*/\1/p')\" = 3 ]" && ok || bad "brightness 101, abc and an unknown command should be 3 bad lines: $(retained fleet/k1/status)"
+[ "$(bl bl1/panel brightness)" = 400 ] && [ "$(bl bl1/panel bl_power)" = 4 ] && ok ||
+    bad "set/screen off, brightness 40: fake backlight has brightness $(bl bl1/panel brightness) bl_power $(bl bl1/panel bl_power), wanted 400 and 4"
+pub -t fleet/k1/set/screen -m on
+waitfor 30 sh -c "[ \"\$(cat $out/bl1/panel/bl_power)\" = 0 ]" && ok || bad "set/screen on left bl_power at $(bl bl1/panel bl_power)"
+[ "$(bl bl1/panel brightness)" = 400 ] && ok || bad "101 and abc must not reach the backlight: brightness $(bl bl1/panel brightness)"
 pub -t fleet/k1/set/identify -m 5
 corner() { img count "$out/k1/live.ppm" 0 0 6 6 "$1"; }
 waitfor 30 sh -c "[ \$(python3 $here/img.py count $out/k1/live.ppm 0 0 480 6 ffb300) -gt 1000 ] || [ \$(python3 $here/img.py count $out/k1/live.ppm 0 0 480 6 ffffff) -gt 1000 ]" && ok || bad "identify drew no frame around the screen"
@@ -226,7 +240,7 @@ waitfor 100 sh -c "[ \$(python3 $here/img.py count $out/k1/live.ppm 0 0 480 6 ff
 cp "$out/k1.conf" "$out/k1.good"
 printf 'widget number extra col=0 row=0 decimals=9\n' >> "$out/k1.conf"
 pub -t fleet/k1/set/reload -m 1
-waitfor 30 sh -c "mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | grep -q 'k1.conf:12:33: decimals=9: expected 0..3'" && ok || bad "bad reload not reported as FILE:LINE:COL: $(retained fleet/k1/status)"
+waitfor 30 sh -c "mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | grep -q 'k1.conf:13:33: decimals=9: expected 0..3'" && ok || bad "bad reload not reported as FILE:LINE:COL: $(retained fleet/k1/status)"
 pub -q 1 -t home/temp -m 21.5
 waitfor 50 shows k1 t215 $R00 && ok || bad "the old config stopped working after a refused reload"
 sed 's/unit=C/unit=F/' "$out/k1.good" > "$out/k1.conf"
@@ -264,6 +278,7 @@ settled() { a=$(field k2 lines); sleep 1; [ "$a" = "$(field k2 lines)" ]; }
 waitfor 20 settled || bad "k2 still busy with the flood after 20 s"
 pub -q 1 -t fleet/k2/set/brightness -m 33
 waitfor 80 sh -c "mosquitto_sub -p $PA -t fleet/k2/status -C 1 -W 2 | grep -q '\"brightness\":33'" && ok || bad "k2 lost the last brightness after the flood: $(retained fleet/k2/status)"
+[ "$(bl bl2/rpi_backlight brightness)" = 84 ] && ok || bad "k2 brightness 33 is $(bl bl2/rpi_backlight brightness) of 255 on the fake backlight, wanted 84"
 bad1=$(field k2 bad)
 # 256 KiB + binary file + junk + nesting = 4, and the 3000 flood values above 100: 19 per 120
 [ $((bad1 - bad0)) -ge 4 ] && ok || bad "hostile payloads counted $((bad1 - bad0)) bad lines, expected at least 4"
@@ -324,6 +339,7 @@ waitfor 30 shows k1 away $R01 && ok || bad "k1 did not receive the QoS 1 heat ma
 step 7
 kill -TERM $K2; wait $K2; rc=$?
 [ $rc = 0 ] && ok || bad "k2 exited $rc on SIGTERM"
+[ "$(bl bl2/rpi_backlight brightness)" = 64 ] && ok || bad "k2 did not put the backlight back as found (64) on exit: $(bl bl2/rpi_backlight brightness)"
 [ "$(retained fleet/k2/online)" = offline ] && ok || bad "k2 did not publish offline on a clean stop"
 for k in 1 3 4 5 7; do eval "p=\$K$k"; kill -0 $p 2>/dev/null && ok || bad "k$k died: $(tail -3 "$out/k$k.log")"; done
 if [ $vg = 1 ]; then
@@ -335,6 +351,26 @@ grep -q "ERROR: AddressSanitizer\|runtime error" "$out"/k*.log && bad "sanitizer
 
 # 8. config errors name FILE:LINE:COL and the range
 step 8
+# the key that wakes a dark screen is swallowed, the next is delivered: k8
+# replays "q" twice (FIXEL_REPLAY); the screen is switched off over MQTT
+# before the first, which must only wake it; the second quits
+step 9
+printf 'grid 1x1\nsize 160x120\nmqtt host=127.0.0.1 port=%s prefix=fleet/k8 status=1 backoff=1 backoff_max=2\nwidget text msg col=0 row=0\n' $PA > "$out/k8.conf"
+printf "wait 12000\nevent key 'q'\nwait 4000\nevent key 'q'\nwait 60000\n" > "$out/k8.replay"
+mkdir -p "$out/k8"
+FIXEL_BACKEND=memory FIXEL_REPLAY="$out/k8.replay" "$bin" --out "$out/k8" "$out/k8.conf" </dev/null >"$out/k8.log" 2>&1 &
+K8=$!; pids="$pids $K8"; t8=$(date +%s)
+waitfor 80 online k8 || bad "k8 never said online: $(cat "$out/k8.log")"
+pub -q 1 -t fleet/k8/set/screen -m off
+waitfor 50 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k8/status -C 1 -W 2 | sed -n 's/.*\"screen\":\"\([a-z]*\)\".*/\1/p')\" = off ]" && ok || bad "k8 did not go dark"
+[ $(( $(date +%s) - t8 )) -lt 11 ] || bad "k8 went dark too late for the test's timing (loaded machine?)"
+# after the first q (at 12 s): alive, and lit
+waitfor 150 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k8/status -C 1 -W 2 | sed -n 's/.*\"screen\":\"\([a-z]*\)\".*/\1/p')\" = on ]" && ok || bad "the key on a dark screen did not wake it: $(retained fleet/k8/status)"
+[ $(( $(date +%s) - t8 )) -lt 16 ] && kill -0 $K8 2>/dev/null && ok || bad "the waking q was not swallowed: k8 quit (or the wake came too late)"
+# the second q (at 16 s) reaches the kiosk: it quits
+i=0; while [ $i -lt 150 ] && kill -0 $K8 2>/dev/null; do sleep 0.1; i=$((i + 1)); done
+kill -0 $K8 2>/dev/null && bad "the q on a lit screen did not quit k8" || ok
+
 cfgerr() { # cfgerr NAME CONFIG-TEXT EXPECTED-MESSAGE
     printf "$2" > "$out/$1.conf"
     if "$bin" --headless "$out/$1.conf" </dev/null 2>"$out/$1.txt"; then bad "$1: config accepted"
@@ -346,6 +382,19 @@ cfgerr qos 'mqtt host=h\nsubscribe a/b qos=3\n' "2:15: qos=3: expected 0..2"
 cfgerr source 'mqtt host=h\nsubscribe a/b source=nope\n' "2:15: source= names no widget"
 cfgerr keepalive 'mqtt host=h keepalive=1\n' "1:13: keepalive=1: expected 5..3600"
 "$bin" --keys | grep -q "^subscribe qos .*0..2" && ok || bad "--keys lacks the subscribe keys"
+cfgerr bright 'screen brightness=101\n' "1:8: brightness=101: expected 0..100"
+cfgerr blname 'grid 1x1\nscreen backlight=a/b\n' "2:8: backlight: a device name"
+"$bin" --keys | grep -q "^screen *sysfs " && ok || bad "--keys lacks the screen keys"
+cfgerr sched1 'schedule on=25:00 off=22:30\n' "1:10: on: expected HH:MM, 00:00..23:59"
+cfgerr sched2 'schedule on=07:00 off=22:30 days=mon-xyz\n' "1:29: days: mon tue wed"
+cfgerr sched3 'schedule on=07:00\n' "1:1: schedule needs on= and off="
+cfgerr idle 'screen idle=2000\n' "1:8: idle=2000: expected 0..1440"
+printf 'schedule on=7:00 off=22:30 days=mon-fri\nschedule on=22:00 off=1:00 days=fri-sun\nscreen idle=10\n' > "$out/sched.conf"
+"$bin" --headless "$out/sched.conf" </dev/null >/dev/null 2>"$out/sched.txt" && ok || bad "good schedules refused: $(cat "$out/sched.txt")"
+# a backlight named but not there stops the live kiosk, saying where it looked
+printf 'screen backlight=nope sysfs=%s\n' "$out/bl1" > "$out/nobl.conf"
+if FIXEL_BACKEND=memory FIXEL_FRAMES=1 timeout 20 "$bin" "$out/nobl.conf" </dev/null >"$out/nobl.txt" 2>&1; then bad "a missing backlight was accepted"
+elif grep -q "backlight=nope (in $out/bl1): no such backlight" "$out/nobl.txt"; then ok; else bad "missing backlight: $(cat "$out/nobl.txt")"; fi
 
 cleanup; trap - EXIT INT TERM
 echo "mqtt: $P passed, $F failed"

@@ -5,6 +5,7 @@
 #ifndef FIXEL_KIOSK_H
 #define FIXEL_KIOSK_H
 
+#include "kiosk_power.h"
 #include <stddef.h>
 #include <stdint.h>
 
@@ -95,6 +96,16 @@ typedef struct kiosk_mqtt_cfg {
     kiosk_sub subs[KIOSK_MQTT_SUBS];
 } kiosk_mqtt_cfg;
 
+/* "screen": how the screen is switched and dimmed (kiosk_screen.c). */
+typedef struct kiosk_screen_cfg {
+    char backlight[64];        /* "auto" (the first, if any), "none" or a device name */
+    char sysfs[KIOSK_PATH_MAX]; /* the backlight class directory ("": /sys/class/backlight) */
+    int brightness;            /* percent set at start; -1: leave it */
+    int idle_min;              /* blank after this many minutes without input; 0: never */
+    kiosk_sched sched[KIOSK_SCHED_MAX]; /* "schedule" lines: when the screen is on */
+    int nsched;
+} kiosk_screen_cfg;
+
 typedef struct kiosk_config {
     int cols, rows;
     int width, height;         /* 0: the display's size */
@@ -110,6 +121,7 @@ typedef struct kiosk_config {
     kiosk_source sources[KIOSK_MAX_SOURCES];
     char msg[96];              /* the last range message (from kiosk_keys) */
     kiosk_mqtt_cfg mqtt;
+    kiosk_screen_cfg screen;
     const char *errat;         /* parser scratch: the token an error is about */
     int errline, errcol;       /* of the last config error, 1-based (col 1 when the line as a whole is wrong) */
 } kiosk_config;

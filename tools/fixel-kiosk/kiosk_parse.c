@@ -174,6 +174,7 @@ const kiosk_key kiosk_keys[] = {
     {"directive", "mqtt", 't', 0, 0, 0, "key=value...: the broker (keys: scope mqtt)"},
     {"directive", "mqtt_tls", 't', 0, 0, 0, "key=value...: TLS to the broker (keys: scope mqtt_tls)"},
     {"directive", "subscribe", 't', 0, 0, 0, "TOPIC key=value...: a topic feeding sources (keys: scope subscribe)"},
+    {"directive", "screen", 't', 0, 0, 0, "key=value...: screen power and backlight (keys: scope screen)"},
     {"widget", "col", 'i', 0, 63, ALLW, "first cell column"},
     {"widget", "row", 'i', 0, 63, ALLW, "first cell row"},
     {"widget", "w", 'i', 1, 64, ALLW, "cells wide"},
@@ -207,6 +208,14 @@ const kiosk_key kiosk_keys[] = {
     {"subscribe", "qos", 'i', 0, 2, 0, "quality of service"},
     {"subscribe", "source", 't', 1, KIOSK_NAME_MAX - 1, 0, "the payload feeds this source (else: data lines)"},
     {"subscribe", "json", 't', 1, KIOSK_JPATH_MAX - 1, 0, "take this field of a JSON payload (a.b[2].c)"},
+    {"screen", "backlight", 't', 1, 63, 0, "auto (the first found, none is fine: HDMI), none, or a device name"},
+    {"screen", "sysfs", 'f', 1, KIOSK_PATH_MAX - 1, 0, "backlight class directory (/sys/class/backlight)"},
+    {"screen", "brightness", 'i', 0, 100, 0, "percent set at start (default: leave it)"},
+    {"screen", "idle", 'i', 0, 1440, 0, "minutes without input before the screen goes dark (0: never)"},
+    {"directive", "schedule", 't', 0, 0, 0, "key=value...: when the screen is on (keys: scope schedule; up to 8 lines)"},
+    {"schedule", "on", 't', 1, 5, 0, "HH:MM the screen comes on"},
+    {"schedule", "off", 't', 1, 5, 0, "HH:MM it goes off (before on: the next day)"},
+    {"schedule", "days", 't', 3, 27, 0, "mon..sun, lists and ranges: mon-fri, sat,sun (default: every day)"},
     {"data", "VALUE", 'm', -VMAX, VMAX, 0, "name=value, name,value or CSV: every number"},
     {0, 0, 0, 0, 0, 0, 0},
 };
@@ -511,6 +520,109 @@ static const char *parse_mqtt(kiosk_config *k, const char *p, const char *end)
     return NULL;
 }
 
+static const char *parse_screen(kiosk_config *k, const char *p, const char *end)
+{
+    kiosk_screen_cfg *c = &k->screen;
+    tok t, v;
+    const kiosk_key *q;
+    int iv = 0, r;
+    while ((r = next_tok(&p, end, &t)) == 1) {
+        const char *e = kv_parse(k, "screen", t, &q, &v, &iv);
+        if (e) return e;
+        if (!q) return "unknown screen key (backlight sysfs brightness idle)";
+        if (!strcmp(q->name, "backlight")) {
+            for (size_t i = 0; i < v.n; i++)
+                if ((!is_name_char(v.s[i]) && v.s[i] != ':') || v.s[i] == '/') return "backlight: a device name (letters, digits, . - _ :)";
+            kv_copy(c->backlight, sizeof c->backlight, v);
+        } else if (!strcmp(q->name, "sysfs")) kv_copy(c->sysfs, sizeof c->sysfs, v);
+        else if (!strcmp(q->name, "idle")) c->idle_min = iv;
+        else c->brightness = iv;
+    }
+    if (r < 0) return "unterminated quote";
+    k->errat = NULL;
+    return NULL;
+}
+
+/* "7:05" or "07:05" into minutes after midnight; -1 when not a time. */
+static int parse_hhmm(tok v)
+{
+    size_t c = 0;
+    while (c < v.n && v.s[c] != ':') c++;
+    if (c < 1 || c > 2 || v.n - c != 3) return -1;
+    int h = 0, m = 0;
+    for (size_t i = 0; i < v.n; i++) {
+        if (i == c) continue;
+        if (v.s[i] < '0' || v.s[i] > '9') return -1;
+        if (i < c) h = h * 10 + (v.s[i] - '0');
+        else m = m * 10 + (v.s[i] - '0');
+    }
+    return h > 23 || m > 59 ? -1 : h * 60 + m;
+}
+
+static int day_index(const char *s)
+{
+    static const char days[7][4] = {"mon", "tue", "wed", "thu", "fri", "sat", "sun"};
+    for (int i = 0; i < 7; i++)
+        if (!memcmp(s, days[i], 3)) return i;
+    return -1;
+}
+
+/* "mon-fri", "sat,sun", "mon,wed-fri", "fri-mon" (wraps) into a mask. */
+static int parse_days(tok v, unsigned *mask)
+{
+    *mask = 0;
+    size_t i = 0;
+    while (i < v.n) {
+        if (v.n - i < 3) return -1;
+        int a = day_index(v.s + i), b = a;
+        i += 3;
+        if (i < v.n && v.s[i] == '-') {
+            if (v.n - i < 4) return -1;
+            b = day_index(v.s + i + 1);
+            i += 4;
+        }
+        if (a < 0 || b < 0) return -1;
+        for (int d = a;; d = (d + 1) % 7) {
+            *mask |= 1u << d;
+            if (d == b) break;
+        }
+        if (i < v.n && v.s[i++] != ',') return -1;
+        if (i == v.n && v.s[i - 1] == ',') return -1;
+    }
+    return 0;
+}
+
+static const char *parse_schedule(kiosk_config *k, const char *p, const char *end)
+{
+    kiosk_screen_cfg *c = &k->screen;
+    tok t, v;
+    const kiosk_key *q;
+    int iv = 0, r;
+    if (c->nsched >= KIOSK_SCHED_MAX) { k->errat = NULL; return "more than 8 schedule lines"; }
+    kiosk_sched *s = &c->sched[c->nsched];
+    s->on_min = s->off_min = -1;
+    s->days = 0x7f;
+    while ((r = next_tok(&p, end, &t)) == 1) {
+        const char *e = kv_parse(k, "schedule", t, &q, &v, &iv);
+        if (e) return e;
+        if (!q) return "unknown schedule key (on off days)";
+        if (!strcmp(q->name, "days")) {
+            if (parse_days(v, &s->days)) return "days: mon tue wed thu fri sat sun, lists and ranges (mon-fri,sun)";
+        } else {
+            int m = parse_hhmm(v);
+            if (m < 0) return !strcmp(q->name, "on") ? "on: expected HH:MM, 00:00..23:59" : "off: expected HH:MM, 00:00..23:59";
+            if (!strcmp(q->name, "on")) s->on_min = m;
+            else s->off_min = m;
+        }
+    }
+    if (r < 0) return "unterminated quote";
+    k->errat = NULL;
+    if (s->on_min < 0 || s->off_min < 0) return "schedule needs on= and off=";
+    if (s->on_min == s->off_min) return "schedule: on= and off= are the same time";
+    c->nsched++;
+    return NULL;
+}
+
 static const char *parse_mqtt_tls(kiosk_config *k, const char *p, const char *end)
 {
     kiosk_mqtt_cfg *m = &k->mqtt;
@@ -591,6 +703,8 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
     k->mqtt.backoff_max = 60;
     k->mqtt.status_s = 30;
     k->mqtt.verify = 1;
+    strcpy(k->screen.backlight, "auto");
+    k->screen.brightness = -1;
     if (err && errsize) err[0] = 0;
     while (p < end) {
         const char *eol = memchr(p, '\n', (size_t)(end - p));
@@ -608,6 +722,8 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
         else if (tok_is(t, "widget")) msg = parse_widget(k, q, eol);
         else if (tok_is(t, "mqtt")) msg = parse_mqtt(k, q, eol);
         else if (tok_is(t, "mqtt_tls")) msg = parse_mqtt_tls(k, q, eol);
+        else if (tok_is(t, "screen")) msg = parse_screen(k, q, eol);
+        else if (tok_is(t, "schedule")) msg = parse_schedule(k, q, eol);
         else if (tok_is(t, "subscribe")) msg = parse_subscribe(k, p, q, eol, line);
         else {
             tok v;

@@ -109,6 +109,9 @@ typedef struct kiosk {
     int status_due;
     int screen_on, brightness;
     kiosk_screen_ops screen;
+    kiosk_screen_hw screen_hw;
+    kiosk_power pw;             /* schedule, idle blanking, waking touches */
+    int swallow_up;             /* the waking press was swallowed: so is its release */
     int64_t identify_until;
     int identify_phase;
     uint32_t reloads;
@@ -784,11 +787,41 @@ static void render(kiosk *k)
 
 static void on_display(void *user) { render(user); }
 
+/* Switch the screen to what kiosk_power decided; a refusal is logged by
+ * the display and leaves the state as it was. */
+static void apply_power(kiosk *k, int on)
+{
+    if (on == k->screen_on) return;
+    if (k->screen.set_power && k->screen.set_power(k->screen.ctx, on) < 0) return;
+    k->screen_on = on;
+    k->status_due = 1;
+    if (on) k->full = 1, fx_app_post_redisplay(k->app);
+}
+
+/* Input on a dark screen wakes it and goes no further: nobody presses a
+ * button they cannot see. */
+static int woke(kiosk *k)
+{
+    k->now_ms = mono_ms();
+    if (!kiosk_power_input(&k->pw, k->now_ms)) return 0;
+    apply_power(k, 1);
+    return 1;
+}
+
 static void on_key(void *user, unsigned char key, int x, int y)
 {
     kiosk *k = user;
     (void)x; (void)y;
+    if (woke(k)) return;
     if (key == 'q' || key == 27) fx_app_quit(k->app);
+}
+
+static void on_mouse(void *user, int button, int state, int x, int y)
+{
+    kiosk *k = user;
+    (void)button; (void)x; (void)y;
+    if (state == FX_UP && k->swallow_up) { k->swallow_up = 0; return; }
+    if (state == FX_DOWN && woke(k)) { k->swallow_up = 1; return; }
 }
 
 static void on_reshape(void *user, int w, int h)
@@ -940,6 +973,7 @@ static int control(kiosk *k, const char *what, const char *v, size_t n)
         if (on < 0) return KIOSK_LINE_BAD;
         if (k->screen.set_power && k->screen.set_power(k->screen.ctx, on) < 0) return KIOSK_LINE_BAD;
         k->screen_on = on;
+        kiosk_power_manual(&k->pw, on, k->now_ms);
     } else if (!strcmp(what, "brightness")) {
         if (!isnum || x < 0 || x > 100000) return KIOSK_LINE_BAD;
         if (k->screen.set_brightness && k->screen.set_brightness(k->screen.ctx, (int)(x / 1000)) < 0)
@@ -1035,6 +1069,16 @@ static void on_tick(void *user, int value)
         k->wd_last = k->now_ms;
     } /* a stat() per image widget: cheap at 10 Hz */
     update_stale(k);
+    {
+        time_t t = time(NULL);
+        struct tm lt;
+        int sched = 1;
+        k->pw.idle_ms = (int64_t)k->cfg.screen.idle_min * 60000; /* a reload may change it */
+        if (k->cfg.screen.nsched && localtime_r(&t, &lt))
+            sched = kiosk_sched_on(k->cfg.screen.sched, k->cfg.screen.nsched, (lt.tm_wday + 6) % 7,
+                                   lt.tm_hour * 60 + lt.tm_min);
+        apply_power(k, kiosk_power_want(&k->pw, k->now_ms, sched));
+    }
     if (any_dirty(k)) fx_app_post_redisplay(k->app);
     fx_app_timer(k->app, 100, on_tick, 0);
 }
@@ -1272,15 +1316,31 @@ int main(int argc, char **argv)
         printf("fixel-kiosk: %d frames, %u lines, %u bad, %u ignored, %u image errors\n", frames, k->lines, k->bad,
                k->ignored, k->img_errors);
     } else {
-        fx_callbacks cb = {.display = on_display, .keyboard = on_key, .reshape = on_reshape};
+        fx_callbacks cb = {.display = on_display, .keyboard = on_key, .mouse = on_mouse, .reshape = on_reshape};
         g_kiosk = k;
         k->now_ms = mono_ms();
         k->start_ms = k->status_ms = k->now_ms;
         k->screen_on = 1;
         k->brightness = 100;
-        k->screen = (kiosk_screen_ops){"none", NULL, NULL, NULL}; /* state kept and published only */
+        {
+            char serr[400];
+            if (kiosk_screen_open(&k->screen_hw, &k->screen, fx_app_display(k->app), &k->cfg.screen, serr,
+                                  sizeof serr) < 0) {
+                fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, serr);
+                fx_app_close(k->app);
+                return 1;
+            }
+            if (k->screen_hw.have_bl) {
+                int b = fx_backlight_brightness(&k->screen_hw.bl);
+                if (b >= 0) k->brightness = b;
+            }
+            kiosk_power_init(&k->pw, (int64_t)k->cfg.screen.idle_min * 60000, k->now_ms);
+            fprintf(stderr, "fixel-kiosk: screen power: %s%s\n", k->screen.name,
+                    k->screen_hw.have_bl ? "" : " (no backlight: on/off only)");
+        }
         if (out && mkdir_parents(out) < 0) {
             fprintf(stderr, "fixel-kiosk: cannot create %s: %s\n", out, strerror(errno));
+            kiosk_screen_close(&k->screen_hw);
             fx_app_close(k->app);
             return 1;
         }
@@ -1293,6 +1353,7 @@ int main(int argc, char **argv)
             char merr[300] = "";
             if (!(k->mq = kmq_start(&k->cfg.mqtt, FX_VERSION_STRING, merr, sizeof merr))) {
                 fprintf(stderr, "fixel-kiosk: %s: %s\n", cfgpath, merr);
+                kiosk_screen_close(&k->screen_hw);
                 fx_app_close(k->app);
                 return 1;
             }
@@ -1306,6 +1367,7 @@ int main(int argc, char **argv)
         fx_app_timer(k->app, 100, on_tick, 0);
         rc = fx_app_main_loop(k->app) < 0;
         kmq_stop(k->mq);
+        kiosk_screen_close(&k->screen_hw);
     }
     fx_app_close(k->app);
     free_images(k);

@@ -215,6 +215,18 @@ int fx_display_set_pointer_sprite(fx_display *d, const fx_sprite *s);
  * included): for tests and screenshots of the memory backend. */
 fx_surface fx_display_screen(const fx_display *d);
 const char *fx_backend_name(fx_backend b);
+/* Screen power for kiosks (a dark screen at night, idle blanking). DRM: the
+ * connector's "DPMS" property, or the CRTC switched off when the connector
+ * has none; fbdev: FBIOBLANK; memory: only remembered. While off, presents
+ * still draw into the buffers but are not shown; on shows the newest frame.
+ * fx_display_close (and so fx_app_close) turns the screen back on. Returns 0
+ * or -errno (the state is unchanged then). A panel's backlight is separate:
+ * fixel/backlight.h. */
+int fx_display_set_power(fx_display *d, int on);
+/* 1 when on (the default), 0 after fx_display_set_power(d, 0). */
+int fx_display_power(const fx_display *d);
+/* How the backend switches power: "dpms", "crtc", "fbblank", "none". */
+const char *fx_display_power_method(const fx_display *d);
 
 /* Log through the display's log function and level (fx_app uses it). */
 void fx_display_log(const fx_display *d, fx_log_priority p, const char *fmt, ...)

@@ -132,8 +132,16 @@ static int fb_resume(fx_display *d)
     return 0;
 }
 
+/* POWERDOWN rather than NORMAL: drivers that can, cut the signal (the
+ * monitor sleeps); the others at least blank. */
+static int fb_set_power(fx_display *d, int on)
+{
+    struct fb_priv *p = d->priv;
+    return ioctl(p->fd, FBIOBLANK, on ? FB_BLANK_UNBLANK : FB_BLANK_POWERDOWN) < 0 ? -errno : 0;
+}
+
 static const struct fx_backend_ops fb_ops = {fb_show, fb_wait, fb_dispatch, fb_fd, fb_close, NULL,
-                                             fb_resume, NULL, NULL};
+                                             fb_resume, NULL, NULL, fb_set_power};
 
 static int try_double_buffer(struct fb_priv *p)
 {
@@ -192,6 +200,7 @@ int fx_fbdev_open(fx_display *d)
     p->vsync = 1;
     d->priv = p;
     d->ops = &fb_ops;
+    d->power_method = "fbblank";
 
     if (ioctl(fd, FBIOGET_VSCREENINFO, &p->var) < 0 || ioctl(fd, FBIOGET_FSCREENINFO, &p->fix) < 0) {
         int e = errno;

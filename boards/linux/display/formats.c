@@ -208,3 +208,15 @@ fx_format fx_drm_format_choose(fx_format want, int has_xrgb, int has_565, const 
         *why = w;
     return f;
 }
+
+int fx_dpms_values(const fx_prop_enum *e, int n, uint64_t *on, uint64_t *off)
+{
+    int have_on = 0, have_off = 0;
+    for (int i = 0; e && i < n; i++) {
+        if (!strncmp(e[i].name, "On", sizeof e[i].name))
+            *on = e[i].value, have_on = 1;
+        else if (!strncmp(e[i].name, "Off", sizeof e[i].name))
+            *off = e[i].value, have_off = 1;
+    }
+    return have_on && have_off ? 0 : -1;
+}

@@ -59,6 +59,10 @@ struct drm_priv {
     uint32_t emergency_conn;
     struct drm_mode_crtc emergency_off;
     struct drm_mode_obj_set_property emergency_rot;
+    /* Screen power: the connector's DPMS property (dpms_prop 0: none, the
+     * CRTC is switched off instead). */
+    uint32_t dpms_prop;
+    uint64_t dpms_on, dpms_off;
 };
 
 static int neg_errno(void)
@@ -401,6 +405,14 @@ static int drm_show(fx_display *d, int buf, const fx_rect *phys, int n)
     struct drm_priv *p = d->priv;
     int r;
 
+    /* Screen off: a flip (or its SetCrtc fallback) would switch the CRTC
+     * back on; the buffer is shown when the screen comes on. */
+    if (d->power_off) {
+        if (d->flip_cb)
+            d->flip_cb(d, d->flip_user);
+        return 0;
+    }
+
     if (p->dirty != 0 && n > 0) {
         drmModeClip clips[FX_DAMAGE_MAX];
         for (int i = 0; i < n && i < FX_DAMAGE_MAX; i++) {
@@ -565,9 +577,50 @@ static void reprobe(fx_display *d)
         d->resized(d);
 }
 
+/* The connector's DPMS enum (legacy, but atomic drivers map it to the
+ * CRTC's ACTIVE, so the monitor gets no signal and sleeps). */
+static void find_dpms(fx_display *d, struct drm_priv *p)
+{
+    drmModeObjectPropertiesPtr props = drmModeObjectGetProperties(p->fd, p->conn_id, DRM_MODE_OBJECT_CONNECTOR);
+    for (uint32_t k = 0; props && k < props->count_props; k++) {
+        drmModePropertyPtr pr = drmModeGetProperty(p->fd, props->props[k]);
+        if (pr && !strcmp(pr->name, "DPMS") && (pr->flags & DRM_MODE_PROP_ENUM)) {
+            fx_prop_enum e[8];
+            int n = pr->count_enums < 8 ? pr->count_enums : 8;
+            for (int i = 0; i < n; i++) {
+                memset(&e[i], 0, sizeof e[i]);
+                e[i].value = pr->enums[i].value;
+                snprintf(e[i].name, sizeof e[i].name, "%s", pr->enums[i].name);
+            }
+            if (fx_dpms_values(e, n, &p->dpms_on, &p->dpms_off) == 0)
+                p->dpms_prop = pr->prop_id;
+        }
+        drmModeFreeProperty(pr);
+    }
+    drmModeFreeObjectProperties(props);
+    d->power_method = p->dpms_prop ? "dpms" : "crtc";
+}
+
+static int drm_set_power(fx_display *d, int on)
+{
+    struct drm_priv *p = d->priv;
+    if (p->dpms_prop &&
+        drmModeConnectorSetProperty(p->fd, p->conn_id, p->dpms_prop, on ? p->dpms_on : p->dpms_off) < 0)
+        return neg_errno();
+    if (on) {
+        /* The newest frame (drm_show skipped the flips while off); also
+         * what brings the CRTC back when it was switched off. */
+        if (set_crtc(p, d->shown < 0 ? 0 : d->shown) < 0)
+            return neg_errno();
+    } else if (!p->dpms_prop && drmModeSetCrtc(p->fd, p->crtc_id, 0, 0, 0, NULL, 0, NULL) < 0) {
+        return neg_errno();
+    }
+    return 0;
+}
+
 static const struct fx_backend_ops drm_ops = {drm_show, drm_wait, drm_dispatch, drm_fd, drm_close,
                                               drm_suspend, drm_resume, drm_hotplug_fd,
-                                              drm_emergency_restore};
+                                              drm_emergency_restore, drm_set_power};
 
 /* ---- open --------------------------------------------------------------- */
 
@@ -748,6 +801,7 @@ int fx_drm_open(fx_display *d)
     }
     p->conn_id = c->connector_id;
     panel_orientation(d, fd, c->connector_id);
+    find_dpms(d, p);
     r = pick_mode(d, c, &p->mode);
     if (r == 0) {
         p->crtc_id = pick_crtc(fd, res, c, &ci);
