@@ -15,7 +15,7 @@ FUZZ_LIBSRC  := $(CORE_SRC)
 FUZZ_SECONDS ?= 60
 FUZZ_RUNS    ?= 3000
 
-$(FUZZ_BUILD)/%: tests/fuzz/%.c $(FUZZ_LIBSRC) tests/fuzz/guard.h tests/fuzz/scenehost.h $(wildcard kernel-free-src/include/fixel/*.h)
+$(FUZZ_BUILD)/%: tests/fuzz/%.c $(FUZZ_LIBSRC) tests/fuzz/guard.h tests/fuzz/scenehost.h tests/fuzz/choice.h tests/fuzz/fuzz_kiosk.c tests/fuzz/fuzz_obj.c tests/fuzz/fuzz_psf.c $(wildcard kernel-free-src/include/fixel/*.h)
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(FUZZ_LIBSRC) $(FUZZ_EXTRA_$*) -o $@
 
@@ -32,3 +32,12 @@ fuzz: fuzz-build
 TEST_SUITES += "sh tests/fuzz/run-short.sh $(FUZZ_RUNS)"
 
 .PHONY: fuzz fuzz-build
+FUZZ_EXTRA_fuzz_gkiosk := tools/fixel-kiosk/kiosk_parse.c
+FUZZ_EXTRA_fuzz_png := boards/memory/memfb.c -lpng -lz
+
+# The long campaign (docs/RELIABILITY.md records its results): one core,
+# nice 15, each target for its share of FUZZ_CAMPAIGN (TARGET:SECONDS ...).
+FUZZ_CAMPAIGN ?= fuzz_grammar:900 fuzz_gkiosk:900 fuzz_gobj:900 fuzz_gpsf:600 fuzz_png:600
+fuzz-campaign: fuzz-build
+	sh tests/fuzz/campaign.sh $(FUZZ_CAMPAIGN)
+.PHONY: fuzz-campaign
