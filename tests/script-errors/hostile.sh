@@ -174,6 +174,17 @@ mkdir -p "$out/imgout"
 printf "grid 1x1\nsize 64x48\nwidget image cam col=0 row=0 path=%s\n" "$out/fifo" > "$out/img.conf"
 check kiosk-png-fifo 0 "" "$kiosk" --headless --frames 1 --data "$out/d1" --out "$out/imgout" "$out/img.conf"
 
+# device and calibration paths naming a FIFO with no writer: refused, not
+# waited on (fixel-shot -d, FIXEL_POINTERCAL)
+shot=$(dirname "$draw")/fixel-shot
+check shot-fifo 1 "not a device (a FIFO)" "$shot" -d "$out/fifo" -o "$png"
+check shot-directory 1 "not a device (a directory)" "$shot" -d "$out" -o "$png"
+printf 'grid 1x1\nsize 64x48\nwidget number a col=0 row=0\n' > "$out/pc.conf"
+check pointercal-fifo 0 "calibration $out/fifo is not a regular file; ignored" \
+    env FIXEL_BACKEND=memory FIXEL_FRAMES=2 FIXEL_POINTERCAL="$out/fifo" "$kiosk" --data "$out/d1" "$out/pc.conf"
+check pointercal-directory 0 "calibration $out is not a regular file; ignored" \
+    env FIXEL_BACKEND=memory FIXEL_FRAMES=2 FIXEL_POINTERCAL="$out" "$kiosk" --data "$out/d1" "$out/pc.conf"
+
 # Ctrl-C (SIGINT) and timeout (SIGTERM) must stop a headless run on an endless source
 for sig in INT TERM; do
     timeout -k 2 -s $sig 0.5 "$kiosk" --headless --frames 100000000 --data /dev/zero "$conf" > /dev/null 2>&1; rc=$?
