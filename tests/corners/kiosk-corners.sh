@@ -5,6 +5,7 @@
 #  - the directives and widget keys the parser's "unknown ..." messages
 #    list must each have a table entry, and every table entry must be one
 #    the parser lists: a directive without an entry fails here;
+#  - fixel-kiosk(1) lists exactly the table (tools/gen/man-kiosk.sh);
 #  - every numeric directive and widget key at min, max, 0, +-1, one past
 #    each bound, near 2^15, 2^16, 2^24, 2^31, 2^63: inside the range the
 #    kiosk draws (exit 0) or refuses with a message of its own, outside it
@@ -60,6 +61,11 @@ done
 for d in $(awk '$1 == "widget" { print $2 }' "$out/keys"); do
     case " $wkeys " in *" $d "*) P=$((P + 1));; *) fail "widget-key-$d" "in the table, not in the parser's list";; esac
 done
+
+# ---- the manual page lists the table as it is ----
+cp docs/man/fixel-kiosk.1 "$out/page.1"
+if sh tools/gen/man-kiosk.sh "$kiosk" "$out/page.1" && cmp -s docs/man/fixel-kiosk.1 "$out/page.1"; then P=$((P + 1))
+else fail man-page "docs/man/fixel-kiosk.1 differs from the table (run tools/gen/man-kiosk.sh)"; fi
 
 # ---- numeric keys at their corners ----
 # corners MIN MAX SCALE: "TEXT INSIDE" lines; SCALE 1000 for numbers
