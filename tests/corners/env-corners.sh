@@ -2,7 +2,9 @@
 # SPDX-License-Identifier: MIT
 # FIXEL_* variables at hostile values (issue #26). The variables are those
 # of README.md's environment table; every FIXEL_ name that boards/env/env.c
-# reads must be in it (a variable without an entry fails). Each variable is
+# reads must be in it (a variable without an entry fails), and the
+# ENVIRONMENT sections of fixel-draw(1), fixel-kiosk(1) and fixel-demo(1)
+# must be generated from it. Each variable is
 # set in turn to: empty, a word no variable takes, 0, -1, 1, 2147483648,
 # 9223372036854775808, a 10 KB value, control characters, a directory and
 # a FIFO with no writer, and fixel-draw --display runs one frame on the
@@ -23,6 +25,13 @@ vars=$(sed -n 's/^| *\(`FIXEL_[^|]*\)|.*/\1/p' README.md | grep -o 'FIXEL_[A-Z_]
 [ -n "$vars" ] || { echo "env-corners: no FIXEL_ table in README.md"; echo "env-corners: 0 passed, 1 failed"; exit 1; }
 for v in $(grep -o '"FIXEL_[A-Z_]*"' boards/env/env.c | tr -d '"' | sort -u); do
     case " $(echo $vars) " in *" $v "*) P=$((P + 1));; *) F=$((F + 1)); echo "FAIL $v: read by env.c, not in README.md's table";; esac
+done
+
+# the manual pages list the table as it is (tools/gen/man-env.sh)
+for page in fixel-draw.1 fixel-kiosk.1 fixel-demo.1; do
+    cp "docs/man/$page" "$out/$page"
+    if sh tools/gen/man-env.sh "$out/$page" && cmp -s "docs/man/$page" "$out/$page"; then P=$((P + 1))
+    else F=$((F + 1)); echo "FAIL $page: its ENVIRONMENT section differs from README.md's table (run tools/gen/man-env.sh)"; fi
 done
 
 long=$(head -c 10240 /dev/zero | tr '\0' a)
