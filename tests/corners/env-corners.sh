@@ -12,12 +12,10 @@
 # wall time in 1 GiB, with no sanitizer report, exit 0 or refuse with a
 # message naming the variable (FIXEL_REPLAY: "replay: " and the file), and never echo a raw control character.
 #   sh tests/corners/env-corners.sh DRAW OUTDIR [LIMIT]
-draw=$1; out=$2; limit=${3:-1}; wall=$((limit * 30))
+draw=$1; out=$2; limit=${3:-1}
 P=0; F=0
 rm -rf "$out"; mkdir -p "$out/dir"
-export UBSAN_OPTIONS=halt_on_error=1:exitcode=99:print_stacktrace=1
-export ASAN_OPTIONS=exitcode=98:detect_leaks=0
-san=0; case "$draw" in *asan*) san=1;; esac
+. tests/corners/limits.sh
 mkfifo "$out/fifo"
 printf 'clear #102030\n' > "$out/s.fxs"
 
@@ -43,18 +41,9 @@ for v in $vars; do
         case $v in
         FIXEL_BACKEND) set -- env FIXEL_FRAMES=1;;
         FIXEL_FRAMES) set -- env FIXEL_BACKEND=memory;;
-        FIXEL_OUT) set -- env FIXEL_BACKEND=memory FIXEL_FRAMES=1;;
         *) set -- env FIXEL_BACKEND=memory FIXEL_FRAMES=1;;
         esac
-        if [ $san = 1 ]; then
-            ( ulimit -t "$limit"; cd "$out" && timeout -k 1 "$wall" "$@" "$v=$val" "$draw" --display "$out/s.fxs" ) > /dev/null 2> "$out/err"; rc=$?
-        else
-            ( ulimit -v 1048576; ulimit -t "$limit"; cd "$out" && timeout -k 1 "$wall" "$@" "$v=$val" "$draw" --display "$out/s.fxs" ) > /dev/null 2> "$out/err"; rc=$?
-        fi
-        why=""
-        [ $rc -eq 124 ] || [ $rc -eq 137 ] && why="over the wall-time limit ($wall s): blocked?"
-        [ $rc -eq 152 ] && why="over the CPU limit"
-        [ -z "$why" ] && grep -qE 'runtime error|AddressSanitizer' "$out/err" && why="sanitizer report"
+        limited "$draw" sh -c 'cd "$0" && exec "$@"' "$out" "$@" "$v=$val" "$draw" --display "$out/s.fxs"
         named=$v; [ $v = FIXEL_REPLAY ] && named="replay: "
         [ -z "$why" ] && [ $rc -ne 0 ] && ! grep -q "$named" "$out/err" && why="exit $rc without naming $v"
         [ -z "$why" ] && grep -q "$(printf '\033')" "$out/err" && why="raw ESC in the message"

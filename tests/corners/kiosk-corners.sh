@@ -15,27 +15,17 @@
 # Each run has LIMIT s of CPU, 30 x LIMIT of wall time and 1 GiB of memory
 # (address space plain, RSS sanitized); a sanitizer report fails it.
 #   sh tests/corners/kiosk-corners.sh KIOSK OUTDIR [LIMIT]
-kiosk=$1; out=$2; limit=${3:-1}; wall=$((limit * 30))
+kiosk=$1; out=$2; limit=${3:-1}
 P=0; F=0
 rm -rf "$out"; mkdir -p "$out"
-export UBSAN_OPTIONS=halt_on_error=1:exitcode=99:print_stacktrace=1
-export ASAN_OPTIONS=exitcode=98:detect_leaks=0
-san=0; case "$kiosk" in *asan*) san=1;; esac
+. tests/corners/limits.sh
 fail() { F=$((F + 1)); echo "FAIL $1: $2"; [ -f "$out/err" ] && head -c 400 "$out/err" | sed 's/^/    /'; }
 
 # run CONFIG-TEXT [DATA-TEXT [FRAMES]]: sets rc; stderr in $out/err
 run() {
     printf '%s\n' "$1" > "$out/c.conf"
     printf '%s\n' "${2:-a=1}" > "$out/d"
-    if [ $san = 1 ]; then
-        ( ulimit -t "$limit"; timeout -k 1 "$wall" "$kiosk" --headless --frames "${3:-1}" --data "$out/d" "$out/c.conf" ) > /dev/null 2> "$out/err"; rc=$?
-    else
-        ( ulimit -v 1048576; ulimit -t "$limit"; timeout -k 1 "$wall" "$kiosk" --headless --frames "${3:-1}" --data "$out/d" "$out/c.conf" ) > /dev/null 2> "$out/err"; rc=$?
-    fi
-    why=""
-    [ $rc -eq 124 ] || [ $rc -eq 137 ] && why="over the wall-time limit ($wall s)"
-    [ $rc -eq 152 ] && why="over the CPU limit ($limit s)"
-    [ -z "$why" ] && grep -qE 'runtime error|AddressSanitizer' "$out/err" && why="sanitizer report"
+    limited "$kiosk" "$kiosk" --headless --frames "${3:-1}" --data "$out/d" "$out/c.conf"
     [ -z "$why" ] && [ $rc -gt 1 ] && why="exit $rc"
 }
 

@@ -27,40 +27,10 @@
 #include <string.h>
 #include <time.h>
 
+#include "choice.h"
 #include "fixel/error.h"
 #include "fixel/scene.h"
 #include "scenehost.h"
-
-typedef struct in {
-    const uint8_t *p;
-    size_t n;
-} in;
-
-static uint32_t take(in *s, int bytes)
-{
-    uint32_t v = 0;
-    for (int i = 0; i < bytes; i++) {
-        v = v << 8 | (s->n ? *s->p : 0);
-        if (s->n)
-            s->p++, s->n--;
-    }
-    return v;
-}
-
-typedef struct out {
-    char *b;
-    size_t n, cap;
-} out;
-
-static void put(out *o, const char *s)
-{
-    size_t k = strlen(s);
-    if (o->n + k + 1 < o->cap) {
-        memcpy(o->b + o->n, s, k);
-        o->n += k;
-        o->b[o->n] = 0;
-    }
-}
 
 /* Exact decimal of raw / 2^shift (up to 20 fraction digits). */
 static void fixed(char *buf, size_t size, int64_t raw, unsigned shift)
