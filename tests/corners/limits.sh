@@ -12,7 +12,7 @@ limited() {
     shift
     ( ulimit -v $vm; ulimit -t "$limit"; timeout -k 1 "$wall" "$@" ) > /dev/null 2> "$out/err"; rc=$?
     why=""
-    [ $rc -eq 124 ] || [ $rc -eq 137 ] && why="over the wall-time limit ($wall s): blocked?"
-    [ $rc -eq 152 ] && why="over the CPU limit ($limit s)"
+    [ $rc -eq 124 ] && why="over the wall-time limit ($wall s): blocked?"
+    [ $rc -eq 137 ] || [ $rc -eq 152 ] && why="killed: over the CPU limit ($limit s) or the wall-time limit ($wall s)"
     [ -z "$why" ] && grep -qE 'runtime error|AddressSanitizer' "$out/err" && why="sanitizer report"
 }
