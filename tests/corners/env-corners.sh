@@ -13,6 +13,8 @@
 # message naming the variable (FIXEL_REPLAY: "replay: " and the file), and never echo a raw control character.
 #   sh tests/corners/env-corners.sh DRAW OUTDIR [LIMIT]
 draw=$1; out=$2; limit=${3:-1}
+case $draw in /*) ;; *) draw=$PWD/$draw;; esac
+case $out in /*) ;; *) out=$PWD/$out;; esac
 P=0; F=0
 rm -rf "$out"; mkdir -p "$out/dir"
 . tests/corners/limits.sh
