@@ -5,7 +5,8 @@
  * 2^31, bit depths and colour types legal or not), PLTE, tRNS, tEXt / zTXt
  * / iCCP chunks declaring up to 4 GiB, IDAT streams of the right size, cut
  * short or too long, chunks with correct CRCs (or, by choice, wrong ones).
- * Whatever is accepted must have the size the header declared. */
+ * Whatever is accepted must have the size the header declared.
+ * FUZZ_GRAMMAR_PRINT=1 prints each header and the reader's answer. */
 #include <stdlib.h>
 #include <zlib.h>
 
@@ -37,7 +38,8 @@ static void chunk(const char *type, const uint8_t *p, uint32_t n, uint32_t decla
     raw(h, 8);
     raw(p, n);
     uint32_t c = (uint32_t)crc32(0, h + 4, 4);
-    c = (uint32_t)crc32(c, p, n);
+    if (n) /* crc32(c, NULL, 0) is not c but zlib's initial value, 0 */
+        c = (uint32_t)crc32(c, p, n);
     be32(h, c ^ (bad_crc ? 1u : 0u));
     raw(h, 4);
 }
@@ -99,6 +101,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int32_t ow = -1, oh = -1;
     int r = fx_read_png_rgb_stream(f, 4096, (size_t)1 << 22, &rgb, &ow, &oh);
     fclose(f);
+    static int print = -1;
+    if (print < 0)
+        print = getenv("FUZZ_GRAMMAR_PRINT") != NULL; /* triage: what was generated, what came out */
+    if (print)
+        fprintf(stderr, "png %zu bytes, IHDR %ux%u depth %u type %u: %d (%dx%d)\n", len, w, h, depth, ct, r, ow, oh);
     if (r == 0) {
         if (ow != (int32_t)w || oh != (int32_t)h || !rgb)
             abort(); /* accepted with a size other than the header's */
