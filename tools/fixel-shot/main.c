@@ -50,7 +50,7 @@ static int open_device(const char *dev, int flags)
                 errno == EACCES ? " (add the user to group video)" : "");
         return -1;
     }
-    struct stat st;
+    struct stat st = {0};
     if (fstat(fd, &st) < 0 || !S_ISCHR(st.st_mode)) {
         fprintf(stderr, "fixel-shot: %s: not a device (%s)\n", dev,
                 S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISDIR(st.st_mode) ? "a directory"
