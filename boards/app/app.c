@@ -12,7 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <fcntl.h>
 #include <sys/signalfd.h>
+#include <sys/stat.h>
 #include <sys/timerfd.h>
 #include <time.h>
 #include <unistd.h>
@@ -120,8 +122,19 @@ static void load_pointercal(fx_app *a, const char *path)
     int explicit = path != NULL;
     if (!path)
         path = "/etc/pointercal";
-    FILE *f = fopen(path, "r");
+    /* O_NONBLOCK: a FIFO with no writer must not block the open; only a
+     * regular file is read. */
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+    struct stat st;
+    if (fd >= 0 && (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode))) {
+        close(fd);
+        fx_display_log(a->disp, FX_LOG_ERROR, "input: calibration %s is not a regular file; ignored", path);
+        return;
+    }
+    FILE *f = fd >= 0 ? fdopen(fd, "r") : NULL;
     if (!f) {
+        if (fd >= 0)
+            close(fd);
         if (explicit)
             fx_display_log(a->disp, FX_LOG_ERROR, "input: cannot read calibration %s: %s", path,
                            strerror(errno));

@@ -10,10 +10,13 @@
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
+#include <fcntl.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "app_int.h"
 #include "../display/display_int.h"
@@ -198,10 +201,24 @@ int fx_replay_open(fx_app *a, const char *path)
     fx_replay *r = calloc(1, sizeof *r);
     if (!r)
         return -FX_ENOMEM;
-    r->f = fopen(path, "re");
+    /* O_NONBLOCK: a FIFO with no writer must not block the open (its
+     * reads then end at once); a directory is refused here, not by a
+     * failing read later. */
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+    struct stat st;
+    if (fd >= 0 && fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) {
+        close(fd);
+        fd = -1;
+        errno = EISDIR;
+    }
+    if (fd >= 0)
+        fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    r->f = fd >= 0 ? fdopen(fd, "r") : NULL;
     if (!r->f) {
-        int e = -errno;
+        int e = errno ? -errno : -FX_EIO;
         fx_display_log(a->disp, FX_LOG_ERROR, "replay: cannot open %s: %s", path, strerror(errno));
+        if (fd >= 0)
+            close(fd);
         free(r);
         return e;
     }

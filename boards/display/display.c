@@ -17,6 +17,14 @@
 #include "display_int.h"
 #include "fixel/error.h"
 
+/* Backends pass the kernel's -errno through (ENAMETOOLONG, ENOTTY, ...):
+ * fx_strerror knows only the FX_E* codes, libc knows the rest. */
+static const char *err_text(int r)
+{
+    const char *s = fx_strerror(r);
+    return strcmp(s, "unknown error") ? s : strerror(r < 0 ? -r : r);
+}
+
 /* Compiled-in defaults of the board profile (boards/<name>.mk). */
 #ifndef FX_BOARD_ROTATION
 #define FX_BOARD_ROTATION 0
@@ -238,7 +246,7 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
                                "no %s display found (%s%s%s): is its driver loaded? "
                                "FIXEL_BACKEND=memory runs headless",
                                fx_backend_name(b), d->device[0] ? d->device : "",
-                               d->device[0] ? ": " : "", fx_strerror(r));
+                               d->device[0] ? ": " : "", err_text(r));
             reset_backend(d);
             free(d);
             return r;
@@ -255,7 +263,7 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
             reset_backend(d);
             size_t l = strlen(reasons);
             snprintf(reasons + l, sizeof reasons - l, "%s%s: %s", l ? "; " : "",
-                     fx_backend_name(order[i]), fx_strerror(r));
+                     fx_backend_name(order[i]), err_text(r));
         }
         if (r < 0) {
             free(d);

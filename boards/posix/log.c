@@ -18,6 +18,11 @@ void fx_log_stderr(fx_log_priority p, void *user, const char *fmt, va_list ap)
     (void)user;
     char line[512];
     vsnprintf(line, sizeof line, fmt, ap);
+    /* values from the environment and from files are quoted in messages:
+     * a control character (ESC, CR) must not reach the terminal */
+    for (char *c = line; *c; c++)
+        if ((unsigned char)*c < 0x20 || *c == 0x7f)
+            *c = '?';
     fprintf(stderr, "fixel: %s\n", line);
 }
 

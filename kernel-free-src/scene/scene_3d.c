@@ -481,9 +481,11 @@ static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
     if (s->r.tex)
         need += (size_t)nv * 2 * sizeof(fx16);
     if (need > s->mesh_bytes) {
-        s->mesh_mem = fx_scene_alloc(sc, need);
-        if (!s->mesh_mem)
+        /* on failure the smaller block stays: a later, smaller mesh uses it */
+        void *mem = fx_scene_alloc(sc, need);
+        if (!mem)
             return fx_scene_error(sc, "out of scene memory for a mesh of %d vertices", nv);
+        s->mesh_mem = mem;
         s->mesh_bytes = need;
     }
     fx_mesh m = {0};

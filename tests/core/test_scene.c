@@ -103,3 +103,23 @@ FX_TEST(scene_command_names_with_nul_bytes)
     FX_CHECK_EQ(fx_scene_run(&sc, text, sizeof text - 1), -FX_EINVAL);
     FX_CHECK_EQ(sc.err_line, 2);
 }
+
+/* A mesh too big for the arena fails alone: the next, smaller mesh is
+ * built in the block the earlier one left (the failed allocation used to
+ * leave a NULL block with the old size, and the next mesh wrote through it;
+ * found by fuzz_grammar). */
+FX_TEST(scene_mesh_after_a_failed_allocation)
+{
+    static uint8_t arena[96 << 10];
+    fx_scene sc;
+    fx_scene_host h = {&buf, scene_buf_make, NULL, NULL, NULL, NULL};
+    fx_scene_init(&sc, &h, arena, sizeof arena);
+    static const char *const lines[] = {"size 16 16", "cube 1", "sphere 1 256 256", "cube 1", "octahedron 1"};
+    static const int want[] = {0, 0, -FX_ENOMEM, 0, 0};
+    for (int i = 0; i < 5; i++) {
+        int r = fx_scene_exec_line(&sc, lines[i], strlen(lines[i]), i + 1);
+        FX_CHECK_MSG(want[i] ? r < 0 : r == 0, "line %d '%s': %d %s", i + 1, lines[i], r, sc.err);
+        if (want[i])
+            FX_CHECK_MSG(strstr(sc.err, "out of scene memory") != NULL, "%s", sc.err);
+    }
+}

@@ -10,6 +10,8 @@ test-corners:
 	@$(MAKE) --no-print-directory -s $(PLAIN_BUILD)/tests/corners
 	@$(MAKE) --no-print-directory -s SAN=1 $(ASAN_BUILD)/tests/corners
 	@$(PLAIN_BUILD)/tests/corners && $(ASAN_BUILD)/tests/corners
+	@$(MAKE) --no-print-directory -s $(PLAIN_BUILD)/bin/fixel-kiosk && sh tests/corners/kiosk-corners.sh $(PLAIN_BUILD)/bin/fixel-kiosk $(PLAIN_BUILD)/kiosk-corners 1
+	@$(MAKE) --no-print-directory -s SAN=1 $(ASAN_BUILD)/bin/fixel-kiosk && sh tests/corners/kiosk-corners.sh $(ASAN_BUILD)/bin/fixel-kiosk $(ASAN_BUILD)/kiosk-corners 3
 
 TEST_SUITES += "$(MAKE) --no-print-directory -s $(PLAIN_BUILD)/tests/corners && $(PLAIN_BUILD)/tests/corners" \
                "$(MAKE) --no-print-directory -s SAN=1 $(ASAN_BUILD)/tests/corners && $(ASAN_BUILD)/tests/corners"
@@ -25,3 +27,12 @@ $(BUILD)/tests/api-corners: $(BUILD)/obj/tests/corners/api.o $(LIB_A)
 
 TEST_SUITES += "$(MAKE) --no-print-directory -s $(PLAIN_BUILD)/tests/api-corners && $(PLAIN_BUILD)/tests/api-corners" \
                "$(MAKE) --no-print-directory -s SAN=1 $(ASAN_BUILD)/tests/api-corners && $(ASAN_BUILD)/tests/api-corners"
+
+# Kiosk corner tests generated from fixel-kiosk --keys (issue #26):
+# tests/corners/kiosk-corners.sh, plain and ASan+UBSan.
+TEST_SUITES += "$(MAKE) --no-print-directory -s $(PLAIN_BUILD)/bin/fixel-kiosk && sh tests/corners/kiosk-corners.sh $(PLAIN_BUILD)/bin/fixel-kiosk $(PLAIN_BUILD)/kiosk-corners 1" \
+               "$(MAKE) --no-print-directory -s SAN=1 $(ASAN_BUILD)/bin/fixel-kiosk && sh tests/corners/kiosk-corners.sh $(ASAN_BUILD)/bin/fixel-kiosk $(ASAN_BUILD)/kiosk-corners 3"
+
+# FIXEL_* variables at hostile values (tests/corners/env-corners.sh).
+TEST_SUITES += "$(MAKE) --no-print-directory -s $(PLAIN_BUILD)/bin/fixel-draw && sh tests/corners/env-corners.sh $(PLAIN_BUILD)/bin/fixel-draw $(PLAIN_BUILD)/env-corners 1" \
+               "$(MAKE) --no-print-directory -s SAN=1 $(ASAN_BUILD)/bin/fixel-draw && sh tests/corners/env-corners.sh $(ASAN_BUILD)/bin/fixel-draw $(ASAN_BUILD)/env-corners 3"

@@ -9,46 +9,29 @@
  * scripts rarely forms. Set-up lines of an entry (pre) come first.
  * Surfaces are capped at 128x128 between guard pages, as fuzz_scene.c.
  * FUZZ_GRAMMAR_PRINT=1 prints each generated script (triage of a crash or
- * timeout: run the target on the artifact). */
+ * timeout: run the target on the artifact).
+ *
+ * Fuzz budget: an argument the table marks FX_ARG_WORK (iterations, points,
+ * segments, grid cells, order) takes min, min - 1, max + 1 (both rejected by
+ * the range check) or a value in min..min + FUZZ_WORK_BUDGET, never its
+ * larger corners; a repeated group (vertices, control points) comes at
+ * most min + FUZZ_WORK_BUDGET / 2 times; scripts draw into at most 64x48
+ * pixels and have at most 4 commands; the heaviest commands are picked less
+ * often (gen_line). Valid
+ * commands at their largest work (2^24 iterations, 4M points) run for
+ * seconds each: the campaign would reach ~16 executions/s. The real checks
+ * are unchanged: tests/corners runs every argument at every corner,
+ * FX_ARG_WORK ones at max included, in bounded time. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
+#include "choice.h"
 #include "fixel/error.h"
 #include "fixel/scene.h"
 #include "scenehost.h"
-
-typedef struct in {
-    const uint8_t *p;
-    size_t n;
-} in;
-
-static uint32_t take(in *s, int bytes)
-{
-    uint32_t v = 0;
-    for (int i = 0; i < bytes; i++) {
-        v = v << 8 | (s->n ? *s->p : 0);
-        if (s->n)
-            s->p++, s->n--;
-    }
-    return v;
-}
-
-typedef struct out {
-    char *b;
-    size_t n, cap;
-} out;
-
-static void put(out *o, const char *s)
-{
-    size_t k = strlen(s);
-    if (o->n + k + 1 < o->cap) {
-        memcpy(o->b + o->n, s, k);
-        o->n += k;
-        o->b[o->n] = 0;
-    }
-}
 
 /* Exact decimal of raw / 2^shift (up to 20 fraction digits). */
 static void fixed(char *buf, size_t size, int64_t raw, unsigned shift)
@@ -67,6 +50,8 @@ static void fixed(char *buf, size_t size, int64_t raw, unsigned shift)
     }
 }
 
+#define FUZZ_WORK_BUDGET 16 /* over min, for FX_ARG_WORK values and repetitions */
+
 static void value(in *s, const fx_scene_arg *a, char *t, size_t size)
 {
     static const char *const big[] = {"9223372036854775807", "-9223372036854775808", "99999999999999999999",
@@ -78,6 +63,15 @@ static void value(in *s, const fx_scene_arg *a, char *t, size_t size)
     case FX_ARG_FX56: {
         unsigned sh = a->type == FX_ARG_INT ? 0 : a->type == FX_ARG_FX16 ? 16 : 56;
         int64_t v;
+        if (a->flags & FX_ARG_WORK) {
+            int64_t cap = a->max - a->min > FUZZ_WORK_BUDGET ? a->min + FUZZ_WORK_BUDGET : a->max;
+            switch (cls % 6) {
+            case 0: v = a->min; break;
+            case 1: v = a->min > INT64_MIN ? a->min - 1 : a->min; break;
+            case 2: v = a->max < INT64_MAX ? a->max + 1 : a->max; break;
+            default: v = a->min + (int64_t)(take(s, 1) % (uint64_t)(cap - a->min + 1));
+            }
+        } else
         switch (cls % 12) {
         case 0: v = a->min; break;
         case 1: v = a->max; break;
@@ -129,7 +123,16 @@ static void gen_line(in *s, out *o)
     if (!ncmd)
         while (fx_scene_argspecs[ncmd].cmd)
             ncmd++;
-    const fx_scene_argspec *sp = &fx_scene_argspecs[take(s, 2) % (uint32_t)ncmd];
+    /* Part of the budget: the commands FUZZ_GRAMMAR_PROFILE=1 shows at tens
+     * of ms a line (curves flattened to 2^16 points a piece at +-2^31, the
+     * teapot's patches, the fractal lines) come 32 times less often than the
+     * others; they would otherwise take 90% of the time. */
+    static const char *const heavy[] = {"bezier", "bspline", "spline", "coastline", "fractline", "teapot"};
+    uint32_t pick = take(s, 2) % (uint32_t)ncmd;
+    for (size_t h = 0; h < sizeof heavy / sizeof heavy[0]; h++)
+        if (!strcmp(fx_scene_argspecs[pick].cmd, heavy[h]) && take(s, 1) % 32)
+            pick = (pick + 1) % (uint32_t)ncmd;
+    const fx_scene_argspec *sp = &fx_scene_argspecs[pick];
     if (sp->pre && (take(s, 1) & 3)) {
         put(o, sp->pre);
         put(o, "\n");
@@ -163,7 +166,7 @@ static void gen_line(in *s, out *o)
                 const fx_scene_arg *gs = a + 1, *ge = gs;
                 while (ge->type != FX_ARG_END && ge->type != FX_ARG_FORM)
                     ge++;
-                int64_t max = a->max < 70 ? a->max + 1 : 70;
+                int64_t max = a->max < a->min + FUZZ_WORK_BUDGET / 2 ? a->max + 1 : a->min + FUZZ_WORK_BUDGET / 2;
                 int64_t k = (int64_t)(take(s, 1) % (uint32_t)(max + 1));
                 for (int64_t i = 0; i < k; i++)
                     for (const fx_scene_arg *b = gs; b < ge; b++) {
@@ -181,6 +184,45 @@ static void gen_line(in *s, out *o)
     }
 }
 
+/* FUZZ_GRAMMAR_PROFILE=1: CPU time per command, printed at exit (which
+ * commands keep the rate down). */
+static struct {
+    char cmd[16];
+    double sec;
+    long n;
+} prof[160];
+
+static void prof_print(void)
+{
+    for (int i = 0; i < 160 && prof[i].cmd[0]; i++)
+        fprintf(stderr, "prof %-14s %8ld lines %9.3f s\n", prof[i].cmd, prof[i].n, prof[i].sec);
+}
+
+static void prof_add(const char *line, size_t n, double sec)
+{
+    size_t k = 0;
+    while (k < n && k < 15 && line[k] != ' ')
+        k++;
+    for (int i = 0; i < 160; i++) {
+        if (!prof[i].cmd[0]) {
+            memcpy(prof[i].cmd, line, k);
+            prof[i].cmd[k] = 0;
+        }
+        if (strlen(prof[i].cmd) == k && !memcmp(prof[i].cmd, line, k)) {
+            prof[i].sec += sec;
+            prof[i].n++;
+            return;
+        }
+    }
+}
+
+static double cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -191,7 +233,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     out o = {text, 0, sizeof text};
     text[0] = 0;
     put(&o, "size 64 48\n"); /* a small surface keeps each run short */
-    for (int lines = 0; lines < 8 && s.n; lines++) {
+    for (int lines = 0; lines < 4 && s.n; lines++) {
         gen_line(&s, &o);
         put(&o, "\n");
     }
@@ -200,6 +242,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         print = getenv("FUZZ_GRAMMAR_PRINT") != NULL; /* triage: show the generated script */
     if (print)
         fputs(text, stderr);
+    static int profile = -1;
+    if (profile < 0 && (profile = getenv("FUZZ_GRAMMAR_PROFILE") != NULL))
+        atexit(prof_print);
+    max_w = 64, max_h = 48; /* the fuzz budget */
     fx_scene_host host = {NULL, make_surface, load_file, NULL, NULL, NULL};
     fx_scene_init(&sc, &host, arena, sizeof arena);
     /* each line alone, so that one error does not hide the lines after it */
@@ -210,7 +256,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         while (e < o.n && text[e] != '\n')
             e++;
         sc.err[0] = 0;
+        double t0 = profile ? cpu_now() : 0;
         fx_scene_exec_line(&sc, text + i, e - i, lineno++);
+        if (profile)
+            prof_add(text + i, e - i, cpu_now() - t0);
         i = e + 1;
     }
     free_surface();

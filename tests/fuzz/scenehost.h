@@ -16,12 +16,13 @@
 
 static guarded g;
 static int have;
+static int32_t max_w = 128, max_h = 128; /* larger surfaces are refused (ENOMEM) */
 static const uint8_t font_file[] = {0x36, 0x04, 0x00, 0x08, 0xFF, 0x81, 0x81, 0x81, 0x81, 0x81, 0x81, 0xFF};
 
 static int make_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
 {
     (void)u;
-    if (w > 128 || h > 128)
+    if (w > max_w || h > max_h)
         return -FX_ENOMEM;
     if (guarded_make(&g, w, h, f, (w + h) & 1) < 0)
         return -FX_ENOMEM;

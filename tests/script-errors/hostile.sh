@@ -174,8 +174,31 @@ mkdir -p "$out/imgout"
 printf "grid 1x1\nsize 64x48\nwidget image cam col=0 row=0 path=%s\n" "$out/fifo" > "$out/img.conf"
 check kiosk-png-fifo 0 "" "$kiosk" --headless --frames 1 --data "$out/d1" --out "$out/imgout" "$out/img.conf"
 
-# Ctrl-C (SIGINT) and timeout (SIGTERM) must stop a headless run on an endless source
-for sig in INT TERM; do
+# device and calibration paths naming a FIFO with no writer: refused, not
+# waited on (fixel-shot -d, FIXEL_POINTERCAL)
+shot=$(dirname "$draw")/fixel-shot
+check shot-fifo 1 "not a device (a FIFO)" "$shot" -d "$out/fifo" -o "$png"
+check shot-directory 1 "not a device (a directory)" "$shot" -d "$out" -o "$png"
+printf 'grid 1x1\nsize 64x48\nwidget number a col=0 row=0\n' > "$out/pc.conf"
+check pointercal-fifo 0 "calibration $out/fifo is not a regular file; ignored" \
+    env FIXEL_BACKEND=memory FIXEL_FRAMES=2 FIXEL_POINTERCAL="$out/fifo" "$kiosk" --data "$out/d1" "$out/pc.conf"
+check pointercal-directory 0 "calibration $out is not a regular file; ignored" \
+    env FIXEL_BACKEND=memory FIXEL_FRAMES=2 FIXEL_POINTERCAL="$out" "$kiosk" --data "$out/d1" "$out/pc.conf"
+
+# ---- display environment and live input ----
+script "clear #102030"
+check display-stdin-1GB-line 1 "line longer than 1048576 bytes" \
+    sh -c "head -c 1000000000 /dev/zero | tr '\\0' x | FIXEL_BACKEND=memory FIXEL_FRAMES=1 \"\$0\" --display -" "$draw"
+long=$(head -c 10240 /dev/zero | tr '\0' a)
+check drm-device-10KB 0 "drm: File name too long" env FIXEL_DRM_DEVICE="/dev/$long" FIXEL_FRAMES=1 "$draw" --display "$out/s.fxs"
+check fb-device-null 0 "fbdev: Inappropriate ioctl for device" env FIXEL_FB_DEVICE=/dev/null FIXEL_FRAMES=1 "$draw" --display "$out/s.fxs"
+for r in xyz 1x1 2147483648; do
+    check rotation-$r 0 "FIXEL_ROTATION=$r ignored (0, 90, 180 or 270)" \
+        env FIXEL_ROTATION=$r FIXEL_BACKEND=memory FIXEL_FRAMES=1 "$draw" --display "$out/s.fxs"
+done
+
+# Ctrl-C (SIGINT), timeout (SIGTERM) and a hang-up (SIGHUP) must stop a headless run on an endless source
+for sig in INT TERM HUP; do
     timeout -k 2 -s $sig 0.5 "$kiosk" --headless --frames 100000000 --data /dev/zero "$conf" > /dev/null 2>&1; rc=$?
     if [ $rc -eq 124 ]; then P=$((P + 1)); else F=$((F + 1)); echo "FAIL kiosk-headless-SIG$sig: exit $rc (137: only SIGKILL stopped it)"; fi
 done

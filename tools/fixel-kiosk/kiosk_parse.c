@@ -156,6 +156,9 @@ static int find_source(const kiosk_config *k, const char *s, size_t n)
     return -1;
 }
 
+/* tests/corners/kiosk-corners.sh checks this list against kiosk_keys */
+#define UNKNOWN_DIRECTIVE \
+    "unknown directive (title grid size stale history bg panel fg columns widget mqtt mqtt_tls subscribe screen schedule)"
 #define ALLW 0xFFu
 #define HEATW (1u << KIOSK_HEAT)
 #define IMGW (1u << KIOSK_IMAGE)
@@ -180,8 +183,8 @@ const kiosk_key kiosk_keys[] = {
     {"widget", "w", 'i', 1, 64, ALLW, "cells wide"},
     {"widget", "h", 'i', 1, 64, ALLW, "cells high"},
     {"widget", "decimals", 'i', 0, 3, ALLW, "digits after the point"},
-    {"widget", "min", 'm', -VMAX, VMAX, ALLW, "low end of the scale"},
-    {"widget", "max", 'm', -VMAX, VMAX, ALLW, "high end of the scale"},
+    {"widget", "min", 'm', -VMAX, VMAX, ALLW, "low end of the scale (max - min <= 2251799813685; heat: within +-2000000)"},
+    {"widget", "max", 'm', -VMAX, VMAX, ALLW, "high end of the scale (heat: within +-2000000)"},
     {"widget", "color", 'c', 0, 0, ALLW, "#rrggbb"},
     {"widget", "label", 't', 0, KIOSK_TEXT_MAX - 1, ALLW, "caption"},
     {"widget", "unit", 't', 0, KIOSK_TEXT_MAX - 1, ALLW, "unit after the value"},
@@ -345,7 +348,7 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
         /* numbers: the type from the table, then the table's range */
         if (q->type == 'i' || q->type == 'm') {
             if (q->type == 'i') {
-                if (parse_int(val, 0, 999999999, &iv)) return "bad widget value";
+                if (parse_int(val, 0, 999999999, &iv)) return range_msg(k, q, val);
                 m = iv;
             } else if (kiosk_parse_milli(val.s, val.n, &m)) {
                 return range_msg(k, q, val);
@@ -725,6 +728,7 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
         else if (tok_is(t, "screen")) msg = parse_screen(k, q, eol);
         else if (tok_is(t, "schedule")) msg = parse_schedule(k, q, eol);
         else if (tok_is(t, "subscribe")) msg = parse_subscribe(k, p, q, eol, line);
+        else if (!kiosk_key_find("directive", t.s, t.n)) msg = UNKNOWN_DIRECTIVE; /* the table decides */
         else {
             tok v;
             int rv = next_tok(&q, eol, &v);
@@ -755,7 +759,7 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
             else if (tok_is(t, "fg")) msg = parse_color(v, &k->fg) ? "bad colour (#rrggbb)" : NULL;
             else if (tok_is(t, "columns"))
                 msg = parse_header(k, v.s, 0, v.n, 2) ? "columns wants name,name,... (up to 32, no heat sources)" : NULL;
-            else { k->errat = t.s; msg = "unknown directive (title grid size stale history bg panel fg columns widget mqtt mqtt_tls subscribe)"; }
+            else { k->errat = t.s; msg = UNKNOWN_DIRECTIVE; }
             if (!msg && next_tok(&q, eol, &extra) != 0) { k->errat = extra.s; msg = "extra text after value"; }
         }
         if (msg) {

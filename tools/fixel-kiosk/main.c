@@ -1186,7 +1186,15 @@ int main(int argc, char **argv)
                     printf(q->max ? "at most %lld bytes" : "-", (long long)q->max);
                 else
                     printf("-");
-                printf("  %s%s\n", q->help, q->widgets && q->widgets != 0xFFu ? " (heat/image only)" : "");
+                printf("  %s", q->help);
+                if (q->widgets && q->widgets != 0xFFu) { /* the widget types it applies to */
+                    static const char *const wt[] = {"number", "gauge", "bar", "spark", "text", "clock", "heat", "image"};
+                    const char *sep = " (";
+                    for (int j = 0; j < 8; j++)
+                        if (q->widgets >> j & 1) { printf("%s%s", sep, wt[j]); sep = ", "; }
+                    printf(" only)");
+                }
+                printf("\n");
             }
             return 0;
         }

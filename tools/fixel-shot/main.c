@@ -9,6 +9,7 @@
 #include <string.h>
 #include <sys/ioctl.h>
 #include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <linux/fb.h>
 
@@ -41,10 +42,23 @@ static int save(const char *out, void *pixels, int32_t w, int32_t h, int32_t str
  * to join when it is a permission. */
 static int open_device(const char *dev, int flags)
 {
-    int fd = open(dev, flags | O_CLOEXEC);
-    if (fd < 0)
+    /* O_NONBLOCK: a FIFO with no writer would block the open forever;
+     * anything but a character device is refused before it is used. */
+    int fd = open(dev, flags | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0) {
         fprintf(stderr, "fixel-shot: %s: %s%s\n", dev, strerror(errno),
                 errno == EACCES ? " (add the user to group video)" : "");
+        return -1;
+    }
+    struct stat st = {0};
+    if (fstat(fd, &st) < 0 || !S_ISCHR(st.st_mode)) {
+        fprintf(stderr, "fixel-shot: %s: not a device (%s)\n", dev,
+                S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISDIR(st.st_mode) ? "a directory"
+                : S_ISREG(st.st_mode) ? "a regular file" : "not a character device");
+        close(fd);
+        return -1;
+    }
+    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
     return fd;
 }
 
