@@ -95,10 +95,18 @@ static struct {
 static int console_release(void *user)
 {
     (void)user;
-    int r = 1;
+    /* One display that denies (kiosk) keeps them all: a switch that would
+     * release some and not others would show the console on half of them. */
     for (int i = 0; i < console.n; i++)
-        r &= vt_release(console.member[i]); /* deny is one policy for the program */
-    return r;
+        if (console.member[i]->opt.vt_switch == FX_VT_SWITCH_DENY) {
+            for (int k = 0; k < console.n; k++)
+                console.member[k]->info.vt_refused++;
+            fx_display_log(console.member[i], FX_LOG_DEBUG, "VT switch refused (kiosk policy)");
+            return 0;
+        }
+    for (int i = 0; i < console.n; i++)
+        vt_release(console.member[i]);
+    return 1;
 }
 
 static void console_acquire(void *user)
