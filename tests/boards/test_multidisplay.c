@@ -4,6 +4,7 @@
  * leaves the other working. Public API only. */
 #include <stdint.h>
 #include <string.h>
+#include "fixel/app.h"
 #include "fixel/display.h"
 #include "fixel/error.h"
 #include "fixel/surface.h"
@@ -121,4 +122,83 @@ FX_TEST(two_memory_displays_direct_and_rgb565)
     FX_CHECK_EQ(count(b, 0xFFFFFFFF), 1);
     fx_display_close(b);
     fx_display_close(a);
+}
+
+/* ---- fx_app with a second display ---------------------------------------- */
+
+struct two {
+    fx_app *app;
+    fx_display *second;
+    int main_frames, second_frames;
+    int32_t second_w, second_h;
+};
+
+static void draw_main(void *user)
+{
+    struct two *t = user;
+    fx_surface s = fx_app_surface(t->app);
+    fx_surface_clear(&s, 0xFF0000FF);
+    fx_app_present(t->app, NULL, 0);
+    if (++t->main_frames == 2)
+        fx_app_post_redisplay_on(t->app, t->second); /* one more of the second */
+}
+
+static void draw_second(fx_app *a, fx_display *d, void *user)
+{
+    struct two *t = user;
+    fx_surface s = fx_display_surface(d);
+    t->second_w = s.w;
+    t->second_h = s.h;
+    fx_surface_clear(&s, t->second_frames ? 0xFFFFFF00 : 0xFF00FF00);
+    fx_display_present(d, NULL, 0);
+    if (++t->second_frames == 1)
+        fx_app_post_redisplay(a); /* the app's own display draws again */
+    else
+        fx_app_quit(a);
+}
+
+FX_TEST(app_draws_a_second_display_with_its_own_callback)
+{
+    fx_app_options o;
+    fx_app_options_init(&o);
+    o.input = 0;
+    o.display.backend = FX_BACKEND_MEMORY;
+    o.display.memory_w = 32;
+    o.display.memory_h = 20;
+    o.display.log_priority = -1;
+    struct two t = {0};
+    FX_CHECK_EQ(fx_app_open(&t.app, &o), 0);
+    if (!t.app)
+        return;
+    fx_callbacks cb = {.display = draw_main};
+    fx_app_set_callbacks(t.app, &cb, &t);
+    fx_display_options d2 = o.display;
+    d2.memory_w = 12;
+    d2.memory_h = 30;
+    d2.rotation = 270;
+    FX_CHECK_EQ(fx_app_add_display(t.app, &d2, draw_second, &t, &t.second), 0);
+    FX_CHECK(t.second != NULL && t.second != fx_app_display(t.app));
+    if (!t.second) {
+        fx_app_close(t.app);
+        return;
+    }
+    FX_CHECK_EQ(fx_app_main_loop(t.app), 0);
+    /* each asks the other for a frame once: the main display's first
+     * frame, the second's first, the main's second (asked by the second's
+     * callback), the second's second (asked by the main's) */
+    FX_CHECK_EQ(t.main_frames, 2);
+    FX_CHECK_EQ(t.second_frames, 2);
+    FX_CHECK(t.second_w == 30 && t.second_h == 12);
+    FX_CHECK_EQ(count(fx_app_display(t.app), 0xFF0000FF), 32 * 20);
+    FX_CHECK_EQ(count(t.second, 0xFFFFFF00), 12 * 30);
+    int32_t w, h;
+    fx_app_size(t.app, &w, &h);
+    FX_CHECK(w == 32 && h == 20); /* the app's size is its own display's */
+
+    /* a full app refuses more */
+    int r = 0;
+    for (int i = 0; i < FX_APP_MAX_DISPLAYS && r == 0; i++)
+        r = fx_app_add_display(t.app, &d2, draw_second, &t, NULL);
+    FX_CHECK_EQ(r, -FX_ENOSPC);
+    fx_app_close(t.app);
 }
