@@ -113,19 +113,31 @@ static void screen(fx_display *d, const char *name, const char *spec, const char
                   dev ? dev : "");
 }
 
+/* card0's and card1's outputs, named by card (checks PREFIX-card0/1). */
+static int open_both(const char *prefix, fx_display **a, fx_display **b)
+{
+    char c0[48], c1[48], n0[48], n1[48];
+    snprintf(c0, sizeof c0, "card0:%s", conn0);
+    snprintf(c1, sizeof c1, "card1:%s", conn1);
+    snprintf(n0, sizeof n0, "%s-card0", prefix);
+    snprintf(n1, sizeof n1, "%s-card1", prefix);
+    *a = *b = NULL;
+    if (open_on(n0, a, c0) < 0)
+        return -1;
+    if (open_on(n1, b, c1) < 0) {
+        fx_display_close(*a);
+        *a = NULL;
+        return -1;
+    }
+    return 0;
+}
+
 static void two_cards_child(void *arg)
 {
     (void)arg;
-    char c0[48], c1[48];
-    snprintf(c0, sizeof c0, "card0:%s", conn0);
-    snprintf(c1, sizeof c1, "card1:%s", conn1);
-    fx_display *a = NULL, *b = NULL;
-    if (open_on("multi-open-card0", &a, c0) < 0)
+    fx_display *a, *b;
+    if (open_both("multi-open", &a, &b) < 0)
         return;
-    if (open_on("multi-open-card1", &b, c1) < 0) {
-        fx_display_close(a);
-        return;
-    }
     fx_display_info ia, ib;
     fx_display_get_info(a, &ia);
     fx_display_get_info(b, &ib);
@@ -196,11 +208,8 @@ static void two_cards_child(void *arg)
 static void crash_child(void *arg)
 {
     (void)arg;
-    char c0[48], c1[48];
-    snprintf(c0, sizeof c0, "card0:%s", conn0);
-    snprintf(c1, sizeof c1, "card1:%s", conn1);
-    fx_display *a = NULL, *b = NULL;
-    if (open_on("multi-crash-open-card0", &a, c0) < 0 || open_on("multi-crash-open-card1", &b, c1) < 0)
+    fx_display *a, *b;
+    if (open_both("multi-crash-open", &a, &b) < 0)
         _exit(3);
     draw(a, "bars", NULL);
     draw(b, "bars", NULL);
