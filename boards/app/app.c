@@ -240,6 +240,8 @@ void fx_app_close(fx_app *a)
         close(a->tfd);
     if (a->sfd >= 0)
         close(a->sfd);
+    for (int i = 0; i < a->nextra; i++)
+        fx_display_close(a->extra[i].disp);
     fx_display_close(a->disp);
     sigset_t set;
     sigemptyset(&set);
@@ -259,6 +261,59 @@ void fx_app_set_callbacks(fx_app *a, const fx_callbacks *cb, void *user)
 }
 
 void fx_app_post_redisplay(fx_app *a) { a->redisplay = 1; }
+
+int fx_app_add_display(fx_app *a, const fx_display_options *o,
+                       void (*draw)(fx_app *a, fx_display *d, void *user), void *user, fx_display **out)
+{
+    if (out)
+        *out = NULL;
+    if (a->nextra >= FX_APP_MAX_DISPLAYS - 1) {
+        fx_display_log(a->disp, FX_LOG_ERROR, "at most %d displays in one app", FX_APP_MAX_DISPLAYS);
+        return -FX_ENOSPC;
+    }
+    fx_display *d;
+    int r = fx_display_open(&d, o);
+    if (r < 0)
+        return r;
+    a->extra[a->nextra].disp = d;
+    a->extra[a->nextra].draw = draw;
+    a->extra[a->nextra].user = user;
+    a->extra[a->nextra].redisplay = 1; /* its first frame */
+    a->nextra++;
+    if (out)
+        *out = d;
+    return 0;
+}
+
+void fx_app_post_redisplay_on(fx_app *a, fx_display *d)
+{
+    if (d == a->disp)
+        a->redisplay = 1;
+    for (int i = 0; i < a->nextra; i++)
+        if (a->extra[i].disp == d)
+            a->extra[i].redisplay = 1;
+}
+
+/* Draw one added display whose frame is due: 1 when one was drawn. */
+static int draw_extra(fx_app *a)
+{
+    for (int i = 0; i < a->nextra; i++)
+        if (a->extra[i].redisplay && a->extra[i].draw && !fx_display_flip_pending(a->extra[i].disp)) {
+            a->extra[i].redisplay = 0;
+            a->extra[i].draw(a, a->extra[i].disp, a->extra[i].user);
+            return 1;
+        }
+    return 0;
+}
+
+/* 1 when an added display wants a frame but has no fd to wake the loop. */
+static int extra_due_without_fd(const fx_app *a)
+{
+    for (int i = 0; i < a->nextra; i++)
+        if (a->extra[i].redisplay && a->extra[i].draw && fx_display_fd(a->extra[i].disp) < 0)
+            return 1;
+    return 0;
+}
 fx_surface fx_app_surface(fx_app *a) { return fx_display_surface(a->disp); }
 int fx_app_present(fx_app *a, const fx_rect *damage, int n) { return fx_display_present(a->disp, damage, n); }
 fx_display *fx_app_display(fx_app *a) { return a->disp; }
@@ -316,7 +371,7 @@ static void arm(fx_app *a, uint64_t at_us)
 
 int fx_app_main_loop(fx_app *a)
 {
-    enum { MAXFD = 4 + FX_EVDEV_MAX + FX_GPIO_MAX_IN };
+    enum { MAXFD = 4 + FX_APP_MAX_DISPLAYS + FX_EVDEV_MAX + FX_GPIO_MAX_IN };
     a->quit = 0;
     if (!a->started) {
         a->started = 1;
@@ -339,6 +394,8 @@ int fx_app_main_loop(fx_app *a)
                 return f;
             continue; /* timers or input may have become due meanwhile */
         }
+        if (draw_extra(a))
+            continue;
         if (a->replay) {
             /* The replay runs when no frame is due: "frame" lets the
              * program draw what the statements before it asked for. */
@@ -368,6 +425,9 @@ int fx_app_main_loop(fx_app *a)
             i_disp = n, p[n++] = (struct pollfd){dfd, POLLIN, 0};
         if (a->ev.inotify_fd >= 0)
             i_ino = n, p[n++] = (struct pollfd){a->ev.inotify_fd, POLLIN, 0};
+        int i_extra = n;
+        for (int k = 0; k < a->nextra; k++)
+            p[n++] = (struct pollfd){fx_display_fd(a->extra[k].disp), POLLIN, 0}; /* -1 is skipped */
         i_dev = n;
         for (int k = 0; k < a->ev.ndevs; k++)
             p[n++] = (struct pollfd){a->ev.devs[k]->fd, POLLIN, 0};
@@ -377,7 +437,8 @@ int fx_app_main_loop(fx_app *a)
         int ndev = a->ev.ndevs, ngpio = a->gpio.nin;
         /* Sleep unless the program wants idle calls, or a frame is due and no
          * flip event will wake us (no DRM fd). */
-        int timeout = a->cb.idle ? 0 : (a->redisplay && a->cb.display && dfd < 0) ? 1 : -1;
+        int timeout = a->cb.idle ? 0
+                      : ((a->redisplay && a->cb.display && dfd < 0) || extra_due_without_fd(a)) ? 1 : -1;
         int r = poll(p, (nfds_t)n, timeout);
         if (r < 0) {
             if (errno == EINTR)
@@ -407,6 +468,9 @@ int fx_app_main_loop(fx_app *a)
         }
         if (i_disp >= 0 && (p[i_disp].revents & POLLIN))
             fx_display_dispatch(a->disp);
+        for (int k = 0; k < a->nextra; k++)
+            if (p[i_extra + k].revents & POLLIN)
+                fx_display_dispatch(a->extra[k].disp);
         if (i_ino >= 0 && (p[i_ino].revents & POLLIN))
             fx_evdev_hotplug(&a->ev);
         /* Devices may be dropped while reading: walk from the end so the

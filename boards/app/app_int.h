@@ -31,6 +31,16 @@ struct fx_app {
 
     int redisplay, quit, started;
 
+    /* Displays added with fx_app_add_display: each drawn by its own
+     * callback when it asked for a frame and has no flip pending. */
+    struct {
+        fx_display *disp;
+        void (*draw)(fx_app *a, fx_display *d, void *user);
+        void *user;
+        int redisplay;
+    } extra[FX_APP_MAX_DISPLAYS - 1];
+    int nextra;
+
     /* software pointer policy (app.c) */
     fx_pointer_mode pointer_mode; /* resolved: never AUTO from the environment */
     int pointer_touch_hidden;     /* the last pointing was a touch */

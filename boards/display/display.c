@@ -89,6 +89,72 @@ static int parse_backend(const char *s, fx_backend *b)
 static int vt_release(void *user);
 static void vt_acquire(void *user);
 
+/* Several displays open at once share one console: the VT is put in
+ * graphics mode by the first and given back by the last to close (a second
+ * fx_vt_enter would save KD_GRAPHICS as the mode to restore and could not
+ * take the switch signals). A VT switch releases and retakes all of them. */
+#define MAX_DISPLAYS 8
+static struct {
+    fx_vt *vt;
+    fx_display *member[MAX_DISPLAYS];
+    int n;
+} console;
+
+static int console_release(void *user)
+{
+    (void)user;
+    /* One display that denies (kiosk) keeps them all: a switch that would
+     * release some and not others would show the console on half of them. */
+    for (int i = 0; i < console.n; i++)
+        if (console.member[i]->opt.vt_switch == FX_VT_SWITCH_DENY) {
+            for (int k = 0; k < console.n; k++)
+                console.member[k]->info.vt_refused++;
+            fx_display_log(console.member[i], FX_LOG_DEBUG, "VT switch refused (kiosk policy)");
+            return 0;
+        }
+    for (int i = 0; i < console.n; i++)
+        vt_release(console.member[i]);
+    return 1;
+}
+
+static void console_acquire(void *user)
+{
+    (void)user;
+    for (int i = 0; i < console.n; i++)
+        vt_acquire(console.member[i]);
+}
+
+static void console_join(fx_display *d)
+{
+    if (console.n >= MAX_DISPLAYS) {
+        fx_display_log(d, FX_LOG_ERROR, "more than %d displays: this one leaves the console alone",
+                       MAX_DISPLAYS);
+        return;
+    }
+    if (!console.n) {
+        fx_vt_hooks hooks = {console_release, console_acquire, NULL};
+        if (fx_vt_enter(&console.vt, &d->log, d->opt.vt_switch == FX_VT_SWITCH_DENY, &hooks) < 0)
+            console.vt = NULL; /* logged; a display without a VT (ssh, serial) still works */
+    }
+    console.member[console.n++] = d;
+    d->vt = console.vt;
+}
+
+static void console_leave(fx_display *d)
+{
+    int i = 0;
+    while (i < console.n && console.member[i] != d)
+        i++;
+    if (i == console.n)
+        return;
+    console.member[i] = console.member[--console.n];
+    if (!console.n && console.vt) {
+        fx_vt_leave(console.vt);
+        console.vt = NULL;
+    }
+    d->vt = NULL;
+}
+
 /* The signal path (async-signal-safe): the backend's restore, then the
  * console's. */
 static void emergency_restore(void *user)
@@ -298,12 +364,8 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
                    d->nbuf == 1 ? "" : "s", d->opt.rotation,
                    d->opt.rotation ? " " : "", d->opt.rotation ? d->rotation_why : "", why);
 
-    if (d->info.backend != FX_BACKEND_MEMORY && d->opt.console) {
-        fx_vt_hooks hooks = {vt_release, vt_acquire, d};
-        r = fx_vt_enter(&d->vt, &d->log, d->opt.vt_switch == FX_VT_SWITCH_DENY, &hooks);
-        if (r < 0)
-            d->vt = NULL; /* logged; a display without a VT (ssh, serial) still works */
-    }
+    if (d->info.backend != FX_BACKEND_MEMORY && d->opt.console)
+        console_join(d);
     if (d->opt.signals && d->info.backend != FX_BACKEND_MEMORY)
         fx_signals_register(emergency_restore, d);
     d->info.vt = fx_vt_number(d->vt);
@@ -336,8 +398,7 @@ void fx_display_close(fx_display *d)
         d->ops->set_power(d, 1);
     if (d->ops)
         d->ops->close(d);
-    if (d->vt)
-        fx_vt_leave(d->vt);
+    console_leave(d);
     if (d->epoll_fd >= 0)
         close(d->epoll_fd);
     free(d->shadow_mem);

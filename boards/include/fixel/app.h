@@ -142,6 +142,24 @@ int fx_app_main_loop(fx_app *a);
 void fx_app_quit(fx_app *a);
 
 fx_display *fx_app_display(fx_app *a);
+
+/* Several displays (docs/displays.md): the app's own display (opened from
+ * fx_app_options.display, the one input, the pointer and the callbacks of
+ * fx_app_set_callbacks belong to) is unchanged; each further output is
+ * opened here with its own options (connector, mode, rotation...) and drawn
+ * by its own callback, called from fx_app_main_loop once a frame was asked
+ * for with fx_app_post_redisplay_on and no flip of that display is pending
+ * (each display is paced by its own vblank). Inside it draw into
+ * fx_display_surface(d) and call fx_display_present(d, ...). The displays
+ * are closed by fx_app_close (before the app's own, which keeps the console
+ * until last). At most FX_APP_MAX_DISPLAYS in all. Returns 0 (with *out set
+ * when out is not NULL) or an error (logged); -FX_ENOSPC when full. */
+#define FX_APP_MAX_DISPLAYS 4
+int fx_app_add_display(fx_app *a, const fx_display_options *o,
+                       void (*draw)(fx_app *a, fx_display *d, void *user), void *user, fx_display **out);
+/* Ask for a draw callback of display d (added above, or the app's own:
+ * then the same as fx_app_post_redisplay). */
+void fx_app_post_redisplay_on(fx_app *a, fx_display *d);
 /* The logical screen size (after rotation). */
 void fx_app_size(const fx_app *a, int32_t *w, int32_t *h);
 /* Drive a GPIO output line (LED, backlight): requested on first use. */

@@ -27,6 +27,13 @@
  * or -1; when it is readable call fx_display_dispatch(). fx_display_surface()
  * waits for a pending flip itself (bounded), so a loop without poll works too.
  *
+ * Several displays: open one fx_display per output (its own options:
+ * connector, mode, rotation...); each keeps its own surface, size,
+ * rotation, presentation, damage, flip pacing and hotplug. Displays on one
+ * DRM card share its open file (one DRM master) and never get the same
+ * CRTC; the console is taken by the first opened and given back by the
+ * last closed; a signal restores all of them. docs/displays.md.
+ *
  * Errors are negative fixel error codes (errno values, see fixel/error.h).
  * Diagnostics go through the log function in the options; the default writes
  * lines prefixed "fixel: " to stderr at FX_LOG_INFO and above; log_priority

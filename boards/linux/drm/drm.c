@@ -70,6 +70,81 @@ static int neg_errno(void)
     return errno ? -errno : -FX_EIO;
 }
 
+/* ---- cards shared by several displays ------------------------------------ */
+
+/* Two displays on one card (two heads of a virtio-gpu, HDMI-A-1 and
+ * HDMI-A-2 of a vc4) must share one open file: DRM master belongs to an
+ * open file, so a second open() of the card could not become master while
+ * the first holds it. Each display gets a dup() of the card's file (one
+ * master for both) and takes a CRTC no other display of ours drives. */
+#define MAX_CARDS 8
+static struct shared_card {
+    char path[64];
+    int fd;              /* the registry's own dup, closed with the last user */
+    int users;
+    uint32_t crtcs[8];   /* CRTC ids in use by our displays on this card */
+} cards_open[MAX_CARDS];
+
+static struct shared_card *card_find(const char *path)
+{
+    for (int i = 0; i < MAX_CARDS; i++)
+        if (cards_open[i].users && !strcmp(cards_open[i].path, path))
+            return &cards_open[i];
+    return NULL;
+}
+
+static int crtc_taken(const char *path, uint32_t id)
+{
+    struct shared_card *c = card_find(path);
+    for (int i = 0; c && i < 8; i++)
+        if (c->crtcs[i] == id)
+            return 1;
+    return 0;
+}
+
+/* Count a display in (fd: its own file, already open; crtc 0 before one
+ * is chosen). */
+static void card_hold(const char *path, int fd)
+{
+    struct shared_card *c = card_find(path);
+    if (!c)
+        for (int i = 0; i < MAX_CARDS && !c; i++)
+            if (!cards_open[i].users) {
+                c = &cards_open[i];
+                memset(c, 0, sizeof *c);
+                snprintf(c->path, sizeof c->path, "%s", path);
+                c->fd = fcntl(fd, F_DUPFD_CLOEXEC, 0);
+            }
+    if (c)
+        c->users++;
+}
+
+static void card_crtc(const char *path, uint32_t old, uint32_t id)
+{
+    struct shared_card *c = card_find(path);
+    for (int i = 0; c && i < 8; i++)
+        if (c->crtcs[i] == old) {
+            c->crtcs[i] = id;
+            return;
+        }
+}
+
+/* 1 when this was the last display on the card (master is to be dropped). */
+static int card_release(const char *path, uint32_t crtc)
+{
+    struct shared_card *c = card_find(path);
+    if (!c)
+        return 1;
+    if (crtc)
+        card_crtc(path, crtc, 0);
+    if (--c->users)
+        return 0;
+    if (c->fd >= 0)
+        close(c->fd);
+    c->fd = -1;
+    return 1;
+}
+
 /* ---- choosing card, connector, mode, CRTC ------------------------------- */
 
 static int pick_mode(fx_display *d, drmModeConnectorPtr c, drmModeModeInfo *out)
@@ -100,7 +175,8 @@ static int pick_mode(fx_display *d, drmModeConnectorPtr c, drmModeModeInfo *out)
     return 0;
 }
 
-static uint32_t pick_crtc(int fd, drmModeResPtr res, drmModeConnectorPtr c, int *index)
+static uint32_t pick_crtc(const char *card, int fd, drmModeResPtr res, drmModeConnectorPtr c,
+                          int *index)
 {
     /* Keep the CRTC already driving this connector: no needless re-route. */
     if (c->encoder_id) {
@@ -108,7 +184,7 @@ static uint32_t pick_crtc(int fd, drmModeResPtr res, drmModeConnectorPtr c, int 
         if (e) {
             uint32_t id = e->crtc_id;
             drmModeFreeEncoder(e);
-            for (int i = 0; id && i < res->count_crtcs; i++)
+            for (int i = 0; id && !crtc_taken(card, id) && i < res->count_crtcs; i++)
                 if (res->crtcs[i] == id) {
                     *index = i;
                     return id;
@@ -122,7 +198,7 @@ static uint32_t pick_crtc(int fd, drmModeResPtr res, drmModeConnectorPtr c, int 
         uint32_t possible = e->possible_crtcs;
         drmModeFreeEncoder(e);
         for (int i = 0; i < res->count_crtcs; i++)
-            if (possible & (1u << i)) {
+            if ((possible & (1u << i)) && !crtc_taken(card, res->crtcs[i])) {
                 *index = i;
                 return res->crtcs[i];
             }
@@ -481,7 +557,8 @@ static void drm_close(fx_display *d)
     if (p->uevent_fd >= 0)
         close(p->uevent_fd);
     if (p->fd >= 0) {
-        drmDropMaster(p->fd);
+        if (card_release(d->device, p->crtc_id))
+            drmDropMaster(p->fd);
         close(p->fd);
     }
     free(p);
@@ -503,14 +580,17 @@ static void drm_emergency_restore(fx_display *d)
 static int drm_suspend(fx_display *d)
 {
     struct drm_priv *p = d->priv;
-    /* Without master the console (or the next program) can set its mode. */
+    /* Without master the console (or the next program) can set its mode.
+     * Another of our displays on this card may have dropped it already. */
+    if (!drmIsMaster(p->fd))
+        return 0;
     return drmDropMaster(p->fd) < 0 ? neg_errno() : 0;
 }
 
 static int drm_resume(fx_display *d)
 {
     struct drm_priv *p = d->priv;
-    if (drmSetMaster(p->fd) < 0) {
+    if (!drmIsMaster(p->fd) && drmSetMaster(p->fd) < 0) {
         fx_log(&d->log, FX_LOG_ERROR, "%s: cannot retake DRM master: %s", d->device, strerror(errno));
         return neg_errno();
     }
@@ -735,9 +815,11 @@ static int find_card(fx_display *d, int *fd_out, uint32_t *conn_id)
     }
     snprintf(d->device, sizeof d->device, "%s", cards[ci].path);
     snprintf(d->connector, sizeof d->connector, "%s", cards[ci].conn[ki].name);
-    int fd = open_card(d, cards[ci].path, 0);
+    struct shared_card *sc = card_find(cards[ci].path);
+    int fd = sc && sc->fd >= 0 ? fcntl(sc->fd, F_DUPFD_CLOEXEC, 0) : open_card(d, cards[ci].path, 0);
     if (fd < 0)
-        return fd;
+        return sc ? neg_errno() : fd;
+    card_hold(cards[ci].path, fd);
     if (want || cwant)
         fx_log(&d->log, FX_LOG_DEBUG, "%s%s%s%s chose %s (%s, %s) connector %s", want ? "card " : "",
                want ? want : "", want && cwant ? ", " : "", cwant ? cwant : "", cards[ci].path,
@@ -758,6 +840,7 @@ int fx_drm_open(fx_display *d)
 
     struct drm_priv *p = calloc(1, sizeof *p);
     if (!p) {
+        card_release(d->device, 0);
         close(fd);
         return -FX_ENOMEM;
     }
@@ -804,10 +887,14 @@ int fx_drm_open(fx_display *d)
     find_dpms(d, p);
     r = pick_mode(d, c, &p->mode);
     if (r == 0) {
-        p->crtc_id = pick_crtc(fd, res, c, &ci);
+        p->crtc_id = pick_crtc(d->device, fd, res, c, &ci);
         if (!p->crtc_id) {
-            fx_log(&d->log, FX_LOG_ERROR, "%s: no CRTC can drive %s", d->device, d->connector);
+            fx_log(&d->log, FX_LOG_ERROR, "%s: no CRTC can drive %s%s", d->device, d->connector,
+                   card_find(d->device) && card_find(d->device)->users > 1
+                       ? " (the free ones drive our other displays)" : "");
             r = -FX_ENODEV;
+        } else {
+            card_crtc(d->device, 0, p->crtc_id);
         }
     }
     drmModeFreeConnector(c);

@@ -497,20 +497,8 @@ int main(void)
 {
     setvbuf(stdout, NULL, _IOLBF, 0);
     char detail[300], drv[32];
-    int lr = guest_load_modules("/modules.cards", detail, sizeof detail) < 0 || strstr(detail, "(failed)") ? -1 : 0;
-    int ok = 0;
-    for (int t = 0; t < 50 && !ok; t++) {
-        DIR *dir = opendir("/sys/class/drm");
-        struct dirent *e;
-        while (dir && (e = readdir(dir)))
-            if (!strncmp(e->d_name, "card0-", 6) || !strncmp(e->d_name, "card1-", 6))
-                snprintf(e->d_name[4] == '0' ? conn0 : conn1, sizeof conn0, "%s", e->d_name + 6);
-        if (dir)
-            closedir(dir);
-        ok = access("/dev/dri/card1", F_OK) == 0 && conn0[0] && conn1[0];
-        if (!ok)
-            msleep(100);
-    }
+    int lr = 0;
+    int ok = guest_second_card(conn0, conn1, detail, sizeof detail, &lr);
     guest_drm_driver("/dev/dri/card1", drv, sizeof drv);
     /* one pool of numbers per connector type, across cards */
     guest_check("outputs-second-card", lr == 0 && ok && !strcmp(drv, CARD1_DRIVER) && !strcmp(conn1, "Virtual-2"),
@@ -551,16 +539,6 @@ int main(void)
     calibrate_checks();
     wait_checks();
 
-    char cmd[64];
-    snprintf(cmd, sizeof cmd, "rmmod %s 2>&1", CARD1_MODULE);
-    int rm = system(cmd);
-    int gone = 0;
-    for (int t = 0; t < 30 && !gone; t++) {
-        gone = access("/dev/dri/card1", F_OK) != 0;
-        if (!gone)
-            msleep(100);
-    }
-    guest_check("outputs-second-card-removed", rm == 0 && gone, "rmmod %s: %d, card1 %s", CARD1_MODULE, rm,
-                gone ? "gone" : "still there");
+    guest_remove_second_card("outputs-second-card-removed", CARD1_MODULE);
     return guest_failed;
 }
