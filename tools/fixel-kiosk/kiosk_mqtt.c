@@ -12,6 +12,7 @@
 #ifdef KIOSK_HAVE_MQTT
 #include <math.h>
 #include <pthread.h>
+#include <stdatomic.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -26,7 +27,7 @@ struct kmq {
     int started;
     pthread_mutex_t lock;
     pthread_cond_t room;       /* the main loop took messages out */
-    volatile int stop;
+    atomic_int stop; /* read by the client thread outside the lock */
     kmq_state st;
     int sock_up;               /* mosquitto has a socket (maybe not yet CONNACKed) */
     int backoff;               /* seconds before the next attempt */
@@ -278,7 +279,19 @@ void kmq_stop(kmq *m)
     pthread_cond_broadcast(&m->room);
     pthread_mutex_unlock(&m->lock);
     mosquitto_disconnect(m->mosq);
-    if (m->started) pthread_join(m->thread, NULL);
+    if (m->started) {
+        /* The thread may sit in a blocking connect to a broker that does not
+         * answer (minutes of SYN retries): a stopping kiosk waits 2 s, then
+         * leaves it to the process exit rather than hang until systemd's
+         * SIGKILL. Its state stays allocated, since it may still use it. */
+        struct timespec until;
+        clock_gettime(CLOCK_REALTIME, &until);
+        until.tv_sec += 2;
+        if (pthread_timedjoin_np(m->thread, NULL, &until) != 0) {
+            pthread_detach(m->thread);
+            return;
+        }
+    }
     mosquitto_destroy(m->mosq);
     pthread_cond_destroy(&m->room);
     pthread_mutex_destroy(&m->lock);

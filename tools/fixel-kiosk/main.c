@@ -1374,8 +1374,13 @@ int main(int argc, char **argv)
         fx_app_post_redisplay(k->app);
         fx_app_timer(k->app, 100, on_tick, 0);
         rc = fx_app_main_loop(k->app) < 0;
-        kmq_stop(k->mq);
+        /* screen and console first: stopping the MQTT client can take a
+         * moment (a connect in progress), and a kill meanwhile must not
+         * leave the screen dark or the console in graphics mode */
         kiosk_screen_close(&k->screen_hw);
+        fx_app_close(k->app);
+        k->app = NULL;
+        kmq_stop(k->mq);
     }
     fx_app_close(k->app);
     free_images(k);
