@@ -58,6 +58,13 @@ typedef struct tri_mode {
     uint8_t solid;       /* solid texture from A_OBJ.. */
     int32_t zbias;
     fx_color flat[2]; /* lit, shadowed */
+    /* The texture and solid texture as they were when the triangle was
+     * emitted: the painter draws at flush time, after a script may have
+     * switched them (or the texture off). */
+    const fx_texture *tx;
+    uint8_t tex_mode;
+    int8_t solid_kind;
+    fx_color solid_c[2];
 } tri_mode;
 
 typedef struct pctx { /* per-draw state */
@@ -587,17 +594,17 @@ static fx_color modulate(fx_color col, fx_color tc)
 }
 
 /* The texel at the pixel whose planes hold val, combined with the lit
- * colour col as r->tex_mode says. */
-static fx_color tex_apply(const fx3d *r, const int64_t *val, const int32_t st0[2], fx_color col)
+ * colour col as m->tex_mode says. */
+static fx_color tex_apply(const tri_mode *m, const int64_t *val, const int32_t st0[2], fx_color col)
 {
     int64_t q = val[1 + A_TEX];
     q = q < 1 ? 1 : q;
     int64_t s = st0[0] + fx_mul64_shift(val[1 + A_TEX + 1], ((int64_t)1 << 62) / q, 46);
     int64_t t = st0[1] + fx_mul64_shift(val[1 + A_TEX + 2], ((int64_t)1 << 62) / q, 46);
-    fx_color tc = fx_tex_sample(r->tex, fx_sat32(s), fx_sat32(t));
-    if (r->tex_mode == FX3D_TEX_REPLACE)
+    fx_color tc = fx_tex_sample(m->tx, fx_sat32(s), fx_sat32(t));
+    if (m->tex_mode == FX3D_TEX_REPLACE)
         return tc | 0xFF000000u;
-    if (r->tex_mode != FX3D_TEX_DECAL)
+    if (m->tex_mode != FX3D_TEX_DECAL)
         return modulate(col, tc);
     uint32_t out = 0xFF000000u;
     uint32_t ta = tc >> 24;
@@ -717,12 +724,12 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
                                                     m->vcol ? &vc : NULL));
                 }
                 if (m->tex)
-                    col = tex_apply(pc->r, val, st0, col);
+                    col = tex_apply(m, val, st0, col);
                 if (m->solid) {
                     fx_vec3 q = fx_vec3_make((fx16)(val[1 + A_OBJ] >> 16), (fx16)(val[2 + A_OBJ] >> 16),
                                              (fx16)(val[3 + A_OBJ] >> 16));
-                    fx16 w = fx_rt_solid(pc->r->solid, q);
-                    col = modulate(col, fx_color_lerp(pc->r->solid_c0, pc->r->solid_c1, w));
+                    fx16 w = fx_rt_solid(m->solid_kind, q);
+                    col = modulate(col, fx_color_lerp(m->solid_c[0], m->solid_c[1], w));
                 }
                 put_px(s, row, (int32_t)x, y, fx_pack(s->format, col));
             }
@@ -1084,6 +1091,8 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
         if (r->tex && (m->uv || r->tex_sphere_map) && r->tex->img.pixels && r->tex->img.w > 0 && r->tex->img.h > 0) {
             tm.tex = 1;
             tm.na = 12;
+            tm.tx = r->tex;
+            tm.tex_mode = (uint8_t)r->tex_mode;
         }
         if (m->col && tm.kind == K_PHONG) {
             tm.vcol = 1;
@@ -1092,6 +1101,9 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
         if (r->solid > 0 && r->solid < 4) {
             tm.solid = 1;
             tm.na = NA;
+            tm.solid_kind = (int8_t)r->solid;
+            tm.solid_c[0] = r->solid_c0;
+            tm.solid_c[1] = r->solid_c1;
         }
     } else {
         tm.kind = K_FLAT;
