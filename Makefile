@@ -310,8 +310,8 @@ cross-deps-check:
 	 echo "  finds$(if $(HAVE_PNG),, no libpng/zlib)$(if $(HAVE_OPT),, no libdrm/libevdev/libgpiod) for $(CROSS_DEB_ARCH)"; exit 1
 ifneq ($(CROSS_DEB_ARCH),)
 ifneq ($(HAVE_PNG)$(HAVE_OPT),11)
-# (workloads.o is core-only benchmark code the unit tests link: not guarded)
-$(filter-out %/workloads.o,$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/*/*.c))) $(TOOL_BINS): | cross-deps-check
+# (workloads.o and rtref.o are core-only benchmark code the unit tests link: not guarded)
+$(filter-out %/workloads.o %/rtref.o,$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/*/*.c))) $(TOOL_BINS): | cross-deps-check
 # A goal that builds the tools (make BOARD=..., the default) stops before
 # compiling anything, the library's objects included.
 ifneq ($(if $(MAKECMDGOALS),$(filter all tools run-nodeps install-build,$(MAKECMDGOALS)),all),)

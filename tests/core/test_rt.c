@@ -28,21 +28,34 @@ static double urand(uint32_t *s, double lo, double hi) { return lo + (hi - lo) *
 
 /* A random placement: rotation about a random axis, scales in [lo, hi]
  * per axis, translation within +-tr. */
+/* x, then y, then z: the order of a call's arguments is unspecified (gcc
+ * takes them the other way round on ARM), and the random scenes must be the
+ * same on every architecture. */
+static fx_vec3 urand3(uint32_t *s, double xlo, double xhi, double ylo, double yhi, double zlo, double zhi)
+{
+    fx16 x = FX(urand(s, xlo, xhi));
+    fx16 y = FX(urand(s, ylo, yhi));
+    fx16 z = FX(urand(s, zlo, zhi));
+    return fx_vec3_make(x, y, z);
+}
+
 static void random_matrix(uint32_t *s, double lo, double hi, double tr, fx_mat4 *m)
 {
     fx_mat4 a, b, t;
-    fx_mat4_translate(&a, FX(urand(s, -tr, tr)), FX(urand(s, -tr, tr)), FX(urand(s, -tr, tr)));
-    fx_mat4_rotate(&b, fx_angle_from_deg(lround(urand(s, 0, 360))),
-                   fx_vec3_make(FX(urand(s, -1, 1)), FX(urand(s, -1, 1)), FX(urand(s, 0.1, 1))));
+    fx_vec3 tv = urand3(s, -tr, tr, -tr, tr, -tr, tr);
+    fx_mat4_translate(&a, tv.x, tv.y, tv.z);
+    fx_angle ang = fx_angle_from_deg(lround(urand(s, 0, 360)));
+    fx_mat4_rotate(&b, ang, urand3(s, -1, 1, -1, 1, 0.1, 1));
     fx_mat4_mul(&t, &a, &b);
-    fx_mat4_scale(&a, FX(urand(s, lo, hi)), FX(urand(s, lo, hi)), FX(urand(s, lo, hi)));
+    fx_vec3 sv = urand3(s, lo, hi, lo, hi, lo, hi);
+    fx_mat4_scale(&a, sv.x, sv.y, sv.z);
     fx_mat4_mul(m, &t, &a);
 }
 
 static void random_ray(uint32_t *s, double range, fx_vec3 *S, fx_vec3 *c)
 {
-    *S = fx_vec3_make(FX(urand(s, -range, range)), FX(urand(s, -range, range)), FX(urand(s, -range, range)));
-    *c = fx_vec3_make(FX(urand(s, -1, 1)), FX(urand(s, -1, 1)), FX(urand(s, -1, 1)));
+    *S = urand3(s, -range, range, -range, range, -range, range);
+    *c = urand3(s, -1, 1, -1, 1, -1, 1);
     if (fx_vec3_normalize(c) < 0)
         *c = fx_vec3_make(FX16_ONE, 0, 0);
 }
@@ -80,8 +93,37 @@ static int cmp_d(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+/* How far world point P is from the surface of a (tapered) cylinder placed
+ * by m, measured in object space (m inverted in double, independently of the
+ * library's fixed-point inverse). */
+static double cylinder_residual(const fx_mat4 *m, fx16 taper, const double P[3])
+{
+    double a[3][3], inv[3][3], q[3], o[3];
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++)
+            a[i][j] = m->m[i][j] * Q;
+        q[i] = P[i] - m->m[i][3] * Q;
+    }
+    double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                 a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
+            inv[i][j] = (a[i1][j1] * a[i2][j2] - a[i1][j2] * a[i2][j1]) / det;
+        }
+    for (int i = 0; i < 3; i++)
+        o[i] = inv[i][0] * q[0] + inv[i][1] * q[1] + inv[i][2] * q[2];
+    double s = taper * Q, rho = hypot(o[0], o[1]), z = o[2];
+    double zc = z < 0 ? 0 : z > 1 ? 1 : z, rad = 1 + (s - 1) * zc;
+    double wall = fabs(rho - rad) + fabs(z - zc);                         /* on the side */
+    double cap0 = fabs(z) + (rho > 1 ? rho - 1 : 0), cap1 = fabs(z - 1) + (rho > s ? rho - s : 0); /* on a cap */
+    return fmin(wall, fmin(cap0, cap1));
+}
+static int n_illcond;
+
 static double shape_error(fx_rt_kind kind, fx16 taper, int n, double *worst_rel)
 {
+    n_illcond = 0;
     nerr = 0;
     uint32_t seed = 1234 + (uint32_t)kind * 77 + (uint32_t)taper;
     double worst = 0;
@@ -99,8 +141,8 @@ static double shape_error(fx_rt_kind kind, fx16 taper, int n, double *worst_rel)
         random_ray(&seed, 40, &S, &c);
         /* aim at the object half the time so most rays hit */
         if (i & 1) {
-            fx_vec3 target = fx_vec3_make(m.m[0][3] + FX(urand(&seed, -1, 1)), m.m[1][3] + FX(urand(&seed, -1, 1)),
-                                          m.m[2][3] + FX(urand(&seed, -1, 1)));
+            fx_vec3 o = urand3(&seed, -1, 1, -1, 1, -1, 1);
+            fx_vec3 target = fx_vec3_make(m.m[0][3] + o.x, m.m[1][3] + o.y, m.m[2][3] + o.z);
             c = fx_vec3_make(target.x - S.x, target.y - S.y, target.z - S.z);
             if (fx_vec3_normalize(&c) < 0)
                 continue;
@@ -124,6 +166,19 @@ static double shape_error(fx_rt_kind kind, fx16 taper, int n, double *worst_rel)
             if (fabs(r.h[k].t) > 2 * FX_RT_WORLD * 2)
                 continue; /* beyond the world: such t saturate and are never used */
             double e = fabs(l.h[k].t * Q - r.h[k].t);
+            if (kind == FX_RT_CYLINDER && e / fmax(1, fabs(r.h[k].t)) > 1.0 / 4096) {
+                /* A ray leaving near a rim, almost along the wall: t is
+                 * ill-conditioned there (a tiny step across the rim moves the
+                 * exit far along the ray). Such a hit must still lie on the
+                 * surface (backward error) and be rare; it is counted apart. */
+                double P[3] = {Sd[0] + l.h[k].t * Q * cd[0], Sd[1] + l.h[k].t * Q * cd[1], Sd[2] + l.h[k].t * Q * cd[2]};
+                double res = cylinder_residual(&m, taper, P);
+                /* the patch tests' slack (RIM, 2^-10 in object space) plus as
+                 * much again for the rounding of the point */
+                FX_CHECK_MSG(res < 2.0 / 1024, "kind %d: hit at t %f is %g off the surface", kind, l.h[k].t * Q, res);
+                n_illcond++;
+                continue;
+            }
             if (nerr < (int)(sizeof errs / sizeof errs[0]))
                 errs[nerr++] = e / fmax(1, fabs(r.h[k].t));
             if (e > worst)
@@ -152,8 +207,9 @@ FX_TEST(rt_shapes_match_double_on_random_rays)
         double rel, e = shape_error(shapes[i].k, shapes[i].taper, 20000, &rel);
         qsort(errs, (size_t)nerr, sizeof errs[0], cmp_d);
         printf("    %-17s worst |t - t_double| = %.3g; relative to max(1, |t|): worst %.3g, 99.9%% %.3g, median %.3g "
-               "(%d hits)\n",
-               shapes[i].name, e, rel, nerr ? errs[nerr * 999 / 1000] : 0, nerr ? errs[nerr / 2] : 0, nerr);
+               "(%d hits; %d ill-conditioned rim exits on the surface)\n",
+               shapes[i].name, e, rel, nerr ? errs[nerr * 999 / 1000] : 0, nerr ? errs[nerr / 2] : 0, nerr, n_illcond);
+        FX_CHECK_MSG(n_illcond * 1000 <= nerr, "%s: %d ill-conditioned hits of %d", shapes[i].name, n_illcond, nerr);
         FX_CHECK_MSG(rel <= shapes[i].bound, "%s: relative t error %g above %g", shapes[i].name, rel,
                      shapes[i].bound);
     }
@@ -175,7 +231,7 @@ FX_TEST(rt_csg_hit_lists_follow_the_solids_definition)
         for (int i = 0; i < 4000; i++) {
             fx_vec3 S, c;
             random_ray(&seed, 4, &S, &c);
-            fx_vec3 target = fx_vec3_make(FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)));
+            fx_vec3 target = urand3(&seed, -1, 1, -1, 1, -1, 1);
             c = fx_vec3_make(target.x - S.x, target.y - S.y, target.z - S.z);
             if (fx_vec3_normalize(&c) < 0)
                 continue;
@@ -309,7 +365,7 @@ FX_TEST(rt_grazing_rays_and_self_intersection)
      * must not see the surface it starts on (t > FX_RT_EPS) */
     uint32_t seed = 3;
     for (int i = 0; i < 20000; i++) {
-        fx_vec3 d = fx_vec3_make(FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)));
+        fx_vec3 d = urand3(&seed, -1, 1, -1, 1, -1, 1);
         if (fx_vec3_normalize(&d) < 0)
             continue;
         fx_rt_hit h;
@@ -624,7 +680,7 @@ FX_TEST(rt_mesh_bvh_finds_the_nearest_triangle)
     for (int i = 0; i < 3000; i++) {
         fx_vec3 S, c;
         random_ray(&seed, 8, &S, &c);
-        fx_vec3 target = fx_vec3_make(FX(urand(&seed, -2, 2)), FX(urand(&seed, 0, 3)), FX(urand(&seed, -2, 2)));
+        fx_vec3 target = urand3(&seed, -2, 2, 0, 3, -2, 2);
         c = fx_vec3_make(target.x - S.x, target.y - S.y, target.z - S.z);
         if (fx_vec3_normalize(&c) < 0)
             continue;
@@ -666,14 +722,14 @@ FX_TEST(rt_mesh_is_watertight)
     uint32_t seed = 8;
     int missed = 0;
     for (int i = 0; i < 20000; i++) {
-        fx_vec3 S = fx_vec3_make(FX(urand(&seed, -0.5, 0.5)), FX(urand(&seed, -0.5, 0.5)), FX(urand(&seed, -0.5, 0.5)));
+        fx_vec3 S = urand3(&seed, -0.5, 0.5, -0.5, 0.5, -0.5, 0.5);
         fx_vec3 c;
         if (i < 2000) { /* straight at the vertices, where many triangles meet */
             fx_vec3 v = t.m.pos[fx_test_rand(&seed) % (uint32_t)t.m.nverts];
             S = fx_vec3_make(0, 0, 0);
             c = v;
         } else {
-            c = fx_vec3_make(FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)), FX(urand(&seed, -1, 1)));
+            c = urand3(&seed, -1, 1, -1, 1, -1, 1);
         }
         if (fx_vec3_normalize(&c) < 0)
             continue;
