@@ -460,10 +460,18 @@ FX_TEST(vsd_methods_match_the_zbuffer_on_meshes)
                  * teapot without culling Newell meets cycles its search
                  * for a plane to cut by does not break (stats.unresolved)
                  * and draws 9 pixels of a folded-over face wrong. */
-                if (ms[i] == FX_VSD_NEWELL && kinds[k] == FX_MESH_TEAPOT && !cull)
-                    continue;
                 int32_t *ids = run(&t->s, ms[i], &st);
                 int32_t ties, d = diff_not_tie(&t->s, ref, ids, &ties);
+                if (ms[i] == FX_VSD_NEWELL && kinds[k] == FX_MESH_TEAPOT && !cull && st.unresolved > 0) {
+                    /* the defect as it stands: no more wrong pixels than
+                     * measured, and only while cycles stay unresolved (a
+                     * fix makes this case exact like the others) */
+                    printf("    known defect: Newell on the unculled teapot, %d unresolved cycles, %d pixels wrong\n",
+                           (int)st.unresolved, (int)d);
+                    FX_CHECK_MSG(d <= 9, "Newell on the unculled teapot: %d pixels wrong (was 9)", (int)d);
+                    free(ids);
+                    continue;
+                }
                 int exact = ms[i] != FX_VSD_NEWELL && ms[i] != FX_VSD_BSP;
                 FX_CHECK_MSG(d == 0 && (!exact || ties == 0),
                              "%s differs from the z-buffer in %d pixels, %d more at exact ties "
