@@ -16,7 +16,9 @@
 /* Signal handlers can only find state through globals; this table is the
  * one piece of mutable global state of the boards side (with vt.c's switch
  * pipe). fn is written last on register and cleared first on unregister. */
-#define MAX_RESTORES 8
+/* one per open display (display.c opens at most 8), with room to spare: a
+ * registration past the end would leave that display without crash restore */
+#define MAX_RESTORES 16
 static void (*volatile restore_fn[MAX_RESTORES])(void *user);
 static void *volatile restore_user[MAX_RESTORES];
 static volatile sig_atomic_t restoring;
