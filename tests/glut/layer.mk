@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 # The GLUT layer's suite (issue #21): unit tests of tests/glut/test_*.c run
-# through tests/lib/runner.c, and headless course-style programs (tests/glut/layer.sh).
+# through tests/lib/runner.c, and headless course-style programs (tests/glut/progs.sh).
 GLUT_TEST_SRC := $(sort $(wildcard tests/glut/test_*.c))
 GLUT_TEST_BIN := $(BUILD)/tests/glut-unit
 $(GLUT_TEST_SRC:%.c=$(BUILD)/obj/%.o): BASEFLAGS += -Iboards/glut/include
@@ -18,6 +18,6 @@ $(GLUT_TEST_BIN): $(GLUT_TEST_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/lib/r
 
 .PHONY: test-glut
 test-glut: $(GLUT_TEST_BIN) $(GLUT_A) $(LIB_A)
-	@sh tests/run-suites.sh "$(GLUT_TEST_BIN)" "sh tests/glut/layer.sh $(BUILD)"
-TEST_SUITES += "$(GLUT_TEST_BIN)" "sh tests/glut/layer.sh $(BUILD)"
+	@sh tests/run-suites.sh "$(GLUT_TEST_BIN)" "sh tests/glut/progs.sh $(BUILD)"
+TEST_SUITES += "$(GLUT_TEST_BIN)" "sh tests/glut/progs.sh $(BUILD)"
 test-bins: $(GLUT_TEST_BIN)
