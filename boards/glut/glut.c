@@ -191,6 +191,15 @@ static void app_idle(void *u);
 static void app_close(void *u);
 static void install_app_callbacks(void);
 
+static void close_at_exit(void)
+{
+    if (G.app) {
+        fx_app *a = G.app;
+        G.app = NULL;
+        fx_app_close(a);
+    }
+}
+
 int glutCreateWindow(const char *title)
 {
     if (!G.inited)
@@ -225,6 +234,11 @@ int glutCreateWindow(const char *title)
                 G.headless = 1;
             } else {
                 fx_app_size(G.app, &G.scr_w, &G.scr_h);
+                /* Course programs end with exit() in a callback: the display
+                 * must still give the console back (text mode, the CRTC). */
+                static int registered;
+                if (!registered && atexit(close_at_exit) == 0)
+                    registered = 1;
             }
         }
     }

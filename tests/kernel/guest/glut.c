@@ -19,7 +19,10 @@
 #define _GNU_SOURCE
 #endif
 #include <GL/glut.h>
+#include <fcntl.h>
+#include <linux/kd.h>
 #include <poll.h>
+#include <sys/ioctl.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -664,6 +667,14 @@ int main(void)
     key(KEY_Q, 0);
     int st = finish(drm_pid, 20000);
     guest_check("glut-quit-key", st == 0, "exit status %d after 'q'", st);
+    /* exit() from a callback still gives the console back */
+    int kd = -1, tty = open("/dev/tty1", O_RDWR | O_NOCTTY);
+    if (tty >= 0) {
+        ioctl(tty, KDGETMODE, &kd);
+        close(tty);
+    }
+    guest_check("glut-quit-console", kd == KD_TEXT, "KDGETMODE %d after the program's exit(0), want text (%d)", kd,
+                KD_TEXT);
 
     menu_cases();
     placement_cases();
