@@ -48,8 +48,11 @@ for spec in "rpi4 aarch64-linux-gnu- aarch64-linux-gnu qemu-aarch64-static -ffre
         # with the same golden PNGs.
         echo "   (no libpng for $triplet: rendering PPMs on the target, comparing on the host)"
         rm -rf "build/$board/golden-ppm"
-        run_suite "$board golden render" $qemu build/$board/static/tests/golden --dir tests/golden --render-ppm build/$board/golden-ppm
         [ -x build/tests/golden ] || make --no-print-directory -j2 test-bins > /dev/null 2>&1
+        # the scripts' texture images, as PPM copies the target can read
+        build/tests/golden --dir tests/golden --export-textures "build/$board/golden-ppm/textures"
+        run_suite "$board golden render" $qemu build/$board/static/tests/golden --dir tests/golden --render-ppm build/$board/golden-ppm \
+            --textures-ppm "build/$board/golden-ppm/textures"
         run_suite "$board golden" build/tests/golden --dir tests/golden --out build/$board/golden --compare-ppm build/$board/golden-ppm
     fi
     # The GLUT layer's course programs: the same frames as on x86-64.

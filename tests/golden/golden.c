@@ -68,6 +68,10 @@ static int load_file(void *u, const char *path, const uint8_t **data, size_t *le
     return 0;
 }
 
+/* A target built without libpng (a cross run) reads the texture images as
+ * PPM copies the host wrote with --export-textures into this directory. */
+static const char *textures_ppm;
+
 /* 'texture image PATH': a PNG as an opaque ARGB8888 surface. */
 static int load_image(void *u, const char *path, fx_surface *out)
 {
@@ -77,6 +81,13 @@ static int load_image(void *u, const char *path, fx_surface *out)
     uint8_t *rgb;
     int32_t w, h;
     int r = fx_read_png_rgb(path, &rgb, &w, &h);
+    if (r < 0 && textures_ppm) {
+        const char *base = strrchr(path, '/');
+        char alt[1024];
+        snprintf(alt, sizeof alt, "%s/%.*s.ppm", textures_ppm, (int)strcspn(base ? base + 1 : path, "."),
+                 base ? base + 1 : path);
+        r = fx_read_ppm_rgb(alt, &rgb, &w, &h);
+    }
     if (r < 0)
         return r;
     uint32_t *px = malloc((size_t)w * (size_t)h * 4);
@@ -89,6 +100,53 @@ static int load_image(void *u, const char *path, fx_surface *out)
     free(rgb);
     H->files[H->nfiles++] = (char *)px;
     return fx_surface_init(out, px, w, h, w * 4, FX_FMT_ARGB8888);
+}
+
+static void mkdirs(const char *dir);
+
+/* The host's side of textures_ppm: every DIR/textures/NAME.png as OUT/NAME.ppm. */
+static int export_textures(const char *dir, const char *out)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/textures", dir);
+    DIR *d = opendir(path);
+    if (!d) {
+        fprintf(stderr, "golden: cannot open %s: %s\n", path, strerror(errno));
+        return 1;
+    }
+    mkdirs(out);
+    int bad = 0;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        size_t l = strlen(e->d_name);
+        if (l < 5 || strcmp(e->d_name + l - 4, ".png"))
+            continue;
+        char src[2048], dst[2048];
+        snprintf(src, sizeof src, "%s/%s", path, e->d_name);
+        snprintf(dst, sizeof dst, "%s/%.*s.ppm", out, (int)(l - 4), e->d_name);
+        uint8_t *rgb;
+        int32_t w, h;
+        fx_memfb fb;
+        int r = fx_read_png_rgb(src, &rgb, &w, &h);
+        if (r == 0) {
+            if ((r = fx_memfb_create(&fb, w, h, FX_FMT_RGB888)) == 0) {
+                for (int32_t y = 0; y < h; y++)
+                    for (int32_t x = 0; x < w; x++) {
+                        const uint8_t *q = rgb + ((size_t)y * (size_t)w + (size_t)x) * 3;
+                        fx_surface_put(&fb.surf, x, y, (fx_color)q[0] << 16 | (fx_color)q[1] << 8 | q[2]);
+                    }
+                r = fx_write_ppm(dst, &fb.surf);
+                fx_memfb_destroy(&fb);
+            }
+            free(rgb);
+        }
+        if (r < 0) {
+            fprintf(stderr, "golden: %s -> %s: %s\n", src, dst, fx_strerror(r));
+            bad = 1;
+        }
+    }
+    closedir(d);
+    return bad;
 }
 
 static void mkdirs(const char *dir)
@@ -140,6 +198,10 @@ int main(int argc, char **argv)
             render_ppm = argv[++i];
         else if (!strcmp(argv[i], "--compare-ppm") && i + 1 < argc)
             compare_ppm = argv[++i];
+        else if (!strcmp(argv[i], "--textures-ppm") && i + 1 < argc)
+            textures_ppm = argv[++i];
+        else if (!strcmp(argv[i], "--export-textures") && i + 1 < argc)
+            return export_textures(dir, argv[++i]);
     }
     char path[1024];
     snprintf(path, sizeof path, "%s/scripts", dir);
