@@ -133,18 +133,6 @@ BENCH_DEB_PKGS :=
         golden-update clean help
 all: lib tools $(BUILD)/fixel.pc
 
-# A tool built with optional libraries that pkg-config finds (the kiosk's
-# MQTT, the bench's peers) records what was found in a stamp its objects
-# depend on: installing a library later (make run, then make test) rebuilds
-# them instead of linking objects compiled without it. The stamp is written
-# only when it changes, so a second make still has nothing to do.
-# usage: $(eval $(call feature_stamp,TOOL,FEATURE-WORDS))
-define feature_stamp
-$(shell mkdir -p $(BUILD)/obj/tools/$(1) && f=$(BUILD)/obj/tools/$(1)/features && \
-  [ "$$(cat $$f 2>/dev/null)" = "$(2)" ] || echo "$(2)" > $$f)
-$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/$(1)/*.c)): $(BUILD)/obj/tools/$(1)/features
-endef
-
 # Fragments from modules (kernel rig, bench, fuzz, board layers...) add
 # targets and suites. boards/<name>.mk at the top of boards/ are the board
 # profiles (read above); fragments live one or two folders down.

@@ -24,7 +24,6 @@ else
 $(BUILD)/obj/tools/fixel-bench/%.o: PKG_CFLAGS += -DBENCH_NO_PEERS
 TOOL_LIBS_fixel-bench := -lm
 endif
-$(eval $(call feature_stamp,fixel-bench,peers=$(BENCH_HAVE_PEERS)))
 
 # The W9 reference is measured at exactly the flags docs/BENCHMARK.md names, whatever
 # OPT and CPU_FLAGS the project is built with; ref-native is the same source at

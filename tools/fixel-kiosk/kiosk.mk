@@ -31,6 +31,5 @@ ifeq ($(HAVE_KIOSK_SYSTEMD),1)
 $(BUILD)/obj/tools/fixel-kiosk/%.o: CPPFLAGS += -DKIOSK_HAVE_SYSTEMD
 TOOL_LIBS_fixel-kiosk += $(shell $(PKG_CONFIG) --libs libsystemd)
 endif
-$(eval $(call feature_stamp,fixel-kiosk,mqtt=$(HAVE_KIOSK_MQTT) systemd=$(HAVE_KIOSK_SYSTEMD)))
 TEST_SUITES += "sh tests/kiosk/notify.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-notify"
 TEST_DEB_PKGS += libsystemd-dev python3
