@@ -1264,8 +1264,11 @@ int main(int argc, char **argv)
     if (fx_app_options_from_env(&o) < 0) return 1;
     /* A kiosk booted before its screen is plugged in (or switched on) waits
      * for it instead of drawing into memory; FIXEL_WAIT_DISPLAY=0 does not. */
-    const char *wd = getenv("FIXEL_WAIT_DISPLAY");
-    if (!k->headless && !(wd && !strcmp(wd, "0"))) {
+    long wait = 1;
+    char wmsg[256];
+    if (fx_env_get("FIXEL_WAIT_DISPLAY", &wait, wmsg, sizeof wmsg) < 0)
+        fprintf(stderr, "fixel-kiosk: %s\n", wmsg);
+    if (!k->headless && wait) {
         int w = fx_display_wait_connected(&o.display, -1);
         if (w < 0 && w != -FX_ENODEV) return 1;
     }
