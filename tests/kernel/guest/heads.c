@@ -135,6 +135,20 @@ static int waiting(int cond, int k)
     return 0;
 }
 
+/* A new frame of scene on d (drawn by the loop), then step next. */
+static void redraw(fx_display *d, const char *scene, int next)
+{
+    if (d == H.own) {
+        H.own_scene = scene;
+        H.own_mark = H.own_draws;
+    } else {
+        H.other_scene = scene;
+        H.other_mark = H.other_draws;
+    }
+    fx_app_post_redisplay_on(H.app, d);
+    fx_app_timer(H.app, 50, step, next);
+}
+
 static int idle(void) { return !fx_display_flip_pending(H.own) && !fx_display_flip_pending(H.other); }
 
 static void step(void *user, int k)
@@ -196,10 +210,7 @@ static void step(void *user, int k)
                     H.forced, io.connected ? "still connected" : "gone", io.hotplugs,
                     ia.connected ? "connected" : "gone", ia.reshapes, ia.hotplugs);
         screen(H.other, "heads-hotplug-other-unchanged", "bars", 0);
-        H.other_scene = "checker";
-        H.other_mark = H.other_draws;
-        fx_app_post_redisplay_on(H.app, H.other);
-        fx_app_timer(H.app, 50, step, 3);
+        redraw(H.other, "checker", 3);
         return;
     case 3:
         if (waiting(H.other_draws > H.other_mark && idle(), k))
@@ -212,16 +223,12 @@ static void step(void *user, int k)
         if (waiting(io.connected, k))
             return;
         guest_check("heads-hotplug-on",
-                    H.forced == 0 && io.connected && io.hotplugs >= 2 && io.width == 640 && io.height == 480 && io.rotation == 270 &&
-                        strstr(logbuf, HEAD1 " connected: 640x480"),
-                    "forced on (%d); head 1 connected %d after %u hotplugs, %dx%d rotation %d, modeset %s",
-                    H.forced, io.connected,
-                    io.hotplugs, io.width, io.height, io.rotation,
+                    H.forced == 0 && io.connected && io.hotplugs >= 2 && io.width == 640 && io.height == 480 &&
+                        io.rotation == 270 && strstr(logbuf, HEAD1 " connected: 640x480"),
+                    "forced on (%d); head 1 connected %d after %u hotplugs, %dx%d rotation %d, modeset %s", H.forced,
+                    io.connected, io.hotplugs, io.width, io.height, io.rotation,
                     strstr(logbuf, HEAD1 " connected: 640x480") ? "logged" : "not logged");
-        H.own_scene = "bars";
-        H.own_mark = H.own_draws;
-        fx_app_post_redisplay(H.app);
-        fx_app_timer(H.app, 50, step, 5);
+        redraw(H.own, "bars", 5);
         return;
     case 5:
         if (waiting(H.own_draws > H.own_mark && idle(), k))
