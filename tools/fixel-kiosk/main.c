@@ -940,8 +940,9 @@ static void button_action(kiosk *k, int i)
 }
 
 /* Presses that reach the widgets (a waking press never does): a button
- * is drawn pressed while held and acts on its release inside it; any
- * other press is a swipe or an edge tap (kiosk_gesture). */
+ * is drawn pressed while held and acts on its release inside it, unless
+ * the finger swiped; any other press is a swipe or an edge tap
+ * (kiosk_gesture). */
 static void touch_press(kiosk *k, int state, int x, int y)
 {
     k->now_ms = k->headless ? k->now_ms : mono_ms();
@@ -956,17 +957,24 @@ static void touch_press(kiosk *k, int state, int x, int y)
     } else {
         if (!k->press_down) return;
         k->press_down = 0;
+        /* a swipe that started on a button is a swipe: the button lets go */
+        kiosk_pages_cfg swipes = k->cfg.pg;
+        swipes.edge_pct = 0;
+        int sw = kiosk_gesture(&swipes, k->W, k->press_x, k->press_y, x, y), n = k->cfg.pg.npages;
         if (k->pressed >= 0) {
             int i = k->pressed;
             fx_rect r = widget_rect(k, &k->cfg.widgets[i]);
             k->dirty[i] = 1;
-            if (x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1) {
+            if (sw) {
+                k->pressed = -1;
+                go_page(k, (k->page + n + sw) % n);
+            } else if (x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1) {
                 k->pressed_until = k->now_ms + KIOSK_PRESS_MS;
                 button_action(k, i); /* may turn the page (pressed is then -1) */
             } else
                 k->pressed = -1; /* slid off: no tap */
         } else {
-            int g = kiosk_gesture(&k->cfg.pg, k->W, k->press_x, k->press_y, x, y), n = k->cfg.pg.npages;
+            int g = kiosk_gesture(&k->cfg.pg, k->W, k->press_x, k->press_y, x, y);
             if (g) go_page(k, (k->page + n + g) % n);
         }
     }
