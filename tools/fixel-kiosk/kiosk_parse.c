@@ -795,32 +795,18 @@ static const char *parse_page(kiosk_config *k, const char *line, const char *p, 
     return NULL;
 }
 
-static const char *parse_carousel(kiosk_config *k, const char *p, const char *end)
+/* "carousel key=value..." and "touch key=value...": integers only. */
+static const char *parse_turning(kiosk_config *k, const char *scope, const char *p, const char *end)
 {
     tok t, v;
     const kiosk_key *q;
     int iv = 0, r;
     while ((r = next_tok(&p, end, &t)) == 1) {
-        const char *e = kv_parse(k, "carousel", t, &q, &v, &iv);
+        const char *e = kv_parse(k, scope, t, &q, &v, &iv);
         if (e) return e;
-        if (!q) return "unknown carousel key (dwell)";
-        k->pg.dwell_s = iv;
-    }
-    if (r < 0) return "unterminated quote";
-    k->errat = NULL;
-    return NULL;
-}
-
-static const char *parse_touch(kiosk_config *k, const char *p, const char *end)
-{
-    tok t, v;
-    const kiosk_key *q;
-    int iv = 0, r;
-    while ((r = next_tok(&p, end, &t)) == 1) {
-        const char *e = kv_parse(k, "touch", t, &q, &v, &iv);
-        if (e) return e;
-        if (!q) return "unknown touch key (swipe edge)";
-        if (!strcmp(q->name, "swipe")) k->pg.swipe_px = iv;
+        if (!q) return scope[0] == 'c' ? "unknown carousel key (dwell)" : "unknown touch key (swipe edge)";
+        if (!strcmp(q->name, "dwell")) k->pg.dwell_s = iv;
+        else if (!strcmp(q->name, "swipe")) k->pg.swipe_px = iv;
         else k->pg.edge_pct = iv;
     }
     if (r < 0) return "unterminated quote";
@@ -943,8 +929,7 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
         else if (r == 0) msg = NULL;
         else if (tok_is(t, "widget")) msg = parse_widget(k, p, q, eol, line);
         else if (tok_is(t, "page")) msg = parse_page(k, p, q, eol, line);
-        else if (tok_is(t, "carousel")) msg = parse_carousel(k, q, eol);
-        else if (tok_is(t, "touch")) msg = parse_touch(k, q, eol);
+        else if (tok_is(t, "carousel") || tok_is(t, "touch")) msg = parse_turning(k, t.s[0] == 'c' ? "carousel" : "touch", q, eol);
         else if (tok_is(t, "mqtt")) msg = parse_mqtt(k, q, eol);
         else if (tok_is(t, "mqtt_tls")) msg = parse_mqtt_tls(k, q, eol);
         else if (tok_is(t, "screen")) msg = parse_screen(k, q, eol);
