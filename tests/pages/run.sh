@@ -76,6 +76,14 @@ cmp -s "$out/ref-temps/frame-0000.png" "$out/multi/frame-0000.png" && bad "the p
 same=1; for x in "$out"/multi-full/*.png; do cmp -s "$x" "$out/multi/$(basename "$x")" || same=0; done
 [ $same = 1 ] && ok || bad "damage-only frames differ from full redraws across page turns"
 
+# the example config loads and turns its pages (temps 10 s, power 20 s)
+{ printf 'temp=21.5\nwatts=1234\n'; i=0; while [ $i -lt 31 ]; do printf '@frame 1000\n'; i=$((i + 1)); done; } |
+    "$bin" --headless --frames 31 --out "$out/example" "$root/examples/kiosk-pages.conf" > "$out/example.log" 2>&1 &&
+    grep -q "31 frames, 2 lines, 0 bad" "$out/example.log" && ok || bad "examples/kiosk-pages.conf: $(cat "$out/example.log")"
+img same "$out/example/frame-0009.png" "$out/example/frame-0010.png" 0 0 800 466 && bad "example: no page turn at 10 s" || ok
+img same "$out/example/frame-0029.png" "$out/example/frame-0030.png" 0 0 800 466 && bad "example: no page turn at 30 s" || ok
+img same "$out/example/frame-0010.png" "$out/example/frame-0029.png" 0 0 800 466 && ok || bad "example: page power changed between 10 and 29 s"
+
 # ---- 2. hostile page configs ----
 refuse() { # refuse "CONFIG" "FILE:LINE:COL: message part"
     printf '%s\n' "$1" > "$out/bad.conf"
@@ -194,10 +202,10 @@ widget button Off col=1 row=0 topic=home/light/set payload={"state":"OFF"} qos=0
 EOC
     sub -t home/light/set -q 2 -C 2 -W 20 -F '%q %r %p' > "$out/light.txt" 2>&1 & SUB=$!
     sleep 1 # mosquitto_sub subscribed
-    # 2.5 s for the kiosk to connect to a broker on the same machine (a tap
+    # 4 s for the kiosk to connect to a broker on the same machine (a tap
     # while offline is not sent: checked below)
     { printf 'device 0 touch abs 0 479 0 319\n'
-      printf 'wait 2500\n'; tap 120 150; printf 'wait 300\n'; tap 360 150; printf 'wait 1500\nframe\n'; } > "$out/panel.replay"
+      printf 'wait 4000\n'; tap 120 150; printf 'wait 300\n'; tap 360 150; printf 'wait 1500\nframe\n'; } > "$out/panel.replay"
     mkdir -p "$out/panel"
     FIXEL_BACKEND=memory FIXEL_REPLAY="$out/panel.replay" timeout 60 "$bin" --out "$out/panel" "$out/panel.conf" \
         </dev/null >"$out/panel.log" 2>&1 || bad "panel exited $?: $(tail -3 "$out/panel.log")"
@@ -226,9 +234,9 @@ EOC
 
     # set/page by name, by index, next; bad names are bad lines; the frame follows
     sed "s|^carousel.*||" "$out/multi.conf" | sed "s|^size 480x320|size 480x320\n$mqtt client=wall prefix=fleet/wall|" > "$out/wall.conf"
-    { printf 'device 0 touch abs 0 479 0 319\n'; printf 'wait 20000\n'; } > "$out/wall.replay"
+    { printf 'device 0 touch abs 0 479 0 319\n'; printf 'wait 80000\n'; } > "$out/wall.replay"
     mkdir -p "$out/wall"
-    FIXEL_BACKEND=memory FIXEL_REPLAY="$out/wall.replay" timeout 60 "$bin" --out "$out/wall" --data "$out/values" "$out/wall.conf" \
+    FIXEL_BACKEND=memory FIXEL_REPLAY="$out/wall.replay" timeout 90 "$bin" --out "$out/wall" --data "$out/values" "$out/wall.conf" \
         </dev/null >"$out/wall.log" 2>&1 & WALL=$!; pids="$pids $WALL"
     field() { sub -t "fleet/$1/status" -C 1 -W 2 2>/dev/null | sed -n "s/.*\"$2\":\"\{0,1\}\([^\",}]*\).*/\1/p"; }
     isfield() { [ "$(field "$1" "$2")" = "$3" ]; }
@@ -251,9 +259,9 @@ EOC
     # different pages of the same data)
     pub -r -t fleet/door/set/page -m power
     sed 's|client=wall prefix=fleet/wall|client=door prefix=fleet/door|' "$out/wall.conf" > "$out/door.conf"
-    { printf 'device 0 touch abs 0 479 0 319\n'; printf 'wait 20000\n'; } > "$out/door.replay"
+    { printf 'device 0 touch abs 0 479 0 319\n'; printf 'wait 80000\n'; } > "$out/door.replay"
     mkdir -p "$out/door"
-    FIXEL_BACKEND=memory FIXEL_REPLAY="$out/door.replay" timeout 60 "$bin" --out "$out/door" --data "$out/values" "$out/door.conf" \
+    FIXEL_BACKEND=memory FIXEL_REPLAY="$out/door.replay" timeout 90 "$bin" --out "$out/door" --data "$out/values" "$out/door.conf" \
         </dev/null >"$out/door.log" 2>&1 & DOOR=$!; pids="$pids $DOOR"
     waitfor 50 isfield door page_name power && ok || bad "door did not come up on the retained page: $(field door page_name)"
     dshows() { img same "$out/door/live.ppm" "$out/ref-$1-0/last.png" $TOP; }
