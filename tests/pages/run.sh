@@ -15,6 +15,7 @@
 #     set/page names.
 # Every wait is bounded; only loopback is used.
 # Usage: run.sh BIN OUTDIR [--update]
+[ -n "$1" ] && [ -n "$2" ] || { echo "usage: run.sh BIN OUTDIR [--update]"; echo "pages: 0 passed, 1 failed"; exit 2; }
 bin=$(readlink -f "$1"); out=$2; update=$3
 P=0; F=0
 ok() { P=$((P + 1)); }
