@@ -219,6 +219,21 @@ EOC
     case "$st" in *'"page":0,"pages":1,"page_name":"main","presses":2,"press_errors":0'*) ok ;;
         *) bad "panel status: $st" ;; esac
 
+    # on a screen dark by its schedule the first tap only wakes it: one
+    # message for two taps
+    { sed 's|client=panel prefix=fleet/panel|client=dark prefix=fleet/dark|; s|home/light/set payload=ON qos=1 retain=1|home/dark/set payload=ON qos=1|' \
+        "$out/panel.conf"; printf 'schedule on=%s off=%s\n' "$on" "$off"; } > "$out/darkpanel.conf"
+    sub -t home/dark/set -q 1 -C 2 -W 12 -F '%p' > "$out/dark.txt" 2>/dev/null & SUB=$!
+    sleep 1
+    { printf 'device 0 touch abs 0 479 0 319\nwait 4000\n'; tap 120 150; printf 'wait 300\n'; tap 120 150; printf 'wait 1500\nframe\n'; } > "$out/darkpanel.replay"
+    mkdir -p "$out/darkpanel"
+    FIXEL_BACKEND=memory FIXEL_REPLAY="$out/darkpanel.replay" timeout 60 "$bin" --out "$out/darkpanel" "$out/darkpanel.conf" \
+        </dev/null >"$out/darkpanel.log" 2>&1 || bad "darkpanel exited $?: $(tail -3 "$out/darkpanel.log")"
+    wait $SUB
+    [ "$(cat "$out/dark.txt")" = ON ] && ok || bad "two taps on a dark screen: wanted one ON (the first only wakes), saw: $(cat "$out/dark.txt")"
+    case "$(sub -t fleet/dark/status -C 1 -W 3 2>/dev/null)" in *'"presses":1,'*'"screen":"on"'*) ok ;;
+        *) bad "dark panel status: $(sub -t fleet/dark/status -C 1 -W 3)" ;; esac
+
     # a button tapped while the broker is away: not sent, counted, drawn red
     cat > "$out/away.conf" <<EOC
 size 480x320
