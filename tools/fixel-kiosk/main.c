@@ -126,7 +126,7 @@ typedef struct kiosk {
     int pressed;          /* the button widget drawn pressed, -1: none */
     int64_t pressed_until; /* after the release it stays drawn pressed until then */
     int press_failed;     /* the last tap's message could not be sent: drawn red while pressed */
-    uint32_t presses, press_errors, page_turns;
+    uint32_t presses, press_errors;
 } kiosk;
 
 static int64_t mono_ms(void)
@@ -885,7 +885,6 @@ static void go_page(kiosk *k, int p)
     k->page_since = k->now_ms;
     if (p == k->page) return;
     k->page = p;
-    k->page_turns++;
     k->pressed = -1;
     k->press_down = 0; /* the rest of a swipe or press belongs to the old page */
     k->full = 1;
