@@ -7,6 +7,7 @@
 #include "fixel/error.h"
 #include "../base/fx_internal.h"
 #include "teapot_data.h"
+#include "objects_int.h"
 
 static const char *const kind_names[FX_MESH_KIND_COUNT] = {
     "cube", "tetrahedron", "octahedron", "dodecahedron", "icosahedron", "sphere",
@@ -415,27 +416,12 @@ static void make_plane(fx_mesh *m, fx16 a, int32_t n)
 
 /* ---- the teapot ---- */
 
-/* Bernstein weights of degree 3 and their derivatives at t (Q16.16). */
-static void bern(fx16 t, int64_t w[4], int64_t d[4])
-{
-    int64_t s = FX16_ONE - t;
-    int64_t ss = (s * s) >> 16, tt = ((int64_t)t * t) >> 16, st = (s * t) >> 16;
-    w[0] = (ss * s) >> 16;
-    w[1] = 3 * ((ss * t) >> 16);
-    w[2] = 3 * ((tt * s) >> 16);
-    w[3] = (tt * t) >> 16;
-    d[0] = -3 * ss;
-    d[1] = 3 * ss - 6 * st;
-    d[2] = 6 * st - 3 * tt;
-    d[3] = 3 * tt;
-}
-
 /* Point and tangents of patch p at (u, v), Q16.16, already y-up. */
 static void patch_eval(int p, fx16 u, fx16 v, fx16 scale, fx_vec3 *pt, fx_vec3 *du, fx_vec3 *dv)
 {
     int64_t wu[4], du_[4], wv[4], dv_[4];
-    bern(u, wu, du_);
-    bern(v, wv, dv_);
+    fx_obj_bezier_basis(u, wu, du_);
+    fx_obj_bezier_basis(v, wv, dv_);
     int64_t acc[3][3] = {{0}};
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) {
