@@ -138,6 +138,97 @@ int fx_patch_eval(const fx_vec3 P[16], fx_patch_basis basis, fx16 u, fx16 v, fx_
  * side dP/du x dP/dv points to. -FX_ENOSPC when m is full. */
 int fx_patch_tessellate(fx_mesh *m, const fx_vec3 P[16], fx_patch_basis basis, int32_t n);
 
+/* ---- polygon tables ----
+ * The course's geometric tables of a polyhedron in object space (Q16.16):
+ *   vertex table   the point, and the head of the list of its edges
+ *   edge table     its two vertices, the polygons on either side (the one
+ *                  that runs v0 -> v1 first, then the one running back;
+ *                  -1 while missing), and the next edge of each vertex's list
+ *   polygon table  its edges in order (indices into the edge-use list:
+ *                  2 e + 1 when it runs the edge backwards), and attributes:
+ *                  a colour, a caller's value, and the plane
+ *                  A x + B y + C z + D = 0
+ * Polygons are counter-clockwise seen from outside; the plane comes from
+ * Newell's sums over the vertices (exact on integers; scaled down to fit 31
+ * bits), so (A, B, C) is the outward normal, and D puts the plane through
+ * the vertices' mean. Then, as in the course:
+ *   A x + B y + C z + D < 0   the point is inside (behind the polygon),
+ *                       > 0   outside (in front), = 0 on its plane;
+ *   a point is inside a convex polyhedron when it is inside every plane;
+ *   a polygon is a back face for an eye at E when E is not in front of it
+ *   (A Ex + B Ey + C Ez + D <= 0), and for a parallel view along V when
+ *   V . N >= 0.
+ * Adding a polygon checks it first and changes nothing on error:
+ * -FX_EINVAL for fewer than 3 or more than FX_PTAB_MAX_VERTS vertices, an
+ * index out of range, a vertex off the plane by more than 1/256, an edge a
+ * third polygon would share, or one it would run in the same direction as
+ * the polygon already there (the orientations disagree); -FX_EDOM for a
+ * polygon without area; -FX_ENOSPC when a table is full. */
+#define FX_PTAB_MAX_VERTS 64
+
+typedef struct fx_ptab_vertex {
+    fx_vec3 p;
+    int32_t first_edge; /* -1: none */
+} fx_ptab_vertex;
+
+typedef struct fx_ptab_edge {
+    int32_t v[2];
+    int32_t poly[2];
+    int32_t next[2]; /* next edge at v[0], at v[1]; -1 ends the list */
+} fx_ptab_edge;
+
+typedef struct fx_ptab_poly {
+    int32_t first, n; /* its edge uses: use[first .. first + n - 1] */
+    int64_t a, b, c, d;
+    uint32_t color;
+    int32_t attr;
+} fx_ptab_poly;
+
+typedef struct fx_ptab {
+    fx_ptab_vertex *vert;
+    fx_ptab_edge *edge;
+    fx_ptab_poly *poly;
+    int32_t *use;
+    int32_t nvert, nedge, npoly, nuse;
+    int32_t vcap, ecap, pcap, ucap;
+} fx_ptab;
+
+void fx_ptab_init(fx_ptab *t, fx_ptab_vertex *v, int32_t vcap, fx_ptab_edge *e, int32_t ecap, fx_ptab_poly *p,
+                  int32_t pcap, int32_t *use, int32_t ucap);
+/* The new vertex's index, or -FX_ENOSPC; -FX_EINVAL beyond +-1024. */
+int32_t fx_ptab_add_vertex(fx_ptab *t, fx_vec3 p);
+/* The new polygon's index, or an error (above). */
+int32_t fx_ptab_add_polygon(fx_ptab *t, const int32_t *vi, int32_t n, uint32_t color, int32_t attr);
+/* Every triangle of m (its vertices first); triangles without area are left
+ * out. Returns the number of triangles left out, or an error. */
+int32_t fx_ptab_from_mesh(fx_ptab *t, const fx_mesh *m, uint32_t color);
+/* Vertex k (0..n-1) of polygon p, in its order. */
+int32_t fx_ptab_poly_vertex(const fx_ptab *t, int32_t p, int32_t k);
+/* -1 inside (behind polygon p's plane), 0 on it, +1 outside. */
+int fx_ptab_side(const fx_ptab *t, int32_t p, fx_vec3 q);
+/* 1 when q is inside every polygon's plane (inside a convex polyhedron). */
+int fx_ptab_inside_convex(const fx_ptab *t, fx_vec3 q);
+/* 1 when q is inside the closed polyhedron: a ray from q along +x crosses
+ * its polygons an odd number of times (any polyhedron, convex or not;
+ * crossings through shared edges and vertices count once, by exact
+ * half-open rules). */
+int fx_ptab_inside(const fx_ptab *t, fx_vec3 q);
+int fx_ptab_back_face(const fx_ptab *t, int32_t p, fx_vec3 eye);
+int fx_ptab_back_face_dir(const fx_ptab *t, int32_t p, fx_vec3 view);
+/* Edges with a polygon on one side only: 0 for a closed polyhedron. */
+int32_t fx_ptab_open_edges(const fx_ptab *t);
+
+/* ---- solids as voxels, for the octree (fx_vsd_octree_build, fixel/vsd.h) ----
+ * A cube of side `side` from org cut into 2^k voxels a side (k 1..8);
+ * vox[(z * 2^k + y) * 2^k + x] = 1 where the voxel's centre is inside:
+ * where f(user, centre) > 0 (an implicit function, e.g. the blob field
+ * minus its iso value), or inside the closed polygon table
+ * (fx_ptab_inside, one row of voxels at a time). -FX_EINVAL for a cube
+ * beyond +-1024. */
+int fx_voxels_from_implicit(uint8_t *vox, int32_t k, fx_vec3 org, fx16 side,
+                            fx16 (*f)(const void *user, fx_vec3 p), const void *user);
+int fx_voxels_from_ptab(uint8_t *vox, int32_t k, fx_vec3 org, fx16 side, const fx_ptab *t);
+
 #ifdef __cplusplus
 }  /* extern "C" */
 #endif
