@@ -506,6 +506,24 @@ int fx_scene_mesh_draw(fx_scene *sc, fx_mesh *m)
     return fx3d_draw(&s->r, m);
 }
 
+int fx_scene_object_view(fx_scene *sc, fx_vec3 *eye, int *parallel)
+{
+    s3d *s;
+    TRY(get(sc, &s));
+    fx_mat4 mv, inv;
+    fx_mat4_mul(&mv, &s->r.view, fx_mat_stack_top(&s->r.model));
+    if (fx_mat4_invert(&inv, &mv) < 0)
+        return fx_scene_error(sc, "the model-view matrix has no inverse");
+    *parallel = s->r.parallel;
+    if (*parallel) {
+        *eye = fx_mat4_apply_dir(&inv, fx_vec3_make(0, 0, -FX16_ONE));
+    } else {
+        fx_vec4 e = fx_mat4_apply_point(&inv, fx_vec3_make(0, 0, 0));
+        *eye = fx_vec3_make(e.x, e.y, e.z);
+    }
+    return 0;
+}
+
 static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
 {
     int32_t nv, nt;

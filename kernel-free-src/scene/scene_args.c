@@ -210,6 +210,10 @@ A(blobball, P3("X"), P3("Y"), P3("Z"), F("R", 0, G3), F("W", -64, 64));
 A(blobby, F("ISO", 0, 4096), P3("X0"), P3("Y0"), P3("Z0"), F("STEP", 0, G3), IW("NX", 1, 64), IW("NY", 1, 64),
   IW("NZ", 1, 64));
 A(patch, W("bezier|bspline"), IW("N", 1, 64), REP("control point", 16, 16), P3("X"), P3("Y"), P3("Z"));
+A(ptabcull, W("on|off"));
+A(octree, FORM("blob"), F("ISO", 0, 4096), IW("K", 1, 6), IW("SCALE", 1, 64), XY("SX"), XY("SY"), P3("X0"), P3("Y0"), P3("Z0"),
+  F("SIDE", 0, G3), FORM("supertoroid"), F("R", 0, G3), F("r", 0, G3), SQE("E1"), SQE("E2"), IW("SIDES", 3, 64),
+  IW("RINGS", 3, 64), IW("K", 1, 6), IW("SCALE", 1, 64), XY("SX"), XY("SY"), P3("X0"), P3("Y0"), P3("Z0"), F("SIDE", 0, G3));
 
 /* ---- ray tracer (scene_rt.c): world coordinates within the scene limit ---- */
 #define WR(n) F(n, -FX_RT_WORLD, FX_RT_WORLD)
@@ -300,7 +304,9 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"superellipsoid", a_superellipsoid, 0, TRIS}, {"supertoroid", a_supertoroid, 0, TRIS},
     {"blobball", a_blobball, 0, 0}, {"blobclear", a_none, 0, 0},
     {"blobby", a_blobby, "blobball 0 0 0 1 1", "6 NX NY NZ tetrahedra, each ball evaluated at (NX+1)(NY+1)(NZ+1) points"},
-    {"patch", a_patch, 0, 0},
+    {"patch", a_patch, 0, 0}, {"ptabcull", a_ptabcull, 0, 0},
+    {"octree", a_octree, "blobball 0 0 0 1 1",
+     "2^(3K) voxels, each (blob) a field evaluation of every ball or (supertoroid) a row test of every triangle"},
     {0, 0, 0, 0},
 };
 

@@ -22,4 +22,9 @@ int fx_scene_mesh_alloc(fx_scene *sc, int32_t nv, int32_t nt, int want_uv, fx_me
 /* Draw m with the 3D state: camera, model matrix, lights, material, shading. */
 int fx_scene_mesh_draw(fx_scene *sc, fx_mesh *m);
 
+/* Where the viewer is in object coordinates (the inverse of view x model):
+ * the eye point, or with a parallel projection (*parallel set) the
+ * direction of view. 0, or the error recorded. */
+int fx_scene_object_view(fx_scene *sc, fx_vec3 *eye, int *parallel);
+
 #endif
