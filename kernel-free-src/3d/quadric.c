@@ -130,19 +130,6 @@ int fx_quadric_size(const fx_quadric *q, int32_t *nv, int32_t *nt)
     }
 }
 
-static void put(fx_mesh *m, fx_vec3 p, fx_vec3 n)
-{
-    m->pos[m->nverts] = p;
-    m->nrm[m->nverts] = n;
-    m->nverts++;
-}
-
-static void tri(fx_mesh *m, int32_t a, int32_t b, int32_t c)
-{
-    uint32_t *t = &m->tri[3 * m->ntris++];
-    t[0] = (uint32_t)a, t[1] = (uint32_t)b, t[2] = (uint32_t)c;
-}
-
 /* Rows 0..k of a surface of revolution, columns 0..n around y (column n
  * repeats column 0), triangles outward when the rows run downward along
  * the outside of the profile. Rows whose radius is 0 are poles: their
@@ -205,21 +192,14 @@ static void revolve(fx_mesh *m, const profile *pf)
             fx_obj_trig(turn(j % n, n, 32), &s, &c);
             fx_vec3 p = fx_vec3_make((fx16)mul(mul(q->a, r), s), (fx16)y, (fx16)mul(mul(q->b, r), c));
             fx_vec3 nn = fx_obj_unit64(mul(mul(nr, s), q->b), ny, mul(mul(nr, c), q->a));
-            put(m, p, nn);
+            fx_obj_put(m, p, nn);
         }
     }
-    for (int32_t i = 0; i < k; i++) {
-        int64_t r0, r1, t;
-        row(pf, i, &r0, &t, &t, &t);
-        row(pf, i + 1, &r1, &t, &t, &t);
-        for (int32_t j = 0; j < n; j++) {
-            int32_t a = base + i * (n + 1) + j, b = a + n + 1, c = b + 1, d = a + 1;
-            if (r1 != 0)
-                tri(m, a, b, c);
-            if (r0 != 0)
-                tri(m, a, c, d);
-        }
-    }
+    /* only the first or the last row can be a pole (radius 0) */
+    int64_t r0, rk, t;
+    row(pf, 0, &r0, &t, &t, &t);
+    row(pf, k, &rk, &t, &t, &t);
+    fx_obj_grid_tris(m, base, n, k, r0 == 0, rk == 0);
 }
 
 /* A flat cap over row i of the profile, facing up (dir > 0) or down. */
@@ -230,18 +210,18 @@ static void cap(fx_mesh *m, const profile *pf, int32_t i, int dir)
     int64_t r, y, t;
     row(pf, i, &r, &y, &t, &t);
     fx_vec3 nn = fx_vec3_make(0, dir > 0 ? FX16_ONE : -FX16_ONE, 0);
-    put(m, fx_vec3_make(0, (fx16)y, 0), nn);
+    fx_obj_put(m, fx_vec3_make(0, (fx16)y, 0), nn);
     for (int32_t j = 0; j < n; j++) {
         fx16 s, c;
         fx_obj_trig(turn(j, n, 32), &s, &c);
-        put(m, fx_vec3_make((fx16)mul(mul(q->a, r), s), (fx16)y, (fx16)mul(mul(q->b, r), c)), nn);
+        fx_obj_put(m, fx_vec3_make((fx16)mul(mul(q->a, r), s), (fx16)y, (fx16)mul(mul(q->b, r), c)), nn);
     }
     for (int32_t j = 0; j < n; j++) {
         int32_t a = c0 + 1 + j, b = c0 + 1 + (j + 1) % n;
         if (dir > 0)
-            tri(m, c0, a, b);
+            fx_obj_tri(m, c0, a, b);
         else
-            tri(m, c0, b, a);
+            fx_obj_tri(m, c0, b, a);
     }
 }
 
@@ -263,17 +243,10 @@ static void superellipsoid(fx_mesh *m, const fx_quadric *q)
             /* Barr's normal (C^(2-e) products over the radii), times a b c. */
             int64_t nx = mul(nrad, fx_signed_pow(st, f2)), nz = mul(nrad, fx_signed_pow(ct, f2));
             fx_vec3 nn = fx_obj_unit64(mul(nx, mul(q->b, q->c)), mul(ny, mul(q->a, q->c)), mul(nz, mul(q->a, q->b)));
-            put(m, p, nn);
+            fx_obj_put(m, p, nn);
         }
     }
-    for (int32_t i = 0; i < k; i++)
-        for (int32_t j = 0; j < n; j++) {
-            int32_t a = i * (n + 1) + j, b = a + n + 1, c = b + 1, d = a + 1;
-            if (i != k - 1)
-                tri(m, a, b, c);
-            if (i != 0)
-                tri(m, a, c, d);
-        }
+    fx_obj_grid_tris(m, 0, n, k, 1, 1);
 }
 
 static void supertoroid(fx_mesh *m, const fx_quadric *q)
@@ -292,29 +265,19 @@ static void supertoroid(fx_mesh *m, const fx_quadric *q)
             fx_vec3 p = fx_vec3_make((fx16)mul(rr, dx), (fx16)mul(q->b, fx_signed_pow(sp, q->e1)), (fx16)mul(rr, dz));
             int64_t nc = fx_signed_pow(cp, f1);
             fx_vec3 nn = fx_obj_unit64(mul(nc, ndx), fx_signed_pow(sp, f1), mul(nc, ndz));
-            put(m, p, nn);
+            fx_obj_put(m, p, nn);
         }
     }
-    for (int32_t i = 0; i < k; i++)
-        for (int32_t j = 0; j < n; j++) {
-            int32_t i1 = (i + 1) % k, j1 = (j + 1) % n;
-            int32_t a = i * n + j, b = i1 * n + j, c = i1 * n + j1, d = i * n + j1;
-            tri(m, a, b, c);
-            tri(m, a, c, d);
-        }
+    fx_obj_ring_tris(m, n, k);
 }
 
 int fx_quadric_make(fx_mesh *m, const fx_quadric *q)
 {
-    int32_t nv, nt;
+    int32_t nv = 0, nt = 0;
     int e = fx_quadric_size(q, &nv, &nt);
+    e = fx_obj_mesh_begin(m, e, nv, nt);
     if (e < 0)
         return e;
-    if (!m->pos || !m->nrm || !m->tri)
-        return -FX_EINVAL;
-    if (nv > m->cap_verts || nt > m->cap_tris)
-        return -FX_ENOSPC;
-    m->nverts = m->ntris = 0;
     profile top = {q, 1}, bottom = {q, -1};
     switch (q->kind) {
     case FX_QUADRIC_PARABOLOID:

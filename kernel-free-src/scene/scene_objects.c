@@ -30,16 +30,10 @@
 #include "fixel/error.h"
 #include "fixel/objects.h"
 #include "fixel/scene.h"
-#include "fixel/surface.h"
-#include "fixel/vsd.h"
+#include "../base/fx_internal.h"
 #include "scene_mesh.h"
+#include "scene_vsd.h"
 
-#define TRY(x)                   \
-    do {                         \
-        int r_ = (x);            \
-        if (r_ < 0)              \
-            return r_;           \
-    } while (0)
 
 typedef struct sobj {
     fx_blob_ball ball[FX_BLOBBY_MAX_BALLS];
@@ -305,15 +299,9 @@ static int cmd_octree(fx_scene *sc)
     TRY(fx_scene_end(sc));
     TRY(fx_scene_surface(sc));
     TRY(get(sc, &o));
-    int32_t n = (int32_t)1 << k, cap = (((int32_t)1 << (3 * k + 3)) - 1) / 7;
-    /* the picture n * scale square at (sx, sy), clipped to the surface */
-    int32_t w = n * scale, h = n * scale;
-    if (sx >= sc->w || sy >= sc->h || sx + w <= 0 || sy + h <= 0)
-        return 0;
+    int32_t n = (int32_t)1 << k;
     uint8_t *vox = fx_scene_alloc(sc, (size_t)n * (size_t)n * (size_t)n);
-    fx_vsd_onode *nodes = fx_scene_alloc(sc, (size_t)cap * sizeof *nodes);
-    int32_t *depth = fx_scene_alloc(sc, (size_t)w * (size_t)h * sizeof *depth);
-    if (!vox || !nodes || !depth)
+    if (!vox)
         return fx_scene_error(sc, "octree: out of scene memory");
     fx_vec3 org = fx_vec3_make(c[0], c[1], c[2]);
     int e;
@@ -355,24 +343,10 @@ static int cmd_octree(fx_scene *sc)
                 uint8_t tmp = *a;
                 *a = *b, *b = tmp;
             }
-    fx_vsd_octree oc;
-    if (fx_vsd_octree_build(&oc, nodes, cap, vox, k) < 0)
-        return fx_scene_error(sc, "octree: the octree did not fit");
-    int32_t visited = fx_vsd_octree_render(&oc, scale, depth, w, h);
-    if (visited < 0)
-        return fx_scene_error(sc, "octree: rendering failed (%d)", visited);
-    for (int32_t y = 0; y < h; y++)
-        for (int32_t x = 0; x < w; x++) {
-            int32_t z = depth[(size_t)y * (size_t)w + (size_t)x];
-            if (z < 0)
-                continue;
-            uint32_t g = (uint32_t)(230 - z * 170 / n);
-            int32_t px = sx + x, py = sy + y;
-            if (px >= 0 && py >= 0 && px < sc->w && py < sc->h)
-                fx_surface_put(&sc->ctx.surf, px, py, 0xFF000000u | g << 16 | g << 8 | (g * 3 / 4));
-        }
+    int32_t visited, nodes = 0;
+    TRY(visited = fx_scene_octree_draw(sc, vox, k, scale, sx, sy, &nodes));
     if (sc->ctx.trace)
-        fx_trace(&sc->ctx, "octree: %d nodes for %d voxels, %d visited front to back", oc.nnode, n * n * n, visited);
+        fx_trace(&sc->ctx, "octree: %d nodes for %d voxels, %d visited front to back", nodes, n * n * n, visited);
     return 0;
 }
 
