@@ -59,7 +59,7 @@ static fx_vec3 normal_at(const fx_blobby *b, fx_vec3 p)
         /* (p - c) / r in Q16 keeps the sum in range; the common 1/r of a
          * ball stays as the weight it must be. */
         for (int a = 0; a < 3; a++)
-            n[a] += (k * ((d[a] << 16) / o->r) / o->r);
+            n[a] += (k * (d[a] * 65536 / o->r) / o->r);
     }
     return fx_obj_unit64(n[0], n[1], n[2]);
 }
@@ -116,7 +116,7 @@ static int32_t edge_vertex(mt *t, int32_t lo, int d)
         int64_t f0 = t->field[lo], f1 = t->field[hi];
         /* from lo toward hi, whichever side is inside: the same edge gives
          * the same point from every tetrahedron. */
-        int64_t fr = ((((int64_t)b->iso << 14) - f0) << 16) / (f1 - f0); /* Q16 in [0, 1] */
+        int64_t fr = (((int64_t)b->iso * 16384 - f0) * 65536) / (f1 - f0); /* Q16 in [0, 1] */
         int32_t gx = lo % t->sx, gy = (lo / t->sx) % t->sy, gz = lo / (t->sx * t->sy);
         int64_t g[3] = {gx, gy, gz};
         const fx16 *org = &t->b->org.x;

@@ -15,7 +15,7 @@ static int64_t log2_q30(uint32_t x)
     while (!(x >> lead))
         lead--;
     uint64_t m = lead >= 30 ? (uint64_t)x >> (lead - 30) : (uint64_t)x << (30 - lead); /* [1, 2) Q30 */
-    int64_t r = (int64_t)(lead - 16) << 30;
+    int64_t r = (int64_t)(lead - 16) * ((int64_t)1 << 30);
     for (int i = 1; i <= 30; i++) {
         m = (m * m) >> 30;
         if (m >= ((uint64_t)2 << 30)) {
@@ -158,7 +158,7 @@ static void row(const profile *pf, int32_t i, int64_t *r, int64_t *y, int64_t *n
     }
     case FX_QUADRIC_HYPERBOLOID1: {
         *y = q->h - (2 * (int64_t)q->h * i + k / 2) / k;
-        int64_t t = (*y << 16) / q->c;
+        int64_t t = *y * 65536 / q->c;
         *r = fx_isqrt64((uint64_t)((one << 16) + t * t));
         *nr = mul(*r, q->c); /* (x/a^2, -y/c^2, z/b^2) times a b c */
         *ny = -mul(t, mul(q->a, q->b));

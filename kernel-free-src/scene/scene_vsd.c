@@ -184,9 +184,10 @@ int fx_scene_octree_draw(fx_scene *sc, const uint8_t *vox, int32_t k, int32_t sc
     int32_t n = (int32_t)1 << k, cap = (((int32_t)1 << (3 * k + 3)) - 1) / 7;
     /* the part of the n * scale picture at (sx, sy) left of and above the
      * surface's far edges */
-    int32_t w = sc->w - sx < n * scale ? sc->w - sx : n * scale, h = sc->h - sy < n * scale ? sc->h - sy : n * scale;
-    if (w <= 0 || h <= 0 || sx + w <= 0 || sy + h <= 0)
+    int64_t pw = (int64_t)sc->w - sx, ph = (int64_t)sc->h - sy, side = (int64_t)n * scale;
+    if (pw <= 0 || ph <= 0 || (int64_t)sx + side <= 0 || (int64_t)sy + side <= 0)
         return 0;
+    int32_t w = (int32_t)(pw < side ? pw : side), h = (int32_t)(ph < side ? ph : side);
     fx_vsd_onode *nodes = fx_scene_alloc(sc, (size_t)cap * sizeof *nodes);
     int32_t *depth = fx_scene_alloc(sc, (size_t)w * (size_t)h * sizeof *depth);
     if (!nodes || !depth)
@@ -200,10 +201,11 @@ int fx_scene_octree_draw(fx_scene *sc, const uint8_t *vox, int32_t k, int32_t sc
     for (int32_t y = 0; y < h; y++)
         for (int32_t x = 0; x < w; x++) {
             int32_t z = depth[(size_t)y * (size_t)w + (size_t)x];
-            if (z < 0 || sx + x < 0 || sy + y < 0)
+            int64_t px = (int64_t)sx + x, py = (int64_t)sy + y;
+            if (z < 0 || px < 0 || py < 0)
                 continue;
             uint32_t g = (uint32_t)(230 - z * 170 / n);
-            fx_surface_put(&sc->ctx.surf, sx + x, sy + y, 0xFF000000u | g << 16 | g << 8 | (g * 3 / 4));
+            fx_surface_put(&sc->ctx.surf, (int32_t)px, (int32_t)py, 0xFF000000u | g << 16 | g << 8 | (g * 3 / 4));
         }
     *nodes_out = o.nnode;
     return visited;
