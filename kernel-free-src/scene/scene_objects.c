@@ -133,8 +133,18 @@ static int args(fx_scene *sc, fx16 *f, int nf, int32_t *iv, int ni)
 static int draw_quadric(fx_scene *sc, const fx_quadric *q)
 {
     int32_t nv, nt;
-    if (fx_quadric_size(q, &nv, &nt) < 0)
-        return fx_scene_error(sc, "size, exponent or tessellation out of range (fixel/objects.h)");
+    if (fx_quadric_size(q, &nv, &nt) < 0) {
+        if (q->a <= 0 || q->b <= 0 || (q->kind != FX_QUADRIC_SUPERTOROID && q->kind != FX_QUADRIC_PARABOLOID && q->c <= 0) ||
+            (q->kind <= FX_QUADRIC_HYPERBOLOID2 && q->h <= 0))
+            return fx_scene_error(sc, "sizes must be above 0");
+        if (q->kind == FX_QUADRIC_HYPERBOLOID2 && q->h <= q->c)
+            return fx_scene_error(sc, "hyperboloid 2: H must exceed C (the sheets begin at |y| = C)");
+        if (q->kind == FX_QUADRIC_HYPERBOLOID1 || q->kind == FX_QUADRIC_HYPERBOLOID2)
+            return fx_scene_error(sc, "hyperboloid: H at most 256 C, and the rim within 1024");
+        if (q->kind == FX_QUADRIC_SUPERTOROID)
+            return fx_scene_error(sc, "supertoroid: R + r within 1024, at least 3 sides and rings");
+        return fx_scene_error(sc, "tessellation out of range");
+    }
     fx_mesh m;
     TRY(fx_scene_mesh_alloc(sc, nv, nt, 0, &m));
     TRY(fx_quadric_make(&m, q));
