@@ -298,7 +298,10 @@ FX_TEST(ptab_voxels_and_octree_from_a_mesh_and_an_implicit_function)
                 double rr = sqrt(c[0] * c[0] + c[2] * c[2]) - 2, dist = sqrt(rr * rr + c[1] * c[1]) - 0.75;
                 if (fabs(dist) > 0.05)
                     bad += v != (dist < 0);
-                /* the row fill matches the point test */
+                /* the row fill matches the point test (every 5th voxel: it
+                 * is the slow way) */
+                if ((x + y + z) % 5)
+                    continue;
                 fx_vec3 Q = fx_vec3_make(org.x + (fx16)((2 * x + 1) * 6 * ONE / (2 * n)),
                                          org.y + (fx16)((2 * y + 1) * 6 * ONE / (2 * n)),
                                          org.z + (fx16)((2 * z + 1) * 6 * ONE / (2 * n)));
