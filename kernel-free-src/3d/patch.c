@@ -133,8 +133,10 @@ int fx_patch_tessellate(fx_mesh *m, const fx_vec3 P[16], fx_patch_basis basis, i
         for (int32_t j = 0; j <= n; j++) {
             fx16 u = fx16_from_ratio(i, n), v = fx16_from_ratio(j, n);
             fx_vec3 p, nn;
-            if (eval_checked(P, basis, u, v, &p, &nn) < 0)
+            if (eval_checked(P, basis, u, v, &p, &nn) < 0) {
+                m->nverts = base; /* as it was */
                 return -FX_EDOM;
+            }
             m->pos[m->nverts] = p;
             m->nrm[m->nverts] = nn;
             if (m->uv) {

@@ -511,6 +511,16 @@ FX_TEST(objects_patches_agree_with_de_casteljau_and_the_basis)
     FX_CHECK_EQ(fx_patch_eval(P, FX_PATCH_BSPLINE, 0, 0, &p, &n), 0);
     FX_CHECK(p.y != P[0].y);
     FX_CHECK_EQ(fx_patch_eval(P, FX_PATCH_BEZIER, ONE + 1, 0, &p, &n), -FX_EINVAL);
+    /* all control points at one place: no normal anywhere, nothing written */
+    fx_vec3 Q[16], pos[25], nrm[25];
+    uint32_t tri[96];
+    for (int i = 0; i < 16; i++)
+        Q[i] = fx_vec3_make(ONE, 2 * ONE, 3 * ONE);
+    fx_mesh m = {pos, nrm, tri, 0, 0, 25, 32, NULL, NULL};
+    FX_CHECK_EQ(fx_patch_eval(Q, FX_PATCH_BSPLINE, ONE / 2, ONE / 2, &p, &n), -FX_EDOM);
+    FX_CHECK_EQ(fx_patch_tessellate(&m, Q, FX_PATCH_BEZIER, 4), -FX_EDOM);
+    FX_CHECK_EQ(m.nverts, 0);
+    FX_CHECK_EQ(m.ntris, 0);
 }
 
 FX_TEST(objects_patch_tessellation_appends_and_faces_its_normal)

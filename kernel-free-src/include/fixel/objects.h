@@ -135,7 +135,8 @@ typedef enum fx_patch_basis { FX_PATCH_BEZIER, FX_PATCH_BSPLINE } fx_patch_basis
 int fx_patch_eval(const fx_vec3 P[16], fx_patch_basis basis, fx16 u, fx16 v, fx_vec3 *pt, fx_vec3 *nrm);
 /* (n + 1)^2 vertices and 2 n^2 triangles (n in 1..FX_MESH_MAX_SEG),
  * appended to m (its nverts / ntris grow); counter-clockwise seen from the
- * side dP/du x dP/dv points to. -FX_ENOSPC when m is full. */
+ * side dP/du x dP/dv points to. -FX_ENOSPC when m is full, -FX_EDOM for a
+ * point without a normal; m is then as it was. */
 int fx_patch_tessellate(fx_mesh *m, const fx_vec3 P[16], fx_patch_basis basis, int32_t n);
 
 /* ---- polygon tables ----
@@ -200,7 +201,8 @@ int32_t fx_ptab_add_vertex(fx_ptab *t, fx_vec3 p);
 /* The new polygon's index, or an error (above). */
 int32_t fx_ptab_add_polygon(fx_ptab *t, const int32_t *vi, int32_t n, uint32_t color, int32_t attr);
 /* Every triangle of m (its vertices first); triangles without area are left
- * out. Returns the number of triangles left out, or an error. */
+ * out. Returns the number of triangles left out, or an error (the tables
+ * then hold what was added before it). */
 int32_t fx_ptab_from_mesh(fx_ptab *t, const fx_mesh *m, uint32_t color);
 /* Vertex k (0..n-1) of polygon p, in its order. */
 int32_t fx_ptab_poly_vertex(const fx_ptab *t, int32_t p, int32_t k);
