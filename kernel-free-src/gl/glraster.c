@@ -682,8 +682,10 @@ static void lerp_cvert(const fx_gl_cvert *a, const fx_gl_cvert *b, fx32 num, fx3
     o->p.y = a->p.y + fx_muldiv64(b->p.y - a->p.y, num, den);
     o->p.z = a->p.z + fx_muldiv64(b->p.z - a->p.z, num, den);
     o->p.w = a->p.w + fx_muldiv64(b->p.w - a->p.w, num, den);
-    for (int k = 0; k < 4; k++)
+    for (int k = 0; k < 4; k++) {
         o->c[k] = (fx16)(a->c[k] + fx_muldiv64(b->c[k] - a->c[k], num, den));
+        o->bc[k] = (fx16)(a->bc[k] + fx_muldiv64(b->bc[k] - a->bc[k], num, den));
+    }
     o->s = (fx16)(a->s + fx_muldiv64(b->s - a->s, num, den));
     o->t = (fx16)(a->t + fx_muldiv64(b->t - a->t, num, den));
 }
