@@ -122,6 +122,15 @@ fx_glv4 fx_glm_apply(const fx_glm *m, fx_glv4 v)
 {
     const fx32 *a = m->m;
     fx_glv4 o;
+    if (v.w == FX32_ONE) {
+        /* a point (nearly every vertex): the last column's products are
+         * the column itself, exactly */
+        o.x = fx32_mul(a[0], v.x) + fx32_mul(a[4], v.y) + fx32_mul(a[8], v.z) + a[12];
+        o.y = fx32_mul(a[1], v.x) + fx32_mul(a[5], v.y) + fx32_mul(a[9], v.z) + a[13];
+        o.z = fx32_mul(a[2], v.x) + fx32_mul(a[6], v.y) + fx32_mul(a[10], v.z) + a[14];
+        o.w = fx32_mul(a[3], v.x) + fx32_mul(a[7], v.y) + fx32_mul(a[11], v.z) + a[15];
+        return o;
+    }
     o.x = fx32_mul(a[0], v.x) + fx32_mul(a[4], v.y) + fx32_mul(a[8], v.z) + fx32_mul(a[12], v.w);
     o.y = fx32_mul(a[1], v.x) + fx32_mul(a[5], v.y) + fx32_mul(a[9], v.z) + fx32_mul(a[13], v.w);
     o.z = fx32_mul(a[2], v.x) + fx32_mul(a[6], v.y) + fx32_mul(a[10], v.z) + fx32_mul(a[14], v.w);

@@ -386,18 +386,23 @@ static inline __attribute__((always_inline)) int depth_cmp(const fx_gl_target *t
  *    at least 2^32 there), where its guards on q and the shift are idle,
  *    and without the clamp of l1 to [0, 1]: L1 <= Q makes
  *    (L1 >> sh) * inv <= (Q >> sh) * (2^62 / (Q >> sh)) <= 2^62;
- *  - the depth's rounding bias added once, the clamp as a rare branch.
+ *  - the depth's rounding bias added once, the clamp as a rare branch;
+ *  - only the depth stepped along the span: a pixel that passes takes q,
+ *    l1 q, l2 q as their row value (c + gy y) plus x gradients, the value
+ *    fx_tri_attr_at gives (products modulo 2^64, the same bits as stepping
+ *    pixel by pixel), so a hidden pixel costs the depth test alone; the
+ *    depth function and depth writes are constants of each copy of the
+ *    loop.
  * (Two passes, the depth tests first and then the colours of the pixels
  * that passed, ran slower here: the spans are a few pixels long.) */
 static inline __attribute__((always_inline)) void
-persp_span_plain(const fx_gl_target *t, int func, uint32_t *prow, uint32_t *drow, int32_t x0,
-                 int32_t x1, const uint64_t val[4], const uint64_t g[4], const int64_t c0h[3],
-                 const int64_t d1[3], const int64_t d2[3])
+persp_span_plain(const fx_gl_target *t, int func, int dw, uint32_t *prow, uint32_t *drow,
+                 int32_t x0, int32_t x1, uint64_t vz, const uint64_t row[3], const uint64_t g[4],
+                 const int64_t c0h[3], const int64_t d1[3], const int64_t d2[3])
 {
-    uint64_t vz = val[0] + 0x80000000u, vq = val[1], v1 = val[2], v2 = val[3];
-    const uint64_t gz = g[0], gq = g[1], g1 = g[2], g2 = g[3];
-    const int dw = t->depth_write;
-    for (int32_t x = x0; x < x1; x++, vz += gz, vq += gq, v1 += g1, v2 += g2) {
+    vz += 0x80000000u;
+    const uint64_t gz = g[0];
+    for (int32_t x = x0; x < x1; x++, vz += gz) {
         int32_t zz = (int32_t)((int64_t)vz >> 32); /* fx_tri_attr_round */
         uint32_t z = (uint32_t)zz;
         if (__builtin_expect(z > 0xFFFFFF, 0))
@@ -406,6 +411,8 @@ persp_span_plain(const fx_gl_target *t, int func, uint32_t *prow, uint32_t *drow
             continue;
         if (dw)
             drow[x] = z;
+        const uint64_t ux = (uint64_t)(int64_t)x;
+        const uint64_t vq = row[0] + g[1] * ux, v1 = row[1] + g[2] * ux, v2 = row[2] + g[3] * ux;
         int64_t l1, l2, Qv = (int64_t)vq;
         if (__builtin_expect(Qv >= ((int64_t)1 << 31), 1)) {
             int sh = 33 - __builtin_clzll((uint64_t)Qv);
@@ -429,7 +436,7 @@ persp_span_plain(const fx_gl_target *t, int func, uint32_t *prow, uint32_t *drow
 
 /* The spans of such a triangle, the walk stepped inline (tri_walk.h). */
 static inline __attribute__((always_inline)) void
-persp_plain(const fx_gl_target *t, int func, fx_tri *tri, const int64_t c0[4],
+persp_plain(const fx_gl_target *t, int func, int dw, fx_tri *tri, const int64_t c0[4],
             const int64_t d1[6], const int64_t d2[6])
 {
     const int64_t c0h[3] = {c0[0] + 0x8000, c0[1] + 0x8000, c0[2] + 0x8000};
@@ -438,16 +445,17 @@ persp_plain(const fx_gl_target *t, int func, fx_tri *tri, const int64_t c0[4],
     uint8_t *pixels = t->surf.pixels;
     const int32_t h1 = t->surf.h - 1, stride = t->surf.stride;
     uint32_t *depth = t->depth;
-    const size_t dw = (size_t)t->surf.w;
+    const size_t dstride = (size_t)t->surf.w;
     fx_tri_span sp;
     while (tri_next(tri, &sp)) {
-        uint64_t val[4];
-        for (int k = 0; k < 4; k++)
-            val[k] = fx_tri_attr_at(tri, k, sp.x0, sp.y);
+        const uint64_t uy = (uint64_t)(int64_t)sp.y;
+        const uint64_t rowv[3] = {tri->c[1] + tri->gy[1] * uy, tri->c[2] + tri->gy[2] * uy,
+                                  tri->c[3] + tri->gy[3] * uy};
         int32_t row = h1 - sp.y;
         uint32_t *prow = (uint32_t *)(pixels + (intptr_t)row * stride);
-        uint32_t *drow = depth + (size_t)row * dw;
-        persp_span_plain(t, func, prow, drow, sp.x0, sp.x1, val, g, c0h, e1, e2);
+        uint32_t *drow = depth + (size_t)row * dstride;
+        persp_span_plain(t, func, dw, prow, drow, sp.x0, sp.x1, fx_tri_attr_at(tri, 0, sp.x0, sp.y),
+                         rowv, g, c0h, e1, e2);
     }
 }
 
@@ -483,8 +491,11 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
     /* attribute deltas from vertex 0: colour levels in Q16, s and t */
     int64_t c0[4] = {0, 0, 0, 0}, d1[6] = {0}, d2[6] = {0};
     int64_t s0 = v[0]->s, t0 = v[0]->t;
+    int plain = plain_target(t);
+    /* the plain depth-tested Gouraud loop stores no alpha */
+    int nc = plain && use_z && !use_t ? 3 : 4;
     if (use_c)
-        for (int k = 0; k < 4; k++) {
+        for (int k = 0; k < nc; k++) {
             int64_t l[3];
             for (int i = 0; i < 3; i++) {
                 fx16 cc = v[i]->c[k];
@@ -503,15 +514,14 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
     if (flat)
         for (int k = 0; k < 4; k++)
             cf[k] = level(flat[k]);
-    int plain = plain_target(t);
     fx_tri_span sp;
     if (plain && use_z && use_c && !use_t) {
-        if (t->depth_func == FX_GL_DEPTH_LESS)
-            persp_plain(t, FX_GL_DEPTH_LESS, &tri, c0, d1, d2);
-        else if (t->depth_func == FX_GL_DEPTH_LEQUAL)
-            persp_plain(t, FX_GL_DEPTH_LEQUAL, &tri, c0, d1, d2);
+        if (t->depth_func == FX_GL_DEPTH_LESS && t->depth_write)
+            persp_plain(t, FX_GL_DEPTH_LESS, 1, &tri, c0, d1, d2);
+        else if (t->depth_func == FX_GL_DEPTH_LEQUAL && t->depth_write)
+            persp_plain(t, FX_GL_DEPTH_LEQUAL, 1, &tri, c0, d1, d2);
         else
-            persp_plain(t, -1, &tri, c0, d1, d2);
+            persp_plain(t, -1, t->depth_write, &tri, c0, d1, d2);
         return;
     }
     while (tri_next(&tri, &sp)) {

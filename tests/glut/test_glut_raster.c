@@ -359,6 +359,42 @@ FX_TEST(glut_lighting_equation)
     FX_CHECK_EQ(fx_gl_pow(32768, 2 << 16), 16384);
 }
 
+FX_TEST(glut_lighting_local_viewer)
+{
+    /* a directional light along +x and a vertex at (3, 0, -3) with normal
+     * (1, 0, 1)/sqrt2: the infinite viewer's H = normalize(x + z) is the
+     * normal (N.H = 1, full highlight); the local viewer looks along
+     * normalize(-P) = (-1, 0, 1)/sqrt2, so H = normalize((1 - 0.7071, 0,
+     * 0.7071)) and N.H = cos 22.5 = 0.92388 -> 0.92388^8 = 0.5306 */
+    fx_gl_lighting L;
+    memset(&L, 0, sizeof L);
+    L.light[0].enabled = 1;
+    for (int k = 0; k < 4; k++)
+        L.light[0].specular[k] = 65536;
+    L.light[0].pos[0] = FX32_ONE;
+    L.light[0].att[0] = FX32_ONE;
+    fx_gl_material m;
+    memset(&m, 0, sizeof m);
+    m.specular[0] = 65536;
+    m.shininess = 8 << 16;
+    fx32 p[4] = {3 * FX32_ONE, 0, -3 * FX32_ONE, FX32_ONE};
+    fx32 n[3] = {fxg_d2x(0.7071067811865476), 0, fxg_d2x(0.7071067811865476)};
+    fx16 out[4];
+    fx_gl_shade(&L, &m, p, n, out);
+    FX_CHECK_MSG(out[0] > fxg_d2c(0.999), "infinite viewer: got %d", out[0]);
+    L.local_viewer = 1;
+    fx_gl_shade(&L, &m, p, n, out);
+    FX_CHECK_MSG(out[0] > fxg_d2c(0.5306 - 0.001) && out[0] < fxg_d2c(0.5306 + 0.001), "local viewer: got %d",
+                 out[0]);
+    /* the cached entry point gives the same bits with a local viewer */
+    fx_gl_shade_cache c;
+    memset(&c, 0, sizeof c);
+    fx16 out2[4];
+    fx_gl_shade_cached(&L, &c, &m, p, n, out2);
+    fx_gl_shade_cached(&L, &c, &m, p, n, out2);
+    FX_CHECK_EQ(out2[0], out[0]);
+}
+
 FX_TEST(glut_display_list_replays)
 {
     setup();
