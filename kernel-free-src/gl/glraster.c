@@ -567,6 +567,53 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
     }
 }
 
+/* 1 when a GL_LESS / GL_LEQUAL depth-tested triangle cannot pass the test
+ * anywhere: every stored depth in its bounding box is at or before its
+ * nearest vertex. Its fragments' depths are values of the plane through
+ * the vertices' z at pixel centres inside it, so at least the smallest
+ * vertex z (less one for the rounding). Such a triangle changes no pixel
+ * and is left out before its set-up: hidden back faces of a closed mesh
+ * cost a scan of stored depths instead of edges, planes and spans. The
+ * scan stops at the first depth behind the triangle (a visible triangle
+ * costs a few reads) and is not tried where the box is much larger than
+ * the triangle (slivers) or large. */
+static int hidden_by_depth(const fx_gl_target *t, const fx_gl_wvert *const v[3], const fx8 xy[6])
+{
+    int32_t zmin = v[0]->z;
+    for (int i = 1; i < 3; i++)
+        zmin = v[i]->z < zmin ? v[i]->z : zmin;
+    int64_t need = (int64_t)zmin - 1 - (t->depth_func == FX_GL_DEPTH_LEQUAL);
+    if (need < 0)
+        return 0;
+    fx8 xmin = xy[0], xmax = xy[0], ymin = xy[1], ymax = xy[1];
+    for (int i = 1; i < 3; i++) {
+        xmin = xy[2 * i] < xmin ? xy[2 * i] : xmin, xmax = xy[2 * i] > xmax ? xy[2 * i] : xmax;
+        ymin = xy[2 * i + 1] < ymin ? xy[2 * i + 1] : ymin;
+        ymax = xy[2 * i + 1] > ymax ? xy[2 * i + 1] : ymax;
+    }
+    /* a covered pixel X has its (shifted) centre X in [xmin, xmax] / 256 */
+    int64_t X0 = ((int64_t)xmin + 255) >> 8, X1 = (int64_t)xmax >> 8;
+    int64_t Y0 = ((int64_t)ymin + 255) >> 8, Y1 = (int64_t)ymax >> 8;
+    X0 = X0 < t->clip.x0 ? t->clip.x0 : X0, X1 = X1 >= t->clip.x1 ? t->clip.x1 - 1 : X1;
+    Y0 = Y0 < t->clip.y0 ? t->clip.y0 : Y0, Y1 = Y1 >= t->clip.y1 ? t->clip.y1 - 1 : Y1;
+    if (X0 > X1 || Y0 > Y1)
+        return 0;
+    int64_t box = (X1 - X0 + 1) * (Y1 - Y0 + 1);
+    int64_t area2 = ((int64_t)(xy[2] - xy[0]) * (xy[5] - xy[1]) - (int64_t)(xy[4] - xy[0]) * (xy[3] - xy[1])) >> 16;
+    if (area2 < 0)
+        area2 = -area2;
+    if (box > 4096 || box > 4 * area2 + 64) /* pixels; area2 is twice the area */
+        return 0;
+    const uint32_t lim = (uint32_t)need;
+    for (int64_t Y = Y0; Y <= Y1; Y++) {
+        const uint32_t *d = t->depth + (size_t)(t->surf.h - 1 - Y) * (size_t)t->surf.w;
+        for (int64_t X = X0; X <= X1; X++)
+            if (d[X] > lim)
+                return 0;
+    }
+    return 1;
+}
+
 void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
                     const fx_gl_wvert *c, const fx16 *flat)
 {
@@ -576,6 +623,10 @@ void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
         xy[2 * i] = (fx8)(v[i]->x - 128);
         xy[2 * i + 1] = (fx8)(v[i]->y - 128);
     }
+    if (t->depth && t->depth_test &&
+        (t->depth_func == FX_GL_DEPTH_LESS || t->depth_func == FX_GL_DEPTH_LEQUAL) &&
+        hidden_by_depth(t, v, xy))
+        return;
     int use_z = t->depth && t->depth_test;
     int use_c = flat == 0;
     int use_t = t->tex != 0;
