@@ -411,3 +411,63 @@ FX_TEST(glut_display_list_replays)
     FX_CHECK(!lit(7, 7));
     glDeleteLists(l, 1);
 }
+
+/* Hidden triangles are left out before set-up (glraster.c, hidden_by_depth):
+ * that must change no pixel. A triangle behind a nearer one leaves it; one
+ * at the same depth is drawn under GL_LEQUAL and not under GL_LESS; one
+ * a depth step in front is drawn under GL_LESS; gradients of depth inside
+ * a tilted triangle behind a flat one at its nearest vertex's depth. */
+static unsigned char red_at(int x, int y)
+{
+    unsigned char p[3];
+    glReadPixels(x, y, 1, 1, GL_RGB, GL_UNSIGNED_BYTE, p);
+    return p[0];
+}
+static void quad_z(float z0, float z1, float r)
+{
+    glColor3f(r, 0, 1);
+    glBegin(GL_TRIANGLES);
+    glVertex3f(5, 5, z0);
+    glVertex3f(35, 5, z0);
+    glVertex3f(5, 35, z1);
+    glEnd();
+}
+FX_TEST(glut_hidden_triangles_same_pixels)
+{
+    setup();
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 40, 0, 40, -1, 1); /* depth = (1 - z) / 2 of the range */
+    glMatrixMode(GL_MODELVIEW);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    /* the whole window at one depth, so that every box below lies on it */
+    glColor3f(0.2f, 0, 1);
+    glBegin(GL_QUADS);
+    glVertex3f(0, 0, 0.5f);
+    glVertex3f(40, 0, 0.5f);
+    glVertex3f(40, 40, 0.5f);
+    glVertex3f(0, 40, 0.5f);
+    glEnd();
+    quad_z(0.25f, 0.25f, 1.0f); /* behind */
+    FX_CHECK_EQ(red_at(10, 10), 51);
+    quad_z(0.5f, 0.5f, 1.0f); /* same depth, GL_LESS: fails */
+    FX_CHECK_EQ(red_at(10, 10), 51);
+    glDepthFunc(GL_LEQUAL);
+    quad_z(0.5f, 0.5f, 0.6f); /* same depth, GL_LEQUAL: passes */
+    FX_CHECK_EQ(red_at(10, 10), 153);
+    FX_CHECK_EQ(red_at(20, 12), 153);
+    glDepthFunc(GL_LESS);
+    quad_z(0.5f + 1.0f / 8388608, 0.5f + 1.0f / 8388608, 0.8f); /* one depth step nearer */
+    FX_CHECK_EQ(red_at(10, 10), 204);
+    /* tilted: nearest vertex level with the stored depth, the rest behind */
+    quad_z(0.5f + 1.0f / 8388608, -0.5f, 0.4f);
+    FX_CHECK_EQ(red_at(10, 10), 204);
+    /* tilted the other way: in front away from its farthest vertex */
+    quad_z(0.0f, 0.9f, 1.0f);
+    FX_CHECK_EQ(red_at(6, 30), 255);
+    FX_CHECK_EQ(red_at(30, 6), 204);
+    glDisable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+}
