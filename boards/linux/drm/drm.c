@@ -482,12 +482,10 @@ static int drm_show(fx_display *d, int buf, const fx_rect *phys, int n)
     int r;
 
     /* Screen off: a flip (or its SetCrtc fallback) would switch the CRTC
-     * back on; the buffer is shown when the screen comes on. */
-    if (d->power_off) {
-        if (d->flip_cb)
-            d->flip_cb(d, d->flip_user);
+     * back on; the buffer is shown when the screen comes on. The front end
+     * paces these presents (and calls the flip callback) as vblank would. */
+    if (d->power_off)
         return 0;
-    }
 
     if (p->dirty != 0 && n > 0) {
         drmModeClip clips[FX_DAMAGE_MAX];
