@@ -53,14 +53,22 @@
  *              PNG, or PPM for a .ppm name; one %d (%03d...) is the frame
  *              number, from 1; without one each frame replaces the last.
  *              A file that cannot be written ends the loop with its error.
+ *              Displays added with fx_app_add_display write theirs after
+ *              each of their draw callbacks, to the name with ".dN" before
+ *              the extension (N its display number: f-%03d.d1.png),
+ *              numbered by that display's own count.
  *
  * Replay files are the tests/input stream format; '#' starts a comment
  * (except in the character '#'), one statement a line:
  *
- *   device N CLASS[+CLASS] [abs X0 X1 Y0 Y1] [mt X0 X1 Y0 Y1]
+ *   device N CLASS[+CLASS] [abs X0 X1 Y0 Y1] [mt X0 X1 Y0 Y1] [bus BUS]
+ *          [name NAME...]
  *                     declare virtual device N (0..7); CLASS: keyboard
  *                     mouse touch mt tablet; abs/mt: its axis ranges
- *                     (default: the screen size)
+ *                     (default: the screen size); BUS (usb i2c spi host
+ *                     virtual) and NAME (the rest of the line; default
+ *                     replay-N) are what binds it to a display
+ *                     (fx_app_bind_input)
  *   ev N TYPE CODE VALUE   a raw evdev event of device N, translated as a
  *                     real device's (rotation, calibration, keymap); TYPE
  *                     and CODE are numbers or names (KEY, REL, ABS,
