@@ -108,16 +108,22 @@ FX_TEST(backlight_fake_sysfs_scaling_power_restore)
     FX_CHECK_EQ(fx_backlight_open(&b, root, NULL), -FX_ENOENT);
 }
 
+/* A quiet memory display of w x h. */
+static void mem_options(fx_display_options *o, int32_t w, int32_t h)
+{
+    fx_display_options_init(o);
+    o->backend = FX_BACKEND_MEMORY;
+    o->memory_w = w;
+    o->memory_h = h;
+    o->console = 0;
+    o->signals = 0;
+    o->log_priority = -1;
+}
+
 FX_TEST(display_power_memory_backend)
 {
     fx_display_options o;
-    fx_display_options_init(&o);
-    o.backend = FX_BACKEND_MEMORY;
-    o.memory_w = 32;
-    o.memory_h = 16;
-    o.console = 0;
-    o.signals = 0;
-    o.log_priority = -1;
+    mem_options(&o, 32, 16);
     fx_display *d = NULL;
     FX_CHECK_EQ(fx_display_open(&d, &o), 0);
     if (!d)
@@ -138,13 +144,7 @@ FX_TEST(display_power_memory_backend)
 FX_TEST(display_power_off_paces_presents)
 {
     fx_display_options o;
-    fx_display_options_init(&o);
-    o.backend = FX_BACKEND_MEMORY;
-    o.memory_w = 16;
-    o.memory_h = 8;
-    o.console = 0;
-    o.signals = 0;
-    o.log_priority = -1;
+    mem_options(&o, 16, 8);
     fx_display *d = NULL;
     FX_CHECK_EQ(fx_display_open(&d, &o), 0);
     if (!d)
@@ -204,12 +204,7 @@ FX_TEST(app_screen_off_is_not_busy_looped)
 {
     fx_app_options o;
     fx_app_options_init(&o);
-    o.display.backend = FX_BACKEND_MEMORY;
-    o.display.memory_w = 16;
-    o.display.memory_h = 8;
-    o.display.console = 0;
-    o.display.signals = 0;
-    o.display.log_priority = -1;
+    mem_options(&o.display, 16, 8);
     o.input = 0;
     anim a = {NULL, 0};
     FX_CHECK_EQ(fx_app_open(&a.app, &o), 0);
