@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "../../boards/app/app_int.h"
+#include "../../boards/display/display_int.h"
 #include "fixel/app.h"
 #include "fixel/env.h"
 #include "fixel/error.h"
@@ -341,5 +342,61 @@ FX_TEST(app_bindings_refuse_bad_input)
     FX_CHECK_EQ(fx_app_bind_input(a, "dev0", NULL), 0);
     FX_CHECK_EQ(fx_app_bind_input(a, "dev9", fx_app_display(a)), 0);
     fx_display_close(other);
+    fx_app_close(a);
+}
+
+/* A mouse bound to the added display moves that display's software
+ * pointer, in its coordinates, and shows it there (FX_POINTER_AUTO: while
+ * a mouse is bound to it); the app's own display shows none. */
+FX_TEST(app_bound_mouse_moves_its_displays_pointer)
+{
+    fx_app_options o;
+    fx_app_options_init(&o);
+    o.input = 0;
+    o.display.backend = FX_BACKEND_MEMORY;
+    o.display.memory_w = 64;
+    o.display.memory_h = 48;
+    o.display.log_priority = -1;
+    fx_app *a = NULL;
+    FX_CHECK_EQ(fx_app_open(&a, &o), 0);
+    if (!a)
+        return;
+    fx_display_options d2 = o.display;
+    d2.memory_w = 40;
+    d2.memory_h = 30;
+    fx_display *second = NULL;
+    FX_CHECK_EQ(fx_app_add_display(a, &d2, NULL, NULL, &second), 0);
+    fx_callbacks none;
+    memset(&none, 0, sizeof none);
+    FX_CHECK_EQ(fx_app_set_display_callbacks(a, second, &none, NULL), 0);
+    /* a mouse as the evdev reader would have it, without a device behind it */
+    fx_evdev *e = calloc(1, sizeof *e);
+    if (!e || !second) {
+        free(e);
+        fx_app_close(a);
+        return;
+    }
+    e->fd = -1;
+    snprintf(e->path, sizeof e->path, "/dev/input/event9");
+    snprintf(e->name, sizeof e->name, "USB Mouse");
+    e->bus = 0x03;
+    fx_input_dev_init(&e->st, FX_DEV_MOUSE);
+    a->ev.devs[a->ev.ndevs++] = e;
+    fx_app_pointer_sync(a);
+    FX_CHECK_EQ(a->disp->ptr.visible, 1); /* unbound: the app's own display's */
+    FX_CHECK_EQ(second->ptr.visible, 0);
+    FX_CHECK_EQ(fx_app_bind_input(a, "/dev/input/event9", second), 0);
+    fx_raw_event mv[] = {{0, FX_IN_REL, FX_IN_REL_X, 7}, {0, FX_IN_REL, FX_IN_REL_Y, -4},
+                         {0, FX_IN_SYN, FX_IN_SYN_REPORT, 0}};
+    for (int i = 0; i < 3; i++)
+        fx_app_feed(a, &e->st, &mv[i]);
+    fx_app_pointer_sync(a);
+    FX_CHECK_EQ(a->disp->ptr.visible, 0);
+    FX_CHECK_EQ(second->ptr.visible, 1);
+    /* from the centre of the 40x30 display, not of the 64x48 one */
+    FX_CHECK(second->ptr.x == 20 + 7 && second->ptr.y == 15 - 4);
+    FX_CHECK(fx_app_input_display(a, "USB Mouse") == second);
+    FX_CHECK(fx_app_input_display(a, "/dev/input/event9") == second);
+    free(a->ev.devs[--a->ev.ndevs]); /* ours, without an fd */
     fx_app_close(a);
 }
