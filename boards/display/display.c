@@ -650,8 +650,11 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n)
     fx_vt_handle_events(d->vt);
     /* Switched away, fbdev memory shows another VT's console: leave it
      * alone; the return to our VT redraws from the shadow. */
-    if (d->away && d->info.backend == FX_BACKEND_FBDEV)
+    if (d->away && d->info.backend == FX_BACKEND_FBDEV) {
+        if (!d->flip_pending)
+            pace_start(d); /* not drawn, but paced like the others */
         return 0;
+    }
     wait_flip(d);
     int target = d->nbuf == 2 ? d->back : 0;
     fx_rect ptr_old = d->shown >= 0 ? d->ptr.save[d->shown].r : no_rect;
