@@ -158,3 +158,9 @@ int fx_app_options_from_env(fx_app_options *o)
     }
     return r;
 }
+
+int fx_app_bind_inputs_from_env(fx_app *a)
+{
+    const char *e = var("FIXEL_INPUT_BIND");
+    return e ? fx_app_bind_inputs(a, e) : 0;
+}

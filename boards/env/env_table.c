@@ -46,6 +46,8 @@ static const fx_env_var table[] = {
      "software mouse pointer"},
     {"FIXEL_POINTERCAL", FX_ENV_PATH, NULL, NULL, 0, 0, 0, "library", "tslib pointercal file (touch calibration)"},
     {"FIXEL_TOUCH", FX_ENV_TEXT, NULL, NULL, 0, 0, 0, "library", "touch axes: swap,invertx,inverty"},
+    {"FIXEL_INPUT_BIND", FX_ENV_TEXT, NULL, NULL, 0, 0, 0, "library",
+     "input devices bound to displays: DEVICE=DISPLAY;..."},
     {"FIXEL_BUTTONS", FX_ENV_TEXT, NULL, NULL, 0, 0, 0, "library", "GPIO button map chip:line=key[/low][@ms],..."},
     {"FIXEL_REPLAY", FX_ENV_PATH, NULL, NULL, 0, 0, 0, "library", "input from a replay file instead of /dev/input"},
     {"FIXEL_FRAMES", FX_ENV_INT, NULL, NULL, 0, 1, 1000000000L, "library", "stop after N frames"},

@@ -44,6 +44,10 @@ int fx_display_options_from_env(fx_display_options *o);
  * FIXEL_FRAMES that is not a positive integer returns -FX_EINVAL (a
  * scripted run must not run forever instead). */
 int fx_app_options_from_env(fx_app_options *o);
+/* After fx_app_open: FIXEL_INPUT_BIND ("DEVICE=DISPLAY;...", see
+ * fx_app_bind_inputs) as input bindings of the open app. Returns 0 (also
+ * when unset) or the error of fx_app_bind_inputs (logged). */
+int fx_app_bind_inputs_from_env(fx_app *a);
 
 /* The table of every FIXEL_* variable fixel reads (the library's, the
  * GLUT layer's and fixel-kiosk's), with its type and range; `fixel-info
