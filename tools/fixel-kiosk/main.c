@@ -79,6 +79,12 @@ typedef struct kimg {
     struct timespec mtim;
 } kimg;
 
+typedef struct kline {
+    char buf[KIOSK_LINE_MAX + 1];
+    size_t len;
+    int overlong;
+} kline;
+
 typedef struct kiosk {
     kiosk_config cfg;
     fx_app *app;
@@ -90,9 +96,9 @@ typedef struct kiosk {
     int status_dirty, full;
     int64_t clock_sec;
     int fd;
-    char line[KIOSK_LINE_MAX + 1];
-    size_t linelen;
-    int overlong;
+    /* one line buffer per source: a partial stdin line must not swallow an
+     * MQTT payload arriving meanwhile (issue #24 review) */
+    kline in, mqline;
     int frame_end; /* headless: an "@frame" line ended the frame */
     int64_t frame_step;
     int32_t W, H;
@@ -135,13 +141,13 @@ static void mark_sources(kiosk *k, uint32_t mask)
         if (k->cfg.widgets[i].source >= 0 && (mask >> k->cfg.widgets[i].source & 1)) k->dirty[i] = 1;
 }
 
-static void end_line(kiosk *k)
+static void end_line(kiosk *k, kline *lb)
 {
-    const char *l = k->line;
-    size_t n = k->linelen;
-    k->linelen = 0;
-    if (k->overlong) {
-        k->overlong = 0;
+    const char *l = lb->buf;
+    size_t n = lb->len;
+    lb->len = 0;
+    if (lb->overlong) {
+        lb->overlong = 0;
         k->lines++;
         k->bad++;
         k->status_dirty = 1;
@@ -171,12 +177,12 @@ static void end_line(kiosk *k)
     else if (r == KIOSK_LINE_OK) mark_sources(k, k->cfg.changed);
 }
 
-static void feed(kiosk *k, const char *buf, size_t n)
+static void feed(kiosk *k, kline *lb, const char *buf, size_t n)
 {
     for (size_t i = 0; i < n; i++) {
-        if (buf[i] == '\n') { end_line(k); continue; }
-        if (k->linelen < KIOSK_LINE_MAX) k->line[k->linelen++] = buf[i];
-        else k->overlong = 1;
+        if (buf[i] == '\n') { end_line(k, lb); continue; }
+        if (lb->len < KIOSK_LINE_MAX) lb->buf[lb->len++] = buf[i];
+        else lb->overlong = 1;
     }
 }
 
@@ -189,12 +195,12 @@ static void feed_frame(kiosk *k)
     while (!k->frame_end && k->fd >= 0) {
         ssize_t r = read(k->fd, &c, 1);
         if (r <= 0) {
-            if (k->linelen || k->overlong) end_line(k);
+            if (k->in.len || k->in.overlong) end_line(k, &k->in);
             if (k->fd > 0) close(k->fd);
             k->fd = -1;
             break;
         }
-        feed(k, &c, 1);
+        feed(k, &k->in, &c, 1);
     }
 }
 
@@ -204,7 +210,7 @@ static void feed_available(kiosk *k)
     char buf[4096];
     for (int rounds = 0; rounds < 64 && k->fd >= 0; rounds++) {
         ssize_t r = read(k->fd, buf, sizeof buf);
-        if (r > 0) { feed(k, buf, (size_t)r); continue; }
+        if (r > 0) { feed(k, &k->in, buf, (size_t)r); continue; }
         if (r < 0 && errno == EINTR) continue;
         break;
     }
@@ -1011,8 +1017,8 @@ static void mqtt_message(kiosk *k, const kmq_msg *m)
         matched = 1;
         if (sb->source < 0) {
             /* data lines, exactly as on stdin; a last line needs no newline */
-            feed(k, m->payload, m->plen);
-            if (k->linelen || k->overlong) end_line(k);
+            feed(k, &k->mqline, m->payload, m->plen);
+            if (k->mqline.len || k->mqline.overlong) end_line(k, &k->mqline);
             continue;
         }
         char v[KIOSK_LINE_MAX + 1];
