@@ -82,7 +82,7 @@ cfgerr wide 'output HDMI-A-1\nmqtt host=h\n' "2:1: this directive is for the who
 # a widget inside its own section's grid (2x1 here), not the other's (1x2)
 printf 'output A\ngrid 2x1\nwidget clock col=1 row=0\noutput B\ngrid 1x2\nwidget clock col=1 row=0\n' > "$out/grid.conf"
 "$bin" --headless "$out/grid.conf" </dev/null >/dev/null 2>"$out/grid.txt" && bad "a widget outside its section's grid was accepted" ||
-    { grep -q "outside the grid" "$out/grid.txt" && ok || bad "grid: $(cat "$out/grid.txt")"; }
+    { grep -q "grid.conf:6:1: a widget lies outside the grid" "$out/grid.txt" && ok || bad "grid: $(cat "$out/grid.txt")"; }
 "$bin" --keys | grep -q "^output *rotation *word .*0|90|180|270" && ok || bad "--keys lacks output rotation"
 "$bin" --keys | grep -q "^output *size *AxB *16..8192" && ok || bad "--keys lacks output size"
 echo "kiosk-screens: $P passed, $F failed"

@@ -46,6 +46,7 @@ typedef struct kiosk_widget {
     char label[KIOSK_TEXT_MAX];
     char unit[KIOSK_TEXT_MAX];
     int screen;                /* index into kiosk_config.outputs; 0 without output sections */
+    int line;                  /* where it was declared (the grid is checked after the whole file) */
 } kiosk_widget;
 
 typedef struct kiosk_source {

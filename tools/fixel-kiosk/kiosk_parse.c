@@ -803,10 +803,11 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
             msg = "this directive is for the whole kiosk: put it before the first output";
         } else if (tok_is(t, "widget")) {
             msg = parse_widget(k, q, eol);
-            if (!msg && k->noutputs) {
-                /* the grid check below needs the section's grid */
+            if (!msg) {
+                /* the grid check below needs the section's grid, and says where */
                 kiosk_widget *w = &k->widgets[k->nwidgets - 1];
-                w->screen = k->noutputs - 1;
+                w->screen = k->noutputs ? k->noutputs - 1 : 0;
+                w->line = line;
             }
         }
         else if (tok_is(t, "mqtt")) msg = parse_mqtt(k, q, eol);
@@ -903,6 +904,8 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
         int gc = k->noutputs ? k->outputs[w->screen].cols : k->cols;
         int gr = k->noutputs ? k->outputs[w->screen].rows : k->rows;
         if (w->col + w->w > gc || w->row + w->h > gr) {
+            k->errline = w->line;
+            k->errcol = 1;
             if (err && errsize) {
                 const char *m = "a widget lies outside the grid";
                 size_t o = 0;
