@@ -39,6 +39,7 @@ struct kmq {
     unsigned head, count;
     mosquitto_property *props; /* CONNECT: maximum packet size, session expiry */
     atomic_int renew;          /* reconnect now: the control prefix (and will) changed */
+    int will_dirty;            /* under lock: the will follows a new prefix at the next CONNECT */
 };
 
 int kmq_available(void) { return 1; }
@@ -150,6 +151,13 @@ static void *run(void *arg)
     int first = 1;
     while (!m->stop) {
         if (!m->sock_up) {
+            pthread_mutex_lock(&m->lock);
+            if (m->will_dirty) {
+                if (m->cfg.prefix[0]) mosquitto_will_set(m->mosq, m->will_topic, 7, "offline", 1, true);
+                else mosquitto_will_clear(m->mosq);
+                m->will_dirty = 0;
+            }
+            pthread_mutex_unlock(&m->lock);
             int rc = first ? mosquitto_connect_bind_v5(m->mosq, m->cfg.host, m->cfg.port, m->cfg.keepalive, NULL,
                                                        m->props)
                            : mosquitto_reconnect(m->mosq); /* the same CONNECT properties */
@@ -388,11 +396,8 @@ void kmq_set_subs(kmq *m, const kiosk_mqtt_cfg *cfg)
             if (m->st.connected) mosquitto_publish(m->mosq, NULL, m->will_topic, 7, "offline", 1, true);
         }
         memcpy(m->cfg.prefix, cfg->prefix, sizeof m->cfg.prefix);
-        if (m->cfg.prefix[0]) {
-            snprintf(m->will_topic, sizeof m->will_topic, "%s/online", m->cfg.prefix);
-            mosquitto_will_set(m->mosq, m->will_topic, 7, "offline", 1, true);
-        } else
-            mosquitto_will_clear(m->mosq);
+        if (m->cfg.prefix[0]) snprintf(m->will_topic, sizeof m->will_topic, "%s/online", m->cfg.prefix);
+        m->will_dirty = 1; /* set by the client thread before its next CONNECT, which reads it */
         /* The broker holds the will given at CONNECT: a clean disconnect
          * (no will sent) and an immediate reconnect hand it the new one;
          * on_connect then subscribes PREFIX/set/# and says online. */
