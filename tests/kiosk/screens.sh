@@ -79,6 +79,9 @@ cfgerr noname 'output\n' "1:1: output needs a connector name"
 cfgerr five 'output A\noutput B\noutput C\noutput D\noutput E\n' "5:8: more than 4 outputs"
 cfgerr after 'widget clock col=0 row=0\noutput HDMI-A-1\n' "2:1: output after widgets"
 cfgerr wide 'output HDMI-A-1\nmqtt host=h\n' "2:1: this directive is for the whole kiosk"
+cfgerr pages 'page one\noutput HDMI-A-1\n' "2:1: output sections and pages (page, carousel, touch) do not go together yet"
+cfgerr pages2 'output HDMI-A-1\ncarousel dwell=5\n' "2:1: output sections and pages"
+cfgerr button 'output A\nwidget clock col=0 row=0\noutput B\nwidget button go page=next\n' "4:1: button widgets go on the first output"
 # a widget inside its own section's grid (2x1 here), not the other's (1x2)
 printf 'output A\ngrid 2x1\nwidget clock col=1 row=0\noutput B\ngrid 1x2\nwidget clock col=1 row=0\n' > "$out/grid.conf"
 "$bin" --headless "$out/grid.conf" </dev/null >/dev/null 2>"$out/grid.txt" && bad "a widget outside its section's grid was accepted" ||

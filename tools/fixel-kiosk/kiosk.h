@@ -23,6 +23,7 @@
 
 typedef enum kiosk_type {
     KIOSK_NUMBER, KIOSK_GAUGE, KIOSK_BAR, KIOSK_SPARK, KIOSK_TEXT, KIOSK_CLOCK, KIOSK_HEAT, KIOSK_IMAGE,
+    KIOSK_BUTTON, /* kiosk_pages.h: no source; a tap publishes and/or turns the page */
     KIOSK_NTYPES
 } kiosk_type;
 
@@ -47,6 +48,8 @@ typedef struct kiosk_widget {
     char unit[KIOSK_TEXT_MAX];
     int screen;                /* index into kiosk_config.outputs; 0 without output sections */
     int line;                  /* where it was declared (the grid is checked after the whole file) */
+    int page;                  /* the page it is on (kiosk_pages.h) */
+    int button;                /* button widgets: index into pg.buttons; else -1 */
 } kiosk_widget;
 
 typedef struct kiosk_source {
@@ -122,6 +125,7 @@ typedef struct kiosk_output {
     char title[KIOSK_TEXT_MAX];
     int line;                  /* where it was declared */
 } kiosk_output;
+#include "kiosk_pages.h"
 
 typedef struct kiosk_config {
     int cols, rows;
@@ -141,6 +145,7 @@ typedef struct kiosk_config {
     kiosk_screen_cfg screen;
     int noutputs;              /* 0: one screen, the layout above (as before sections existed) */
     kiosk_output outputs[KIOSK_MAX_OUTPUTS];
+    kiosk_pages_cfg pg;        /* pages, carousel, touch, buttons (kiosk_pages.h) */
     const char *errat;         /* parser scratch: the token an error is about */
     int errline, errcol;       /* of the last config error, 1-based (col 1 when the line as a whole is wrong) */
 } kiosk_config;
