@@ -89,6 +89,14 @@ FX_TEST(backlight_fake_sysfs_scaling_power_restore)
     fx_backlight_restore(&b);
     FX_CHECK_EQ(get(dev, "brightness"), 200);
     FX_CHECK_EQ(get(dev, "bl_power"), 0);
+    /* Found dark (a kiosk that crashed with the screen off): the restore
+     * lights it, it does not put the darkness back (issue #24 review). */
+    put(dev, "bl_power", "4\n");
+    FX_CHECK_EQ(fx_backlight_open(&b, root, "rpi_backlight"), 0);
+    FX_CHECK_EQ(b.saved_power, 4);
+    fx_backlight_restore(&b);
+    FX_CHECK_EQ(get(dev, "bl_power"), 0);
+    FX_CHECK_EQ(get(dev, "brightness"), 200);
 
     /* Named, without bl_power: brightness only; small ranges round. */
     FX_CHECK_EQ(fx_backlight_open(&b, root, "zz_other"), 0);

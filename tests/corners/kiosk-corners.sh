@@ -108,6 +108,8 @@ widget number a col=0 row=0";;
         screen) cfg="grid 1x1
 screen backlight=none $key=$val
 widget number a col=0 row=0";;
+        output) cfg="output HDMI-A-1 $key=$val
+widget number a col=0 row=0";;
         widget)
             ty="number a"; pre=""
             case "$key" in cells) ty="heat a";; smooth) ty="heat a cells=2x2";;

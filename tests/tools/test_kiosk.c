@@ -310,3 +310,41 @@ FX_TEST(kiosk_topic_match_and_set_value)
     FX_CHECK_EQ(kiosk_set_value(&K, 2, "running", 7, 10), KIOSK_LINE_OK);
     FX_CHECK_EQ(kiosk_set_value(&K, 5, "1", 1, 10), KIOSK_LINE_BAD);
 }
+
+/* Output sections (issue #25): each screen's grid, title and widgets; the
+ * sources shared; the errors with their place. */
+FX_TEST(kiosk_output_sections)
+{
+    char err[128];
+    FX_CHECK_EQ(cfg("grid 3x3\ntitle All\noutput HDMI-A-1\nwidget number t col=2 row=2\n"
+                    "output DSI-1 rotation=270 size=480x800\ngrid 1x2\ntitle Panel\nwidget bar t row=1\n"
+                    "widget text s\n", err), 0);
+    FX_CHECK_EQ(K.noutputs, 2);
+    FX_CHECK(!strcmp(K.outputs[0].name, "HDMI-A-1") && !strcmp(K.outputs[1].name, "DSI-1"));
+    /* the section inherits what came before it, then has its own */
+    FX_CHECK(K.outputs[0].cols == 3 && K.outputs[0].rows == 3 && !strcmp(K.outputs[0].title, "All"));
+    FX_CHECK(K.outputs[0].rotation == -1 && K.outputs[0].width == 0);
+    FX_CHECK(K.outputs[1].cols == 1 && K.outputs[1].rows == 2 && !strcmp(K.outputs[1].title, "Panel"));
+    FX_CHECK(K.outputs[1].rotation == 270 && K.outputs[1].width == 480 && K.outputs[1].height == 800);
+    FX_CHECK(K.nwidgets == 3 && K.widgets[0].screen == 0 && K.widgets[1].screen == 1 && K.widgets[2].screen == 1);
+    /* one source t for both screens: a line updates the widgets of each */
+    FX_CHECK_EQ(K.nsources, 2);
+    FX_CHECK(K.widgets[0].source == K.widgets[1].source);
+    FX_CHECK_EQ(line("t=5", 0), KIOSK_LINE_OK);
+    /* without sections: screen 0, no outputs */
+    FX_CHECK_EQ(cfg("widget number t\n", err), 0);
+    FX_CHECK(K.noutputs == 0 && K.widgets[0].screen == 0);
+    FX_CHECK_EQ(cfg("output A\noutput B\noutput A\n", err), -1);
+    FX_CHECK(K.errline == 3 && K.errcol == 8 && strstr(err, "output named twice (first on line 1)"));
+    FX_CHECK_EQ(cfg("output A speed=2\n", err), -1);
+    FX_CHECK(K.errline == 1 && K.errcol == 10 && strstr(err, "unknown output key"));
+    FX_CHECK_EQ(cfg("output A rotation=45\n", err), -1);
+    FX_CHECK_EQ(cfg("output A size=20000x10\n", err), -1);
+    FX_CHECK(strstr(err, "size=20000x10: expected 16..8192 each"));
+    FX_CHECK_EQ(cfg("output A\nscreen idle=5\n", err), -1);
+    FX_CHECK(K.errline == 2 && K.errcol == 1);
+    FX_CHECK_EQ(cfg("output A\ngrid 1x1\nwidget clock col=1\n", err), -1);
+    FX_CHECK(K.errline == 3 && strstr(err, "outside the grid"));
+    FX_CHECK_EQ(cfg("output A\noutput B\noutput C\noutput D\noutput E\n", err), -1);
+    FX_CHECK(K.errline == 5 && strstr(err, "more than 4 outputs"));
+}

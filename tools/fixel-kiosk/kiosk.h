@@ -46,6 +46,8 @@ typedef struct kiosk_widget {
     int smooth;                /* heat: bilinear between cell centres; image: bilinear scaling */
     char label[KIOSK_TEXT_MAX];
     char unit[KIOSK_TEXT_MAX];
+    int screen;                /* index into kiosk_config.outputs; 0 without output sections */
+    int line;                  /* where it was declared (the grid is checked after the whole file) */
     int page;                  /* the page it is on (kiosk_pages.h) */
     int button;                /* button widgets: index into pg.buttons; else -1 */
 } kiosk_widget;
@@ -109,6 +111,20 @@ typedef struct kiosk_screen_cfg {
     int nsched;
 } kiosk_screen_cfg;
 
+/* "output NAME [rotation=R] [size=WxH]" starts one screen's section
+ * (docs/kiosk.md, "Several screens"): the grid, title and widgets after it,
+ * up to the next output line, are that screen's. NAME is the connector
+ * (HDMI-A-1, DSI-1...), searched on every card as FIXEL_CONNECTOR is. */
+#define KIOSK_MAX_OUTPUTS 4 /* FX_APP_MAX_DISPLAYS */
+#define KIOSK_OUTPUT_MAX 32 /* connector names, including the NUL */
+typedef struct kiosk_output {
+    char name[KIOSK_OUTPUT_MAX];
+    int rotation;              /* -1: the display's default (FIXEL_ROTATION, the panel's orientation) */
+    int cols, rows;
+    int width, height;         /* 0: the display's size */
+    char title[KIOSK_TEXT_MAX];
+    int line;                  /* where it was declared */
+} kiosk_output;
 #include "kiosk_pages.h"
 
 typedef struct kiosk_config {
@@ -127,6 +143,8 @@ typedef struct kiosk_config {
     char msg[96];              /* the last range message (from kiosk_keys) */
     kiosk_mqtt_cfg mqtt;
     kiosk_screen_cfg screen;
+    int noutputs;              /* 0: one screen, the layout above (as before sections existed) */
+    kiosk_output outputs[KIOSK_MAX_OUTPUTS];
     kiosk_pages_cfg pg;        /* pages, carousel, touch, buttons (kiosk_pages.h) */
     const char *errat;         /* parser scratch: the token an error is about */
     int errline, errcol;       /* of the last config error, 1-based (col 1 when the line as a whole is wrong) */

@@ -47,3 +47,5 @@ $(KIOSK_STAMP):
 	@echo '$(KIOSK_FEATURES)' > $@
 TEST_SUITES += "sh tests/kiosk/notify.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-notify"
 TEST_DEB_PKGS += libsystemd-dev python3
+# output sections: one process, one screen per section (issue #25)
+TEST_SUITES += "sh tests/kiosk/screens.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-screens"

@@ -19,6 +19,7 @@
 
 #include <cJSON.h>
 #include <mosquitto.h>
+#include <mqtt_protocol.h>
 
 struct kmq {
     kiosk_mqtt_cfg cfg;
@@ -36,6 +37,9 @@ struct kmq {
     /* the ring */
     kmq_msg *q;
     unsigned head, count;
+    mosquitto_property *props; /* CONNECT: maximum packet size, session expiry */
+    atomic_int renew;          /* reconnect now: the control prefix (and will) changed */
+    int will_dirty;            /* under lock: the will follows a new prefix at the next CONNECT */
 };
 
 int kmq_available(void) { return 1; }
@@ -78,8 +82,9 @@ static void on_connect(struct mosquitto *mosq, void *user, int rc)
     m->st.last_error[0] = 0;
     m->backoff = m->cfg.backoff_min;
     subscribe_all(m);
-    pthread_mutex_unlock(&m->lock);
+    /* under the lock: a reload may change the prefix (kmq_set_subs) */
     if (m->cfg.prefix[0]) mosquitto_publish(m->mosq, NULL, m->will_topic, 6, "online", 1, true);
+    pthread_mutex_unlock(&m->lock);
     fprintf(stderr, "fixel-kiosk: mqtt connected to %s:%d\n", m->cfg.host, m->cfg.port);
 }
 
@@ -146,8 +151,16 @@ static void *run(void *arg)
     int first = 1;
     while (!m->stop) {
         if (!m->sock_up) {
-            int rc = first ? mosquitto_connect(m->mosq, m->cfg.host, m->cfg.port, m->cfg.keepalive)
-                           : mosquitto_reconnect(m->mosq);
+            pthread_mutex_lock(&m->lock);
+            if (m->will_dirty) {
+                if (m->cfg.prefix[0]) mosquitto_will_set(m->mosq, m->will_topic, 7, "offline", 1, true);
+                else mosquitto_will_clear(m->mosq);
+                m->will_dirty = 0;
+            }
+            pthread_mutex_unlock(&m->lock);
+            int rc = first ? mosquitto_connect_bind_v5(m->mosq, m->cfg.host, m->cfg.port, m->cfg.keepalive, NULL,
+                                                       m->props)
+                           : mosquitto_reconnect(m->mosq); /* the same CONNECT properties */
             if (rc == MOSQ_ERR_SUCCESS) {
                 first = 0;
                 m->sock_up = 1;
@@ -162,6 +175,14 @@ static void *run(void *arg)
             continue;
         }
         int rc = mosquitto_loop(m->mosq, 100, 1);
+        if (rc != MOSQ_ERR_SUCCESS && !m->stop && m->renew) {
+            /* kmq_set_subs disconnected for a new prefix: back at once */
+            m->renew = 0;
+            went_offline(m);
+            m->sock_up = 0;
+            first = 0;
+            continue;
+        }
         if (rc != MOSQ_ERR_SUCCESS && !m->stop) {
             set_error(m, rc == MOSQ_ERR_ERRNO ? strerror(errno)
                        : rc == MOSQ_ERR_CONN_LOST ? "connection lost" : mosquitto_strerror(rc));
@@ -245,12 +266,31 @@ kmq *kmq_start(const kiosk_mqtt_cfg *cfg, const char *version, char *err, size_t
         free(m);
         return NULL;
     }
+    /* MQTT v5 for its Maximum Packet Size: the broker drops what is larger
+     * instead of sending it, so a 256 KiB (or 256 MiB) publish is never
+     * buffered whole by libmosquitto before the kiosk could refuse it. v5
+     * ends a session at disconnect unless it has an expiry: a persistent one
+     * never expires, as in 3.1.1. */
+    if (!fail && (mosquitto_int_option(m->mosq, MOSQ_OPT_PROTOCOL_VERSION, MQTT_PROTOCOL_V5) ||
+                  mosquitto_property_add_int32(&m->props, MQTT_PROP_MAXIMUM_PACKET_SIZE, KMQ_PACKET_MAX) ||
+                  (cfg->persistent &&
+                   mosquitto_property_add_int32(&m->props, MQTT_PROP_SESSION_EXPIRY_INTERVAL, UINT32_MAX))))
+        fail = "cannot ask for MQTT v5";
+    if (fail) {
+        if (*fail) snprintf(err, errsize, "mqtt: %s", fail);
+        mosquitto_property_free_all(&m->props);
+        if (m->mosq) mosquitto_destroy(m->mosq);
+        free(m->q);
+        free(m);
+        return NULL;
+    }
     mosquitto_threaded_set(m->mosq, true);
     mosquitto_connect_callback_set(m->mosq, on_connect);
     mosquitto_disconnect_callback_set(m->mosq, on_disconnect);
     mosquitto_message_callback_set(m->mosq, on_message);
     if (pthread_create(&m->thread, NULL, run, m)) {
         snprintf(err, errsize, "mqtt: cannot start its thread");
+        mosquitto_property_free_all(&m->props);
         mosquitto_destroy(m->mosq);
         free(m->q);
         free(m);
@@ -293,6 +333,7 @@ void kmq_stop(kmq *m)
         }
     }
     mosquitto_destroy(m->mosq);
+    mosquitto_property_free_all(&m->props);
     pthread_cond_destroy(&m->room);
     pthread_mutex_destroy(&m->lock);
     free(m->q);
@@ -330,10 +371,10 @@ void kmq_publish(kmq *m, const char *sub, const char *payload, int retain)
 {
     char t[KIOSK_TOPIC_MAX + 32];
     pthread_mutex_lock(&m->lock);
-    int up = m->st.connected;
-    pthread_mutex_unlock(&m->lock);
-    if (!m->cfg.prefix[0] || !up) return;
+    int up = m->st.connected && m->cfg.prefix[0];
     snprintf(t, sizeof t, "%s/%s", m->cfg.prefix, sub);
+    pthread_mutex_unlock(&m->lock);
+    if (!up) return;
     mosquitto_publish(m->mosq, NULL, t, (int)strlen(payload), payload, 1, retain != 0);
 }
 
@@ -354,6 +395,30 @@ void kmq_set_subs(kmq *m, const kiosk_mqtt_cfg *cfg)
     for (int i = 0; i < m->cfg.nsubs; i++) mosquitto_unsubscribe(m->mosq, NULL, m->cfg.subs[i].topic);
     m->cfg.nsubs = cfg->nsubs;
     memcpy(m->cfg.subs, cfg->subs, sizeof cfg->subs);
+    if (strcmp(m->cfg.prefix, cfg->prefix)) {
+        /* A new control prefix: the old one is left (its control topic
+         * unsubscribed, its online flag says offline) and the new one
+         * taken, will included, or the kiosk would answer on a prefix the
+         * main loop no longer reads and never on the new one. */
+        if (m->cfg.prefix[0]) {
+            char t[KIOSK_TOPIC_MAX + 16];
+            snprintf(t, sizeof t, "%s/set/#", m->cfg.prefix);
+            mosquitto_unsubscribe(m->mosq, NULL, t);
+            if (m->st.connected) mosquitto_publish(m->mosq, NULL, m->will_topic, 7, "offline", 1, true);
+        }
+        memcpy(m->cfg.prefix, cfg->prefix, sizeof m->cfg.prefix);
+        if (m->cfg.prefix[0]) snprintf(m->will_topic, sizeof m->will_topic, "%s/online", m->cfg.prefix);
+        m->will_dirty = 1; /* set by the client thread before its next CONNECT, which reads it */
+        /* The broker holds the will given at CONNECT: a clean disconnect
+         * (no will sent) and an immediate reconnect hand it the new one;
+         * on_connect then subscribes PREFIX/set/# and says online. */
+        if (m->st.connected) {
+            m->renew = 1;
+            mosquitto_disconnect(m->mosq);
+        }
+        pthread_mutex_unlock(&m->lock);
+        return;
+    }
     /* subscribing again also brings the retained values of the topics */
     if (m->st.connected) subscribe_all(m);
     pthread_mutex_unlock(&m->lock);

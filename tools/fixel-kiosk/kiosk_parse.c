@@ -159,7 +159,7 @@ static int find_source(const kiosk_config *k, const char *s, size_t n)
 /* tests/corners/kiosk-corners.sh checks this list against kiosk_keys */
 #define UNKNOWN_DIRECTIVE \
     "unknown directive (title grid size stale history bg panel fg columns widget mqtt mqtt_tls subscribe screen schedule " \
-    "page carousel touch)"
+    "page carousel touch output)"
 #define ALLW 0xFFu /* the widgets that show a source */
 #define BTNW (1u << KIOSK_BUTTON)
 #define LAYW (ALLW | BTNW)
@@ -232,6 +232,11 @@ const kiosk_key kiosk_keys[] = {
     {"screen", "brightness", 'i', 0, 100, 0, "percent set at start (default: leave it)"},
     {"screen", "idle", 'i', 0, 1440, 0, "minutes without input before the screen goes dark (0: never)"},
     {"directive", "schedule", 't', 0, 0, 0, "key=value...: when the screen is on (keys: scope schedule; up to 8 lines)"},
+    {"directive", "output", 't', 1, KIOSK_OUTPUT_MAX - 1, 0,
+     "NAME key=value...: one screen's section, up to 4 (keys: scope output); grid, title, widgets below are its"},
+    {"output", "NAME", 't', 1, KIOSK_OUTPUT_MAX - 1, 0, "the connector (HDMI-A-1, DSI-1...), on any card"},
+    {"output", "rotation", 'w', 0, 0, 0, "0|90|180|270 (default: FIXEL_ROTATION, else the panel's orientation)"},
+    {"output", "size", 'p', 16, 8192, 0, "WxH pixels of a memory display (headless, FIXEL_BACKEND=memory)"},
     {"schedule", "on", 't', 1, 5, 0, "HH:MM the screen comes on"},
     {"schedule", "off", 't', 1, 5, 0, "HH:MM it goes off (before on: the next day)"},
     {"schedule", "days", 't', 3, 27, 0, "mon..sun, lists and ranges: mon-fri, sat,sun (default: every day)"},
@@ -594,6 +599,74 @@ static const char *parse_screen(kiosk_config *k, const char *p, const char *end)
     return NULL;
 }
 
+/* "output NAME key=value...": a new screen section; grid, size and title
+ * set before the first one are its defaults. */
+static const char *parse_output(kiosk_config *k, const char *p, const char *end, int line)
+{
+    tok t, v;
+    const kiosk_key *q;
+    int iv = 0, r;
+    if (next_tok(&p, end, &t) != 1) { k->errat = NULL; return "output needs a connector name (HDMI-A-1, DSI-1...)"; }
+    k->errat = t.s;
+    q = kiosk_key_find("output", "NAME", 4);
+    if (t.n > (size_t)q->max) return range_msg(k, q, t);
+    for (size_t i = 0; i < t.n; i++)
+        if (!is_name_char(t.s[i]) || t.s[i] == '/') return "output: a connector name (letters, digits, - _ .)";
+    for (int i = 0; i < k->noutputs; i++)
+        if (strlen(k->outputs[i].name) == t.n && !memcmp(k->outputs[i].name, t.s, t.n)) {
+            /* the line of the first, in the message (no stdio here) */
+            static const char pre[] = "output named twice (first on line ";
+            char *o = k->msg, *e = k->msg + sizeof k->msg - 2;
+            for (const char *c = pre; *c && o < e; c++) *o++ = *c;
+            char num[12];
+            int n = 0, l = k->outputs[i].line;
+            do { num[n++] = (char)('0' + l % 10); l /= 10; } while (l && n < 11);
+            while (n && o < e) *o++ = num[--n];
+            *o++ = ')';
+            *o = 0;
+            return k->msg;
+        }
+    if (k->noutputs >= KIOSK_MAX_OUTPUTS) return "more than 4 outputs";
+    kiosk_output *s = &k->outputs[k->noutputs];
+    memset(s, 0, sizeof *s);
+    copy_str(s->name, sizeof s->name, t.s, t.n);
+    s->rotation = -1;
+    s->cols = k->cols;
+    s->rows = k->rows;
+    s->width = k->width;
+    s->height = k->height;
+    memcpy(s->title, k->title, sizeof s->title);
+    s->line = line;
+    while ((r = next_tok(&p, end, &t)) == 1) {
+        const char *e = kv_parse(k, "output", t, &q, &v, &iv);
+        if (e) return e;
+        if (!q || q->name[0] < 'a') return "unknown output key (rotation size)";
+        if (!strcmp(q->name, "rotation")) {
+            static const char *const deg[] = {"0", "90", "180", "270"};
+            s->rotation = -1;
+            for (int i = 0; i < 4; i++)
+                if (tok_is(v, deg[i])) s->rotation = 90 * i;
+            if (s->rotation < 0) return "rotation: 0, 90, 180 or 270";
+        } else if (parse_pair(v, (int)q->min, (int)q->max, &s->width, &s->height))
+            return range_msg(k, q, v);
+    }
+    if (r < 0) return "unterminated quote";
+    k->errat = NULL;
+    k->noutputs++;
+    return NULL;
+}
+
+/* Directives for the whole kiosk: before the first output section, so
+ * that nobody reads one inside a section as that screen's. */
+static int kiosk_wide(tok t)
+{
+    static const char *const w[] = {"mqtt", "mqtt_tls", "subscribe", "screen", "schedule", "stale",
+                                    "history", "columns", "bg", "panel", "fg"};
+    for (size_t i = 0; i < sizeof w / sizeof w[0]; i++)
+        if (tok_is(t, w[i])) return 1;
+    return 0;
+}
+
 /* "7:05" or "07:05" into minutes after midnight; -1 when not a time. */
 static int parse_hhmm(tok v)
 {
@@ -895,7 +968,7 @@ static const char *check_pages(kiosk_config *k)
 int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, size_t errsize)
 {
     const char *p = buf, *end = buf + len;
-    int line = 0;
+    int line = 0, saw_pages = 0; /* page, carousel or touch lines (not with output sections yet) */
     memset(k, 0, sizeof *k);
     k->cols = k->rows = 2;
     k->stale_ms = 10000;
@@ -927,9 +1000,34 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
             if (*c == 0) { r = -1; break; }
         if (r < 0) msg = "unreadable line";
         else if (r == 0) msg = NULL;
-        else if (tok_is(t, "widget")) msg = parse_widget(k, p, q, eol, line);
-        else if (tok_is(t, "page")) msg = parse_page(k, p, q, eol, line);
-        else if (tok_is(t, "carousel") || tok_is(t, "touch")) msg = parse_turning(k, t.s[0] == 'c' ? "carousel" : "touch", q, eol);
+        else if (tok_is(t, "output")) {
+            if (k->nwidgets && !k->noutputs) { k->errat = t.s; msg = "output after widgets: with output sections every widget goes in one"; }
+            else if (saw_pages) {
+                k->errat = t.s;
+                msg = "output sections and pages (page, carousel, touch) do not go together yet";
+            } else msg = parse_output(k, q, eol, line);
+        } else if (k->noutputs && kiosk_wide(t)) {
+            k->errat = t.s;
+            msg = "this directive is for the whole kiosk: put it before the first output";
+        } else if (k->noutputs && (tok_is(t, "page") || tok_is(t, "carousel") || tok_is(t, "touch"))) {
+            k->errat = t.s;
+            msg = "output sections and pages (page, carousel, touch) do not go together yet";
+        } else if (tok_is(t, "widget")) {
+            msg = parse_widget(k, p, q, eol, line);
+            if (!msg) {
+                /* the grid check below needs the section's grid, and says where */
+                kiosk_widget *w = &k->widgets[k->nwidgets - 1];
+                w->screen = k->noutputs ? k->noutputs - 1 : 0;
+                w->line = line;
+                if (w->screen > 0 && w->type == KIOSK_BUTTON) {
+                    k->errat = t.s;
+                    msg = "button widgets go on the first output (the one touch belongs to)";
+                }
+            }
+        }
+        else if (tok_is(t, "page")) msg = parse_page(k, p, q, eol, line), saw_pages = 1;
+        else if (tok_is(t, "carousel") || tok_is(t, "touch"))
+            msg = parse_turning(k, t.s[0] == 'c' ? "carousel" : "touch", q, eol), saw_pages = 1;
         else if (tok_is(t, "mqtt")) msg = parse_mqtt(k, q, eol);
         else if (tok_is(t, "mqtt_tls")) msg = parse_mqtt_tls(k, q, eol);
         else if (tok_is(t, "screen")) msg = parse_screen(k, q, eol);
@@ -946,11 +1044,17 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
                 /* the rest of the line, so titles need no quotes */
                 const char *e = eol;
                 while (e > v.s && is_space(e[-1])) e--;
-                if (parse_text((tok){v.s, (size_t)(e - v.s)}, k->title)) msg = "bad title";
+                if (parse_text((tok){v.s, (size_t)(e - v.s)}, k->noutputs ? k->outputs[k->noutputs - 1].title : k->title))
+                    msg = "bad title";
                 q = eol;
             } else if (tok_is(t, "grid") || tok_is(t, "size")) {
                 const kiosk_key *kq = kiosk_key_find("directive", t.s, t.n);
                 int *a = tok_is(t, "grid") ? &k->cols : &k->width, *b = tok_is(t, "grid") ? &k->rows : &k->height;
+                if (k->noutputs) { /* a section's own */
+                    kiosk_output *o = &k->outputs[k->noutputs - 1];
+                    a = tok_is(t, "grid") ? &o->cols : &o->width;
+                    b = tok_is(t, "grid") ? &o->rows : &o->height;
+                }
                 msg = parse_pair(v, (int)kq->min, (int)kq->max, a, b) ? range_msg(k, kq, v) : NULL;
             } else if (tok_is(t, "stale")) {
                 const kiosk_key *kq = kiosk_key_find("directive", "stale", 5);
@@ -1025,7 +1129,12 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
     for (int i = 0; i < k->nwidgets; i++) {
         const kiosk_widget *w = &k->widgets[i];
         const kiosk_page *pg = &k->pg.pages[w->page];
-        if (w->col + w->w > pg->cols || w->row + w->h > pg->rows) {
+        /* with output sections (no pages) the section's grid */
+        int gc = k->noutputs ? k->outputs[w->screen].cols : pg->cols;
+        int gr = k->noutputs ? k->outputs[w->screen].rows : pg->rows;
+        if (w->col + w->w > gc || w->row + w->h > gr) {
+            k->errline = w->line;
+            k->errcol = 1;
             if (err && errsize) {
                 const char *m = "a widget lies outside the grid";
                 size_t o = 0;

@@ -44,6 +44,15 @@ int kiosk_screen_open(kiosk_screen_hw *hw, kiosk_screen_ops *ops, fx_display *d,
             return -1;
         }
     }
+    /* The kiosk starts with the screen on: a light left off (bl_power 4)
+     * by a kiosk that crashed while dark must come on with it. */
+    if (hw->have_bl) {
+        int r = fx_backlight_set_power(&hw->bl, 1);
+        if (r < 0 && r != -FX_ENOTSUP) {
+            snprintf(err, errsize, "screen: cannot write %s/bl_power: %s", hw->bl.dir, strerror(-r));
+            return -1;
+        }
+    }
     if (hw->have_bl && c->brightness >= 0) {
         int r = fx_backlight_set_brightness(&hw->bl, c->brightness);
         if (r < 0) {

@@ -79,6 +79,20 @@ typedef struct kimg {
     struct timespec mtim;
 } kimg;
 
+typedef struct kline {
+    char buf[KIOSK_LINE_MAX + 1];
+    size_t len;
+    int overlong;
+} kline;
+
+/* One screen: the app's own display, or one added for an output section
+ * ("output NAME" in the config). Widgets know theirs (kiosk_widget.screen). */
+typedef struct kscreen {
+    fx_display *d;   /* NULL: the app's own display */
+    int32_t W, H;
+    int full, status; /* at its next frame: redraw everything / the status line */
+} kscreen;
+
 typedef struct kiosk {
     kiosk_config cfg;
     fx_app *app;
@@ -90,12 +104,13 @@ typedef struct kiosk {
     int status_dirty, full;
     int64_t clock_sec;
     int fd;
-    char line[KIOSK_LINE_MAX + 1];
-    size_t linelen;
-    int overlong;
+    /* one line buffer per source: a partial stdin line must not swallow an
+     * MQTT payload arriving meanwhile (issue #24 review) */
+    kline in, mqline;
     int frame_end; /* headless: an "@frame" line ended the frame */
     int64_t frame_step;
-    int32_t W, H;
+    kscreen scr[KIOSK_MAX_OUTPUTS];
+    int nscr;        /* 1, or the config's output sections */
     int always_full; /* --full: redraw everything each frame (tests check damage against it) */
     kimg img[KIOSK_MAX_WIDGETS];
     uint32_t img_errors;  /* image loads that failed (missing, corrupt, too large) */
@@ -144,13 +159,13 @@ static void mark_sources(kiosk *k, uint32_t mask)
         if (k->cfg.widgets[i].source >= 0 && (mask >> k->cfg.widgets[i].source & 1)) k->dirty[i] = 1;
 }
 
-static void end_line(kiosk *k)
+static void end_line(kiosk *k, kline *lb)
 {
-    const char *l = k->line;
-    size_t n = k->linelen;
-    k->linelen = 0;
-    if (k->overlong) {
-        k->overlong = 0;
+    const char *l = lb->buf;
+    size_t n = lb->len;
+    lb->len = 0;
+    if (lb->overlong) {
+        lb->overlong = 0;
         k->lines++;
         k->bad++;
         k->status_dirty = 1;
@@ -180,12 +195,12 @@ static void end_line(kiosk *k)
     else if (r == KIOSK_LINE_OK) mark_sources(k, k->cfg.changed);
 }
 
-static void feed(kiosk *k, const char *buf, size_t n)
+static void feed(kiosk *k, kline *lb, const char *buf, size_t n)
 {
     for (size_t i = 0; i < n; i++) {
-        if (buf[i] == '\n') { end_line(k); continue; }
-        if (k->linelen < KIOSK_LINE_MAX) k->line[k->linelen++] = buf[i];
-        else k->overlong = 1;
+        if (buf[i] == '\n') { end_line(k, lb); continue; }
+        if (lb->len < KIOSK_LINE_MAX) lb->buf[lb->len++] = buf[i];
+        else lb->overlong = 1;
     }
 }
 
@@ -198,12 +213,12 @@ static void feed_frame(kiosk *k)
     while (!k->frame_end && k->fd >= 0) {
         ssize_t r = read(k->fd, &c, 1);
         if (r <= 0) {
-            if (k->linelen || k->overlong) end_line(k);
+            if (k->in.len || k->in.overlong) end_line(k, &k->in);
             if (k->fd > 0) close(k->fd);
             k->fd = -1;
             break;
         }
-        feed(k, &c, 1);
+        feed(k, &k->in, &c, 1);
     }
 }
 
@@ -213,7 +228,7 @@ static void feed_available(kiosk *k)
     char buf[4096];
     for (int rounds = 0; rounds < 64 && k->fd >= 0; rounds++) {
         ssize_t r = read(k->fd, buf, sizeof buf);
-        if (r > 0) { feed(k, buf, (size_t)r); continue; }
+        if (r > 0) { feed(k, &k->in, buf, (size_t)r); continue; }
         if (r < 0 && errno == EINTR) continue;
         break;
     }
@@ -369,14 +384,17 @@ static void update_stale(kiosk *k)
 
 static fx_rect widget_rect(const kiosk *k, const kiosk_widget *w)
 {
-    int32_t top = k->cfg.title[0] ? TITLE_H : 0;
-    int32_t gw = k->W, gh = k->H - top - STATUS_H;
-    const kiosk_page *pg = &k->cfg.pg.pages[w->page]; /* each page has a grid of its own */
+    /* each page has a grid of its own; each output section too (the two do not mix) */
+    const kiosk_output *o = k->cfg.noutputs ? &k->cfg.outputs[w->screen] : NULL;
+    const kiosk_page *pg = &k->cfg.pg.pages[w->page];
+    int cols = o ? o->cols : pg->cols, rows = o ? o->rows : pg->rows;
+    int32_t top = (o ? o->title : k->cfg.title)[0] ? TITLE_H : 0;
+    int32_t gw = k->scr[w->screen].W, gh = k->scr[w->screen].H - top - STATUS_H;
     fx_rect r;
-    r.x0 = w->col * gw / pg->cols + GAP;
-    r.x1 = (w->col + w->w) * gw / pg->cols - GAP / 2;
-    r.y0 = top + w->row * gh / pg->rows + GAP;
-    r.y1 = top + (w->row + w->h) * gh / pg->rows - GAP / 2;
+    r.x0 = w->col * gw / cols + GAP;
+    r.x1 = (w->col + w->w) * gw / cols - GAP / 2;
+    r.y0 = top + w->row * gh / rows + GAP;
+    r.y1 = top + (w->row + w->h) * gh / rows - GAP / 2;
     return r;
 }
 
@@ -706,13 +724,16 @@ static void draw_widget(kiosk *k, fx_ctx *base, int i)
     }
 }
 
-static fx_rect status_rect(const kiosk *k) { return (fx_rect){0, k->H - STATUS_H, k->W, k->H}; }
-
 static void draw_page_dots(kiosk *k, fx_ctx *c, int32_t x, fx_rect r);
 
-static void draw_status(kiosk *k, fx_ctx *base)
+static fx_rect status_rect(const kiosk *k, int si)
 {
-    fx_rect r = status_rect(k);
+    return (fx_rect){0, k->scr[si].H - STATUS_H, k->scr[si].W, k->scr[si].H};
+}
+
+static void draw_status(kiosk *k, fx_ctx *base, int si)
+{
+    fx_rect r = status_rect(k, si);
     fx_ctx c = *base;
     fx_ctx_set_clip(&c, r);
     fill(&c, k->cfg.bg, r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
@@ -746,44 +767,66 @@ static void draw_status(kiosk *k, fx_ctx *base)
     }
 }
 
-/* Draw what changed and present exactly those rectangles. */
-static void render(kiosk *k)
+/* k->full and k->status_dirty ask every screen; each clears its own. */
+static void spread_flags(kiosk *k)
 {
-    fx_surface s = fx_app_surface(k->app);
+    for (int s = 0; s < k->nscr; s++) {
+        k->scr[s].full |= k->full;
+        k->scr[s].status |= k->status_dirty;
+    }
+    k->full = k->status_dirty = 0;
+}
+
+/* Draw what changed on screen si and present exactly those rectangles. */
+static void render(kiosk *k, int si)
+{
+    kscreen *sc = &k->scr[si];
+    fx_surface s = sc->d ? fx_display_surface(sc->d) : fx_app_surface(k->app);
     fx_ctx c;
     fx_rect dmg[KIOSK_MAX_WIDGETS + 2];
     int n = 0;
+    const char *title = k->cfg.noutputs ? k->cfg.outputs[si].title : k->cfg.title;
+    spread_flags(k);
+    if (sc->d && (s.w != sc->W || s.h != sc->H)) { /* an added display's size after a hotplug */
+        sc->W = s.w;
+        sc->H = s.h;
+        sc->full = 1;
+    }
     fx_ctx_init(&c, &s);
-    if (k->full || k->always_full) {
+    if (sc->full || k->always_full) {
         fx_surface_clear(&s, k->cfg.bg);
-        if (k->cfg.title[0]) text_at(&c, 8, 4, 2, k->cfg.fg, k->cfg.title);
-        for (int i = 0; i < k->cfg.nwidgets; i++) k->dirty[i] = 1;
-        k->status_dirty = 1;
+        if (title[0]) text_at(&c, 8, 4, 2, k->cfg.fg, title);
+        for (int i = 0; i < k->cfg.nwidgets; i++)
+            if (k->cfg.widgets[i].screen == si) k->dirty[i] = 1;
+        sc->status = 1;
     }
     for (int i = 0; i < k->cfg.nwidgets; i++)
-        if (k->dirty[i]) {
+        if (k->dirty[i] && k->cfg.widgets[i].screen == si) {
             k->dirty[i] = 0;
             /* widgets of other pages keep their values; a page turn redraws everything */
             if (k->cfg.widgets[i].page != k->page) continue;
             draw_widget(k, &c, i);
             dmg[n++] = widget_rect(k, &k->cfg.widgets[i]);
         }
-    if (k->status_dirty) {
-        draw_status(k, &c);
-        k->status_dirty = 0;
-        dmg[n++] = status_rect(k);
+    if (sc->status) {
+        draw_status(k, &c, si);
+        sc->status = 0;
+        dmg[n++] = status_rect(k, si);
     }
-    int whole = k->full || k->always_full;
+    int whole = sc->full || k->always_full;
     if (k->identify_phase) {
         /* identify: a frame around the whole screen, alternating colours;
          * each phase change is a full redraw (the frame crosses every widget gap) */
         fx_color col = k->identify_phase == 1 ? AMBER : 0xFFFFFFFFu;
-        fill(&c, col, 0, 0, k->W, 6);
-        fill(&c, col, 0, k->H - 6, k->W, 6);
-        fill(&c, col, 0, 0, 6, k->H);
-        fill(&c, col, k->W - 6, 0, 6, k->H);
+        fill(&c, col, 0, 0, sc->W, 6);
+        fill(&c, col, 0, sc->H - 6, sc->W, 6);
+        fill(&c, col, 0, 0, 6, sc->H);
+        fill(&c, col, sc->W - 6, 0, 6, sc->H);
     }
-    if (whole) fx_app_present(k->app, NULL, 0);
+    if (sc->d) {
+        if (whole) fx_display_present(sc->d, NULL, 0);
+        else if (n) fx_display_present(sc->d, dmg, n);
+    } else if (whole) fx_app_present(k->app, NULL, 0);
     else if (n) fx_app_present(k->app, dmg, n);
     if (whole || n) {
         k->frames++;
@@ -793,26 +836,46 @@ static void render(kiosk *k)
             k->ready_sent = 1;
         }
         if (k->live_out) {
-            char path[4096], tmp[4100];
-            snprintf(path, sizeof path, "%s/live.ppm", k->live_out);
-            snprintf(tmp, sizeof tmp, "%s/live.tmp.ppm", k->live_out);
-            fx_surface sf = fx_app_surface(k->app);
+            char path[4096], tmp[4100], sfx[KIOSK_OUTPUT_MAX + 1] = "";
+            if (k->cfg.noutputs) snprintf(sfx, sizeof sfx, "-%s", k->cfg.outputs[si].name);
+            snprintf(path, sizeof path, "%s/live%s.ppm", k->live_out, sfx);
+            snprintf(tmp, sizeof tmp, "%s/live%s.tmp.ppm", k->live_out, sfx);
+            fx_surface sf = sc->d ? fx_display_surface(sc->d) : fx_app_surface(k->app);
             if (fx_write_image(tmp, &sf) == 0) rename(tmp, path); /* readers never see half a frame */
         }
     }
-    k->full = 0;
+    sc->full = 0;
 }
 
 /* ---- live mode ---- */
 
-static void on_display(void *user) { render(user); }
+static void on_display(void *user) { render(user, 0); }
+
+/* An output section's display (fx_app_add_display): its own frames. */
+static void on_display_extra(fx_app *a, fx_display *d, void *user)
+{
+    kiosk *k = user;
+    (void)a;
+    for (int s = 1; s < k->nscr; s++)
+        if (k->scr[s].d == d) render(k, s);
+}
+
+/* The main display through the screen hooks (with its backlight), then
+ * every output section's display: "screen off" is the whole kiosk. The
+ * main display's answer is the result. */
+static int set_power_all(kiosk *k, int on)
+{
+    if (k->screen.set_power && k->screen.set_power(k->screen.ctx, on) < 0) return -1;
+    for (int s = 1; s < k->nscr; s++) fx_display_set_power(k->scr[s].d, on);
+    return 0;
+}
 
 /* Switch the screen to what kiosk_power decided; a refusal is logged by
  * the display and leaves the state as it was. */
 static void apply_power(kiosk *k, int on)
 {
     if (on == k->screen_on) return;
-    if (k->screen.set_power && k->screen.set_power(k->screen.ctx, on) < 0) return;
+    if (set_power_all(k, on) < 0) return;
     k->screen_on = on;
     k->status_due = 1;
     if (on) k->full = 1, fx_app_post_redisplay(k->app);
@@ -863,14 +926,16 @@ static void on_special(void *user, int key, int x, int y)
 static void on_reshape(void *user, int w, int h)
 {
     kiosk *k = user;
-    k->W = w;
-    k->H = h;
-    k->full = 1;
+    k->scr[0].W = w;
+    k->scr[0].H = h;
+    k->scr[0].full = 1;
 }
 
 static int any_dirty(const kiosk *k)
 {
     if (k->full || k->status_dirty) return 1;
+    for (int s = 0; s < k->nscr; s++)
+        if (k->scr[s].full || k->scr[s].status) return 1;
     for (int i = 0; i < k->cfg.nwidgets; i++)
         if (k->dirty[i] && k->cfg.widgets[i].page == k->page) return 1;
     return 0;
@@ -959,7 +1024,7 @@ static void touch_press(kiosk *k, int state, int x, int y)
         /* a swipe that started on a button is a swipe: the button lets go */
         kiosk_pages_cfg swipes = k->cfg.pg;
         swipes.edge_pct = 0;
-        int sw = kiosk_gesture(&swipes, k->W, k->press_x, k->press_y, x, y), n = k->cfg.pg.npages;
+        int sw = kiosk_gesture(&swipes, k->scr[0].W, k->press_x, k->press_y, x, y), n = k->cfg.pg.npages;
         if (k->pressed >= 0) {
             int i = k->pressed;
             fx_rect r = widget_rect(k, &k->cfg.widgets[i]);
@@ -973,7 +1038,7 @@ static void touch_press(kiosk *k, int state, int x, int y)
             } else
                 k->pressed = -1; /* slid off: no tap */
         } else {
-            int g = kiosk_gesture(&k->cfg.pg, k->W, k->press_x, k->press_y, x, y);
+            int g = kiosk_gesture(&k->cfg.pg, k->scr[0].W, k->press_x, k->press_y, x, y);
             if (g) go_page(k, (k->page + n + g) % n);
         }
     }
@@ -1113,6 +1178,15 @@ static void reload(kiosk *k)
         fprintf(stderr, "fixel-kiosk: reload refused: %s\n", err);
         return;
     }
+    /* the displays were opened for the outputs at start */
+    int same = fresh.noutputs == k->cfg.noutputs;
+    for (int i = 0; same && i < fresh.noutputs; i++) same = !strcmp(fresh.outputs[i].name, k->cfg.outputs[i].name);
+    if (!same) {
+        snprintf(k->cfg_error, sizeof k->cfg_error, "%s: the output sections differ from the running ones (restart to change them)",
+                 k->cfgpath);
+        fprintf(stderr, "fixel-kiosk: reload refused: %s\n", k->cfg_error);
+        return;
+    }
     k->cfg_error[0] = 0;
     char shown[KIOSK_NAME_MAX];
     snprintf(shown, sizeof shown, "%s", k->cfg.pg.pages[k->page].name);
@@ -1150,7 +1224,7 @@ static int control(kiosk *k, const char *what, const char *v, size_t n)
     if (!strcmp(what, "screen")) {
         int on = !strcasecmp(val, "on") || !strcmp(val, "1") ? 1 : !strcasecmp(val, "off") || !strcmp(val, "0") ? 0 : -1;
         if (on < 0) return KIOSK_LINE_BAD;
-        if (k->screen.set_power && k->screen.set_power(k->screen.ctx, on) < 0) return KIOSK_LINE_BAD;
+        if (set_power_all(k, on) < 0) return KIOSK_LINE_BAD;
         k->screen_on = on;
         kiosk_power_manual(&k->pw, on, k->now_ms);
     } else if (!strcmp(what, "brightness")) {
@@ -1191,8 +1265,8 @@ static void mqtt_message(kiosk *k, const kmq_msg *m)
         matched = 1;
         if (sb->source < 0) {
             /* data lines, exactly as on stdin; a last line needs no newline */
-            feed(k, m->payload, m->plen);
-            if (k->linelen || k->overlong) end_line(k);
+            feed(k, &k->mqline, m->payload, m->plen);
+            if (k->mqline.len || k->mqline.overlong) end_line(k, &k->mqline);
             continue;
         }
         char v[KIOSK_LINE_MAX + 1];
@@ -1260,7 +1334,10 @@ static void on_tick(void *user, int value)
                                    lt.tm_hour * 60 + lt.tm_min);
         apply_power(k, kiosk_power_want(&k->pw, k->now_ms, sched));
     }
-    if (any_dirty(k)) fx_app_post_redisplay(k->app);
+    if (any_dirty(k)) {
+        fx_app_post_redisplay(k->app);
+        for (int s = 1; s < k->nscr; s++) fx_app_post_redisplay_on(k->app, k->scr[s].d);
+    }
     fx_app_timer(k->app, 100, on_tick, 0);
 }
 
@@ -1330,6 +1407,8 @@ static void usage(FILE *f)
             "  --full            redraw every widget each frame (default: only changed ones)\n"
             "  --mem-report N    headless: print RSS and heap in use after frame N and at the end\n"
             "  --size WxH        headless surface size (default: the config's size, else 480x320)\n"
+            "Screens: \"output NAME\" lines split the config into one section per display (up to 4,\n"
+            "one process; docs/kiosk-screens.md).\n"
             "  --help            this text\n"
             "Bad data lines are counted on screen, never fatal. Keys: q or Esc quits.\n"
             "Widgets: number gauge bar spark text clock heat image button.\n"
@@ -1448,6 +1527,16 @@ int main(int argc, char **argv)
         o.display.memory_h = sh ? sh : k->cfg.height ? k->cfg.height : 320;
     }
     if (fx_app_options_from_env(&o) < 0) return 1;
+    if (k->cfg.noutputs) {
+        /* the first section is the app's own display (input, pointer, console) */
+        const kiosk_output *o0 = &k->cfg.outputs[0];
+        o.display.connector = o0->name;
+        if (o0->rotation >= 0) o.display.rotation = o0->rotation;
+        if (!sw && o0->width) {
+            o.display.memory_w = o0->width;
+            o.display.memory_h = o0->height;
+        }
+    }
     /* A kiosk booted before its screen is plugged in (or switched on) waits
      * for it instead of drawing into memory; FIXEL_WAIT_DISPLAY=0 does not. */
     long wait = 1;
@@ -1470,8 +1559,29 @@ int main(int argc, char **argv)
         sigaddset(&ss, SIGHUP);
         sigprocmask(SIG_UNBLOCK, &ss, NULL);
     }
-    fx_app_size(k->app, &k->W, &k->H);
+    fx_app_size(k->app, &k->scr[0].W, &k->scr[0].H);
     k->full = 1;
+    k->nscr = 1;
+    for (int s = 1; s < k->cfg.noutputs; s++) {
+        /* one display per further section, on whichever card has it */
+        const kiosk_output *os = &k->cfg.outputs[s];
+        fx_display_options d2 = o.display;
+        d2.connector = os->name;
+        if (os->rotation >= 0) d2.rotation = os->rotation;
+        d2.memory_w = sw ? sw : os->width ? os->width : 480;
+        d2.memory_h = sh ? sh : os->height ? os->height : 320;
+        if (fx_app_add_display(k->app, &d2, on_display_extra, k, &k->scr[s].d) < 0) {
+            fprintf(stderr, "fixel-kiosk: %s:%d: output %s: cannot open it (the reason is above)\n", cfgpath,
+                    os->line, os->name);
+            fx_app_close(k->app);
+            if (k->fd > 0) close(k->fd);
+            return 1;
+        }
+        fx_surface s2 = fx_display_surface(k->scr[s].d);
+        k->scr[s].W = s2.w;
+        k->scr[s].H = s2.h;
+        k->nscr = s + 1;
+    }
 
     int rc = 0;
     fx_display_info di;
@@ -1495,19 +1605,21 @@ int main(int argc, char **argv)
             check_images(k);
             update_stale(k);
             pages_tick(k);
-            render(k);
+            for (int s = 0; s < k->nscr; s++) render(k, s);
             if (f == mem_frame) mem_report("warm", f);
-            if (out && (!last_only || f == frames - 1)) {
-                char path[4096];
-                if (last_only) snprintf(path, sizeof path, "%s/last.png", out);
-                else snprintf(path, sizeof path, "%s/frame-%04d.png", out, f);
-                fx_surface s = fx_app_surface(k->app);
-                if (fx_write_image(path, &s) < 0) {
+            for (int s = 0; out && (!last_only || f == frames - 1) && s < k->nscr && !rc; s++) {
+                /* with output sections each screen's file carries its name */
+                char path[4096], sfx[KIOSK_OUTPUT_MAX + 1] = "";
+                if (k->cfg.noutputs) snprintf(sfx, sizeof sfx, "-%s", k->cfg.outputs[s].name);
+                if (last_only) snprintf(path, sizeof path, "%s/last%s.png", out, sfx);
+                else snprintf(path, sizeof path, "%s/frame-%04d%s.png", out, f, sfx);
+                fx_surface sf = k->scr[s].d ? fx_display_surface(k->scr[s].d) : fx_app_surface(k->app);
+                if (fx_write_image(path, &sf) < 0) {
                     fprintf(stderr, "fixel-kiosk: cannot write %s\n", path);
                     rc = 1;
-                    break;
                 }
             }
+            if (rc) break;
             k->now_ms += k->frame_step;
         }
         if (mem_frame >= 0) mem_report("end", frames - 1);

@@ -9,7 +9,7 @@
  *     if (fx_backlight_open(&b, NULL, NULL) == 0) {   // the first one found
  *         fx_backlight_set_brightness(&b, 40);        // percent
  *         ...
- *         fx_backlight_restore(&b);                   // as found
+ *         fx_backlight_restore(&b);                   // brightness as found, light on
  *     }
  *
  * Writing needs the file's group (udev rules usually give "video" write
@@ -41,7 +41,8 @@ int fx_backlight_brightness(const fx_backlight *b);
 /* bl_power: 0 (FB_BLANK_UNBLANK) on, 4 (FB_BLANK_POWERDOWN) off. Returns 0,
  * -FX_ENOTSUP when the device has no bl_power, or -errno. */
 int fx_backlight_set_power(const fx_backlight *b, int on);
-/* Put back the brightness and bl_power found at open. */
+/* Put back the brightness found at open, and bl_power on (0) even when it
+ * was off at open: the next program or the console must not find it dark. */
 void fx_backlight_restore(const fx_backlight *b);
 
 #ifdef __cplusplus

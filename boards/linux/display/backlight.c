@@ -128,6 +128,9 @@ void fx_backlight_restore(const fx_backlight *b)
     if (b->max <= 0)
         return;
     write_int(b->dir, "brightness", b->saved);
+    /* The light on, not as found: found off means a program before us (a
+     * kiosk that crashed at night) left it dark, and the console after us
+     * must be seen, as fx_display_close leaves the display's power on. */
     if (b->saved_power >= 0)
-        write_int(b->dir, "bl_power", b->saved_power);
+        write_int(b->dir, "bl_power", 0);
 }

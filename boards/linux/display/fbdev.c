@@ -129,6 +129,10 @@ static int fb_resume(fx_display *d)
         if (ioctl(p->fd, FBIOPAN_DISPLAY, &v) < 0)
             return -errno;
     }
+    /* The console unblanks the screen it takes; switched off before the
+     * VT switch means off after it. */
+    if (d->power_off && ioctl(p->fd, FBIOBLANK, FB_BLANK_POWERDOWN) < 0)
+        return -errno;
     return 0;
 }
 
@@ -140,8 +144,17 @@ static int fb_set_power(fx_display *d, int on)
     return ioctl(p->fd, FBIOBLANK, on ? FB_BLANK_UNBLANK : FB_BLANK_POWERDOWN) < 0 ? -errno : 0;
 }
 
+/* The signal path: a crash while the screen is off must not leave the
+ * console dark (fx_display_close unblanks on the way out too). */
+static void fb_emergency_restore(fx_display *d)
+{
+    struct fb_priv *p = d->priv;
+    if (p && p->fd >= 0 && d->power_off)
+        ioctl(p->fd, FBIOBLANK, FB_BLANK_UNBLANK);
+}
+
 static const struct fx_backend_ops fb_ops = {fb_show, fb_wait, fb_dispatch, fb_fd, fb_close, NULL,
-                                             fb_resume, NULL, NULL, fb_set_power};
+                                             fb_resume, NULL, fb_emergency_restore, fb_set_power};
 
 static int try_double_buffer(struct fb_priv *p)
 {

@@ -63,6 +63,10 @@ struct drm_priv {
      * CRTC is switched off instead). */
     uint32_t dpms_prop;
     uint64_t dpms_on, dpms_off;
+    struct drm_mode_connector_set_property emergency_dpms; /* DPMS on, for the signal path */
+    /* A VT return or a hotplug while the screen was off left the CRTC off:
+     * the next power-on sets the mode (and rotation) again. */
+    int modeset_at_power_on;
 };
 
 static int neg_errno(void)
@@ -579,12 +583,26 @@ static void drm_close(fx_display *d)
 static void drm_emergency_restore(fx_display *d)
 {
     struct drm_priv *p = d->priv;
+    /* A screen switched off must not stay dark after a crash: the console
+     * (or the next program) gets it lit, as fx_display_close leaves it. */
+    if (p && p->fd >= 0 && p->dpms_prop)
+        ioctl(p->fd, DRM_IOCTL_MODE_SETPROPERTY, &p->emergency_dpms);
     if (p && p->fd >= 0 && p->rot_apply) {
         ioctl(p->fd, DRM_IOCTL_MODE_SETCRTC, &p->emergency_off);
         ioctl(p->fd, DRM_IOCTL_MODE_OBJ_SETPROPERTY, &p->emergency_rot);
     }
     if (p && p->fd >= 0 && p->emergency.crtc_id)
         ioctl(p->fd, DRM_IOCTL_MODE_SETCRTC, &p->emergency);
+}
+
+/* Off as drm_set_power(d, 0) leaves it, whatever the console (which lights
+ * the screen it takes back) or a replug did meanwhile: CRTC off, DPMS off. */
+static void stay_off(struct drm_priv *p)
+{
+    drmModeSetCrtc(p->fd, p->crtc_id, 0, 0, 0, NULL, 0, NULL);
+    if (p->dpms_prop)
+        drmModeConnectorSetProperty(p->fd, p->conn_id, p->dpms_prop, p->dpms_off);
+    p->modeset_at_power_on = 1;
 }
 
 static int drm_suspend(fx_display *d)
@@ -604,7 +622,11 @@ static int drm_resume(fx_display *d)
         fx_log(&d->log, FX_LOG_ERROR, "%s: cannot retake DRM master: %s", d->device, strerror(errno));
         return neg_errno();
     }
-    if (modeset(p, d->shown < 0 ? 0 : d->shown) < 0) {
+    if (d->power_off) {
+        /* Switched off before the VT switch: the console's picture must
+         * not stay lit either; the mode comes back with the power. */
+        stay_off(p);
+    } else if (modeset(p, d->shown < 0 ? 0 : d->shown) < 0) {
         fx_log(&d->log, FX_LOG_ERROR, "SetCrtc after VT switch: %s", strerror(errno));
         return neg_errno();
     }
@@ -660,7 +682,11 @@ static void reprobe(fx_display *d)
         d->info.height = (int32_t)bh;
     }
     p->mode = m;
-    if (set_crtc(p, d->shown < 0 ? 0 : d->shown) < 0)
+    if (d->power_off) {
+        /* A screen switched off stays off across a replug: the new mode
+         * is set at power-on. */
+        stay_off(p);
+    } else if (set_crtc(p, d->shown < 0 ? 0 : d->shown) < 0)
         fx_log(&d->log, FX_LOG_ERROR, "modeset after hotplug failed: %s", strerror(errno));
     p->connected = d->info.connected = 1;
     if (!same_size)
@@ -689,6 +715,9 @@ static void find_dpms(fx_display *d, struct drm_priv *p)
     }
     drmModeFreeObjectProperties(props);
     d->power_method = p->dpms_prop ? "dpms" : "crtc";
+    p->emergency_dpms.connector_id = p->conn_id;
+    p->emergency_dpms.prop_id = p->dpms_prop;
+    p->emergency_dpms.value = p->dpms_on;
 }
 
 static int drm_set_power(fx_display *d, int on)
@@ -700,8 +729,10 @@ static int drm_set_power(fx_display *d, int on)
     if (on) {
         /* The newest frame (drm_show skipped the flips while off); also
          * what brings the CRTC back when it was switched off. */
-        if (set_crtc(p, d->shown < 0 ? 0 : d->shown) < 0)
+        int buf = d->shown < 0 ? 0 : d->shown;
+        if ((p->modeset_at_power_on ? modeset(p, buf) : set_crtc(p, buf)) < 0)
             return neg_errno();
+        p->modeset_at_power_on = 0;
     } else if (!p->dpms_prop && drmModeSetCrtc(p->fd, p->crtc_id, 0, 0, 0, NULL, 0, NULL) < 0) {
         return neg_errno();
     }

@@ -7,9 +7,14 @@
 #endif
 #include <dirent.h>
 #include <fcntl.h>
+#include <linux/vt.h>
+#include <poll.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/ioctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <xf86drm.h>
@@ -88,6 +93,95 @@ static int both(const char *want, char *s, char *p)
     return !strcmp(s, want) && !strcmp(p, want);
 }
 
+/* The display's events for ms milliseconds, as an event loop runs them
+ * (VT switch requests, hotplug uevents). */
+static void pump_for(fx_display *d, int ms)
+{
+    for (int t = 0; t < ms; t += 10) {
+        struct pollfd pfd = {.fd = fx_display_fd(d), .events = POLLIN};
+        poll(&pfd, 1, 10);
+        fx_display_dispatch(d);
+    }
+}
+
+/* chvt n from another process (as logind would) while d's events run. */
+static int chvt(fx_display *d, int n)
+{
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0) {
+        int fd = open("/dev/tty0", O_RDWR | O_NOCTTY);
+        _exit(fd < 0 || ioctl(fd, VT_ACTIVATE, n) < 0 || ioctl(fd, VT_WAITACTIVE, n) < 0);
+    }
+    int st = -1;
+    for (int t = 0; t < 4000 && waitpid(pid, &st, WNOHANG) != pid; t += 10)
+        pump_for(d, 10);
+    pump_for(d, 200);
+    return st;
+}
+
+/* Switched off, a screen stays off when the kiosk's VT comes back and when
+ * its connector is unplugged and plugged again (issue #24 review: both
+ * used to set the mode, which lit it), and a crash while off leaves it on
+ * like an orderly close. */
+static void power_survives(void)
+{
+    char s[32], p[32], path[160];
+    fx_display_options o;
+    fx_display *d = NULL;
+    fx_display_options_init(&o);
+    fx_display_options_from_env(&o);
+    o.backend = FX_BACKEND_DRM;
+    if (guest_open("power-drm-reopen", &d, &o) < 0)
+        return;
+    fx_display_present(d, NULL, 0);
+    fx_display_set_power(d, 0);
+    int a = chvt(d, 2), b = chvt(d, 1);
+    guest_check("power-drm-off-after-vt-return", a == 0 && b == 0 && both("Off", s, p) && fx_display_active(d),
+                "chvt 2 status %d, chvt 1 status %d; sysfs %s, property %s", a, b, s, p);
+    int r = fx_display_set_power(d, 1);
+    guest_check("power-drm-on-after-vt-return", r == 0 && both("On", s, p), "set_power(1) = %d; sysfs %s, property %s",
+                r, s, p);
+
+    fx_display_info info;
+    fx_display_get_info(d, &info);
+    snprintf(path, sizeof path, "/sys/class/drm/card0-%s/status", info.connector);
+    fx_display_set_power(d, 0);
+    int w = write_file(path, "off");
+    if (w == 0)
+        w = write_file("/sys/class/drm/card0/uevent", "change");
+    pump_for(d, 500);
+    if (w == 0)
+        w = write_file(path, "on");
+    if (w == 0)
+        w = write_file("/sys/class/drm/card0/uevent", "change");
+    pump_for(d, 500);
+    fx_display_get_info(d, &info);
+    guest_check("power-drm-off-after-hotplug", w == 0 && info.connected && both("Off", s, p),
+                "unplug/replug %d, connected %d; sysfs %s, property %s", w, info.connected, s, p);
+    write_file(path, "detect");
+    r = fx_display_set_power(d, 1);
+    guest_check("power-drm-on-after-hotplug", r == 0 && both("On", s, p), "set_power(1) = %d; sysfs %s, property %s",
+                r, s, p);
+    fx_display_close(d);
+
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0) {
+        fx_display *c = NULL;
+        if (fx_display_open(&c, &o) < 0)
+            _exit(3);
+        fx_display_present(c, NULL, 0);
+        fx_display_set_power(c, 0);
+        abort(); /* the fatal-signal path, not fx_display_close */
+    }
+    int st = 0;
+    waitpid(pid, &st, 0);
+    guest_check("power-drm-restored-after-crash", WIFSIGNALED(st) && WTERMSIG(st) == SIGABRT && both("On", s, p),
+                "child %s %d; sysfs %s, property %s", WIFSIGNALED(st) ? "signal" : "exit",
+                WIFSIGNALED(st) ? WTERMSIG(st) : WEXITSTATUS(st), s, p);
+}
+
 int main(void)
 {
     setvbuf(stdout, NULL, _IOLBF, 0);
@@ -118,6 +212,7 @@ int main(void)
     fx_display_set_power(d, 0);
     fx_display_close(d);
     guest_check("power-drm-restored-at-close", both("On", s, p), "closed while off; sysfs %s, property %s", s, p);
+    power_survives();
 
     fx_display_options_init(&o);
     fx_display_options_from_env(&o);
