@@ -1485,7 +1485,12 @@ int main(int argc, char **argv)
     if (tr && *tr) {
         trace_fd = open(tr, O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC | O_NONBLOCK | O_NOCTTY, 0644);
         if (trace_fd < 0) {
-            fprintf(stderr, "fixel-kiosk: FIXEL_KIOSK_TRACE=%s: %s\n", tr, strerror(errno));
+            char shown[120]; /* no terminal escapes from the environment into the log */
+            int e = errno;
+            snprintf(shown, sizeof shown, "%s", tr);
+            for (char *c = shown; *c; c++)
+                if ((unsigned char)*c < 0x20 || *c == 0x7f) *c = '?';
+            fprintf(stderr, "fixel-kiosk: FIXEL_KIOSK_TRACE=%s: %s\n", shown, strerror(e));
             return 1;
         }
         fcntl(trace_fd, F_SETFL, fcntl(trace_fd, F_GETFL) & ~O_NONBLOCK);
