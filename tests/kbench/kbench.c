@@ -3,7 +3,8 @@
  * bench-kiosk, docs/BENCHMARK.md section 8).
  *
  * Publishes the sequence numbers 1..N as plain payloads on one topic at a
- * fixed rate (QoS 1 by default) to a broker on 127.0.0.1, taking
+ * fixed rate (QoS 1 by default; each message at a random point of its
+ * period) to a broker on 127.0.0.1, taking
  * CLOCK_MONOTONIC just before each mosquitto_publish, and reads the trace
  * every kiosk writes with FIXEL_KIOSK_TRACE (one line per presented frame,
  * the same clock, the value each widget drew). Message s counts as
@@ -330,18 +331,23 @@ int main(int argc, char **argv)
 
     unsigned long long bcpu0 = broker ? cpu_ticks(broker) : 0;
     for (int i = 0; i < nk; i++) ks[i].cpu0 = cpu_ticks(ks[i].pid);
-    int64_t period = (int64_t)(1e9 / rate), t0 = mono_ns(), tlate = 0;
+    int64_t period = (int64_t)(1e9 / rate), t0 = mono_ns(), tlate = 0, due = t0;
     long long late = 0;
+    uint32_t rng = 12345; /* xorshift32: the same schedule every run */
     for (long long s = 1; s <= count; s++) {
         char pl[24];
         if (!lockstep) {
-            int64_t due = t0 + (s - 1) * period;
+            /* message s at a uniformly random point of its period: sensors
+             * do not keep time with the kiosk, and a strict 100 ms period
+             * would lock to the kiosk's 100 ms tick at one phase */
+            rng ^= rng << 13, rng ^= rng >> 17, rng ^= rng << 5;
+            due = t0 + (s - 1) * period + (int64_t)(rng % 1000000u) * period / 1000000;
             struct timespec ts = {(time_t)(due / 1000000000), (long)(due % 1000000000)};
             while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, NULL) == EINTR) {}
         }
         snprintf(pl, sizeof pl, "%lld", s);
         tpub[s] = mono_ns();
-        if (!lockstep && tpub[s] - (t0 + (s - 1) * period) > 1000000) late++, tlate += tpub[s] - (t0 + (s - 1) * period);
+        if (!lockstep && tpub[s] - due > 1000000) late++, tlate += tpub[s] - due;
         published = s;
         rc = mosquitto_publish(m, NULL, topic, (int)strlen(pl), pl, qos, false);
         if (rc != MOSQ_ERR_SUCCESS) { fprintf(stderr, "kbench: publish %lld: %s\n", s, mosquitto_strerror(rc)); return 1; }
