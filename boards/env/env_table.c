@@ -54,6 +54,8 @@ static const fx_env_var table[] = {
     {"FIXEL_OUT", FX_ENV_PATH, NULL, NULL, 0, 0, 0, "library", "write every frame to this file (frame-%03d.png)"},
     {"FIXEL_WAIT_DISPLAY", FX_ENV_WORD, W("1", "0"), V(1, 0), 2, 0, 0, "fixel-kiosk",
      "0: do not wait for a display to be connected"},
+    {"FIXEL_KIOSK_TRACE", FX_ENV_PATH, NULL, NULL, 0, 0, 0, "fixel-kiosk",
+     "after every presented frame a line: time, frame, the values drawn"},
     {"FIXEL_GLUT_FRAMES", FX_ENV_INT, NULL, NULL, 0, 0, 1000000000L, "GLUT layer",
      "exit 0 when the N-th frame ends (0: run on)"},
     {"FIXEL_GLUT_OUT", FX_ENV_PATH, NULL, NULL, 0, 0, 0, "GLUT layer", "write that frame (PNG, or PPM for .ppm)"},

@@ -767,6 +767,30 @@ static void draw_status(kiosk *k, fx_ctx *base, int si)
     }
 }
 
+/* FIXEL_KIOSK_TRACE=FILE (docs/kiosk.md, "Latency trace"): after every
+ * presented frame one line, "MONO_NS<TAB>FRAME<TAB>LINES" and a
+ * "<TAB>SOURCE=VALUE" per widget drawn in it, VALUE as the widget shows it.
+ * make bench-kiosk matches these against its publish times; a single write()
+ * per line, so a reader polling the file never sees half of one. */
+static int trace_fd = -1;
+
+static void trace_frame(kiosk *k, const uint8_t *drawn, int64_t t_ns)
+{
+    char buf[4096], v[KIOSK_TEXT_MAX + 48];
+    int o = snprintf(buf, sizeof buf, "%lld\t%u\t%u", (long long)t_ns, k->frames, k->lines);
+    for (int i = 0; i < k->cfg.nwidgets && o < (int)sizeof buf; i++) {
+        const kiosk_widget *w = &k->cfg.widgets[i];
+        if (!drawn[i] || w->source < 0) continue;
+        const kiosk_source *s = &k->cfg.sources[w->source];
+        if (s->kind == KIOSK_KIND_NUMBER || w->type == KIOSK_TEXT) value_text(k, w, v, sizeof v);
+        else snprintf(v, sizeof v, "%s", s->text);
+        o += snprintf(buf + o, sizeof buf - (size_t)o, "\t%s=%s", s->name, v);
+    }
+    if (o >= (int)sizeof buf - 1) o = (int)sizeof buf - 2;
+    buf[o++] = '\n';
+    if (write(trace_fd, buf, (size_t)o) < 0) trace_fd = -1; /* a full disk ends the trace, not the kiosk */
+}
+
 /* k->full and k->status_dirty ask every screen; each clears its own. */
 static void spread_flags(kiosk *k)
 {
@@ -781,6 +805,7 @@ static void spread_flags(kiosk *k)
 static void render(kiosk *k, int si)
 {
     kscreen *sc = &k->scr[si];
+    uint8_t drawn[KIOSK_MAX_WIDGETS] = {0};
     fx_surface s = sc->d ? fx_display_surface(sc->d) : fx_app_surface(k->app);
     fx_ctx c;
     fx_rect dmg[KIOSK_MAX_WIDGETS + 2];
@@ -806,6 +831,7 @@ static void render(kiosk *k, int si)
             /* widgets of other pages keep their values; a page turn redraws everything */
             if (k->cfg.widgets[i].page != k->page) continue;
             draw_widget(k, &c, i);
+            drawn[i] = 1;
             dmg[n++] = widget_rect(k, &k->cfg.widgets[i]);
         }
     if (sc->status) {
@@ -830,6 +856,11 @@ static void render(kiosk *k, int si)
     else if (n) fx_app_present(k->app, dmg, n);
     if (whole || n) {
         k->frames++;
+        if (trace_fd >= 0) {
+            struct timespec ts;
+            clock_gettime(CLOCK_MONOTONIC, &ts);
+            trace_frame(k, drawn, (int64_t)ts.tv_sec * 1000000000 + ts.tv_nsec);
+        }
         if (!k->headless && !k->ready_sent) {
             /* Type=notify: the unit is up once something is on the screen */
             sd_notify(0, "READY=1\nSTATUS=drawing");
@@ -1536,6 +1567,22 @@ int main(int argc, char **argv)
             o.display.memory_w = o0->width;
             o.display.memory_h = o0->height;
         }
+    }
+    /* the latency trace (trace_frame); O_NONBLOCK only for the open: a
+     * FIFO nobody reads is refused now (ENXIO) instead of hanging here */
+    const char *tr = getenv("FIXEL_KIOSK_TRACE");
+    if (tr && *tr) {
+        trace_fd = open(tr, O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC | O_NONBLOCK | O_NOCTTY, 0644);
+        if (trace_fd < 0) {
+            char shown[120]; /* no terminal escapes from the environment into the log */
+            int e = errno;
+            snprintf(shown, sizeof shown, "%s", tr);
+            for (char *c = shown; *c; c++)
+                if ((unsigned char)*c < 0x20 || *c == 0x7f) *c = '?';
+            fprintf(stderr, "fixel-kiosk: FIXEL_KIOSK_TRACE=%s: %s\n", shown, strerror(e));
+            return 1;
+        }
+        fcntl(trace_fd, F_SETFL, fcntl(trace_fd, F_GETFL) & ~O_NONBLOCK);
     }
     /* A kiosk booted before its screen is plugged in (or switched on) waits
      * for it instead of drawing into memory; FIXEL_WAIT_DISPLAY=0 does not. */
