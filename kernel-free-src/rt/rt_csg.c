@@ -7,9 +7,10 @@
  * whether the line starts inside the solid: combining two lists is then a
  * merge along t that keeps the running inside/outside state of each side
  * and emits a hit wherever the combined state changes (the notes' union,
- * intersection and difference). The nearest visible hit is chosen only at
- * the top, so a ray that starts inside a CSG solid (refraction) sees it
- * exactly as one that starts outside. */
+ * intersection and difference). A traced ray's merges start at its tmin
+ * (crossings behind it only set the starting state), so a ray that starts
+ * inside a CSG solid (refraction) sees it exactly as one that starts
+ * outside, and an overflowing list keeps the crossings ahead of the ray. */
 #include "fixel/error.h"
 #include "rt_int.h"
 #include "../base/fx_internal.h"
@@ -202,8 +203,12 @@ static int combine_state(int op, int a, int b)
     return op == FX_RT_UNION ? (a || b) : op == FX_RT_INTERSECTION ? (a && b) : (a && !b);
 }
 
-/* The notes' CSG merge: walk both sorted lists along t. */
-static void combine(int op, const fx_rt_hitlist *A, const fx_rt_hitlist *B, fx_rt_hitlist *out)
+/* The notes' CSG merge: walk both sorted lists along t. Crossings at or
+ * before tmin change the running state but are not emitted: the result
+ * starts at tmin (inside0 is the state there), so when a long list
+ * overflows, the crossings it keeps are the nearest ones *ahead* of the
+ * ray, not those behind its origin. */
+static void combine(int op, const fx_rt_hitlist *A, const fx_rt_hitlist *B, int64_t tmin, fx_rt_hitlist *out)
 {
     int ina = A->inside0, inb = B->inside0, in = combine_state(op, ina, inb);
     out->n = 0;
@@ -221,6 +226,10 @@ static void combine(int op, const fx_rt_hitlist *A, const fx_rt_hitlist *B, fx_r
         if (now == in)
             continue;
         in = now;
+        if (h.t <= tmin) {
+            out->inside0 = (uint8_t)now;
+            continue;
+        }
         if (out->n >= FX_RT_MAX_HITS) {
             out->overflow = 1;
             break;
@@ -256,7 +265,7 @@ static void hits_rec(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, int64_t 
     if (!a.n && !a.inside0 && o->kind != FX_RT_UNION)
         return;
     hits_rec(s, o->right, S, c, tmin, &b);
-    combine(o->kind, &a, &b, out);
+    combine(o->kind, &a, &b, tmin, out);
 }
 
 void fx_rt_hits(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
@@ -266,7 +275,7 @@ void fx_rt_hits(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, fx_rt_hitlist
         out->inside0 = out->overflow = 0;
         return;
     }
-    hits_rec(s, i, S, c, INT32_MIN, out);
+    hits_rec(s, i, S, c, INT64_MIN, out);
 }
 
 static fx_vec3 world_normal(const fx_rt_scene *s, const fx_rt_hit *h)

@@ -267,6 +267,45 @@ FX_TEST(rt_csg_hit_lists_follow_the_solids_definition)
     }
 }
 
+FX_TEST(rt_csg_ray_starting_inside_sees_the_hits_ahead)
+{
+    /* a union of nine unit spheres in a row along x: the whole line
+     * crosses it 18 times, more than a hit list holds. A ray starting at
+     * the centre of the last sphere must still find its exit at t = 1,
+     * whatever lies behind it (a refracted ray starts inside like this) */
+    fx_rt_object mem[32];
+    fx_rt_scene s;
+    fx_rt_scene_init(&s, mem, 32);
+    int root = -1;
+    for (int k = 0; k < 9; k++) {
+        fx_mat4 m;
+        fx_mat4_translate(&m, (4 * k - 16) * FX16_ONE, 0, 0);
+        int o = fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &m, 0);
+        FX_CHECK(o >= 0);
+        root = k ? fx_rt_add_csg(&s, FX_RT_UNION, root, o) : o;
+        FX_CHECK(root >= 0);
+    }
+    /* the whole line: the nearest 16 crossings kept, overflow reported */
+    fx_rt_hitlist l;
+    fx_rt_hits(&s, root, fx_vec3_make(16 * FX16_ONE, 0, 0), fx_vec3_make(FX16_ONE, 0, 0), &l);
+    FX_CHECK(l.overflow);
+    FX_CHECK_EQ(l.n, FX_RT_MAX_HITS);
+    FX_CHECK(l.h[0].t < -30 * FX16_ONE);
+    for (int k = 0; k < 2; k++) { /* a primary ray (tmin 0) and a secondary one */
+        fx16 tmin = k ? FX_RT_EPS : 0;
+        fx_rt_hit h;
+        fx_vec3 n;
+        FX_CHECK(fx_rt_first_hit(&s, fx_vec3_make(16 * FX16_ONE, 0, 0), fx_vec3_make(FX16_ONE, 0, 0), tmin, &h, &n));
+        FX_CHECK_EQ(h.t, FX16_ONE);
+        FX_CHECK(!h.entering);
+        FX_CHECK_EQ(n.x, FX16_ONE);
+        /* going back (-x) the list is long ahead of the ray: the exit
+         * at t = 1 again */
+        FX_CHECK(fx_rt_first_hit(&s, fx_vec3_make(16 * FX16_ONE, 0, 0), fx_vec3_make(-FX16_ONE, 0, 0), tmin, &h, 0));
+        FX_CHECK_EQ(h.t, FX16_ONE);
+    }
+}
+
 FX_TEST(rt_bounding_boxes_skip_only_missed_shapes)
 {
     /* a ray the box test rejects has no hit on the shape itself */
