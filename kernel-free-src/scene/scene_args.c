@@ -204,6 +204,7 @@ A(rtlight, WR("X"), WR("Y"), WR("Z"), C("COLOR"), OPT, F("ATTEN", 0, 1));
 A(rtmaterial, C("AMB"), C("DIFF"), C("SPEC"), I("SHININESS", 0, 256), OPT, F("REFLECT", 0, 1), F("TRANSP", 0, 1),
   F("IOR", 1, 4));
 A(rttexture, FORM("none"), FORM(0), W("wood|marble|checker"), C("COLOR"), FR("SCALE", 4096, 64 * 65536));
+A(rtbump, FORM("none"), FORM(0), F("HEIGHT", 0, 1), FR("SCALE", 4096, 64 * 65536));
 A(rtdepth, I("DEPTH", 0, FX_RT_MAX_RECURSION), OPT, F("CUTOFF", 0, 1));
 A(rttranslate, WR("X"), WR("Y"), WR("Z"));
 A(rtscale, F("SX", -16, 16), F("SY", -16, 16), F("SZ", -16, 16));
@@ -273,6 +274,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"solid3d", a_solid3d, 0, 0}, {"texgen", a_texgen, 0, 0},
     {"rtcamera", a_rtcamera, 0, 0}, {"rtlight", a_rtlight, 0, 0}, {"rtambient", a_color, 0, 0},
     {"rtbackground", a_color, 0, 0}, {"rtmaterial", a_rtmaterial, 0, 0}, {"rttexture", a_rttexture, 0, 0},
+    {"rtbump", a_rtbump, 0, 0},
     {"rtdepth", a_rtdepth, 0, 0}, {"rtidentity", a_none, 0, 0}, {"rtpush", a_none, 0, 0},
     {"rtpop", a_none, "rtpush", 0}, {"rttranslate", a_rttranslate, 0, 0}, {"rtscale", a_rtscale, 0, 0},
     {"rtrotate", a_rtrotate, 0, 0}, {"rtshape", a_rtshape, 0, 0},

@@ -151,6 +151,27 @@ static int cmd_texture(fx_scene *sc)
     return 0;
 }
 
+static int cmd_bump(fx_scene *sc)
+{
+    GET(r);
+    static const char *const none[] = {"none", NULL};
+    fx16 k[2] = {0, FX16_ONE};
+    int i = sc->pos;
+    while (i < sc->len && (sc->text[i] == ' ' || sc->text[i] == '\t'))
+        i++;
+    if (i < sc->len && sc->text[i] == 'n') {
+        TRY(fx_scene_arg_choice(sc, none));
+    } else {
+        TRY(fxs(sc, k, 2));
+        if (k[0] < 0 || k[0] > FX16_ONE || k[1] < FX16_ONE / 16 || k[1] > 64 * FX16_ONE)
+            return fx_scene_error(sc, "rtbump: HEIGHT 0..1, SCALE 0.0625..64");
+    }
+    TRY(fx_scene_end(sc));
+    r->mat.bump = k[0];
+    r->mat.bump_scale = k[1];
+    return 0;
+}
+
 static int cmd_depth(fx_scene *sc)
 {
     GET(r);
@@ -381,6 +402,7 @@ const fx_scene_cmd fx_scene_cmds_rt[] = {
     {"rtbackground", cmd_background, "rtbackground #RGB", D},
     {"rtmaterial", cmd_material, "rtmaterial #AMB #DIFF #SPEC SHININESS [REFLECT TRANSP IOR]", D},
     {"rttexture", cmd_texture, "rttexture none | wood|marble|checker #RGB SCALE", D},
+    {"rtbump", cmd_bump, "rtbump none | rtbump HEIGHT SCALE", D},
     {"rtdepth", cmd_depth, "rtdepth DEPTH [CUTOFF]", D},
     {"rtidentity", cmd_identity, "rtidentity", D},
     {"rtpush", cmd_push, "rtpush", D},

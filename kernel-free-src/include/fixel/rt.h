@@ -73,6 +73,8 @@ typedef struct fx_rt_material {
     fx_rt_texture texture;
     fx3d_rgb tex_color; /* second colour of a texture (the first is diffuse) */
     fx16 tex_scale;     /* world units per texture unit */
+    fx16 bump;          /* bump height, world units 0..1 (0: smooth; fx_rt_bump_normal) */
+    fx16 bump_scale;    /* world units per noise cell of the bumps, 1/16..64 */
 } fx_rt_material;
 
 typedef struct fx_rt_box {
@@ -197,6 +199,12 @@ fx16 fx_rt_turbulence3(fx_vec3 p, int octaves);
  * noise, MARBLE turbulent stripes across x, CHECKER unit cubes, NONE 0.
  * The ray tracer and the rasterizer (fx3d_solid) both colour with it. */
 fx16 fx_rt_solid(int kind, fx_vec3 q);
+/* Bump mapping (Blinn): the unit normal n at point P of a surface displaced
+ * along n by height * noise3(P / scale). The normal is tilted against the
+ * tangential part of the height's gradient (central differences of
+ * fx_rt_noise3, 2^-7 cells apart) and normalised again. height 0..1,
+ * scale 1/16..64 (clamped); height 0 returns n. */
+fx_vec3 fx_rt_bump_normal(fx16 height, fx16 scale, fx_vec3 P, fx_vec3 n);
 
 #ifdef __cplusplus
 }  /* extern "C" */
