@@ -102,20 +102,21 @@ fx16 fx_rt_solid(int kind, fx_vec3 q)
     return w;
 }
 
-fx_vec3 fx_rt_bump_normal(fx16 height, fx16 scale, fx_vec3 P, fx_vec3 n)
+static void bump_clamp(fx16 *height, fx16 *scale)
+{
+    if (*height > FX16_ONE)
+        *height = FX16_ONE;
+    if (*scale < FX16_ONE / 16)
+        *scale = FX16_ONE / 16;
+    if (*scale > 64 * FX16_ONE)
+        *scale = 64 * FX16_ONE;
+}
+
+fx_vec3 fx_rt_bump_gradient(fx16 height, fx16 scale, fx_vec3 q)
 {
     if (height <= 0)
-        return n;
-    if (height > FX16_ONE)
-        height = FX16_ONE;
-    if (scale < FX16_ONE / 16)
-        scale = FX16_ONE / 16;
-    if (scale > 64 * FX16_ONE)
-        scale = 64 * FX16_ONE;
-    /* |P| <= 2^15 units saturated, / 1/16: q may saturate, which only
-     * repeats the noise (the lattice wraps) */
-    fx_vec3 q = fx_vec3_make(rt_sat((int64_t)P.x * 65536 / scale), rt_sat((int64_t)P.y * 65536 / scale),
-                             rt_sat((int64_t)P.z * 65536 / scale));
+        return fx_vec3_make(0, 0, 0);
+    bump_clamp(&height, &scale);
     const fx16 dq = FX16_ONE >> 7;
     int64_t g[3];
     for (int i = 0; i < 3; i++) {
@@ -125,12 +126,26 @@ fx_vec3 fx_rt_bump_normal(fx16 height, fx16 scale, fx_vec3 P, fx_vec3 n)
         *pb = (fx16)((uint32_t)*pb - (uint32_t)dq);
         /* d noise / d q in Q16.16 (|.| <= 1.5: lattice values in [0, 1),
          * smoothstep slope at most 1.5), then times height / scale: the
-         * world gradient, at most 24 units (Q32 / Q16 = Q16). 2^-7 cells
-         * balances the stencil's truncation against the noise's rounding
-         * (2^-8 and 2^-6 were measured worse) */
+         * gradient per unit of P, at most 24 units (Q32 / Q16 = Q16).
+         * 2^-7 cells balances the stencil's truncation against the noise's
+         * rounding (2^-8 and 2^-6 were measured worse) */
         int64_t d = ((int64_t)fx_rt_noise3(a) - fx_rt_noise3(b)) * 64;
         g[i] = d * height / scale;
     }
+    return fx_vec3_make((fx16)g[0], (fx16)g[1], (fx16)g[2]);
+}
+
+fx_vec3 fx_rt_bump_normal(fx16 height, fx16 scale, fx_vec3 P, fx_vec3 n)
+{
+    if (height <= 0)
+        return n;
+    bump_clamp(&height, &scale);
+    /* |P| <= 2^15 units saturated, / 1/16: q may saturate, which only
+     * repeats the noise (the lattice wraps) */
+    fx_vec3 q = fx_vec3_make(rt_sat((int64_t)P.x * 65536 / scale), rt_sat((int64_t)P.y * 65536 / scale),
+                             rt_sat((int64_t)P.z * 65536 / scale));
+    fx_vec3 gv = fx_rt_bump_gradient(height, scale, q);
+    const int64_t g[3] = {gv.x, gv.y, gv.z};
     int64_t gn = rt_mul(g[0], n.x) + rt_mul(g[1], n.y) + rt_mul(g[2], n.z);
     fx_vec3 o = fx_vec3_make(rt_sat(n.x - (g[0] - rt_mul(gn, n.x))), rt_sat(n.y - (g[1] - rt_mul(gn, n.y))),
                              rt_sat(n.z - (g[2] - rt_mul(gn, n.z))));

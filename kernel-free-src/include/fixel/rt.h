@@ -205,6 +205,10 @@ fx16 fx_rt_solid(int kind, fx_vec3 q);
  * fx_rt_noise3, 2^-7 cells apart) and normalised again. height 0..1,
  * scale 1/16..64 (clamped); height 0 returns n. */
 fx_vec3 fx_rt_bump_normal(fx16 height, fx16 scale, fx_vec3 P, fx_vec3 n);
+/* The gradient of that height field, height * noise3(q) with q = P / scale,
+ * taken with respect to P (so times height / scale), at texture point q;
+ * each component within +-24 units. The rasterizer's bumps use it. */
+fx_vec3 fx_rt_bump_gradient(fx16 height, fx16 scale, fx_vec3 q);
 
 #ifdef __cplusplus
 }  /* extern "C" */
