@@ -366,6 +366,10 @@ static int cmd_raytrace(fx_scene *sc)
         for (int i = 0; i < 4; i++)
             TRY(fx_scene_arg_int(sc, &v[i]));
     TRY(fx_scene_end(sc));
+    if (sc->raytrace) {
+        int e = sc->raytrace(sc->host.user, &r->s, &sc->ctx.surf, v[0], v[1], v[2], v[3]);
+        return e < 0 ? fx_scene_error(sc, "raytrace: the host's renderer failed (%d)", e) : 0;
+    }
     fx_rt_render(&r->s, &sc->ctx.surf, v[0], v[1], v[2], v[3]);
     return 0;
 }
