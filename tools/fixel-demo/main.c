@@ -315,7 +315,7 @@ static void tick(void *user, int value)
     d->st.frame++;
     /* only the animated pages need a frame on every tick */
     const char *n = demo_pages[d->st.page].name;
-    if (!strcmp(n, "3d") || !strcmp(n, "transforms"))
+    if (!strcmp(n, "3d") || !strcmp(n, "transforms") || (!strcmp(n, "raytrace") && demo_rt_busy(&d->st)))
         redisplay(d);
     fx_app_timer(d->app, 33, tick, 0);
 }
