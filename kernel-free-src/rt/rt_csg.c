@@ -52,7 +52,7 @@ int fx_rt_add_light(fx_rt_scene *s, fx_vec3 pos, fx3d_rgb color, fx16 atten)
 {
     if (s->nlights >= FX_RT_MAX_LIGHTS)
         return -FX_ENOSPC;
-    if (!in_world(pos) || atten < 0)
+    if (!in_world(pos) || atten < 0 || atten > FX16_ONE)
         return -FX_EDOM;
     fx_rt_light *l = &s->light[s->nlights++];
     l->pos = pos;

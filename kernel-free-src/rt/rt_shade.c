@@ -270,8 +270,13 @@ static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 we
             }
             continue;
         }
-        int64_t d2 = ((int64_t)dist * dist) >> 16; /* Q16.16, may exceed int32 */
-        int64_t den = ONE + rt_mul(L->atten, d2);
+        /* Q16.16, may exceed int32 (< 2^34 within the world, < 2^46 for
+         * any dist an fx16 holds). k is capped at 1 as fx_rt_add_light
+         * does, for lights written into the struct directly: the product
+         * k d^2 then stays below 2^62 */
+        int64_t d2 = ((int64_t)dist * dist) >> 16;
+        int64_t k = L->atten < 0 ? 0 : L->atten > FX16_ONE ? FX16_ONE : L->atten;
+        int64_t den = ONE + rt_mul(k, d2);
         fx16 att = (fx16)((ONE << 16) / den);
         if (tr->trace) {
             char what[64];

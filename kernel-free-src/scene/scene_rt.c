@@ -79,6 +79,8 @@ static int cmd_light(fx_scene *sc)
     int e = fx_rt_add_light(&r->s, v3(v), fx3d_rgb_from_color(c), att);
     if (e == -FX_ENOSPC)
         return fx_scene_error(sc, "rtlight: at most %d lights", FX_RT_MAX_LIGHTS);
+    if (e < 0 && (att < 0 || att > FX16_ONE))
+        return fx_scene_error(sc, "rtlight: ATTEN 0..1");
     return e < 0 ? fx_scene_error(sc, "rtlight: position outside the scene limit") : 0;
 }
 

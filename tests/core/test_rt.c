@@ -460,6 +460,18 @@ FX_TEST(rt_shadow_feelers_darken_what_the_light_cannot_see)
     fx3d_rgb att = fx_rt_trace_ray(&s, fx_vec3_make(3 * FX16_ONE, 0, 0), down, 0, 0);
     double d2 = 9 + 121, want = beside.r * Q / (1 + d2);
     FX_CHECK_MSG(fabs(att.r * Q - want) < 1.0 / 256, "attenuated %f, want %f", att.r * Q, want);
+    /* the API caps k at 1; a larger k written into the struct counts as
+     * 1, also with the light far outside the world (d^2 = 2^28 units^2:
+     * k d^2 overflowed int64 before the cap, which SAN=1 reports) */
+    FX_CHECK_EQ(fx_rt_add_light(&s, fx_vec3_make(0, 10 * FX16_ONE, 0), fx3d_rgb_from_color(0xFFFFFF), FX16_ONE + 1),
+                -FX_EDOM);
+    FX_CHECK_EQ(fx_rt_add_light(&s, fx_vec3_make(0, 10 * FX16_ONE, 0), fx3d_rgb_from_color(0xFFFFFF), -1), -FX_EDOM);
+    s.light[0].atten = INT32_MAX;
+    fx3d_rgb capped = fx_rt_trace_ray(&s, fx_vec3_make(3 * FX16_ONE, 0, 0), down, 0, 0);
+    FX_CHECK_EQ(capped.r, att.r);
+    s.light[0].pos = fx_vec3_make(0, INT32_MAX / 2, 0); /* 16 384 units up */
+    fx3d_rgb far = fx_rt_trace_ray(&s, fx_vec3_make(3 * FX16_ONE, 0, 0), down, 0, 0);
+    FX_CHECK(far.r >= 0 && far.r < 2);
 }
 
 typedef struct lines {

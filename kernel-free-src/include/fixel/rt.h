@@ -119,7 +119,7 @@ typedef struct fx_rt_object {
 typedef struct fx_rt_light {
     fx_vec3 pos;
     fx3d_rgb color;
-    fx16 atten; /* k of 1 / (1 + k d^2); 0: none */
+    fx16 atten; /* k of 1 / (1 + k d^2), 0..1 (larger is taken as 1); 0: none */
 } fx_rt_light;
 
 typedef struct fx_rt_scene {
@@ -139,6 +139,9 @@ typedef struct fx_rt_scene {
 void fx_rt_scene_init(fx_rt_scene *s, fx_rt_object *mem, int cap);
 /* Camera: eye, look, up as fx_camera_set; fovy in degrees (1..179). */
 int fx_rt_set_camera(fx_rt_scene *s, fx_vec3 eye, fx_vec3 look, fx_vec3 up, fx16 fovy_deg);
+/* A point light within the scene-scale limit, attenuation k of
+ * 1 / (1 + k d^2) in 0..1 (d in world units); -FX_EDOM otherwise,
+ * -FX_ENOSPC beyond FX_RT_MAX_LIGHTS. Returns its index. */
 int fx_rt_add_light(fx_rt_scene *s, fx_vec3 pos, fx3d_rgb color, fx16 atten);
 
 /* Add a shape placed by the object-to-world matrix m. Returns its index,
