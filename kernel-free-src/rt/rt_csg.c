@@ -125,7 +125,9 @@ int fx_rt_add_mesh(fx_rt_scene *s, const fx_rt_mesh *mesh, const fx_mat4 *m, con
 
 int fx_rt_add_shape(fx_rt_scene *s, fx_rt_kind kind, fx16 taper, const fx_mat4 *m, const fx_rt_material *mat)
 {
-    if (kind > FX_RT_CYLINDER || (kind == FX_RT_CYLINDER && (taper < 0 || taper > 2 * FX16_ONE)))
+    if ((kind > FX_RT_CYLINDER && kind != FX_RT_TORUS) ||
+        (kind == FX_RT_CYLINDER && (taper < 0 || taper > 2 * FX16_ONE)) ||
+        (kind == FX_RT_TORUS && (taper < FX16_ONE / 16 || taper > FX16_ONE)))
         return -FX_EINVAL;
     if (s->n >= s->cap)
         return -FX_ENOSPC;
@@ -136,9 +138,9 @@ int fx_rt_add_shape(fx_rt_scene *s, fx_rt_kind kind, fx16 taper, const fx_mat4 *
         for (int i = 0; i < 3; i++)
             b.lo[i] = (fx16)-WORLD, b.hi[i] = (fx16)WORLD;
     } else {
-        int64_t r = kind == FX_RT_CYLINDER && taper > FX16_ONE ? taper : ONE;
-        int64_t zlo = kind == FX_RT_CYLINDER || kind == FX_RT_SQUARE ? 0 : -ONE;
-        int64_t zhi = kind == FX_RT_SQUARE ? 0 : ONE;
+        int64_t r = kind == FX_RT_CYLINDER && taper > FX16_ONE ? taper : kind == FX_RT_TORUS ? ONE + taper : ONE;
+        int64_t zlo = kind == FX_RT_CYLINDER || kind == FX_RT_SQUARE ? 0 : kind == FX_RT_TORUS ? -taper : -ONE;
+        int64_t zhi = kind == FX_RT_SQUARE ? 0 : kind == FX_RT_TORUS ? taper : ONE;
         const int64_t lo[3] = {-r, -r, zlo}, hi[3] = {r, r, zhi};
         TRY(world_box(m, lo, hi, &b));
     }
@@ -147,7 +149,7 @@ int fx_rt_add_shape(fx_rt_scene *s, fx_rt_kind kind, fx16 taper, const fx_mat4 *
     o->kind = (uint8_t)kind;
     o->top = 1;
     o->left = o->right = -1;
-    o->taper = kind == FX_RT_CYLINDER ? taper : FX16_ONE;
+    o->taper = kind == FX_RT_CYLINDER || kind == FX_RT_TORUS ? taper : FX16_ONE;
     o->inv = inv;
     o->box = b;
     if (mat)

@@ -197,8 +197,8 @@ static void say(const tracer *tr, int depth, const char *what, const char *name,
 
 static const char *kind_name(int k)
 {
-    static const char *const names[] = {"sphere", "cube", "square", "plane", "cylinder", "mesh"};
-    return k >= 0 && k <= FX_RT_MESH ? names[k] : "?";
+    static const char *const names[] = {"sphere", "cube", "square", "plane", "cylinder", "mesh", "torus"};
+    return k >= 0 && k <= FX_RT_TORUS ? names[k] : "?";
 }
 
 static fx16 dot(fx_vec3 a, fx_vec3 b) { return fx_vec3_dot(a, b); }

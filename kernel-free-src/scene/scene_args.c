@@ -210,7 +210,8 @@ A(rtdepth, I("DEPTH", 0, FX_RT_MAX_RECURSION), OPT, F("CUTOFF", 0, 1));
 A(rttranslate, WR("X"), WR("Y"), WR("Z"));
 A(rtscale, F("SX", -16, 16), F("SY", -16, 16), F("SZ", -16, 16));
 A(rtrotate, DEG("DEG"), WR("AX"), WR("AY"), WR("AZ"));
-A(rtshape, FORM("taper"), F("S", 0, 2), FORM(0), W("sphere|cube|square|plane|cylinder|cone"));
+A(rtshape, FORM("taper"), F("S", 0, 2), FORM("torus"), FR("r", 4096, 65536), FORM(0),
+  W("sphere|cube|square|plane|cylinder|cone"));
 A(rtcsg, W("union|intersection|difference"));
 A(rtmesh, FORM("teapot"), IW("N", 1, 16), FORM("torus"), F("R", 0, 16), F("r", 0, 8), IW("SIDES", 3, 256),
   IW("RINGS", 3, 256), FORM("obj"), S("FILE"));

@@ -261,14 +261,14 @@ static int cmd_rotate(fx_scene *sc)
 static int cmd_shape(fx_scene *sc)
 {
     GET(r);
-    static const char *const ch[] = {"sphere", "cube", "square", "plane", "cylinder", "cone", "taper", NULL};
+    static const char *const ch[] = {"sphere", "cube", "square", "plane", "cylinder", "cone", "taper", "torus", NULL};
     int k;
     TRY(k = fx_scene_arg_choice(sc, ch));
     fx16 s = k == 5 ? 0 : FX16_ONE;
-    if (k == 6)
+    if (k >= 6)
         TRY(fx_scene_arg_fx16(sc, &s));
     TRY(fx_scene_end(sc));
-    fx_rt_kind kind = k >= 4 ? FX_RT_CYLINDER : (fx_rt_kind)k;
+    fx_rt_kind kind = k == 7 ? FX_RT_TORUS : k >= 4 ? FX_RT_CYLINDER : (fx_rt_kind)k;
     int e = fx_rt_add_shape(&r->s, kind, s, &r->stack[r->top], &r->mat);
     if (e == -FX_ENOSPC)
         return fx_scene_error(sc, "rtshape: at most %d objects", RT_OBJECTS);
@@ -276,6 +276,8 @@ static int cmd_shape(fx_scene *sc)
         return fx_scene_error(sc, "rtshape: the transform is singular or scales an axis below 1/16");
     if (e == -FX_ERANGE)
         return fx_scene_error(sc, "rtshape: the shape leaves the scene limit (+-%d units)", FX_RT_WORLD);
+    if (e < 0 && kind == FX_RT_TORUS)
+        return fx_scene_error(sc, "rtshape: torus tube radius r 0.0625..1");
     return e < 0 ? fx_scene_error(sc, "rtshape: TAPER 0..2") : 0;
 }
 
@@ -416,7 +418,7 @@ const fx_scene_cmd fx_scene_cmds_rt[] = {
     {"rttranslate", cmd_translate, "rttranslate X Y Z", D},
     {"rtscale", cmd_scale, "rtscale SX SY SZ", D},
     {"rtrotate", cmd_rotate, "rtrotate DEG AX AY AZ", D},
-    {"rtshape", cmd_shape, "rtshape sphere|cube|square|plane|cylinder|cone | rtshape taper S", D},
+    {"rtshape", cmd_shape, "rtshape sphere|cube|square|plane|cylinder|cone | rtshape taper S | rtshape torus r", D},
     {"rtmesh", cmd_mesh, "rtmesh teapot N | rtmesh torus R r SIDES RINGS | rtmesh obj \"FILE\"", D},
     {"rtcsg", cmd_csg, "rtcsg union|intersection|difference", D},
     {"raytrace", cmd_raytrace, "raytrace [X Y W H]", D},

@@ -57,6 +57,7 @@ typedef enum fx_rt_kind {
     FX_RT_PLANE,    /* the half-space z <= 0 */
     FX_RT_CYLINDER, /* tapered: x^2 + y^2 <= (1 + (s - 1) z)^2, 0 <= z <= 1 */
     FX_RT_MESH,     /* triangles through a BVH (fx_rt_mesh); a surface, no inside */
+    FX_RT_TORUS,    /* (x^2 + y^2 + z^2 + 1 - r^2)^2 <= 4 (x^2 + y^2): ring radius 1 about z, tube r */
     FX_RT_UNION,
     FX_RT_INTERSECTION,
     FX_RT_DIFFERENCE
@@ -109,7 +110,7 @@ typedef struct fx_rt_object {
     uint8_t kind;       /* fx_rt_kind */
     uint8_t top;        /* 1: part of the scene (not inside a CSG node) */
     int16_t left, right; /* children of a CSG node */
-    fx16 taper;         /* s of a tapered cylinder (1 = cylinder, 0 = cone) */
+    fx16 taper;         /* s of a tapered cylinder (1 = cylinder, 0 = cone); r of a torus */
     fx_mat4 inv;        /* world -> object */
     fx_rt_box box;      /* world bounding box */
     fx_rt_material mat; /* leaves */
@@ -147,7 +148,8 @@ int fx_rt_add_light(fx_rt_scene *s, fx_vec3 pos, fx3d_rgb color, fx16 atten);
 /* Add a shape placed by the object-to-world matrix m. Returns its index,
  * -FX_ENOSPC when the array is full, -FX_EDOM when m is singular or
  * scales an axis below 1/16, -FX_ERANGE when its bounds leave the
- * scene-scale limit, -FX_EINVAL for a bad kind or taper (0..2). */
+ * scene-scale limit, -FX_EINVAL for a bad kind or taper (0..2). For
+ * FX_RT_TORUS, taper is the tube radius r, 1/16..1. */
 int fx_rt_add_shape(fx_rt_scene *s, fx_rt_kind kind, fx16 taper, const fx_mat4 *m, const fx_rt_material *mat);
 /* Add a mesh (built by fx_rt_mesh_build) placed by m; errors as
  * fx_rt_add_shape. A mesh is a surface: along a ray it reports its nearest
