@@ -11,8 +11,8 @@
 #include "demo.h"
 #include "fixel/rt_mt.h"
 
-#define IW 784
-#define IH 408
+#define IW DEMO_RT_W
+#define IH DEMO_RT_H
 #define FX(v) ((fx16)((v) * 65536.0 + ((v) < 0 ? -0.5 : 0.5)))
 
 static fx_rt_object objs[24];
@@ -132,7 +132,8 @@ int demo_rt_key(demo_state *st, int key)
     (void)st;
     if (key != 'g')
         return 0;
-    rows_done = 0; /* trace it again, row by row */
+    rows_done = 0; /* trace it again, row by row, from a blank picture */
+    memset(img, 0, sizeof img);
     return 1;
 }
 
@@ -161,8 +162,8 @@ void demo_rt_page(fx_ctx *c, demo_state *st, int32_t top)
     fx_surface done = im;
     done.h = rows_done;
     fx_ctx_set_color(c, 0xFF000000u);
-    fx_fill_rect(c, 8, top, IW, IH);
-    fx_blit(&c->surf, 8, top, &done);
+    fx_fill_rect(c, DEMO_RT_X, top, IW, IH);
+    fx_blit(&c->surf, DEMO_RT_X, top, &done);
     demo_text(c, 16, top + IH + 6, 0xFFE8E8E8u,
               "Fixed-point ray tracing: lens L = S1 n S2, bowl B = (S1 - S2) - C, rocket R = C1 u C2 u C3 u C4,");
     demo_text(c, 16, top + IH + 20, 0xFFE8E8E8u,

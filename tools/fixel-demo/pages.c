@@ -809,7 +809,7 @@ static void page_viz(fx_ctx *c, demo_state *st)
 
 static void page_vsd(fx_ctx *c, demo_state *st) { demo_vsd_page(c, st, DEMO_TAB_H + 8); }
 
-static void page_rt(fx_ctx *c, demo_state *st) { demo_rt_page(c, st, DEMO_TAB_H + 8); }
+static void page_rt(fx_ctx *c, demo_state *st) { demo_rt_page(c, st, DEMO_RT_Y); }
 
 const demo_page demo_pages[] = {
     {"lines", "Lines", page_lines},
