@@ -29,6 +29,21 @@ void fx_rt_scene_init(fx_rt_scene *s, fx_rt_object *mem, int cap)
                      45 * FX16_ONE);
 }
 
+fx_rt_material fx_rt_material_make(fx_color ambient, fx_color diffuse, fx_color specular, int32_t shininess, fx16 kr,
+                                   fx16 kt, fx16 ior)
+{
+    fx_rt_material m;
+    __builtin_memset(&m, 0, sizeof m);
+    m.ambient = fx3d_rgb_from_color(ambient);
+    m.diffuse = fx3d_rgb_from_color(diffuse);
+    m.specular = fx3d_rgb_from_color(specular);
+    m.shininess = shininess;
+    m.reflectivity = kr;
+    m.transparency = kt;
+    m.ior = ior;
+    return m;
+}
+
 static int in_world(fx_vec3 p)
 {
     return p.x >= -WORLD && p.x <= WORLD && p.y >= -WORLD && p.y <= WORLD && p.z >= -WORLD && p.z <= WORLD;

@@ -38,17 +38,6 @@ static fx3d_rgb rgb_lerp(fx3d_rgb a, fx3d_rgb b, fx16 w)
 
 /* ---- solid textures ---- */
 
-static uint32_t hash3(int32_t x, int32_t y, int32_t z)
-{
-    uint32_t h = (uint32_t)x * 0x8DA6B343u ^ (uint32_t)y * 0xD8163841u ^ (uint32_t)z * 0xCB1AB31Fu;
-    h ^= h >> 15;
-    h *= 0x2C1B3C6Du;
-    h ^= h >> 12;
-    h *= 0x297A2D39u;
-    h ^= h >> 15;
-    return h;
-}
-
 static int64_t smooth(int64_t f) { return rt_mul(rt_mul(f, f), 3 * ONE - 2 * f); } /* 3f^2 - 2f^3 */
 
 fx16 fx_rt_noise3(fx_vec3 p)
@@ -57,7 +46,7 @@ fx16 fx_rt_noise3(fx_vec3 p)
     int64_t fx = smooth(p.x & 0xFFFF), fy = smooth(p.y & 0xFFFF), fz = smooth(p.z & 0xFFFF);
     int64_t v[8];
     for (int k = 0; k < 8; k++)
-        v[k] = hash3(ix + (k & 1), iy + ((k >> 1) & 1), iz + ((k >> 2) & 1)) >> 16;
+        v[k] = rt_hash3(ix + (k & 1), iy + ((k >> 1) & 1), iz + ((k >> 2) & 1)) >> 16;
     int64_t x0 = v[0] + rt_mul(v[1] - v[0], fx), x1 = v[2] + rt_mul(v[3] - v[2], fx);
     int64_t x2 = v[4] + rt_mul(v[5] - v[4], fx), x3 = v[6] + rt_mul(v[7] - v[6], fx);
     int64_t y0 = x0 + rt_mul(x1 - x0, fy), y1 = x2 + rt_mul(x3 - x2, fy);

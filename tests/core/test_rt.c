@@ -990,19 +990,8 @@ FX_TEST(rt_script_renders_and_traces_a_pixel)
 }
 
 /* fx_rt_noise3 in double with its exact gradient: the lattice values are
- * the core's (the same hash, top 16 bits), the smoothstep weights and the
+ * the core's (rt_hash3, top 16 bits), the smoothstep weights and the
  * trilinear blend exact. */
-static uint32_t ref_hash3(int32_t x, int32_t y, int32_t z)
-{
-    uint32_t h = (uint32_t)x * 0x8DA6B343u ^ (uint32_t)y * 0xD8163841u ^ (uint32_t)z * 0xCB1AB31Fu;
-    h ^= h >> 15;
-    h *= 0x2C1B3C6Du;
-    h ^= h >> 12;
-    h *= 0x297A2D39u;
-    h ^= h >> 15;
-    return h;
-}
-
 static void ref_noise_grad(const fx16 q[3], double g[3])
 {
     int32_t ix[3];
@@ -1015,7 +1004,7 @@ static void ref_noise_grad(const fx16 q[3], double g[3])
     }
     double v[8];
     for (int k = 0; k < 8; k++)
-        v[k] = (ref_hash3(ix[0] + (k & 1), ix[1] + ((k >> 1) & 1), ix[2] + ((k >> 2) & 1)) >> 16) * Q;
+        v[k] = (rt_hash3(ix[0] + (k & 1), ix[1] + ((k >> 1) & 1), ix[2] + ((k >> 2) & 1)) >> 16) * Q;
     double sx = sm[0], sy = sm[1], sz = sm[2];
     double x0 = v[0] + (v[1] - v[0]) * sx, x1 = v[2] + (v[3] - v[2]) * sx;
     double x2 = v[4] + (v[5] - v[4]) * sx, x3 = v[6] + (v[7] - v[6]) * sx;

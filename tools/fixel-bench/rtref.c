@@ -460,16 +460,7 @@ static fx_mat4 upright(fx_mat4 m)
 
 static fx_rt_material mat(fx_color amb, fx_color diff, fx_color spec, int f, double kr, double kt, double ior)
 {
-    fx_rt_material m;
-    memset(&m, 0, sizeof m);
-    m.ambient = fx3d_rgb_from_color(amb);
-    m.diffuse = fx3d_rgb_from_color(diff);
-    m.specular = fx3d_rgb_from_color(spec);
-    m.shininess = f;
-    m.reflectivity = FX(kr);
-    m.transparency = FX(kt);
-    m.ior = FX(ior);
-    return m;
+    return fx_rt_material_make(amb, diff, spec, f, FX(kr), FX(kt), FX(ior));
 }
 
 static int shape(fx_rt_scene *s, fx_rt_kind k, double taper, fx_mat4 m, const fx_rt_material *mt)

@@ -23,16 +23,7 @@ static int32_t rows_done; /* interactive: rows traced so far */
 
 static fx_rt_material mat(fx_color amb, fx_color diff, fx_color spec, int shine, double kr, double kt, double ior)
 {
-    fx_rt_material m;
-    memset(&m, 0, sizeof m);
-    m.ambient = fx3d_rgb_from_color(amb);
-    m.diffuse = fx3d_rgb_from_color(diff);
-    m.specular = fx3d_rgb_from_color(spec);
-    m.shininess = shine;
-    m.reflectivity = FX(kr);
-    m.transparency = FX(kt);
-    m.ior = FX(ior);
-    return m;
+    return fx_rt_material_make(amb, diff, spec, shine, FX(kr), FX(kt), FX(ior));
 }
 
 /* T(at) Rx(rx) Ry(ry) T(off) S(scale): an object placed in its group,
@@ -75,17 +66,19 @@ static int build(void)
     fx_rt_scene_init(s, objs, (int)(sizeof objs / sizeof objs[0]));
     int e = fx_rt_set_camera(s, fx_vec3_make(0, FX(1.9), FX(7.2)), fx_vec3_make(0, FX(-0.15), 0),
                              fx_vec3_make(0, FX16_ONE, 0), FX(40));
-    s->ambient = fx3d_rgb_from_color(0x303030);
-    s->background = fx3d_rgb_from_color(0x304060);
+    /* a warm key light high on the left, a cool fill on the right, an
+     * evening sky */
+    s->ambient = fx3d_rgb_from_color(0x282830);
+    s->background = fx3d_rgb_from_color(0x28385A);
     s->max_depth = 5;
-    s->cutoff = FX(0.004);
-    fx_rt_add_light(s, fx_vec3_make(FX(-4), FX(6), FX(6)), fx3d_rgb_from_color(0xE0E0E0), FX(0.005));
-    fx_rt_add_light(s, fx_vec3_make(FX(5), FX(4), FX(3)), fx3d_rgb_from_color(0x606060), 0);
-    /* the marble floor y = -1 */
-    fx_rt_material marble = mat(0x404040, 0xF0F0F0, 0x404040, 10, 0.15, 0, 1);
+    s->cutoff = FX(1.0 / 256);
+    fx_rt_add_light(s, fx_vec3_make(FX(-5), FX(7), FX(5)), fx3d_rgb_from_color(0xF0E8D8), FX(0.004));
+    fx_rt_add_light(s, fx_vec3_make(FX(6), FX(3), FX(4)), fx3d_rgb_from_color(0x404860), 0);
+    /* the marble floor y = -1: cream with brown veins */
+    fx_rt_material marble = mat(0x383430, 0xE8E4DC, 0x303030, 12, 0.12, 0, 1);
     marble.texture = FX_RT_TEX_MARBLE;
-    marble.tex_color = fx3d_rgb_from_color(0x283040);
-    marble.tex_scale = FX(0.8);
+    marble.tex_color = fx3d_rgb_from_color(0x5A4030);
+    marble.tex_scale = FX(1.1);
     const double floor_at[3] = {0, -1, 0};
     e |= add(FX_RT_PLANE, 0, place(floor_at, -90, 0, 0, 0, 0, 1, 1, 1), &marble);
     /* glass and mirror spheres in front */

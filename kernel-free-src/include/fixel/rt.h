@@ -78,6 +78,12 @@ typedef struct fx_rt_material {
     fx16 bump_scale;    /* world units per noise cell of the bumps, 1/16..64 */
 } fx_rt_material;
 
+/* A material with no texture and no bumps: ambient, diffuse and specular
+ * colours, Phong exponent (0..256), reflectivity kr and transparency kt
+ * (0..1) and index of refraction (1..4). */
+fx_rt_material fx_rt_material_make(fx_color ambient, fx_color diffuse, fx_color specular, int32_t shininess, fx16 kr,
+                                   fx16 kt, fx16 ior);
+
 typedef struct fx_rt_box {
     fx16 lo[3], hi[3];
 } fx_rt_box;
