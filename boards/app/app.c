@@ -13,6 +13,7 @@
 #include <string.h>
 #include <strings.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <sys/signalfd.h>
 #include <sys/stat.h>
 #include <sys/timerfd.h>
@@ -44,25 +45,202 @@ static uint64_t clock_now(void *user)
     return now_us();
 }
 
+/* Display i of the app: 0 its own, 1.. the added ones. */
+static fx_display *disp_of(const fx_app *a, int i) { return i == 0 ? a->disp : a->extra[i - 1].disp; }
+static fx_input *input_of(fx_app *a, int i) { return i == 0 ? &a->in : &a->extra[i - 1].in; }
+static int *touch_hidden_of(fx_app *a, int i)
+{
+    return i == 0 ? &a->pointer_touch_hidden : &a->extra[i - 1].touch_hidden;
+}
+
+/* The pointer state follows its display's size and rotation (a monitor
+ * replaced by a bigger one keeps its input in range). */
+static void input_geometry(fx_app *a, int i)
+{
+    fx_display_info info;
+    fx_display_get_info(disp_of(a, i), &info);
+    fx_input *in = input_of(a, i);
+    if (in->phys_w == info.width && in->phys_h == info.height && in->rotation == info.rotation)
+        return;
+    in->phys_w = info.width;
+    in->phys_h = info.height;
+    in->rotation = info.rotation;
+    if (in->px >= info.width)
+        in->px = info.width - 1;
+    if (in->py >= info.height)
+        in->py = info.height - 1;
+}
+
 void fx_app_emit(void *u, const fx_event *e)
 {
     fx_app *a = u;
+    int i = a->emitting;
+    int *hidden = touch_hidden_of(a, i);
     /* A touchscreen's pointing (BTN_TOUCH comes as mouse events too) hides
      * the pointer; a mouse or tablet brings it back. */
     if (e->type == FX_EVENT_TOUCH || (a->feeding_cls & FX_DEV_TOUCH))
-        a->pointer_touch_hidden = 1;
+        *hidden = 1;
     else if ((a->feeding_cls & (FX_DEV_MOUSE | FX_DEV_TABLET)) &&
              (e->type == FX_EVENT_MOUSE || e->type == FX_EVENT_MOTION ||
               e->type == FX_EVENT_PASSIVE || e->type == FX_EVENT_WHEEL))
-        a->pointer_touch_hidden = 0;
-    fx_dispatch(&a->cb, a->user, e);
+        *hidden = 0;
+    if (i == 0)
+        fx_dispatch(&a->cb, a->user, e);
+    else
+        fx_dispatch(&a->extra[i - 1].cb, a->extra[i - 1].cb_user, e);
 }
 
 void fx_app_feed(fx_app *a, fx_input_dev *d, const fx_raw_event *ev)
 {
+    int i = fx_app_device_display(a, d);
+    input_geometry(a, i);
     a->feeding_cls = d->cls;
-    fx_input_feed(&a->in, d, ev, fx_app_emit, a);
+    a->emitting = i;
+    fx_input_feed(input_of(a, i), d, ev, fx_app_emit, a);
     a->feeding_cls = 0;
+    a->emitting = 0;
+}
+
+/* ---- input devices bound to displays ------------------------------------- */
+
+int fx_app_resolve_binding(fx_app *a, const fx_bind_dev *dev, int *display, unsigned *gen)
+{
+    if (*gen == a->bind_gen && *display <= a->nextra)
+        return *display;
+    fx_bind_disp disp[FX_APP_MAX_DISPLAYS];
+    char sysfs[FX_APP_MAX_DISPLAYS][256];
+    int n = 1 + a->nextra;
+    for (int i = 0; i < n; i++) {
+        fx_display_info info;
+        fx_display_get_info(disp_of(a, i), &info);
+        sysfs[i][0] = 0;
+        const char *card = info.backend == FX_BACKEND_DRM ? strrchr(info.device, '/') : NULL;
+        if (card) {
+            char link[96], real[PATH_MAX];
+            snprintf(link, sizeof link, "/sys/class/drm/%s/device", card + 1);
+            if (realpath(link, real) && strlen(real) < sizeof sysfs[i])
+                memcpy(sysfs[i], real, strlen(real) + 1);
+        }
+        disp[i].connector = info.connector ? info.connector : "";
+        disp[i].card_sysfs = sysfs[i];
+        disp[i].wants_input = i == 0 || a->extra[i - 1].has_cb;
+    }
+    const char *why;
+    int was = *gen ? *display : 0;
+    int i = fx_bind_choose(dev, disp, n, a->binds, a->nbinds, &why);
+    if (i != was || (!*gen && i != 0)) {
+        fx_display_info info;
+        fx_display_get_info(disp_of(a, i), &info);
+        fx_display_log(a->disp, FX_LOG_INFO, "input: %s \"%s\" to display %d%s%s (%s)",
+                       dev->path[0] ? dev->path : "replay device", dev->name, i,
+                       info.connector && info.connector[0] ? " " : "",
+                       info.connector ? info.connector : "", why);
+    }
+    *display = i;
+    *gen = a->bind_gen;
+    return i;
+}
+
+static int evdev_display(fx_app *a, fx_evdev *e)
+{
+    fx_bind_dev bd = {e->path, e->name, e->sysfs, e->bus, e->st.cls};
+    return fx_app_resolve_binding(a, &bd, &e->display, &e->bind_gen);
+}
+
+int fx_app_device_display(fx_app *a, const fx_input_dev *d)
+{
+    if (a->nextra == 0)
+        return 0;
+    for (int k = 0; k < a->ev.ndevs; k++)
+        if (&a->ev.devs[k]->st == d)
+            return evdev_display(a, a->ev.devs[k]);
+    return fx_replay_device_display(a, d);
+}
+
+/* The index of display d in the app, or -1. */
+static int display_index(const fx_app *a, const fx_display *d)
+{
+    for (int i = 0; i <= a->nextra; i++)
+        if (disp_of(a, i) == d)
+            return i;
+    return -1;
+}
+
+static void bindings_changed(fx_app *a)
+{
+    if (++a->bind_gen == 0)
+        a->bind_gen = 1; /* 0 means never resolved */
+}
+
+int fx_app_bind_input(fx_app *a, const char *device, fx_display *d)
+{
+    if (!a || !device || !*device || strlen(device) >= sizeof a->binds[0].device)
+        return -FX_EINVAL;
+    int i = d ? display_index(a, d) : 0;
+    if (i < 0)
+        return -FX_EINVAL;
+    /* A new binding of the same device replaces the old one. */
+    for (int k = 0; k < a->nbinds; k++)
+        if (!strcmp(a->binds[k].device, device)) {
+            a->binds[k] = a->binds[--a->nbinds];
+            k--;
+        }
+    if (d) {
+        if (a->nbinds >= FX_APP_MAX_BINDS)
+            return -FX_ENOSPC;
+        /* first: it wins over the rules given before */
+        memmove(&a->binds[1], &a->binds[0], (size_t)a->nbinds * sizeof a->binds[0]);
+        snprintf(a->binds[0].device, sizeof a->binds[0].device, "%s", device);
+        snprintf(a->binds[0].display, sizeof a->binds[0].display, "%d", i);
+        a->nbinds++;
+    }
+    bindings_changed(a);
+    return 0;
+}
+
+int fx_app_bind_inputs(fx_app *a, const char *spec)
+{
+    if (!a || !spec)
+        return -FX_EINVAL;
+    char err[160];
+    int r = fx_bind_parse(spec, a->binds, FX_APP_MAX_BINDS, &a->nbinds, err, sizeof err);
+    if (r < 0) {
+        fx_display_log(a->disp, FX_LOG_ERROR, "input bindings '%s': %s", spec, err);
+        return r;
+    }
+    bindings_changed(a);
+    return 0;
+}
+
+fx_display *fx_app_input_display(fx_app *a, const char *device)
+{
+    if (!a || !device)
+        return NULL;
+    char real[PATH_MAX];
+    const char *path = device[0] == '/' && realpath(device, real) ? real : device;
+    for (int k = 0; k < a->ev.ndevs; k++) {
+        fx_evdev *e = a->ev.devs[k];
+        if (!strcmp(e->path, path) || !strcmp(e->name, device))
+            return disp_of(a, evdev_display(a, e));
+    }
+    int i = fx_replay_named_display(a, device);
+    return i >= 0 ? disp_of(a, i) : NULL;
+}
+
+int fx_app_set_display_callbacks(fx_app *a, fx_display *d, const fx_callbacks *cb, void *user)
+{
+    int i = a && d ? display_index(a, d) : -1;
+    if (i < 0 || !cb)
+        return -FX_EINVAL;
+    if (i == 0) {
+        fx_app_set_callbacks(a, cb, user);
+        return 0;
+    }
+    a->extra[i - 1].cb = *cb;
+    a->extra[i - 1].cb_user = user;
+    a->extra[i - 1].has_cb = 1;
+    bindings_changed(a); /* the guesses may bind to it now */
+    return 0;
 }
 
 /* The evdev devices' sink. */
@@ -80,23 +258,36 @@ static void emit_button(void *u, const fx_event *e)
     fx_app_emit(a, &k);
 }
 
-int fx_app_pointer_visible(const fx_app *a)
+/* The pointer of display i: AUTO shows it while a mouse or tablet bound
+ * to that display is connected. */
+static int pointer_visible_on(fx_app *a, int i)
 {
-    if (a->pointer_mode == FX_POINTER_OFF || a->pointer_touch_hidden)
+    if (a->pointer_mode == FX_POINTER_OFF || *touch_hidden_of(a, i))
         return 0;
     if (a->pointer_mode == FX_POINTER_ON)
         return 1;
-    for (int i = 0; i < a->ev.ndevs; i++)
-        if (a->ev.devs[i]->st.cls & (FX_DEV_MOUSE | FX_DEV_TABLET))
+    for (int k = 0; k < a->ev.ndevs; k++)
+        if ((a->ev.devs[k]->st.cls & (FX_DEV_MOUSE | FX_DEV_TABLET)) &&
+            (a->nextra == 0 ? 0 : evdev_display(a, a->ev.devs[k])) == i)
             return 1;
     return 0;
 }
 
+int fx_app_pointer_visible(const fx_app *a)
+{
+    /* resolving a binding caches it; the answer is the same */
+    return pointer_visible_on((fx_app *)a, 0);
+}
+
 void fx_app_pointer_sync(fx_app *a)
 {
-    int32_t x, y;
-    fx_input_to_logical(&a->in, a->in.px, a->in.py, &x, &y);
-    fx_display_set_pointer(a->disp, fx_app_pointer_visible(a), x, y);
+    for (int i = 0; i <= a->nextra; i++) {
+        int32_t x, y;
+        fx_input *in = input_of(a, i);
+        input_geometry(a, i);
+        fx_input_to_logical(in, in->px, in->py, &x, &y);
+        fx_display_set_pointer(disp_of(a, i), pointer_visible_on(a, i), x, y);
+    }
 }
 
 void fx_app_set_pointer(fx_app *a, fx_pointer_mode mode)
@@ -158,6 +349,7 @@ int fx_app_open(fx_app **out, const fx_app_options *o)
     if (!a)
         return -FX_ENOMEM;
     a->ev.inotify_fd = a->tfd = a->sfd = -1;
+    a->bind_gen = 1;
     int r = fx_display_open(&a->disp, &o->display);
     if (r < 0) {
         free(a);
@@ -279,7 +471,11 @@ int fx_app_add_display(fx_app *a, const fx_display_options *o,
     a->extra[a->nextra].draw = draw;
     a->extra[a->nextra].user = user;
     a->extra[a->nextra].redisplay = 1; /* its first frame */
+    fx_display_info info;
+    fx_display_get_info(d, &info);
+    fx_input_init(&a->extra[a->nextra].in, info.width, info.height, info.rotation);
     a->nextra++;
+    bindings_changed(a); /* a binding may name its connector */
     if (out)
         *out = d;
     return 0;
@@ -301,7 +497,7 @@ static int draw_extra(fx_app *a)
         if (a->extra[i].redisplay && a->extra[i].draw && !fx_display_flip_pending(a->extra[i].disp)) {
             a->extra[i].redisplay = 0;
             a->extra[i].draw(a, a->extra[i].disp, a->extra[i].user);
-            return 1;
+            return fx_app_extra_frame_done(a, i) < 0 ? -1 : 1;
         }
     return 0;
 }
@@ -380,6 +576,11 @@ int fx_app_main_loop(fx_app *a)
         e.type = FX_EVENT_RESHAPE;
         fx_input_logical_size(&a->in, &e.x, &e.y);
         fx_dispatch(&a->cb, a->user, &e);
+        for (int k = 0; k < a->nextra; k++)
+            if (a->extra[k].has_cb) {
+                fx_input_logical_size(&a->extra[k].in, &e.x, &e.y);
+                fx_dispatch(&a->extra[k].cb, a->extra[k].cb_user, &e);
+            }
         a->redisplay = 1;
     }
     while (!a->quit) {
@@ -394,7 +595,10 @@ int fx_app_main_loop(fx_app *a)
                 return f;
             continue; /* timers or input may have become due meanwhile */
         }
-        if (draw_extra(a))
+        int x = draw_extra(a);
+        if (x < 0)
+            return -FX_EIO; /* a frame file that cannot be written (logged) */
+        if (x)
             continue;
         if (a->replay) {
             /* The replay runs when no frame is due: "frame" lets the

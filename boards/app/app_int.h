@@ -13,6 +13,44 @@
 
 typedef struct fx_replay fx_replay; /* replay.c */
 
+/* ---- input devices bound to displays (bind.c) ---- */
+
+typedef struct fx_bind_dev {
+    const char *path;   /* the device node ("/dev/input/event3"), "" for a replay device */
+    const char *name;   /* the kernel's device name */
+    const char *sysfs;  /* the real sysfs path of the device the input node belongs to, "" unknown */
+    unsigned bus;       /* BUS_* of linux/input.h (0x03 USB, 0x18 I2C, 0x1C SPI...), 0 unknown */
+    unsigned cls;       /* FX_DEV_* */
+} fx_bind_dev;
+
+typedef struct fx_bind_disp {
+    const char *connector;  /* "DSI-1", "" for fbdev and memory */
+    const char *card_sysfs; /* the real sysfs path of the card's device, "" unknown */
+    int wants_input;        /* the app's own display, or one with input callbacks: the
+                               guesses bind only to these */
+} fx_bind_disp;
+
+typedef struct fx_bind_rule {
+    char device[128];  /* a device path (links resolved) or a device name */
+    char display[48];  /* a display number or a connector name */
+} fx_bind_rule;
+
+/* The index in disp[] (0: the app's own display) for dev: the first rule
+ * naming dev, else a USB display and the device under one USB hub, else a
+ * touch controller on I2C/SPI and the one built-in panel (DSI, DPI, eDP,
+ * LVDS, SPI connectors), else 0. *why says which (static text). */
+int fx_bind_choose(const fx_bind_dev *dev, const fx_bind_disp *disp, int n, const fx_bind_rule *rules,
+                   int nrules, const char **why);
+/* Appends "DEVICE=DISPLAY[;DEVICE=DISPLAY...]" to rules[*n..max): 0, or
+ * -FX_EINVAL / -FX_ENOSPC with the reason in err (nothing appended). */
+int fx_bind_parse(const char *spec, fx_bind_rule *rules, int max, int *n, char *err, size_t errlen);
+/* The display index device d is bound to (resolved again when bindings or
+ * displays changed): 0 for devices the app does not know. */
+int fx_app_device_display(fx_app *a, const fx_input_dev *d);
+/* Resolve one device's binding, caching it in *display / *gen; logs a
+ * binding to another display than the app's own when it changes. */
+int fx_app_resolve_binding(fx_app *a, const fx_bind_dev *dev, int *display, unsigned *gen);
+
 struct fx_app {
     fx_display *disp;
     fx_input in;
@@ -38,8 +76,22 @@ struct fx_app {
         void (*draw)(fx_app *a, fx_display *d, void *user);
         void *user;
         int redisplay;
+        /* input bound to it: pointer state in its coordinates, callbacks */
+        fx_input in;
+        fx_callbacks cb;
+        void *cb_user;
+        int has_cb;
+        int touch_hidden;
+        int frames;       /* draw callbacks run (frame files) */
     } extra[FX_APP_MAX_DISPLAYS - 1];
     int nextra;
+
+    /* Input bindings (fx_app_bind_input*): a device's display is resolved
+     * again whenever bind_gen moved on (new rules, added displays). */
+    fx_bind_rule binds[FX_APP_MAX_BINDS];
+    int nbinds;
+    unsigned bind_gen;
+    int emitting;       /* the display index of the events being emitted */
 
     /* software pointer policy (app.c) */
     fx_pointer_mode pointer_mode; /* resolved: never AUTO from the environment */
@@ -71,5 +123,14 @@ int fx_frame_pattern_ok(const char *p);
 /* After a display callback: count it, save it, stop at the limit. 0 or
  * the write error (logged). */
 int fx_app_frame_done(fx_app *a);
+/* The same after added display i (0-based in extra[]): its frames are
+ * written to the frame_out name with ".dN" before the extension (N = i + 1,
+ * the display's number), numbered by that display's own count. */
+int fx_app_extra_frame_done(fx_app *a, int i);
+/* Replay devices: the display device d (one of the replay's) is bound to,
+ * 0 when d is not a replay device; the display of the replay device
+ * named name, or -1. */
+int fx_replay_device_display(fx_app *a, const fx_input_dev *d);
+int fx_replay_named_display(fx_app *a, const char *name);
 
 #endif

@@ -28,6 +28,12 @@ struct fx_replay {
     char path[256];
     int lineno;
     fx_input_dev dev[FX_REPLAY_DEVICES];
+    /* what binds them to displays: "replay-N" unless the device statement
+     * gives a name (and bus) */
+    char name[FX_REPLAY_DEVICES][80];
+    unsigned bus[FX_REPLAY_DEVICES];
+    int display[FX_REPLAY_DEVICES];
+    unsigned gen[FX_REPLAY_DEVICES];
     uint64_t resume_us; /* "wait": statements resume at this time */
 };
 
@@ -223,8 +229,10 @@ int fx_replay_open(fx_app *a, const char *path)
         return e;
     }
     snprintf(r->path, sizeof r->path, "%s", path);
-    for (int i = 0; i < FX_REPLAY_DEVICES; i++)
+    for (int i = 0; i < FX_REPLAY_DEVICES; i++) {
         fx_input_dev_init(&r->dev[i], 0);
+        snprintf(r->name[i], sizeof r->name[i], "replay-%d", i);
+    }
     a->replay = r;
     return 0;
 }
@@ -265,9 +273,9 @@ static unsigned class_of(const char *s)
 static int statement(fx_app *a, char *line, uint64_t now)
 {
     fx_replay *r = a->replay;
-    char *w[12];
+    char *w[24];
     int n = 0;
-    for (char *save = NULL, *t = strtok_r(line, " \t", &save); t && n < 12; t = strtok_r(NULL, " \t", &save))
+    for (char *save = NULL, *t = strtok_r(line, " \t", &save); t && n < 24; t = strtok_r(NULL, " \t", &save))
         w[n++] = t;
     if (n == 0)
         return 1;
@@ -312,7 +320,9 @@ static int statement(fx_app *a, char *line, uint64_t now)
         fx_calib keep = d->calib;
         fx_input_dev_init(d, cls);
         d->calib = keep;
-        for (int k = 3; k < n; k += 5) {
+        r->gen[N] = 0; /* a new device: bound again */
+        int k = 3;
+        for (; k < n && (!strcmp(w[k], "abs") || !strcmp(w[k], "mt")); k += 5) {
             int mt = !strcmp(w[k], "mt");
             if ((!mt && strcmp(w[k], "abs")) || k + 4 >= n)
                 return -1;
@@ -322,6 +332,25 @@ static int statement(fx_app *a, char *line, uint64_t now)
                     return -1;
             int32_t *mn = mt ? d->mt_min : d->abs_min, *mx = mt ? d->mt_max : d->abs_max;
             mn[0] = v[0], mx[0] = v[1], mn[1] = v[2], mx[1] = v[3];
+        }
+        if (k + 1 < n && !strcmp(w[k], "bus")) {
+            static const char *const buses[] = {"usb", "i2c", "spi", "host", "virtual"};
+            static const unsigned bus_no[] = {0x03, 0x18, 0x1C, 0x19, 0x06};
+            int b = word_index(w[k + 1], buses, 5);
+            if (b < 0)
+                return -1;
+            r->bus[N] = bus_no[b];
+            k += 2;
+        }
+        if (k < n) {
+            /* name TEXT: the rest of the statement */
+            if (strcmp(w[k], "name") || k + 1 >= n)
+                return -1;
+            r->name[N][0] = 0;
+            for (int j = k + 1; j < n; j++) {
+                size_t l = strlen(r->name[N]);
+                snprintf(r->name[N] + l, sizeof r->name[N] - l, "%s%s", j > k + 1 ? " " : "", w[j]);
+            }
         }
         return 1;
     }
@@ -447,3 +476,54 @@ int fx_app_frame_done(fx_app *a)
 }
 
 int fx_app_frame_count(const fx_app *a) { return a->frames; }
+
+/* "f-%03d.png" -> "f-%03d.d1.png" */
+static void extra_name(char *out, size_t n, const char *pattern, int display)
+{
+    const char *slash = strrchr(pattern, '/');
+    const char *dot = strrchr(pattern, '.');
+    if (!dot || (slash && dot < slash))
+        dot = pattern + strlen(pattern);
+    snprintf(out, n, "%.*s.d%d%s", (int)(dot - pattern), pattern, display, dot);
+}
+
+int fx_app_extra_frame_done(fx_app *a, int i)
+{
+    int f = ++a->extra[i].frames;
+    if (!a->frame_out)
+        return 0;
+    char pattern[4096], path[4096];
+    extra_name(pattern, sizeof pattern, a->frame_out, i + 1);
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wformat-nonliteral"
+    snprintf(path, sizeof path, pattern, f);
+#pragma GCC diagnostic pop
+    fx_surface s = fx_display_screen(a->extra[i].disp);
+    int r = fx_write_image(path, &s);
+    if (r < 0) {
+        fx_display_log(a->disp, FX_LOG_ERROR, "display %d frame %d: cannot write %s: %s", i + 1, f, path,
+                       fx_strerror(r));
+        return r;
+    }
+    fx_display_log(a->disp, FX_LOG_DEBUG, "display %d frame %d: wrote %s", i + 1, f, path);
+    return 0;
+}
+
+int fx_replay_device_display(fx_app *a, const fx_input_dev *d)
+{
+    fx_replay *r = a->replay;
+    if (!r || d < r->dev || d >= r->dev + FX_REPLAY_DEVICES)
+        return 0;
+    int i = (int)(d - r->dev);
+    fx_bind_dev bd = {"", r->name[i], "", r->bus[i], d->cls};
+    return fx_app_resolve_binding(a, &bd, &r->display[i], &r->gen[i]);
+}
+
+int fx_replay_named_display(fx_app *a, const char *name)
+{
+    fx_replay *r = a->replay;
+    for (int i = 0; r && i < FX_REPLAY_DEVICES; i++)
+        if (r->dev[i].cls && !strcmp(r->name[i], name))
+            return fx_replay_device_display(a, &r->dev[i]);
+    return -1;
+}

@@ -10,7 +10,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <poll.h>
 #include <sys/epoll.h>
+#include <sys/timerfd.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "../linux/console/console_int.h"
@@ -88,6 +91,7 @@ static int parse_backend(const char *s, fx_backend *b)
 
 static int vt_release(void *user);
 static void vt_acquire(void *user);
+static void pace_done(fx_display *d);
 
 /* Several displays open at once share one console: the VT is put in
  * graphics mode by the first and given back by the last to close (a second
@@ -271,6 +275,7 @@ int fx_display_open(fx_display **out, const fx_display_options *opt)
     d->resized = display_resized;
     d->shown = -1;
     d->epoll_fd = -1;
+    d->pace_fd = -1;
     d->ptr.sprite = *fx_sprite_arrow();
     for (int i = 0; i < 2; i++) {
         d->ptr.save[i].mem = d->ptr.mem[i];
@@ -389,7 +394,7 @@ void fx_display_close(fx_display *d)
 {
     if (!d)
         return;
-    if (d->ops && d->flip_pending)
+    if (d->ops && d->flip_pending && !d->paced)
         d->ops->wait(d, 200);
     if (d->opt.signals && d->info.backend != FX_BACKEND_MEMORY)
         fx_signals_unregister(emergency_restore, d);
@@ -401,6 +406,8 @@ void fx_display_close(fx_display *d)
     console_leave(d);
     if (d->epoll_fd >= 0)
         close(d->epoll_fd);
+    if (d->pace_fd >= 0)
+        close(d->pace_fd);
     free(d->shadow_mem);
     free(d);
 }
@@ -494,6 +501,8 @@ int fx_display_set_power(fx_display *d, int on)
         }
     }
     d->power_off = !on;
+    if (on && d->paced && !d->away)
+        pace_done(d); /* the screen paces the next frame again */
     fx_log(&d->log, FX_LOG_INFO, "screen %s (%s)", on ? "on" : "off", fx_display_power_method(d));
     return 0;
 }
@@ -515,9 +524,76 @@ fx_surface fx_display_screen(const fx_display *d)
 
 /* ---- frames ------------------------------------------------------------ */
 
+/* While the screen is off (or our VT is not shown) a present shows nothing
+ * and no flip completes, so a program that draws again as soon as no flip
+ * is pending would draw as fast as the CPU allows. A timer at the mode's
+ * refresh stands in for vblank: the present counts as a pending flip until
+ * it fires, on the display's fd like a flip event. */
+static int64_t pace_period_ns(const fx_display *d)
+{
+    int32_t mhz = d->info.refresh_mhz;
+    if (mhz < 1000 || mhz > 1000000)
+        mhz = 60000; /* unknown (memory, some fbdev): 60 Hz */
+    return 1000000000000 / mhz;
+}
+
+static void pace_start(fx_display *d)
+{
+    if (d->pace_fd < 0) {
+        d->pace_fd = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
+        if (d->pace_fd < 0)
+            return;
+        if (d->epoll_fd < 0)
+            d->epoll_fd = epoll_create1(EPOLL_CLOEXEC);
+        struct epoll_event ev = {.events = EPOLLIN, .data.fd = d->pace_fd};
+        if (d->epoll_fd < 0 || epoll_ctl(d->epoll_fd, EPOLL_CTL_ADD, d->pace_fd, &ev) < 0) {
+            close(d->pace_fd);
+            d->pace_fd = -1;
+            return;
+        }
+    }
+    int64_t ns = pace_period_ns(d);
+    struct itimerspec its;
+    memset(&its, 0, sizeof its);
+    its.it_value.tv_sec = (time_t)(ns / 1000000000);
+    its.it_value.tv_nsec = (long)(ns % 1000000000);
+    if (timerfd_settime(d->pace_fd, 0, &its, NULL) < 0)
+        return;
+    d->paced = 1;
+    d->flip_pending = 1;
+}
+
+static void pace_done(fx_display *d)
+{
+    struct itimerspec off;
+    memset(&off, 0, sizeof off);
+    timerfd_settime(d->pace_fd, 0, &off, NULL); /* also clears a pending expiry */
+    d->paced = 0;
+    d->flip_pending = 0;
+    if (d->flip_cb)
+        d->flip_cb(d, d->flip_user);
+}
+
+/* The paced present completes when its timer fires: 0, or 1 when
+ * timeout_ms passed first. */
+static int pace_wait(fx_display *d, int timeout_ms)
+{
+    struct pollfd p = {d->pace_fd, POLLIN, 0};
+    int r;
+    do
+        r = poll(&p, 1, timeout_ms);
+    while (r < 0 && errno == EINTR);
+    if (r <= 0)
+        return 1;
+    pace_done(d);
+    return 0;
+}
+
 static void wait_flip(fx_display *d)
 {
-    if (d->flip_pending)
+    if (d->paced)
+        pace_wait(d, 1000);
+    else if (d->flip_pending)
         d->ops->wait(d, 1000);
 }
 
@@ -574,8 +650,11 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n)
     fx_vt_handle_events(d->vt);
     /* Switched away, fbdev memory shows another VT's console: leave it
      * alone; the return to our VT redraws from the shadow. */
-    if (d->away && d->info.backend == FX_BACKEND_FBDEV)
+    if (d->away && d->info.backend == FX_BACKEND_FBDEV) {
+        if (!d->flip_pending)
+            pace_start(d); /* not drawn, but paced like the others */
         return 0;
+    }
     wait_flip(d);
     int target = d->nbuf == 2 ? d->back : 0;
     fx_rect ptr_old = d->shown >= 0 ? d->ptr.save[d->shown].r : no_rect;
@@ -618,6 +697,8 @@ int fx_display_present(fx_display *d, const fx_rect *damage, int n)
     r = d->away ? 0 : d->ops->show(d, target, phys, pd.n);
     if (r < 0)
         return r;
+    if ((d->power_off || d->away) && !d->flip_pending)
+        pace_start(d);
     d->shown = target;
     if (d->nbuf == 2) {
         d->back ^= 1;
@@ -637,6 +718,8 @@ int fx_display_fd(const fx_display *d)
 int fx_display_dispatch(fx_display *d)
 {
     fx_vt_handle_events(d->vt);
+    if (d->paced)
+        pace_wait(d, 0);
     return d->ops->dispatch(d);
 }
 
@@ -701,6 +784,8 @@ int fx_display_switch_vt(fx_display *d, int n)
 
 int fx_display_wait(fx_display *d, int timeout_ms)
 {
+    if (d->paced)
+        return pace_wait(d, timeout_ms < 0 ? 0 : timeout_ms) ? -FX_EBUSY : 0;
     return d->flip_pending ? d->ops->wait(d, timeout_ms) : 0;
 }
 

@@ -137,6 +137,8 @@ struct fx_display {
     int epoll_fd;           /* DRM fd + VT signal pipe, for event loops */
     int away;               /* our VT is not on screen */
     int power_off;          /* fx_display_set_power(d, 0): presents are not shown */
+    int pace_fd;            /* timerfd standing in for vblank while the screen is off, or -1 */
+    int paced;              /* flip_pending is a paced present (pace_fd), not a real flip */
     const char *power_method; /* set by the backend: "dpms", "crtc", "fbblank"; NULL: "none" */
     void (*vt_cb)(fx_display *d, int active, void *user);
     void *vt_user;

@@ -7,6 +7,7 @@
 #define _GNU_SOURCE
 #endif
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -29,61 +30,75 @@ static fx_logger logger_of(const fx_display_options *o)
     return l;
 }
 
-static int parse_backend(const char *s, fx_backend *b)
+/* getenv lives here, the one file of the library that reads the
+ * environment (tests/check-layers.sh); the table and its parse are in
+ * env_table.c. */
+/* At most 40 bytes of a value and only printable ones: a message must stay
+ * one line whatever the environment holds. buf has 48 bytes. */
+static const char *quote(const char *e, char *buf)
 {
-    if (!strcasecmp(s, "drm") || !strcasecmp(s, "kms"))
-        *b = FX_BACKEND_DRM;
-    else if (!strcasecmp(s, "fbdev") || !strcasecmp(s, "fb"))
-        *b = FX_BACKEND_FBDEV;
-    else if (!strcasecmp(s, "memory") || !strcasecmp(s, "headless"))
-        *b = FX_BACKEND_MEMORY;
-    else if (!strcasecmp(s, "auto"))
-        *b = FX_BACKEND_AUTO;
-    else
+    size_t k = 0;
+    for (const char *p = e; *p && k < 40; p++)
+        buf[k++] = (*p >= 0x20 && *p < 0x7f) ? *p : '?';
+    if (strlen(e) > 40) {
+        memcpy(buf + k, "...", 3);
+        k += 3;
+    }
+    buf[k] = 0;
+    return buf;
+}
+
+int fx_env_get(const char *name, long *value, char *msg, size_t n)
+{
+    const fx_env_var *v = fx_env_lookup(name);
+    if (msg && n)
+        msg[0] = 0;
+    if (!v || !value)
         return -FX_EINVAL;
-    return 0;
+    const char *e = getenv(name);
+    if (!e || !*e)
+        return 1;
+    int r = fx_env_parse(v, e, value);
+    if (r < 0 && msg && n) {
+        char want[160];
+        fx_env_expect(v, want, sizeof want);
+        char shown[48];
+        snprintf(msg, n, "%s=%s ignored (%s)", name, quote(e, shown), want);
+    }
+    return r;
+}
+
+/* A WORD or INT variable through the table: 1 unset, 0 set (*value),
+ * -1 bad (logged when l is given, with the table's range). */
+static int word(const char *name, long *value, const fx_logger *l)
+{
+    char msg[256];
+    int r = fx_env_get(name, value, msg, sizeof msg);
+    if (r < 0 && l)
+        fx_log(l, FX_LOG_ERROR, "%s", msg);
+    return r < 0 ? -1 : r;
 }
 
 int fx_display_options_from_env(fx_display_options *o)
 {
-    const char *e, *bad_log = NULL;
+    long v;
+    char bad_log[256] = "";
     /* First: it decides which of the messages below are shown. */
-    if (o->log_priority == 0 && (e = var("FIXEL_LOG"))) {
-        if (!strcasecmp(e, "debug"))
-            o->log_priority = FX_LOG_DEBUG;
-        else if (!strcasecmp(e, "error"))
-            o->log_priority = FX_LOG_ERROR;
-        else if (!strcasecmp(e, "none"))
-            o->log_priority = -1;
-        else if (!strcasecmp(e, "info"))
-            o->log_priority = FX_LOG_INFO;
-        else
-            bad_log = e; /* said below, once the logger exists */
+    if (o->log_priority == 0) {
+        int r = fx_env_get("FIXEL_LOG", &v, bad_log, sizeof bad_log);
+        if (r == 0)
+            o->log_priority = (int)v;
     }
     fx_logger l = logger_of(o);
-    if (bad_log)
-        fx_log(&l, FX_LOG_ERROR, "FIXEL_LOG=%s ignored (debug, info, error or none)", bad_log);
+    if (bad_log[0])
+        fx_log(&l, FX_LOG_ERROR, "%s", bad_log); /* said now the logger exists */
 
-    if (o->present == FX_PRESENT_AUTO && (e = var("FIXEL_PRESENT"))) {
-        if (!strcasecmp(e, "direct"))
-            o->present = FX_PRESENT_DIRECT;
-        else if (!strcasecmp(e, "shadow"))
-            o->present = FX_PRESENT_SHADOW;
-        else
-            fx_log(&l, FX_LOG_ERROR, "FIXEL_PRESENT=%s ignored (direct or shadow)", e);
-    }
-    if (o->rotation < 0 && (e = var("FIXEL_ROTATION"))) {
-        /* whole words only: atoi took "xyz" as 0 and "2147483648" as a
-         * negative angle (issue #26) */
-        static const char *const angles[] = {"0", "90", "180", "270"};
-        int i = 0;
-        while (i < 4 && strcmp(e, angles[i]))
-            i++;
-        if (i < 4)
-            o->rotation = 90 * i;
-        else
-            fx_log(&l, FX_LOG_ERROR, "FIXEL_ROTATION=%s ignored (0, 90, 180 or 270)", e);
-    }
+    if (o->present == FX_PRESENT_AUTO && word("FIXEL_PRESENT", &v, &l) == 0)
+        o->present = (fx_present_mode)v;
+    /* whole words only: atoi took "xyz" as 0 and "2147483648" as a
+     * negative angle (issue #26) */
+    if (o->rotation < 0 && word("FIXEL_ROTATION", &v, &l) == 0)
+        o->rotation = (int)v;
     if (!o->drm_device)
         o->drm_device = getenv("FIXEL_DRM_DEVICE");
     if (!o->fb_device)
@@ -92,28 +107,26 @@ int fx_display_options_from_env(fx_display_options *o)
         o->connector = getenv("FIXEL_CONNECTOR");
     if (!o->mode)
         o->mode = getenv("FIXEL_MODE");
-    if (o->format == FX_FMT_COUNT && o->drm_format == FX_FMT_COUNT && (e = var("FIXEL_DRM_FORMAT")) &&
-        strcasecmp(e, "auto")) {
-        if (!strcasecmp(e, "XRGB8888"))
-            o->drm_format = FX_FMT_XRGB8888;
-        else if (!strcasecmp(e, "RGB565"))
-            o->drm_format = FX_FMT_RGB565;
-        else
-            fx_log(&l, FX_LOG_ERROR, "FIXEL_DRM_FORMAT=%s ignored (XRGB8888 or RGB565)", e);
-    }
-    if (!o->sw_rotation && (e = var("FIXEL_SW_ROTATION")) && strcmp(e, "0"))
-        o->sw_rotation = 1;
-    if (o->vt_switch == FX_VT_SWITCH_ALLOW && (e = getenv("FIXEL_VT_SWITCH")) && !strcasecmp(e, "deny"))
-        o->vt_switch = FX_VT_SWITCH_DENY;
+    if (o->format == FX_FMT_COUNT && o->drm_format == FX_FMT_COUNT && word("FIXEL_DRM_FORMAT", &v, &l) == 0)
+        o->drm_format = (fx_format)v; /* auto is FX_FMT_COUNT: unchanged */
+    if (!o->sw_rotation && word("FIXEL_SW_ROTATION", &v, &l) == 0)
+        o->sw_rotation = (int)v;
+    if (o->vt_switch == FX_VT_SWITCH_ALLOW && word("FIXEL_VT_SWITCH", &v, &l) == 0)
+        o->vt_switch = (fx_vt_switch)v;
     /* Last: the one value that makes opening impossible. */
-    if (o->backend == FX_BACKEND_AUTO && (e = var("FIXEL_BACKEND"))) {
-        fx_backend b;
-        if (parse_backend(e, &b) < 0) {
-            fx_log(&l, FX_LOG_ERROR, "FIXEL_BACKEND=%s: use drm, fbdev or memory", e);
+    if (o->backend == FX_BACKEND_AUTO) {
+        int r = word("FIXEL_BACKEND", &v, NULL);
+        if (r < 0) {
+            char want[128];
+            fx_env_expect(fx_env_lookup("FIXEL_BACKEND"), want, sizeof want);
+            char shown[48];
+            fx_log(&l, FX_LOG_ERROR, "FIXEL_BACKEND=%s: use %s", quote(getenv("FIXEL_BACKEND"), shown), want);
             return -FX_EINVAL;
         }
-        o->backend = b;
-        o->backend_from_env = 1;
+        if (r == 0 && v != FX_BACKEND_AUTO) {
+            o->backend = (fx_backend)v;
+            o->backend_from_env = 1;
+        }
     }
     return 0;
 }
@@ -122,15 +135,9 @@ int fx_app_options_from_env(fx_app_options *o)
 {
     int r = fx_display_options_from_env(&o->display);
     fx_logger l = logger_of(&o->display);
-    const char *e;
-    if (o->pointer == FX_POINTER_AUTO && (e = var("FIXEL_POINTER")) && strcasecmp(e, "auto")) {
-        if (!strcasecmp(e, "on") || !strcmp(e, "1"))
-            o->pointer = FX_POINTER_ON;
-        else if (!strcasecmp(e, "off") || !strcmp(e, "0"))
-            o->pointer = FX_POINTER_OFF;
-        else
-            fx_log(&l, FX_LOG_ERROR, "FIXEL_POINTER=%s ignored (on, off or auto)", e);
-    }
+    long v;
+    if (o->pointer == FX_POINTER_AUTO && word("FIXEL_POINTER", &v, &l) == 0)
+        o->pointer = (fx_pointer_mode)v;
     if (!o->pointercal)
         o->pointercal = getenv("FIXEL_POINTERCAL");
     if (!o->touch)
@@ -141,17 +148,19 @@ int fx_app_options_from_env(fx_app_options *o)
         o->replay = var("FIXEL_REPLAY");
     if (!o->frame_out)
         o->frame_out = var("FIXEL_OUT");
-    if (o->frames == 0 && (e = var("FIXEL_FRAMES"))) {
-        char *end;
-        errno = 0;
-        long n = strtol(e, &end, 10);
-        if (end == e || *end || errno || n < 1 || n > 1000000000L) {
-            fx_log(&l, FX_LOG_ERROR, "FIXEL_FRAMES=%s: use a number of frames from 1", e);
-            if (r == 0)
-                r = -FX_EINVAL;
-        } else {
-            o->frames = (int)n;
-        }
+    /* a scripted run must not run forever instead: an error, not ignored */
+    if (o->frames == 0) {
+        int k = word("FIXEL_FRAMES", &v, &l);
+        if (k == 0)
+            o->frames = (int)v;
+        else if (k < 0 && r == 0)
+            r = -FX_EINVAL;
     }
     return r;
+}
+
+int fx_app_bind_inputs_from_env(fx_app *a)
+{
+    const char *e = var("FIXEL_INPUT_BIND");
+    return e ? fx_app_bind_inputs(a, e) : 0;
 }

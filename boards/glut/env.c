@@ -6,6 +6,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "fixel/env.h"
 #include "glut_int.h"
 
 /* Every environment variable the GLUT layer reads, read here once:
@@ -19,28 +20,38 @@
  *   FIXEL_GLUT_BENCH=1     at exit, print "fixel-glut: frames 2..N in T s = F fps"
  *                          (wall clock from the end of frame 1, as the Mesa shim)
  * An empty value is the same as unset; a FIXEL_GLUT_FRAMES that is not a
- * number >= 0 exits with status 2. */
+ * number from 0 to 10^9 exits with status 2; their ranges are in the one
+ * table of FIXEL_* variables (boards/env/env_table.c). */
+/* The table's parse (fixel/env.h); a bad value of a switch is said and
+ * ignored, as the library does with its own. */
+static long sw(const char *name)
+{
+    long v = 0;
+    char msg[256];
+    if (fx_env_get(name, &v, msg, sizeof msg) < 0) {
+        fxg_log("%s", msg);
+        v = 0;
+    }
+    return v;
+}
+
 void fxg_env_read(fxg_env *v)
 {
-    const char *e = getenv("FIXEL_GLUT_FRAMES");
-    v->frames = 0;
-    if (e && *e) {
-        char *end;
-        v->frames = strtol(e, &end, 10);
-        if (*end || v->frames < 0) {
-            fxg_log("FIXEL_GLUT_FRAMES=%s is not a frame count", e);
-            exit(2);
-        }
+    char msg[256];
+    long n = 0;
+    /* a frame count that is not one must not run a scripted test forever */
+    if (fx_env_get("FIXEL_GLUT_FRAMES", &n, msg, sizeof msg) < 0) {
+        fxg_log("%s", msg);
+        exit(2);
     }
-    e = getenv("FIXEL_GLUT_OUT");
+    v->frames = n;
+    const char *e = getenv("FIXEL_GLUT_OUT");
     v->out = e && *e ? e : NULL;
     e = getenv("FIXEL_GLUT_REPLAY");
     v->replay = e && *e ? e : NULL;
-    e = getenv("FIXEL_GLUT_FULLSCREEN");
-    v->fullscreen = e && !strcmp(e, "1");
-    e = getenv("FIXEL_BACKEND");
-    v->headless = e && !strcasecmp(e, "memory");
-    e = getenv("FIXEL_GLUT_BENCH");
-    v->bench = e && atoi(e) > 0;
+    v->fullscreen = sw("FIXEL_GLUT_FULLSCREEN") != 0;
+    /* the library's own parse, so "headless" and "Memory" agree with it */
+    long b = FX_BACKEND_AUTO;
+    v->headless = fx_env_get("FIXEL_BACKEND", &b, NULL, 0) == 0 && b == FX_BACKEND_MEMORY;
+    v->bench = sw("FIXEL_GLUT_BENCH") != 0;
 }
-

@@ -827,6 +827,14 @@ static void light_v(GLenum light, GLenum pname, const double *p)
     fx_gl_light *l = light_of(light);
     if (!l)
         return;
+    /* GL 1.x's ranges (Mesa: GL_INVALID_VALUE and nothing changes) */
+    if ((pname == GL_SPOT_EXPONENT && !(p[0] >= 0 && p[0] <= 128)) ||
+        (pname == GL_SPOT_CUTOFF && !(p[0] >= 0 && p[0] <= 90) && p[0] != 180.0) ||
+        ((pname == GL_CONSTANT_ATTENUATION || pname == GL_LINEAR_ATTENUATION ||
+          pname == GL_QUADRATIC_ATTENUATION) && !(p[0] >= 0))) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
     switch (pname) {
     case GL_AMBIENT: for (int k = 0; k < 4; k++) l->ambient[k] = fxg_d2q16(p[k]); break;
     case GL_DIFFUSE: for (int k = 0; k < 4; k++) l->diffuse[k] = fxg_d2q16(p[k]); break;
@@ -915,11 +923,20 @@ static void light_model(GLenum pname, const double *p)
             fxg.L.model_ambient[k] = fxg_d2q16(p[k]);
         break;
     case GL_LIGHT_MODEL_TWO_SIDE: fxg.L.two_side = p[0] != 0; break;
-    case GL_LIGHT_MODEL_LOCAL_VIEWER:
-        if (p[0] != 0)
-            fxg_unimplemented("glLightModel(GL_LIGHT_MODEL_LOCAL_VIEWER)", GL_INVALID_OPERATION);
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: fxg.L.local_viewer = p[0] != 0; break;
+    case GL_LIGHT_MODEL_COLOR_CONTROL:
+        /* GL 1.2's separate specular colour only differs from the single
+         * colour where a texture is applied between the two sums (or a
+         * negative light colour meets a clamp); without texturing the
+         * layer's single sum is the same picture */
+        if (p[0] == GL_SEPARATE_SPECULAR_COLOR) {
+            fxg.separate_specular = 1;
+        } else if (p[0] == GL_SINGLE_COLOR) {
+            fxg.separate_specular = 0;
+        } else {
+            fxg_set_error(GL_INVALID_ENUM);
+        }
         break;
-    case GL_LIGHT_MODEL_COLOR_CONTROL: break;
     default: fxg_set_error(GL_INVALID_ENUM);
     }
 }
@@ -956,8 +973,22 @@ static void material_v(GLenum face, GLenum pname, const double *p)
         if (!fxg.list_exec)
             return;
     }
+    if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return;
+    }
+    if (pname == GL_SHININESS && !(p[0] >= 0 && p[0] <= 128)) {
+        fxg_set_error(GL_INVALID_VALUE); /* GL 1.x: [0, 128]; Mesa changes nothing */
+        return;
+    }
     for (int f = 0; f < 2; f++) {
         if ((f == 0 && face == GL_BACK) || (f == 1 && face == GL_FRONT))
+            continue;
+        /* while GL_COLOR_MATERIAL tracks the current colour into this face's
+         * pname, glMaterial leaves it alone (Mesa's rule: the colour wins) */
+        if (fxg.color_material && fxg.cm_face != (f == 0 ? GL_BACK : GL_FRONT) &&
+            (pname == fxg.cm_mode ||
+             (fxg.cm_mode == GL_AMBIENT_AND_DIFFUSE && (pname == GL_AMBIENT || pname == GL_DIFFUSE))))
             continue;
         fx_gl_material *m = &fxg.mat[f];
         switch (pname) {
@@ -966,10 +997,15 @@ static void material_v(GLenum face, GLenum pname, const double *p)
         case GL_SPECULAR: for (int k = 0; k < 4; k++) m->specular[k] = fxg_d2q16(p[k]); break;
         case GL_EMISSION: for (int k = 0; k < 4; k++) m->emission[k] = fxg_d2q16(p[k]); break;
         case GL_AMBIENT_AND_DIFFUSE:
-            for (int k = 0; k < 4; k++)
-                m->ambient[k] = m->diffuse[k] = fxg_d2q16(p[k]);
+            for (int k = 0; k < 4; k++) {
+                int tracked = fxg.color_material && fxg.cm_face != (f == 0 ? GL_BACK : GL_FRONT);
+                if (!tracked || fxg.cm_mode == GL_DIFFUSE)
+                    m->ambient[k] = fxg_d2q16(p[k]);
+                if (!tracked || fxg.cm_mode == GL_AMBIENT)
+                    m->diffuse[k] = fxg_d2q16(p[k]);
+            }
             break;
-        case GL_SHININESS: m->shininess = fxg_d2q16(p[0] < 0 ? 0 : p[0] > 128 ? 128 : p[0]); break;
+        case GL_SHININESS: m->shininess = fxg_d2q16(p[0]); break;
         default: fxg_set_error(GL_INVALID_ENUM); return;
         }
     }
@@ -998,6 +1034,10 @@ void glMaterialf(GLenum face, GLenum pname, GLfloat p)
 void glMateriali(GLenum face, GLenum pname, GLint p) { glMaterialf(face, pname, (GLfloat)p); }
 void glGetMaterialfv(GLenum face, GLenum pname, GLfloat *p)
 {
+    if (face != GL_FRONT && face != GL_BACK) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return;
+    }
     fx_gl_material *m = &fxg.mat[face == GL_BACK];
     const fx16 *c = pname == GL_AMBIENT ? m->ambient : pname == GL_DIFFUSE ? m->diffuse
                     : pname == GL_SPECULAR ? m->specular : pname == GL_EMISSION ? m->emission
@@ -1007,10 +1047,18 @@ void glGetMaterialfv(GLenum face, GLenum pname, GLfloat *p)
             p[k] = (GLfloat)(c[k] / 65536.0);
     else if (pname == GL_SHININESS)
         p[0] = (GLfloat)(m->shininess / 65536.0);
+    else
+        fxg_set_error(GL_INVALID_ENUM);
 }
 void glColorMaterial(GLenum face, GLenum mode)
 {
     REC(OP_COLORMATERIAL, (double)face, (double)mode);
+    if ((face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) ||
+        (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
+         mode != GL_AMBIENT_AND_DIFFUSE)) {
+        fxg_set_error(GL_INVALID_ENUM);
+        return;
+    }
     fxg.cm_face = face, fxg.cm_mode = mode;
     apply_color_material();
 }
@@ -1032,6 +1080,12 @@ static void sync_target(void)
     t->tex = NULL;
     if (fxg.tex2d && fxg.bound_tex < FXG_MAX_TEX && fxg.tex[fxg.bound_tex].used &&
         fxg.tex[fxg.bound_tex].mem) {
+        static int told;
+        if (fxg.lighting && fxg.separate_specular && !told) {
+            told = 1; /* the one case where GL's separate specular colour shows */
+            fxg_log("GL_SEPARATE_SPECULAR_COLOR: fixel's layer adds the specular term before "
+                    "texturing, not after (ignored)");
+        }
         t->tex = &fxg.tex[fxg.bound_tex].t;
         t->tex_env = fxg.tex_env == GL_REPLACE ? FX_GL_TEX_REPLACE
                      : fxg.tex_env == GL_DECAL ? FX_GL_TEX_DECAL
@@ -1065,9 +1119,18 @@ static void process_vertex(fx32 x, fx32 y, fx32 z, fx32 w, fx_gl_cvert *o)
         /* directional lights' vectors once, not per vertex (same bits) */
         static fx_gl_shade_cache shade_cache;
         fx_gl_shade_cached(&fxg.L, &shade_cache, &fxg.mat[0], p, n, o->c);
+        if (fxg.L.two_side) {
+            /* GL 1.x: a back face is lit with the back material and the
+             * normal reversed; which colour a polygon takes is decided by
+             * its facing in window coordinates (raster_poly) */
+            fx32 bn[3] = {-n[0], -n[1], -n[2]};
+            fx_gl_shade_cached(&fxg.L, &shade_cache, &fxg.mat[1], p, bn, o->bc);
+        } else {
+            memcpy(o->bc, o->c, sizeof o->bc);
+        }
     } else {
         for (int k = 0; k < 4; k++)
-            o->c[k] = fxg.color[k];
+            o->c[k] = o->bc[k] = fxg.color[k];
     }
     o->s = fxg.texc[0], o->t = fxg.texc[1];
 }
@@ -1109,8 +1172,10 @@ static void draw_line(const fx_gl_cvert *a, const fx_gl_cvert *b, const fx16 *pr
 
 /* One polygon of n (3 or 4) clip-space vertices, convex, with GL edge
  * flags: edge i (v[i] -> v[i+1]) is drawn in line mode when bit i is set. */
-static void raster_poly(fx_gl_wvert *w, int m, int n, const fx16 *provoking, unsigned edges);
-static void draw_poly(const fx_gl_cvert *const *v, int n, const fx16 *provoking, unsigned edges)
+static void raster_poly(fx_gl_wvert *w, int m, int n, const fx_gl_cvert *provoking, unsigned edges,
+                        const fx_gl_cvert *const *src);
+static void draw_poly(const fx_gl_cvert *const *v, int n, const fx_gl_cvert *provoking,
+                      unsigned edges)
 {
     fx_gl_cvert in[4], out[16], tmp[16];
     for (int i = 0; i < n; i++)
@@ -1122,11 +1187,18 @@ static void draw_poly(const fx_gl_cvert *const *v, int n, const fx16 *provoking,
     for (int i = 0; i < m; i++)
         if (to_win(&out[i], &w[i]) < 0)
             return;
-    raster_poly(w, m, n, provoking, edges);
+    const fx_gl_cvert *src[16];
+    if (fxg.lighting && fxg.L.two_side)
+        for (int i = 0; i < m; i++)
+            src[i] = &out[i];
+    raster_poly(w, m, n, provoking, edges, src);
 }
 /* Culling, polygon mode and rasterization of a polygon already in window
- * coordinates (m vertices; n: how many it had before clipping). */
-static void raster_poly(fx_gl_wvert *w, int m, int n, const fx16 *provoking, unsigned edges)
+ * coordinates (m vertices; n: how many it had before clipping); src[i] is
+ * the clip-space vertex of w[i], read for its back colour when two-sided
+ * lighting is on. */
+static void raster_poly(fx_gl_wvert *w, int m, int n, const fx_gl_cvert *provoking, unsigned edges,
+                        const fx_gl_cvert *const *src)
 {
     int64_t area = 0;
     for (int i = 1; i + 1 < m && area == 0; i++)
@@ -1137,12 +1209,15 @@ static void raster_poly(fx_gl_wvert *w, int m, int n, const fx16 *provoking, uns
     if (fxg.cull && (fxg.cull_face == GL_FRONT_AND_BACK || (front && fxg.cull_face == GL_FRONT) ||
                      (!front && fxg.cull_face == GL_BACK)))
         return;
+    const fx16 *flat = fxg.shade == GL_FLAT ? provoking->c : NULL;
     if (fxg.lighting && fxg.L.two_side && !front) {
-        /* two-sided lighting would relight with the back material and a flipped
-         * normal; kept to the front colours here (documented) */
+        /* the whole polygon, in every polygon mode, takes the back colours */
+        for (int i = 0; i < m; i++)
+            memcpy(w[i].c, src[i]->bc, sizeof w[i].c);
+        if (flat)
+            flat = provoking->bc;
     }
     GLenum mode = front ? fxg.poly_front : fxg.poly_back;
-    const fx16 *flat = fxg.shade == GL_FLAT ? provoking : NULL;
     if (mode == GL_FILL) {
         for (int i = 1; i + 1 < m; i++)
             fx_gl_triangle(&fxg.tgt, &w[0], &w[i], &w[i + 1], flat);
@@ -1161,7 +1236,7 @@ static void raster_poly(fx_gl_wvert *w, int m, int n, const fx16 *provoking, uns
 }
 
 static void draw_tri(const fx_gl_cvert *a, const fx_gl_cvert *b, const fx_gl_cvert *c,
-                     const fx16 *prov, unsigned edges)
+                     const fx_gl_cvert *prov, unsigned edges)
 {
     const fx_gl_cvert *v[3] = {a, b, c};
     draw_poly(v, 3, prov, edges);
@@ -1197,13 +1272,13 @@ static void assemble(int final)
         break;
     case GL_TRIANGLES:
         for (int i = 0; i + 2 < n; i += 3)
-            draw_tri(&vb[i].cv, &vb[i + 1].cv, &vb[i + 2].cv, vb[i + 2].cv.c, 7);
+            draw_tri(&vb[i].cv, &vb[i + 1].cv, &vb[i + 2].cv, &vb[i + 2].cv, 7);
         used = n - n % 3;
         break;
     case GL_QUADS:
         for (int i = 0; i + 3 < n; i += 4) {
             const fx_gl_cvert *v[4] = {&vb[i].cv, &vb[i + 1].cv, &vb[i + 2].cv, &vb[i + 3].cv};
-            draw_poly(v, 4, vb[i + 3].cv.c, 15);
+            draw_poly(v, 4, &vb[i + 3].cv, 15);
         }
         used = n & ~3;
         break;
@@ -1216,17 +1291,17 @@ static void assemble(int final)
         if (fxg.prim == GL_TRIANGLE_STRIP) {
             for (int i = 0; i + 2 < n; i++) {
                 if (i & 1)
-                    draw_tri(&vb[i + 1].cv, &vb[i].cv, &vb[i + 2].cv, vb[i + 2].cv.c, 7);
+                    draw_tri(&vb[i + 1].cv, &vb[i].cv, &vb[i + 2].cv, &vb[i + 2].cv, 7);
                 else
-                    draw_tri(&vb[i].cv, &vb[i + 1].cv, &vb[i + 2].cv, vb[i + 2].cv.c, 7);
+                    draw_tri(&vb[i].cv, &vb[i + 1].cv, &vb[i + 2].cv, &vb[i + 2].cv, 7);
             }
         } else if (fxg.prim == GL_TRIANGLE_FAN) {
             for (int i = 1; i + 1 < n; i++)
-                draw_tri(&vb[0].cv, &vb[i].cv, &vb[i + 1].cv, vb[i + 1].cv.c, 7);
+                draw_tri(&vb[0].cv, &vb[i].cv, &vb[i + 1].cv, &vb[i + 1].cv, 7);
         } else if (fxg.prim == GL_QUAD_STRIP) {
             for (int i = 0; i + 3 < n; i += 2) {
                 const fx_gl_cvert *v[4] = {&vb[i].cv, &vb[i + 1].cv, &vb[i + 3].cv, &vb[i + 2].cv};
-                draw_poly(v, 4, vb[i + 3].cv.c, 15);
+                draw_poly(v, 4, &vb[i + 3].cv, 15);
             }
         } else if (n >= 3) {
             /* a polygon: a fan from vertex 0, flat colour from vertex 0; in line
@@ -1235,7 +1310,7 @@ static void assemble(int final)
             GLenum pm = fxg.poly_front == fxg.poly_back ? fxg.poly_front : GL_FILL;
             if (pm == GL_FILL) {
                 for (int i = 1; i + 1 < n; i++)
-                    draw_tri(v0, &vb[i].cv, &vb[i + 1].cv, v0->c, 7);
+                    draw_tri(v0, &vb[i].cv, &vb[i + 1].cv, v0, 7);
             } else {
                 for (int i = 1; i + 1 < n; i++) {
                     unsigned e = 2; /* middle edge v[i] -> v[i+1] */
@@ -1243,7 +1318,7 @@ static void assemble(int final)
                         e |= 1;
                     if (i + 2 == n)
                         e |= 4;
-                    draw_tri(v0, &vb[i].cv, &vb[i + 1].cv, v0->c, e);
+                    draw_tri(v0, &vb[i].cv, &vb[i + 1].cv, v0, e);
                 }
             }
         }
@@ -1405,9 +1480,10 @@ static int draw_indexed(const int32_t *pos, const int32_t *nrm, int32_t nverts, 
         uint32_t a = tri[3 * i], b = tri[3 * i + 1], c = tri[3 * i + 2];
         if (inside[a] && inside[b] && inside[c]) {
             fx_gl_wvert w[3] = {wv[a], wv[b], wv[c]};
-            raster_poly(w, 3, 3, cv[c].c, 7);
+            const fx_gl_cvert *src[3] = {&cv[a], &cv[b], &cv[c]};
+            raster_poly(w, 3, 3, &cv[c], 7, src);
         } else {
-            draw_tri(&cv[a], &cv[b], &cv[c], cv[c].c, 7);
+            draw_tri(&cv[a], &cv[b], &cv[c], &cv[c], 7);
         }
     }
     return 0;
@@ -2037,6 +2113,11 @@ static int get_values(GLenum pname, double *v)
     case GL_UNPACK_ALIGNMENT: v[0] = fxg.unpack_align; return 1;
     case GL_PACK_ALIGNMENT: v[0] = fxg.pack_align; return 1;
     case GL_LIGHT_MODEL_AMBIENT: for (int i = 0; i < 4; i++) v[i] = fxg.L.model_ambient[i] / 65536.0; return 4;
+    case GL_LIGHT_MODEL_TWO_SIDE: v[0] = fxg.L.two_side; return 1;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: v[0] = fxg.L.local_viewer; return 1;
+    case GL_LIGHT_MODEL_COLOR_CONTROL: v[0] = fxg.separate_specular ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR; return 1;
+    case GL_COLOR_MATERIAL_FACE: v[0] = fxg.cm_face; return 1;
+    case GL_COLOR_MATERIAL_PARAMETER: v[0] = fxg.cm_mode; return 1;
     case GL_COLOR_WRITEMASK: for (int i = 0; i < 4; i++) v[i] = (fxg.color_mask >> i) & 1; return 4;
     case GL_DEPTH_RANGE: v[0] = 0, v[1] = 1; return 2;
     default: break;

@@ -74,6 +74,7 @@ typedef struct fxg_gl {
     /* lighting */
     fx_gl_lighting L;
     fx_gl_material mat[2];
+    int separate_specular; /* GL_LIGHT_MODEL_COLOR_CONTROL (see light_model) */
     /* immediate mode */
     GLenum prim;
     int in_begin;

@@ -7,6 +7,7 @@
 #include "fixel/error.h"
 #include "../base/fx_internal.h"
 #include "teapot_data.h"
+#include "objects_int.h"
 
 static const char *const kind_names[FX_MESH_KIND_COUNT] = {
     "cube", "tetrahedron", "octahedron", "dodecahedron", "icosahedron", "sphere",
@@ -76,7 +77,7 @@ int fx_mesh_size(const fx_mesh_params *p, int32_t *nv, int32_t *nt)
 
 /* ---- helpers ---- */
 
-static void put_v(fx_mesh *m, fx_vec3 p, fx_vec3 n)
+void fx_obj_put(fx_mesh *m, fx_vec3 p, fx_vec3 n)
 {
     m->pos[m->nverts] = p;
     m->nrm[m->nverts] = n;
@@ -92,12 +93,47 @@ static void put_uv(fx_mesh *m, fx16 s, fx16 t)
     }
 }
 
-static void put_t(fx_mesh *m, int32_t a, int32_t b, int32_t c)
+void fx_obj_tri(fx_mesh *m, int32_t a, int32_t b, int32_t c)
 {
     uint32_t *t = &m->tri[3 * m->ntris++];
     t[0] = (uint32_t)a;
     t[1] = (uint32_t)b;
     t[2] = (uint32_t)c;
+}
+
+void fx_obj_grid_tris(fx_mesh *m, int32_t base, int32_t n, int32_t k, int pole0, int polek)
+{
+    for (int32_t i = 0; i < k; i++)
+        for (int32_t j = 0; j < n; j++) {
+            int32_t a = base + i * (n + 1) + j, b = a + n + 1, c = b + 1, d = a + 1;
+            if (!(polek && i == k - 1))
+                fx_obj_tri(m, a, b, c);
+            if (!(pole0 && i == 0))
+                fx_obj_tri(m, a, c, d);
+        }
+}
+
+void fx_obj_ring_tris(fx_mesh *m, int32_t n, int32_t k)
+{
+    for (int32_t i = 0; i < k; i++)
+        for (int32_t j = 0; j < n; j++) {
+            int32_t i1 = (i + 1) % k, j1 = (j + 1) % n;
+            int32_t a = i * n + j, b = i1 * n + j, c = i1 * n + j1, d = i * n + j1;
+            fx_obj_tri(m, a, b, c);
+            fx_obj_tri(m, a, c, d);
+        }
+}
+
+int fx_obj_mesh_begin(fx_mesh *m, int e, int32_t nv, int32_t nt)
+{
+    if (e < 0)
+        return e;
+    if (!m->pos || !m->nrm || !m->tri)
+        return -FX_EINVAL;
+    if (nv > m->cap_verts || nt > m->cap_tris)
+        return -FX_ENOSPC;
+    m->nverts = m->ntris = 0;
+    return 0;
 }
 
 /* Unit normal of the 64-bit cross product a x b, for vectors too short or
@@ -195,8 +231,8 @@ static void emit_faces(fx_mesh *m, const fx_vec3 *v, int f[][3], int nf, fx16 a)
         fx_vec3_normalize(&n);
         int32_t b = m->nverts;
         for (int k = 0; k < 3; k++)
-            put_v(m, fx_vec3_scale(v[f[i][k]], a), n);
-        put_t(m, b, b + 1, b + 2);
+            fx_obj_put(m, fx_vec3_scale(v[f[i][k]], a), n);
+        fx_obj_tri(m, b, b + 1, b + 2);
     }
 }
 
@@ -259,9 +295,9 @@ static void make_dodecahedron(fx_mesh *m, fx16 a)
             }
         int32_t b = m->nverts;
         for (int i = 0; i < 5; i++)
-            put_v(m, fx_vec3_scale(dv[ring[i]], a), ax);
+            fx_obj_put(m, fx_vec3_scale(dv[ring[i]], a), ax);
         for (int i = 1; i < 4; i++)
-            put_t(m, b, b + i, b + i + 1);
+            fx_obj_tri(m, b, b + i, b + i + 1);
     }
 }
 
@@ -282,11 +318,11 @@ static void make_cube(fx_mesh *m, fx16 a)
                 fx16 c[3];
                 for (int i = 0; i < 3; i++)
                     c[i] = fx16_mul(h, n[i] + cu[kk] * u[i] + cv[kk] * v[i]);
-                put_v(m, fx_vec3_make(c[0], c[1], c[2]), nn);
+                fx_obj_put(m, fx_vec3_make(c[0], c[1], c[2]), nn);
                 put_uv(m, cu[kk] > 0 ? FX16_ONE : 0, cv[kk] > 0 ? FX16_ONE : 0);
             }
-            put_t(m, b, b + 1, b + 2);
-            put_t(m, b, b + 2, b + 3);
+            fx_obj_tri(m, b, b + 1, b + 2);
+            fx_obj_tri(m, b, b + 2, b + 3);
         }
 }
 
@@ -306,18 +342,11 @@ static void make_ellipsoid(fx_mesh *m, fx16 ra, fx16 rb, fx16 rc, int32_t n, int
                                       fx16_mul(u.z, fx16_mul(ra, rb)));
             if (fx_vec3_normalize(&nn) < 0)
                 nn = u;
-            put_v(m, p, nn);
+            fx_obj_put(m, p, nn);
             put_uv(m, fx16_from_ratio(j, n), fx16_from_ratio(i, k));
         }
     }
-    for (int32_t i = 0; i < k; i++)
-        for (int32_t j = 0; j < n; j++) {
-            int32_t a = i * (n + 1) + j, b = a + n + 1, c = b + 1, d = a + 1;
-            if (i != k - 1)
-                put_t(m, a, b, c);
-            if (i != 0)
-                put_t(m, a, c, d);
-        }
+    fx_obj_grid_tris(m, 0, n, k, 1, 1);
 }
 
 static void make_torus(fx_mesh *m, fx16 R, fx16 r, int32_t n, int32_t k)
@@ -331,16 +360,10 @@ static void make_torus(fx_mesh *m, fx16 R, fx16 r, int32_t n, int32_t k)
             fx_vec3 nn = fx_vec3_make(fx16_mul(c, D.x), s, fx16_mul(c, D.z));
             fx_vec3 p = fx_vec3_add(fx_vec3_scale(D, R), fx_vec3_scale(nn, r));
             fx_vec3_normalize(&nn);
-            put_v(m, p, nn);
+            fx_obj_put(m, p, nn);
         }
     }
-    for (int32_t i = 0; i < k; i++)
-        for (int32_t j = 0; j < n; j++) {
-            int32_t i1 = (i + 1) % k, j1 = (j + 1) % n;
-            int32_t a = i * n + j, b = i1 * n + j, c = i1 * n + j1, d = i * n + j1;
-            put_t(m, a, b, c);
-            put_t(m, a, c, d);
-        }
+    fx_obj_ring_tris(m, n, k);
 }
 
 static void make_cone_cyl(fx_mesh *m, fx16 ra, fx16 h, int32_t n, int cone)
@@ -353,7 +376,7 @@ static void make_cone_cyl(fx_mesh *m, fx16 ra, fx16 h, int32_t n, int cone)
         fx16 s = fx_sin(th), c = fx_cos(th);
         fx_vec3 nn = cone ? fx_vec3_make(fx16_mul(h, s), ra, fx16_mul(h, c)) : fx_vec3_make(s, 0, c);
         fx_vec3_normalize(&nn);
-        put_v(m, fx_vec3_make(fx16_mul(ra, s), 0, fx16_mul(ra, c)), nn);
+        fx_obj_put(m, fx_vec3_make(fx16_mul(ra, s), 0, fx16_mul(ra, c)), nn);
         put_uv(m, fx16_from_ratio(j, n), FX16_ONE);
     }
     int32_t top = m->nverts;
@@ -366,32 +389,32 @@ static void make_cone_cyl(fx_mesh *m, fx16 ra, fx16 h, int32_t n, int cone)
         fx_vec3 nn = cone ? fx_vec3_make(fx16_mul(h, s), ra, fx16_mul(h, c)) : fx_vec3_make(s, 0, c);
         fx_vec3_normalize(&nn);
         fx_vec3 p = cone ? fx_vec3_make(0, h, 0) : fx_vec3_make(fx16_mul(ra, s), h, fx16_mul(ra, c));
-        put_v(m, p, nn);
+        fx_obj_put(m, p, nn);
         put_uv(m, cone ? (fx16)(((2 * (int64_t)j + 1) << 15) / n) : fx16_from_ratio(j, n), 0);
     }
     for (int32_t j = 0; j < n; j++) {
         if (cone) {
-            put_t(m, ring + j, ring + j + 1, top + j);
+            fx_obj_tri(m, ring + j, ring + j + 1, top + j);
         } else {
-            put_t(m, ring + j, ring + j + 1, top + j + 1);
-            put_t(m, ring + j, top + j + 1, top + j);
+            fx_obj_tri(m, ring + j, ring + j + 1, top + j + 1);
+            fx_obj_tri(m, ring + j, top + j + 1, top + j);
         }
     }
     /* Caps: the base (facing down), and the top for a cylinder. */
     for (int capi = 0; capi < (cone ? 1 : 2); capi++) {
         fx16 y = capi ? h : 0;
         int32_t c0 = m->nverts;
-        put_v(m, fx_vec3_make(0, y, 0), capi ? up : down);
+        fx_obj_put(m, fx_vec3_make(0, y, 0), capi ? up : down);
         for (int32_t j = 0; j < n; j++) {
             fx_angle th = frac_angle(j, n, 32);
-            put_v(m, fx_vec3_make(fx16_mul(ra, fx_sin(th)), y, fx16_mul(ra, fx_cos(th))), capi ? up : down);
+            fx_obj_put(m, fx_vec3_make(fx16_mul(ra, fx_sin(th)), y, fx16_mul(ra, fx_cos(th))), capi ? up : down);
         }
         for (int32_t j = 0; j < n; j++) {
             int32_t a = c0 + 1 + j, b = c0 + 1 + (j + 1) % n;
             if (capi)
-                put_t(m, c0, a, b);
+                fx_obj_tri(m, c0, a, b);
             else
-                put_t(m, c0, b, a);
+                fx_obj_tri(m, c0, b, a);
         }
     }
 }
@@ -402,40 +425,25 @@ static void make_plane(fx_mesh *m, fx16 a, int32_t n)
     for (int32_t i = 0; i <= n; i++)
         for (int32_t j = 0; j <= n; j++) {
             fx16 x = fx16_from_ratio(j, n) - FX16_HALF, z = fx16_from_ratio(i, n) - FX16_HALF;
-            put_v(m, fx_vec3_make(fx16_mul(x, a), 0, fx16_mul(z, a)), up);
+            fx_obj_put(m, fx_vec3_make(fx16_mul(x, a), 0, fx16_mul(z, a)), up);
             put_uv(m, fx16_from_ratio(j, n), fx16_from_ratio(i, n));
         }
     for (int32_t i = 0; i < n; i++)
         for (int32_t j = 0; j < n; j++) {
             int32_t p = i * (n + 1) + j, b = p + n + 1, c = b + 1, d = p + 1;
-            put_t(m, p, b, c);
-            put_t(m, p, c, d);
+            fx_obj_tri(m, p, b, c);
+            fx_obj_tri(m, p, c, d);
         }
 }
 
 /* ---- the teapot ---- */
 
-/* Bernstein weights of degree 3 and their derivatives at t (Q16.16). */
-static void bern(fx16 t, int64_t w[4], int64_t d[4])
-{
-    int64_t s = FX16_ONE - t;
-    int64_t ss = (s * s) >> 16, tt = ((int64_t)t * t) >> 16, st = (s * t) >> 16;
-    w[0] = (ss * s) >> 16;
-    w[1] = 3 * ((ss * t) >> 16);
-    w[2] = 3 * ((tt * s) >> 16);
-    w[3] = (tt * t) >> 16;
-    d[0] = -3 * ss;
-    d[1] = 3 * ss - 6 * st;
-    d[2] = 6 * st - 3 * tt;
-    d[3] = 3 * tt;
-}
-
 /* Point and tangents of patch p at (u, v), Q16.16, already y-up. */
 static void patch_eval(int p, fx16 u, fx16 v, fx16 scale, fx_vec3 *pt, fx_vec3 *du, fx_vec3 *dv)
 {
     int64_t wu[4], du_[4], wv[4], dv_[4];
-    bern(u, wu, du_);
-    bern(v, wv, dv_);
+    fx_obj_bezier_basis(u, wu, du_);
+    fx_obj_bezier_basis(v, wv, dv_);
     int64_t acc[3][3] = {{0}};
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) {
@@ -479,30 +487,26 @@ static void make_teapot(fx_mesh *m, fx16 scale, int32_t n)
                     if (cross_unit(dv, du, &nn) < 0)
                         nn = fx_vec3_make(0, pt.y > 0x18000 ? FX16_ONE : -FX16_ONE, 0);
                 }
-                put_v(m, pt, nn);
+                fx_obj_put(m, pt, nn);
                 put_uv(m, u, v);
             }
         for (int32_t i = 0; i < n; i++)
             for (int32_t j = 0; j < n; j++) {
                 int32_t a = b + i * (n + 1) + j, c = a + n + 2, d = a + 1, e = a + n + 1;
                 /* Newell's patches run clockwise seen from outside. */
-                put_t(m, a, d, c);
-                put_t(m, a, c, e);
+                fx_obj_tri(m, a, d, c);
+                fx_obj_tri(m, a, c, e);
             }
     }
 }
 
 int fx_mesh_make(fx_mesh *m, const fx_mesh_params *p)
 {
-    int32_t nv, nt;
+    int32_t nv = 0, nt = 0;
     int e = fx_mesh_size(p, &nv, &nt);
+    e = fx_obj_mesh_begin(m, e, nv, nt);
     if (e < 0)
         return e;
-    if (!m->pos || !m->nrm || !m->tri)
-        return -FX_EINVAL;
-    if (nv > m->cap_verts || nt > m->cap_tris)
-        return -FX_ENOSPC;
-    m->nverts = m->ntris = 0;
     if (m->uv)
         fx_memset(m->uv, 0, sizeof(fx16) * 2 * (size_t)nv);
     switch (p->kind) {

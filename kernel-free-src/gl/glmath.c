@@ -122,6 +122,15 @@ fx_glv4 fx_glm_apply(const fx_glm *m, fx_glv4 v)
 {
     const fx32 *a = m->m;
     fx_glv4 o;
+    if (v.w == FX32_ONE) {
+        /* a point (nearly every vertex): the last column's products are
+         * the column itself, exactly */
+        o.x = fx32_mul(a[0], v.x) + fx32_mul(a[4], v.y) + fx32_mul(a[8], v.z) + a[12];
+        o.y = fx32_mul(a[1], v.x) + fx32_mul(a[5], v.y) + fx32_mul(a[9], v.z) + a[13];
+        o.z = fx32_mul(a[2], v.x) + fx32_mul(a[6], v.y) + fx32_mul(a[10], v.z) + a[14];
+        o.w = fx32_mul(a[3], v.x) + fx32_mul(a[7], v.y) + fx32_mul(a[11], v.z) + a[15];
+        return o;
+    }
     o.x = fx32_mul(a[0], v.x) + fx32_mul(a[4], v.y) + fx32_mul(a[8], v.z) + fx32_mul(a[12], v.w);
     o.y = fx32_mul(a[1], v.x) + fx32_mul(a[5], v.y) + fx32_mul(a[9], v.z) + fx32_mul(a[13], v.w);
     o.z = fx32_mul(a[2], v.x) + fx32_mul(a[6], v.y) + fx32_mul(a[10], v.z) + fx32_mul(a[14], v.w);
@@ -419,6 +428,15 @@ void fx_gl_shade_cached(const fx_gl_lighting *L, fx_gl_shade_cache *cache,
     if (p[3] != FX32_ONE && p[3] != 0)
         for (int i = 0; i < 3; i++)
             P[i] = fx_muldiv64(p[i], FX32_ONE, p[3]);
+    /* the unit vector to the eye: (0, 0, 1) for the infinite viewer GL
+     * assumes by default, towards the origin with a local viewer (a
+     * vertex at the origin keeps (0, 0, 1), fx_glv3_normalize's -1 case) */
+    fx32 E[3] = {0, 0, FX32_ONE};
+    if (L->local_viewer) {
+        fx32 t[3] = {-P[0], -P[1], -P[2]};
+        if (fx_glv3_normalize(t) == 0)
+            E[0] = t[0], E[1] = t[1], E[2] = t[2];
+    }
     for (int i = 0; i < FX_GL_MAX_LIGHTS; i++) {
         const fx_gl_light *li = &L->light[i];
         if (!li->enabled)
@@ -459,8 +477,8 @@ void fx_gl_shade_cached(const fx_gl_lighting *L, fx_gl_shade_cache *cache,
         fx16 dif = ndl > 0 ? (fx16)(ndl >> 16) : 0;
         fx16 spec = 0;
         if (ndl > 0) {
-            fx32 H[3] = {VP[0], VP[1], VP[2] + FX32_ONE};
-            if (directional)
+            fx32 H[3] = {VP[0] + E[0], VP[1] + E[1], VP[2] + E[2]};
+            if (directional && !L->local_viewer)
                 H[0] = cl->h[0], H[1] = cl->h[1], H[2] = cl->h[2];
             else
                 fx_glv3_normalize(H);

@@ -386,18 +386,23 @@ static inline __attribute__((always_inline)) int depth_cmp(const fx_gl_target *t
  *    at least 2^32 there), where its guards on q and the shift are idle,
  *    and without the clamp of l1 to [0, 1]: L1 <= Q makes
  *    (L1 >> sh) * inv <= (Q >> sh) * (2^62 / (Q >> sh)) <= 2^62;
- *  - the depth's rounding bias added once, the clamp as a rare branch.
+ *  - the depth's rounding bias added once, the clamp as a rare branch;
+ *  - only the depth stepped along the span: a pixel that passes takes q,
+ *    l1 q, l2 q as their row value (c + gy y) plus x gradients, the value
+ *    fx_tri_attr_at gives (products modulo 2^64, the same bits as stepping
+ *    pixel by pixel), so a hidden pixel costs the depth test alone; the
+ *    depth function and depth writes are constants of each copy of the
+ *    loop.
  * (Two passes, the depth tests first and then the colours of the pixels
  * that passed, ran slower here: the spans are a few pixels long.) */
 static inline __attribute__((always_inline)) void
-persp_span_plain(const fx_gl_target *t, int func, uint32_t *prow, uint32_t *drow, int32_t x0,
-                 int32_t x1, const uint64_t val[4], const uint64_t g[4], const int64_t c0h[3],
-                 const int64_t d1[3], const int64_t d2[3])
+persp_span_plain(const fx_gl_target *t, int func, int dw, uint32_t *prow, uint32_t *drow,
+                 int32_t x0, int32_t x1, uint64_t vz, const uint64_t row[3], const uint64_t g[4],
+                 const int64_t c0h[3], const int64_t d1[3], const int64_t d2[3])
 {
-    uint64_t vz = val[0] + 0x80000000u, vq = val[1], v1 = val[2], v2 = val[3];
-    const uint64_t gz = g[0], gq = g[1], g1 = g[2], g2 = g[3];
-    const int dw = t->depth_write;
-    for (int32_t x = x0; x < x1; x++, vz += gz, vq += gq, v1 += g1, v2 += g2) {
+    vz += 0x80000000u;
+    const uint64_t gz = g[0];
+    for (int32_t x = x0; x < x1; x++, vz += gz) {
         int32_t zz = (int32_t)((int64_t)vz >> 32); /* fx_tri_attr_round */
         uint32_t z = (uint32_t)zz;
         if (__builtin_expect(z > 0xFFFFFF, 0))
@@ -406,6 +411,8 @@ persp_span_plain(const fx_gl_target *t, int func, uint32_t *prow, uint32_t *drow
             continue;
         if (dw)
             drow[x] = z;
+        const uint64_t ux = (uint64_t)(int64_t)x;
+        const uint64_t vq = row[0] + g[1] * ux, v1 = row[1] + g[2] * ux, v2 = row[2] + g[3] * ux;
         int64_t l1, l2, Qv = (int64_t)vq;
         if (__builtin_expect(Qv >= ((int64_t)1 << 31), 1)) {
             int sh = 33 - __builtin_clzll((uint64_t)Qv);
@@ -429,7 +436,7 @@ persp_span_plain(const fx_gl_target *t, int func, uint32_t *prow, uint32_t *drow
 
 /* The spans of such a triangle, the walk stepped inline (tri_walk.h). */
 static inline __attribute__((always_inline)) void
-persp_plain(const fx_gl_target *t, int func, fx_tri *tri, const int64_t c0[4],
+persp_plain(const fx_gl_target *t, int func, int dw, fx_tri *tri, const int64_t c0[4],
             const int64_t d1[6], const int64_t d2[6])
 {
     const int64_t c0h[3] = {c0[0] + 0x8000, c0[1] + 0x8000, c0[2] + 0x8000};
@@ -438,16 +445,17 @@ persp_plain(const fx_gl_target *t, int func, fx_tri *tri, const int64_t c0[4],
     uint8_t *pixels = t->surf.pixels;
     const int32_t h1 = t->surf.h - 1, stride = t->surf.stride;
     uint32_t *depth = t->depth;
-    const size_t dw = (size_t)t->surf.w;
+    const size_t dstride = (size_t)t->surf.w;
     fx_tri_span sp;
     while (tri_next(tri, &sp)) {
-        uint64_t val[4];
-        for (int k = 0; k < 4; k++)
-            val[k] = fx_tri_attr_at(tri, k, sp.x0, sp.y);
+        const uint64_t uy = (uint64_t)(int64_t)sp.y;
+        const uint64_t rowv[3] = {tri->c[1] + tri->gy[1] * uy, tri->c[2] + tri->gy[2] * uy,
+                                  tri->c[3] + tri->gy[3] * uy};
         int32_t row = h1 - sp.y;
         uint32_t *prow = (uint32_t *)(pixels + (intptr_t)row * stride);
-        uint32_t *drow = depth + (size_t)row * dw;
-        persp_span_plain(t, func, prow, drow, sp.x0, sp.x1, val, g, c0h, e1, e2);
+        uint32_t *drow = depth + (size_t)row * dstride;
+        persp_span_plain(t, func, dw, prow, drow, sp.x0, sp.x1, fx_tri_attr_at(tri, 0, sp.x0, sp.y),
+                         rowv, g, c0h, e1, e2);
     }
 }
 
@@ -483,8 +491,11 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
     /* attribute deltas from vertex 0: colour levels in Q16, s and t */
     int64_t c0[4] = {0, 0, 0, 0}, d1[6] = {0}, d2[6] = {0};
     int64_t s0 = v[0]->s, t0 = v[0]->t;
+    int plain = plain_target(t);
+    /* the plain depth-tested Gouraud loop stores no alpha */
+    int nc = plain && use_z && !use_t ? 3 : 4;
     if (use_c)
-        for (int k = 0; k < 4; k++) {
+        for (int k = 0; k < nc; k++) {
             int64_t l[3];
             for (int i = 0; i < 3; i++) {
                 fx16 cc = v[i]->c[k];
@@ -503,15 +514,14 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
     if (flat)
         for (int k = 0; k < 4; k++)
             cf[k] = level(flat[k]);
-    int plain = plain_target(t);
     fx_tri_span sp;
     if (plain && use_z && use_c && !use_t) {
-        if (t->depth_func == FX_GL_DEPTH_LESS)
-            persp_plain(t, FX_GL_DEPTH_LESS, &tri, c0, d1, d2);
-        else if (t->depth_func == FX_GL_DEPTH_LEQUAL)
-            persp_plain(t, FX_GL_DEPTH_LEQUAL, &tri, c0, d1, d2);
+        if (t->depth_func == FX_GL_DEPTH_LESS && t->depth_write)
+            persp_plain(t, FX_GL_DEPTH_LESS, 1, &tri, c0, d1, d2);
+        else if (t->depth_func == FX_GL_DEPTH_LEQUAL && t->depth_write)
+            persp_plain(t, FX_GL_DEPTH_LEQUAL, 1, &tri, c0, d1, d2);
         else
-            persp_plain(t, -1, &tri, c0, d1, d2);
+            persp_plain(t, -1, t->depth_write, &tri, c0, d1, d2);
         return;
     }
     while (tri_next(&tri, &sp)) {
@@ -557,6 +567,53 @@ static void persp_triangle(fx_gl_target *t, const fx_gl_wvert *const v[3], const
     }
 }
 
+/* 1 when a GL_LESS / GL_LEQUAL depth-tested triangle cannot pass the test
+ * anywhere: every stored depth in its bounding box is at or before its
+ * nearest vertex. Its fragments' depths are values of the plane through
+ * the vertices' z at pixel centres inside it, so at least the smallest
+ * vertex z (less one for the rounding). Such a triangle changes no pixel
+ * and is left out before its set-up: hidden back faces of a closed mesh
+ * cost a scan of stored depths instead of edges, planes and spans. The
+ * scan stops at the first depth behind the triangle (a visible triangle
+ * costs a few reads) and is not tried where the box is much larger than
+ * the triangle (slivers) or large. */
+static int hidden_by_depth(const fx_gl_target *t, const fx_gl_wvert *const v[3], const fx8 xy[6])
+{
+    int32_t zmin = v[0]->z;
+    for (int i = 1; i < 3; i++)
+        zmin = v[i]->z < zmin ? v[i]->z : zmin;
+    int64_t need = (int64_t)zmin - 1 - (t->depth_func == FX_GL_DEPTH_LEQUAL);
+    if (need < 0)
+        return 0;
+    fx8 xmin = xy[0], xmax = xy[0], ymin = xy[1], ymax = xy[1];
+    for (int i = 1; i < 3; i++) {
+        xmin = xy[2 * i] < xmin ? xy[2 * i] : xmin, xmax = xy[2 * i] > xmax ? xy[2 * i] : xmax;
+        ymin = xy[2 * i + 1] < ymin ? xy[2 * i + 1] : ymin;
+        ymax = xy[2 * i + 1] > ymax ? xy[2 * i + 1] : ymax;
+    }
+    /* a covered pixel X has its (shifted) centre X in [xmin, xmax] / 256 */
+    int64_t X0 = ((int64_t)xmin + 255) >> 8, X1 = (int64_t)xmax >> 8;
+    int64_t Y0 = ((int64_t)ymin + 255) >> 8, Y1 = (int64_t)ymax >> 8;
+    X0 = X0 < t->clip.x0 ? t->clip.x0 : X0, X1 = X1 >= t->clip.x1 ? t->clip.x1 - 1 : X1;
+    Y0 = Y0 < t->clip.y0 ? t->clip.y0 : Y0, Y1 = Y1 >= t->clip.y1 ? t->clip.y1 - 1 : Y1;
+    if (X0 > X1 || Y0 > Y1)
+        return 0;
+    int64_t box = (X1 - X0 + 1) * (Y1 - Y0 + 1);
+    int64_t area2 = ((int64_t)(xy[2] - xy[0]) * (xy[5] - xy[1]) - (int64_t)(xy[4] - xy[0]) * (xy[3] - xy[1])) >> 16;
+    if (area2 < 0)
+        area2 = -area2;
+    if (box > 4096 || box > 4 * area2 + 64) /* pixels; area2 is twice the area */
+        return 0;
+    const uint32_t lim = (uint32_t)need;
+    for (int64_t Y = Y0; Y <= Y1; Y++) {
+        const uint32_t *d = t->depth + (size_t)(t->surf.h - 1 - Y) * (size_t)t->surf.w;
+        for (int64_t X = X0; X <= X1; X++)
+            if (d[X] > lim)
+                return 0;
+    }
+    return 1;
+}
+
 void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
                     const fx_gl_wvert *c, const fx16 *flat)
 {
@@ -566,6 +623,10 @@ void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
         xy[2 * i] = (fx8)(v[i]->x - 128);
         xy[2 * i + 1] = (fx8)(v[i]->y - 128);
     }
+    if (t->depth && t->depth_test &&
+        (t->depth_func == FX_GL_DEPTH_LESS || t->depth_func == FX_GL_DEPTH_LEQUAL) &&
+        hidden_by_depth(t, v, xy))
+        return;
     int use_z = t->depth && t->depth_test;
     int use_c = flat == 0;
     int use_t = t->tex != 0;
@@ -682,8 +743,10 @@ static void lerp_cvert(const fx_gl_cvert *a, const fx_gl_cvert *b, fx32 num, fx3
     o->p.y = a->p.y + fx_muldiv64(b->p.y - a->p.y, num, den);
     o->p.z = a->p.z + fx_muldiv64(b->p.z - a->p.z, num, den);
     o->p.w = a->p.w + fx_muldiv64(b->p.w - a->p.w, num, den);
-    for (int k = 0; k < 4; k++)
+    for (int k = 0; k < 4; k++) {
         o->c[k] = (fx16)(a->c[k] + fx_muldiv64(b->c[k] - a->c[k], num, den));
+        o->bc[k] = (fx16)(a->bc[k] + fx_muldiv64(b->bc[k] - a->bc[k], num, den));
+    }
     o->s = (fx16)(a->s + fx_muldiv64(b->s - a->s, num, den));
     o->t = (fx16)(a->t + fx_muldiv64(b->t - a->t, num, den));
 }

@@ -62,10 +62,15 @@ static int in_sector(const sector *s, int64_t px, int64_t py)
 
 static void trace_circle(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r)
 {
-    fx_trace(c, "midpoint circle centre (%d,%d) r=%d: p0=1-r=%lld; p<0: x+=1, p+=2x+1; "
+    /* The notes start from p0 = 5/4 - r; with an integer r every later
+     * p_k differs from it by an integer, so rounding it to 1 - r changes
+     * no sign test and hence no pixel: the trace says so, and prints the
+     * notes' 2x and 2y columns (the increments are built from them). */
+    fx_trace(c, "midpoint circle centre (%d,%d) r=%d: p0=1-r=%lld (the notes' 5/4-r rounded: r is an integer, "
+             "so the signs of p_k and every pixel are the same); p<0: x+=1, p+=2x+1; "
              "else x+=1, y-=1, p+=2x+1-2y (points relative to the centre)",
              cx, cy, r, 1 - (long long)r);
-    fx_trace(c, "%-4s %-12s %s", "k", "p_k", "(x_k+1, y_k+1)");
+    fx_trace(c, "%-4s %-12s %-18s %-10s %s", "k", "p_k", "(x_k+1, y_k+1)", "2x_k+1", "2y_k+1");
     int64_t x = 0, y = r, p = 1 - (int64_t)r;
     for (int k = 0; x < y; k++) {
         if (k == 1000) {
@@ -80,7 +85,9 @@ static void trace_circle(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r)
             y--;
             p += 2 * x + 1 - 2 * y;
         }
-        fx_trace(c, "%-4d %-12lld (%lld, %lld)", k, (long long)pk, (long long)x, (long long)y);
+        char pt[48];
+        fx_fmt(pt, sizeof pt, "(%lld, %lld)", (long long)x, (long long)y);
+        fx_trace(c, "%-4d %-12lld %-18s %-10lld %lld", k, (long long)pk, pt, 2 * (long long)x, 2 * (long long)y);
     }
 }
 

@@ -16,12 +16,14 @@ extern const fx_scene_cmd fx_scene_cmds_viz[];
 extern const fx_scene_cmd fx_scene_cmds_input[];
 extern const fx_scene_cmd fx_scene_cmds_rt[];
 extern const fx_scene_cmd fx_scene_cmds_vsd[];
+extern const fx_scene_cmd fx_scene_cmds_objects[];
 
 /* One table per module, each in its own scene_<module>.c. */
 const fx_scene_cmd *const fx_scene_tables[] = {
     fx_scene_cmds_core,    fx_scene_cmds_raster, fx_scene_cmds_conic, fx_scene_cmds_text,
     fx_scene_cmds_clip,    fx_scene_cmds_fill,   fx_scene_cmds_3d,    fx_scene_cmds_fractal,
     fx_scene_cmds_viz,     fx_scene_cmds_input,  fx_scene_cmds_rt,     fx_scene_cmds_vsd,
+    fx_scene_cmds_objects,
     0,
 };
 

@@ -470,15 +470,14 @@ static int cmd_background(fx_scene *sc)
 
 /* ---- meshes ---- */
 
-static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
+int fx_scene_mesh_alloc(fx_scene *sc, int32_t nv, int32_t nt, int want_uv, fx_mesh *m)
 {
-    int32_t nv, nt;
-    if (fx_mesh_size(p, &nv, &nt) < 0)
-        return fx_scene_error(sc, "tessellation out of range");
+    s3d *s;
+    TRY(get(sc, &s));
     if (nt > FX_SCENE_MAX_TRIANGLES)
         return fx_scene_error(sc, "%d triangles: more than the %d one command may draw", nt, FX_SCENE_MAX_TRIANGLES);
     size_t need = (size_t)nv * 2 * sizeof(fx_vec3) + (size_t)nt * 3 * sizeof(uint32_t);
-    if (s->r.tex)
+    if (want_uv)
         need += (size_t)nv * 2 * sizeof(fx16);
     if (need > s->mesh_bytes) {
         /* on failure the smaller block stays: a later, smaller mesh uses it */
@@ -488,16 +487,52 @@ static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
         s->mesh_mem = mem;
         s->mesh_bytes = need;
     }
-    fx_mesh m = {0};
-    m.pos = s->mesh_mem;
-    m.nrm = m.pos + nv;
-    m.tri = (uint32_t *)(m.nrm + nv);
-    m.cap_verts = nv;
-    m.cap_tris = nt;
-    m.uv = s->r.tex ? (fx16 *)(m.tri + 3 * (size_t)nt) : NULL;
-    TRY(fx_mesh_make(&m, p));
+    fx_mesh z = {0};
+    *m = z;
+    m->pos = s->mesh_mem;
+    m->nrm = m->pos + nv;
+    m->tri = (uint32_t *)(m->nrm + nv);
+    m->cap_verts = nv;
+    m->cap_tris = nt;
+    m->uv = want_uv ? (fx16 *)(m->tri + 3 * (size_t)nt) : NULL;
+    return 0;
+}
+
+int fx_scene_mesh_draw(fx_scene *sc, fx_mesh *m)
+{
+    s3d *s;
+    TRY(get(sc, &s));
     s->r.ctx = sc->ctx;
-    return fx3d_draw(&s->r, &m);
+    return fx3d_draw(&s->r, m);
+}
+
+int fx_scene_object_view(fx_scene *sc, fx_vec3 *eye, int *parallel)
+{
+    s3d *s;
+    TRY(get(sc, &s));
+    fx_mat4 mv, inv;
+    fx_mat4_mul(&mv, &s->r.view, fx_mat_stack_top(&s->r.model));
+    if (fx_mat4_invert(&inv, &mv) < 0)
+        return fx_scene_error(sc, "the model-view matrix has no inverse");
+    *parallel = s->r.parallel;
+    if (*parallel) {
+        *eye = fx_mat4_apply_dir(&inv, fx_vec3_make(0, 0, -FX16_ONE));
+    } else {
+        fx_vec4 e = fx_mat4_apply_point(&inv, fx_vec3_make(0, 0, 0));
+        *eye = fx_vec3_make(e.x, e.y, e.z);
+    }
+    return 0;
+}
+
+static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
+{
+    int32_t nv, nt;
+    if (fx_mesh_size(p, &nv, &nt) < 0)
+        return fx_scene_error(sc, "tessellation out of range");
+    fx_mesh m;
+    TRY(fx_scene_mesh_alloc(sc, nv, nt, s->r.tex != 0, &m));
+    TRY(fx_mesh_make(&m, p));
+    return fx_scene_mesh_draw(sc, &m);
 }
 
 static int mesh_cmd(fx_scene *sc, fx_mesh_kind kind, int nfx, int nint)

@@ -23,6 +23,7 @@
 #include "fixel/mesh.h"
 #include "fixel/rt.h"
 #include "fixel/vsd.h"
+#include "fixel/objects.h"
 
 #define CO 1048576 /* coordinate bound, 2^20 */
 #define G3 1024    /* 3D geometry bound */
@@ -197,6 +198,24 @@ A(texture3d, W("modulate|replace|decal|off"));
 A(shadowmap, FORM("end"), FORM("off"), FORM("begin"), IW("SIZE", 16, 4096), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1),
   P3("TX"), P3("TY"), P3("TZ"), F("FOV", -32768, 32767), P3("NEAR"), P3("FAR"));
 
+/* ---- objects (scene_objects.c): sizes within the 3D bound, exponents in Barr's range ---- */
+#define SEG(n, lo) IW(n, lo, FX_MESH_MAX_SEG)
+#define SQE(n) FR(n, FX_SQ_EXP_MIN, FX_SQ_EXP_MAX)
+A(paraboloid, F("A", 0, G3), F("B", 0, G3), F("H", 0, G3), SEG("SLICES", 3), SEG("ROWS", 2));
+A(hyperboloid, I("SHEETS", 1, 2), F("A", 0, G3), F("B", 0, G3), F("C", 0, G3), F("H", 0, G3), SEG("SLICES", 3),
+  SEG("ROWS", 2));
+A(superellipsoid, F("A", 0, G3), F("B", 0, G3), F("C", 0, G3), SQE("E1"), SQE("E2"), SEG("SLICES", 3),
+  SEG("STACKS", 2));
+A(supertoroid, F("R", 0, G3), F("r", 0, G3), SQE("E1"), SQE("E2"), SEG("SIDES", 3), SEG("RINGS", 3));
+A(blobball, P3("X"), P3("Y"), P3("Z"), F("R", 0, G3), F("W", -64, 64));
+A(blobby, F("ISO", 0, 4096), P3("X0"), P3("Y0"), P3("Z0"), F("STEP", 0, G3), IW("NX", 1, 64), IW("NY", 1, 64),
+  IW("NZ", 1, 64));
+A(patch, W("bezier|bspline"), IW("N", 1, 64), REP("control point", 16, 16), P3("X"), P3("Y"), P3("Z"));
+A(ptabcull, W("on|off"));
+A(octree, FORM("blob"), F("ISO", 0, 4096), IW("K", 1, 6), IW("SCALE", 1, 64), XY("SX"), XY("SY"), P3("X0"), P3("Y0"), P3("Z0"),
+  F("SIDE", 0, G3), FORM("supertoroid"), F("R", 0, G3), F("r", 0, G3), SQE("E1"), SQE("E2"), IW("SIDES", 3, 64),
+  IW("RINGS", 3, 64), IW("K", 1, 6), IW("SCALE", 1, 64), XY("SX"), XY("SY"), P3("X0"), P3("Y0"), P3("Z0"), F("SIDE", 0, G3));
+
 /* ---- ray tracer (scene_rt.c): world coordinates within the scene limit ---- */
 #define WR(n) F(n, -FX_RT_WORLD, FX_RT_WORLD)
 A(rtcamera, WR("EX"), WR("EY"), WR("EZ"), WR("LX"), WR("LY"), WR("LZ"), WR("UX"), WR("UY"), WR("UZ"),
@@ -285,6 +304,13 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"raytrace", a_raytrace, 0, RTWORK}, {"rttrace", a_rttrace, 0, RTWORK},
     {"vsdscene", a_vsdscene, 0, 0}, {"vsdpoly", a_vsdpoly, 0, 0}, {"vsdclear", a_none, 0, 0},
     {"vsdcull", a_vsdcull, 0, 0}, {"vsdoctree", a_vsdoctree, 0, 0}, {"vsd", a_vsd, "vsdscene 0", VSDW},
+    {"paraboloid", a_paraboloid, 0, TRIS}, {"hyperboloid", a_hyperboloid, 0, TRIS},
+    {"superellipsoid", a_superellipsoid, 0, TRIS}, {"supertoroid", a_supertoroid, 0, TRIS},
+    {"blobball", a_blobball, 0, 0}, {"blobclear", a_none, 0, 0},
+    {"blobby", a_blobby, "blobball 0 0 0 1 1", "6 NX NY NZ tetrahedra, each ball evaluated at (NX+1)(NY+1)(NZ+1) points"},
+    {"patch", a_patch, 0, 0}, {"ptabcull", a_ptabcull, 0, 0},
+    {"octree", a_octree, "blobball 0 0 0 1 1",
+     "2^(3K) voxels, each (blob) a field evaluation of every ball or (supertoroid) a row test of every triangle"},
     {0, 0, 0, 0},
 };
 

@@ -1,7 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* fixel — the foundation's scene commands: surface set-up, colour, pixels,
  * rectangles and the Bresenham line. */
+#include "../base/fx_internal.h"
 #include "fixel/error.h"
+#include "fixel/fill.h"
+#include "fixel/fixed.h"
 #include "fixel/line.h"
 #include "fixel/scene.h"
 #include "fixel/xform.h"
@@ -96,7 +99,21 @@ static int cmd_fillrect(fx_scene *sc)
 {
     int32_t v[4];
     TRY(args(sc, v, 4));
-    fx_xform_fill_rect(&sc->ctx, v[0], v[1], v[2], v[3]);
+    const fx_ctx *c = &sc->ctx;
+    /* fx_fill_rect is the solid fast path; a pattern, gradient or texture
+     * set for fillpoly must fill rectangles too (issue #23), through the
+     * same styled spans. Transformed rectangles are polygons already. */
+    if (c->fill_style && c->fill_style->kind != FX_FILL_SOLID && !fx_ctx_transformed(c)) {
+        if (v[2] <= 0 || v[3] <= 0)
+            return 0;
+        int64_t y0 = FX_MAX((int64_t)v[1], (int64_t)c->clip.y0);
+        int64_t y1 = FX_MIN((int64_t)v[1] + v[3], (int64_t)c->clip.y1);
+        int32_t x1 = fx_sat32((int64_t)v[0] + v[2]);
+        for (int64_t y = y0; y < y1; y++) /* at most the clip's height */
+            fx_fill_span(c, (int32_t)y, v[0], x1);
+        return 0;
+    }
+    fx_xform_fill_rect(c, v[0], v[1], v[2], v[3]);
     return 0;
 }
 

@@ -13,6 +13,7 @@
 #include "fixel/error.h"
 #include "fixel/scene.h"
 #include "fixel/vsd.h"
+#include "scene_vsd.h"
 
 #define TRY(x)                   \
     do {                         \
@@ -177,6 +178,39 @@ static int cmd_vsd(fx_scene *sc)
     return 0;
 }
 
+int fx_scene_octree_draw(fx_scene *sc, const uint8_t *vox, int32_t k, int32_t scale, int32_t sx, int32_t sy,
+                         int32_t *nodes_out)
+{
+    int32_t n = (int32_t)1 << k, cap = (((int32_t)1 << (3 * k + 3)) - 1) / 7;
+    /* the part of the n * scale picture at (sx, sy) left of and above the
+     * surface's far edges */
+    int64_t pw = (int64_t)sc->w - sx, ph = (int64_t)sc->h - sy, side = (int64_t)n * scale;
+    if (pw <= 0 || ph <= 0 || (int64_t)sx + side <= 0 || (int64_t)sy + side <= 0)
+        return 0;
+    int32_t w = (int32_t)(pw < side ? pw : side), h = (int32_t)(ph < side ? ph : side);
+    fx_vsd_onode *nodes = fx_scene_alloc(sc, (size_t)cap * sizeof *nodes);
+    int32_t *depth = fx_scene_alloc(sc, (size_t)w * (size_t)h * sizeof *depth);
+    if (!nodes || !depth)
+        return fx_scene_error(sc, "octree: out of scene memory");
+    fx_vsd_octree o;
+    if (fx_vsd_octree_build(&o, nodes, cap, vox, k) < 0)
+        return fx_scene_error(sc, "the octree did not fit");
+    int32_t visited = fx_vsd_octree_render(&o, scale, depth, w, h);
+    if (visited < 0)
+        return fx_scene_error(sc, "octree rendering failed (%d)", visited);
+    for (int32_t y = 0; y < h; y++)
+        for (int32_t x = 0; x < w; x++) {
+            int32_t z = depth[(size_t)y * (size_t)w + (size_t)x];
+            int64_t px = (int64_t)sx + x, py = (int64_t)sy + y;
+            if (z < 0 || px < 0 || py < 0)
+                continue;
+            uint32_t g = (uint32_t)(230 - z * 170 / n);
+            fx_surface_put(&sc->ctx.surf, (int32_t)px, (int32_t)py, 0xFF000000u | g << 16 | g << 8 | (g * 3 / 4));
+        }
+    *nodes_out = o.nnode;
+    return visited;
+}
+
 static int cmd_vsdoctree(fx_scene *sc)
 {
     int32_t k, scale;
@@ -186,31 +220,15 @@ static int cmd_vsdoctree(fx_scene *sc)
     TRY(fx_scene_surface(sc));
     if (k < 1 || k > 6 || scale < 1 || scale > 64)
         return fx_scene_error(sc, "vsdoctree: K 1..6, SCALE 1..64");
-    int32_t n = (int32_t)1 << k, cap = (((int32_t)1 << (3 * k + 3)) - 1) / 7;
-    int32_t w = sc->w < n * scale ? sc->w : n * scale, h = sc->h < n * scale ? sc->h : n * scale;
+    int32_t n = (int32_t)1 << k, nodes = 0;
     uint8_t *vox = fx_scene_alloc(sc, (size_t)n * (size_t)n * (size_t)n);
-    fx_vsd_onode *nodes = fx_scene_alloc(sc, (size_t)cap * sizeof *nodes);
-    int32_t *depth = fx_scene_alloc(sc, (size_t)w * (size_t)h * sizeof *depth);
-    if (!vox || !nodes || !depth)
+    if (!vox)
         return fx_scene_error(sc, "vsdoctree: out of scene memory");
     fx_vsd_demo_solid(vox, k);
-    fx_vsd_octree o;
-    if (fx_vsd_octree_build(&o, nodes, cap, vox, k) < 0)
-        return fx_scene_error(sc, "vsdoctree: the octree did not fit");
-    int32_t visited = fx_vsd_octree_render(&o, scale, depth, w, h);
-    if (visited < 0)
-        return fx_scene_error(sc, "vsdoctree failed (%d)", visited);
-    for (int32_t y = 0; y < h; y++)
-        for (int32_t x = 0; x < w; x++) {
-            int32_t z = depth[(size_t)y * (size_t)w + (size_t)x];
-            if (z < 0)
-                continue;
-            uint32_t g = (uint32_t)(230 - z * 170 / n);
-            fx_surface_put(&sc->ctx.surf, x, y, 0xFF000000u | g << 16 | g << 8 | (g * 3 / 4));
-        }
+    int32_t visited;
+    TRY(visited = fx_scene_octree_draw(sc, vox, k, scale, 0, 0, &nodes));
     if (sc->ctx.trace)
-        fx_trace(&sc->ctx, "vsdoctree: %d nodes, %d visited front to back (the rest hidden)", o.nnode,
-                 visited);
+        fx_trace(&sc->ctx, "vsdoctree: %d nodes, %d visited front to back (the rest hidden)", nodes, visited);
     return 0;
 }
 

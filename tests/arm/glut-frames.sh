@@ -11,8 +11,9 @@
 set -u
 board=$1 cross=$2; shift 2
 # Lit 3D programs (normals, specular through the fixed-point pow, depth), a 2D one
-# driven by a mouse replay, and the texture-mapped quad.
-progs="solids teapot polyline texquad"
+# driven by a mouse replay, the texture-mapped quad, two-sided lighting and the
+# local viewer.
+progs="solids teapot polyline texquad twoside material"
 P=0 F=0
 out=build/$board/glut-frames
 rm -rf "$out"; mkdir -p "$out/host" "$out/target"

@@ -474,7 +474,7 @@ FX_TEST(display_backend_choice_from_environment_and_bad_options)
     o.backend = FX_BACKEND_AUTO;
     o.backend_from_env = 0;
     FX_CHECK_EQ(fx_display_options_from_env(&o), -FX_EINVAL);
-    FX_CHECK(o.backend == FX_BACKEND_AUTO && strstr(last_log, "drm, fbdev or memory"));
+    FX_CHECK(o.backend == FX_BACKEND_AUTO && strstr(last_log, "drm, fbdev, memory or auto"));
     unsetenv("FIXEL_BACKEND");
 
     o.backend = FX_BACKEND_MEMORY;

@@ -90,9 +90,14 @@ FX_TEST(conic_course_table_r10)
     FX_CHECK_EQ(tr_n, 2 + 7);
     if (tr_n == 9) {
         FX_CHECK(strstr(tr_lines[0], "p0=1-r=-9") != NULL);
+        FX_CHECK(strstr(tr_lines[0], "5/4-r rounded") != NULL);
+        FX_CHECK(strstr(tr_lines[1], "2x_k+1") && strstr(tr_lines[1], "2y_k+1"));
         for (int k = 0; k < 7; k++) {
-            int kk, p, x, y;
-            FX_CHECK_EQ(sscanf(tr_lines[k + 2], "%d %d (%d, %d)", &kk, &p, &x, &y), 4);
+            int kk, p, x, y, x2, y2;
+            FX_CHECK_EQ(sscanf(tr_lines[k + 2], "%d %d (%d, %d) %d %d", &kk, &p, &x, &y, &x2, &y2), 6);
+            /* the notes' 2x_k+1 and 2y_k+1 columns */
+            FX_CHECK_EQ(x2, 2 * x);
+            FX_CHECK_EQ(y2, 2 * y);
             FX_CHECK_EQ(kk, k);
             FX_CHECK_EQ(p, pk[k]);
             FX_CHECK_EQ(x, pt[k][0]);

@@ -1,8 +1,9 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # FIXEL_* variables at hostile values (issue #26). The variables are those
-# of README.md's environment table; every FIXEL_ name that boards/env/env.c
-# reads must be in it (a variable without an entry fails), and the
+# of the one table, boards/env/env_table.c (fixel-info --env prints it);
+# README.md's environment table lists the same names, every FIXEL_ name the
+# code reads must be in it (a variable without an entry fails), and the
 # ENVIRONMENT sections of fixel-draw(1), fixel-kiosk(1) and fixel-demo(1)
 # must be generated from it. Each variable is
 # set in turn to: empty, a word no variable takes, 0, -1, 1, 2147483648,
@@ -21,11 +22,23 @@ rm -rf "$out"; mkdir -p "$out/dir"
 mkfifo "$out/fifo"
 printf 'clear #102030\n' > "$out/s.fxs"
 
-vars=$(sed -n 's/^| *\(`FIXEL_[^|]*\)|.*/\1/p' README.md | grep -o 'FIXEL_[A-Z_]*' | grep -v '^FIXEL_GLUT_' | sort -u)
-[ -n "$vars" ] || { echo "env-corners: no FIXEL_ table in README.md"; echo "env-corners: 0 passed, 1 failed"; exit 1; }
-for v in $(grep -o '"FIXEL_[A-Z_]*"' boards/env/env.c | tr -d '"' | sort -u); do
-    case " $(echo $vars) " in *" $v "*) P=$((P + 1));; *) F=$((F + 1)); echo "FAIL $v: read by env.c, not in README.md's table";; esac
+# The one table (boards/env/env_table.c), as fixel-info --env prints it;
+# README.md's table lists the same names, and every FIXEL_ name that any
+# file of the library or the tools reads (getenv or fx_env_get) is in it.
+table=$(cd "$out" && "$(dirname "$draw")/fixel-info" --env | sed 1d | cut -f1 | sort -u)
+[ -n "$table" ] || { echo "env-corners: fixel-info --env printed no table"; echo "env-corners: 0 passed, 1 failed"; exit 1; }
+readme=$(sed -n 's/^| *\(`FIXEL_[^|]*\)|.*/\1/p' README.md | grep -o 'FIXEL_[A-Z_]*' | sort -u)
+in_list() { case " $(echo $2) " in *" $1 "*) return 0;; esac; return 1; }
+for v in $table; do
+    if in_list "$v" "$readme"; then P=$((P + 1)); else F=$((F + 1)); echo "FAIL $v: in the table, not in README.md's table"; fi
 done
+for v in $readme; do
+    if in_list "$v" "$table"; then P=$((P + 1)); else F=$((F + 1)); echo "FAIL $v: in README.md's table, not in boards/env/env_table.c"; fi
+done
+for v in $(grep -rhoE '(getenv|fx_env_get)[[:space:]]*\([[:space:]]*"FIXEL_[A-Z0-9_]*"' boards tools | grep -o 'FIXEL_[A-Z0-9_]*' | sort -u); do
+    if in_list "$v" "$table"; then P=$((P + 1)); else F=$((F + 1)); echo "FAIL $v: read by the code, not in boards/env/env_table.c"; fi
+done
+vars=$(echo "$readme" | grep -v '^FIXEL_GLUT_')
 
 # the manual pages list the table as it is (tools/gen/man-env.sh)
 for page in fixel-draw.1 fixel-kiosk.1 fixel-demo.1; do

@@ -109,10 +109,22 @@ widget number a col=0 row=0";;
 screen backlight=none $key=$val
 widget number a col=0 row=0";;
         widget)
-            ty="number a"; case "$key" in cells) ty="heat a";; smooth) ty="heat a cells=2x2";; esac
+            ty="number a"; pre=""
+            case "$key" in cells) ty="heat a";; smooth) ty="heat a cells=2x2";;
+            qos|retain) ty="button b topic=t/x"; pre="mqtt host=127.0.0.1";; esac
             cfg="grid 16x16
 size 64x64
+$pre
 widget $ty $key=$val";;
+        page) cfg="grid 1x1
+page p $key=$val
+widget number a col=0 row=0";;
+        carousel|touch) cfg="grid 1x1
+$scope $key=$val
+page p
+widget number a col=0 row=0
+page q
+widget number a col=0 row=0";;
         *) fail "$scope-$key" "no corner case for a numeric key of scope $scope (add one above)"; continue;;
         esac
         run "$cfg"

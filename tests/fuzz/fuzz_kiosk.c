@@ -24,6 +24,18 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const char *nul = memchr(p, 0, size);
     size_t clen = nul ? (size_t)(nul - p) : size;
     if (kiosk_config_parse(&k, p, clen, err, sizeof err) < 0) return 0;
+    /* pages (kiosk_pages.h): every widget on a page, every button's page real */
+    if (k.pg.npages < 1 || k.pg.npages > KIOSK_MAX_PAGES || k.pg.nbuttons > KIOSK_MAX_BUTTONS) __builtin_trap();
+    for (int i = 0; i < k.nwidgets; i++) {
+        const kiosk_widget *w = &k.widgets[i];
+        const kiosk_page *pg = &k.pg.pages[w->page < 0 || w->page >= k.pg.npages ? (__builtin_trap(), 0) : w->page];
+        if (w->col + w->w > pg->cols || w->row + w->h > pg->rows) __builtin_trap();
+        if ((w->type == KIOSK_BUTTON) != (w->button >= 0) || w->button >= k.pg.nbuttons) __builtin_trap();
+    }
+    for (int i = 0; i < k.pg.nbuttons; i++) {
+        const kiosk_button *b = &k.pg.buttons[i];
+        if (b->page >= k.pg.npages || b->page < KIOSK_PAGE_PREV || (b->topic[0] && !k.mqtt.enabled)) __builtin_trap();
+    }
     if (!nul) return 0;
     const char *q = nul + 1, *end = p + size;
     int64_t line = 0;

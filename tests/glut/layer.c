@@ -129,6 +129,51 @@ static void api_display(void)
     check("glGet-matrix-mode", depth == GL_PROJECTION, "GL_MATRIX_MODE");
     glMatrixMode(GL_MODELVIEW);
     check("glGetError-clean", glGetError() == GL_NO_ERROR, "an error was left");
+
+    /* the light model and material state: kept per face, the GL 1.x ranges */
+    GLint tw = 0, lv = 0, cm[2] = {0, 0};
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+    glGetIntegerv(GL_LIGHT_MODEL_TWO_SIDE, &tw);
+    glGetIntegerv(GL_LIGHT_MODEL_LOCAL_VIEWER, &lv);
+    check("glLightModel-two-side-local-viewer", tw == 1 && lv == 1 && glGetError() == GL_NO_ERROR,
+          "GL_LIGHT_MODEL_TWO_SIDE / LOCAL_VIEWER not kept, or an error");
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 0);
+    GLfloat fd[4] = {0.25f, 0.5f, 0.75f, 1}, bd[4] = {1, 0.5f, 0, 1}, got_f[4], got_b[4], sh = -1;
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, fd);
+    glMaterialfv(GL_BACK, GL_DIFFUSE, bd);
+    glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 20);
+    glGetMaterialfv(GL_FRONT, GL_DIFFUSE, got_f);
+    glGetMaterialfv(GL_BACK, GL_DIFFUSE, got_b);
+    check("glMaterial-per-face", got_f[0] == 0.25f && got_f[2] == 0.75f && got_b[0] == 1 && got_b[2] == 0 &&
+                                     glGetError() == GL_NO_ERROR, "front and back diffuse mixed up");
+    glMaterialf(GL_BACK, GL_SHININESS, 129);
+    GLenum e1 = glGetError();
+    glGetMaterialfv(GL_BACK, GL_SHININESS, &sh);
+    glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 95);
+    GLenum e2 = glGetError();
+    glMaterialfv(GL_LEFT, GL_DIFFUSE, fd);
+    GLenum e3 = glGetError();
+    glColorMaterial(GL_FRONT, GL_POSITION);
+    GLenum e4 = glGetError();
+    check("glMaterial-glLight-ranges", e1 == GL_INVALID_VALUE && sh == 20 && e2 == GL_INVALID_VALUE &&
+                                           e3 == GL_INVALID_ENUM && e4 == GL_INVALID_ENUM,
+          "shininess 129 / cut-off 95 / face GL_LEFT / colour-material GL_POSITION accepted");
+    /* while GL_COLOR_MATERIAL tracks the back diffuse, glMaterial leaves it */
+    glColorMaterial(GL_BACK, GL_DIFFUSE);
+    glGetIntegerv(GL_COLOR_MATERIAL_FACE, &cm[0]);
+    glGetIntegerv(GL_COLOR_MATERIAL_PARAMETER, &cm[1]);
+    glEnable(GL_COLOR_MATERIAL);
+    glColor3f(0, 1, 0);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, fd);
+    glGetMaterialfv(GL_FRONT, GL_DIFFUSE, got_f);
+    glGetMaterialfv(GL_BACK, GL_DIFFUSE, got_b);
+    glDisable(GL_COLOR_MATERIAL);
+    glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+    check("glColorMaterial-tracked-face", cm[0] == GL_BACK && cm[1] == GL_DIFFUSE && got_f[0] == 0.25f &&
+                                              got_b[0] == 0 && got_b[1] == 1 && glGetError() == GL_NO_ERROR,
+          "the tracked back diffuse was overwritten, or the front one not set");
     glutSwapBuffers(); /* frame 1: FIXEL_GLUT_FRAMES=1 ends here */
 }
 

@@ -20,6 +20,13 @@ run env FIXEL_GLUT_FRAMES=1 "$out/layer" api
 n_ok=$(grep -c '^ok ' "$out/run.log"); n_fail=$(grep -c '^FAIL ' "$out/run.log")
 grep '^FAIL ' "$out/run.log"
 judge "api ($n_ok checks)" '[ "$(cat $out/rc)" = 0 ] && [ "$n_fail" = 0 ] && [ "$n_ok" -ge 12 ]'
+# FIXEL_GLUT_* through the one table (boards/env/env_table.c): a frame count
+# past its range stops the program (status 2) naming the range instead of
+# running a scripted test forever; a bad switch is said and ignored.
+run env FIXEL_GLUT_FRAMES=9223372036854775808 "$out/layer" api
+judge "frames-out-of-range" '[ "$(cat $out/rc)" = 2 ] && grep -q "FIXEL_GLUT_FRAMES=9223372036854775808 ignored (a whole number from 0 to 1000000000)" "$out/run.log"'
+run env FIXEL_GLUT_FRAMES=1 FIXEL_GLUT_FULLSCREEN=yes "$out/layer" api
+judge "switch-bad-word" '[ "$(cat $out/rc)" = 0 ] && grep -q "FIXEL_GLUT_FULLSCREEN=yes ignored (0 or 1)" "$out/run.log"'
 run "$out/layer" leave-return
 judge "leave-returns" '[ "$(cat $out/rc)" = 7 ] && grep -qx "returned frames=3 action=2" "$out/run.log"'
 run "$out/layer" leave-exit

@@ -359,6 +359,42 @@ FX_TEST(glut_lighting_equation)
     FX_CHECK_EQ(fx_gl_pow(32768, 2 << 16), 16384);
 }
 
+FX_TEST(glut_lighting_local_viewer)
+{
+    /* a directional light along +x and a vertex at (3, 0, -3) with normal
+     * (1, 0, 1)/sqrt2: the infinite viewer's H = normalize(x + z) is the
+     * normal (N.H = 1, full highlight); the local viewer looks along
+     * normalize(-P) = (-1, 0, 1)/sqrt2, so H = normalize((1 - 0.7071, 0,
+     * 0.7071)) and N.H = cos 22.5 = 0.92388 -> 0.92388^8 = 0.5306 */
+    fx_gl_lighting L;
+    memset(&L, 0, sizeof L);
+    L.light[0].enabled = 1;
+    for (int k = 0; k < 4; k++)
+        L.light[0].specular[k] = 65536;
+    L.light[0].pos[0] = FX32_ONE;
+    L.light[0].att[0] = FX32_ONE;
+    fx_gl_material m;
+    memset(&m, 0, sizeof m);
+    m.specular[0] = 65536;
+    m.shininess = 8 << 16;
+    fx32 p[4] = {3 * FX32_ONE, 0, -3 * FX32_ONE, FX32_ONE};
+    fx32 n[3] = {fxg_d2x(0.7071067811865476), 0, fxg_d2x(0.7071067811865476)};
+    fx16 out[4];
+    fx_gl_shade(&L, &m, p, n, out);
+    FX_CHECK_MSG(out[0] > fxg_d2c(0.999), "infinite viewer: got %d", out[0]);
+    L.local_viewer = 1;
+    fx_gl_shade(&L, &m, p, n, out);
+    FX_CHECK_MSG(out[0] > fxg_d2c(0.5306 - 0.001) && out[0] < fxg_d2c(0.5306 + 0.001), "local viewer: got %d",
+                 out[0]);
+    /* the cached entry point gives the same bits with a local viewer */
+    fx_gl_shade_cache c;
+    memset(&c, 0, sizeof c);
+    fx16 out2[4];
+    fx_gl_shade_cached(&L, &c, &m, p, n, out2);
+    fx_gl_shade_cached(&L, &c, &m, p, n, out2);
+    FX_CHECK_EQ(out2[0], out[0]);
+}
+
 FX_TEST(glut_display_list_replays)
 {
     setup();
@@ -374,4 +410,64 @@ FX_TEST(glut_display_list_replays)
     FX_CHECK(lit(8, 7));
     FX_CHECK(!lit(7, 7));
     glDeleteLists(l, 1);
+}
+
+/* Hidden triangles are left out before set-up (glraster.c, hidden_by_depth):
+ * that must change no pixel. A triangle behind a nearer one leaves it; one
+ * at the same depth is drawn under GL_LEQUAL and not under GL_LESS; one
+ * a depth step in front is drawn under GL_LESS; gradients of depth inside
+ * a tilted triangle behind a flat one at its nearest vertex's depth. */
+static unsigned char red_at(int x, int y)
+{
+    unsigned char p[3];
+    glReadPixels(x, y, 1, 1, GL_RGB, GL_UNSIGNED_BYTE, p);
+    return p[0];
+}
+static void quad_z(float z0, float z1, float r)
+{
+    glColor3f(r, 0, 1);
+    glBegin(GL_TRIANGLES);
+    glVertex3f(5, 5, z0);
+    glVertex3f(35, 5, z0);
+    glVertex3f(5, 35, z1);
+    glEnd();
+}
+FX_TEST(glut_hidden_triangles_same_pixels)
+{
+    setup();
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 40, 0, 40, -1, 1); /* depth = (1 - z) / 2 of the range */
+    glMatrixMode(GL_MODELVIEW);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    /* the whole window at one depth, so that every box below lies on it */
+    glColor3f(0.2f, 0, 1);
+    glBegin(GL_QUADS);
+    glVertex3f(0, 0, 0.5f);
+    glVertex3f(40, 0, 0.5f);
+    glVertex3f(40, 40, 0.5f);
+    glVertex3f(0, 40, 0.5f);
+    glEnd();
+    quad_z(0.25f, 0.25f, 1.0f); /* behind */
+    FX_CHECK_EQ(red_at(10, 10), 51);
+    quad_z(0.5f, 0.5f, 1.0f); /* same depth, GL_LESS: fails */
+    FX_CHECK_EQ(red_at(10, 10), 51);
+    glDepthFunc(GL_LEQUAL);
+    quad_z(0.5f, 0.5f, 0.6f); /* same depth, GL_LEQUAL: passes */
+    FX_CHECK_EQ(red_at(10, 10), 153);
+    FX_CHECK_EQ(red_at(20, 12), 153);
+    glDepthFunc(GL_LESS);
+    quad_z(0.5f + 1.0f / 8388608, 0.5f + 1.0f / 8388608, 0.8f); /* one depth step nearer */
+    FX_CHECK_EQ(red_at(10, 10), 204);
+    /* tilted: nearest vertex level with the stored depth, the rest behind */
+    quad_z(0.5f + 1.0f / 8388608, -0.5f, 0.4f);
+    FX_CHECK_EQ(red_at(10, 10), 204);
+    /* tilted the other way: in front away from its farthest vertex */
+    quad_z(0.0f, 0.9f, 1.0f);
+    FX_CHECK_EQ(red_at(6, 30), 255);
+    FX_CHECK_EQ(red_at(30, 6), 204);
+    glDisable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
 }

@@ -28,15 +28,18 @@ import zlib
 # property. Nothing else sees Virtual-2 but kms.c's vkms, which always asks
 # for a rotation.
 PANEL = "video=Virtual-2:panel_orientation=right_side_up"
+# x86_64's second card has a second head (guest/heads.c): Virtual-3, a panel
+# turned the other way.
+PANEL2 = " video=Virtual-3:panel_orientation=left_side_up"
 QEMU = {
     "x86_64": lambda k, i: [
         "qemu-system-x86_64", "-accel", "tcg", "-M", "pc", "-m", "256M", "-smp", "1",
         "-vga", "none", "-device", "VGA,xres=800,yres=480",
         "-device", "virtio-tablet-pci", "-device", "virtio-keyboard-pci",
         # a second card (guest/outputs.c loads its driver): SCREEN ... gpu1
-        "-device", "virtio-gpu-pci,id=gpu1,addr=0x8,xres=640,yres=400",
+        "-device", "virtio-gpu-pci,id=gpu1,addr=0x8,xres=640,yres=400,max_outputs=2",
         "-kernel", k, "-initrd", i,
-        "-append", "console=ttyS0 panic=-1 loglevel=4 " + PANEL],
+        "-append", "console=ttyS0 panic=-1 loglevel=4 " + PANEL + PANEL2],
     "aarch64": lambda k, i: [
         "qemu-system-aarch64", "-M", "virt", "-cpu", "cortex-a72", "-m", "256M", "-smp", "1",
         "-device", "virtio-gpu-pci,xres=800,yres=480",
@@ -199,7 +202,10 @@ class Guest:
 
     def screen(self, qmp, args):
         name, w, h, rot, spec = args[0], int(args[1]), int(args[2]), int(args[3]), args[4]
-        dev = {"device": args[5]} if len(args) > 5 else {}
+        dev = {}
+        if len(args) > 5:  # DEVICE or DEVICE@HEAD
+            d, _, head = args[5].partition("@")
+            dev = {"device": d, "head": int(head)} if head else {"device": d}
         lw, lh = (h, w) if rot in (90, 270) else (w, h)
         negate = spec.startswith("!")
         if negate:

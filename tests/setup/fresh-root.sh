@@ -245,6 +245,14 @@ if [ $do_test = 1 ]; then
     in_root "$R" "cd /root/fixel && $MK test $TEST_ARGS" > "$W/root-test.log" 2>&1; rc=$?
     grep -q '^deps: make test installs' "$W/root-test.log" || fail "root make test installed nothing (the test set was there?)"
     suite_total "$W/root-test.log" $rc "root make test $TEST_ARGS, first try"
+    # make run built fixel-kiosk before the test set brought libmosquitto-dev:
+    # make test must have rebuilt it with MQTT (tools/fixel-kiosk/kiosk.mk's
+    # feature stamp), or the mqtt suite fails until make clean.
+    if in_root "$R" "ldd /root/fixel/build/bin/fixel-kiosk" 2>&1 | grep -q libmosquitto; then
+        pass "root make test rebuilt fixel-kiosk with the MQTT libraries make run had not installed"
+    else
+        fail "root make test left fixel-kiosk built without libmosquitto (make run's build, not rebuilt)"
+    fi
 fi
 umount_all
 

@@ -25,12 +25,19 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: fixel-demo [--headless] [--out DIR] [--page NAME] [--list]\n"
+            "       fixel-demo --display OUTPUT=PAGE [--display OUTPUT=PAGE...]\n"
             "       fixel-demo --golden DIR [--update]\n"
             "  --headless    render pages to PNG files instead of opening a display\n"
             "                (the default when no display is found)\n"
             "  --out DIR     where headless pictures go (default out)\n"
             "  --page NAME   only this page (headless) or start on it (interactive)\n"
             "  --list        print the page names\n"
+            "  --display OUTPUT=PAGE  show PAGE on OUTPUT (a connector: HDMI-A-2,\n"
+            "                vc4:HDMI-A-1, DSI-1; empty: the next free output); repeat it\n"
+            "                for one page per output, each with its own state; input\n"
+            "                bound to an output (FIXEL_INPUT_BIND, or guessed) drives its\n"
+            "                page, other input the first; with FIXEL_BACKEND=memory the\n"
+            "                outputs are 800x480 memory displays (FIXEL_OUT saves each)\n"
             "  --golden DIR  render every page at 800x480 and compare with DIR/<page>.png;\n"
             "                mismatches write DIR/<page>.actual.png; --update rewrites them\n"
             "keys: right/left, PageDown/PageUp, n/p, Down/Up (GPIO buttons): next/previous page;\n"
@@ -225,6 +232,8 @@ static int golden(const char *dir, int update)
 /* ---- interactive ---- */
 typedef struct demo_app {
     fx_app *app;
+    fx_display *disp;   /* the display this page is on */
+    int fps_box;        /* 0 on memory displays: their frames are compared */
     demo_state st;
     double last, frame_ms, fps_t0;
     int frames;
@@ -232,24 +241,26 @@ typedef struct demo_app {
     int pressed;
 } demo_app;
 
-static void redisplay(demo_app *d) { fx_app_post_redisplay(d->app); }
+static void redisplay(demo_app *d) { fx_app_post_redisplay_on(d->app, d->disp); }
 
 static void on_display(void *user)
 {
     demo_app *d = user;
     double t0 = now_s();
-    fx_surface s = fx_app_surface(d->app);
+    fx_surface s = fx_display_surface(d->disp);
     fx_ctx c;
     fx_ctx_init(&c, &s);
     d->st.w = s.w;
     d->st.h = s.h;
     demo_draw(&c, &d->st);
     d->frame_ms = (now_s() - t0) * 1e3;
-    /* on its own dark box so it stays legible over any page */
-    fx_ctx_set_color(&c, 0xFF000000u);
-    fx_fill_rect(&c, s.w - 156, DEMO_TAB_H, 156, 13);
-    demo_text(&c, s.w - 152, DEMO_TAB_H + 2, 0xFFFFFF80u, "%5.1f fps %6.2f ms", d->fps, d->frame_ms);
-    fx_app_present(d->app, NULL, 0);
+    if (d->fps_box) {
+        /* on its own dark box so it stays legible over any page */
+        fx_ctx_set_color(&c, 0xFF000000u);
+        fx_fill_rect(&c, s.w - 156, DEMO_TAB_H, 156, 13);
+        demo_text(&c, s.w - 152, DEMO_TAB_H + 2, 0xFFFFFF80u, "%5.1f fps %6.2f ms", d->fps, d->frame_ms);
+    }
+    fx_display_present(d->disp, NULL, 0);
     d->frames++;
     double t = now_s();
     if (t - d->fps_t0 >= 1.0) {
@@ -347,44 +358,114 @@ static void on_touch(void *user, int id, int x, int y, int phase)
     pointer(user, x, y, phase == FX_TOUCH_DOWN ? 1 : phase == FX_TOUCH_UP ? -1 : 0);
 }
 
-static void tick(void *user, int value)
+static void on_draw(fx_app *app, fx_display *disp, void *user)
 {
-    demo_app *d = user;
-    (void)value;
-    d->st.frame++;
-    /* only the animated pages need a frame on every tick */
-    const char *n = demo_pages[d->st.page].name;
-    if (!strcmp(n, "3d") || !strcmp(n, "transforms") || (!strcmp(n, "raytrace") && demo_rt_busy(&d->st)))
-        redisplay(d);
-    fx_app_timer(d->app, 33, tick, 0);
+    (void)app, (void)disp;
+    on_display(user);
 }
 
-static int interactive(fx_app *app, int page)
+#define DEMO_MAX_OUT FX_APP_MAX_DISPLAYS
+typedef struct demo_set {
+    demo_app page[DEMO_MAX_OUT];
+    int n;
+} demo_set;
+
+/* One page per output; page[0] is on the app's own display. */
+static demo_set outputs;
+
+static void tick(void *user, int value)
 {
-    demo_app d;
-    memset(&d, 0, sizeof d);
-    d.app = app;
-    int32_t w, h;
-    fx_app_size(app, &w, &h);
-    demo_state_init(&d.st, w, h);
-    d.st.interactive = 1;
-    d.st.nseeds = 0;
-    d.st.page = page < 0 ? 0 : page;
-    d.fps_t0 = now_s();
+    demo_app *first = user;
+    (void)value;
+    for (int i = 0; i < outputs.n; i++) {
+        demo_app *d = &outputs.page[i];
+        d->st.frame++;
+        /* only the animated pages need a frame on every tick */
+        const char *n = demo_pages[d->st.page].name;
+        if (!strcmp(n, "3d") || !strcmp(n, "transforms") || (!strcmp(n, "raytrace") && demo_rt_busy(&d->st)))
+            redisplay(d);
+    }
+    fx_app_timer(first->app, 33, tick, 0);
+}
+
+static void page_init(demo_app *d, fx_app *app, fx_display *disp, int page)
+{
+    memset(d, 0, sizeof *d);
+    d->app = app;
+    d->disp = disp;
+    fx_display_info info;
+    fx_display_get_info(disp, &info);
+    d->fps_box = info.backend != FX_BACKEND_MEMORY;
+    int turned = info.rotation == 90 || info.rotation == 270;
+    demo_state_init(&d->st, turned ? info.height : info.width, turned ? info.width : info.height);
+    d->st.interactive = 1;
+    d->st.nseeds = 0;
+    d->st.page = page < 0 ? 0 : page;
+    d->fps_t0 = now_s();
+}
+
+/* pages[i] on the app's display (i = 0) and the added ones. */
+static int interactive(fx_app *app, fx_display *const *disp, const int *pages, int n)
+{
+    demo_set *set = &outputs;
+    set->n = n;
     fx_callbacks cb;
     memset(&cb, 0, sizeof cb);
-    cb.display = on_display;
     cb.keyboard = on_key;
     cb.special = on_special;
     cb.mouse = on_mouse;
     cb.motion = on_motion;
     cb.passive_motion = on_passive;
     cb.touch = on_touch;
-    fx_app_set_callbacks(app, &cb, &d);
+    for (int i = 0; i < n; i++) {
+        page_init(&set->page[i], app, disp[i], pages[i]);
+        if (i == 0) {
+            fx_callbacks c0 = cb;
+            c0.display = on_display;
+            fx_app_set_callbacks(app, &c0, &set->page[0]);
+        } else {
+            fx_app_set_display_callbacks(app, disp[i], &cb, &set->page[i]);
+        }
+        redisplay(&set->page[i]);
+    }
     fx_app_timer(app, 33, tick, 0);
-    fx_app_post_redisplay(app);
     int rc = fx_app_main_loop(app);
     return rc < 0 ? 1 : 0;
+}
+
+/* --display OUTPUT=PAGE...: every output must open (no headless fallback);
+ * memory displays are the headless pictures' size. */
+static int outputs_run(fx_app_options *o, char outs[][64], const int *pages, int n)
+{
+    if (o->display.backend == FX_BACKEND_MEMORY) {
+        o->display.memory_w = HEADLESS_W;
+        o->display.memory_h = HEADLESS_H;
+    }
+    if (outs[0][0])
+        o->display.connector = outs[0];
+    fx_app *app;
+    if (fx_app_open(&app, o) < 0) {
+        fprintf(stderr, "fixel-demo: cannot open output '%s' (reason above)\n", outs[0]);
+        return 1;
+    }
+    fx_display *disp[DEMO_MAX_OUT] = {fx_app_display(app)};
+    for (int i = 1; i < n; i++) {
+        fx_display_options d = o->display;
+        /* empty: the next output not yet shown (not FIXEL_CONNECTOR's again) */
+        d.connector = outs[i][0] ? outs[i] : NULL;
+        if (fx_app_add_display(app, &d, on_draw, &outputs.page[i], &disp[i]) < 0) {
+            fprintf(stderr, "fixel-demo: cannot open output '%s' (reason above)\n", outs[i]);
+            fx_app_close(app);
+            return 1;
+        }
+    }
+    if (fx_app_bind_inputs_from_env(app) < 0) {
+        fx_app_close(app);
+        return 1;
+    }
+    int rc = interactive(app, disp, pages, n);
+    fx_app_close(app);
+    return rc;
 }
 
 /* For the automatic choice: a display device node exists. */
@@ -397,6 +478,8 @@ int main(int argc, char **argv)
 {
     const char *out = "out", *gold = NULL, *page = NULL;
     int force_headless = 0, update = 0;
+    char outs[DEMO_MAX_OUT][64];
+    int out_page[DEMO_MAX_OUT], nout = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
@@ -410,6 +493,23 @@ int main(int argc, char **argv)
             for (int k = 0; k < demo_npages; k++)
                 printf("%s\n", demo_pages[k].name);
             return 0;
+        } else if (!strcmp(a, "--display") && i + 1 < argc) {
+            const char *v = argv[++i], *eq = strrchr(v, '=');
+            if (!eq || (size_t)(eq - v) >= sizeof outs[0]) {
+                fprintf(stderr, "fixel-demo: --display %s: give OUTPUT=PAGE (OUTPUT a connector such as "
+                        "HDMI-A-1, or empty)\n", v);
+                return 2;
+            }
+            if (nout == DEMO_MAX_OUT) {
+                fprintf(stderr, "fixel-demo: --display %s: at most %d outputs\n", v, DEMO_MAX_OUT);
+                return 2;
+            }
+            if ((out_page[nout] = find_page(eq + 1)) < 0) {
+                fprintf(stderr, "fixel-demo: --display %s: no page '%s' (try --list)\n", v, eq + 1);
+                return 2;
+            }
+            snprintf(outs[nout], sizeof outs[0], "%.*s", (int)(eq - v), v);
+            nout++;
         } else if ((!strcmp(a, "--out") || !strcmp(a, "--page") || !strcmp(a, "--golden")) && i + 1 < argc) {
             const char *v = argv[++i];
             if (a[2] == 'o')
@@ -429,6 +529,11 @@ int main(int argc, char **argv)
         fprintf(stderr, "fixel-demo: no page '%s' (try --list)\n", page);
         return 2;
     }
+    if (nout && (gold || force_headless || page)) {
+        fprintf(stderr, "fixel-demo: --display shows pages on outputs; it does not go with %s\n",
+                gold ? "--golden" : force_headless ? "--headless" : "--page");
+        return 2;
+    }
     if (gold)
         return golden(gold, update);
     if (force_headless)
@@ -437,6 +542,8 @@ int main(int argc, char **argv)
     fx_app_options_init(&o);
     if (fx_app_options_from_env(&o) < 0)
         return 1; /* a FIXEL_BACKEND that names no backend: logged */
+    if (nout)
+        return outputs_run(&o, outs, out_page, nout);
     /* A display asked for (FIXEL_BACKEND=drm|fbdev) must open or the run
      * fails; memory means headless; only the automatic choice falls back,
      * and the headless summary line says so. */
@@ -458,7 +565,8 @@ int main(int argc, char **argv)
         fx_app_close(app);
         return headless(out, only);
     }
-    int rc = interactive(app, only);
+    fx_display *disp = fx_app_display(app);
+    int rc = interactive(app, &disp, &only, 1);
     fx_app_close(app);
     return rc;
 }

@@ -350,10 +350,11 @@ static void gpio_section(void)
 static int choice_section(void)
 {
     printf("fixel's choice (FX_BACKEND_AUTO: FIXEL_BACKEND, else DRM, fbdev, memory):\n");
-    const char *env[] = {"FIXEL_BACKEND", "FIXEL_DRM_DEVICE", "FIXEL_FB_DEVICE", "FIXEL_CONNECTOR", "FIXEL_MODE",
-                         "FIXEL_ROTATION", "FIXEL_BUTTONS"};
-    for (size_t i = 0; i < sizeof env / sizeof env[0]; i++)
-        if (getenv(env[i])) printf("  %s=%s\n", env[i], getenv(env[i]));
+    int nvars;
+    const fx_env_var *vars = fx_env_table(&nvars);
+    for (int i = 0; i < nvars; i++)
+        if (!strcmp(vars[i].who, "library") && getenv(vars[i].name))
+            printf("  %s=%.200s\n", vars[i].name, getenv(vars[i].name));
     fx_display_options o;
     fx_display_options_init(&o);
     o.console = 0; /* only looking: leave the VT and its keyboard alone */
@@ -409,18 +410,43 @@ static int choice_section(void)
     return 0;
 }
 
+/* Every FIXEL_* variable from the one table (fixel/env.h): name, who reads
+ * it, what it accepts, its value here and whether that value is taken. A
+ * tab-separated line each, so tests and README.md's table can follow it. */
+static int env_section(void)
+{
+    int n;
+    const fx_env_var *v = fx_env_table(&n);
+    printf("variable\tread by\taccepts\tmeaning\tset here\n");
+    for (int i = 0; i < n; i++) {
+        char want[200];
+        fx_env_expect(&v[i], want, sizeof want);
+        const char *e = getenv(v[i].name);
+        long val;
+        char msg[256];
+        int r = fx_env_get(v[i].name, &val, msg, sizeof msg);
+        printf("%s\t%s\t%s\t%s\t%s\n", v[i].name, v[i].who, want, v[i].meaning,
+               !e || !*e ? "-" : r < 0 && v[i].kind <= FX_ENV_INT ? "not taken" : "taken");
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--env"))
+            return env_section();
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            printf("usage: fixel-info\n"
+            printf("usage: fixel-info [--env]\n"
                    "Lists DRM cards (driver, by-path name, connectors with status, modes, preferred\n"
                    "mode, monitor name, DPMS and panel orientation, CRTCs, planes with rotations and\n"
                    "formats), fbdev\n"
                    "devices and their pixel formats, input devices as fixel classifies them, GPIO\n"
                    "chips and lines, and the display fixel would open here and why.\n"
                    "Missing hardware prints \"none found\"; the exit status is 0 unless an option is\n"
-                   "wrong (2) or the display asked for (FIXEL_BACKEND=drm|fbdev) cannot open (1).\n");
+                   "wrong (2) or the display asked for (FIXEL_BACKEND=drm|fbdev) cannot open (1).\n"
+                   "--env lists every FIXEL_* variable fixel reads, what it accepts and\n"
+                   "whether its value here is taken.\n");
             return 0;
         }
         fprintf(stderr, "fixel-info: unknown argument %s (try --help)\n", argv[i]);

@@ -23,6 +23,7 @@
 
 typedef enum kiosk_type {
     KIOSK_NUMBER, KIOSK_GAUGE, KIOSK_BAR, KIOSK_SPARK, KIOSK_TEXT, KIOSK_CLOCK, KIOSK_HEAT, KIOSK_IMAGE,
+    KIOSK_BUTTON, /* kiosk_pages.h: no source; a tap publishes and/or turns the page */
     KIOSK_NTYPES
 } kiosk_type;
 
@@ -45,6 +46,8 @@ typedef struct kiosk_widget {
     int smooth;                /* heat: bilinear between cell centres; image: bilinear scaling */
     char label[KIOSK_TEXT_MAX];
     char unit[KIOSK_TEXT_MAX];
+    int page;                  /* the page it is on (kiosk_pages.h) */
+    int button;                /* button widgets: index into pg.buttons; else -1 */
 } kiosk_widget;
 
 typedef struct kiosk_source {
@@ -106,6 +109,8 @@ typedef struct kiosk_screen_cfg {
     int nsched;
 } kiosk_screen_cfg;
 
+#include "kiosk_pages.h"
+
 typedef struct kiosk_config {
     int cols, rows;
     int width, height;         /* 0: the display's size */
@@ -122,6 +127,7 @@ typedef struct kiosk_config {
     char msg[96];              /* the last range message (from kiosk_keys) */
     kiosk_mqtt_cfg mqtt;
     kiosk_screen_cfg screen;
+    kiosk_pages_cfg pg;        /* pages, carousel, touch, buttons (kiosk_pages.h) */
     const char *errat;         /* parser scratch: the token an error is about */
     int errline, errcol;       /* of the last config error, 1-based (col 1 when the line as a whole is wrong) */
 } kiosk_config;

@@ -31,5 +31,19 @@ ifeq ($(HAVE_KIOSK_SYSTEMD),1)
 $(BUILD)/obj/tools/fixel-kiosk/%.o: CPPFLAGS += -DKIOSK_HAVE_SYSTEMD
 TOOL_LIBS_fixel-kiosk += $(shell $(PKG_CONFIG) --libs libsystemd)
 endif
+# The optional parts are chosen when make reads this file, so objects built
+# without them (a first `make run` before `make test` installed
+# libmosquitto-dev) must be rebuilt once they appear: the stamp holds the
+# choice and is rewritten only when it changes. Only into an existing
+# $(BUILD)/obj: reading the Makefile must not create build/ (a user's first
+# make stops before building anything; tests/setup/fresh-root.sh checks).
+KIOSK_FEATURES := mqtt=$(HAVE_KIOSK_MQTT) systemd=$(HAVE_KIOSK_SYSTEMD)
+KIOSK_STAMP := $(BUILD)/obj/tools/fixel-kiosk/features
+$(shell if [ -d '$(BUILD)/obj' ] && [ "$$(cat '$(KIOSK_STAMP)' 2>/dev/null)" != '$(KIOSK_FEATURES)' ]; then \
+	mkdir -p '$(dir $(KIOSK_STAMP))' && echo '$(KIOSK_FEATURES)' > '$(KIOSK_STAMP)'; fi)
+$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/fixel-kiosk/*.c)): $(KIOSK_STAMP)
+$(KIOSK_STAMP):
+	@mkdir -p $(@D)
+	@echo '$(KIOSK_FEATURES)' > $@
 TEST_SUITES += "sh tests/kiosk/notify.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-notify"
 TEST_DEB_PKGS += libsystemd-dev python3

@@ -337,6 +337,17 @@ void kmq_publish(kmq *m, const char *sub, const char *payload, int retain)
     mosquitto_publish(m->mosq, NULL, t, (int)strlen(payload), payload, 1, retain != 0);
 }
 
+int kmq_publish_to(kmq *m, const char *topic, const char *payload, int qos, int retain)
+{
+    if (!m) return -1;
+    pthread_mutex_lock(&m->lock);
+    int up = m->st.connected;
+    pthread_mutex_unlock(&m->lock);
+    if (!up) return -1;
+    return mosquitto_publish(m->mosq, NULL, topic, (int)strlen(payload), payload, qos, retain != 0) == MOSQ_ERR_SUCCESS
+               ? 0 : -1;
+}
+
 void kmq_set_subs(kmq *m, const kiosk_mqtt_cfg *cfg)
 {
     pthread_mutex_lock(&m->lock);
@@ -405,6 +416,11 @@ void kmq_get_state(kmq *m, kmq_state *st) { (void)m; memset(st, 0, sizeof *st); 
 void kmq_publish(kmq *m, const char *sub, const char *payload, int retain)
 {
     (void)m; (void)sub; (void)payload; (void)retain;
+}
+int kmq_publish_to(kmq *m, const char *topic, const char *payload, int qos, int retain)
+{
+    (void)m; (void)topic; (void)payload; (void)qos; (void)retain;
+    return -1;
 }
 void kmq_set_subs(kmq *m, const kiosk_mqtt_cfg *cfg) { (void)m; (void)cfg; }
 int kmq_json_field(const char *payload, size_t n, const char *path, char *out, size_t size)

@@ -47,6 +47,9 @@ int kmq_take(kmq *m, kmq_msg *out);
 void kmq_get_state(kmq *m, kmq_state *st);
 /* Publish payload on PREFIX/sub (retained or not); dropped while offline. */
 void kmq_publish(kmq *m, const char *sub, const char *payload, int retain);
+/* Publish payload on topic (a button's message) with qos and retain: 0, or
+ * -1 when it was not sent (offline, no client, refused). */
+int kmq_publish_to(kmq *m, const char *topic, const char *payload, int qos, int retain);
 /* A reloaded config's subscriptions replace the old ones (broker settings
  * stay as started). */
 void kmq_set_subs(kmq *m, const kiosk_mqtt_cfg *cfg);

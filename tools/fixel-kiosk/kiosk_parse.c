@@ -158,8 +158,11 @@ static int find_source(const kiosk_config *k, const char *s, size_t n)
 
 /* tests/corners/kiosk-corners.sh checks this list against kiosk_keys */
 #define UNKNOWN_DIRECTIVE \
-    "unknown directive (title grid size stale history bg panel fg columns widget mqtt mqtt_tls subscribe screen schedule)"
-#define ALLW 0xFFu
+    "unknown directive (title grid size stale history bg panel fg columns widget mqtt mqtt_tls subscribe screen schedule " \
+    "page carousel touch)"
+#define ALLW 0xFFu /* the widgets that show a source */
+#define BTNW (1u << KIOSK_BUTTON)
+#define LAYW (ALLW | BTNW)
 #define HEATW (1u << KIOSK_HEAT)
 #define IMGW (1u << KIOSK_IMAGE)
 #define VMAX (KIOSK_VALUE_MAX * 1000)
@@ -178,21 +181,34 @@ const kiosk_key kiosk_keys[] = {
     {"directive", "mqtt_tls", 't', 0, 0, 0, "key=value...: TLS to the broker (keys: scope mqtt_tls)"},
     {"directive", "subscribe", 't', 0, 0, 0, "TOPIC key=value...: a topic feeding sources (keys: scope subscribe)"},
     {"directive", "screen", 't', 0, 0, 0, "key=value...: screen power and backlight (keys: scope screen)"},
-    {"widget", "col", 'i', 0, 63, ALLW, "first cell column"},
-    {"widget", "row", 'i', 0, 63, ALLW, "first cell row"},
-    {"widget", "w", 'i', 1, 64, ALLW, "cells wide"},
-    {"widget", "h", 'i', 1, 64, ALLW, "cells high"},
+    {"widget", "col", 'i', 0, 63, LAYW, "first cell column"},
+    {"widget", "row", 'i', 0, 63, LAYW, "first cell row"},
+    {"widget", "w", 'i', 1, 64, LAYW, "cells wide"},
+    {"widget", "h", 'i', 1, 64, LAYW, "cells high"},
     {"widget", "decimals", 'i', 0, 3, ALLW, "digits after the point"},
     {"widget", "min", 'm', -VMAX, VMAX, ALLW, "low end of the scale (max - min <= 2251799813685; heat: within +-2000000)"},
     {"widget", "max", 'm', -VMAX, VMAX, ALLW, "high end of the scale (heat: within +-2000000)"},
-    {"widget", "color", 'c', 0, 0, ALLW, "#rrggbb"},
-    {"widget", "label", 't', 0, KIOSK_TEXT_MAX - 1, ALLW, "caption"},
+    {"widget", "color", 'c', 0, 0, LAYW, "#rrggbb"},
+    {"widget", "label", 't', 0, KIOSK_TEXT_MAX - 1, LAYW, "caption"},
     {"widget", "unit", 't', 0, KIOSK_TEXT_MAX - 1, ALLW, "unit after the value"},
     {"widget", "cells", 'p', 1, KIOSK_HEAT_DIM, HEATW, "CxR grid of the heat map"},
     {"widget", "cmap", 'w', 0, 0, HEATW, "a colour map name (viridis, hot, ...)"},
     {"widget", "smooth", 'i', 0, 1, HEATW, "bilinear heat map"},
     {"widget", "filter", 'w', 0, 0, IMGW, "nearest|bilinear"},
     {"widget", "path", 'f', 1, KIOSK_PATH_MAX - 1, IMGW, "image file (PNG or PPM)"},
+    {"widget", "topic", 't', 1, KIOSK_TOPIC_MAX - 1, BTNW, "a tap publishes to this topic (needs mqtt)"},
+    {"widget", "payload", 't', 0, KIOSK_PAYLOAD_MAX - 1, BTNW, "the message published (default: empty)"},
+    {"widget", "qos", 'i', 0, 2, BTNW, "quality of service of the message"},
+    {"widget", "retain", 'i', 0, 1, BTNW, "the broker keeps the message for later subscribers"},
+    {"widget", "page", 't', 1, KIOSK_NAME_MAX - 1, BTNW, "a tap goes to this page (a name, next or prev)"},
+    {"directive", "page", 't', 0, 0, 0, "NAME key=value...: the widgets after it are on this page (keys: scope page; up to 16)"},
+    {"page", "dwell", 'i', 0, 86400, 0, "seconds the carousel shows this page (0: the carousel's dwell)"},
+    {"page", "grid", 'p', 1, 16, 0, "CxR cells of this page (default: the grid directive's)"},
+    {"directive", "carousel", 't', 0, 0, 0, "key=value...: the pages turn by themselves (keys: scope carousel)"},
+    {"carousel", "dwell", 'i', 0, 86400, 0, "seconds each page shows (0: no carousel)"},
+    {"directive", "touch", 't', 0, 0, 0, "key=value...: swipes and edge taps turn pages (keys: scope touch)"},
+    {"touch", "swipe", 'i', 0, 8192, 0, "pixels a finger must travel sideways for a swipe (0: no swipes; default 40)"},
+    {"touch", "edge", 'i', 0, 50, 0, "percent of the width at each side where a tap turns the page (0: none; default 10)"},
     {"mqtt", "host", 't', 1, KIOSK_HOST_MAX - 1, 0, "broker name or address"},
     {"mqtt", "port", 'i', 1, 65535, 0, "broker port (1883; 8883 with TLS)"},
     {"mqtt", "client", 't', 1, 63, 0, "client id (default fixel-kiosk-HOST-PID)"},
@@ -266,8 +282,8 @@ static const char *range_msg(kiosk_config *k, const kiosk_key *q, tok val)
     return k->msg;
 }
 
-static const char *const type_names[KIOSK_NTYPES] = {"number", "gauge", "bar", "spark",
-                                                      "text",   "clock", "heat", "image"};
+static const char *const type_names[KIOSK_NTYPES] = {"number", "gauge", "bar", "spark", "text",
+                                                      "clock",  "heat",  "image", "button"};
 
 /* A path: printable, no quotes (one pair around it is stripped). */
 static int parse_path(tok t, char *dst)
@@ -294,7 +310,12 @@ static int parse_cmap(tok t, int *out)
 static int parse_header(kiosk_config *k, const char *l, size_t a, size_t b, int min_fields);
 static int header_has_heat(const kiosk_config *k);
 
-static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
+static int topic_ok(const char *s, size_t n, int filter);
+static kiosk_page *cur_page(kiosk_config *k, const char *line, const char *at, int lineno);
+static const char *parse_button_key(kiosk_config *k, kiosk_button *b, const kiosk_key *q, tok val, int iv,
+                                    const char *line, int lineno);
+
+static const char *parse_widget(kiosk_config *k, const char *line, const char *p, const char *end, int lineno)
 {
     tok t;
     if (k->nwidgets >= KIOSK_MAX_WIDGETS) return "too many widgets";
@@ -305,8 +326,11 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
     int ty = -1;
     for (int i = 0; i < KIOSK_NTYPES; i++)
         if (tok_is(t, type_names[i])) ty = i;
-    if (ty < 0) return "unknown widget type (number gauge bar spark text clock heat image)";
+    if (ty < 0) return "unknown widget type (number gauge bar spark text clock heat image button)";
+    if (!cur_page(k, line, t.s, lineno)) return "too many pages (16)";
     w->type = (kiosk_type)ty;
+    w->page = k->pg.npages - 1;
+    w->button = -1;
     w->source = -1;
     w->w = w->h = 1;
     w->max = 100000;
@@ -315,7 +339,22 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
     if (w->type == KIOSK_IMAGE) w->smooth = 1;
     if (w->type == KIOSK_HEAT) w->cmap = FX_CMAP_VIRIDIS;
     int cw = 0, ch = 0;
-    if (w->type != KIOSK_CLOCK) {
+    kiosk_button *btn = NULL;
+    if (w->type == KIOSK_BUTTON) {
+        /* a name, no source: it is the label unless label= says otherwise */
+        if (next_tok(&p, end, &t) != 1) return "button needs a name";
+        k->errat = t.s;
+        for (size_t i = 0; i < t.n; i++)
+            if (!is_name_char(t.s[i])) return "bad button name";
+        if (t.n >= KIOSK_NAME_MAX) return "button name too long";
+        if (k->pg.nbuttons >= KIOSK_MAX_BUTTONS) return "too many buttons (16)";
+        w->button = k->pg.nbuttons;
+        btn = &k->pg.buttons[w->button];
+        memset(btn, 0, sizeof *btn);
+        btn->page = KIOSK_PAGE_NONE;
+        copy_str(w->label, KIOSK_TEXT_MAX, t.s, t.n);
+        w->color = 0xFF26A69Au;
+    } else if (w->type != KIOSK_CLOCK) {
         if (next_tok(&p, end, &t) != 1) return "widget needs a source name";
         k->errat = t.s;
         for (size_t i = 0; i < t.n; i++)
@@ -342,7 +381,7 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
         const kiosk_key *q = kiosk_key_find("widget", key.s, key.n);
         if (!q || !(q->widgets & (1u << w->type)))
             return "unknown widget key (col row w h decimals min max color label unit; heat: cells cmap smooth; "
-                   "image: path filter)";
+                   "image: path filter; button: topic payload qos retain page)";
         int64_t m = 0;
         int iv = 0;
         /* numbers: the type from the table, then the table's range */
@@ -355,7 +394,11 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
             }
             if (m < q->min || m > q->max) return range_msg(k, q, val);
         }
-        if (tok_is(key, "col")) bad = (w->col = iv, 0);
+        if (btn && (q->widgets & ALLW) == 0) {
+            const char *e = parse_button_key(k, btn, q, val, iv, line, lineno);
+            if (e) return e;
+            bad = 0;
+        } else if (tok_is(key, "col")) bad = (w->col = iv, 0);
         else if (tok_is(key, "row")) bad = (w->row = iv, 0);
         else if (tok_is(key, "w")) bad = (w->w = iv, 0);
         else if (tok_is(key, "h")) bad = (w->h = iv, 0);
@@ -376,6 +419,10 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
         if (bad) return "bad widget value";
     }
     if (r < 0) return "unterminated quote";
+    if (btn && !btn->topic[0] && btn->page == KIOSK_PAGE_NONE && !btn->pagename[0]) {
+        k->errat = NULL;
+        return "button needs topic= (a message to publish) or page= (a page to show)";
+    }
     if (w->min > w->max || (w->min == w->max && w->type != KIOSK_SPARK && w->type != KIOSK_NUMBER &&
                             w->type != KIOSK_TEXT && w->type != KIOSK_CLOCK && w->type != KIOSK_IMAGE))
         return "min must be below max";
@@ -404,6 +451,7 @@ static const char *parse_widget(kiosk_config *k, const char *p, const char *end)
             for (int i = 0; i < KIOSK_HEAT_MAX; i++) so->cells[i] = KIOSK_CELL_NONE;
         }
     }
+    if (btn) k->pg.nbuttons++;
     k->nwidgets++;
     return NULL;
 }
@@ -689,6 +737,161 @@ static const char *parse_subscribe(kiosk_config *k, const char *line, const char
     return NULL;
 }
 
+/* ---- pages, carousel, touch, buttons (kiosk_pages.h) ---- */
+
+static int page_name_ok(tok t)
+{
+    if (t.n == 0 || t.n >= KIOSK_NAME_MAX || !((t.s[0] >= 'a' && t.s[0] <= 'z') || (t.s[0] >= 'A' && t.s[0] <= 'Z') ||
+                                               t.s[0] == '_'))
+        return 0;
+    for (size_t i = 0; i < t.n; i++)
+        if (!is_name_char(t.s[i]) || t.s[i] == '/') return 0;
+    /* next and prev are the words that turn pages */
+    return !tok_is(t, "next") && !tok_is(t, "prev");
+}
+
+/* The page a widget goes on: the last "page" line's, else an implicit
+ * first page "main" (a config without page lines is one page, as before). */
+static kiosk_page *cur_page(kiosk_config *k, const char *line, const char *at, int lineno)
+{
+    kiosk_pages_cfg *c = &k->pg;
+    if (c->npages == 0) {
+        kiosk_page *pg = &c->pages[c->npages++];
+        memset(pg, 0, sizeof *pg);
+        strcpy(pg->name, "main");
+        pg->line = lineno;
+        pg->col = (int)(at - line) + 1;
+    }
+    return &c->pages[c->npages - 1];
+}
+
+static const char *parse_page(kiosk_config *k, const char *line, const char *p, const char *end, int lineno)
+{
+    kiosk_pages_cfg *c = &k->pg;
+    tok t, v;
+    const kiosk_key *q;
+    int iv = 0, r;
+    if (next_tok(&p, end, &t) != 1) { k->errat = NULL; return "page needs a name"; }
+    k->errat = t.s;
+    if (!page_name_ok(t)) return "page name: a letter or _, then letters, digits, _ . - (not next or prev; up to 31)";
+    for (int i = 0; i < c->npages; i++)
+        if (tok_is(t, c->pages[i].name)) return "a second page of that name";
+    if (c->npages >= KIOSK_MAX_PAGES) return "too many pages (16)";
+    kiosk_page *pg = &c->pages[c->npages];
+    memset(pg, 0, sizeof *pg);
+    copy_str(pg->name, sizeof pg->name, t.s, t.n);
+    pg->line = lineno;
+    pg->col = (int)(t.s - line) + 1;
+    while ((r = next_tok(&p, end, &t)) == 1) {
+        const char *e = kv_parse(k, "page", t, &q, &v, &iv);
+        if (e) return e;
+        if (!q) return "unknown page key (dwell grid)";
+        if (!strcmp(q->name, "dwell")) pg->dwell_s = iv;
+        else if (parse_pair(v, (int)q->min, (int)q->max, &pg->cols, &pg->rows)) return range_msg(k, q, v);
+    }
+    if (r < 0) return "unterminated quote";
+    c->npages++;
+    k->errat = NULL;
+    return NULL;
+}
+
+/* "carousel key=value..." and "touch key=value...": integers only. */
+static const char *parse_turning(kiosk_config *k, const char *scope, const char *p, const char *end)
+{
+    tok t, v;
+    const kiosk_key *q;
+    int iv = 0, r;
+    while ((r = next_tok(&p, end, &t)) == 1) {
+        const char *e = kv_parse(k, scope, t, &q, &v, &iv);
+        if (e) return e;
+        if (!q) return scope[0] == 'c' ? "unknown carousel key (dwell)" : "unknown touch key (swipe edge)";
+        if (!strcmp(q->name, "dwell")) k->pg.dwell_s = iv;
+        else if (!strcmp(q->name, "swipe")) k->pg.swipe_px = iv;
+        else k->pg.edge_pct = iv;
+    }
+    if (r < 0) return "unterminated quote";
+    k->errat = NULL;
+    return NULL;
+}
+
+/* A payload: printable bytes; one pair of quotes around it is stripped
+ * when there are none inside, so payload={"state":"ON"} is JSON as written. */
+static int parse_payload(tok t, char *dst)
+{
+    if (t.n >= 2 && t.s[0] == '"' && t.s[t.n - 1] == '"' && !memchr(t.s + 1, '"', t.n - 2)) { t.s++; t.n -= 2; }
+    if (t.n >= KIOSK_PAYLOAD_MAX) return -1;
+    for (size_t i = 0; i < t.n; i++)
+        if ((unsigned char)t.s[i] < 0x20 || t.s[i] == 0x7f) return -1;
+    copy_str(dst, KIOSK_PAYLOAD_MAX, t.s, t.n);
+    return 0;
+}
+
+static const char *parse_button_key(kiosk_config *k, kiosk_button *b, const kiosk_key *q, tok val, int iv,
+                                    const char *line, int lineno)
+{
+    if (!strcmp(q->name, "qos")) b->qos = iv;
+    else if (!strcmp(q->name, "retain")) b->retain = iv;
+    else if (!strcmp(q->name, "payload")) {
+        if (parse_payload(val, b->payload)) return range_msg(k, q, val);
+    } else {
+        tok v = val;
+        if (v.n >= 2 && v.s[0] == '"' && v.s[v.n - 1] == '"') { v.s++; v.n -= 2; }
+        if (!strcmp(q->name, "topic")) {
+            if (v.n < 1 || v.n >= KIOSK_TOPIC_MAX) return range_msg(k, q, val);
+            if (!topic_ok(v.s, v.n, 0)) return "topic=: a topic without wildcards, spaces or quotes";
+            copy_str(b->topic, sizeof b->topic, v.s, v.n);
+        } else {
+            if (v.n < 1 || v.n >= KIOSK_NAME_MAX) return range_msg(k, q, val);
+            if (!page_name_ok(v) && !tok_is(v, "next") && !tok_is(v, "prev")) return "page=: a page name, next or prev";
+            copy_str(b->pagename, sizeof b->pagename, v.s, v.n);
+        }
+        /* checked after the whole file (the mqtt line or the page may come later) */
+        b->line = lineno;
+        b->col = (int)(k->errat - line) + 1;
+    }
+    return NULL;
+}
+
+/* After the whole file: every page has widgets and a grid, button pages
+ * exist, a button that publishes has a broker. NULL or the error, its
+ * place in k->errline/errcol. */
+static const char *check_pages(kiosk_config *k)
+{
+    kiosk_pages_cfg *c = &k->pg;
+    if (c->npages == 0) {
+        c->npages = 1;
+        memset(&c->pages[0], 0, sizeof c->pages[0]);
+        strcpy(c->pages[0].name, "main");
+    }
+    for (int i = 0; i < c->npages; i++) {
+        kiosk_page *pg = &c->pages[i];
+        int n = 0;
+        if (!pg->cols) { pg->cols = k->cols; pg->rows = k->rows; }
+        for (int j = 0; j < k->nwidgets; j++) n += k->widgets[j].page == i;
+        if (!n && (c->npages > 1 || pg->line)) {
+            k->errline = pg->line;
+            k->errcol = pg->col;
+            return "a page without widgets";
+        }
+    }
+    for (int i = 0; i < c->nbuttons; i++) {
+        kiosk_button *b = &c->buttons[i];
+        k->errline = b->line;
+        k->errcol = b->col;
+        if (b->topic[0] && !k->mqtt.enabled)
+            return "topic= needs an mqtt directive (the broker to publish to)";
+        if (b->pagename[0]) {
+            b->page = !strcmp(b->pagename, "next") ? KIOSK_PAGE_NEXT : !strcmp(b->pagename, "prev") ? KIOSK_PAGE_PREV
+                    : KIOSK_PAGE_NONE;
+            for (int j = 0; j < c->npages && b->page == KIOSK_PAGE_NONE; j++)
+                if (!strcmp(c->pages[j].name, b->pagename)) b->page = j;
+            if (b->page == KIOSK_PAGE_NONE) return "page=: no page of that name";
+        }
+    }
+    k->errline = k->errcol = 0;
+    return NULL;
+}
+
 int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, size_t errsize)
 {
     const char *p = buf, *end = buf + len;
@@ -708,6 +911,8 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
     k->mqtt.verify = 1;
     strcpy(k->screen.backlight, "auto");
     k->screen.brightness = -1;
+    k->pg.swipe_px = 40;
+    k->pg.edge_pct = 10;
     if (err && errsize) err[0] = 0;
     while (p < end) {
         const char *eol = memchr(p, '\n', (size_t)(end - p));
@@ -722,7 +927,9 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
             if (*c == 0) { r = -1; break; }
         if (r < 0) msg = "unreadable line";
         else if (r == 0) msg = NULL;
-        else if (tok_is(t, "widget")) msg = parse_widget(k, q, eol);
+        else if (tok_is(t, "widget")) msg = parse_widget(k, p, q, eol, line);
+        else if (tok_is(t, "page")) msg = parse_page(k, p, q, eol, line);
+        else if (tok_is(t, "carousel") || tok_is(t, "touch")) msg = parse_turning(k, t.s[0] == 'c' ? "carousel" : "touch", q, eol);
         else if (tok_is(t, "mqtt")) msg = parse_mqtt(k, q, eol);
         else if (tok_is(t, "mqtt_tls")) msg = parse_mqtt_tls(k, q, eol);
         else if (tok_is(t, "screen")) msg = parse_screen(k, q, eol);
@@ -806,9 +1013,19 @@ int kiosk_config_parse(kiosk_config *k, const char *buf, size_t len, char *err, 
             return -1;
         }
     }
+    {
+        const char *m = check_pages(k);
+        if (m) {
+            size_t o = 0;
+            for (; err && m[o] && o + 1 < errsize; o++) err[o] = m[o];
+            if (err && errsize) err[o] = 0;
+            return -1;
+        }
+    }
     for (int i = 0; i < k->nwidgets; i++) {
         const kiosk_widget *w = &k->widgets[i];
-        if (w->col + w->w > k->cols || w->row + w->h > k->rows) {
+        const kiosk_page *pg = &k->pg.pages[w->page];
+        if (w->col + w->w > pg->cols || w->row + w->h > pg->rows) {
             if (err && errsize) {
                 const char *m = "a widget lies outside the grid";
                 size_t o = 0;

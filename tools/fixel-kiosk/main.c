@@ -118,6 +118,15 @@ typedef struct kiosk {
     char cfg_error[200];  /* why the last reload was refused ("" : it was not) */
     int ready_sent;       /* systemd: READY=1 after the first frame */
     int64_t wd_ms, wd_last; /* systemd watchdog: ping interval (0: none), last ping */
+    /* pages and touch (kiosk_pages.h, docs/kiosk.md "Pages and touch") */
+    int page;             /* the page shown */
+    int64_t page_since;   /* when it came up (the carousel's dwell counts from here) */
+    int press_down;       /* a press is held */
+    int press_x, press_y; /* where it started */
+    int pressed;          /* the button widget drawn pressed, -1: none */
+    int64_t pressed_until; /* after the release it stays drawn pressed until then */
+    int press_failed;     /* the last tap's message could not be sent: drawn red while pressed */
+    uint32_t presses, press_errors;
 } kiosk;
 
 static int64_t mono_ms(void)
@@ -362,11 +371,12 @@ static fx_rect widget_rect(const kiosk *k, const kiosk_widget *w)
 {
     int32_t top = k->cfg.title[0] ? TITLE_H : 0;
     int32_t gw = k->W, gh = k->H - top - STATUS_H;
+    const kiosk_page *pg = &k->cfg.pg.pages[w->page]; /* each page has a grid of its own */
     fx_rect r;
-    r.x0 = w->col * gw / k->cfg.cols + GAP;
-    r.x1 = (w->col + w->w) * gw / k->cfg.cols - GAP / 2;
-    r.y0 = top + w->row * gh / k->cfg.rows + GAP;
-    r.y1 = top + (w->row + w->h) * gh / k->cfg.rows - GAP / 2;
+    r.x0 = w->col * gw / pg->cols + GAP;
+    r.x1 = (w->col + w->w) * gw / pg->cols - GAP / 2;
+    r.y0 = top + w->row * gh / pg->rows + GAP;
+    r.y1 = top + (w->row + w->h) * gh / pg->rows - GAP / 2;
     return r;
 }
 
@@ -615,12 +625,15 @@ static void draw_image(kiosk *k, fx_ctx *c, int i, fx_rect r)
     text_at(c, a.x0 + (aw - tw) / 2, a.y0 + (ah - 10 * sc) / 2, sc, col, why);
 }
 
+static void draw_button(kiosk *k, fx_ctx *c, int i, fx_rect r);
+
 static void draw_widget(kiosk *k, fx_ctx *base, int i)
 {
     const kiosk_widget *w = &k->cfg.widgets[i];
     fx_rect r = widget_rect(k, w);
     fx_ctx c = *base;
     fx_ctx_set_clip(&c, r);
+    if (w->type == KIOSK_BUTTON) { draw_button(k, &c, i, r); return; }
     int stale = k->stale[i];
     fx_color acc = stale ? STALE_FG : w->color, fgc = stale ? STALE_FG : k->cfg.fg;
     int32_t rw = r.x1 - r.x0, rh = r.y1 - r.y0;
@@ -674,6 +687,7 @@ static void draw_widget(kiosk *k, fx_ctx *base, int i)
     case KIOSK_SPARK: draw_spark(k, &c, w, r, acc, stale); break;
     case KIOSK_HEAT: draw_heat(k, &c, w, r, stale); break;
     case KIOSK_IMAGE: draw_image(k, &c, i, r); break;
+    case KIOSK_BUTTON:
     case KIOSK_NTYPES: break;
     case KIOSK_CLOCK: {
         int64_t sec;
@@ -693,6 +707,8 @@ static void draw_widget(kiosk *k, fx_ctx *base, int i)
 }
 
 static fx_rect status_rect(const kiosk *k) { return (fx_rect){0, k->H - STATUS_H, k->W, k->H}; }
+
+static void draw_page_dots(kiosk *k, fx_ctx *c, int32_t x, fx_rect r);
 
 static void draw_status(kiosk *k, fx_ctx *base)
 {
@@ -716,6 +732,8 @@ static void draw_status(kiosk *k, fx_ctx *base)
         snprintf(buf, sizeof buf, "image errors %u", k->img_errors);
         text_at(&c, x, r.y0 + 2, 1, BAD_RED, buf);
     }
+    x += text_w(buf, 1) + 12;
+    draw_page_dots(k, &c, x, r);
     if (k->mq && !k->mst.connected) {
         /* the values above age into STALE on their own; this says why */
         time_t t = (time_t)k->mst.offline_since;
@@ -744,8 +762,10 @@ static void render(kiosk *k)
     }
     for (int i = 0; i < k->cfg.nwidgets; i++)
         if (k->dirty[i]) {
-            draw_widget(k, &c, i);
             k->dirty[i] = 0;
+            /* widgets of other pages keep their values; a page turn redraws everything */
+            if (k->cfg.widgets[i].page != k->page) continue;
+            draw_widget(k, &c, i);
             dmg[n++] = widget_rect(k, &k->cfg.widgets[i]);
         }
     if (k->status_dirty) {
@@ -816,12 +836,28 @@ static void on_key(void *user, unsigned char key, int x, int y)
     if (key == 'q' || key == 27) fx_app_quit(k->app);
 }
 
+static void touch_press(kiosk *k, int state, int x, int y);
+
 static void on_mouse(void *user, int button, int state, int x, int y)
 {
     kiosk *k = user;
-    (void)button; (void)x; (void)y;
     if (state == FX_UP && k->swallow_up) { k->swallow_up = 0; return; }
     if (state == FX_DOWN && woke(k)) { k->swallow_up = 1; return; }
+    /* a touchscreen's finger arrives as the left button */
+    if (button == FX_BUTTON_LEFT) touch_press(k, state, x, y);
+}
+
+static void go_page(kiosk *k, int p);
+
+/* Left/right arrows and Page Up/Down turn pages as swipes do. */
+static void on_special(void *user, int key, int x, int y)
+{
+    kiosk *k = user;
+    (void)x; (void)y;
+    if (woke(k)) return;
+    int n = k->cfg.pg.npages;
+    if (key == FX_KEY_RIGHT || key == FX_KEY_PAGE_DOWN) go_page(k, (k->page + 1) % n);
+    else if (key == FX_KEY_LEFT || key == FX_KEY_PAGE_UP) go_page(k, (k->page + n - 1) % n);
 }
 
 static void on_reshape(void *user, int w, int h)
@@ -836,8 +872,139 @@ static int any_dirty(const kiosk *k)
 {
     if (k->full || k->status_dirty) return 1;
     for (int i = 0; i < k->cfg.nwidgets; i++)
-        if (k->dirty[i]) return 1;
+        if (k->dirty[i] && k->cfg.widgets[i].page == k->page) return 1;
     return 0;
+}
+
+/* ---- pages and touch (kiosk_pages.h) ---- */
+
+/* Show page p; choosing the page shown again restarts its dwell. */
+static void go_page(kiosk *k, int p)
+{
+    if (p < 0 || p >= k->cfg.pg.npages) return;
+    k->page_since = k->now_ms;
+    if (p == k->page) return;
+    k->page = p;
+    k->pressed = -1;
+    k->press_down = 0; /* the rest of a swipe or press belongs to the old page */
+    k->full = 1;
+    k->status_due = 1;
+    if (k->app) fx_app_post_redisplay(k->app);
+}
+
+/* The carousel and the end of a button's pressed look, at k->now_ms. */
+static void pages_tick(kiosk *k)
+{
+    int64_t since = k->page_since;
+    int p = kiosk_carousel(&k->cfg.pg, k->page, &since, k->now_ms);
+    if (p != k->page && !k->press_down) { /* never under a finger */
+        go_page(k, p);
+        k->page_since = since;
+    }
+    if (k->pressed >= 0 && !k->press_down && k->now_ms >= k->pressed_until) {
+        k->dirty[k->pressed] = 1;
+        k->pressed = -1;
+    }
+}
+
+static int button_at(kiosk *k, int x, int y)
+{
+    for (int i = 0; i < k->cfg.nwidgets; i++) {
+        const kiosk_widget *w = &k->cfg.widgets[i];
+        if (w->type != KIOSK_BUTTON || w->page != k->page) continue;
+        fx_rect r = widget_rect(k, w);
+        if (x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1) return i;
+    }
+    return -1;
+}
+
+/* A tap on button widget i: its message, then its page. */
+static void button_action(kiosk *k, int i)
+{
+    const kiosk_button *b = &k->cfg.pg.buttons[k->cfg.widgets[i].button];
+    k->presses++;
+    k->status_due = 1;
+    k->press_failed = 0;
+    if (b->topic[0] && kmq_publish_to(k->mq, b->topic, b->payload, b->qos, b->retain) < 0) {
+        /* offline: not queued (a light switched minutes later surprises
+         * more than one that did not switch); the button flashes red */
+        k->press_errors++;
+        k->press_failed = 1;
+        fprintf(stderr, "fixel-kiosk: button %s: not sent, the broker is offline\n", k->cfg.widgets[i].label);
+    }
+    int n = k->cfg.pg.npages;
+    if (b->page == KIOSK_PAGE_NEXT) go_page(k, (k->page + 1) % n);
+    else if (b->page == KIOSK_PAGE_PREV) go_page(k, (k->page + n - 1) % n);
+    else if (b->page >= 0) go_page(k, b->page);
+}
+
+/* Presses that reach the widgets (a waking press never does): a button
+ * is drawn pressed while held and acts on its release inside it, unless
+ * the finger swiped; any other press is a swipe or an edge tap
+ * (kiosk_gesture). */
+static void touch_press(kiosk *k, int state, int x, int y)
+{
+    k->now_ms = k->headless ? k->now_ms : mono_ms();
+    if (state == FX_DOWN) {
+        k->press_down = 1;
+        k->press_x = x;
+        k->press_y = y;
+        if (k->pressed >= 0) k->dirty[k->pressed] = 1; /* a flash still showing ends */
+        k->pressed = button_at(k, x, y);
+        k->press_failed = 0;
+        if (k->pressed >= 0) k->dirty[k->pressed] = 1;
+    } else {
+        if (!k->press_down) return;
+        k->press_down = 0;
+        /* a swipe that started on a button is a swipe: the button lets go */
+        kiosk_pages_cfg swipes = k->cfg.pg;
+        swipes.edge_pct = 0;
+        int sw = kiosk_gesture(&swipes, k->W, k->press_x, k->press_y, x, y), n = k->cfg.pg.npages;
+        if (k->pressed >= 0) {
+            int i = k->pressed;
+            fx_rect r = widget_rect(k, &k->cfg.widgets[i]);
+            k->dirty[i] = 1;
+            if (sw) {
+                k->pressed = -1;
+                go_page(k, (k->page + n + sw) % n);
+            } else if (x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1) {
+                k->pressed_until = k->now_ms + KIOSK_PRESS_MS;
+                button_action(k, i); /* may turn the page (pressed is then -1) */
+            } else
+                k->pressed = -1; /* slid off: no tap */
+        } else {
+            int g = kiosk_gesture(&k->cfg.pg, k->W, k->press_x, k->press_y, x, y);
+            if (g) go_page(k, (k->page + n + g) % n);
+        }
+    }
+    if (k->app && any_dirty(k)) fx_app_post_redisplay(k->app);
+}
+
+static void draw_button(kiosk *k, fx_ctx *c, int i, fx_rect r)
+{
+    const kiosk_widget *w = &k->cfg.widgets[i];
+    int32_t rw = r.x1 - r.x0, rh = r.y1 - r.y0;
+    int down = k->pressed == i;
+    fx_color face = down ? (k->press_failed ? BAD_RED : w->color) : k->cfg.panel;
+    fill(c, w->color, r.x0, r.y0, rw, rh); /* the rim */
+    fill(c, face, r.x0 + 3, r.y0 + 3, rw - 6, rh - 6);
+    int32_t sc = fit_scale(w->label, rw - 16, rh - 8, 4);
+    text_at(c, r.x0 + (rw - text_w(w->label, sc)) / 2 + down, r.y0 + (rh - 10 * sc) / 2 + down, sc,
+            down ? k->cfg.bg : k->cfg.fg, w->label);
+}
+
+/* "NAME 2/3" in the status line, pages only. */
+static void draw_page_dots(kiosk *k, fx_ctx *c, int32_t x, fx_rect r)
+{
+    const kiosk_pages_cfg *pg = &k->cfg.pg;
+    if (pg->npages < 2) return;
+    char buf[64];
+    snprintf(buf, sizeof buf, "%s %d/%d", pg->pages[k->page].name, k->page + 1, pg->npages);
+    text_at(c, x, r.y0 + 2, 1, k->cfg.fg, buf);
+    x += text_w(buf, 1) + 6;
+    for (int i = 0; i < pg->npages; i++, x += 8)
+        fill(c, i == k->page ? k->cfg.fg : DIM, x, r.y0 + (i == k->page ? 4 : 5), i == k->page ? 5 : 3,
+             i == k->page ? 5 : 3);
 }
 
 static kiosk *g_kiosk; /* the timer callback's only way back to the state */
@@ -919,12 +1086,14 @@ static void publish_status(kiosk *k)
     }
     err[o] = 0;
     snprintf(js, sizeof js,
-             "{\"version\":\"%s\",\"state\":\"online\",\"page\":0,\"pages\":1,\"frames\":%u,"
+             "{\"version\":\"%s\",\"state\":\"online\",\"page\":%d,\"pages\":%d,\"page_name\":\"%s\","
+             "\"presses\":%u,\"press_errors\":%u,\"frames\":%u,"
              "\"fps\":%lld.%lld,\"lines\":%u,\"bad\":%u,\"ignored\":%u,\"stale\":%d,\"uptime\":%lld,"
              "\"screen\":\"%s\",\"brightness\":%d,\"screen_hw\":\"%s\",\"identify\":%d,"
              "\"connects\":%u,\"dropped\":%u,\"reloads\":%u,\"config_error\":\"%s\","
              "\"heap\":%llu,\"rss_kb\":%ld}",
-             FX_VERSION_STRING, k->frames, (long long)(fps10 / 10), (long long)(fps10 % 10), k->lines, k->bad,
+             FX_VERSION_STRING, k->page, k->cfg.pg.npages, k->cfg.pg.pages[k->page].name, k->presses,
+             k->press_errors, k->frames, (long long)(fps10 / 10), (long long)(fps10 % 10), k->lines, k->bad,
              k->ignored, nstale, (long long)((k->now_ms - k->start_ms) / 1000), k->screen_on ? "on" : "off",
              k->brightness, k->screen.name, k->identify_phase != 0, k->mst.connects, k->mst.dropped, k->reloads,
              err, heap, rss_kb);
@@ -945,7 +1114,17 @@ static void reload(kiosk *k)
         return;
     }
     k->cfg_error[0] = 0;
+    char shown[KIOSK_NAME_MAX];
+    snprintf(shown, sizeof shown, "%s", k->cfg.pg.pages[k->page].name);
     k->cfg = fresh;
+    /* the same page by name if it still exists, else the first */
+    int p = 0;
+    for (int i = 0; i < fresh.pg.npages; i++)
+        if (!strcmp(fresh.pg.pages[i].name, shown)) p = i;
+    k->page = p;
+    k->page_since = k->now_ms;
+    k->pressed = -1;
+    k->press_down = 0;
     for (int i = 0; i < k->cfg.nsources; i++) k->cfg.sources[i].last_ms = k->now_ms;
     free_images(k);
     memset(k->img, 0, sizeof k->img);
@@ -988,8 +1167,9 @@ static int control(kiosk *k, const char *what, const char *v, size_t n)
         reload(k);
         if (k->cfg_error[0]) return KIOSK_LINE_BAD;
     } else if (!strcmp(what, "page")) {
-        /* one page only (pages are another part of issue #24): 0 is where we are */
-        if (!isnum || x != 0) return KIOSK_LINE_BAD;
+        int p = kiosk_page_lookup(&k->cfg.pg, k->page, val, (unsigned)n);
+        if (p < 0) return KIOSK_LINE_BAD;
+        go_page(k, p);
     } else
         return KIOSK_LINE_BAD;
     return KIOSK_LINE_OK;
@@ -1069,6 +1249,7 @@ static void on_tick(void *user, int value)
         k->wd_last = k->now_ms;
     } /* a stat() per image widget: cheap at 10 Hz */
     update_stale(k);
+    pages_tick(k);
     {
         time_t t = time(NULL);
         struct tm lt;
@@ -1151,7 +1332,8 @@ static void usage(FILE *f)
             "  --size WxH        headless surface size (default: the config's size, else 480x320)\n"
             "  --help            this text\n"
             "Bad data lines are counted on screen, never fatal. Keys: q or Esc quits.\n"
-            "Widgets: number gauge bar spark text clock heat image.\n"
+            "Widgets: number gauge bar spark text clock heat image button.\n"
+            "Pages: swipe, tap a screen edge, arrow keys, or PREFIX/set/page over MQTT.\n"
             "Config and data reference: docs/kiosk.md; examples: examples/kiosk-*.conf\n");
 }
 
@@ -1162,6 +1344,7 @@ int main(int argc, char **argv)
     const char *cfgpath = NULL, *data = "-", *out = NULL;
     int frames = 1, last_only = 0, sw = 0, sh = 0, mem_frame = -1;
     k->fd = -1;
+    k->pressed = -1;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { usage(stdout); return 0; }
@@ -1187,10 +1370,13 @@ int main(int argc, char **argv)
                 else
                     printf("-");
                 printf("  %s", q->help);
-                if (q->widgets && q->widgets != 0xFFu) { /* the widget types it applies to */
-                    static const char *const wt[] = {"number", "gauge", "bar", "spark", "text", "clock", "heat", "image"};
+                unsigned all = (1u << KIOSK_NTYPES) - 1, shows = all & ~(1u << KIOSK_BUTTON);
+                if (q->widgets == shows) printf(" (not button)");
+                else if (q->widgets && q->widgets != all) { /* the widget types it applies to */
+                    static const char *const wt[KIOSK_NTYPES] = {"number", "gauge", "bar",   "spark", "text",
+                                                                 "clock",  "heat",  "image", "button"};
                     const char *sep = " (";
-                    for (int j = 0; j < 8; j++)
+                    for (int j = 0; j < KIOSK_NTYPES; j++)
                         if (q->widgets >> j & 1) { printf("%s%s", sep, wt[j]); sep = ", "; }
                     printf(" only)");
                 }
@@ -1264,8 +1450,11 @@ int main(int argc, char **argv)
     if (fx_app_options_from_env(&o) < 0) return 1;
     /* A kiosk booted before its screen is plugged in (or switched on) waits
      * for it instead of drawing into memory; FIXEL_WAIT_DISPLAY=0 does not. */
-    const char *wd = getenv("FIXEL_WAIT_DISPLAY");
-    if (!k->headless && !(wd && !strcmp(wd, "0"))) {
+    long wait = 1;
+    char wmsg[256];
+    if (fx_env_get("FIXEL_WAIT_DISPLAY", &wait, wmsg, sizeof wmsg) < 0)
+        fprintf(stderr, "fixel-kiosk: %s\n", wmsg);
+    if (!k->headless && wait) {
         int w = fx_display_wait_connected(&o.display, -1);
         if (w < 0 && w != -FX_ENODEV) return 1;
     }
@@ -1305,6 +1494,7 @@ int main(int argc, char **argv)
             feed_frame(k);
             check_images(k);
             update_stale(k);
+            pages_tick(k);
             render(k);
             if (f == mem_frame) mem_report("warm", f);
             if (out && (!last_only || f == frames - 1)) {
@@ -1324,10 +1514,11 @@ int main(int argc, char **argv)
         printf("fixel-kiosk: %d frames, %u lines, %u bad, %u ignored, %u image errors\n", frames, k->lines, k->bad,
                k->ignored, k->img_errors);
     } else {
-        fx_callbacks cb = {.display = on_display, .keyboard = on_key, .mouse = on_mouse, .reshape = on_reshape};
+        fx_callbacks cb = {.display = on_display, .keyboard = on_key, .mouse = on_mouse, .special = on_special,
+                           .reshape = on_reshape};
         g_kiosk = k;
         k->now_ms = mono_ms();
-        k->start_ms = k->status_ms = k->now_ms;
+        k->start_ms = k->status_ms = k->page_since = k->now_ms;
         k->screen_on = 1;
         k->brightness = 100;
         {

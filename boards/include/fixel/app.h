@@ -53,14 +53,22 @@
  *              PNG, or PPM for a .ppm name; one %d (%03d...) is the frame
  *              number, from 1; without one each frame replaces the last.
  *              A file that cannot be written ends the loop with its error.
+ *              Displays added with fx_app_add_display write theirs after
+ *              each of their draw callbacks, to the name with ".dN" before
+ *              the extension (N its display number: f-%03d.d1.png),
+ *              numbered by that display's own count.
  *
  * Replay files are the tests/input stream format; '#' starts a comment
  * (except in the character '#'), one statement a line:
  *
- *   device N CLASS[+CLASS] [abs X0 X1 Y0 Y1] [mt X0 X1 Y0 Y1]
+ *   device N CLASS[+CLASS] [abs X0 X1 Y0 Y1] [mt X0 X1 Y0 Y1] [bus BUS]
+ *          [name NAME...]
  *                     declare virtual device N (0..7); CLASS: keyboard
  *                     mouse touch mt tablet; abs/mt: its axis ranges
- *                     (default: the screen size)
+ *                     (default: the screen size); BUS (usb i2c spi host
+ *                     virtual) and NAME (the rest of the line; default
+ *                     replay-N) are what binds it to a display
+ *                     (fx_app_bind_input)
  *   ev N TYPE CODE VALUE   a raw evdev event of device N, translated as a
  *                     real device's (rotation, calibration, keymap); TYPE
  *                     and CODE are numbers or names (KEY, REL, ABS,
@@ -160,6 +168,41 @@ int fx_app_add_display(fx_app *a, const fx_display_options *o,
 /* Ask for a draw callback of display d (added above, or the app's own:
  * then the same as fx_app_post_redisplay). */
 void fx_app_post_redisplay_on(fx_app *a, fx_display *d);
+/* Input devices bound to displays (docs/displays.md). Every input device
+ * belongs to one display of the app: its events arrive in that display's
+ * logical coordinates (its size and rotation, the panel's orientation
+ * included, so a touchscreen follows its panel) and go to that display's
+ * callbacks; its software pointer is that display's. Unbound devices,
+ * GPIO buttons and fx_app_inject belong to the app's own display, as with
+ * one display.
+ *
+ * Input callbacks of an added display d (keyboard, special, mouse, motion,
+ * passive_motion, wheel, touch, their _up forms, and reshape with d's
+ * logical size when the main loop starts); display, idle and close are
+ * the app's (set with fx_app_set_callbacks), d's frames are drawn by its
+ * draw callback. d may be the app's own display: then the same as
+ * fx_app_set_callbacks. Returns 0 or -FX_EINVAL (d is not the app's). */
+int fx_app_set_display_callbacks(fx_app *a, fx_display *d, const fx_callbacks *cb, void *user);
+/* Bind input device `device` to display d (the app's own or an added
+ * one; NULL removes the device's binding): a device node
+ * ("/dev/input/event5", or a /dev/input/by-path or by-id link) or the
+ * device's name as the kernel gives it (the input log lines print it:
+ * "Goodix Capacitive TouchScreen"). It applies to the device now and
+ * whenever it is plugged in again, and wins over the automatic choice and
+ * over the bindings given before. Returns 0, -FX_EINVAL or -FX_ENOSPC
+ * (FX_APP_MAX_BINDS). */
+#define FX_APP_MAX_BINDS 8
+int fx_app_bind_input(fx_app *a, const char *device, fx_display *d);
+/* Bindings as text, "DEVICE=DISPLAY[;DEVICE=DISPLAY...]" (FIXEL_INPUT_BIND,
+ * through fixel/env.h): DEVICE as above, DISPLAY a connector name
+ * ("DSI-1", "vc4:HDMI-A-2") or a display number (0 the app's own, 1.. the
+ * added ones in the order they were added). A display not open (yet)
+ * leaves the device on the app's own display until it is added. Returns 0,
+ * or -FX_EINVAL / -FX_ENOSPC (logged, nothing added). */
+int fx_app_bind_inputs(fx_app *a, const char *spec);
+/* The display input device `device` (node or name, as above) is bound to
+ * now, or NULL when no such device is open. */
+fx_display *fx_app_input_display(fx_app *a, const char *device);
 /* The logical screen size (after rotation). */
 void fx_app_size(const fx_app *a, int32_t *w, int32_t *h);
 /* Drive a GPIO output line (LED, backlight): requested on first use. */

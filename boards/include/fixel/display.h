@@ -226,6 +226,10 @@ const char *fx_backend_name(fx_backend b);
  * connector's "DPMS" property, or the CRTC switched off when the connector
  * has none; fbdev: FBIOBLANK; memory: only remembered. While off, presents
  * still draw into the buffers but are not shown; on shows the newest frame.
+ * No flip completes while off (nor while the program's VT is away), so each
+ * such present counts as a pending flip for one refresh period (the mode's,
+ * else 60 Hz), ended by a timer on fx_display_fd: a program that draws
+ * whenever no flip is pending is paced as by vblank instead of spinning.
  * fx_display_close (and so fx_app_close) turns the screen back on. Returns 0
  * or -errno (the state is unchanged then). A panel's backlight is separate:
  * fixel/backlight.h. */

@@ -83,6 +83,7 @@ static struct shared_card {
     int fd;              /* the registry's own dup, closed with the last user */
     int users;
     uint32_t crtcs[8];   /* CRTC ids in use by our displays on this card */
+    uint32_t conns[8];   /* the connector each of those CRTCs drives */
 } cards_open[MAX_CARDS];
 
 static struct shared_card *card_find(const char *path)
@@ -119,14 +120,25 @@ static void card_hold(const char *path, int fd)
         c->users++;
 }
 
-static void card_crtc(const char *path, uint32_t old, uint32_t id)
+static void card_crtc(const char *path, uint32_t old, uint32_t id, uint32_t conn)
 {
     struct shared_card *c = card_find(path);
     for (int i = 0; c && i < 8; i++)
         if (c->crtcs[i] == old) {
             c->crtcs[i] = id;
+            c->conns[i] = id ? conn : 0;
             return;
         }
+}
+
+/* 1 when one of our displays drives connector conn of card path. */
+static int conn_taken(const char *path, uint32_t conn)
+{
+    struct shared_card *c = card_find(path);
+    for (int i = 0; c && conn && i < 8; i++)
+        if (c->crtcs[i] && c->conns[i] == conn)
+            return 1;
+    return 0;
 }
 
 /* 1 when this was the last display on the card (master is to be dropped). */
@@ -136,7 +148,7 @@ static int card_release(const char *path, uint32_t crtc)
     if (!c)
         return 1;
     if (crtc)
-        card_crtc(path, crtc, 0);
+        card_crtc(path, crtc, 0, 0);
     if (--c->users)
         return 0;
     if (c->fd >= 0)
@@ -482,12 +494,10 @@ static int drm_show(fx_display *d, int buf, const fx_rect *phys, int n)
     int r;
 
     /* Screen off: a flip (or its SetCrtc fallback) would switch the CRTC
-     * back on; the buffer is shown when the screen comes on. */
-    if (d->power_off) {
-        if (d->flip_cb)
-            d->flip_cb(d, d->flip_user);
+     * back on; the buffer is shown when the screen comes on. The front end
+     * paces these presents (and calls the flip callback) as vblank would. */
+    if (d->power_off)
         return 0;
-    }
 
     if (p->dirty != 0 && n > 0) {
         drmModeClip clips[FX_DAMAGE_MAX];
@@ -778,7 +788,32 @@ static int find_card(fx_display *d, int *fd_out, uint32_t *conn_id)
     }
     fx_card_desc cards[FX_CARDS_MAX];
     int n = fx_drm_cards(cards, FX_CARDS_MAX), ci = -1, ki = -1;
+    /* Outputs our other displays drive are not there for the automatic
+     * choice (a second display opened without a name takes the next
+     * output); a named one is refused below. */
+    char taken[128] = "";
+    int named = cwant && cwant[strlen(cwant) - 1] != ':'; /* "NAME", "CARD:NAME"; not "CARD:" */
+    for (int i = 0; i < n && !named; i++)
+        for (int k = 0; k < cards[i].nconn; k++)
+            if (conn_taken(cards[i].path, cards[i].conn[k].id)) {
+                size_t l = strlen(taken);
+                snprintf(taken + l, sizeof taken - l, "%s%s", l ? ", " : "", cards[i].conn[k].name);
+                cards[i].conn[k].connected = 0;
+                cards[i].conn[k].modes = 0;
+            }
     fx_card_pick pk = fx_card_pick_output(cards, n, want, cwant, &ci, &ki);
+    if (pk == FX_PICK_OK && conn_taken(cards[ci].path, cards[ci].conn[ki].id)) {
+        fx_log(&d->log, FX_LOG_ERROR,
+               "connector %s (%s) is already driven by another display of this program: "
+               "name a different connector for each display", cards[ci].conn[ki].name, cards[ci].path);
+        snprintf(d->device, sizeof d->device, "%s", cards[ci].path);
+        return -FX_EBUSY;
+    }
+    if (pk == FX_PICK_NONE_CONNECTED && taken[0]) {
+        fx_log(&d->log, FX_LOG_ERROR,
+               "every connected output is driven by another display of this program (%s)", taken);
+        return -FX_EBUSY;
+    }
     if (pk != FX_PICK_OK) {
         /* A card we may not open explains it best (the group to join). */
         int err = 0;
@@ -894,7 +929,7 @@ int fx_drm_open(fx_display *d)
                        ? " (the free ones drive our other displays)" : "");
             r = -FX_ENODEV;
         } else {
-            card_crtc(d->device, 0, p->crtc_id);
+            card_crtc(d->device, 0, p->crtc_id, p->conn_id);
         }
     }
     drmModeFreeConnector(c);

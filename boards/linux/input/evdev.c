@@ -7,6 +7,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <libevdev/libevdev.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -87,6 +88,13 @@ int fx_evdev_open(fx_evdev_set *a, const char *path, int quiet)
     e->fd = fd;
     e->dev = dev;
     snprintf(e->path, sizeof e->path, "%s", path);
+    snprintf(e->name, sizeof e->name, "%s", libevdev_get_name(dev) ? libevdev_get_name(dev) : "");
+    e->bus = (unsigned)libevdev_get_id_bustype(dev);
+    const char *base = strrchr(path, '/');
+    char link[160], real[PATH_MAX];
+    snprintf(link, sizeof link, "/sys/class/input/%s/device/device", base ? base + 1 : path);
+    if (realpath(link, real) && strlen(real) < sizeof e->sysfs)
+        memcpy(e->sysfs, real, strlen(real) + 1);
     fx_input_dev_init(&e->st, cls);
     if (cls & (FX_DEV_TOUCH | FX_DEV_TABLET | FX_DEV_MT)) {
         e->st.calib = a->calib;

@@ -44,6 +44,12 @@ typedef struct fx_evdev {
     struct libevdev *dev;
     fx_input_dev st;
     char path[96];
+    /* what binds it to a display (boards/app/bind.c) */
+    char name[80];
+    char sysfs[256];    /* real path of /sys/class/input/eventN/device/device, "" unknown */
+    unsigned bus;
+    int display;        /* the owner's: the display it is bound to */
+    unsigned bind_gen;  /* the owner's: 0 unresolved */
 } fx_evdev;
 
 /* The evdev devices of one directory. The owner fills dir, grab, calib,

@@ -125,7 +125,7 @@ int fx_glm_normal_matrix(const fx_glm *m, fx32 n[9]);
 /* Unit vector in place (Q32.32); returns -1 for the zero vector. */
 int fx_glv3_normalize(fx32 v[3]);
 
-/* ---- lighting (GL 1.x fixed function, local viewer off) ---- */
+/* ---- lighting (GL 1.x fixed function) ---- */
 #define FX_GL_MAX_LIGHTS 8
 
 typedef struct fx_gl_light {
@@ -147,7 +147,8 @@ typedef struct fx_gl_material {
 typedef struct fx_gl_lighting {
     fx_gl_light light[FX_GL_MAX_LIGHTS];
     fx16 model_ambient[4];
-    int two_side;
+    int two_side;     /* the caller lights back faces (fx_gl_cvert.bc) */
+    int local_viewer; /* 0: the eye at (0, 0, +inf); 1: at the eye-space origin */
 } fx_gl_lighting;
 
 /* The colour of a vertex at eye position p (w = 1 or any w) with eye
@@ -155,7 +156,9 @@ typedef struct fx_gl_lighting {
  * clamped to [0, 1]: the sum of GL's equation
  *   e + a * A_global + sum_i att_i spot_i (a A_i + max(N.L, 0) d D_i
  *                                          + [N.L > 0] max(N.H, 0)^s s S_i)
- * with H = normalize(L + (0, 0, 1)); alpha is the material's diffuse alpha.
+ * with H = normalize(L + (0, 0, 1)), or normalize(L + normalize(-p)) with
+ * local_viewer; alpha is the material's diffuse alpha. Two-sided lighting
+ * is the caller's: the back colour is this with the back material and -n.
  * Shininess and spot exponents are rounded to 1/16 and the powers taken by
  * repeated squaring of the integer part times a 16-step interpolated root. */
 void fx_gl_shade(const fx_gl_lighting *L, const fx_gl_material *m, const fx32 p[4],
@@ -243,11 +246,14 @@ void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
 int64_t fx_gl_area2(const fx_gl_wvert *a, const fx_gl_wvert *b, const fx_gl_wvert *c);
 
 /* ---- clipping in clip space ---- */
-/* A clip-space vertex with the attributes that are interpolated. */
+/* A clip-space vertex with the attributes that are interpolated: bc is the
+ * back-face colour of two-sided lighting (the caller keeps it equal to c
+ * otherwise; the clipper interpolates it like c). */
 typedef struct fx_gl_cvert {
     fx_glv4 p;
     fx16 c[4];
     fx16 s, t;
+    fx16 bc[4];
 } fx_gl_cvert;
 
 /* The guard band: x and y are clipped at |x|, |y| <= g w (g chosen by the

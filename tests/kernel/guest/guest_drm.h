@@ -43,9 +43,15 @@ static int guest_second_card(char *conn0, char *conn1, char *detail, size_t n, i
     for (int t = 0; t < 50 && !ok; t++) {
         DIR *dir = opendir("/sys/class/drm");
         struct dirent *e;
+        /* a card with several (heads.c's two-head card1): its lowest
+         * numbered, whatever order readdir gives */
         while (dir && (e = readdir(dir)))
-            if (!strncmp(e->d_name, "card0-", 6) || !strncmp(e->d_name, "card1-", 6))
-                snprintf(e->d_name[4] == '0' ? conn0 : conn1, 32, "%s", e->d_name + 6);
+            if (!strncmp(e->d_name, "card0-", 6) || !strncmp(e->d_name, "card1-", 6)) {
+                char *c = e->d_name[4] == '0' ? conn0 : conn1;
+                const char *nd = strrchr(e->d_name, '-'), *od = strrchr(c, '-');
+                if (!c[0] || (nd && od && atoi(nd + 1) < atoi(od + 1)))
+                    snprintf(c, 32, "%s", e->d_name + 6);
+            }
         if (dir)
             closedir(dir);
         ok = access("/dev/dri/card1", F_OK) == 0 && conn0[0] && conn1[0];

@@ -268,30 +268,16 @@ static void on_touch(void *u, int id, int x, int y, int ph)
     rec_add(u, ph == 0 ? "down" : ph == 1 ? "move" : "up", x, y);
 }
 static void tw(struct libevdev_uinput *u, unsigned t, unsigned c, int v) { libevdev_uinput_write_event(u, t, c, v); }
-static void tap(struct libevdev_uinput *u, int x, int y)
-{
-    tw(u, EV_ABS, ABS_MT_SLOT, 0);
-    tw(u, EV_ABS, ABS_MT_TRACKING_ID, 11);
-    tw(u, EV_ABS, ABS_MT_POSITION_X, x);
-    tw(u, EV_ABS, ABS_MT_POSITION_Y, y);
-    tw(u, EV_ABS, ABS_X, x);
-    tw(u, EV_ABS, ABS_Y, y);
-    tw(u, EV_KEY, BTN_TOUCH, 1);
-    tw(u, EV_SYN, SYN_REPORT, 0);
-    tw(u, EV_ABS, ABS_MT_TRACKING_ID, -1);
-    tw(u, EV_KEY, BTN_TOUCH, 0);
-    tw(u, EV_SYN, SYN_REPORT, 0);
-}
 static void touch_step(void *u, int k)
 {
     struct rec *r = u;
     /* raw 0..4095 spans the physical 640x400 panel */
     if (k == 0)
-        tap(r->ts, 4095, 0);    /* the panel's top-right corner: the viewer's top-left */
+        uinput_tap(r->ts, 4095, 0);    /* the panel's top-right corner: the viewer's top-left */
     else if (k == 1)
-        tap(r->ts, 0, 4095);    /* bottom-left: the viewer's bottom-right */
+        uinput_tap(r->ts, 0, 4095);    /* bottom-left: the viewer's bottom-right */
     else if (k == 2)
-        tap(r->ts, 4095, 4095); /* bottom-right: the viewer's top-right */
+        uinput_tap(r->ts, 4095, 4095); /* bottom-right: the viewer's top-right */
     else
         fx_app_quit(r->app);
 }

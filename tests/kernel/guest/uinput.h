@@ -51,4 +51,19 @@ static struct libevdev_uinput *uinput_create(struct libevdev *d)
     return u;
 }
 
+/* One tap of slot 0 at raw (x, y) on a device set up by
+ * uinput_enable_multitouch: down with a tracking id, then up. */
+static void uinput_tap(struct libevdev_uinput *u, int x, int y) __attribute__((unused));
+static void uinput_tap(struct libevdev_uinput *u, int x, int y)
+{
+    static const unsigned type[] = {EV_ABS, EV_ABS, EV_ABS, EV_ABS, EV_ABS, EV_ABS, EV_KEY, EV_SYN,
+                                    EV_ABS, EV_KEY, EV_SYN};
+    static const unsigned code[] = {ABS_MT_SLOT, ABS_MT_TRACKING_ID, ABS_MT_POSITION_X, ABS_MT_POSITION_Y,
+                                    ABS_X, ABS_Y, BTN_TOUCH, SYN_REPORT, ABS_MT_TRACKING_ID, BTN_TOUCH,
+                                    SYN_REPORT};
+    const int value[] = {0, 11, x, y, x, y, 1, 0, -1, 0, 0};
+    for (int i = 0; i < 11; i++)
+        libevdev_uinput_write_event(u, type[i], code[i], value[i]);
+}
+
 #endif
