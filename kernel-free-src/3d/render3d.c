@@ -56,6 +56,7 @@ typedef struct tri_mode {
     uint8_t tex;         /* textured: attributes A_TEX.. carry s, t */
     uint8_t vcol;        /* Phong with vertex colours in A_VCOL.. */
     uint8_t solid;       /* solid texture from A_OBJ.. */
+    uint8_t bump;        /* Phong normals tilted by the bumps at A_OBJ.. */
     int32_t zbias;
     fx_color flat[2]; /* lit, shadowed */
     /* The texture and solid texture as they were when the triangle was
@@ -65,6 +66,9 @@ typedef struct tri_mode {
     uint8_t tex_mode;
     int8_t solid_kind;
     fx_color solid_c[2];
+    fx16 obj_scale;         /* A_OBJ holds the object point / obj_scale */
+    fx16 bump_h, bump_s;    /* fx3d_bump */
+    fx16 bnm[3][3];         /* the normal matrix, for the height's gradient */
 } tri_mode;
 
 typedef struct pctx { /* per-draw state */
@@ -399,6 +403,35 @@ void fx3d_solid(fx3d *r, int kind, fx_color c0, fx_color c1, fx16 scale)
     r->solid_scale = scale > 0 ? scale : FX16_ONE;
 }
 
+void fx3d_bump(fx3d *r, fx16 height, fx16 scale)
+{
+    r->bump = height > 0 ? FX_MIN(height, FX16_ONE) : 0;
+    r->bump_scale = FX_MIN(FX_MAX(scale, FX16_ONE / 16), 64 * FX16_ONE);
+}
+
+/* The eye-space normal N (unit) of a bumped surface at texture point A_OBJ:
+ * the height's object-space gradient goes to eye space like a normal (it
+ * is a covector), then N loses its tangential part. */
+static fx_vec3 bump_normal(const tri_mode *m, const int64_t *val, fx_vec3 N)
+{
+    int64_t q[3];
+    for (int i = 0; i < 3; i++) {
+        q[i] = val[1 + A_OBJ + i] >> 16;
+        if (m->obj_scale != m->bump_s) /* the solid texture's scale */
+            q[i] = q[i] * m->obj_scale / m->bump_s;
+    }
+    fx_vec3 g = fx_rt_bump_gradient(m->bump_h, m->bump_s, fx_vec3_make(fx_sat32(q[0]), fx_sat32(q[1]), fx_sat32(q[2])));
+    int64_t e[3];
+    for (int i = 0; i < 3; i++)
+        e[i] = ((int64_t)m->bnm[i][0] * g.x + (int64_t)m->bnm[i][1] * g.y + (int64_t)m->bnm[i][2] * g.z) >> 16;
+    int64_t gn = (e[0] * N.x + e[1] * N.y + e[2] * N.z) >> 16;
+    fx_vec3 o = fx_vec3_make(fx_sat32(N.x - e[0] + ((gn * N.x) >> 16)), fx_sat32(N.y - e[1] + ((gn * N.y) >> 16)),
+                             fx_sat32(N.z - e[2] + ((gn * N.z) >> 16)));
+    if (fx_vec3_normalize(&o) < 0)
+        return N;
+    return o;
+}
+
 void fx3d_plane_shadow(fx3d *r, const fx16 plane[4], int light, fx_color c)
 {
     for (int i = 0; i < 4; i++)
@@ -718,6 +751,8 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
                     fx_vec3 N = fx_vec3_make((fx16)(val[1] >> 16), (fx16)(val[2] >> 16), (fx16)(val[3] >> 16));
                     fx_vec3 P = fx_vec3_make((fx16)(val[4] >> 16), (fx16)(val[5] >> 16), (fx16)(val[6] >> 16));
                     fx_vec3_normalize(&N);
+                    if (m->bump)
+                        N = bump_normal(m, val, N);
                     fx3d_rgb vc = {(fx16)(val[1 + A_VCOL] >> 16), (fx16)(val[2 + A_VCOL] >> 16),
                                    (fx16)(val[3 + A_VCOL] >> 16)};
                     col = fx3d_rgb_to_color(shade_c(pc->r, pc->el, pc->nl, P, N, sh ? pc->sm->light : -1,
@@ -1105,6 +1140,18 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
             tm.solid_c[0] = r->solid_c0;
             tm.solid_c[1] = r->solid_c1;
         }
+        tm.obj_scale = r->solid_scale > 0 ? r->solid_scale : FX16_ONE;
+        if (r->bump > 0 && tm.kind == K_PHONG) {
+            tm.bump = 1;
+            tm.na = NA;
+            tm.bump_h = r->bump;
+            tm.bump_s = r->bump_scale;
+            if (!tm.solid)
+                tm.obj_scale = r->bump_scale;
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    tm.bnm[i][j] = nm.m[i][j];
+        }
     } else {
         tm.kind = K_FLAT;
         tm.use_sm = 0;
@@ -1153,10 +1200,10 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
             int flip = f < 0;
             if (flip)
                 fn = fx_vec3_make(-fn.x, -fn.y, -fn.z);
-            if (tm.solid)
+            if (tm.solid || tm.bump)
                 for (int i = 0; i < 3; i++) {
                     fx_vec3 o = m->pos[idx[i]];
-                    fx16 sc = r->solid_scale > 0 ? r->solid_scale : FX16_ONE;
+                    fx16 sc = tm.obj_scale;
                     v[i].a[A_OBJ] = fx_sat32((int64_t)o.x * 65536 / sc);
                     v[i].a[A_OBJ + 1] = fx_sat32((int64_t)o.y * 65536 / sc);
                     v[i].a[A_OBJ + 2] = fx_sat32((int64_t)o.z * 65536 / sc);

@@ -7,9 +7,10 @@
  * whether the line starts inside the solid: combining two lists is then a
  * merge along t that keeps the running inside/outside state of each side
  * and emits a hit wherever the combined state changes (the notes' union,
- * intersection and difference). The nearest visible hit is chosen only at
- * the top, so a ray that starts inside a CSG solid (refraction) sees it
- * exactly as one that starts outside. */
+ * intersection and difference). A traced ray's merges start at its tmin
+ * (crossings behind it only set the starting state), so a ray that starts
+ * inside a CSG solid (refraction) sees it exactly as one that starts
+ * outside, and an overflowing list keeps the crossings ahead of the ray. */
 #include "fixel/error.h"
 #include "rt_int.h"
 #include "../base/fx_internal.h"
@@ -26,6 +27,21 @@ void fx_rt_scene_init(fx_rt_scene *s, fx_rt_object *mem, int cap)
     s->cutoff = FX16_ONE / 256;
     fx_rt_set_camera(s, fx_vec3_make(0, 0, 5 * FX16_ONE), fx_vec3_make(0, 0, 0), fx_vec3_make(0, FX16_ONE, 0),
                      45 * FX16_ONE);
+}
+
+fx_rt_material fx_rt_material_make(fx_color ambient, fx_color diffuse, fx_color specular, int32_t shininess, fx16 kr,
+                                   fx16 kt, fx16 ior)
+{
+    fx_rt_material m;
+    __builtin_memset(&m, 0, sizeof m);
+    m.ambient = fx3d_rgb_from_color(ambient);
+    m.diffuse = fx3d_rgb_from_color(diffuse);
+    m.specular = fx3d_rgb_from_color(specular);
+    m.shininess = shininess;
+    m.reflectivity = kr;
+    m.transparency = kt;
+    m.ior = ior;
+    return m;
 }
 
 static int in_world(fx_vec3 p)
@@ -51,7 +67,7 @@ int fx_rt_add_light(fx_rt_scene *s, fx_vec3 pos, fx3d_rgb color, fx16 atten)
 {
     if (s->nlights >= FX_RT_MAX_LIGHTS)
         return -FX_ENOSPC;
-    if (!in_world(pos) || atten < 0)
+    if (!in_world(pos) || atten < 0 || atten > FX16_ONE)
         return -FX_EDOM;
     fx_rt_light *l = &s->light[s->nlights++];
     l->pos = pos;
@@ -124,7 +140,9 @@ int fx_rt_add_mesh(fx_rt_scene *s, const fx_rt_mesh *mesh, const fx_mat4 *m, con
 
 int fx_rt_add_shape(fx_rt_scene *s, fx_rt_kind kind, fx16 taper, const fx_mat4 *m, const fx_rt_material *mat)
 {
-    if (kind > FX_RT_CYLINDER || (kind == FX_RT_CYLINDER && (taper < 0 || taper > 2 * FX16_ONE)))
+    if ((kind > FX_RT_CYLINDER && kind != FX_RT_TORUS) ||
+        (kind == FX_RT_CYLINDER && (taper < 0 || taper > 2 * FX16_ONE)) ||
+        (kind == FX_RT_TORUS && (taper < FX16_ONE / 16 || taper > FX16_ONE)))
         return -FX_EINVAL;
     if (s->n >= s->cap)
         return -FX_ENOSPC;
@@ -135,9 +153,9 @@ int fx_rt_add_shape(fx_rt_scene *s, fx_rt_kind kind, fx16 taper, const fx_mat4 *
         for (int i = 0; i < 3; i++)
             b.lo[i] = (fx16)-WORLD, b.hi[i] = (fx16)WORLD;
     } else {
-        int64_t r = kind == FX_RT_CYLINDER && taper > FX16_ONE ? taper : ONE;
-        int64_t zlo = kind == FX_RT_CYLINDER || kind == FX_RT_SQUARE ? 0 : -ONE;
-        int64_t zhi = kind == FX_RT_SQUARE ? 0 : ONE;
+        int64_t r = kind == FX_RT_CYLINDER && taper > FX16_ONE ? taper : kind == FX_RT_TORUS ? ONE + taper : ONE;
+        int64_t zlo = kind == FX_RT_CYLINDER || kind == FX_RT_SQUARE ? 0 : kind == FX_RT_TORUS ? -taper : -ONE;
+        int64_t zhi = kind == FX_RT_SQUARE ? 0 : kind == FX_RT_TORUS ? taper : ONE;
         const int64_t lo[3] = {-r, -r, zlo}, hi[3] = {r, r, zhi};
         TRY(world_box(m, lo, hi, &b));
     }
@@ -146,7 +164,7 @@ int fx_rt_add_shape(fx_rt_scene *s, fx_rt_kind kind, fx16 taper, const fx_mat4 *
     o->kind = (uint8_t)kind;
     o->top = 1;
     o->left = o->right = -1;
-    o->taper = kind == FX_RT_CYLINDER ? taper : FX16_ONE;
+    o->taper = kind == FX_RT_CYLINDER || kind == FX_RT_TORUS ? taper : FX16_ONE;
     o->inv = inv;
     o->box = b;
     if (mat)
@@ -202,8 +220,12 @@ static int combine_state(int op, int a, int b)
     return op == FX_RT_UNION ? (a || b) : op == FX_RT_INTERSECTION ? (a && b) : (a && !b);
 }
 
-/* The notes' CSG merge: walk both sorted lists along t. */
-static void combine(int op, const fx_rt_hitlist *A, const fx_rt_hitlist *B, fx_rt_hitlist *out)
+/* The notes' CSG merge: walk both sorted lists along t. Crossings at or
+ * before tmin change the running state but are not emitted: the result
+ * starts at tmin (inside0 is the state there), so when a long list
+ * overflows, the crossings it keeps are the nearest ones *ahead* of the
+ * ray, not those behind its origin. */
+static void combine(int op, const fx_rt_hitlist *A, const fx_rt_hitlist *B, int64_t tmin, fx_rt_hitlist *out)
 {
     int ina = A->inside0, inb = B->inside0, in = combine_state(op, ina, inb);
     out->n = 0;
@@ -221,6 +243,10 @@ static void combine(int op, const fx_rt_hitlist *A, const fx_rt_hitlist *B, fx_r
         if (now == in)
             continue;
         in = now;
+        if (h.t <= tmin) {
+            out->inside0 = (uint8_t)now;
+            continue;
+        }
         if (out->n >= FX_RT_MAX_HITS) {
             out->overflow = 1;
             break;
@@ -256,7 +282,7 @@ static void hits_rec(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, int64_t 
     if (!a.n && !a.inside0 && o->kind != FX_RT_UNION)
         return;
     hits_rec(s, o->right, S, c, tmin, &b);
-    combine(o->kind, &a, &b, out);
+    combine(o->kind, &a, &b, tmin, out);
 }
 
 void fx_rt_hits(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
@@ -266,7 +292,7 @@ void fx_rt_hits(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, fx_rt_hitlist
         out->inside0 = out->overflow = 0;
         return;
     }
-    hits_rec(s, i, S, c, INT32_MIN, out);
+    hits_rec(s, i, S, c, INT64_MIN, out);
 }
 
 static fx_vec3 world_normal(const fx_rt_scene *s, const fx_rt_hit *h)

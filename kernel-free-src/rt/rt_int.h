@@ -6,6 +6,19 @@
 #include "fixel/rt.h"
 #include "../base/fx_wide.h"
 
+/* The 3D noise's lattice hash (fx_rt_noise3 takes its top 16 bits as the
+ * value at integer point (x, y, z)); the tests' double noise uses it too. */
+static inline uint32_t rt_hash3(int32_t x, int32_t y, int32_t z)
+{
+    uint32_t h = (uint32_t)x * 0x8DA6B343u ^ (uint32_t)y * 0xD8163841u ^ (uint32_t)z * 0xCB1AB31Fu;
+    h ^= h >> 15;
+    h *= 0x2C1B3C6Du;
+    h ^= h >> 12;
+    h *= 0x297A2D39u;
+    h ^= h >> 15;
+    return h;
+}
+
 /* Q16.16 saturation of a 64-bit value. */
 static inline fx16 rt_sat(int64_t v) { return v > INT32_MAX ? INT32_MAX : v < INT32_MIN ? INT32_MIN : (fx16)v; }
 /* a * b in Q16.16, rounded to nearest (ties up), from 64-bit operands whose

@@ -38,17 +38,6 @@ static fx3d_rgb rgb_lerp(fx3d_rgb a, fx3d_rgb b, fx16 w)
 
 /* ---- solid textures ---- */
 
-static uint32_t hash3(int32_t x, int32_t y, int32_t z)
-{
-    uint32_t h = (uint32_t)x * 0x8DA6B343u ^ (uint32_t)y * 0xD8163841u ^ (uint32_t)z * 0xCB1AB31Fu;
-    h ^= h >> 15;
-    h *= 0x2C1B3C6Du;
-    h ^= h >> 12;
-    h *= 0x297A2D39u;
-    h ^= h >> 15;
-    return h;
-}
-
 static int64_t smooth(int64_t f) { return rt_mul(rt_mul(f, f), 3 * ONE - 2 * f); } /* 3f^2 - 2f^3 */
 
 fx16 fx_rt_noise3(fx_vec3 p)
@@ -57,7 +46,7 @@ fx16 fx_rt_noise3(fx_vec3 p)
     int64_t fx = smooth(p.x & 0xFFFF), fy = smooth(p.y & 0xFFFF), fz = smooth(p.z & 0xFFFF);
     int64_t v[8];
     for (int k = 0; k < 8; k++)
-        v[k] = hash3(ix + (k & 1), iy + ((k >> 1) & 1), iz + ((k >> 2) & 1)) >> 16;
+        v[k] = rt_hash3(ix + (k & 1), iy + ((k >> 1) & 1), iz + ((k >> 2) & 1)) >> 16;
     int64_t x0 = v[0] + rt_mul(v[1] - v[0], fx), x1 = v[2] + rt_mul(v[3] - v[2], fx);
     int64_t x2 = v[4] + rt_mul(v[5] - v[4], fx), x3 = v[6] + rt_mul(v[7] - v[6], fx);
     int64_t y0 = x0 + rt_mul(x1 - x0, fy), y1 = x2 + rt_mul(x3 - x2, fy);
@@ -100,6 +89,58 @@ fx16 fx_rt_solid(int kind, fx_vec3 q)
         w = w < FX16_HALF ? 2 * w : 2 * (FX16_ONE - w);
     }
     return w;
+}
+
+static void bump_clamp(fx16 *height, fx16 *scale)
+{
+    if (*height > FX16_ONE)
+        *height = FX16_ONE;
+    if (*scale < FX16_ONE / 16)
+        *scale = FX16_ONE / 16;
+    if (*scale > 64 * FX16_ONE)
+        *scale = 64 * FX16_ONE;
+}
+
+fx_vec3 fx_rt_bump_gradient(fx16 height, fx16 scale, fx_vec3 q)
+{
+    if (height <= 0)
+        return fx_vec3_make(0, 0, 0);
+    bump_clamp(&height, &scale);
+    const fx16 dq = FX16_ONE >> 7;
+    int64_t g[3];
+    for (int i = 0; i < 3; i++) {
+        fx_vec3 a = q, b = q;
+        fx16 *pa = i == 0 ? &a.x : i == 1 ? &a.y : &a.z, *pb = i == 0 ? &b.x : i == 1 ? &b.y : &b.z;
+        *pa = (fx16)((uint32_t)*pa + (uint32_t)dq);
+        *pb = (fx16)((uint32_t)*pb - (uint32_t)dq);
+        /* d noise / d q in Q16.16 (|.| <= 1.5: lattice values in [0, 1),
+         * smoothstep slope at most 1.5), then times height / scale: the
+         * gradient per unit of P, at most 24 units (Q32 / Q16 = Q16).
+         * 2^-7 cells balances the stencil's truncation against the noise's
+         * rounding (2^-8 and 2^-6 were measured worse) */
+        int64_t d = ((int64_t)fx_rt_noise3(a) - fx_rt_noise3(b)) * 64;
+        g[i] = d * height / scale;
+    }
+    return fx_vec3_make((fx16)g[0], (fx16)g[1], (fx16)g[2]);
+}
+
+fx_vec3 fx_rt_bump_normal(fx16 height, fx16 scale, fx_vec3 P, fx_vec3 n)
+{
+    if (height <= 0)
+        return n;
+    bump_clamp(&height, &scale);
+    /* |P| <= 2^15 units saturated, / 1/16: q may saturate, which only
+     * repeats the noise (the lattice wraps) */
+    fx_vec3 q = fx_vec3_make(rt_sat((int64_t)P.x * 65536 / scale), rt_sat((int64_t)P.y * 65536 / scale),
+                             rt_sat((int64_t)P.z * 65536 / scale));
+    fx_vec3 gv = fx_rt_bump_gradient(height, scale, q);
+    const int64_t g[3] = {gv.x, gv.y, gv.z};
+    int64_t gn = rt_mul(g[0], n.x) + rt_mul(g[1], n.y) + rt_mul(g[2], n.z);
+    fx_vec3 o = fx_vec3_make(rt_sat(n.x - (g[0] - rt_mul(gn, n.x))), rt_sat(n.y - (g[1] - rt_mul(gn, n.y))),
+                             rt_sat(n.z - (g[2] - rt_mul(gn, n.z))));
+    if (fx_vec3_normalize(&o) < 0)
+        return n;
+    return o;
 }
 
 static fx3d_rgb texture(const fx_rt_material *m, fx_vec3 P)
@@ -145,8 +186,8 @@ static void say(const tracer *tr, int depth, const char *what, const char *name,
 
 static const char *kind_name(int k)
 {
-    static const char *const names[] = {"sphere", "cube", "square", "plane", "cylinder", "mesh"};
-    return k >= 0 && k <= FX_RT_MESH ? names[k] : "?";
+    static const char *const names[] = {"sphere", "cube", "square", "plane", "cylinder", "mesh", "torus"};
+    return k >= 0 && k <= FX_RT_TORUS ? names[k] : "?";
 }
 
 static fx16 dot(fx_vec3 a, fx_vec3 b) { return fx_vec3_dot(a, b); }
@@ -185,6 +226,17 @@ static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 we
         fx_fmt(line, sizeof line, "%s%s at", what, tb);
         say(tr, depth, line, 0, 6, v + 1);
     }
+    if (mat->bump > 0) {
+        /* a bump tilted past the ray's grazing angle would face away from
+         * it (reflection into the surface): keep the smooth normal there */
+        fx_vec3 b = fx_rt_bump_normal(mat->bump, mat->bump_scale, P, m);
+        if (dot(c, b) < 0)
+            m = b;
+        if (tr->trace) {
+            fx16 v[3] = {m.x, m.y, m.z};
+            say(tr, depth, "  bumped normal", 0, 3, v);
+        }
+    }
     fx3d_rgb diff = texture(mat, P);
     fx3d_rgb Iamb = rgb_mul(s->ambient, mat->ambient), Idiff = rgb(0, 0, 0), Ispec = rgb(0, 0, 0);
     for (int li = 0; li < s->nlights; li++) {
@@ -207,8 +259,13 @@ static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 we
             }
             continue;
         }
-        int64_t d2 = ((int64_t)dist * dist) >> 16; /* Q16.16, may exceed int32 */
-        int64_t den = ONE + rt_mul(L->atten, d2);
+        /* Q16.16, may exceed int32 (< 2^34 within the world, < 2^46 for
+         * any dist an fx16 holds). k is capped at 1 as fx_rt_add_light
+         * does, for lights written into the struct directly: the product
+         * k d^2 then stays below 2^62 */
+        int64_t d2 = ((int64_t)dist * dist) >> 16;
+        int64_t k = L->atten < 0 ? 0 : L->atten > FX16_ONE ? FX16_ONE : L->atten;
+        int64_t den = ONE + rt_mul(k, d2);
         fx16 att = (fx16)((ONE << 16) / den);
         if (tr->trace) {
             char what[64];

@@ -665,6 +665,27 @@ static int cmd_solid3d(fx_scene *sc)
     return 0;
 }
 
+static int cmd_bump3d(fx_scene *sc)
+{
+    GET(s);
+    fx16 h = 0, scale = FX16_ONE;
+    int i = sc->pos;
+    while (i < sc->len && (sc->text[i] == ' ' || sc->text[i] == '\t'))
+        i++;
+    if (i < sc->len && sc->text[i] == 'o') {
+        static const char *const off[] = {"off", NULL};
+        TRY(fx_scene_arg_choice(sc, off));
+    } else {
+        TRY(fx_scene_arg_fx16(sc, &h));
+        TRY(fx_scene_arg_fx16(sc, &scale));
+        if (h < 0 || h > FX16_ONE || scale < FX16_ONE / 16 || scale > 64 * FX16_ONE)
+            return fx_scene_error(sc, "bump3d: HEIGHT 0..1, SCALE 0.0625..64");
+    }
+    TRY(fx_scene_end(sc));
+    fx3d_bump(&s->r, h, scale);
+    return 0;
+}
+
 /* Bind the 2D module's current texture (the 'texture' command) to the
  * meshes drawn next; later 'texture filter|wrap' lines apply to it too. */
 static int cmd_texture3d(fx_scene *sc)
@@ -807,6 +828,7 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
     {"polygon3d", cmd_polygon3d, "polygon3d X0 Y0 Z0 #C0 X1 Y1 Z1 #C1 X2 Y2 Z2 #C2 ... (convex, <= 16)", D},
     {"texgen", cmd_texgen, "texgen sphere|off", D},
     {"solid3d", cmd_solid3d, "solid3d wood|marble|checker #C0 #C1 SCALE | solid3d off", D},
+    {"bump3d", cmd_bump3d, "bump3d HEIGHT SCALE | bump3d off", D},
     {"attenuation", cmd_attenuation, "attenuation LIGHT KC KL KQ", D},
     {"texture3d", cmd_texture3d, "texture3d modulate|replace|decal | texture3d off", D},
     {"shadowmap", cmd_shadowmap, "shadowmap begin SIZE LIGHT TX TY TZ FOV NEAR FAR | shadowmap end | shadowmap off", D},

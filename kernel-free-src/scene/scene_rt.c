@@ -79,6 +79,8 @@ static int cmd_light(fx_scene *sc)
     int e = fx_rt_add_light(&r->s, v3(v), fx3d_rgb_from_color(c), att);
     if (e == -FX_ENOSPC)
         return fx_scene_error(sc, "rtlight: at most %d lights", FX_RT_MAX_LIGHTS);
+    if (e < 0 && (att < 0 || att > FX16_ONE))
+        return fx_scene_error(sc, "rtlight: ATTEN 0..1");
     return e < 0 ? fx_scene_error(sc, "rtlight: position outside the scene limit") : 0;
 }
 
@@ -148,6 +150,27 @@ static int cmd_texture(fx_scene *sc)
     r->mat.texture = (fx_rt_texture)t;
     r->mat.tex_color = fx3d_rgb_from_color(c);
     r->mat.tex_scale = scale;
+    return 0;
+}
+
+static int cmd_bump(fx_scene *sc)
+{
+    GET(r);
+    static const char *const none[] = {"none", NULL};
+    fx16 k[2] = {0, FX16_ONE};
+    int i = sc->pos;
+    while (i < sc->len && (sc->text[i] == ' ' || sc->text[i] == '\t'))
+        i++;
+    if (i < sc->len && sc->text[i] == 'n') {
+        TRY(fx_scene_arg_choice(sc, none));
+    } else {
+        TRY(fxs(sc, k, 2));
+        if (k[0] < 0 || k[0] > FX16_ONE || k[1] < FX16_ONE / 16 || k[1] > 64 * FX16_ONE)
+            return fx_scene_error(sc, "rtbump: HEIGHT 0..1, SCALE 0.0625..64");
+    }
+    TRY(fx_scene_end(sc));
+    r->mat.bump = k[0];
+    r->mat.bump_scale = k[1];
     return 0;
 }
 
@@ -238,14 +261,14 @@ static int cmd_rotate(fx_scene *sc)
 static int cmd_shape(fx_scene *sc)
 {
     GET(r);
-    static const char *const ch[] = {"sphere", "cube", "square", "plane", "cylinder", "cone", "taper", NULL};
+    static const char *const ch[] = {"sphere", "cube", "square", "plane", "cylinder", "cone", "taper", "torus", NULL};
     int k;
     TRY(k = fx_scene_arg_choice(sc, ch));
     fx16 s = k == 5 ? 0 : FX16_ONE;
-    if (k == 6)
+    if (k >= 6)
         TRY(fx_scene_arg_fx16(sc, &s));
     TRY(fx_scene_end(sc));
-    fx_rt_kind kind = k >= 4 ? FX_RT_CYLINDER : (fx_rt_kind)k;
+    fx_rt_kind kind = k == 7 ? FX_RT_TORUS : k >= 4 ? FX_RT_CYLINDER : (fx_rt_kind)k;
     int e = fx_rt_add_shape(&r->s, kind, s, &r->stack[r->top], &r->mat);
     if (e == -FX_ENOSPC)
         return fx_scene_error(sc, "rtshape: at most %d objects", RT_OBJECTS);
@@ -253,6 +276,8 @@ static int cmd_shape(fx_scene *sc)
         return fx_scene_error(sc, "rtshape: the transform is singular or scales an axis below 1/16");
     if (e == -FX_ERANGE)
         return fx_scene_error(sc, "rtshape: the shape leaves the scene limit (+-%d units)", FX_RT_WORLD);
+    if (e < 0 && kind == FX_RT_TORUS)
+        return fx_scene_error(sc, "rtshape: torus tube radius r 0.0625..1");
     return e < 0 ? fx_scene_error(sc, "rtshape: TAPER 0..2") : 0;
 }
 
@@ -345,6 +370,10 @@ static int cmd_raytrace(fx_scene *sc)
         for (int i = 0; i < 4; i++)
             TRY(fx_scene_arg_int(sc, &v[i]));
     TRY(fx_scene_end(sc));
+    if (sc->raytrace) {
+        int e = sc->raytrace(sc->host.user, &r->s, &sc->ctx.surf, v[0], v[1], v[2], v[3]);
+        return e < 0 ? fx_scene_error(sc, "raytrace: the host's renderer failed (%d)", e) : 0;
+    }
     fx_rt_render(&r->s, &sc->ctx.surf, v[0], v[1], v[2], v[3]);
     return 0;
 }
@@ -381,6 +410,7 @@ const fx_scene_cmd fx_scene_cmds_rt[] = {
     {"rtbackground", cmd_background, "rtbackground #RGB", D},
     {"rtmaterial", cmd_material, "rtmaterial #AMB #DIFF #SPEC SHININESS [REFLECT TRANSP IOR]", D},
     {"rttexture", cmd_texture, "rttexture none | wood|marble|checker #RGB SCALE", D},
+    {"rtbump", cmd_bump, "rtbump none | rtbump HEIGHT SCALE", D},
     {"rtdepth", cmd_depth, "rtdepth DEPTH [CUTOFF]", D},
     {"rtidentity", cmd_identity, "rtidentity", D},
     {"rtpush", cmd_push, "rtpush", D},
@@ -388,7 +418,7 @@ const fx_scene_cmd fx_scene_cmds_rt[] = {
     {"rttranslate", cmd_translate, "rttranslate X Y Z", D},
     {"rtscale", cmd_scale, "rtscale SX SY SZ", D},
     {"rtrotate", cmd_rotate, "rtrotate DEG AX AY AZ", D},
-    {"rtshape", cmd_shape, "rtshape sphere|cube|square|plane|cylinder|cone | rtshape taper S", D},
+    {"rtshape", cmd_shape, "rtshape sphere|cube|square|plane|cylinder|cone | rtshape taper S | rtshape torus r", D},
     {"rtmesh", cmd_mesh, "rtmesh teapot N | rtmesh torus R r SIDES RINGS | rtmesh obj \"FILE\"", D},
     {"rtcsg", cmd_csg, "rtcsg union|intersection|difference", D},
     {"raytrace", cmd_raytrace, "raytrace [X Y W H]", D},

@@ -42,29 +42,82 @@ static void on_rows(void *u, int32_t y0, int32_t y1)
             r->count[y]++;
 }
 
-FX_TEST(rt_mt_threads_make_the_one_thread_picture)
-{
+enum { W = 50, H = 61 };
+
+/* the scene, the one-thread picture a and the threaded one b */
+typedef struct rig {
     fx_rt_object mem[4];
     fx_rt_scene s;
-    scene(&s, mem);
-    enum { W = 50, H = 61 };
-    static uint32_t a[W * H], b[W * H];
+    uint32_t a[W * H], b[W * H];
     fx_surface sa, sb;
-    fx_surface_init(&sa, a, W, H, W * 4, FX_FMT_XRGB8888);
-    fx_surface_init(&sb, b, W, H, W * 4, FX_FMT_XRGB8888);
-    fx_rt_render(&s, &sa, 0, 0, W, H);
+} rig;
+
+static rig *rig_new(void)
+{
+    static rig g;
+    memset(&g, 0, sizeof g);
+    scene(&g.s, g.mem);
+    fx_surface_init(&g.sa, g.a, W, H, W * 4, FX_FMT_XRGB8888);
+    fx_surface_init(&g.sb, g.b, W, H, W * 4, FX_FMT_XRGB8888);
+    return &g;
+}
+
+FX_TEST(rt_mt_threads_make_the_one_thread_picture)
+{
+    rig *g = rig_new();
+    fx_rt_scene *s = &g->s;
+    uint32_t *a = g->a, *b = g->b;
+    const fx_surface *sa = &g->sa, *sb = &g->sb;
+    fx_rt_render(s, sa, 0, 0, W, H);
     for (int n = 1; n <= 4; n++) {
-        memset(b, 0, sizeof b);
+        memset(b, 0, sizeof g->b);
         rows r;
         memset(&r, 0, sizeof r);
-        FX_CHECK_EQ(fx_rt_render_mt(&s, &sb, n, 3, on_rows, &r), 0);
-        FX_CHECK(memcmp(a, b, sizeof a) == 0);
+        FX_CHECK_EQ(fx_rt_render_mt(s, sb, n, 3, on_rows, &r), 0);
+        FX_CHECK(memcmp(a, b, sizeof g->a) == 0);
         for (int y = 0; y < H; y++)
             FX_CHECK_EQ(r.count[y], 1);
         FX_CHECK_EQ(r.calls, (H + 2) / 3);
     }
-    FX_CHECK_EQ(fx_rt_render_mt(&s, &sb, 0, 0, 0, 0), -FX_EINVAL);
-    FX_CHECK_EQ(fx_rt_render_mt(&s, &sb, 65, 0, 0, 0), -FX_EINVAL);
-    FX_CHECK_EQ(fx_rt_render_mt(&s, &sb, 2, H + 1, 0, 0), -FX_EINVAL);
+    FX_CHECK_EQ(fx_rt_render_mt(s, sb, 0, 0, 0, 0), -FX_EINVAL);
+    FX_CHECK_EQ(fx_rt_render_mt(s, sb, 65, 0, 0, 0), -FX_EINVAL);
+    FX_CHECK_EQ(fx_rt_render_mt(s, sb, 2, H + 1, 0, 0), -FX_EINVAL);
     FX_CHECK(fx_rt_cpu_count() >= 1);
+}
+
+FX_TEST(rt_mt_rectangle_is_the_one_thread_tile)
+{
+    /* 'raytrace X Y W H' through the host's threads: the tile fx_rt_render
+     * draws, nothing outside it, each of its rows reported once; a tile
+     * hanging over the surface's edge is clipped */
+    rig *g = rig_new();
+    fx_rt_scene *s = &g->s;
+    uint32_t *a = g->a, *b = g->b;
+    const fx_surface *sa = &g->sa, *sb = &g->sb;
+    const int32_t rect[2][4] = {{7, 5, 31, 40}, {-9, 30, 100, 100}};
+    for (int k = 0; k < 2; k++) {
+        const int32_t *q = rect[k];
+        for (int i = 0; i < W * H; i++)
+            a[i] = b[i] = 0xFF123456u;
+        fx_rt_render(s, sa, q[0], q[1], q[2], q[3]);
+        for (int n = 1; n <= 3; n++) {
+            rows r;
+            memset(&r, 0, sizeof r);
+            FX_CHECK_EQ(fx_rt_render_rect_mt(s, sb, q[0], q[1], q[2], q[3], n, 4, on_rows, &r), 0);
+            FX_CHECK(memcmp(a, b, sizeof g->a) == 0);
+            int y1 = q[1] + q[3] < H ? q[1] + q[3] : H;
+            for (int y = 0; y < H; y++)
+                FX_CHECK_EQ(r.count[y], y >= q[1] && y < y1);
+        }
+    }
+    /* the last tile (rows 30..) was drawn over the fill, the rows above not */
+    FX_CHECK(a[45 * W + 20] != 0xFF123456u);
+    FX_CHECK_EQ(a[0], 0xFF123456u);
+    /* empty and off-surface rectangles draw nothing */
+    rows r;
+    memset(&r, 0, sizeof r);
+    FX_CHECK_EQ(fx_rt_render_rect_mt(s, sb, 0, 0, 0, 10, 2, 0, on_rows, &r), 0);
+    FX_CHECK_EQ(fx_rt_render_rect_mt(s, sb, W, 0, 10, 10, 2, 0, on_rows, &r), 0);
+    FX_CHECK_EQ(r.calls, 0);
+    FX_CHECK_EQ(fx_rt_render_rect_mt(s, sb, 0, 0, W, H, 0, 0, 0, 0), -FX_EINVAL);
 }

@@ -67,6 +67,16 @@ int demo_key(demo_state *st, int key);
 void demo_vsd_page(fx_ctx *c, demo_state *st, int32_t top);
 int demo_vsd_key(demo_state *st, int key);
 
+/* the ray-tracing page (page_rt.c); busy while a display's picture is
+ * still being traced row by row */
+#define DEMO_RT_X 8 /* the traced picture on the page */
+#define DEMO_RT_Y (DEMO_TAB_H + 8)
+#define DEMO_RT_W 784
+#define DEMO_RT_H 408
+void demo_rt_page(fx_ctx *c, demo_state *st, int32_t top);
+int demo_rt_key(demo_state *st, int key);
+int demo_rt_busy(const demo_state *st);
+
 /* helpers */
 void demo_text(const fx_ctx *c, int32_t x, int32_t y, fx_color col, const char *fmt, ...)
     __attribute__((format(printf, 5, 6)));

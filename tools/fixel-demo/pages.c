@@ -809,6 +809,8 @@ static void page_viz(fx_ctx *c, demo_state *st)
 
 static void page_vsd(fx_ctx *c, demo_state *st) { demo_vsd_page(c, st, DEMO_TAB_H + 8); }
 
+static void page_rt(fx_ctx *c, demo_state *st) { demo_rt_page(c, st, DEMO_RT_Y); }
+
 const demo_page demo_pages[] = {
     {"lines", "Lines", page_lines},
     {"circles", "Circles", page_circles},
@@ -822,10 +824,11 @@ const demo_page demo_pages[] = {
     {"fractals", "Fractals", page_fractals},
     {"viz", "Viz", page_viz},
     {"glut", "GLUT", demo_page_glut},
+    {"raytrace", "Ray trace", page_rt},
 };
 const int demo_npages = (int)(sizeof demo_pages / sizeof demo_pages[0]);
-/* Every page has a tab: twelve 66-pixel tabs still hold the longest label
- * ("Transforms", 60 px) at 800 px. */
+/* Every page has a tab: thirteen 61-pixel tabs still hold the longest
+ * label ("Transforms", 60 px) at 800 px. */
 const int demo_ntabs = (int)(sizeof demo_pages / sizeof demo_pages[0]);
 
 void demo_state_init(demo_state *st, int32_t w, int32_t h)
@@ -966,6 +969,8 @@ int demo_key(demo_state *st, int key)
     }
     if (!strcmp(name, "vsd"))
         return demo_vsd_key(st, key);
+    if (!strcmp(name, "raytrace"))
+        return demo_rt_key(st, key);
     if (!strcmp(name, "3d")) {
         fx16 d = FX16_ONE / 4;
         fx_angle a = FX_ANGLE_45 / 9;

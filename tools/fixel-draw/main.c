@@ -18,6 +18,7 @@
 #include "fixel/env.h"
 #include "fixel/error.h"
 #include "fixel/memfb.h"
+#include "fixel/rt_mt.h"
 #include "fixel/scene.h"
 
 static const char usage[] =
@@ -28,6 +29,8 @@ static const char usage[] =
     "  -s WxH       surface size, overriding the script's 'size'\n"
     "  -f FORMAT    pixel format, overriding the script's 'format'\n"
     "  --trace      print each algorithm's steps (decision tables) on stdout\n"
+    "  -j N         ray trace ('raytrace') on N threads (default: every core; same pixels);\n"
+    "               with --display the rows appear as they finish\n"
     "  --commands   list every script command and exit\n"
     "  --display    show the result on the display (DRM, fbdev) instead of writing a file;\n"
     "               with the script on stdin ('-') lines run as they arrive and a line\n"
@@ -39,6 +42,8 @@ static const char usage[] =
 typedef struct host {
     fx_memfb fb;
     int have_fb;
+    int threads; /* for 'raytrace' */
+    int display; /* --display: show ray-traced rows as they finish */
     struct loaded {
         uint8_t *data;
         struct loaded *next;
@@ -323,6 +328,48 @@ static void hold_key(void *u, unsigned char k, int x, int y)
     if (k == 'q' || k == 27) fx_app_quit(g_app);
 }
 
+/* 'raytrace' on the host's threads (boards/posix/rt_mt.c): the same pixels
+ * as the core's one-thread fx_rt_render. On a display each finished band
+ * is copied to the screen as it comes (the rows are final: no thread
+ * writes them again), and the screen is presented at most every 40 ms, so
+ * the picture builds up while the threads work. */
+typedef struct rt_show {
+    const fx_surface *src;
+    fx_surface dst;
+    long long last;
+} rt_show;
+
+static long long now_ms(void);
+
+static void rt_rows(void *u, int32_t y0, int32_t y1)
+{
+    rt_show *v = u;
+    fx_surface band;
+    if (fx_surface_init(&band, v->src->pixels + (ptrdiff_t)y0 * v->src->stride, v->src->w, y1 - y0,
+                        v->src->stride, v->src->format) < 0)
+        return;
+    fx_blit(&v->dst, 0, y0, &band);
+    long long t = now_ms();
+    if (t - v->last >= 40) {
+        fx_app_present(g_app, NULL, 0);
+        v->last = t;
+    }
+}
+
+static int host_raytrace(void *u, const struct fx_rt_scene *s, const fx_surface *surf, int32_t x, int32_t y,
+                         int32_t w, int32_t h)
+{
+    host *H = u;
+    if (H->display && !g_app)
+        show(surf); /* opens the display, showing what the script drew so far */
+    if (!H->display || !g_app)
+        return fx_rt_render_rect_mt(s, surf, x, y, w, h, H->threads, 0, NULL, NULL);
+    rt_show v = {surf, fx_app_surface(g_app), now_ms()};
+    int r = fx_rt_render_rect_mt(s, surf, x, y, w, h, H->threads, 0, rt_rows, &v);
+    fx_app_present(g_app, NULL, 0);
+    return r;
+}
+
 /* Per-line progress on stderr for long renders, only on a terminal and only
  * once a script has run for a while, so pipes and tests stay quiet. */
 static long long now_ms(void)
@@ -445,7 +492,7 @@ static void list_commands(void)
 int main(int argc, char **argv)
 {
     const char *out = "out.png", *script = "-";
-    int trace = 0, w = 0, h = 0, display = 0, hold = 0;
+    int trace = 0, w = 0, h = 0, display = 0, hold = 0, threads = 0;
     fx_format fmt = FX_FMT_COUNT;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -461,6 +508,12 @@ int main(int argc, char **argv)
             hold = 1;
         } else if (!strcmp(a, "--trace")) {
             trace = 1;
+        } else if (!strcmp(a, "-j") && i + 1 < argc) {
+            char extra;
+            if (sscanf(argv[++i], "%d%c", &threads, &extra) != 1 || threads < 1 || threads > 64) {
+                fprintf(stderr, "fixel-draw: bad thread count '%s' (expected 1..64)\n", argv[i]);
+                return 2;
+            }
         } else if (!strcmp(a, "-o") && i + 1 < argc) {
             out = argv[++i];
             /* fx_write_image writes PNG unless the name ends in .ppm: a name
@@ -514,6 +567,8 @@ int main(int argc, char **argv)
 
     host H;
     memset(&H, 0, sizeof H);
+    H.threads = threads ? threads : fx_rt_cpu_count();
+    H.display = display;
     fx_scene_host hs = {&H, make_surface, load_file, NULL, trace ? trace_line : NULL, load_image};
     size_t arena_size = (size_t)128 << 20;
     void *arena = malloc(arena_size);
@@ -523,6 +578,7 @@ int main(int argc, char **argv)
     }
     static fx_scene sc;
     fx_scene_init(&sc, &hs, arena, arena_size);
+    sc.raytrace = host_raytrace;
     if (w)
         fx_scene_fix_size(&sc, w, h);
     if (fmt != FX_FMT_COUNT)

@@ -27,6 +27,13 @@ typedef void (*fx_rt_rows_fn)(void *user, int32_t y0, int32_t y1);
 int fx_rt_render_mt(const fx_rt_scene *s, const fx_surface *surf, int nthreads, int32_t band_rows,
                     fx_rt_rows_fn done, void *user);
 
+/* The same for the rectangle [x, x + w) x [y, y + h) only, clipped to the
+ * surface (the 'raytrace X Y W H' tile): bands are rows of the clipped
+ * rectangle, done gets surface rows. band_rows 0 picks 4; a band taller
+ * than the rectangle is one band. Returns as fx_rt_render_mt. */
+int fx_rt_render_rect_mt(const fx_rt_scene *s, const fx_surface *surf, int32_t x, int32_t y, int32_t w, int32_t h,
+                         int nthreads, int32_t band_rows, fx_rt_rows_fn done, void *user);
+
 /* The number of online CPUs (at least 1): the thread count for "all cores". */
 int fx_rt_cpu_count(void);
 

@@ -166,6 +166,7 @@ typedef struct fx3d {
     fx_color solid_c0, solid_c1;
     fx16 solid_scale;
     int tex_sphere_map;        /* fx3d_sphere_map */
+    fx16 bump, bump_scale;     /* fx3d_bump */
 } fx3d;
 
 /* A pipeline on surface s: viewport = whole surface, identity matrices,
@@ -233,6 +234,14 @@ void fx3d_sphere_map(fx3d *r, int on);
  * screen space like Phong's eye position (affine, not perspective
  * corrected), on FX3D_FILL meshes. */
 void fx3d_solid(fx3d *r, int kind, fx_color c0, fx_color c1, fx16 scale);
+/* Bump mapping under Phong shading (FX3D_PHONG; other shadings ignore it):
+ * the surface is lit as if displaced along its normal by
+ * height * noise3(P / scale), P the object-space point, the ray tracer's
+ * bumps (fx_rt_bump_gradient): the interpolated eye-space normal is tilted
+ * against the tangential part of the height's gradient, taken to eye space
+ * by the normal matrix. height 0 (or <= 0) turns it off; height 0..1,
+ * scale 1/16..64 object units per noise cell (clamped). */
+void fx3d_bump(fx3d *r, fx16 height, fx16 scale);
 
 /* Draw a mesh with the current state. Returns 0 or a negative error. */
 int fx3d_draw(fx3d *r, const fx_mesh *m);

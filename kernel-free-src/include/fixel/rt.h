@@ -57,6 +57,7 @@ typedef enum fx_rt_kind {
     FX_RT_PLANE,    /* the half-space z <= 0 */
     FX_RT_CYLINDER, /* tapered: x^2 + y^2 <= (1 + (s - 1) z)^2, 0 <= z <= 1 */
     FX_RT_MESH,     /* triangles through a BVH (fx_rt_mesh); a surface, no inside */
+    FX_RT_TORUS,    /* (x^2 + y^2 + z^2 + 1 - r^2)^2 <= 4 (x^2 + y^2): ring radius 1 about z, tube r */
     FX_RT_UNION,
     FX_RT_INTERSECTION,
     FX_RT_DIFFERENCE
@@ -73,7 +74,15 @@ typedef struct fx_rt_material {
     fx_rt_texture texture;
     fx3d_rgb tex_color; /* second colour of a texture (the first is diffuse) */
     fx16 tex_scale;     /* world units per texture unit */
+    fx16 bump;          /* bump height, world units 0..1 (0: smooth; fx_rt_bump_normal) */
+    fx16 bump_scale;    /* world units per noise cell of the bumps, 1/16..64 */
 } fx_rt_material;
+
+/* A material with no texture and no bumps: ambient, diffuse and specular
+ * colours, Phong exponent (0..256), reflectivity kr and transparency kt
+ * (0..1) and index of refraction (1..4). */
+fx_rt_material fx_rt_material_make(fx_color ambient, fx_color diffuse, fx_color specular, int32_t shininess, fx16 kr,
+                                   fx16 kt, fx16 ior);
 
 typedef struct fx_rt_box {
     fx16 lo[3], hi[3];
@@ -107,7 +116,7 @@ typedef struct fx_rt_object {
     uint8_t kind;       /* fx_rt_kind */
     uint8_t top;        /* 1: part of the scene (not inside a CSG node) */
     int16_t left, right; /* children of a CSG node */
-    fx16 taper;         /* s of a tapered cylinder (1 = cylinder, 0 = cone) */
+    fx16 taper;         /* s of a tapered cylinder (1 = cylinder, 0 = cone); r of a torus */
     fx_mat4 inv;        /* world -> object */
     fx_rt_box box;      /* world bounding box */
     fx_rt_material mat; /* leaves */
@@ -117,7 +126,7 @@ typedef struct fx_rt_object {
 typedef struct fx_rt_light {
     fx_vec3 pos;
     fx3d_rgb color;
-    fx16 atten; /* k of 1 / (1 + k d^2); 0: none */
+    fx16 atten; /* k of 1 / (1 + k d^2), 0..1 (larger is taken as 1); 0: none */
 } fx_rt_light;
 
 typedef struct fx_rt_scene {
@@ -137,12 +146,16 @@ typedef struct fx_rt_scene {
 void fx_rt_scene_init(fx_rt_scene *s, fx_rt_object *mem, int cap);
 /* Camera: eye, look, up as fx_camera_set; fovy in degrees (1..179). */
 int fx_rt_set_camera(fx_rt_scene *s, fx_vec3 eye, fx_vec3 look, fx_vec3 up, fx16 fovy_deg);
+/* A point light within the scene-scale limit, attenuation k of
+ * 1 / (1 + k d^2) in 0..1 (d in world units); -FX_EDOM otherwise,
+ * -FX_ENOSPC beyond FX_RT_MAX_LIGHTS. Returns its index. */
 int fx_rt_add_light(fx_rt_scene *s, fx_vec3 pos, fx3d_rgb color, fx16 atten);
 
 /* Add a shape placed by the object-to-world matrix m. Returns its index,
  * -FX_ENOSPC when the array is full, -FX_EDOM when m is singular or
  * scales an axis below 1/16, -FX_ERANGE when its bounds leave the
- * scene-scale limit, -FX_EINVAL for a bad kind or taper (0..2). */
+ * scene-scale limit, -FX_EINVAL for a bad kind or taper (0..2). For
+ * FX_RT_TORUS, taper is the tube radius r, 1/16..1. */
 int fx_rt_add_shape(fx_rt_scene *s, fx_rt_kind kind, fx16 taper, const fx_mat4 *m, const fx_rt_material *mat);
 /* Add a mesh (built by fx_rt_mesh_build) placed by m; errors as
  * fx_rt_add_shape. A mesh is a surface: along a ray it reports its nearest
@@ -197,6 +210,16 @@ fx16 fx_rt_turbulence3(fx_vec3 p, int octaves);
  * noise, MARBLE turbulent stripes across x, CHECKER unit cubes, NONE 0.
  * The ray tracer and the rasterizer (fx3d_solid) both colour with it. */
 fx16 fx_rt_solid(int kind, fx_vec3 q);
+/* Bump mapping (Blinn): the unit normal n at point P of a surface displaced
+ * along n by height * noise3(P / scale). The normal is tilted against the
+ * tangential part of the height's gradient (central differences of
+ * fx_rt_noise3, 2^-7 cells apart) and normalised again. height 0..1,
+ * scale 1/16..64 (clamped); height 0 returns n. */
+fx_vec3 fx_rt_bump_normal(fx16 height, fx16 scale, fx_vec3 P, fx_vec3 n);
+/* The gradient of that height field, height * noise3(q) with q = P / scale,
+ * taken with respect to P (so times height / scale), at texture point q;
+ * each component within +-24 units. The rasterizer's bumps use it. */
+fx_vec3 fx_rt_bump_gradient(fx16 height, fx16 scale, fx_vec3 q);
 
 #ifdef __cplusplus
 }  /* extern "C" */

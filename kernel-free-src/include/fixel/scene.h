@@ -21,6 +21,8 @@
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
 
+struct fx_rt_scene; /* fixel/rt.h */
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -44,6 +46,13 @@ typedef struct fx_scene_host {
      * image commands fail with "images not available". */
     int (*load_image)(void *user, const char *path, fx_surface *out);
 } fx_scene_host;
+
+/* Render the ray-traced rectangle [x, x + w) x [y, y + h) of surf (the
+ * 'raytrace' command; clipped to surf) with the pixels fx_rt_render would
+ * leave, but where the host likes: on several threads, showing rows as
+ * they finish. user is the host's. Returns 0 or a negative error. */
+typedef int (*fx_scene_raytrace_fn)(void *user, const struct fx_rt_scene *s, const fx_surface *surf, int32_t x,
+                                    int32_t y, int32_t w, int32_t h);
 
 /* Per-module state lives in the arena, found through these slots. */
 enum {
@@ -70,6 +79,10 @@ struct fx_scene {
     int32_t w, h;
     fx_format format;
     uint8_t size_fixed, format_fixed; /* set by the host: script 'size'/'format' ignored */
+    /* set by the host after fx_scene_init (kept out of fx_scene_host so
+     * its initialisers stay as they are); NULL: the core ray traces on the
+     * calling thread */
+    fx_scene_raytrace_fn raytrace;
     /* arena */
     uint8_t *arena;
     size_t arena_size, arena_used;
