@@ -567,7 +567,7 @@ static void arm(fx_app *a, uint64_t at_us)
 
 int fx_app_main_loop(fx_app *a)
 {
-    enum { MAXFD = 4 + FX_APP_MAX_DISPLAYS + FX_EVDEV_MAX + FX_GPIO_MAX_IN };
+    enum { MAXFD = 4 + FX_APP_MAX_DISPLAYS + FX_EVDEV_MAX + FX_GPIO_MAX_IN + FX_APP_MAX_WATCH };
     a->quit = 0;
     if (!a->started) {
         a->started = 1;
@@ -638,6 +638,9 @@ int fx_app_main_loop(fx_app *a)
         i_gpio = n;
         for (int k = 0; k < a->gpio.nin; k++)
             p[n++] = (struct pollfd){a->gpio.in[k].fd, POLLIN, 0};
+        int i_watch = n, nwatch = a->nwatch, wfd[FX_APP_MAX_WATCH];
+        for (int k = 0; k < nwatch; k++)
+            wfd[k] = a->watch[k].fd, p[n++] = (struct pollfd){a->watch[k].fd, POLLIN, 0};
         int ndev = a->ev.ndevs, ngpio = a->gpio.nin;
         /* Sleep unless the program wants idle calls, or a frame is due and no
          * flip event will wake us (no DRM fd). */
@@ -687,10 +690,43 @@ int fx_app_main_loop(fx_app *a)
             if (p[i_gpio + k].revents & (POLLIN | POLLHUP | POLLERR))
                 if (k < a->gpio.nin && a->gpio.in[k].fd == p[i_gpio + k].fd)
                     fx_gpio_read(&a->gpio, k);
+        /* A callback may add or remove watches: each fd is looked up again. */
+        for (int k = 0; k < nwatch; k++)
+            if (p[i_watch + k].revents & (POLLIN | POLLHUP | POLLERR))
+                for (int j = 0; j < a->nwatch; j++)
+                    if (a->watch[j].fd == wfd[k]) {
+                        a->watch[j].fn(a->watch[j].user, wfd[k]);
+                        break;
+                    }
         /* Once per pass, not per event: a burst of mouse reports costs one
          * repaint of the sprite. */
         fx_app_pointer_sync(a);
     }
+    return 0;
+}
+
+int fx_app_watch_fd(fx_app *a, int fd, void (*fn)(void *user, int fd), void *user)
+{
+    if (!a || fd < 0)
+        return -FX_EINVAL;
+    for (int k = 0; k < a->nwatch; k++)
+        if (a->watch[k].fd == fd) {
+            if (!fn) {
+                a->watch[k] = a->watch[--a->nwatch];
+                return 0;
+            }
+            a->watch[k].fn = fn;
+            a->watch[k].user = user;
+            return 0;
+        }
+    if (!fn)
+        return -FX_EINVAL;
+    if (a->nwatch == FX_APP_MAX_WATCH)
+        return -FX_ENOSPC;
+    a->watch[a->nwatch].fd = fd;
+    a->watch[a->nwatch].fn = fn;
+    a->watch[a->nwatch].user = user;
+    a->nwatch++;
     return 0;
 }
 

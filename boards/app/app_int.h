@@ -85,6 +85,13 @@ struct fx_app {
         int frames;       /* draw callbacks run (frame files) */
     } extra[FX_APP_MAX_DISPLAYS - 1];
     int nextra;
+    /* fx_app_watch_fd: the program's own fds in the loop's poll */
+    struct {
+        int fd;
+        void (*fn)(void *user, int fd);
+        void *user;
+    } watch[FX_APP_MAX_WATCH];
+    int nwatch;
 
     /* Input bindings (fx_app_bind_input*): a device's display is resolved
      * again whenever bind_gen moved on (new rules, added displays). */

@@ -8,6 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/eventfd.h>
+#include <unistd.h>
 
 #ifdef KIOSK_HAVE_MQTT
 #include <math.h>
@@ -15,7 +17,6 @@
 #include <stdatomic.h>
 #include <sys/stat.h>
 #include <time.h>
-#include <unistd.h>
 
 #include <cJSON.h>
 #include <mosquitto.h>
@@ -40,7 +41,19 @@ struct kmq {
     mosquitto_property *props; /* CONNECT: maximum packet size, session expiry */
     atomic_int renew;          /* reconnect now: the control prefix (and will) changed */
     int will_dirty;            /* under lock: the will follows a new prefix at the next CONNECT */
+    int wake_fd;               /* eventfd: the main loop polls it (kmq_wake_fd) */
 };
+
+/* Tell the main loop there is news (a message queued, the connection's
+ * state changed) now rather than at its next timer tick: messages waited up
+ * to the tick's 100 ms before (make bench-kiosk measured p50 50 ms). */
+static void wake(kmq *m)
+{
+    uint64_t one = 1;
+    if (m->wake_fd >= 0 && write(m->wake_fd, &one, sizeof one) < 0) {
+        /* EAGAIN: the counter is full, so the loop is being woken anyway */
+    }
+}
 
 int kmq_available(void) { return 1; }
 
@@ -86,6 +99,7 @@ static void on_connect(struct mosquitto *mosq, void *user, int rc)
     if (m->cfg.prefix[0]) mosquitto_publish(m->mosq, NULL, m->will_topic, 6, "online", 1, true);
     pthread_mutex_unlock(&m->lock);
     fprintf(stderr, "fixel-kiosk: mqtt connected to %s:%d\n", m->cfg.host, m->cfg.port);
+    wake(m);
 }
 
 static void went_offline(kmq *m)
@@ -94,6 +108,7 @@ static void went_offline(kmq *m)
     if (m->st.connected || !m->st.offline_since) m->st.offline_since = (int64_t)time(NULL);
     m->st.connected = 0;
     pthread_mutex_unlock(&m->lock);
+    wake(m);
 }
 
 static void on_disconnect(struct mosquitto *mosq, void *user, int rc)
@@ -134,6 +149,7 @@ static void on_message(struct mosquitto *mosq, void *user, const struct mosquitt
     e->payload[e->plen] = 0;
     m->count++;
     pthread_mutex_unlock(&m->lock);
+    wake(m);
 }
 
 /* Sleep s seconds in short steps, so kmq_stop never waits for a backoff. */
@@ -233,6 +249,7 @@ kmq *kmq_start(const kiosk_mqtt_cfg *cfg, const char *version, char *err, size_t
     }
     m->cfg = *cfg;
     m->backoff = cfg->backoff_min;
+    m->wake_fd = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC); /* -1: the tick still drains the ring */
     pthread_mutex_init(&m->lock, NULL);
     pthread_cond_init(&m->room, NULL);
     m->st.offline_since = (int64_t)time(NULL);
@@ -334,12 +351,15 @@ void kmq_stop(kmq *m)
     }
     mosquitto_destroy(m->mosq);
     mosquitto_property_free_all(&m->props);
+    if (m->wake_fd >= 0) close(m->wake_fd);
     pthread_cond_destroy(&m->room);
     pthread_mutex_destroy(&m->lock);
     free(m->q);
     free(m);
     mosquitto_lib_cleanup();
 }
+
+int kmq_wake_fd(kmq *m) { return m ? m->wake_fd : -1; }
 
 int kmq_take(kmq *m, kmq_msg *out)
 {
@@ -477,6 +497,7 @@ kmq *kmq_start(const kiosk_mqtt_cfg *cfg, const char *version, char *err, size_t
 }
 void kmq_stop(kmq *m) { (void)m; }
 int kmq_take(kmq *m, kmq_msg *out) { (void)m; (void)out; return 0; }
+int kmq_wake_fd(kmq *m) { (void)m; return -1; }
 void kmq_get_state(kmq *m, kmq_state *st) { (void)m; memset(st, 0, sizeof *st); }
 void kmq_publish(kmq *m, const char *sub, const char *payload, int retain)
 {

@@ -50,6 +50,10 @@ kmq *kmq_start(const kiosk_mqtt_cfg *cfg, const char *version, char *err, size_t
 void kmq_stop(kmq *m);
 /* Take the oldest queued message into *out: 1, or 0 when there is none. */
 int kmq_take(kmq *m, kmq_msg *out);
+/* An fd that becomes readable when a message is queued or the connection
+ * changes (an eventfd: read its 8-byte counter to clear it), for the main
+ * loop's poll; -1 when there is none (then poll kmq_take on a timer). */
+int kmq_wake_fd(kmq *m);
 void kmq_get_state(kmq *m, kmq_state *st);
 /* Publish payload on PREFIX/sub (retained or not); dropped while offline. */
 void kmq_publish(kmq *m, const char *sub, const char *payload, int retain);

@@ -1339,6 +1339,23 @@ static void mqtt_pump(kiosk *k)
         publish_status(k);
 }
 
+static void post_dirty(kiosk *k);
+
+/* The MQTT thread queued something: take it now, not at the next tick (a
+ * value used to wait up to the tick's 100 ms). Frames stay paced by the
+ * display, so a burst of messages still costs one frame per refresh. */
+static void on_mqtt_wake(void *user, int fd)
+{
+    kiosk *k = user;
+    uint64_t n;
+    if (read(fd, &n, sizeof n) < 0) {
+        /* EAGAIN: already cleared */
+    }
+    k->now_ms = mono_ms();
+    mqtt_pump(k);
+    post_dirty(k);
+}
+
 static void on_tick(void *user, int value)
 {
     kiosk *k = g_kiosk;
@@ -1365,11 +1382,16 @@ static void on_tick(void *user, int value)
                                    lt.tm_hour * 60 + lt.tm_min);
         apply_power(k, kiosk_power_want(&k->pw, k->now_ms, sched));
     }
+    post_dirty(k);
+    fx_app_timer(k->app, 100, on_tick, 0);
+}
+
+static void post_dirty(kiosk *k)
+{
     if (any_dirty(k)) {
         fx_app_post_redisplay(k->app);
         for (int s = 1; s < k->nscr; s++) fx_app_post_redisplay_on(k->app, k->scr[s].d);
     }
-    fx_app_timer(k->app, 100, on_tick, 0);
 }
 
 /* ---- main ---- */
@@ -1716,6 +1738,7 @@ int main(int argc, char **argv)
                 return 1;
             }
             kmq_get_state(k->mq, &k->mst);
+            if (kmq_wake_fd(k->mq) >= 0) fx_app_watch_fd(k->app, kmq_wake_fd(k->mq), on_mqtt_wake, k);
         }
         /* stale timing starts now, not at the monotonic clock's origin */
         for (int i = 0; i < k->cfg.nsources; i++) k->cfg.sources[i].last_ms = k->now_ms;

@@ -144,6 +144,16 @@ fx_surface fx_app_surface(fx_app *a);
 int fx_app_present(fx_app *a, const fx_rect *damage, int n);
 /* One-shot timer: fn(user, value) after ms milliseconds. Returns 0 or -FX_ENOSPC. */
 int fx_app_timer(fx_app *a, unsigned ms, void (*fn)(void *user, int value), int value);
+/* The program's own file descriptor in the loop: fn(user, fd) runs from
+ * the loop as soon as fd is readable (or hung up), so data arriving on a
+ * pipe, socket or eventfd (another thread's wake-up) is handled at once
+ * instead of at the next timer. fn must read what is there (the call
+ * repeats while fd stays readable). At most FX_APP_MAX_WATCH fds; watching
+ * a watched fd again replaces its function; fn NULL stops watching fd (do
+ * it before closing fd). Returns 0, -FX_EINVAL (fd < 0 or a removal of an
+ * fd not watched) or -FX_ENOSPC. */
+#define FX_APP_MAX_WATCH 8
+int fx_app_watch_fd(fx_app *a, int fd, void (*fn)(void *user, int fd), void *user);
 /* Run until fx_app_quit, the close callback's signal (SIGINT/SIGTERM/SIGHUP)
  * or a fatal error. Returns 0, or a negative error. */
 int fx_app_main_loop(fx_app *a);
