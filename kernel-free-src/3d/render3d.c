@@ -376,6 +376,27 @@ void fx3d_texture(fx3d *r, const fx_texture *tx, fx3d_texmode mode)
 
 void fx3d_sphere_map(fx3d *r, int on) { r->tex_sphere_map = on != 0; }
 
+int fx3d_texture_stack(fx3d *r, fx_mat4 *mem, int cap)
+{
+    return fx_mat_stack_init(&r->texm, mem, cap);
+}
+
+void fx3d_tex_coord(const fx3d *r, fx16 s, fx16 t, fx16 out[2])
+{
+    out[0] = s, out[1] = t;
+    if (!r->texm.slot)
+        return;
+    const fx_mat4 *m = &r->texm.slot[r->texm.top];
+    fx_vec4 v = fx_mat4_apply(m, (fx_vec4){s, t, 0, FX16_ONE});
+    out[0] = v.x, out[1] = v.y;
+    /* Projective texture matrices only: q == 1 exactly for the affine ones,
+     * so those keep the single rounding of the product. */
+    if (v.w > 0 && v.w != FX16_ONE) {
+        out[0] = fx_sat32(((int64_t)v.x * 65536 + (v.x < 0 ? -(v.w / 2) : v.w / 2)) / v.w);
+        out[1] = fx_sat32(((int64_t)v.y * 65536 + (v.y < 0 ? -(v.w / 2) : v.w / 2)) / v.w);
+    }
+}
+
 /* The sphere map's (s, t) for eye-space point P with unit normal N. */
 static void sphere_st(fx_vec3 P, fx_vec3 N, int parallel, int32_t *st)
 {
@@ -1221,6 +1242,11 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                     } else {
                         v[i].a[A_TEX] = m->uv[2 * idx[i]];
                         v[i].a[A_TEX + 1] = m->uv[2 * idx[i] + 1];
+                    }
+                    if (r->texm.slot) {
+                        fx16 st[2];
+                        fx3d_tex_coord(r, v[i].a[A_TEX], v[i].a[A_TEX + 1], st);
+                        v[i].a[A_TEX] = st[0], v[i].a[A_TEX + 1] = st[1];
                     }
                 }
             if (tm.use_sm) {

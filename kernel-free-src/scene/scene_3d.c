@@ -18,6 +18,7 @@
 typedef struct s3d {
     fx3d r;
     fx_mat4 mstack[32], pstack[4];
+    fx_mat4 tstack[8];     /* texture matrices, attached by the first 'texmatrix' */
     fx_camera cam;
     void *zbuf[2];         /* 16- and 32-bit depth buffers, made on demand */
     void *pbuf;
@@ -686,6 +687,47 @@ static int cmd_bump3d(fx_scene *sc)
     return 0;
 }
 
+/* The texture matrix stack (OpenGL's GL_TEXTURE mode): moves, turns and
+ * tiles the textures of the meshes drawn next; see fx3d_texture_stack. */
+static int cmd_texmatrix(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"identity", "push", "pop", "translate", "scale", "rotate", NULL};
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    fx16 v[2] = {0, 0};
+    if (c == 3 || c == 5)
+        TRY(fx_scene_arg_fx16(sc, &v[0]));
+    if (c == 3)
+        TRY(fx_scene_arg_fx16(sc, &v[1]));
+    if (c == 4) {
+        TRY(fx_scene_arg_fx16(sc, &v[0]));
+        v[1] = v[0];
+        if (fx_scene_more(sc))
+            TRY(fx_scene_arg_fx16(sc, &v[1]));
+    }
+    TRY(fx_scene_end(sc));
+    if (!s->r.texm.slot)
+        fx3d_texture_stack(&s->r, s->tstack, 8);
+    fx_mat_stack *t = &s->r.texm;
+    fx_mat4 m;
+    switch (c) {
+    case 0: fx_mat4_identity(&m), fx_mat_stack_load(t, &m); break;
+    case 1:
+        if (fx_mat_stack_push(t) < 0)
+            return fx_scene_error(sc, "texture matrix stack full (8 levels)");
+        break;
+    case 2:
+        if (fx_mat_stack_pop(t) < 0)
+            return fx_scene_error(sc, "'texmatrix pop' without a matching 'texmatrix push'");
+        break;
+    case 3: fx_mat4_translate(&m, v[0], v[1], 0), fx_mat_stack_mult(t, &m); break;
+    case 4: fx_mat4_scale(&m, v[0], v[1], FX16_ONE), fx_mat_stack_mult(t, &m); break;
+    default: fx_mat4_rotate_z(&m, fx_angle_from_deg16(v[0])), fx_mat_stack_mult(t, &m); break;
+    }
+    return 0;
+}
+
 /* Bind the 2D module's current texture (the 'texture' command) to the
  * meshes drawn next; later 'texture filter|wrap' lines apply to it too. */
 static int cmd_texture3d(fx_scene *sc)
@@ -827,6 +869,8 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
     {"shadowplane", cmd_shadowplane, "shadowplane A B C D LIGHT #RGB | shadowplane off", D},
     {"polygon3d", cmd_polygon3d, "polygon3d X0 Y0 Z0 #C0 X1 Y1 Z1 #C1 X2 Y2 Z2 #C2 ... (convex, <= 16)", D},
     {"texgen", cmd_texgen, "texgen sphere|off", D},
+    {"texmatrix", cmd_texmatrix,
+     "texmatrix identity|push|pop | texmatrix translate S T | texmatrix scale SS [ST] | texmatrix rotate DEG", D},
     {"solid3d", cmd_solid3d, "solid3d wood|marble|checker #C0 #C1 SCALE | solid3d off", D},
     {"bump3d", cmd_bump3d, "bump3d HEIGHT SCALE | bump3d off", D},
     {"attenuation", cmd_attenuation, "attenuation LIGHT KC KL KQ", D},

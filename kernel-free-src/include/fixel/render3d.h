@@ -167,6 +167,8 @@ typedef struct fx3d {
     fx16 solid_scale;
     int tex_sphere_map;        /* fx3d_sphere_map */
     fx16 bump, bump_scale;     /* fx3d_bump */
+    /* Texture matrix stack (fx3d_texture_stack); slot NULL: identity. */
+    fx_mat_stack texm;
 } fx3d;
 
 /* A pipeline on surface s: viewport = whole surface, identity matrices,
@@ -215,6 +217,22 @@ int fx3d_oblique(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar
  * derivatives of s and t per pixel, a second division per pixel, and the
  * caller's memory for the pyramid. Left for later (issue #22). */
 void fx3d_texture(fx3d *r, const fx_texture *tx, fx3d_texmode mode);
+
+/* The texture matrix (OpenGL 1.x GL_TEXTURE matrix mode): every vertex's
+ * texture coordinates (s, t, 0, 1), from the mesh's uv or from the sphere
+ * map, are multiplied by the current matrix of r->texm and divided by the
+ * resulting q (q = 1 for translate, rotate and scale) before they are
+ * interpolated, so a texture can be moved, turned and tiled on a mesh
+ * without touching its uv. The stack lives in the caller's array
+ * (cap >= 1 slots) and starts as the identity; change it with the
+ * fx_mat_stack functions of mat3d.h on &r->texm (push, pop, load, mult:
+ * the last matrix multiplied acts first, as glMultMatrix). Before this
+ * call (and after fx3d_init) the texture matrix is the identity. */
+int fx3d_texture_stack(fx3d *r, fx_mat4 *mem, int cap);
+/* The transform above, exposed for tests and callers that generate their
+ * own coordinates: (s, t) -> out[0..1], Q16.16, each product rounded to
+ * nearest (mat3d.h); q <= 0 leaves the coordinates undivided. */
+void fx3d_tex_coord(const fx3d *r, fx16 s, fx16 t, fx16 out[2]);
 
 /* Environment mapping (GL_SPHERE_MAP texture generation): on (1), every
  * vertex's texture coordinates come from its eye-space reflection vector
