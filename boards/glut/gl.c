@@ -1102,6 +1102,26 @@ static int32_t isize(float s)
 }
 
 /* A vertex through modelview, lighting and projection. */
+/* Q32.32 -> Q16.16, rounded to nearest, saturating. */
+static fx16 q32_to_q16(fx32 v)
+{
+    int64_t r = (v + 0x8000) >> 16;
+    return r > INT32_MAX ? INT32_MAX : r < INT32_MIN ? INT32_MIN : (fx16)r;
+}
+
+/* The GL_TEXTURE matrix (glMatrixMode(GL_TEXTURE)): the vertex's (s, t, 0, 1)
+ * through the top of the texture stack with the same fx_glm_apply as the
+ * vertices, divided by q only for a projective matrix (q is exactly 1 for
+ * translate, rotate and scale, so those keep one rounding). */
+static void tex_matrix(fx_gl_cvert *o)
+{
+    fx_glv4 v = {(fx32)o->s * 65536, (fx32)o->t * 65536, 0, FX32_ONE};
+    v = fx_glm_apply(&fxg.texm[fxg.tex_top], v);
+    if (v.w > 0 && v.w != FX32_ONE)
+        v.x = fx32_div(v.x, v.w), v.y = fx32_div(v.y, v.w);
+    o->s = q32_to_q16(v.x), o->t = q32_to_q16(v.y);
+}
+
 static void process_vertex(fx32 x, fx32 y, fx32 z, fx32 w, fx_gl_cvert *o)
 {
     ensure_mvp();
@@ -1133,6 +1153,8 @@ static void process_vertex(fx32 x, fx32 y, fx32 z, fx32 w, fx_gl_cvert *o)
             o->c[k] = o->bc[k] = fxg.color[k];
     }
     o->s = fxg.texc[0], o->t = fxg.texc[1];
+    if (fxg.tex2d)
+        tex_matrix(o);
 }
 
 static int to_win(const fx_gl_cvert *c, fx_gl_wvert *w)

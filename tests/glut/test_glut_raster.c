@@ -471,3 +471,71 @@ FX_TEST(glut_hidden_triangles_same_pixels)
     glDisable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
 }
+
+/* glMatrixMode(GL_TEXTURE): the texture matrix moves the texture on the
+ * quad (GL 1.x 2.11.2). A 2x2 texture red green / blue white (t up),
+ * nearest, repeat, replace, on a quad with (s, t) = (x, y) / 40. */
+static void texel_probe(unsigned char out[4][3])
+{
+    static const int at[4][2] = {{10, 10}, {30, 10}, {10, 30}, {30, 30}};
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0), glVertex2f(0, 0);
+    glTexCoord2f(1, 0), glVertex2f(40, 0);
+    glTexCoord2f(1, 1), glVertex2f(40, 40);
+    glTexCoord2f(0, 1), glVertex2f(0, 40);
+    glEnd();
+    for (int i = 0; i < 4; i++)
+        glReadPixels(at[i][0], at[i][1], 1, 1, GL_RGB, GL_UNSIGNED_BYTE, out[i]);
+}
+
+static int is_rgb(const unsigned char p[3], int r, int g, int b) { return p[0] == r && p[1] == g && p[2] == b; }
+
+FX_TEST(glut_texture_matrix_moves_the_texture)
+{
+    setup();
+    static const unsigned char img[2][2][3] = {{{255, 0, 0}, {0, 255, 0}}, {{0, 0, 255}, {255, 255, 255}}};
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, img);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glEnable(GL_TEXTURE_2D);
+    unsigned char p[4][3];
+    texel_probe(p); /* identity: bottom-left red, bottom-right green, top-left blue */
+    FX_CHECK(is_rgb(p[0], 255, 0, 0) && is_rgb(p[1], 0, 255, 0) && is_rgb(p[2], 0, 0, 255) &&
+             is_rgb(p[3], 255, 255, 255));
+    glMatrixMode(GL_TEXTURE);
+    glPushMatrix();
+    glTranslatef(0.5f, 0, 0); /* s + 1/2: the columns swap (repeat) */
+    glMatrixMode(GL_MODELVIEW);
+    texel_probe(p);
+    FX_CHECK_MSG(is_rgb(p[0], 0, 255, 0) && is_rgb(p[1], 255, 0, 0) && is_rgb(p[2], 255, 255, 255) &&
+                     is_rgb(p[3], 0, 0, 255),
+                 "translated: %d,%d,%d %d,%d,%d", p[0][0], p[0][1], p[0][2], p[1][0], p[1][1], p[1][2]);
+    glMatrixMode(GL_TEXTURE);
+    glLoadIdentity();
+    glRotatef(90, 0, 0, 1); /* (s, t) -> (-t, s) */
+    texel_probe(p);
+    /* (0.25, 0.25) -> (-0.25, 0.25) = green; (0.75, 0.25) -> (-0.25, 0.75) = white;
+     * (0.25, 0.75) -> (-0.75, 0.25) = red; (0.75, 0.75) -> (-0.75, 0.75) = blue */
+    FX_CHECK(is_rgb(p[0], 0, 255, 0) && is_rgb(p[1], 255, 255, 255) && is_rgb(p[2], 255, 0, 0) &&
+             is_rgb(p[3], 0, 0, 255));
+    GLfloat m[16];
+    glGetFloatv(GL_TEXTURE_MATRIX, m);
+    FX_CHECK(m[0] == 0 && m[1] == 1 && m[4] == -1);
+    glPopMatrix();
+    glGetFloatv(GL_TEXTURE_MATRIX, m);
+    FX_CHECK(m[0] == 1 && m[1] == 0 && m[4] == 0 && m[12] == 0);
+    FX_CHECK_EQ(glGetError(), GL_NO_ERROR);
+    glMatrixMode(GL_MODELVIEW);
+    texel_probe(p); /* popped: the identity again */
+    FX_CHECK(is_rgb(p[0], 255, 0, 0) && is_rgb(p[1], 0, 255, 0));
+    glDisable(GL_TEXTURE_2D);
+    glDeleteTextures(1, &tex);
+}
