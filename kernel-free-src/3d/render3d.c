@@ -57,6 +57,7 @@ typedef struct tri_mode {
     uint8_t vcol;        /* Phong with vertex colours in A_VCOL.. */
     uint8_t solid;       /* solid texture from A_OBJ.. */
     uint8_t bump;        /* Phong normals tilted by the bumps at A_OBJ.. */
+    uint8_t blend, alpha; /* translucent (fx3d_alpha): blended over with alpha 0..254 */
     int32_t zbias;
     fx_color flat[2]; /* lit, shadowed */
     /* The texture and solid texture as they were when the triangle was
@@ -274,6 +275,7 @@ int fx3d_init(fx3d *r, const fx_surface *s, fx_mat4 *model_stack, int model_cap,
     r->cull = FX3D_CULL_BACK;
     r->polymode = FX3D_FILL;
     r->visibility = FX3D_VIS_NONE;
+    r->alpha = 255;
     r->background = 0xFF000000u;
     r->light[0].type = FX3D_LIGHT_DIRECTIONAL;
     r->light[0].pos = fx_vec3_make(0, 0, FX16_ONE);
@@ -787,7 +789,12 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
                     fx16 w = fx_rt_solid(m->solid_kind, q);
                     col = modulate(col, fx_color_lerp(m->solid_c[0], m->solid_c[1], w));
                 }
-                put_px(s, row, (int32_t)x, y, fx_pack(s->format, col));
+                if (m->blend)
+                    put_px(s, row, (int32_t)x, y,
+                           fx_blend_over(s->format, fx_surface_get_native(s, (int32_t)x, y),
+                                         (col & 0xFFFFFFu) | (uint32_t)m->alpha << 24));
+                else
+                    put_px(s, row, (int32_t)x, y, fx_pack(s->format, col));
             }
             for (int k = 0; k < ps.n; k++)
                 val[k] += ps.gx[k];
@@ -927,6 +934,20 @@ static void sm_coords(const fx3d_shadowmap *sm, fx_vec3 world, int32_t *a)
 static void emit_tri(pctx *pc, const svert *a, const svert *b, const svert *c, const tri_mode *m)
 {
     fx3d *r = pc->r;
+    if (m->blend && r->tbuf && r->visibility != FX3D_VIS_PAINTER && r->sm_phase != 1) {
+        /* translucent: kept for fx3d_flush, drawn after every opaque one */
+        if (r->tcount >= r->tcap) {
+            r->tdropped++;
+            return;
+        }
+        ptri *t = (ptri *)r->tbuf + r->tcount++;
+        t->v[0] = *a;
+        t->v[1] = *b;
+        t->v[2] = *c;
+        t->m = *m;
+        t->key = (int64_t)a->z + b->z + c->z;
+        return;
+    }
     if (r->visibility == FX3D_VIS_PAINTER && r->sm_phase != 1) {
         if (r->pcount >= r->pcap) {
             r->pdropped++;
@@ -1138,6 +1159,13 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
     fx_memset(&tm, 0, sizeof tm);
     tm.ztest = tm.zwrite = pc.zb != NULL;
     tm.use_sm = pc.sm != NULL;
+    if (r->alpha < 255 && r->sm_phase != 1 && r->polymode == FX3D_FILL) {
+        /* depth-tested against the opaque surfaces, but never hiding what
+         * lies behind: GL's glDepthMask(GL_FALSE) for translucent passes */
+        tm.blend = 1;
+        tm.alpha = (uint8_t)r->alpha;
+        tm.zwrite = 0;
+    }
     tm.na = 0;
     if (r->polymode == FX3D_FILL) {
         tm.kind = r->shading == FX3D_FLAT ? K_FLAT : r->shading == FX3D_GOURAUD ? K_GOURAUD : K_PHONG;
@@ -1359,18 +1387,63 @@ static void sift(ptri *t, int32_t i, int32_t n)
     }
 }
 
-void fx3d_flush(fx3d *r)
+static void sort_far_first(ptri *t, int32_t n)
 {
-    if (!r->pbuf || r->pcount == 0)
-        return;
-    ptri *t = r->pbuf;
-    int32_t n = r->pcount;
     for (int32_t i = n / 2 - 1; i >= 0; i--)
         sift(t, i, n);
     for (int32_t e = n - 1; e > 0; e--) {
         ptri_swap(&t[0], &t[e]);
         sift(t, 0, e);
     }
+}
+
+/* The translucent triangles, farthest first, depth-tested (when a depth
+ * buffer is on) without writing depth, each blended over what is there. */
+static void flush_translucent(fx3d *r)
+{
+    if (!r->tbuf || r->tcount == 0)
+        return;
+    ptri *t = r->tbuf;
+    int32_t n = r->tcount;
+    sort_far_first(t, n);
+    pctx pc;
+    pctx_init(&pc, r);
+    for (int32_t i = 0; i < n; i++) {
+        tri_mode m = t[i].m;
+        m.ztest = pc.zb != NULL;
+        m.zwrite = 0;
+        raster_tri(&pc, &t[i].v[0], &t[i].v[1], &t[i].v[2], &m);
+    }
+    r->tcount = 0;
+}
+
+void fx3d_alpha(fx3d *r, int alpha) { r->alpha = alpha < 0 ? 0 : alpha > 255 ? 255 : alpha; }
+
+int fx3d_set_translucent(fx3d *r, void *mem, size_t bytes)
+{
+    if (!mem) {
+        r->tbuf = NULL;
+        r->tcap = r->tcount = 0;
+        return 0;
+    }
+    if (bytes < sizeof(ptri))
+        return -FX_EINVAL;
+    r->tbuf = mem;
+    r->tcap = (int32_t)FX_MIN(bytes / sizeof(ptri), (size_t)INT32_MAX);
+    r->tcount = 0;
+    r->tdropped = 0;
+    return 0;
+}
+
+void fx3d_flush(fx3d *r)
+{
+    if (!r->pbuf || r->pcount == 0) {
+        flush_translucent(r);
+        return;
+    }
+    ptri *t = r->pbuf;
+    int32_t n = r->pcount;
+    sort_far_first(t, n);
     pctx pc;
     pctx_init(&pc, r);
     pc.zb = NULL;

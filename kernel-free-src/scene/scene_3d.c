@@ -23,6 +23,8 @@ typedef struct s3d {
     void *zbuf[2];         /* 16- and 32-bit depth buffers, made on demand */
     void *pbuf;
     size_t pbytes;
+    void *tbuf;            /* translucent triangles, made by the first 'alpha3d' */
+    size_t tbytes;
     void *mesh_mem;        /* reused by every mesh command that fits */
     size_t mesh_bytes;
     fx3d_shadowmap sm;
@@ -128,6 +130,38 @@ static int cmd_flush(fx_scene *sc)
     fx3d_flush(&s->r);
     if (s->r.pdropped)
         return fx_scene_error(sc, "%d triangles did not fit the painter's buffer", s->r.pdropped);
+    if (s->r.tdropped)
+        return fx_scene_error(sc, "%d translucent triangles did not fit the 'alpha3d' buffer", s->r.tdropped);
+    return 0;
+}
+
+/* Opacity of the meshes drawn next (1 opaque). Translucent triangles wait
+ * for 'flush', which draws them after the opaque ones, farthest first,
+ * depth-tested without writing depth (fx3d_alpha). */
+static int cmd_alpha3d(fx_scene *sc)
+{
+    GET(s);
+    fx16 a;
+    int32_t n = 4096;
+    TRY(fx_scene_arg_fx16(sc, &a));
+    if (fx_scene_more(sc))
+        TRY(fx_scene_arg_int(sc, &n));
+    TRY(fx_scene_end(sc));
+    if (a < 0 || a > FX16_ONE)
+        return fx_scene_error(sc, "alpha3d: opacity out of range (0..1)");
+    if (n < 1 || n > (1 << 20))
+        return fx_scene_error(sc, "alpha3d: capacity %d out of range (1..1048576)", n);
+    size_t need = fx3d_painter_bytes(n);
+    if (a < FX16_ONE && need > s->tbytes) {
+        if (s->r.tcount)
+            return fx_scene_error(sc, "alpha3d: 'flush' before growing the translucent buffer");
+        s->tbuf = fx_scene_alloc(sc, need);
+        if (!s->tbuf)
+            return fx_scene_error(sc, "out of scene memory for %d translucent triangles", n);
+        s->tbytes = need;
+        TRY(fx3d_set_translucent(&s->r, s->tbuf, s->tbytes));
+    }
+    fx3d_alpha(&s->r, (int)(((int64_t)a * 255 + 0x8000) >> 16));
     return 0;
 }
 
@@ -869,6 +903,7 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
     {"shadowplane", cmd_shadowplane, "shadowplane A B C D LIGHT #RGB | shadowplane off", D},
     {"polygon3d", cmd_polygon3d, "polygon3d X0 Y0 Z0 #C0 X1 Y1 Z1 #C1 X2 Y2 Z2 #C2 ... (convex, <= 16)", D},
     {"texgen", cmd_texgen, "texgen sphere|off", D},
+    {"alpha3d", cmd_alpha3d, "alpha3d OPACITY [MAXTRIANGLES]", D},
     {"texmatrix", cmd_texmatrix,
      "texmatrix identity|push|pop | texmatrix translate S T | texmatrix scale SS [ST] | texmatrix rotate DEG", D},
     {"solid3d", cmd_solid3d, "solid3d wood|marble|checker #C0 #C1 SCALE | solid3d off", D},

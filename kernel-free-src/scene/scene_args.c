@@ -193,6 +193,7 @@ A(polygon3d, REP("vertex", 3, 16), P3("X"), P3("Y"), P3("Z"), C("COLOR"));
 A(solid3d, FORM("off"), FORM(0), W("wood|marble|checker"), C("C0"), C("C1"), FR("SCALE", 4096, 64 * 65536));
 A(bump3d, FORM("off"), FORM(0), F("HEIGHT", 0, 1), FR("SCALE", 4096, 64 * 65536));
 A(texgen, W("sphere|off"));
+A(alpha3d, F("OPACITY", 0, 1), OPT, IW("MAXTRIANGLES", 1, 1048576));
 A(texmatrix, FORM("identity"), FORM("push"), FORM("pop"), FORM("translate"), F("S", -1024, 1024), F("T", -1024, 1024),
   FORM("scale"), F("SS", -1024, 1024), OPT, F("ST", -1024, 1024), FORM("rotate"), DEG("DEG"));
 A(attenuation, I("LIGHT", 0, FX3D_MAX_LIGHTS - 1), F("KC", 0, 1024), F("KL", 0, 1024), F("KQ", 0, 1024));
@@ -295,7 +296,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"shadowmap", a_shadowmap, L3, 0}, {"texture3d", a_texture3d, TEX, 0},
     {"attenuation", a_attenuation, 0, 0}, {"polygon3d", a_polygon3d, 0, 0},
     {"solid3d", a_solid3d, 0, 0}, {"bump3d", a_bump3d, 0, 0}, {"texgen", a_texgen, 0, 0},
-    {"texmatrix", a_texmatrix, 0, 0},
+    {"texmatrix", a_texmatrix, 0, 0}, {"alpha3d", a_alpha3d, 0, 0},
     {"rtcamera", a_rtcamera, 0, 0}, {"rtlight", a_rtlight, 0, 0}, {"rtambient", a_color, 0, 0},
     {"rtbackground", a_color, 0, 0}, {"rtmaterial", a_rtmaterial, 0, 0}, {"rttexture", a_rttexture, 0, 0},
     {"rtbump", a_rtbump, 0, 0},

@@ -169,6 +169,10 @@ typedef struct fx3d {
     fx16 bump, bump_scale;     /* fx3d_bump */
     /* Texture matrix stack (fx3d_texture_stack); slot NULL: identity. */
     fx_mat_stack texm;
+    /* Translucency (fx3d_alpha, fx3d_set_translucent) */
+    int32_t alpha;        /* 255 opaque */
+    void *tbuf;
+    int32_t tcap, tcount, tdropped;
 } fx3d;
 
 /* A pipeline on surface s: viewport = whole surface, identity matrices,
@@ -191,6 +195,21 @@ void fx3d_clear_depth(fx3d *r);
 size_t fx3d_painter_bytes(int32_t ntris);
 int fx3d_set_painter(fx3d *r, void *mem, size_t bytes);
 void fx3d_flush(fx3d *r);
+
+/* Transparency (OpenGL 1.x blending GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA
+ * with glDepthMask(GL_FALSE), sorted): meshes drawn while alpha < 255 (in
+ * FX3D_FILL) are blended over the surface, c = src a + dst (1 - a), and
+ * never write depth. With a buffer from fx3d_set_translucent (sized by
+ * fx3d_painter_bytes) their triangles are kept and drawn by fx3d_flush,
+ * after the opaque ones, farthest first by mean depth, depth-tested against
+ * the opaque surfaces, so blending order is back to front as it must be;
+ * triangles beyond the buffer are counted in tdropped and lost. Without a
+ * buffer they are blended at once in submission order (the caller sorts).
+ * In painter's mode they are sorted with the other triangles instead.
+ * Intersecting translucent triangles are not split: each is blended whole
+ * at its mean depth. alpha is clamped to 0..255; fx3d_init sets 255. */
+void fx3d_alpha(fx3d *r, int alpha);
+int fx3d_set_translucent(fx3d *r, void *mem, size_t bytes);
 
 /* Projection helpers: load the current projection matrix (and note whether
  * the viewer is at infinity, for specular highlights). */
