@@ -931,34 +931,33 @@ static void sm_coords(const fx3d_shadowmap *sm, fx_vec3 world, int32_t *a)
     a[2] = (int32_t)(d > ((int64_t)1 << 30) ? ((int64_t)1 << 30) : d);
 }
 
+/* Append a triangle to a sort buffer (painter's or translucent), keyed by
+ * its summed depth; a full buffer counts it as dropped. */
+static void keep_tri(void *buf, int32_t *count, int32_t cap, int32_t *dropped, const svert *a, const svert *b,
+                     const svert *c, const tri_mode *m)
+{
+    if (*count >= cap) {
+        (*dropped)++;
+        return;
+    }
+    ptri *t = (ptri *)buf + (*count)++;
+    t->v[0] = *a;
+    t->v[1] = *b;
+    t->v[2] = *c;
+    t->m = *m;
+    t->key = (int64_t)a->z + b->z + c->z;
+}
+
 static void emit_tri(pctx *pc, const svert *a, const svert *b, const svert *c, const tri_mode *m)
 {
     fx3d *r = pc->r;
     if (m->blend && r->tbuf && r->visibility != FX3D_VIS_PAINTER && r->sm_phase != 1) {
         /* translucent: kept for fx3d_flush, drawn after every opaque one */
-        if (r->tcount >= r->tcap) {
-            r->tdropped++;
-            return;
-        }
-        ptri *t = (ptri *)r->tbuf + r->tcount++;
-        t->v[0] = *a;
-        t->v[1] = *b;
-        t->v[2] = *c;
-        t->m = *m;
-        t->key = (int64_t)a->z + b->z + c->z;
+        keep_tri(r->tbuf, &r->tcount, r->tcap, &r->tdropped, a, b, c, m);
         return;
     }
     if (r->visibility == FX3D_VIS_PAINTER && r->sm_phase != 1) {
-        if (r->pcount >= r->pcap) {
-            r->pdropped++;
-            return;
-        }
-        ptri *t = (ptri *)r->pbuf + r->pcount++;
-        t->v[0] = *a;
-        t->v[1] = *b;
-        t->v[2] = *c;
-        t->m = *m;
-        t->key = (int64_t)a->z + b->z + c->z;
+        keep_tri(r->pbuf, &r->pcount, r->pcap, &r->pdropped, a, b, c, m);
         return;
     }
     raster_tri(pc, a, b, c, m);

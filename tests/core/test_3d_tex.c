@@ -407,3 +407,49 @@ FX_TEST(sphere_map_reflects_the_view_direction)
     FX_CHECK_MSG((int)(up >> 8 & 255) > 150, "up %08x", up);
     free(g);
 }
+
+/* The texture matrix (fx3d_texture_stack; test_3d_texmat.c checks the
+ * coordinates themselves): the rasterizer draws through it. */
+static uint32_t coord64_px[64 * 64];
+
+FX_TEST(texmat_rasterizer_draws_through_the_texture_matrix)
+{
+    /* texel (i, j) holds i in red and j in green: every pixel names its texel */
+    for (int j = 0; j < 64; j++)
+        for (int i = 0; i < 64; i++)
+            coord64_px[j * 64 + i] = 0xFF0000FFu | (uint32_t)i << 18 | (uint32_t)j << 10;
+    fx_texture tx;
+    memset(&tx, 0, sizeof tx);
+    fx_surface_init(&tx.img, coord64_px, 64, 64, 64 * 4, FX_FMT_XRGB8888);
+    tx.filter = FX_TEX_NEAREST;
+    tx.wrap = FX_TEX_CLAMP;
+
+    /* uv 0..1 through T(1/4, 1/4) S(1/2) (exact in Q16.16) against uv
+     * 1/4..3/4 drawn plainly: the same picture, pixel for pixel */
+    trig *a = trig_new(60), *b = trig_new(60), *c = trig_new(60);
+    fx_mat4 ts[3];
+    fx3d_texture(&a->r, &tx, FX3D_TEX_REPLACE);
+    fx3d_texture(&b->r, &tx, FX3D_TEX_REPLACE);
+    fx3d_texture(&c->r, &tx, FX3D_TEX_REPLACE);
+    FX_CHECK_EQ(fx3d_texture_stack(&a->r, ts, 3), 0);
+    fx_mat4 m;
+    fx_mat4_translate(&m, ONE / 4, ONE / 4, 0);
+    fx_mat_stack_mult(&a->r.texm, &m);
+    fx_mat4_scale(&m, ONE / 2, ONE / 2, ONE);
+    fx_mat_stack_mult(&a->r.texm, &m);
+    facing_quad(&a->r, 0, ONE);
+    facing_quad(&b->r, ONE / 4, 3 * ONE / 4);
+    facing_quad(&c->r, 0, ONE);
+    int drawn = 0, differ_plain = 0;
+    for (int i = 0; i < W * H; i++) {
+        FX_CHECK_MSG(a->px[i] == b->px[i], "pixel (%d, %d): %08x through the matrix, %08x by hand", i % W, i / W,
+                     a->px[i], b->px[i]);
+        if (a->px[i] != b->px[i])
+            break;
+        drawn += (a->px[i] & 0xFF) == 0xFF;
+        differ_plain += a->px[i] != c->px[i];
+    }
+    FX_CHECK_MSG(drawn > 3500, "only %d textured pixels", drawn); /* 70 x 52 at fovy 60 */
+    FX_CHECK_MSG(differ_plain > drawn / 2, "the matrix changed only %d of %d pixels", differ_plain, drawn);
+    free(a), free(b), free(c);
+}

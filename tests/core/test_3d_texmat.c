@@ -1,9 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* The texture matrix of the 3D pipeline (OpenGL's GL_TEXTURE matrix mode,
  * fx3d_texture_stack): the transformed coordinates against a double
- * reference, the push/pop stack, the projective divide, and the rasterizer
- * using the matrix (a quad drawn through it equals one whose uv were moved
- * by hand). */
+ * reference, the push/pop stack and the projective divide. The rasterizer's
+ * use of it is in test_3d_tex.c (next to its facing quad). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -144,59 +143,4 @@ FX_TEST(texmat_projective_matrix_divides_by_q)
                      s, t, st[0], st[1], s / q, t / q);
     }
     free(g);
-}
-
-/* A square facing the camera at z = -2, uv from lo to hi on both axes. */
-static void facing_quad(fx3d *r, fx16 lo, fx16 hi)
-{
-    fx16 hx = ONE * 2 / 3, hy = ONE / 2;
-    fx_vec3 pos[4] = {fx_vec3_make(-hx, -hy, -2 * ONE), fx_vec3_make(hx, -hy, -2 * ONE),
-                      fx_vec3_make(hx, hy, -2 * ONE), fx_vec3_make(-hx, hy, -2 * ONE)};
-    fx16 uv[8] = {lo, lo, hi, lo, hi, hi, lo, hi};
-    uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
-    fx_mesh m = {pos, NULL, tri, 4, 2, 4, 2, uv, NULL};
-    FX_CHECK_EQ(fx3d_draw(r, &m), 0);
-}
-
-static uint32_t coord_px[64 * 64];
-
-FX_TEST(texmat_rasterizer_draws_through_the_texture_matrix)
-{
-    /* texel (i, j) holds i in red and j in green: every pixel names its texel */
-    for (int j = 0; j < 64; j++)
-        for (int i = 0; i < 64; i++)
-            coord_px[j * 64 + i] = 0xFF0000FFu | (uint32_t)i << 18 | (uint32_t)j << 10;
-    fx_texture tx;
-    memset(&tx, 0, sizeof tx);
-    fx_surface_init(&tx.img, coord_px, 64, 64, 64 * 4, FX_FMT_XRGB8888);
-    tx.filter = FX_TEX_NEAREST;
-    tx.wrap = FX_TEX_CLAMP;
-
-    /* uv 0..1 through T(1/4, 1/4) S(1/2) (exact in Q16.16) against uv
-     * 1/4..3/4 drawn plainly: the same picture, pixel for pixel */
-    tm_rig *a = rig_new(), *b = rig_new(), *c = rig_new();
-    fx3d_texture(&a->r, &tx, FX3D_TEX_REPLACE);
-    fx3d_texture(&b->r, &tx, FX3D_TEX_REPLACE);
-    fx3d_texture(&c->r, &tx, FX3D_TEX_REPLACE);
-    FX_CHECK_EQ(fx3d_texture_stack(&a->r, a->ts, 3), 0);
-    fx_mat4 m;
-    fx_mat4_translate(&m, ONE / 4, ONE / 4, 0);
-    fx_mat_stack_mult(&a->r.texm, &m);
-    fx_mat4_scale(&m, ONE / 2, ONE / 2, ONE);
-    fx_mat_stack_mult(&a->r.texm, &m);
-    facing_quad(&a->r, 0, ONE);
-    facing_quad(&b->r, ONE / 4, 3 * ONE / 4);
-    facing_quad(&c->r, 0, ONE);
-    int drawn = 0, differ_plain = 0;
-    for (int i = 0; i < W * H; i++) {
-        FX_CHECK_MSG(a->px[i] == b->px[i], "pixel (%d, %d): %08x through the matrix, %08x by hand", i % W, i / W,
-                     a->px[i], b->px[i]);
-        if (a->px[i] != b->px[i])
-            break;
-        drawn += (a->px[i] & 0xFF) == 0xFF;
-        differ_plain += a->px[i] != c->px[i];
-    }
-    FX_CHECK_MSG(drawn > 3000, "only %d textured pixels", drawn);
-    FX_CHECK_MSG(differ_plain > drawn / 2, "the matrix changed only %d of %d pixels", differ_plain, drawn);
-    free(a), free(b), free(c);
 }
