@@ -6,8 +6,10 @@
  *   FIXEL_GLUT_REPLAY=F   feed the program's callbacks from a replay file
  *   FIXEL_GLUT_BENCH=1    print the time from the end of frame 1 to frame N
  * A frame is glFlush/glFinish/glutSwapBuffers in a GLUT_SINGLE window and
- * glutSwapBuffers in a GLUT_DOUBLE one (tests/glut/README.md has the rules and
- * the replay format; the fixel side implements the same).
+ * glutSwapBuffers in a GLUT_DOUBLE one, except inside a display callback the
+ * program did not ask for (X's own redraws: see shim_display) (tests/glut/
+ * README.md has the rules and the replay format; the fixel side implements
+ * the same).
  *
  * The interposed GLUT entry points forward to freeglut (dlsym RTLD_NEXT) and
  * remember the callbacks; replayed events are delivered from an idle function
@@ -322,8 +324,31 @@ static void capture(int back)
     free(px);
 }
 
+/* Only the program's frames count: the first display and those it asked
+ * for with glutPostRedisplay. X also makes freeglut redraw on its own (an
+ * Expose or ConfigureNotify that arrives after the first frame, as it does
+ * on a loaded machine), and counting that redraw moved every later frame
+ * number, so a replay's "frame 2:" events came before the timer frame they
+ * were written after. fixel's memory window has no such redraws. A flush
+ * outside any display callback (drawing from a mouse callback) counts. */
+#define MAXWIN 64 /* per window: freeglut's menus are windows with display functions of their own */
+static void (*cb_display[MAXWIN])(void);
+static int asked = 1, in_display, display_counts;
+
+static void shim_display(void)
+{
+    REAL(glutGetWindow);
+    int w = real_glutGetWindow();
+    display_counts = asked;
+    asked = 0;
+    in_display = 1;
+    if (w >= 0 && w < MAXWIN && cb_display[w]) cb_display[w]();
+    in_display = 0;
+}
+
 static void frame_end(int back)
 {
+    if (in_display && !display_counts) return;
     frames_done++;
     if (bench && frames_done == 1) t_frame1 = now();
     if (frames_wanted && frames_done == frames_wanted) {
@@ -428,6 +453,23 @@ void glutKeyboardUpFunc(void (*f)(unsigned char, int, int)) { REAL(glutKeyboardU
 void glutSpecialFunc(void (*f)(int, int, int)) { REAL(glutSpecialFunc); cb_special = f; real_glutSpecialFunc(f); }
 void glutMouseWheelFunc(void (*f)(int, int, int, int)) { REAL(glutMouseWheelFunc); cb_wheel = f; real_glutMouseWheelFunc(f); }
 void glutSpecialUpFunc(void (*f)(int, int, int)) { REAL(glutSpecialUpFunc); cb_specialup = f; real_glutSpecialUpFunc(f); }
+
+void glutDisplayFunc(void (*f)(void))
+{
+    REAL(glutDisplayFunc);
+    REAL(glutGetWindow);
+    int w = real_glutGetWindow();
+    if (w < 0 || w >= MAXWIN) { real_glutDisplayFunc(f); return; } /* not counted apart: as before */
+    cb_display[w] = f;
+    real_glutDisplayFunc(f ? shim_display : NULL);
+}
+
+void glutPostRedisplay(void)
+{
+    REAL(glutPostRedisplay);
+    asked = 1;
+    real_glutPostRedisplay();
+}
 
 void glutIdleFunc(void (*f)(void))
 {
