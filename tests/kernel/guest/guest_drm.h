@@ -77,4 +77,15 @@ static void guest_remove_second_card(const char *name, const char *module)
     guest_check(name, rm == 0 && gone, "rmmod %s: %d, card1 %s", module, rm, gone ? "gone" : "still there");
 }
 
+/* The second card's driver module for the cases that load and unload it
+ * (multi.c, bind.c; outputs.c names the same in its fuller table): a
+ * two-head virtio-gpu on x86_64, a bochs-display on aarch64. */
+#ifndef CARD1_MODULE
+#if defined(__x86_64__)
+#define CARD1_MODULE "virtio_gpu"
+#else
+#define CARD1_MODULE "bochs"
+#endif
+#endif
+
 #endif

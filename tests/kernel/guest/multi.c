@@ -33,12 +33,6 @@
 #include "guest_drm.h"
 #include "scenes.h"
 
-#if defined(__x86_64__)
-#define CARD1_MODULE "virtio_gpu"
-#else
-#define CARD1_MODULE "bochs"
-#endif
-
 static char conn0[32], conn1[32];
 
 static int kd_mode(void)
