@@ -15,13 +15,19 @@ static inline fx16 neg_sat(fx16 v) { return v == INT32_MIN ? INT32_MAX : -v; }
  * the light's screen position and depth for the shadow buffer, 12-14 the
  * vertex colour under Phong shading, 9-11 the texture: s, t (Q16.16) up to projection, then per triangle q, (s - s0) q
  * and (t - t0) q for perspective-correct interpolation (see tex_setup). */
-#define NA 18
 #define A_COL 0
 #define A_POS 3
 #define A_SM  6
 #define A_TEX 9
 #define A_VCOL 12 /* Phong with vertex colours: the colour, interpolated */
 #define A_OBJ 15  /* solid textures: the object-space point / scale */
+/* Several shadow maps (fx3d_shadow_use): map k >= 1 has its light-space
+ * position and depth at A_SMK + 3 (k - 1) and, under Gouraud, the colour
+ * without its light at A_WOK + 3 (k - 1) (map 0 keeps A_SM and A_POS). Only
+ * triangles drawn with more than one map carry them (na = NA). */
+#define A_SMK 18
+#define A_WOK (A_SMK + 3 * (FX3D_MAX_SHADOWS - 1))
+#define NA (A_WOK + 3 * (FX3D_MAX_SHADOWS - 1))
 
 typedef struct cvert { /* clip space */
     int32_t c[4];      /* x, y, z, w in Q16.16 */
@@ -50,16 +56,19 @@ typedef struct elight {
 
 /* What one triangle needs in the rasterizer. */
 typedef struct tri_mode {
-    uint8_t kind, na, ztest, zwrite, use_sm;
+    uint8_t kind, na, ztest, zwrite;
+    uint8_t use_sm;      /* shadow maps tested per pixel (pctx.smv) */
     uint8_t outline;     /* 0 fill, 1 fill and edges, 2 edges only, 3 fill pushed back */
     uint8_t lines_ztest; /* edges depth-tested */
     uint8_t tex;         /* textured: attributes A_TEX.. carry s, t */
     uint8_t vcol;        /* Phong with vertex colours in A_VCOL.. */
     uint8_t solid;       /* solid texture from A_OBJ.. */
     uint8_t bump;        /* Phong normals tilted by the bumps at A_OBJ.. */
-    uint8_t blend, alpha; /* translucent (fx3d_alpha): blended over with alpha 0..254 */
+    uint8_t blend, alpha; /* translucent (fx3d_alpha): blended over with alpha 0..254;
+                           * blend 2: added with saturation (fx3d_pass) */
     int32_t zbias;
-    fx_color flat[2]; /* lit, shadowed */
+    fx_color flat[2]; /* lit, shadowed (one map) */
+    fx3d_rgb flat_full, flat_wo[FX3D_MAX_SHADOWS]; /* flat, several maps */
     /* The texture and solid texture as they were when the triangle was
      * emitted: the painter draws at flush time, after a script may have
      * switched them (or the texture off). */
@@ -84,7 +93,11 @@ typedef struct pctx { /* per-draw state */
     elight el[FX3D_MAX_LIGHTS];
     int nl;
     fx_color wire;
-    const fx3d_shadowmap *sm;
+    const fx3d_shadowmap *sm;                   /* smv[0] */
+    const fx3d_shadowmap *smv[FX3D_MAX_SHADOWS]; /* maps in use */
+    int nsm;
+    uint32_t dmask; /* lights whose diffuse and specular this pass adds */
+    int amb;        /* whether it adds the ambient terms and emission */
 } pctx;
 
 typedef struct ptri { /* a triangle kept for the painter's sort */
@@ -169,11 +182,11 @@ static void prepare_lights(const fx3d *r, elight *el, int *nl)
 }
 
 /* The lighting model of render3d.h at eye-space point P with unit normal
- * N; light `skip` (the one in whose shadow P lies, or -1) contributes its
- * ambient term only. vcol, when given, is the vertex colour that stands
+ * N: the diffuse and specular terms of the lights in dmask, and with amb
+ * the ambient terms and emission (both: the whole model). vcol, when given, is the vertex colour that stands
  * for the material's ambient and diffuse reflectance (glColorMaterial's
  * GL_AMBIENT_AND_DIFFUSE). */
-static fx3d_rgb shade_c(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec3 N, int skip,
+static fx3d_rgb shade_m(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec3 N, uint32_t dmask, int amb,
                         const fx3d_rgb *vcol)
 {
     fx3d_material mc;
@@ -183,9 +196,12 @@ static fx3d_rgb shade_c(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_v
         mc.ambient = mc.diffuse = *vcol;
         m = &mc;
     }
-    fx3d_rgb acc = m->emission;
-    fx3d_rgb ga = rgb_mul(r->ambient, m->ambient);
-    rgb_madd(&acc, ga, FX16_ONE);
+    fx3d_rgb acc = {0, 0, 0};
+    if (amb) {
+        acc = m->emission;
+        fx3d_rgb ga = rgb_mul(r->ambient, m->ambient);
+        rgb_madd(&acc, ga, FX16_ONE);
+    }
     fx_vec3 V = fx_vec3_make(0, 0, FX16_ONE);
     int have_v = r->parallel;
     for (int i = 0; i < nl; i++) {
@@ -216,9 +232,11 @@ static fx3d_rgb shade_c(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_v
                 continue;
             sf = fx16_mul(sf, fx16_powi(sd, e->exp));
         }
-        fx3d_rgb c = rgb_mul(e->amb, m->ambient);
+        fx3d_rgb c = {0, 0, 0};
+        if (amb)
+            c = rgb_mul(e->amb, m->ambient);
         fx16 ndl = fx_vec3_dot(N, L);
-        if (ndl > 0 && i != skip) {
+        if (ndl > 0 && (dmask >> i & 1)) {
             rgb_madd(&c, rgb_mul(e->diff, m->diffuse), ndl);
             if (m->specular.r | m->specular.g | m->specular.b) {
                 if (!have_v) {
@@ -242,9 +260,11 @@ static fx3d_rgb shade_c(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_v
     return acc;
 }
 
-static fx3d_rgb shade(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec3 N, int skip)
+/* The terms this draw adds (pc->dmask, pc->amb), without the diffuse and
+ * specular of the lights in `skip` (a mask). */
+static fx3d_rgb pshade(const pctx *pc, fx_vec3 P, fx_vec3 N, uint32_t skip, const fx3d_rgb *vcol)
 {
-    return shade_c(r, el, nl, P, N, skip, NULL);
+    return shade_m(pc->r, pc->el, pc->nl, P, N, pc->dmask & ~skip, pc->amb, vcol);
 }
 
 fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal)
@@ -252,7 +272,7 @@ fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal)
     elight el[FX3D_MAX_LIGHTS];
     int nl;
     prepare_lights(r, el, &nl);
-    return shade(r, el, nl, eye_pos, eye_normal, -1);
+    return shade_m(r, el, nl, eye_pos, eye_normal, ~0u, 1, NULL);
 }
 
 /* ------------------------------------------------------------------ */
@@ -503,14 +523,47 @@ void fx3d_shadow_begin(fx3d *r, fx3d_shadowmap *sm)
 
 void fx3d_shadow_end(fx3d *r)
 {
-    if (r->sm)
+    if (r->sm) {
         r->sm_phase = 2;
+        r->sm_use[0] = r->sm;
+        r->sm_n = 1;
+    }
 }
 
 void fx3d_shadow_off(fx3d *r)
 {
     r->sm = NULL;
     r->sm_phase = 0;
+    r->sm_n = 0;
+}
+
+int fx3d_shadow_use(fx3d *r, fx3d_shadowmap *const *maps, int n)
+{
+    if (!maps || n < 1 || n > FX3D_MAX_SHADOWS)
+        return -FX_EINVAL;
+    for (int i = 0; i < n; i++) {
+        if (!maps[i] || !maps[i]->depth || maps[i]->light < 0 || maps[i]->light >= FX3D_MAX_LIGHTS)
+            return -FX_EINVAL;
+        for (int j = 0; j < i; j++)
+            if (maps[j]->light == maps[i]->light)
+                return -FX_EINVAL;
+    }
+    for (int i = 0; i < n; i++)
+        r->sm_use[i] = maps[i];
+    r->sm_n = n;
+    r->sm = maps[0];
+    r->sm_phase = 2;
+    return 0;
+}
+
+int fx3d_pass(fx3d *r, int kind, int light)
+{
+    if (kind < FX3D_PASS_ALL || kind > FX3D_PASS_LIGHT ||
+        (kind == FX3D_PASS_LIGHT && (light < 0 || light >= FX3D_MAX_LIGHTS)))
+        return -FX_EINVAL;
+    r->pass = kind;
+    r->pass_light = kind == FX3D_PASS_LIGHT ? light : 0;
+    return 0;
 }
 
 /* ------------------------------------------------------------------ */
@@ -579,15 +632,62 @@ static void setup_planes(plane_set *ps, const svert *v0, const svert *v1, const 
         }
 }
 
-static inline int sm_shadowed(const pctx *pc, const int64_t *val)
+static inline int sm_shadowed(const fx3d_shadowmap *sm, const int64_t *val, int at)
 {
-    const fx3d_shadowmap *sm = pc->sm;
-    int32_t lx = (int32_t)((val[1 + A_SM] >> 16) + 128) >> 8;
-    int32_t ly = (int32_t)((val[1 + A_SM + 1] >> 16) + 128) >> 8;
+    int32_t lx = (int32_t)((val[1 + at] >> 16) + 128) >> 8;
+    int32_t ly = (int32_t)((val[1 + at + 1] >> 16) + 128) >> 8;
     if (lx < 0 || ly < 0 || lx >= sm->size || ly >= sm->size)
         return 0;
-    int64_t d = val[1 + A_SM + 2] >> 16;
+    int64_t d = val[1 + at + 2] >> 16;
     return d > (int64_t)sm->depth[(size_t)ly * (size_t)sm->size + (size_t)lx] + sm->bias;
+}
+
+/* Which of the maps in use shadow the pixel: bit k for map k. */
+static inline uint32_t sm_mask(const pctx *pc, const tri_mode *m, const int64_t *val)
+{
+    uint32_t sh = 0;
+    for (int k = 0; k < m->use_sm; k++)
+        if (sm_shadowed(pc->smv[k], val, k ? A_SMK + 3 * (k - 1) : A_SM))
+            sh |= 1u << k;
+    return sh;
+}
+
+/* full - sum over the maps in sh of (full - without map k's light): the
+ * colour without the shadowed lights (exact: the lights' terms were summed
+ * without rounding between them). */
+static fx3d_rgb sm_remove(fx3d_rgb full, const fx3d_rgb *wo, uint32_t sh)
+{
+    int64_t c[3] = {full.r, full.g, full.b};
+    for (int k = 0; sh; k++, sh >>= 1)
+        if (sh & 1) {
+            c[0] -= (int64_t)full.r - wo[k].r;
+            c[1] -= (int64_t)full.g - wo[k].g;
+            c[2] -= (int64_t)full.b - wo[k].b;
+        }
+    fx3d_rgb o = {fx_sat32(c[0]), fx_sat32(c[1]), fx_sat32(c[2])};
+    return o;
+}
+
+/* The light mask of the maps in sh. */
+static uint32_t sm_lights(const pctx *pc, uint32_t sh)
+{
+    uint32_t l = 0;
+    for (int k = 0; sh; k++, sh >>= 1)
+        if (sh & 1)
+            l |= 1u << pc->smv[k]->light;
+    return l;
+}
+
+/* The surface's colour plus c, per channel, saturating at 255. */
+static uint32_t add_sat(fx_format f, uint32_t dst, fx_color c)
+{
+    fx_color d = fx_unpack(f, dst);
+    uint32_t o = 0xFF000000u;
+    for (int sh = 0; sh < 24; sh += 8) {
+        uint32_t v = ((d >> sh) & 255) + ((c >> sh) & 255);
+        o |= (v > 255 ? 255 : v) << sh;
+    }
+    return fx_pack(f, o);
 }
 
 static void put_px(const fx_surface *s, uint8_t *row, int32_t x, int32_t y, uint32_t native)
@@ -750,25 +850,36 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
             uint32_t z = zz < 0 ? 0 : zz > ((int64_t)1 << 30) ? (1u << 30) : (uint32_t)zz;
             int pass = 1;
             if (z32) {
-                if (m->ztest && z >= z32[x])
+                if (m->ztest == 2 ? z != z32[x] : m->ztest && z >= z32[x])
                     pass = 0;
                 else if (m->zwrite)
                     z32[x] = z;
             } else if (z16) {
                 uint16_t z1 = (uint16_t)FX_MIN(z >> 14, 0xFFFEu);
-                if (m->ztest && z1 >= z16[x])
+                if (m->ztest == 2 ? z1 != z16[x] : m->ztest && z1 >= z16[x])
                     pass = 0;
                 else if (m->zwrite)
                     z16[x] = z1;
             }
             if (pass && m->kind != K_DEPTH) {
-                int sh = m->use_sm && sm_shadowed(pc, val);
+                uint32_t sh = m->use_sm ? sm_mask(pc, m, val) : 0;
                 fx_color col;
                 if (m->kind == K_FLAT) {
-                    col = m->flat[sh];
+                    col = m->use_sm > 1 && sh ? fx3d_rgb_to_color(sm_remove(m->flat_full, m->flat_wo, sh))
+                                              : m->flat[sh != 0];
                 } else if (m->kind == K_GOURAUD) {
-                    int o = 1 + (sh ? A_POS : A_COL);
+                    int o = 1 + (sh && m->use_sm == 1 ? A_POS : A_COL);
                     fx3d_rgb c = {(fx16)(val[o] >> 16), (fx16)(val[o + 1] >> 16), (fx16)(val[o + 2] >> 16)};
+                    if (m->use_sm > 1 && sh) {
+                        fx3d_rgb wo[FX3D_MAX_SHADOWS];
+                        for (int k = 0; k < m->use_sm; k++) {
+                            int ok = 1 + (k ? A_WOK + 3 * (k - 1) : A_POS);
+                            wo[k].r = (fx16)(val[ok] >> 16);
+                            wo[k].g = (fx16)(val[ok + 1] >> 16);
+                            wo[k].b = (fx16)(val[ok + 2] >> 16);
+                        }
+                        c = sm_remove(c, wo, sh);
+                    }
                     col = fx3d_rgb_to_color(c);
                 } else {
                     fx_vec3 N = fx_vec3_make((fx16)(val[1] >> 16), (fx16)(val[2] >> 16), (fx16)(val[3] >> 16));
@@ -778,8 +889,7 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
                         N = bump_normal(m, val, N);
                     fx3d_rgb vc = {(fx16)(val[1 + A_VCOL] >> 16), (fx16)(val[2 + A_VCOL] >> 16),
                                    (fx16)(val[3 + A_VCOL] >> 16)};
-                    col = fx3d_rgb_to_color(shade_c(pc->r, pc->el, pc->nl, P, N, sh ? pc->sm->light : -1,
-                                                    m->vcol ? &vc : NULL));
+                    col = fx3d_rgb_to_color(pshade(pc, P, N, sm_lights(pc, sh), m->vcol ? &vc : NULL));
                 }
                 if (m->tex)
                     col = tex_apply(m, val, st0, col);
@@ -789,7 +899,9 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
                     fx16 w = fx_rt_solid(m->solid_kind, q);
                     col = modulate(col, fx_color_lerp(m->solid_c[0], m->solid_c[1], w));
                 }
-                if (m->blend)
+                if (m->blend == 2)
+                    put_px(s, row, (int32_t)x, y, add_sat(s->format, fx_surface_get_native(s, (int32_t)x, y), col));
+                else if (m->blend)
                     put_px(s, row, (int32_t)x, y,
                            fx_blend_over(s->format, fx_surface_get_native(s, (int32_t)x, y),
                                          (col & 0xFFFFFFu) | (uint32_t)m->alpha << 24));
@@ -951,7 +1063,7 @@ static void keep_tri(void *buf, int32_t *count, int32_t cap, int32_t *dropped, c
 static void emit_tri(pctx *pc, const svert *a, const svert *b, const svert *c, const tri_mode *m)
 {
     fx3d *r = pc->r;
-    if (m->blend && r->tbuf && r->visibility != FX3D_VIS_PAINTER && r->sm_phase != 1) {
+    if (m->blend == 1 && r->tbuf && r->visibility != FX3D_VIS_PAINTER && r->sm_phase != 1) {
         /* translucent: kept for fx3d_flush, drawn after every opaque one */
         keep_tri(r->tbuf, &r->tcount, r->tcap, &r->tdropped, a, b, c, m);
         return;
@@ -1018,7 +1130,38 @@ static void pctx_init(pctx *pc, fx3d *r)
     pc->guard = FX_MAX(1, FX_MIN(4, (1 << 13) / big));
     prepare_lights(r, pc->el, &pc->nl);
     pc->wire = r->ctx.color;
-    pc->sm = r->sm_phase == 2 ? r->sm : NULL;
+    pc->sm = NULL;
+    pc->nsm = 0;
+    pc->dmask = ~0u;
+    pc->amb = 1;
+    if (r->sm_phase == 2 && r->sm) {
+        if (r->sm_n > 1) {
+            for (int k = 0; k < r->sm_n; k++)
+                pc->smv[k] = r->sm_use[k];
+            pc->nsm = r->sm_n;
+        } else {
+            pc->smv[0] = r->sm;
+            pc->nsm = 1;
+        }
+    }
+    if (r->pass == FX3D_PASS_AMBIENT) {
+        pc->dmask = 0;
+        pc->nsm = 0; /* nothing a shadow could remove */
+    } else if (r->pass == FX3D_PASS_LIGHT) {
+        /* the light's own map only, as map 0 */
+        int k = 0;
+        while (k < pc->nsm && pc->smv[k]->light != r->pass_light)
+            k++;
+        if (k < pc->nsm) {
+            pc->smv[0] = pc->smv[k];
+            pc->nsm = 1;
+        } else {
+            pc->nsm = 0;
+        }
+        pc->dmask = 1u << r->pass_light;
+        pc->amb = 0;
+    }
+    pc->sm = pc->nsm ? pc->smv[0] : NULL;
 }
 
 /* Homogeneous facing: the sign of det[x y w] of the three clip vertices is
@@ -1128,7 +1271,7 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
     /* The planar-shadow matrix in eye space: S = (p . l) I - l p^T with the
      * plane p and the light l (w = 0 for a directional light). */
     fx_mat4 shadow;
-    int plane_on = r->plane_shadow && r->light[r->plane_light].type != FX3D_LIGHT_OFF;
+    int plane_on = r->plane_shadow && r->light[r->plane_light].type != FX3D_LIGHT_OFF && r->pass != FX3D_PASS_LIGHT;
     if (plane_on) {
         const fx3d_light *L = &r->light[r->plane_light];
         fx_vec4 l;
@@ -1157,12 +1300,18 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
     tri_mode tm;
     fx_memset(&tm, 0, sizeof tm);
     tm.ztest = tm.zwrite = pc.zb != NULL;
-    tm.use_sm = pc.sm != NULL;
+    tm.use_sm = (uint8_t)pc.nsm;
     if (r->alpha < 255 && r->sm_phase != 1 && r->polymode == FX3D_FILL) {
         /* depth-tested against the opaque surfaces, but never hiding what
          * lies behind: GL's glDepthMask(GL_FALSE) for translucent passes */
         tm.blend = 1;
         tm.alpha = (uint8_t)r->alpha;
+        tm.zwrite = 0;
+    }
+    if (r->pass == FX3D_PASS_LIGHT && r->polymode == FX3D_FILL) {
+        /* the surfaces the ambient pass left in the buffer, and only those */
+        tm.blend = 2;
+        tm.ztest = pc.zb != NULL ? 2 : 0;
         tm.zwrite = 0;
     }
     tm.na = 0;
@@ -1183,7 +1332,7 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
         }
         if (r->solid > 0 && r->solid < 4) {
             tm.solid = 1;
-            tm.na = NA;
+            tm.na = A_SMK;
             tm.solid_kind = (int8_t)r->solid;
             tm.solid_c[0] = r->solid_c0;
             tm.solid_c[1] = r->solid_c1;
@@ -1191,7 +1340,7 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
         tm.obj_scale = r->solid_scale > 0 ? r->solid_scale : FX16_ONE;
         if (r->bump > 0 && tm.kind == K_PHONG) {
             tm.bump = 1;
-            tm.na = NA;
+            tm.na = A_SMK;
             tm.bump_h = r->bump;
             tm.bump_s = r->bump_scale;
             if (!tm.solid)
@@ -1200,6 +1349,8 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                 for (int j = 0; j < 3; j++)
                     tm.bnm[i][j] = nm.m[i][j];
         }
+        if (tm.use_sm > 1)
+            tm.na = NA;
     } else {
         tm.kind = K_FLAT;
         tm.use_sm = 0;
@@ -1280,7 +1431,8 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                 for (int i = 0; i < 3; i++) {
                     fx_vec4 w4 = fx_mat4_apply_point(model, m->pos[idx[i]]);
                     wp[i] = fx_vec3_make(w4.x, w4.y, w4.z);
-                    sm_coords(pc.sm, wp[i], &v[i].a[A_SM]);
+                    for (int k = 0; k < tm.use_sm; k++)
+                        sm_coords(pc.smv[k], wp[i], &v[i].a[k ? A_SMK + 3 * (k - 1) : A_SM]);
                 }
             }
             if (r->polymode == FX3D_FILL) {
@@ -1295,9 +1447,11 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                         pv = fx3d_rgb_from_color(m->col[idx[2]]);
                         pvc = &pv;
                     }
-                    tm.flat[0] = fx3d_rgb_to_color(shade_c(r, pc.el, pc.nl, cen, fn, -1, pvc));
-                    tm.flat[1] = tm.use_sm ? fx3d_rgb_to_color(shade_c(r, pc.el, pc.nl, cen, fn, pc.sm->light, pvc))
-                                           : tm.flat[0];
+                    tm.flat_full = pshade(&pc, cen, fn, 0, pvc);
+                    tm.flat[0] = fx3d_rgb_to_color(tm.flat_full);
+                    for (int k = 0; k < tm.use_sm; k++)
+                        tm.flat_wo[k] = pshade(&pc, cen, fn, 1u << pc.smv[k]->light, pvc);
+                    tm.flat[1] = tm.use_sm ? fx3d_rgb_to_color(tm.flat_wo[0]) : tm.flat[0];
                 } else {
                     for (int i = 0; i < 3; i++) {
                         fx_vec3 n = fn;
@@ -1314,9 +1468,10 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                             vcp = &vc;
                         }
                         if (tm.kind == K_GOURAUD) {
-                            set_rgb(&v[i].a[A_COL], shade_c(r, pc.el, pc.nl, ep[i], n, -1, vcp));
-                            if (tm.use_sm)
-                                set_rgb(&v[i].a[A_POS], shade_c(r, pc.el, pc.nl, ep[i], n, pc.sm->light, vcp));
+                            set_rgb(&v[i].a[A_COL], pshade(&pc, ep[i], n, 0, vcp));
+                            for (int k = 0; k < tm.use_sm; k++)
+                                set_rgb(&v[i].a[k ? A_WOK + 3 * (k - 1) : A_POS],
+                                        pshade(&pc, ep[i], n, 1u << pc.smv[k]->light, vcp));
                         } else {
                             set_vec(&v[i].a[A_COL], n);
                             set_vec(&v[i].a[A_POS], ep[i]);

@@ -27,9 +27,13 @@ typedef struct s3d {
     size_t tbytes;
     void *mesh_mem;        /* reused by every mesh command that fits */
     size_t mesh_bytes;
-    fx3d_shadowmap sm;
-    uint32_t *smbuf;
-    int32_t smsize;
+    /* Shadow maps: 'shadowmap begin' fills one per light, up to
+     * FX3D_MAX_SHADOWS before 'shadowmap end' puts them all in use. */
+    fx3d_shadowmap sm[FX3D_MAX_SHADOWS];
+    uint32_t *smbuf[FX3D_MAX_SHADOWS];
+    int32_t smsize[FX3D_MAX_SHADOWS];
+    int nsm;
+    int sm_filling; /* a begin since the last end or off */
 } s3d;
 
 static int get(fx_scene *sc, s3d **out)
@@ -820,12 +824,21 @@ static int cmd_shadowmap(fx_scene *sc)
     if (c != 0) {
         TRY(fx_scene_end(sc));
         if (c == 1) {
-            if (!s->r.sm)
+            if (!s->r.sm || !s->nsm)
                 return fx_scene_error(sc, "'shadowmap end' without 'shadowmap begin'");
-            fx3d_shadow_end(&s->r);
+            if (s->nsm == 1) {
+                fx3d_shadow_end(&s->r);
+            } else {
+                fx3d_shadowmap *maps[FX3D_MAX_SHADOWS];
+                for (int i = 0; i < s->nsm; i++)
+                    maps[i] = &s->sm[i];
+                TRY(fx3d_shadow_use(&s->r, maps, s->nsm));
+            }
         } else {
             fx3d_shadow_off(&s->r);
+            s->nsm = 0;
         }
+        s->sm_filling = 0;
         return 0;
     }
     int32_t size, li;
@@ -838,18 +851,45 @@ static int cmd_shadowmap(fx_scene *sc)
     if (li < 0 || li >= FX3D_MAX_LIGHTS || s->r.light[li].type == FX3D_LIGHT_OFF ||
         s->r.light[li].type == FX3D_LIGHT_DIRECTIONAL)
         return fx_scene_error(sc, "the shadow map needs a point or spot light");
-    if (size > s->smsize) {
-        s->smbuf = fx_scene_alloc(sc, (size_t)size * (size_t)size * 4);
-        if (!s->smbuf)
+    if (!s->sm_filling)
+        s->nsm = 0; /* a new set of maps */
+    int k = 0;
+    while (k < s->nsm && s->sm[k].light != li)
+        k++; /* a light's second map replaces its first */
+    if (k == FX3D_MAX_SHADOWS)
+        return fx_scene_error(sc, "more than %d shadow maps at once (one per light)", FX3D_MAX_SHADOWS);
+    if (size > s->smsize[k]) {
+        s->smbuf[k] = fx_scene_alloc(sc, (size_t)size * (size_t)size * 4);
+        if (!s->smbuf[k])
             return fx_scene_error(sc, "out of scene memory for a %dx%d shadow map", size, size);
-        s->smsize = size;
+        s->smsize[k] = size;
     }
-    fx3d_shadow_init(&s->sm, s->smbuf, size, li);
+    fx3d_shadow_init(&s->sm[k], s->smbuf[k], size, li);
     if (v[3] <= 0 || v[3] >= 180 * FX16_ONE ||
-        fx3d_shadow_aim(&s->sm, s->r.light[li].pos, fx_vec3_make(v[0], v[1], v[2]),
+        fx3d_shadow_aim(&s->sm[k], s->r.light[li].pos, fx_vec3_make(v[0], v[1], v[2]),
                         fx_angle_from_deg16(v[3]), v[4], v[5]) < 0)
         return fx_scene_error(sc, "shadowmap: bad aim (target = light, or bad FOV/NEAR/FAR)");
-    fx3d_shadow_begin(&s->r, &s->sm);
+    if (k == s->nsm)
+        s->nsm++;
+    s->sm_filling = 1;
+    fx3d_shadow_begin(&s->r, &s->sm[k]);
+    return 0;
+}
+
+/* The course's multi-pass lighting (fx3d_pass). */
+static int cmd_pass3d(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"off", "ambient", "light", NULL};
+    int c;
+    TRY(c = fx_scene_arg_choice(sc, ch));
+    int32_t li = 0;
+    if (c == 2)
+        TRY(fx_scene_arg_int(sc, &li));
+    TRY(fx_scene_end(sc));
+    if (c == 2 && (li < 0 || li >= FX3D_MAX_LIGHTS))
+        return fx_scene_error(sc, "light number %d out of range (0..%d)", li, FX3D_MAX_LIGHTS - 1);
+    fx3d_pass(&s->r, c == 0 ? FX3D_PASS_ALL : c == 1 ? FX3D_PASS_AMBIENT : FX3D_PASS_LIGHT, li);
     return 0;
 }
 
@@ -911,5 +951,6 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
     {"attenuation", cmd_attenuation, "attenuation LIGHT KC KL KQ", D},
     {"texture3d", cmd_texture3d, "texture3d modulate|replace|decal | texture3d off", D},
     {"shadowmap", cmd_shadowmap, "shadowmap begin SIZE LIGHT TX TY TZ FOV NEAR FAR | shadowmap end | shadowmap off", D},
+    {"pass3d", cmd_pass3d, "pass3d ambient | pass3d light LIGHT | pass3d off", D},
     {0, 0, 0, 0},
 };

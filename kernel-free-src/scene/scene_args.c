@@ -200,6 +200,7 @@ A(attenuation, I("LIGHT", 0, FX3D_MAX_LIGHTS - 1), F("KC", 0, 1024), F("KL", 0, 
 A(texture3d, W("modulate|replace|decal|off"));
 A(shadowmap, FORM("end"), FORM("off"), FORM("begin"), IW("SIZE", 16, 4096), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1),
   P3("TX"), P3("TY"), P3("TZ"), F("FOV", -32768, 32767), P3("NEAR"), P3("FAR"));
+A(pass3d, FORM("off"), FORM("ambient"), FORM("light"), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1));
 
 /* ---- objects (scene_objects.c): sizes within the 3D bound, exponents in Barr's range ---- */
 #define SEG(n, lo) IW(n, lo, FX_MESH_MAX_SEG)
@@ -293,7 +294,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"icosahedron", a_size3, 0, TRIS}, {"sphere", a_sphere, 0, TRIS}, {"ellipsoid", a_ellipsoid, 0, TRIS},
     {"torus", a_torus, 0, TRIS}, {"cone", a_cone, 0, TRIS}, {"cylinder", a_cone, 0, TRIS}, {"teapot", a_sizen, 0, TRIS},
     {"floor", a_sizen, 0, TRIS}, {"obj", a_obj, 0, TRIS}, {"shadowplane", a_shadowplane, L3, 0},
-    {"shadowmap", a_shadowmap, L3, 0}, {"texture3d", a_texture3d, TEX, 0},
+    {"shadowmap", a_shadowmap, L3, 0}, {"pass3d", a_pass3d, 0, 0}, {"texture3d", a_texture3d, TEX, 0},
     {"attenuation", a_attenuation, 0, 0}, {"polygon3d", a_polygon3d, 0, 0},
     {"solid3d", a_solid3d, 0, 0}, {"bump3d", a_bump3d, 0, 0}, {"texgen", a_texgen, 0, 0},
     {"texmatrix", a_texmatrix, 0, 0}, {"alpha3d", a_alpha3d, 0, 0},

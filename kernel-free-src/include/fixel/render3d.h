@@ -121,6 +121,15 @@ typedef struct fx3d_shadowmap {
 } fx3d_shadowmap;
 
 #define FX3D_MAX_LIGHTS 8
+/* Shadow maps in use at once (fx3d_shadow_use), each for its own light. */
+#define FX3D_MAX_SHADOWS 4
+
+/* What fx3d_draw adds to the picture (fx3d_pass): everything; only the
+ * ambient terms (emission, global ambient, each light's Ia ka), writing
+ * depth; or one light's diffuse and specular terms where its shadow map
+ * (if one is in use) says it is lit, on the pixels whose depth equals the
+ * buffer's, added to the surface with saturation and no depth write. */
+typedef enum fx3d_pass_kind { FX3D_PASS_ALL, FX3D_PASS_AMBIENT, FX3D_PASS_LIGHT } fx3d_pass_kind;
 
 /* How the texel T combines with the lit colour C (OpenGL 1.x texture
  * environment, channels in [0, 1]): modulate C * T (lighting shows through
@@ -156,6 +165,12 @@ typedef struct fx3d {
     /* shadow buffer */
     fx3d_shadowmap *sm;
     int sm_phase;         /* 0 off, 1 rendering the map, 2 using it */
+    /* The maps in use (fx3d_shadow_use); sm_use[0] == sm in phase 2. */
+    fx3d_shadowmap *sm_use[FX3D_MAX_SHADOWS];
+    int sm_n;
+    /* Multi-pass lighting (fx3d_pass) */
+    int pass;             /* fx3d_pass_kind */
+    int pass_light;
     /* statistics of the last fx3d_draw (for tests and benches) */
     int32_t stat_culled, stat_drawn, stat_clipped;
     /* Texture (fx3d_texture): meshes with uv are drawn with it in FX3D_FILL. */
@@ -308,6 +323,45 @@ int fx3d_shadow_aim(fx3d_shadowmap *sm, fx_vec3 from, fx_vec3 at, fx_angle fov, 
 void fx3d_shadow_begin(fx3d *r, fx3d_shadowmap *sm);
 void fx3d_shadow_end(fx3d *r);
 void fx3d_shadow_off(fx3d *r);
+/* Several shadow maps at once: after each map was filled (begin, draw the
+ * casters, for each map in turn), fx3d_shadow_use(r, maps, n) makes the
+ * draws that follow test every pixel against all n maps (1..
+ * FX3D_MAX_SHADOWS, each for a different light, each filled and aimed);
+ * a map that shadows the pixel removes the diffuse and specular terms of
+ * its own light only, so a point shadowed from light B and lit by light A
+ * keeps A's terms and every ambient term. With n == 1 it is
+ * fx3d_shadow_end with that map (the same pixels). The maps' depth stays
+ * the caller's. -FX_EINVAL for n out of range, a NULL map or two maps of
+ * one light. fx3d_shadow_off ends it.
+ *
+ * Under Gouraud shading each vertex carries the colour with all lights and,
+ * per map, the colour without that map's light; a pixel shadowed by a set
+ * S of maps gets full - sum over S of (full - without), interpolated, which
+ * is exactly the colour without the lights of S at the vertices (the terms
+ * of different lights are added without rounding between them, unless a
+ * channel saturates at 2^15). Flat shading does the same per face, Phong
+ * per pixel. */
+int fx3d_shadow_use(fx3d *r, fx3d_shadowmap *const *maps, int n);
+
+/* Multi-pass lighting, the course's way of drawing shadows with a depth
+ * buffer and several lights (kind: fx3d_pass_kind above):
+ *   fx3d_pass(r, FX3D_PASS_AMBIENT, 0);  draw the scene: ambient only
+ *   fx3d_pass(r, FX3D_PASS_LIGHT, k);    draw the scene again, per light k:
+ *                                         where the depth is equal and k's
+ *                                         map says lit, add k's terms
+ *   fx3d_pass(r, FX3D_PASS_ALL, 0);      back to one pass
+ * The shadow maps come from fx3d_shadow_end / fx3d_shadow_use; a light
+ * pass uses the map of its own light, if any. The light passes need the
+ * depth buffer (without one they add everywhere they draw). Each pass
+ * rounds its colour to the surface's format before the next one adds to
+ * it, so the result can differ from the single pass (fx3d_shadow_use),
+ * which rounds the sum once: by at most one level of 255 per pass after
+ * the first in XRGB8888 (tests/core/test_3d_shadows.c), more where the
+ * surface keeps fewer bits (RGB565). Lights with attenuation or a spot
+ * cone also differ in the rounding of the factor (the single pass
+ * multiplies ambient + diffuse + specular by it at once). -FX_EINVAL for
+ * a bad kind or light. */
+int fx3d_pass(fx3d *r, int kind, int light);
 
 /* Lighting of one point (eye-space position and unit normal) with the
  * current lights and material; what the renderer evaluates per vertex
