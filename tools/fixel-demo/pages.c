@@ -620,6 +620,19 @@ static void draw_object(fx_ctx *c, demo_state *st, fx_rect r, fx_mesh_kind kind,
     memset(&m, 0, sizeof m);
     m.pos = malloc((size_t)nv * 2 * sizeof(fx_vec3));
     m.tri = malloc((size_t)nt * 3 * sizeof(uint32_t));
+    /* The teapot is textured: each Bezier patch has its own (u, v) square
+     * (fx_mesh_make fills uv), here a 4 x 4 checker per patch, modulated
+     * by the lighting. */
+    static uint32_t teximg[64 * 64];
+    fx_texture tx;
+    memset(&tx, 0, sizeof tx);
+    if (kind == FX_MESH_TEAPOT) {
+        m.uv = malloc((size_t)nv * 2 * sizeof(fx16));
+        fx_surface_init(&tx.img, teximg, 64, 64, 64 * 4, FX_FMT_XRGB8888);
+        fx_tex_checker(&tx.img, 16, 0xFFFFFFFFu, col);
+        tx.wrap = FX_TEX_REPEAT;
+        tx.filter = FX_TEX_NEAREST;
+    }
     void *z = malloc(fx3d_depth_bytes(&s, 32));
     fx3d *rd = malloc(sizeof *rd);
     fx_mat4 ms[4], ps[2];
@@ -636,7 +649,9 @@ static void draw_object(fx_ctx *c, demo_state *st, fx_rect r, fx_mesh_kind kind,
             rd->light[1].type = FX3D_LIGHT_POINT;
             rd->light[1].pos = fx_vec3_make(-4 * FX16_ONE, 5 * FX16_ONE, 3 * FX16_ONE);
             rd->light[1].diffuse = rd->light[1].specular = fx3d_rgb_from_color(0x6080FF);
-            rd->mat.ambient = rd->mat.diffuse = fx3d_rgb_from_color(col);
+            rd->mat.ambient = rd->mat.diffuse = fx3d_rgb_from_color(m.uv ? 0xFFFFFFFFu : col);
+            if (m.uv)
+                fx3d_texture(rd, &tx, FX3D_TEX_MODULATE);
             rd->mat.specular = fx3d_rgb_from_color(0xFFFFFF);
             rd->mat.shininess = 40;
             rd->shading = (fx3d_shading)st->shading;
@@ -656,6 +671,7 @@ static void draw_object(fx_ctx *c, demo_state *st, fx_rect r, fx_mesh_kind kind,
     free(z);
     free(m.tri);
     free(m.pos);
+    free(m.uv);
 }
 
 static void page_3d(fx_ctx *c, demo_state *st)
@@ -664,9 +680,9 @@ static void page_3d(fx_ctx *c, demo_state *st)
     panel(c, 8, top, 388, 400, NULL);
     panel(c, 404, top, 388, 400, NULL);
     fx_angle spin = (fx_angle)(st->frame * 0x00800000u);
-    draw_object(c, st, (fx_rect){9, top + 1, 395, top + 399}, FX_MESH_TEAPOT, 0xFFC04020u, spin);
+    draw_object(c, st, (fx_rect){9, top + 1, 395, top + 399}, FX_MESH_TEAPOT, 0xFFD05028u, spin);
     draw_object(c, st, (fx_rect){405, top + 1, 791, top + 399}, FX_MESH_TORUS, 0xFF2080C0u, spin);
-    demo_text(c, 14, top + 5, ACCENT, "Teapot, %s shading", shading_name(st->shading));
+    demo_text(c, 14, top + 5, ACCENT, "Textured teapot, %s shading", shading_name(st->shading));
     demo_text(c, 410, top + 5, ACCENT, "Torus, %s shading", shading_name(st->shading));
     panel(c, 8, top + 408, 784, 36, NULL);
     demo_text(c, 16, top + 414, INK, "s: flat / Gouraud / Phong    camera: u/d slide up/down, f/b forward/back,");
