@@ -216,6 +216,7 @@ $(GOLDEN_BIN): $(BUILD)/obj/tests/golden/golden.o $(LIB_A)
 # own total.
 build_suites = "$(1)/tests/unit" \
 	"$(1)/tests/golden --dir tests/golden --out $(1)/golden" \
+	"$(1)/tests/golden --dir tests/golden/course --scripts examples/course --out $(1)/golden-course" \
 	"sh tests/script-errors.sh $(1)/bin/fixel-draw $(1)/script-errors"
 BUILD_SUITES = $(call build_suites,$(BUILD))
 
@@ -253,6 +254,7 @@ test-nodeps:
 # Every golden set, in one go (`git status` then shows what changed; look at
 # the pictures before committing):
 #   tests/golden/<FORMAT>/  scene scripts per pixel format (tests/golden/golden.c)
+#   tests/golden/course/    the course examples, examples/course/*.fxs (same runner)
 #   tests/golden/demo/      fixel-demo's gallery pages     (tools/fixel-demo)
 #   tests/golden/kiosk/     fixel-kiosk's chosen frames    (tests/kiosk/run.sh)
 #   tests/input/pointer/    pointer replay frames          (tests/boards/test_pointer.c)
@@ -260,6 +262,7 @@ GOLDEN_UPDATES := golden-update-scenes demo-golden-update kiosk-golden-update po
 golden-update: $(GOLDEN_UPDATES)
 golden-update-scenes: all $(GOLDEN_BIN)
 	$(GOLDEN_BIN) --dir tests/golden --out $(BUILD)/golden --update
+	$(GOLDEN_BIN) --dir tests/golden/course --scripts examples/course --out $(BUILD)/golden-course --update
 pointer-golden-update: $(TEST_BIN)
 	FIXEL_POINTER_GOLDEN_UPDATE=1 $(TEST_BIN) pointer_
 .PHONY: $(GOLDEN_UPDATES)

@@ -183,10 +183,14 @@ static int wants_format(const char *script, fx_format f)
 int main(int argc, char **argv)
 {
     const char *dir = "tests/golden", *out = "build/golden", *render_ppm = NULL, *compare_ppm = NULL;
+    const char *scripts = NULL; /* default DIR/scripts */
     int update = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--dir") && i + 1 < argc)
             dir = argv[++i];
+        /* scripts kept elsewhere (examples/course), goldens still in DIR */
+        else if (!strcmp(argv[i], "--scripts") && i + 1 < argc)
+            scripts = argv[++i];
         else if (!strcmp(argv[i], "--out") && i + 1 < argc)
             out = argv[++i];
         else if (!strcmp(argv[i], "--update"))
@@ -203,8 +207,11 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--export-textures") && i + 1 < argc)
             return export_textures(dir, argv[++i]);
     }
-    char path[1024];
-    snprintf(path, sizeof path, "%s/scripts", dir);
+    char path[2200], sdir[1024];
+    snprintf(sdir, sizeof sdir, "%s/scripts", dir);
+    if (scripts)
+        snprintf(sdir, sizeof sdir, "%s", scripts);
+    snprintf(path, sizeof path, "%s", sdir);
     DIR *d = opendir(path);
     if (!d) {
         fprintf(stderr, "golden: cannot open %s: %s\n", path, strerror(errno));
@@ -227,7 +234,7 @@ int main(int argc, char **argv)
     void *arena = malloc(arena_size);
     for (int i = 0; i < n; i++) {
         size_t len;
-        snprintf(path, sizeof path, "%s/scripts/%s.fxs", dir, names[i]);
+        snprintf(path, sizeof path, "%s/%s.fxs", sdir, names[i]);
         char *text = slurp(path, &len);
         for (int f = 0; text && f < FX_FMT_COUNT; f++) {
             if (!wants_format(text, (fx_format)f))
