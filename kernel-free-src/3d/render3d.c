@@ -642,11 +642,13 @@ static inline int sm_shadowed(const fx3d_shadowmap *sm, const int64_t *val, int 
     return d > (int64_t)sm->depth[(size_t)ly * (size_t)sm->size + (size_t)lx] + sm->bias;
 }
 
-/* Which of the maps in use shadow the pixel: bit k for map k. */
+/* Which of the maps in use shadow the pixel: bit k for map k. A triangle
+ * kept for fx3d_flush may outlive its maps (shadows turned off before the
+ * flush): only the maps still in use are looked at. */
 static inline uint32_t sm_mask(const pctx *pc, const tri_mode *m, const int64_t *val)
 {
     uint32_t sh = 0;
-    for (int k = 0; k < m->use_sm; k++)
+    for (int k = 0; k < m->use_sm && k < pc->nsm; k++)
         if (sm_shadowed(pc->smv[k], val, k ? A_SMK + 3 * (k - 1) : A_SM))
             sh |= 1u << k;
     return sh;

@@ -359,3 +359,37 @@ FX_TEST(shadow3d_light_pass_needs_equal_depth)
     FX_CHECK(red > W * H / 4);
     free(g);
 }
+
+/* Painter's mode keeps triangles until fx3d_flush; maps turned off before
+ * the flush no longer shadow them (and are not read), maps still in use
+ * do. */
+FX_TEST(shadow3d_painter_flush_uses_only_maps_still_in_use)
+{
+    srig *g = srig_new(0xFF0000, 0x0000FF, 0x00FF00, FX_FMT_XRGB8888);
+    static unsigned char mem[400 * 1024];
+    static uint32_t plain[W * H], on[W * H];
+    fx3d_shadowmap *both[2] = {&g->sm[0], &g->sm[1]};
+    g->r.shading = FX3D_PHONG;
+    for (int pass = 0; pass < 3; pass++) {
+        fx3d_shadow_off(&g->r);
+        if (pass)
+            fill_maps(g);
+        FX_CHECK_EQ(fx3d_set_painter(&g->r, mem, sizeof mem), 0);
+        if (pass)
+            FX_CHECK_EQ(fx3d_shadow_use(&g->r, both, 2), 0);
+        memset(g->px, 0, sizeof g->px);
+        draw_scene(g);
+        if (pass == 2)
+            fx3d_shadow_off(&g->r);
+        fx3d_flush(&g->r);
+        FX_CHECK_EQ(g->r.pdropped, 0);
+        if (pass == 0)
+            memcpy(plain, g->px, sizeof plain);
+        else if (pass == 1)
+            memcpy(on, g->px, sizeof on);
+    }
+    FX_CHECK(memcmp(plain, g->px, sizeof plain) == 0);
+    FX_CHECK(memcmp(plain, on, sizeof plain) != 0);
+    fx3d_shadow_off(&g->r);
+    free(g);
+}
