@@ -355,9 +355,10 @@ int fx3d_shadow_use(fx3d *r, fx3d_shadowmap *const *maps, int n);
  * depth buffer (without one they add everywhere they draw). Each pass
  * rounds its colour to the surface's format before the next one adds to
  * it, so the result can differ from the single pass (fx3d_shadow_use),
- * which rounds the sum once: by at most one level of 255 per pass after
- * the first in XRGB8888 (tests/core/test_3d_shadows.c), more where the
- * surface keeps fewer bits (RGB565). Lights with attenuation or a spot
+ * which rounds the sum once: by less than (n + 1) / 2 levels of 255 for
+ * n passes in XRGB8888 (one level for the ambient pass and two lights;
+ * tests/core/test_3d_shadows.c), more where the surface keeps fewer bits
+ * (RGB565: a 5-bit step). Lights with attenuation or a spot
  * cone also differ in the rounding of the factor (the single pass
  * multiplies ambient + diffuse + specular by it at once). -FX_EINVAL for
  * a bad kind or light. */
