@@ -431,8 +431,19 @@ static int cmd_starglyph(fx_scene *sc)
     return 0;
 }
 
-/* Arrow from the vector field, disc colour from the scalar field (sampled
- * at the nearest of its nodes), bar from the field's curl magnitude. */
+/* Arrow from the vector field; disc colour and bar from the scalar field
+ * at the nearest of its nodes: its value, and its gradient's magnitude. */
+static int64_t grad_mag(const fx_grid *s, int32_t i, int32_t j)
+{
+    int32_t i0 = i > 0 ? i - 1 : i, i1 = i < s->w - 1 ? i + 1 : i;
+    int32_t j0 = j > 0 ? j - 1 : j, j1 = j < s->h - 1 ? j + 1 : j;
+    /* central differences per node spacing, doubled to stay in integers */
+    int64_t gx = ((int64_t)s->v[(ptrdiff_t)j * s->stride + i1] - s->v[(ptrdiff_t)j * s->stride + i0]) * 2 / (i1 - i0);
+    int64_t gy = ((int64_t)s->v[(ptrdiff_t)j1 * s->stride + i] - s->v[(ptrdiff_t)j0 * s->stride + i]) * 2 / (j1 - j0);
+    /* |values| < 2^31: each difference < 2^33, brought under 2^31 for fx_hypot */
+    return (int64_t)fx_hypot((int32_t)(gx / 8), (int32_t)(gy / 8));
+}
+
 static int cmd_glyphs(fx_scene *sc)
 {
     fx_rect r;
@@ -455,35 +466,30 @@ static int cmd_glyphs(fx_scene *sc)
         return 0;
     if (size > 4096)
         size = 4096;
-    /* the largest speed and curl over the drawn nodes scale arrow and bar */
+    /* the largest speed and gradient over the drawn nodes scale arrow and bar */
     uint32_t vmax = 1;
-    int64_t cmax = 1;
+    int64_t gmax = 1;
     for (int pass = 0; pass < 2; pass++)
         for (int32_t j = 0; j < g.h; j += step)
             for (int32_t i = 0; i < g.w; i += step) {
                 ptrdiff_t o = (ptrdiff_t)j * g.w + i;
-                int32_t i0 = i > 0 ? i - 1 : i, i1 = i < g.w - 1 ? i + 1 : i;
-                int32_t j0 = j > 0 ? j - 1 : j, j1 = j < g.h - 1 ? j + 1 : j;
-                /* curl = dv/dx - du/dy per node spacing, y up */
-                int64_t curl = ((int64_t)g.v[(ptrdiff_t)j * g.w + i1] - g.v[(ptrdiff_t)j * g.w + i0]) * 2 / (i1 - i0) +
-                               ((int64_t)g.u[(ptrdiff_t)j1 * g.w + i] - g.u[(ptrdiff_t)j0 * g.w + i]) * 2 / (j1 - j0);
-                curl = curl < 0 ? -curl : curl;
+                int32_t si = (int32_t)((int64_t)i * (s.w - 1) / (g.w - 1));
+                int32_t sj = (int32_t)((int64_t)j * (s.h - 1) / (g.h - 1));
+                int64_t gm = grad_mag(&s, si, sj);
                 uint32_t m = fx_hypot(g.u[o], g.v[o]);
                 if (pass == 0) {
                     vmax = m > vmax ? m : vmax;
-                    cmax = curl > cmax ? curl : cmax;
+                    gmax = gm > gmax ? gm : gmax;
                     continue;
                 }
                 int64_t px = r.x0 + (int64_t)i * (W - 1) / (g.w - 1), py = r.y0 + (int64_t)j * (H - 1) / (g.h - 1);
                 if (px + size < sc->ctx.clip.x0 || px - size > sc->ctx.clip.x1 || py + size < sc->ctx.clip.y0 ||
                     py - size > sc->ctx.clip.y1)
                     continue;
-                int32_t si = (int32_t)((int64_t)i * (s.w - 1) / (g.w - 1));
-                int32_t sj = (int32_t)((int64_t)j * (s.h - 1) / (g.h - 1));
                 int64_t sv = s.v[(ptrdiff_t)sj * s.stride + si];
                 fx16 t = hi > lo ? (fx16)((sv - lo) * 65536 / ((int64_t)hi - lo)) : 0;
                 fx16 du = (fx16)((int64_t)g.u[o] * 65536 / vmax), dv = (fx16)((int64_t)g.v[o] * 65536 / vmax);
-                fx16 bar = (fx16)(curl * 65536 / cmax);
+                fx16 bar = (fx16)(gm * 65536 / gmax);
                 fx_multi_glyph(&sc->ctx, (int32_t)px, (int32_t)py, (int32_t)size, du, dv, t, bar, plot_map(sc));
             }
     return 0;
@@ -519,7 +525,7 @@ static int cmd_spectrum(fx_scene *sc)
     }
     TRY(fx_scene_end(sc));
     if (nm0 < 380 || nm1 > 780 || nm0 >= nm1)
-        return fx_scene_error(sc, "wavelengths %d..%d out of range (380 <= NM0 < NM1 <= 780)", nm0, nm1);
+        return fx_scene_error(sc, "wavelengths %d..%d: need 380 <= NM0 < NM1 <= 780", nm0, nm1);
     /* one column per visible pixel, its wavelength at the column's centre */
     fx_rect v = fx_rect_intersect(r, sc->ctx.clip);
     if (fx_rect_empty(v))
