@@ -948,24 +948,27 @@ static void page_vsd(fx_ctx *c, demo_state *st) { demo_vsd_page(c, st, DEMO_TAB_
 
 static void page_rt(fx_ctx *c, demo_state *st) { demo_rt_page(c, st, DEMO_RT_Y); }
 
+static void page_objects(fx_ctx *c, demo_state *st) { demo_objects_page(c, st, DEMO_TAB_H + 8); }
+
 const demo_page demo_pages[] = {
     {"lines", "Lines", page_lines},
     {"circles", "Circles", page_circles},
     {"clipping", "Clipping", page_clipping},
     {"fills", "Fills", page_fills},
     {"textures", "Textures", page_textures},
-    {"transforms", "Transforms", page_transforms},
+    {"transforms", "Transform", page_transforms},
     {"colour", "Colour", page_colour},
     {"3d", "3D", page_3d},
     {"vsd", "Hidden", page_vsd},
+    {"objects", "Objects", page_objects},
     {"fractals", "Fractals", page_fractals},
     {"viz", "Viz", page_viz},
     {"glut", "GLUT", demo_page_glut},
     {"raytrace", "Ray trace", page_rt},
 };
 const int demo_npages = (int)(sizeof demo_pages / sizeof demo_pages[0]);
-/* Every page has a tab: thirteen 61-pixel tabs still hold the longest
- * label ("Transforms", 60 px) at 800 px. */
+/* Every page has a tab: fourteen 57-pixel tabs still hold the longest
+ * label ("Transform", "Ray trace": 54 px) at 800 px. */
 const int demo_ntabs = (int)(sizeof demo_pages / sizeof demo_pages[0]);
 
 void demo_state_init(demo_state *st, int32_t w, int32_t h)
