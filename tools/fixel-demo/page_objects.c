@@ -89,10 +89,9 @@ static void expand(char *out, size_t size, const char *s, int deg)
 
 void demo_objects_page(fx_ctx *c, demo_state *st, int32_t top)
 {
-    static uint8_t *arena;
+    /* the cells' depth buffers and meshes, reused cell after cell */
     const size_t arena_size = 8u << 20;
-    if (!arena)
-        arena = malloc(arena_size);
+    uint8_t *arena = malloc(arena_size);
     int32_t cw = 192, chh = 216;
     for (int i = 0; i < 8; i++) {
         int32_t x = 8 + (i % 4) * (cw + 4), y = top + (i / 4) * (chh + 12);
@@ -118,4 +117,5 @@ void demo_objects_page(fx_ctx *c, demo_state *st, int32_t top)
         }
         demo_text(c, x + 6, y + 5, 0xFFF2C14Eu, "%s", cells[i].label);
     }
+    free(arena);
 }
