@@ -174,10 +174,22 @@ static int tgrid_ok(const fx_tgrid *g)
     return g && g->a && g->b && g->c && g->w >= 2 && g->h >= 2 && g->stride >= g->w;
 }
 
-/* Node position along an axis in 24.8 (as viz.c's node8). */
+/* Node position along an axis in 24.8: viz.c's node8 (so glyphs sit where
+ * quiver's arrows do) while i (len - 1) 256 fits 63 bits, else rounded
+ * to the pixel first. */
 static int64_t node8(int32_t o, int64_t len, int32_t n, int32_t i)
 {
-    return (int64_t)o * 256 + rdiv((int64_t)i * (len - 1) * 256, n - 1);
+    if (len <= ((int64_t)1 << 23))
+        return (int64_t)o * 256 + rdiv((int64_t)i * (len - 1) * 256, n - 1);
+    return ((int64_t)o + rdiv((int64_t)i * (len - 1), n - 1)) * 256;
+}
+
+/* Node spacing along an axis times step, 24.8, capped at 2^41 (glyphs
+ * that large are all off any surface). */
+static int64_t spacing8(int64_t len, int32_t n, int32_t step)
+{
+    int64_t one = len <= ((int64_t)1 << 23) ? rdiv((len - 1) * 256, n - 1) : rdiv(len - 1, n - 1) * 256;
+    return one > (((int64_t)1 << 41) / step) ? (int64_t)1 << 41 : one * step;
 }
 
 int32_t fx_tensor_glyphs(const fx_ctx *c, fx_rect dest, const fx_tgrid *g, int32_t step,
@@ -196,8 +208,9 @@ int32_t fx_tensor_glyphs(const fx_ctx *c, fx_rect dest, const fx_tgrid *g, int32
             lmax = m > lmax ? m : lmax;
         }
     int64_t W = (int64_t)dest.x1 - dest.x0, H = (int64_t)dest.y1 - dest.y0;
-    int64_t sx = rdiv((W - 1) * 256 * step, g->w - 1), sy = rdiv((H - 1) * 256 * step, g->h - 1);
+    int64_t sx = spacing8(W, g->w, step), sy = spacing8(H, g->h, step);
     int64_t rmax = (sx < sy ? sx : sy) * 45 / 100;
+    rmax = rmax > ((int64_t)1 << 40) ? (int64_t)1 << 40 : rmax;
     int32_t n = 0;
     for (int32_t j = 0; j < g->h; j += step)
         for (int32_t i = 0; i < g->w; i += step) {
@@ -230,8 +243,9 @@ int fx_star_glyph(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r, const fx16
         /* clockwise from straight up on screen: (sin t, -cos t) */
         fx_angle t = (fx_angle)(((uint64_t)k << 32) / (uint32_t)n);
         int64_t len = (int64_t)r * v; /* Q16 pixels */
-        xy[2 * k] = fx_sat32((int64_t)cx + rdiv(len * fx_sin(t), (int64_t)1 << 32));
-        xy[2 * k + 1] = fx_sat32((int64_t)cy - rdiv(len * fx_cos(t), (int64_t)1 << 32));
+        /* len reaches 2^47 for r near 2^31: the product takes 128 bits */
+        xy[2 * k] = fx_sat32((int64_t)cx + fx_mul64_shift(len, fx_sin(t), 32));
+        xy[2 * k + 1] = fx_sat32((int64_t)cy - fx_mul64_shift(len, fx_cos(t), 32));
     }
     fx_fill_poly(c, xy, n, FX_FILL_NONZERO);
     fx_ctx o = *c;

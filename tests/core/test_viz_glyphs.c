@@ -225,6 +225,9 @@ FX_TEST(tensor_glyphs_over_a_grid)
     memset(k.px, 0, 100 * 100 * 4);
     FX_CHECK_EQ(fx_tensor_glyphs(&k.c, (fx_rect){INT32_MAX - 1000, 0, INT32_MAX, 100}, &g, 1, NULL), 9);
     FX_CHECK_EQ(fx_tensor_glyphs(&k.c, (fx_rect){-1048576, -1048576, 1048576, 1048576}, &g, 1, NULL), 9);
+    /* the whole int32 plane, any step: no overflow (the sanitized build checks) */
+    FX_CHECK_EQ(fx_tensor_glyphs(&k.c, (fx_rect){INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX}, &g, 1, NULL), 9);
+    FX_CHECK_EQ(fx_tensor_glyphs(&k.c, (fx_rect){INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX}, &g, INT32_MAX, NULL), 1);
     free(k.px);
 }
 
@@ -245,6 +248,8 @@ FX_TEST(star_glyph_spokes)
     FX_CHECK_EQ(at(&k, 45, 30), 0x00FF00);
     /* outside the up-right edge */
     FX_CHECK_EQ(at(&k, 55, 25), 0);
+    FX_CHECK_EQ(fx_star_glyph(&k.c, 40, 40, INT32_MAX, v, 4, 0), 0);
+    FX_CHECK_EQ(fx_star_glyph(&k.c, INT32_MIN, INT32_MAX, INT32_MAX, v, 4, 0), 0);
     FX_CHECK_EQ(fx_star_glyph(&k.c, 40, 40, 20, v, 2, 0), -FX_EINVAL);
     FX_CHECK_EQ(fx_star_glyph(&k.c, 40, 40, 20, v, 33, 0), -FX_EINVAL);
     free(k.px);
