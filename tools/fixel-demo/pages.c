@@ -528,8 +528,10 @@ static void page_transforms(fx_ctx *c, demo_state *st)
 #define WHEEL_CY (DEMO_TAB_H + 8 + 132)
 
 /* The RGB cube, HSV hexcone and HLS double cone (mesh.h colour solids)
- * side by side in r, turned by the frame counter. */
-static void draw_colour_solids(fx_ctx *c, demo_state *st, fx_rect r)
+ * side by side in r. They stand still: the colour page is a function of
+ * the picked colour alone (tests/tools/demo-outputs.sh compares a live
+ * output of it with the headless picture). */
+static void draw_colour_solids(fx_ctx *c, fx_rect r)
 {
     fx_surface s = fx_surface_sub(c->surf, r);
     void *z = malloc(fx3d_depth_bytes(&s, 32));
@@ -548,7 +550,6 @@ static void draw_colour_solids(fx_ctx *c, demo_state *st, fx_rect r)
         rd->mat.ambient = rd->mat.diffuse = fx3d_rgb_from_color(0xFFFFFF);
         rd->mat.specular = fx3d_rgb_from_color(0);
         rd->shading = FX3D_GOURAUD;
-        fx_angle spin = (fx_angle)(st->frame * 0x00800000u);
         for (int k = 0; k < FX_SOLID_COUNT; k++) {
             fx_vec3 pos[FX_COLOUR_SOLID_VERTS];
             uint32_t col[FX_COLOUR_SOLID_VERTS], tri[3 * FX_COLOUR_SOLID_TRIS];
@@ -560,7 +561,7 @@ static void draw_colour_solids(fx_ctx *c, demo_state *st, fx_rect r)
             fx_mat4 t, rx, ry;
             fx_mat4_translate(&t, (k - 1) * FX16_ONE * 3, 0, 0);
             fx_mat4_rotate_x(&rx, k == FX_SOLID_RGB_CUBE ? fx_angle_from_deg(25) : 0);
-            fx_mat4_rotate_y(&ry, (fx_angle)(fx_angle_from_deg(k == FX_SOLID_RGB_CUBE ? -40 : 20) + spin));
+            fx_mat4_rotate_y(&ry, fx_angle_from_deg(k == FX_SOLID_RGB_CUBE ? -40 : 20));
             fx_mat4 *top = fx_mat_stack_top(&rd->model);
             fx_mat4_mul(top, &t, &rx);
             fx_mat4_mul(top, top, &ry);
@@ -691,7 +692,7 @@ static void page_colour(fx_ctx *c, demo_state *st)
     }
 
     panel(c, 8, top + 278, 528, 166, "RGB cube, HSV hexcone, HLS double cone; hatching by intensity");
-    draw_colour_solids(c, st, (fx_rect){9, top + 294, 535, top + 392});
+    draw_colour_solids(c, (fx_rect){9, top + 294, 535, top + 392});
     draw_hatching(c, 16, top + 396, 56, 36);
 }
 
