@@ -2,6 +2,7 @@
 /* fixel — colour models (see fixel/colour.h for the contracts). */
 #include "fixel/colour.h"
 #include "fx_internal.h"
+#include "fixel/error.h"
 
 #define DEG60 ((int64_t)60 << 16)
 #define DEG360 ((int64_t)360 << 16)
@@ -206,3 +207,64 @@ fx_color fx_xyz_to_rgb(fx_xyz c)
     }
     return 0xFF000000u | (uint32_t)o[0] << 16 | (uint32_t)o[1] << 8 | o[2];
 }
+
+/* ---- colour from wavelength ---- */
+
+fx_xyz fx_wavelength_to_xyz(fx16 nm)
+{
+    fx_xyz o = {0, 0, 0};
+    int64_t off = (int64_t)nm - (int64_t)FX_CIE_FIRST * 65536; /* Q16 nm from 380 */
+    int64_t span = (int64_t)(FX_CIE_N - 1) * FX_CIE_STEP * 65536;
+    if (off < 0 || off > span)
+        return o;
+    int32_t i = (int32_t)(off / (FX_CIE_STEP * 65536));
+    int64_t f = off - (int64_t)i * FX_CIE_STEP * 65536; /* [0, 5 nm) in Q16 */
+    if (i == FX_CIE_N - 1) {
+        i--;
+        f = FX_CIE_STEP * 65536;
+    }
+    int32_t v[3];
+    for (int k = 0; k < 3; k++) {
+        /* table * 2^16 / 10^6, interpolated: (t0 * (5 - f) + t1 * f) / 5 */
+        int64_t a = fx_cie1931_cmf[i][k], b = fx_cie1931_cmf[i + 1][k];
+        int64_t t = a * (FX_CIE_STEP * 65536 - f) + b * f; /* < 2^21 * 2^19 */
+        /* t / (5 * 2^16) is the table value: times 2^16 / 10^6 for Q16 */
+        v[k] = (int32_t)div_round(t, (int64_t)FX_CIE_STEP * 1000000);
+    }
+    o.x = v[0];
+    o.y = v[1];
+    o.z = v[2];
+    return o;
+}
+
+int fx_xyz_to_xy(fx_xyz c, fx16 *x, fx16 *y)
+{
+    int64_t s = (int64_t)c.x + c.y + c.z;
+    if (s <= 0)
+        return -FX_EDOM;
+    *x = (fx16)div_round((int64_t)c.x * 65536, s);
+    *y = (fx16)div_round((int64_t)c.y * 65536, s);
+    return 0;
+}
+
+fx_color fx_xyz_to_rgb_display(fx_xyz c)
+{
+    int64_t v[3] = {c.x, c.y, c.z}, l[3];
+    for (int k = 0; k < 3; k++)
+        l[k] = div_round(xyz_inv[k][0] * v[0] + xyz_inv[k][1] * v[1] + xyz_inv[k][2] * v[2], 1 << 16);
+    int64_t mn = l[0] < l[1] ? l[0] : l[1];
+    mn = mn < l[2] ? mn : l[2];
+    if (mn < 0)
+        for (int k = 0; k < 3; k++)
+            l[k] -= mn;
+    int64_t mx = l[0] > l[1] ? l[0] : l[1];
+    mx = mx > l[2] ? mx : l[2];
+    if (mx <= 0)
+        return 0xFF000000u;
+    uint8_t o[3];
+    for (int k = 0; k < 3; k++)
+        o[k] = fx_linear_to_srgb((fx16)div_round(l[k] * 65536, mx));
+    return 0xFF000000u | (uint32_t)o[0] << 16 | (uint32_t)o[1] << 8 | o[2];
+}
+
+fx_color fx_wavelength_to_rgb(fx16 nm) { return fx_xyz_to_rgb_display(fx_wavelength_to_xyz(nm)); }

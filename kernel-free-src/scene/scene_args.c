@@ -150,6 +150,14 @@ A(contour, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("N", 1, 64), OPT, 
   I("LEVEL", INT32_MIN, INT32_MAX));
 A(quiver, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), OPT, IW("STEP", 1, CO));
 A(stream, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("N", 1, 64));
+A(tfield, FORM("hessian"), FORM(0), W("rotating"), IW("GW", 2, 1025), IW("GH", 2, 1025));
+A(tensorstyle, C("POSITIVE"), C("NEGATIVE"), C("MIXED"));
+A(tensor, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), OPT, IW("STEP", 1, CO));
+A(starglyph, XY("CX"), XY("CY"), I("R", 0, CO), C("OUTLINE"), REP("value", 3, 32), F("V", 0, 1));
+A(glyphs, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("STEP", 1, CO));
+A(chromaticity, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), OPT, W("all|fill|lines"));
+A(spectrum, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), OPT, I("NM0", 380, 780), I("NM1", 380, 780));
+A(hatch, FORM("off"), FORM(0), I("INTENSITY", 0, 255));
 /* ---- 3D ---- */
 /* ---- visible-surface detection (fixel/vsd.h bounds: 0..2047) ---- */
 A(vsdscene, IW("N", 0, 1000));
@@ -216,6 +224,7 @@ A(blobby, F("ISO", 0, 4096), P3("X0"), P3("Y0"), P3("Z0"), F("STEP", 0, G3), IW(
   IW("NZ", 1, 64));
 A(patch, W("bezier|bspline"), IW("N", 1, 64), REP("control point", 16, 16), P3("X"), P3("Y"), P3("Z"));
 A(ptabcull, W("on|off"));
+A(coloursolid, W("rgb|hsv|hls"), {FX_ARG_FX16, FX_ARG_OPEN_MIN, "SIZE", 0, (int64_t)G3 * 65536});
 A(octree, FORM("blob"), F("ISO", 0, 4096), IW("K", 1, 6), IW("SCALE", 1, 64), XY("SX"), XY("SY"), P3("X0"), P3("Y0"), P3("Z0"),
   F("SIDE", 0, G3), FORM("supertoroid"), F("R", 0, G3), F("r", 0, G3), SQE("E1"), SQE("E2"), IW("SIDES", 3, 64),
   IW("RINGS", 3, 64), IW("K", 1, 6), IW("SCALE", 1, 64), XY("SX"), XY("SY"), P3("X0"), P3("Y0"), P3("Z0"), F("SIDE", 0, G3));
@@ -271,7 +280,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"flood", a_flood, 0, 0}, {"boundaryfill", a_boundaryfill, 0, 0}, {"fillpoly", a_fillpoly, 0, 0},
     {"fillpolyf", a_fillpolyf, 0, 0}, {"polygon", a_polygon, 0, 0}, {"filltri", a_filltri, 0, 0},
     {"gouraudtri", a_gouraudtri, 0, 0}, {"gouraudpoly", a_gouraudpoly, 0, 0}, {"blend", a_blend, 0, 0},
-    {"pattern", a_pattern, 0, 0},
+    {"pattern", a_pattern, 0, 0}, {"hatch", a_hatch, 0, 0},
     {"colormap", a_colormap, 0, 0}, {"insidecolor", a_color, 0, 0}, {"mandelbrot", a_mandelbrot, 0, 0},
     {"julia", a_julia, 0, 0}, {"koch", a_koch, 0, 0}, {"snowflake", a_snowflake, 0, 0}, {"fractline", a_fractline, 0, 0},
     {"coastline", a_coastline, 0, 0}, {"hilbert", a_spacefill, 0, 0}, {"peano", a_spacefill, 0, 0},
@@ -281,6 +290,10 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"field", a_field, 0, 0}, {"vfield", a_vfield, 0, 0}, {"heatmap", a_heatmap, "field waves 8 8", 0},
     {"colorbar", a_colorbar, 0, 0}, {"contour", a_contour, "field waves 8 8", 0},
     {"quiver", a_quiver, "vfield vortex 8 8", 0}, {"stream", a_stream, "vfield vortex 8 8", 0},
+    {"tfield", a_tfield, "field waves 8 8", 0}, {"tensorstyle", a_tensorstyle, 0, 0},
+    {"tensor", a_tensor, "tfield rotating 8 8", 0}, {"starglyph", a_starglyph, 0, 0},
+    {"glyphs", a_glyphs, "field waves 8 8\nvfield vortex 8 8", 0}, {"chromaticity", a_chromaticity, 0, 0},
+    {"spectrum", a_spectrum, 0, 0},
     {"viewport3d", a_viewport3d, 0, 0}, {"depth", a_depth, 0, 0}, {"cleardepth", a_none, 0, 0},
     {"painter", a_painter, 0, 0}, {"flush", a_none, 0, 0}, {"camera", a_camera, 0, 0}, {"slide", a_slide, 0, 0},
     {"roll", a_deg, 0, 0}, {"pitch", a_deg, 0, 0}, {"yaw", a_deg, 0, 0}, {"perspective", a_perspective, 0, 0},
@@ -313,7 +326,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"superellipsoid", a_superellipsoid, 0, TRIS}, {"supertoroid", a_supertoroid, 0, TRIS},
     {"blobball", a_blobball, 0, 0}, {"blobclear", a_none, 0, 0},
     {"blobby", a_blobby, "blobball 0 0 0 1 1", "6 NX NY NZ tetrahedra, each ball evaluated at (NX+1)(NY+1)(NZ+1) points"},
-    {"patch", a_patch, 0, 0}, {"ptabcull", a_ptabcull, 0, 0},
+    {"patch", a_patch, 0, 0}, {"ptabcull", a_ptabcull, 0, 0}, {"coloursolid", a_coloursolid, 0, 0},
     {"octree", a_octree, "blobball 0 0 0 1 1",
      "2^(3K) voxels, each (blob) a field evaluation of every ball or (supertoroid) a row test of every triangle"},
     {0, 0, 0, 0},

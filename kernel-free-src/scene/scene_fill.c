@@ -178,6 +178,36 @@ static int hexval(char ch)
 }
 
 /* pattern off | pattern bg #C|none | pattern anchor X Y | pattern W H ROW... */
+/* hatch INTENSITY | hatch off: the pattern style of the cross-hatching
+ * for that intensity (fill.h fx_hatch_style), in the pattern's storage */
+static int cmd_hatch(fx_scene *sc)
+{
+    fill_state *st = state(sc);
+    if (!st)
+        return -FX_ENOMEM;
+    int p = sc->pos;
+    while (p < sc->len && (sc->text[p] == ' ' || sc->text[p] == '\t'))
+        p++;
+    /* a number (the intensity) or a word ("off") */
+    if (p < sc->len && sc->text[p] != '-' && sc->text[p] != '+' && (sc->text[p] < '0' || sc->text[p] > '9')) {
+        char w[8];
+        TRY(fx_scene_arg_word(sc, w, sizeof w));
+        if (!streq(w, "off"))
+            return fx_scene_error(sc, "expected off or an intensity 0..255");
+        TRY(fx_scene_end(sc));
+        sc->ctx.fill_style = 0;
+        return 0;
+    }
+    int32_t v;
+    TRY(fx_scene_arg_int(sc, &v));
+    TRY(fx_scene_end(sc));
+    if (v < 0 || v > 255)
+        return fx_scene_error(sc, "intensity %d out of range (0..255)", v);
+    fx_hatch_style(&st->style, st->bits, (uint8_t)v);
+    sc->ctx.fill_style = &st->style;
+    return 0;
+}
+
 static int cmd_pattern(fx_scene *sc)
 {
     fill_state *st = state(sc);
@@ -526,5 +556,6 @@ const fx_scene_cmd fx_scene_cmds_fill[] = {
     {"gouraudpoly", cmd_gouraudpoly, "gouraudpoly X0 Y0 #C0 X1 Y1 #C1 ... (convex)", FX_SCENE_DRAWS},
     {"blend", cmd_blend, "blend src|over", FX_SCENE_DRAWS},
     {"pattern", cmd_pattern, "pattern off | W H HEXROW... | bg #C|none | anchor X Y", FX_SCENE_DRAWS},
+    {"hatch", cmd_hatch, "hatch INTENSITY | hatch off", 0},
     {0, 0, 0, 0},
 };

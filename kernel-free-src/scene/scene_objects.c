@@ -277,6 +277,26 @@ static int cmd_ptabcull(fx_scene *sc)
     return 0;
 }
 
+/* coloursolid rgb|hsv|hls SIZE: the colour models as solids, each vertex
+ * its colour, lit flat with the 3D state (mesh.h fx_colour_solid_make) */
+static int cmd_coloursolid(fx_scene *sc)
+{
+    static const char *const ch[] = {"rgb", "hsv", "hls", NULL};
+    int k;
+    fx16 size;
+    TRY(k = fx_scene_arg_choice(sc, ch));
+    TRY(fx_scene_arg_fx16(sc, &size));
+    TRY(fx_scene_end(sc));
+    if (size <= 0 || size > 1024 * FX16_ONE)
+        return fx_scene_error(sc, "size out of range (0 < SIZE <= 1024)");
+    fx_vec3 pos[FX_COLOUR_SOLID_VERTS];
+    uint32_t col[FX_COLOUR_SOLID_VERTS], tri[3 * FX_COLOUR_SOLID_TRIS];
+    fx_mesh m = {pos, NULL, tri, 0, 0, FX_COLOUR_SOLID_VERTS, FX_COLOUR_SOLID_TRIS, NULL, col};
+    if (fx_colour_solid_make(&m, (fx_colour_solid)k, size) < 0)
+        return fx_scene_error(sc, "bad colour solid");
+    return fx_scene_mesh_draw(sc, &m);
+}
+
 static fx16 blob_inside(const void *user, fx_vec3 p)
 {
     const fx_blobby *b = user;
@@ -372,6 +392,7 @@ const fx_scene_cmd fx_scene_cmds_objects[] = {
     {"blobby", cmd_blobby, "blobby ISO X0 Y0 Z0 STEP NX NY NZ", D},
     {"patch", cmd_patch, "patch bezier|bspline N X Y Z (16 control points, row by row)", D},
     {"ptabcull", cmd_ptabcull, "ptabcull on|off", 0},
+    {"coloursolid", cmd_coloursolid, "coloursolid rgb|hsv|hls SIZE", D},
     {"octree", cmd_octree,
      "octree blob ISO K SCALE SX SY X0 Y0 Z0 SIDE | octree supertoroid R r E1 E2 SIDES RINGS K SCALE SX SY X0 Y0 Z0 SIDE", D},
     {0, 0, 0, 0},

@@ -74,6 +74,8 @@ int demo_vsd_key(demo_state *st, int key);
 #define DEMO_RT_W 784
 #define DEMO_RT_H 408
 void demo_rt_page(fx_ctx *c, demo_state *st, int32_t top);
+/* page_objects.c: the objects of fixel/objects.h, each by scene-script lines */
+void demo_objects_page(fx_ctx *c, demo_state *st, int32_t top);
 int demo_rt_key(demo_state *st, int key);
 int demo_rt_busy(const demo_state *st);
 

@@ -523,11 +523,77 @@ static void page_transforms(fx_ctx *c, demo_state *st)
 }
 
 /* ---- colour models ---- */
+#define WHEEL_R 104
+#define WHEEL_CX (8 + 130)
+#define WHEEL_CY (DEMO_TAB_H + 8 + 132)
+
+/* The RGB cube, HSV hexcone and HLS double cone (mesh.h colour solids)
+ * side by side in r. They stand still: the colour page is a function of
+ * the picked colour alone (tests/tools/demo-outputs.sh compares a live
+ * output of it with the headless picture). */
+static void draw_colour_solids(fx_ctx *c, fx_rect r)
+{
+    fx_surface s = fx_surface_sub(c->surf, r);
+    void *z = malloc(fx3d_depth_bytes(&s, 32));
+    fx3d *rd = malloc(sizeof *rd);
+    fx_mat4 ms[4], ps[2];
+    if (z && rd && fx3d_init(rd, &s, ms, 4, ps, 2) == 0) {
+        fx3d_set_depth(rd, z, 32);
+        fx_camera cam;
+        fx_camera_set(&cam, fx_vec3_make(0, 2 * FX16_ONE, 6 * FX16_ONE), fx_vec3_make(0, 0, 0),
+                      fx_vec3_make(0, FX16_ONE, 0));
+        fx_camera_view(&cam, &rd->view);
+        fx3d_perspective(rd, fx_angle_from_deg(20), fx16_from_ratio(s.w, s.h), FX16_ONE / 2, 50 * FX16_ONE);
+        rd->light[0].type = FX3D_LIGHT_DIRECTIONAL;
+        rd->light[0].pos = fx_vec3_make(FX16_ONE, 2 * FX16_ONE, 3 * FX16_ONE);
+        rd->ambient = fx3d_rgb_from_color(0x707070);
+        rd->mat.ambient = rd->mat.diffuse = fx3d_rgb_from_color(0xFFFFFF);
+        rd->mat.specular = fx3d_rgb_from_color(0);
+        rd->shading = FX3D_GOURAUD;
+        for (int k = 0; k < FX_SOLID_COUNT; k++) {
+            fx_vec3 pos[FX_COLOUR_SOLID_VERTS];
+            uint32_t col[FX_COLOUR_SOLID_VERTS], tri[3 * FX_COLOUR_SOLID_TRIS];
+            fx_mesh m = {pos, NULL, tri, 0, 0, FX_COLOUR_SOLID_VERTS, FX_COLOUR_SOLID_TRIS, NULL, col};
+            fx16 size = k == FX_SOLID_RGB_CUBE ? FX16_ONE * 7 / 5 : FX16_ONE * 17 / 10;
+            if (fx_colour_solid_make(&m, (fx_colour_solid)k, size) < 0)
+                continue;
+            /* the builders write whole matrices: model = T Rx Ry */
+            fx_mat4 t, rx, ry;
+            fx_mat4_translate(&t, (k - 1) * FX16_ONE * 3, 0, 0);
+            fx_mat4_rotate_x(&rx, k == FX_SOLID_RGB_CUBE ? fx_angle_from_deg(25) : 0);
+            fx_mat4_rotate_y(&ry, fx_angle_from_deg(k == FX_SOLID_RGB_CUBE ? -40 : 20));
+            fx_mat4 *top = fx_mat_stack_top(&rd->model);
+            fx_mat4_mul(top, &t, &rx);
+            fx_mat4_mul(top, top, &ry);
+            fx3d_draw(rd, &m);
+        }
+    }
+    free(rd);
+    free(z);
+}
+
+/* Eight intensities from white to black as cross-hatching. */
+static void draw_hatching(fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h)
+{
+    color(c, 0xFFFFFFFFu);
+    fx_fill_rect(c, x, y, 8 * w + 7 * 4 + 8, h + 8);
+    for (int i = 0; i < 8; i++) {
+        fx_fill_style fs;
+        uint8_t bits[FX_HATCH_BYTES];
+        fx_hatch_style(&fs, bits, (uint8_t)(255 - i * 255 / 7));
+        fx_ctx t = *c;
+        fx_ctx_set_color(&t, 0xFF000000u);
+        t.fill_style = &fs;
+        int32_t x0 = x + 4 + i * (w + 4), sq[8] = {x0, y + 4, x0 + w, y + 4, x0 + w, y + 4 + h, x0, y + 4 + h};
+        fx_fill_poly(&t, sq, 4, FX_FILL_EVENODD);
+    }
+}
+
 static void page_colour(fx_ctx *c, demo_state *st)
 {
     int32_t top = DEMO_TAB_H + 8;
-    panel(c, 8, top, 440, 444, "HSV wheel (click to pick)");
-    int32_t cx = 228, cy = top + 232, R = 190;
+    panel(c, 8, top, 260, 270, "HSV wheel (click to pick)");
+    int32_t cx = WHEEL_CX, cy = WHEEL_CY, R = WHEEL_R;
     for (int32_t y = -R; y <= R; y++)
         for (int32_t x = -R; x <= R; x++) {
             uint32_t d = fx_hypot(x, y);
@@ -553,52 +619,81 @@ static void page_colour(fx_ctx *c, demo_state *st)
     color(c, 0xFFFFFFFFu);
     fx_circle(c, cx + px, cy + py, 6);
 
-    int32_t x0 = 456;
-    panel(c, x0, top, 336, 444, "The chosen colour");
+    /* CIE 1931: the chromaticity diagram and the spectrum */
+    panel(c, 276, top, 260, 270, "CIE 1931 xy, spectrum 380-780 nm");
+    color(c, 0xFFFFFFFFu);
+    fx_chromaticity_diagram(c, (fx_rect){306, top + 22, 306 + 200, top + 22 + 214}, FX_CHROMA_FILL | FX_CHROMA_LOCUS |
+                                                                                      FX_CHROMA_GAMUT | FX_CHROMA_TICKS);
+    for (int32_t x = 0; x < 240; x++) {
+        /* 380 + 400 (x + 1/2) / 240 nm */
+        color(c, fx_wavelength_to_rgb((fx16)(380 * 65536 + (int64_t)(2 * x + 1) * 400 * 65536 / 480)));
+        fx_fill_rect(c, 286 + x, top + 246, 1, 16);
+    }
+
+    int32_t x0 = 544, w0 = 248;
+    panel(c, x0, top, w0, 444, "The chosen colour");
     color(c, col);
-    fx_fill_rect(c, x0 + 12, top + 24, 312, 70);
+    fx_fill_rect(c, x0 + 12, top + 24, w0 - 24, 56);
     uint32_t r = (col >> 16) & 255, g = (col >> 8) & 255, b = col & 255;
-    int32_t y = top + 110;
+    int32_t y = top + 92;
     demo_text(c, x0 + 12, y, ACCENT, "RGB");
-    demo_text(c, x0 + 60, y, INK, "%3u %3u %3u   #%02X%02X%02X", r, g, b, r, g, b);
+    demo_text(c, x0 + 48, y, INK, "%3u %3u %3u  #%02X%02X%02X", r, g, b, r, g, b);
     fx_cmy m = fx_rgb_to_cmy(col);
-    demo_text(c, x0 + 12, y + 20, ACCENT, "CMY");
-    demo_text(c, x0 + 60, y + 20, INK, "%3u %3u %3u", m.c, m.m, m.y);
+    demo_text(c, x0 + 12, y + 18, ACCENT, "CMY");
+    demo_text(c, x0 + 48, y + 18, INK, "%3u %3u %3u", m.c, m.m, m.y);
     fx_hsv hv = fx_rgb_to_hsv(col);
-    demo_text(c, x0 + 12, y + 40, ACCENT, "HSV");
-    demo_text(c, x0 + 60, y + 40, INK, "h %3d deg  s %3d%%  v %3d%%", fx16_round(hv.h),
-              fx16_round(hv.s * 100), fx16_round(hv.v * 100));
+    demo_text(c, x0 + 12, y + 36, ACCENT, "HSV");
+    demo_text(c, x0 + 48, y + 36, INK, "h %3d  s %3d%%  v %3d%%", fx16_round(hv.h), fx16_round(hv.s * 100),
+              fx16_round(hv.v * 100));
     fx_hls hl = fx_rgb_to_hls(col);
-    demo_text(c, x0 + 12, y + 60, ACCENT, "HLS");
-    demo_text(c, x0 + 60, y + 60, INK, "h %3d deg  l %3d%%  s %3d%%", fx16_round(hl.h),
-              fx16_round(hl.l * 100), fx16_round(hl.s * 100));
+    demo_text(c, x0 + 12, y + 54, ACCENT, "HLS");
+    demo_text(c, x0 + 48, y + 54, INK, "h %3d  l %3d%%  s %3d%%", fx16_round(hl.h), fx16_round(hl.l * 100),
+              fx16_round(hl.s * 100));
     fx_yiq q = fx_rgb_to_yiq(col);
-    demo_text(c, x0 + 12, y + 80, ACCENT, "YIQ");
-    demo_text(c, x0 + 60, y + 80, INK, "y %5d  i %5d  q %5d  (/1000)", (int)((int64_t)q.y * 1000 >> 16),
+    demo_text(c, x0 + 12, y + 72, ACCENT, "YIQ");
+    demo_text(c, x0 + 48, y + 72, INK, "%4d %4d %4d /1000", (int)((int64_t)q.y * 1000 >> 16),
               (int)((int64_t)q.i * 1000 / 65536), (int)((int64_t)q.q * 1000 / 65536));
+    fx_xyz xyz = fx_rgb_to_xyz(col);
+    fx16 cxx = 0, cyy = 0;
+    fx_xyz_to_xy(xyz, &cxx, &cyy);
+    demo_text(c, x0 + 12, y + 90, ACCENT, "xyY");
+    demo_text(c, x0 + 48, y + 90, INK, "%4d %4d %4d /1000", (int)((int64_t)cxx * 1000 >> 16),
+              (int)((int64_t)cyy * 1000 >> 16), (int)((int64_t)xyz.y * 1000 >> 16));
+    /* the chosen colour on the diagram */
+    int32_t dx = 306 + (int32_t)(((int64_t)cxx * 199 + 26214) / 52429);
+    int32_t dy = top + 22 + 213 - (int32_t)(((int64_t)cyy * 213 + 29491) / 58982);
+    color(c, 0xFF000000u);
+    fx_circle(c, dx, dy, 4);
+    color(c, 0xFFFFFFFFu);
+    fx_circle(c, dx, dy, 3);
     /* bars of the model's channels */
-    demo_text(c, x0 + 12, y + 110, DIM, "value ramps at this hue");
-    for (int32_t i = 0; i < 312; i++) {
+    int32_t bw = w0 - 24;
+    demo_text(c, x0 + 12, y + 116, DIM, "value ramps at this hue");
+    for (int32_t i = 0; i < bw; i++) {
         fx_hsv t = hv;
-        t.v = (fx16)(i * FX16_ONE / 311);
+        t.v = (fx16)(i * FX16_ONE / (bw - 1));
         t.s = hv.s;
         color(c, fx_hsv_to_rgb(t));
-        fx_fill_rect(c, x0 + 12 + i, y + 126, 1, 24);
+        fx_fill_rect(c, x0 + 12 + i, y + 132, 1, 20);
         fx_hls l2 = hl;
-        l2.l = (fx16)(i * FX16_ONE / 311);
+        l2.l = (fx16)(i * FX16_ONE / (bw - 1));
         color(c, fx_hls_to_rgb(l2));
-        fx_fill_rect(c, x0 + 12 + i, y + 156, 1, 24);
+        fx_fill_rect(c, x0 + 12 + i, y + 156, 1, 20);
     }
-    demo_text(c, x0 + 12, y + 186, DIM, "HSV value 0..1, HLS lightness 0..1");
-    demo_text(c, x0 + 12, y + 210, DIM, "colour maps");
+    demo_text(c, x0 + 12, y + 182, DIM, "HSV value, HLS lightness");
+    demo_text(c, x0 + 12, y + 206, DIM, "colour maps");
     static const fx_cmap maps[4] = {FX_CMAP_GREY, FX_CMAP_HOT, FX_CMAP_VIRIDIS, FX_CMAP_HSV};
     for (int k = 0; k < 4; k++) {
-        for (int32_t i = 0; i < 240; i++) {
-            color(c, fx_cmap_color(maps[k], (uint32_t)(i * 65536 / 239)));
-            fx_fill_rect(c, x0 + 12 + i, y + 226 + k * 22, 1, 18);
+        for (int32_t i = 0; i < 160; i++) {
+            color(c, fx_cmap_color(maps[k], (uint32_t)(i * 65536 / 159)));
+            fx_fill_rect(c, x0 + 12 + i, y + 222 + k * 22, 1, 18);
         }
-        demo_text(c, x0 + 260, y + 230 + k * 22, INK, "%s", fx_cmap_name(maps[k]));
+        demo_text(c, x0 + 178, y + 226 + k * 22, INK, "%s", fx_cmap_name(maps[k]));
     }
+
+    panel(c, 8, top + 278, 528, 166, "RGB cube, HSV hexcone, HLS double cone; hatching by intensity");
+    draw_colour_solids(c, (fx_rect){9, top + 294, 535, top + 392});
+    draw_hatching(c, 16, top + 396, 56, 36);
 }
 
 /* ---- 3D: the mesh renderer on two objects, one camera ---- */
@@ -814,18 +909,63 @@ static void page_viz(fx_ctx *c, demo_state *st)
         fx_streamline(c, vr, &vg, vr.x0 + 20 + i * 44, vr.y0 + 30 + (i % 3) * 90, FX16_ONE, 600);
     }
 
-    panel(c, 8, top + 308, 784, 136, "Hot colour map of the same field, heights as bars");
-    for (int x = 0; x < GW; x++) {
-        int32_t val = g[15 * GW + x];
-        int32_t hgt = (int32_t)((int64_t)(val - lo) * 100 / (hi - lo ? hi - lo : 1));
-        color(c, fx_cmap_color(FX_CMAP_HOT, (uint32_t)((int64_t)(val - lo) * 65535 / (hi - lo ? hi - lo : 1))));
-        fx_fill_rect(c, 20 + x * 18, top + 434 - hgt, 14, hgt + 1);
+    /* the field's Hessian as tensor glyphs: red over the peaks (both
+     * curvatures negative), blue in the dip, green on the saddles */
+    panel(c, 8, top + 308, 388, 136, "Hessian as tensor glyphs (scale compressed)");
+    static int32_t ta[GW * GH], tb[GW * GH], tc[GW * GH];
+    for (int y = 0; y < GH; y++)
+        for (int x = 0; x < GW; x++) {
+            int xa = x > 0 ? x - 1 : x, xb = x < GW - 1 ? x + 1 : x;
+            int ya = y > 0 ? y - 1 : y, yb = y < GH - 1 ? y + 1 : y;
+            int32_t f = g[y * GW + x];
+            ta[y * GW + x] = g[y * GW + xb] - 2 * f + g[y * GW + xa];
+            tc[y * GW + x] = g[yb * GW + x] - 2 * f + g[ya * GW + x];
+            /* y up: d/dy = -d/drow */
+            tb[y * GW + x] = -(g[yb * GW + xb] - g[ya * GW + xb] - g[yb * GW + xa] + g[ya * GW + xa]) / 4;
+            /* compress the scale (n -> 1000 n / (n + 10)): the peaks' curvature
+             * is a hundred times the plains', whose glyphs would vanish */
+            int32_t n = abs(ta[y * GW + x]);
+            n = abs(tb[y * GW + x]) > n ? abs(tb[y * GW + x]) : n;
+            n = abs(tc[y * GW + x]) > n ? abs(tc[y * GW + x]) : n;
+            ta[y * GW + x] = ta[y * GW + x] * 1000 / (n + 10);
+            tb[y * GW + x] = tb[y * GW + x] * 1000 / (n + 10);
+            tc[y * GW + x] = tc[y * GW + x] * 1000 / (n + 10);
+        }
+    fx_tgrid tg = {ta, tb, tc, GW, GH, GW};
+    static const fx_tensor_style ts = {0xFF3070D0u, 0xFFD04040u, 0xFF90C070u};
+    color(c, 0xFFE8E8E8u);
+    fx_tensor_glyphs(c, (fx_rect){24, top + 332, 380, top + 436}, &tg, 5, &ts);
+
+    /* multi-part glyphs: arrow = flow, disc = value, bar = slope */
+    panel(c, 404, top + 308, 388, 136, "Glyphs: flow arrow, value disc, slope bar");
+    int32_t vmax = 1, smax = 1;
+    for (int i = 0; i < GW * GH; i++) {
+        int32_t m = (int32_t)fx_hypot(u[i], vv[i]);
+        vmax = m > vmax ? m : vmax;
+        smax = m > smax ? m : smax;
     }
+    color(c, 0xFFF0E0A0u);
+    for (int y = 4; y < GH; y += 10)
+        for (int x = 2; x <= 26; x += 6) {
+            int i = y * GW + x;
+            uint32_t sl = fx_hypot(u[i], vv[i]);
+            fx_multi_glyph(c, 432 + (x - 2) * 10, top + 346 + (y - 4) * 4, 34, (fx16)((int64_t)u[i] * 65536 / vmax),
+                           (fx16)((int64_t)vv[i] * 65536 / vmax), (fx16)((int64_t)(g[i] - lo) * 65536 / (hi - lo ? hi - lo : 1)),
+                           (fx16)((int64_t)sl * 65536 / smax), FX_CMAP_VIRIDIS);
+        }
+    /* a star glyph of six heights along the field's diagonal */
+    fx16 sv[6];
+    for (int k = 0; k < 6; k++)
+        sv[k] = (fx16)((int64_t)(g[(3 + 5 * k) * GW + 3 + 7 * k] - lo) * 65536 / (hi - lo ? hi - lo : 1));
+    color(c, 0xFF4D9DE0u);
+    fx_star_glyph(c, 742, top + 386, 40, sv, 6, 0xFFFFFFFFu);
 }
 
 static void page_vsd(fx_ctx *c, demo_state *st) { demo_vsd_page(c, st, DEMO_TAB_H + 8); }
 
 static void page_rt(fx_ctx *c, demo_state *st) { demo_rt_page(c, st, DEMO_RT_Y); }
+
+static void page_objects(fx_ctx *c, demo_state *st) { demo_objects_page(c, st, DEMO_TAB_H + 8); }
 
 const demo_page demo_pages[] = {
     {"lines", "Lines", page_lines},
@@ -833,18 +973,19 @@ const demo_page demo_pages[] = {
     {"clipping", "Clipping", page_clipping},
     {"fills", "Fills", page_fills},
     {"textures", "Textures", page_textures},
-    {"transforms", "Transforms", page_transforms},
+    {"transforms", "Transform", page_transforms},
     {"colour", "Colour", page_colour},
     {"3d", "3D", page_3d},
     {"vsd", "Hidden", page_vsd},
+    {"objects", "Objects", page_objects},
     {"fractals", "Fractals", page_fractals},
     {"viz", "Viz", page_viz},
     {"glut", "GLUT", demo_page_glut},
     {"raytrace", "Ray trace", page_rt},
 };
 const int demo_npages = (int)(sizeof demo_pages / sizeof demo_pages[0]);
-/* Every page has a tab: thirteen 61-pixel tabs still hold the longest
- * label ("Transforms", 60 px) at 800 px. */
+/* Every page has a tab: fourteen 57-pixel tabs still hold the longest
+ * label ("Transform", "Ray trace": 54 px) at 800 px. */
 const int demo_ntabs = (int)(sizeof demo_pages / sizeof demo_pages[0]);
 
 void demo_state_init(demo_state *st, int32_t w, int32_t h)
@@ -871,8 +1012,8 @@ void demo_state_init(demo_state *st, int32_t w, int32_t h)
     st->julia_x = 14 + 140;
     st->julia_y = top + 20 + 150;
     st->koch_order = 4;
-    st->pick_x = 228 + 120;
-    st->pick_y = top + 232 + 60;
+    st->pick_x = WHEEL_CX + 66;
+    st->pick_y = WHEEL_CY + 32;
     fx_camera_set(&st->cam, fx_vec3_make(0, 3 * FX16_ONE, 7 * FX16_ONE), fx_vec3_make(0, FX16_ONE, 0),
                   fx_vec3_make(0, FX16_ONE, 0));
     st->shading = FX3D_GOURAUD;

@@ -68,6 +68,39 @@ fx_color fx_xyz_to_rgb(fx_xyz c);
 fx16 fx_srgb_to_linear(uint8_t v);
 uint8_t fx_linear_to_srgb(fx16 l);
 
+/* ---- colour from wavelength (CIE 1931) ----
+ *
+ * fx_cie1931_cmf: the CIE 1931 2-degree standard observer's colour-matching
+ * functions x-bar, y-bar, z-bar (CIE 15:2004) at FX_CIE_N wavelengths from
+ * FX_CIE_FIRST nm every FX_CIE_STEP nm, times 10^6 (exact: the CIE tabulates
+ * six decimals; y-bar(555) = 10^6).
+ *
+ * fx_wavelength_to_xyz: the three functions at nm (Q16.16 nanometres),
+ * linearly interpolated between table rows, in Q16 (y-bar = 1 is 0x10000);
+ * outside [380, 780] nm all are 0.
+ *
+ * fx_xyz_to_xy: chromaticity x = X / (X + Y + Z), y = Y / (X + Y + Z)
+ * (and z = 1 - x - y), each rounded to nearest Q16; -FX_EDOM when
+ * X + Y + Z <= 0.
+ *
+ * fx_xyz_to_rgb_display: a colour for a chromaticity that sRGB may not
+ * hold (spectral colours never are): XYZ by the sRGB matrix to linear RGB;
+ * a negative channel is lifted to 0 by adding the same amount to all three
+ * (desaturating toward white along the sRGB primaries), then the largest
+ * channel is scaled to 1 and the channels encoded by the sRGB curve. Hue is
+ * kept, lightness is not (the diagram's convention). Black for X=Y=Z=0.
+ * fx_wavelength_to_rgb is that of fx_wavelength_to_xyz: 700 nm gives a red,
+ * 520 nm a green, 450 nm a blue; black outside [380, 780] nm. */
+#define FX_CIE_FIRST 380
+#define FX_CIE_STEP 5
+#define FX_CIE_N 81
+extern const int32_t fx_cie1931_cmf[FX_CIE_N][3];
+
+fx_xyz fx_wavelength_to_xyz(fx16 nm);
+int fx_xyz_to_xy(fx_xyz c, fx16 *x, fx16 *y);
+fx_color fx_xyz_to_rgb_display(fx_xyz c);
+fx_color fx_wavelength_to_rgb(fx16 nm);
+
 #ifdef __cplusplus
 }  /* extern "C" */
 #endif

@@ -232,6 +232,25 @@ static inline int32_t fx_tri_attr_round(uint64_t v)
     return (int32_t)((int64_t)(v + 0x80000000u) >> 32);
 }
 
+/* ---- intensity-dependent cross-hatching ----
+ * A pen-and-ink rendering of a grey level: the darker the intensity
+ * (0 black .. 255 white), the more hatch directions and the closer the
+ * lines. Levels (FX_HATCH_LEVELS, level = (255 - intensity) * 8 / 256):
+ *   0 no lines; 1 diagonal "/" every 8 px; 2 "/" every 4 px; 3 and
+ *   "\" every 8 px; 4 both every 4 px; 5 and horizontal every 4 px;
+ *   6 and vertical every 4 px; 7 all four every 2 px.
+ * Each level's lines include the previous level's, so the ink covered
+ * never falls as the intensity falls. fx_hatch_style writes the level's
+ * 16 x 16 tile into bits (FX_HATCH_BYTES) and makes s a pattern style of
+ * it with a transparent background (ink = the context's colour, anchored
+ * at (0, 0)); it returns the number of hatch directions (0..4).
+ * fx_hatch_ink: the set pixels of a level's tile (of 256). */
+#define FX_HATCH_LEVELS 8
+#define FX_HATCH_BYTES 32
+int fx_hatch_level(uint8_t intensity);
+int fx_hatch_style(fx_fill_style *s, uint8_t *bits, uint8_t intensity);
+int32_t fx_hatch_ink(int level);
+
 #ifdef __cplusplus
 }  /* extern "C" */
 #endif

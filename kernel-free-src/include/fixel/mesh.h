@@ -104,6 +104,36 @@ int fx_mesh_obj_parse(fx_mesh *m, const char *text, size_t len, fx_obj_error *er
 /* Smooth per-vertex normals from the triangles (area-weighted average). */
 void fx_mesh_compute_normals(fx_mesh *m);
 
+/* ---- colour solids: the colour models as 3D models ----
+ * Each is 8 vertices and 12 triangles (FX_COLOUR_SOLID_VERTS/_TRIS), with
+ * per-vertex colours (m->col, which must be given) and no normals (m->nrm
+ * set NULL: faces are lit flat), size across, centred on the origin, y up,
+ * every triangle wound counter-clockwise seen from outside:
+ *   FX_SOLID_RGB_CUBE     the RGB cube: R along x, G along y, B along z,
+ *                         black at (-size/2)^3, white at (+size/2)^3;
+ *   FX_SOLID_HSV_HEXCONE  Smith's hexcone: black apex at y = -size/2, the
+ *                         hexagon V = 1 at y = +size/2 (radius size/2,
+ *                         hue 0 (red) along +x, hue rising toward -z),
+ *                         white at its centre;
+ *   FX_SOLID_HLS_DOUBLE_CONE the double hexcone: black apex at the bottom,
+ *                         white apex at the top, the fully saturated hues
+ *                         on the hexagon L = 0.5 at y = 0.
+ * Every colour inside a triangle is the linear blend of its corners', and
+ * in these models that blend is the model's own colour there (RGB is
+ * affine on the cube's faces; HSV and HLS are piecewise linear in RGB
+ * between adjacent primaries and secondaries), so Gouraud shading paints
+ * the solids exactly. Returns 0, or -FX_EINVAL (unknown kind, no col,
+ * capacities too small, size outside (0, 2048]). */
+typedef enum fx_colour_solid {
+    FX_SOLID_RGB_CUBE,
+    FX_SOLID_HSV_HEXCONE,
+    FX_SOLID_HLS_DOUBLE_CONE,
+    FX_SOLID_COUNT
+} fx_colour_solid;
+#define FX_COLOUR_SOLID_VERTS 8
+#define FX_COLOUR_SOLID_TRIS 12
+int fx_colour_solid_make(fx_mesh *m, fx_colour_solid kind, fx16 size);
+
 #ifdef __cplusplus
 }  /* extern "C" */
 #endif
