@@ -175,17 +175,17 @@ static void page_circles(fx_ctx *c, demo_state *st)
         color(c, fx_cmap_color(FX_CMAP_HOT, (uint32_t)(16000 + i * 8000)));
         fx_ellipse(c, 664, top + 120, 110 - i * 16, 20 + i * 14);
     }
-    panel(c, 8, top + 228, 384, 216, "Arcs");
+    panel(c, 8, top + 228, 384, 216, "Arcs: +angle turns clockwise, y down");
     for (int i = 0; i < 8; i++) {
         color(c, fx_cmap_color(FX_CMAP_HSV, (uint32_t)(i * 8192)));
-        fx_arc(c, 200, top + 340, 20 + i * 11, fx_angle_from_deg(i * 30), fx_angle_from_deg(i * 30 + 200));
+        fx_arc(c, 200, top + 340, 20 + i * 11, fx_angle_from_deg(-(i * 30 + 200)), fx_angle_from_deg(-(i * 30)));
     }
-    panel(c, 400, top + 228, 392, 216, "Pies and filled ellipses");
+    panel(c, 400, top + 228, 392, 216, "Pies (+angle clockwise), filled ellipses");
     static const int32_t share[5] = {90, 70, 100, 60, 40};
     uint32_t a = 0;
     for (int i = 0; i < 5; i++) {
         color(c, fx_cmap_color(FX_CMAP_VIRIDIS, (uint32_t)(i * 15000 + 3000)));
-        fx_pie(c, 500, top + 340, 80, fx_angle_from_deg((int32_t)a), fx_angle_from_deg((int32_t)a + share[i]));
+        fx_pie(c, 500, top + 340, 80, fx_angle_from_deg(-(int32_t)a - share[i]), fx_angle_from_deg(-(int32_t)a));
         a += (uint32_t)share[i];
     }
     color(c, ORANGE);
