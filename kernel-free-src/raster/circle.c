@@ -43,11 +43,15 @@ typedef struct sector {
 
 static void sector_init(sector *s, fx_angle a0, fx_angle a1)
 {
-    /* Q2.29 keeps cross products of 33-bit offsets below 2^62. */
-    s->sx = fx_cos30(a0) >> 1;
-    s->sy = fx_sin30(a0) >> 1;
-    s->ex = fx_cos30(a1) >> 1;
-    s->ey = fx_sin30(a1) >> 1;
+    /* Q2.29 keeps cross products of 33-bit offsets below 2^62. Halved
+     * towards zero, not by >> 1 (towards -inf), so that a direction and its
+     * mirror images stay mirror images: with >> 1 the rays at 135 and 315
+     * degrees missed the diagonal they should run along by 2^-30 and took or
+     * left the pixel centres on it unlike the rays at 45 and 225. */
+    s->sx = fx_cos30(a0) / 2;
+    s->sy = fx_sin30(a0) / 2;
+    s->ex = fx_cos30(a1) / 2;
+    s->ey = fx_sin30(a1) / 2;
     s->big = (uint32_t)(a1 - a0) > FX_ANGLE_180;
 }
 

@@ -44,7 +44,7 @@ static void draw_one(const fx_ctx *c, int kind, uint32_t seed)
     for (int i = 0; i < 8; i++)
         v[i] = rnd(-30, i & 1 ? H + 30 : W + 30);
     int32_t r = rnd(0, 50), r2 = rnd(0, 40);
-    fx_angle a0 = (fx_angle)rnd(0, 0x7FFFFFFF) * 2u, a1 = (fx_angle)rnd(0, 0x7FFFFFFF) * 2u;
+    fx_angle a0 = (fx_angle)rnd(0, 0xFFFFFF) << 8, a1 = (fx_angle)rnd(0, 0xFFFFFF) << 8;
     switch (kind) {
     case 0: fx_plot(c, v[0], v[1]); break;
     case 1: fx_hspan(c, v[1], v[0], v[2]); break;
@@ -252,7 +252,12 @@ FX_TEST(coords_old_arc_is_mirrored_angles)
     canvas a = canvas_make(W, H), b = canvas_make(W, H);
     for (uint32_t seed = 1; seed < 200; seed++) {
         rng = seed;
-        fx_angle a0 = (fx_angle)rnd(0, 0x7FFFFFFF) * 2u + (seed & 1), a1 = (fx_angle)rnd(0, 0x7FFFFFFF) * 2u;
+        /* whole-turn angles (rnd gives 24 bits), multiples of 45 degrees among them */
+        fx_angle a0 = (fx_angle)rnd(0, 0xFFFFFF) << 8 | (fx_angle)(seed & 0xFF), a1 = (fx_angle)rnd(0, 0xFFFFFF) << 8;
+        if (seed % 8 == 0) {
+            a0 = (fx_angle)(seed / 8 % 8) * FX_ANGLE_45;
+            a1 = (fx_angle)(seed / 64 % 8) * FX_ANGLE_45 + FX_ANGLE_45 * 3;
+        }
         int32_t r = rnd(1, 38);
         memset(a.mem, 0, sizeof(uint32_t) * W * H);
         memset(b.mem, 0, sizeof(uint32_t) * W * H);
