@@ -541,7 +541,7 @@ static void draw_xformed(fx_ctx *c, const fx_xform2 *m, int32_t cx, int32_t cy, 
 static void page_transforms(fx_ctx *c, demo_state *st)
 {
     int32_t top = DEMO_TAB_H + 8;
-    static const char *names[8] = {"original", "rotate 30", "scale 1.5 x 0.7", "shear x 0.5",
+    static const char *names[8] = {"original", "rotate 30: clockwise", "scale 1.5 x 0.7", "shear x 0.5",
                                    "reflect y axis", "rotate+scale", "reflect y=x", "animated"};
     for (int i = 0; i < 8; i++) {
         int32_t x = 8 + (i % 4) * 197, y = top + (i / 4) * 222;
