@@ -4,6 +4,7 @@
  * rotations agree about which way is positive in both modes; the clip trace
  * prints the notes' parameters; non-square pixels in window-to-viewport and
  * in the 3D projection. */
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -497,4 +498,13 @@ FX_TEST(coords_scene_commands)
     FX_CHECK(x1 - x0 + 1 >= 29 && x1 - x0 + 1 <= 30);
     FX_CHECK_EQ(run_into(0, "size 48 40\npixelaspect 0 4\n", err, sizeof err), -FX_EINVAL);
     FX_CHECK(strstr(err, "NUM") != NULL || strstr(err, "1..65536") != NULL);
+}
+
+/* The mode lives in what was padding: fx_ctx keeps its size and every other
+ * field its offset (docs/ABI.md: a layout change would be a new major). */
+FX_TEST(coords_field_fills_padding)
+{
+    FX_CHECK_EQ(offsetof(fx_ctx, coords), offsetof(fx_ctx, exterior) + 1);
+    FX_CHECK_EQ(offsetof(fx_ctx, exterior_rect), (offsetof(fx_ctx, exterior) + 1 + 3) / 4 * 4);
+    FX_CHECK_EQ(offsetof(fx_ctx, exterior_rect), offsetof(fx_ctx, coords) + 1);
 }
