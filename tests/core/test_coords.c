@@ -350,6 +350,14 @@ FX_TEST(coords_course_clip_trace_has_the_notes_numbers)
         fx_line(&c, 0, 0, 9, 9);
         FX_CHECK(trace_n > 0);
     }
+    /* the notes' Bresenham example (20,10)-(30,18), drawn bottom-up */
+    fx_ctx_reset_clip(&c);
+    c.line_clipper = FX_CLIP_DIRECT;
+    trace_clear();
+    fx_line(&c, 20, 10, 30, 18);
+    FX_CHECK(trace_has("p0=2dy-dx=6"));
+    FX_CHECK(trace_has("(21, 11)") && trace_has("(23, 12)") && trace_has("(30, 18)"));
+    FX_CHECK_EQ_HEX(b.mem[(H - 1 - 11) * W + 21], 0xFFFFFFu); /* (21, 11) is 11 rows up from the bottom */
     trace_clear();
     free(a.mem);
     free(b.mem);
