@@ -456,3 +456,15 @@ int fx_mat4_oblique(fx_mat4 *m, fx16 l, fx16 r, fx16 b, fx16 t, fx16 zn, fx16 zf
     fx_mat4_mul(m, &o, &h);
     return 0;
 }
+
+int fx_mat4_pixel_aspect(fx_mat4 *m, int32_t num, int32_t den)
+{
+    if (num < 1 || den < 1 || num > 65536 || den > 65536)
+        return -FX_EINVAL;
+    for (int c = 0; c < 4; c++) {
+        int64_t p = (int64_t)m->m[0][c] * num; /* below 2^48 */
+        int64_t q = (p < 0 ? p - den / 2 : p + den / 2) / den;
+        m->m[0][c] = fx_sat32(q);
+    }
+    return 0;
+}

@@ -367,6 +367,11 @@ int fx3d_perspective(fx3d *r, fx_angle fovy, fx16 aspect, fx16 zn, fx16 zf)
     return 0;
 }
 
+int fx3d_pixel_aspect(fx3d *r, int32_t num, int32_t den)
+{
+    return fx_mat4_pixel_aspect(fx_mat_stack_top(&r->proj), num, den);
+}
+
 int fx3d_ortho(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 zn, fx16 zf)
 {
     fx_mat4 m;

@@ -3,6 +3,7 @@
  * small printf-style formatter behind tracing. */
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
+#include "fixel/error.h"
 #include "fx_internal.h"
 #include "fx_span.h"
 
@@ -26,6 +27,32 @@ void fx_ctx_set_color(fx_ctx *c, fx_color color)
 
 void fx_ctx_set_clip(fx_ctx *c, fx_rect r) { c->clip = fx_rect_intersect(r, fx_surface_rect(&c->surf)); }
 void fx_ctx_reset_clip(fx_ctx *c) { c->clip = fx_surface_rect(&c->surf); }
+
+static fx_rect mirror_rows(fx_rect r, int32_t h)
+{
+    fx_rect m = {r.x0, fx_sat32((int64_t)h - r.y1), r.x1, fx_sat32((int64_t)h - r.y0)};
+    return m;
+}
+
+int fx_ctx_set_coords(fx_ctx *c, fx_coords mode)
+{
+    if (!c || (mode != FX_COORDS_SCREEN && mode != FX_COORDS_COURSE))
+        return -FX_EINVAL;
+    if (c->coords == (uint8_t)mode)
+        return 0;
+    /* Both directions are the same reflection: the view's row 0 becomes its
+     * last row. An empty context (no pixels) has nothing to turn. */
+    if (c->surf.pixels && c->surf.h > 0) {
+        if (c->surf.stride == INT32_MIN)
+            return -FX_EINVAL; /* cannot be negated; fx_surface_init never makes one */
+        c->surf.pixels += (intptr_t)(c->surf.h - 1) * (intptr_t)c->surf.stride;
+        c->surf.stride = -c->surf.stride;
+    }
+    c->clip = mirror_rows(c->clip, c->surf.h);
+    c->exterior_rect = mirror_rows(c->exterior_rect, c->surf.h);
+    c->coords = (uint8_t)mode;
+    return 0;
+}
 
 static uint32_t div255(uint32_t x) { return (x + 128 + ((x + 128) >> 8)) >> 8; }
 

@@ -76,6 +76,24 @@ typedef struct {
     int64_t xmin, xmax, ymin, ymax; /* the pixel-square region, closed */
 } seg;
 
+/* notes: the course notes' window instead, edges through the centres of
+ * the outermost pixels (xwmin..xwmax = x0..x1-1), in plain (undoubled)
+ * coordinates, so a trace prints the numbers worked by hand. Only traces
+ * use it: the pixels come from the pixel-square region. */
+static seg make_seg_notes(fx_rect w, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+{
+    seg s;
+    s.ax = x0;
+    s.ay = y0;
+    s.dx = (int64_t)x1 - x0;
+    s.dy = (int64_t)y1 - y0;
+    s.xmin = w.x0;
+    s.xmax = (int64_t)w.x1 - 1;
+    s.ymin = w.y0;
+    s.ymax = (int64_t)w.y1 - 1;
+    return s;
+}
+
 static seg make_seg(fx_rect w, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 {
     seg s;
@@ -140,6 +158,10 @@ static uint64_t gcd64(uint64_t a, uint64_t b)
 /* "p/q (0.123456)" reduced, into buf. */
 static const char *ratstr(char *buf, size_t n, rat u)
 {
+    if (u.q <= 0) { /* a degenerate one-pixel notes' window can divide by 0 */
+        fx_fmt(buf, n, "undefined");
+        return buf;
+    }
     uint64_t ap = u.p < 0 ? 0 - (uint64_t)u.p : (uint64_t)u.p, g = gcd64(ap, (uint64_t)u.q);
     if (!g)
         g = 1;
@@ -216,14 +238,17 @@ static int cohen(const fx_ctx *t, const seg *s, rat *u1, rat *u2)
 
 /* ---- Liang-Barsky ---- */
 
-static int liang(const fx_ctx *t, const seg *s, rat *u1, rat *u2)
+static int liang(const fx_ctx *t, const seg *s, rat *u1, rat *u2, int notes)
 {
     int64_t p[4] = {-s->dx, s->dx, -s->dy, s->dy};
     int64_t q[4] = {s->ax - s->xmin, s->xmax - s->ax, s->ay - s->ymin, s->ymax - s->ay};
     static const char *const edge[4] = {"left", "right", "below", "above"};
     rat a = {0, 1}, b = {1, 1};
     char r1[48], r2[48], r3[48];
-    TRACE(t, "  p_k, q_k in half pixels (the window's edges are pixel borders)");
+    if (notes)
+        TRACE(t, "  p_k, q_k in pixels (the window's edges through its outermost pixel centres)");
+    else
+        TRACE(t, "  p_k, q_k in half pixels (the window's edges are pixel borders)");
     for (int k = 0; k < 4; k++) {
         if (p[k] == 0) {
             TRACE(t, "  k=%d %-5s p=0 q=%lld: parallel, %s", k + 1, edge[k], (long long)q[k],
@@ -432,13 +457,10 @@ static int nln(const fx_ctx *t, const seg *s0, rat *u1, rat *u2)
 
 /* The direct clip has no parameters of its own; for the API, the parameter
  * range is that of Liang-Barsky (it is the same region). */
-int fx_clip_line_param(const fx_ctx *t, fx_line_clipper algo, fx_rect w, int32_t x0, int32_t y0,
-                       int32_t x1, int32_t y1, fx_clip_param *out)
+static int clip_param(const fx_ctx *t, fx_line_clipper algo, fx_rect w, int32_t x0, int32_t y0,
+                      int32_t x1, int32_t y1, int notes, fx_clip_param *out)
 {
-    t = traced(t);
-    if (fx_rect_empty(w))
-        return 0;
-    seg s = make_seg(w, x0, y0, x1, y1);
+    seg s = notes ? make_seg_notes(w, x0, y0, x1, y1) : make_seg(w, x0, y0, x1, y1);
     rat u1, u2;
     int r;
     if (s.dx == 0 && s.dy == 0) {
@@ -451,7 +473,7 @@ int fx_clip_line_param(const fx_ctx *t, fx_line_clipper algo, fx_rect w, int32_t
     } else if (algo == FX_CLIP_NLN) {
         r = nln(t, &s, &u1, &u2);
     } else {
-        r = liang(algo == FX_CLIP_LIANG ? t : &quiet, &s, &u1, &u2);
+        r = liang(algo == FX_CLIP_LIANG ? t : &quiet, &s, &u1, &u2, notes);
     }
     if (r) {
         out->u1_num = u1.p;
@@ -459,6 +481,35 @@ int fx_clip_line_param(const fx_ctx *t, fx_line_clipper algo, fx_rect w, int32_t
         out->u2_num = u2.p;
         out->u2_den = u2.q;
     }
+    return r;
+}
+
+/* In a course-mode context the trace is the notes' own computation, against
+ * the window's edges xwmin..xwmax (make_seg_notes), followed by the range the
+ * pixels need, against the pixel borders half a pixel further out; the
+ * result is always the latter, so the pixels do not depend on the mode. */
+int fx_clip_line_param(const fx_ctx *t, fx_line_clipper algo, fx_rect w, int32_t x0, int32_t y0,
+                       int32_t x1, int32_t y1, fx_clip_param *out)
+{
+    t = traced(t);
+    if (fx_rect_empty(w))
+        return 0;
+    if (!t->trace || t->coords != FX_COORDS_COURSE)
+        return clip_param(t, algo, w, x0, y0, x1, y1, 0, out);
+    fx_clip_param notes;
+    int rn = clip_param(t, algo, w, x0, y0, x1, y1, 1, &notes);
+    int r = clip_param(&quiet, algo, w, x0, y0, x1, y1, 0, out);
+    char r1[48], r2[48];
+    rat a = {notes.u1_num, notes.u1_den}, b = {notes.u2_num, notes.u2_den};
+    if (rn)
+        TRACE(t, "  notes' window: u1=%s u2=%s", ratstr(r1, sizeof r1, a), ratstr(r2, sizeof r2, b));
+    a = (rat){out->u1_num, out->u1_den};
+    b = (rat){out->u2_num, out->u2_den};
+    if (r)
+        TRACE(t, "  pixel borders (half a pixel outside): u1=%s u2=%s", ratstr(r1, sizeof r1, a),
+              ratstr(r2, sizeof r2, b));
+    else
+        TRACE(t, "  pixel borders (half a pixel outside): nothing inside");
     return r;
 }
 

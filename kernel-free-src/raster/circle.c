@@ -43,15 +43,20 @@ typedef struct sector {
 
 static void sector_init(sector *s, fx_angle a0, fx_angle a1)
 {
-    /* Q2.29 keeps cross products of 33-bit offsets below 2^62. */
-    s->sx = fx_cos30(a0) >> 1;
-    s->sy = fx_sin30(a0) >> 1;
-    s->ex = fx_cos30(a1) >> 1;
-    s->ey = fx_sin30(a1) >> 1;
+    /* Q2.29 keeps cross products of 33-bit offsets below 2^62. Halved
+     * towards zero, not by >> 1 (towards -inf), so that a direction and its
+     * mirror images stay mirror images: with >> 1 the rays at 135 and 315
+     * degrees missed the diagonal they should run along by 2^-30 and took or
+     * left the pixel centres on it unlike the rays at 45 and 225. */
+    s->sx = fx_cos30(a0) / 2;
+    s->sy = fx_sin30(a0) / 2;
+    s->ex = fx_cos30(a1) / 2;
+    s->ey = fx_sin30(a1) / 2;
     s->big = (uint32_t)(a1 - a0) > FX_ANGLE_180;
 }
 
-/* (px, py) in mathematical orientation (y up). */
+/* (px, py) is the pixel's offset in the context's own frame; the sector
+ * turns from +x towards +y of that frame (circle.h). */
 static int in_sector(const sector *s, int64_t px, int64_t py)
 {
     int64_t cs = s->sx * py - s->sy * px, ce = s->ex * py - s->ey * px;
@@ -142,7 +147,7 @@ static void octant(const conic_sink *k, int64_t cx, int64_t cy, uint32_t r, uint
     for (;;) {
         if (!swap || a != b) {
             int64_t ox = swap ? sx * b : sx * a, oy = swap ? sy * a : sy * b;
-            if (!sec || in_sector(sec, ox, -oy))
+            if (!sec || in_sector(sec, ox, oy))
                 conic_put(k, (int32_t)(cx + ox), (int32_t)(cy + oy));
         }
         if (b == hi)
@@ -284,7 +289,7 @@ static span sp_and(span a, span b)
     return r;
 }
 
-/* The px (y up: py = -dy) with cross(s, p) >= 0, and those with
+/* The px (py = dy, the context's frame) with cross(s, p) >= 0, and those with
  * cross(e, p) <= 0, as intervals on one row. */
 static span half_start(const sector *s, int64_t py)
 {
@@ -325,7 +330,7 @@ static void disc_rows(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r, const 
             conic_span(&k, y, cx + d.lo, cx + d.hi);
             continue;
         }
-        span h1 = sp_and(d, half_start(sec, -dy)), h2 = sp_and(d, half_end(sec, -dy));
+        span h1 = sp_and(d, half_start(sec, dy)), h2 = sp_and(d, half_end(sec, dy));
         if (!sec->big) {
             span s = sp_and(h1, h2);
             if (s.lo <= s.hi)

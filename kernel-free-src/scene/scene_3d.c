@@ -3,6 +3,7 @@
  * model matrix stack, lights, materials, shading and visibility modes,
  * meshes, planar shadows and the shadow buffer. State lives in the arena
  * (sc->mod[FX_SCENE_MOD_3D]); the first 3D command creates it. */
+#include "scene_frame.h"
 #include "fixel/error.h"
 #include "fixel/render3d.h"
 #include "fixel/scene.h"
@@ -44,13 +45,17 @@ static int get(fx_scene *sc, s3d **out)
         s = fx_scene_alloc(sc, sizeof *s);
         if (!s)
             return fx_scene_error(sc, "out of scene memory for the 3D state");
-        fx3d_init(&s->r, &sc->ctx.surf, s->mstack, 32, s->pstack, 4);
+        fx_surface scr = fx_scene_screen_surf(&sc->ctx);
+        fx3d_init(&s->r, &scr, s->mstack, 32, s->pstack, 4);
         fx_camera_set(&s->cam, fx_vec3_make(0, 0, 5 * FX16_ONE), fx_vec3_make(0, 0, 0),
                       fx_vec3_make(0, FX16_ONE, 0));
         fx_camera_view(&s->cam, &s->r.view);
         fx_mat4 p;
         fx_mat4_perspective(&p, fx_angle_from_deg(45), fx16_from_ratio(sc->w, sc->h), FX16_ONE / 10,
                             100 * FX16_ONE);
+        int32_t pn, pd;
+        fx_scene_pixel_aspect(sc, &pn, &pd); /* a 'pixelaspect' before the first 3D command */
+        fx_mat4_pixel_aspect(&p, pn, pd);
         fx_mat_stack_load(&s->r.proj, &p);
         sc->mod[FX_SCENE_MOD_3D] = s;
     }
@@ -210,6 +215,14 @@ static fx16 vp_aspect(const s3d *s)
     return fx16_from_ratio(s->r.viewport.x1 - s->r.viewport.x0, s->r.viewport.y1 - s->r.viewport.y0);
 }
 
+/* The script's 'pixelaspect' on the projection just loaded. */
+static int apply_par(fx_scene *sc, s3d *s)
+{
+    int32_t n, d;
+    fx_scene_pixel_aspect(sc, &n, &d);
+    return n == d ? 0 : fx3d_pixel_aspect(&s->r, n, d);
+}
+
 static int cmd_perspective(fx_scene *sc)
 {
     GET(s);
@@ -218,7 +231,7 @@ static int cmd_perspective(fx_scene *sc)
     fx_angle fov = fx_angle_from_deg16(v[0]);
     if (v[0] <= 0 || v[0] >= 180 * FX16_ONE || fx3d_perspective(&s->r, fov, vp_aspect(s), v[1], v[2]) < 0)
         return fx_scene_error(sc, "perspective needs 0 < FOVY < 180 and 0 < NEAR < FAR");
-    return 0;
+    return apply_par(sc, s);
 }
 
 static int cmd_ortho(fx_scene *sc)
@@ -228,7 +241,7 @@ static int cmd_ortho(fx_scene *sc)
     TRY(args_fx(sc, v, 6));
     if (fx3d_ortho(&s->r, v[0], v[1], v[2], v[3], v[4], v[5]) < 0)
         return fx_scene_error(sc, "ortho: empty view volume");
-    return 0;
+    return apply_par(sc, s);
 }
 
 static int cmd_oblique(fx_scene *sc)
@@ -247,7 +260,7 @@ static int cmd_oblique(fx_scene *sc)
     if (fx3d_oblique(&s->r, v[1], v[2], v[3], v[4], v[5], v[6], fx_angle_from_deg16(v[0]),
                      c ? FX_OBLIQUE_CABINET : FX_OBLIQUE_CAVALIER, v[7]) < 0)
         return fx_scene_error(sc, "oblique: empty view volume");
-    return 0;
+    return apply_par(sc, s);
 }
 
 /* ---- model transforms ---- */

@@ -57,6 +57,7 @@ A(pixel, XY("X"), XY("Y"));
 A(rect, XY("X"), XY("Y"), XY("W"), XY("H"));
 A(line4, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"));
 NONE(none);
+A(coords, W("screen|course"));
 /* ---- raster ---- */
 A(points1, REP("point", 1, 256), XY("X"), XY("Y"));
 A(bezier, REP("control point", 3, FX_BEZIER_MAX_POINTS), XY("X"), XY("Y"));
@@ -92,6 +93,7 @@ A(reflect, FORM("x"), FORM("y"), FORM("origin"), FORM("diagonal"), FORM("line"),
   FALL("X1"), FALL("Y1"));
 A(window, FALL("WX0"), FALL("WY0"), FALL("WX1"), FALL("WY1"));
 A(viewport, FORM("off"), FORM(0), XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), OPT, W("aspect"));
+A(pixelaspect, I("NUM", 1, 65536), I("DEN", 1, 65536));
 /* ---- fill ---- */
 A(gradient, FORM("off"), FORM("linear"), XY("X0"), XY("Y0"), XY("X1"), XY("Y1"),
   REP("colour stop", 2, FX_GRADIENT_MAX_STOPS), C("COLOR"), FORM("radial"), XY("CX"), XY("CY"), I("R", 1, CO),
@@ -261,7 +263,7 @@ A(rttrace, I("X", 0, 16383), I("Y", 0, 16383));
 const fx_scene_argspec fx_scene_argspecs[] = {
     {"size", a_size, 0, 0}, {"format", a_format, 0, 0}, {"clear", a_clear, 0, 0}, {"color", a_color, 0, 0},
     {"pixel", a_pixel, 0, 0}, {"rect", a_rect, 0, 0}, {"fillrect", a_rect, 0, 0}, {"line", a_line4, 0, 0},
-    {"present", a_none, 0, 0},
+    {"present", a_none, 0, 0}, {"coords", a_coords, 0, 0},
     {"dda", a_line4, 0, 0}, {"aaline", a_line4, 0, 0}, {"polyline", a_points1, 0, 0}, {"bezier", a_bezier, 0, 0},
     {"bspline", a_points4, 0, 0}, {"spline", a_points2, 0, 0}, {"linestyle", a_linestyle, 0, 0},
     {"linewidth", a_linewidth, 0, 0}, {"linecap", a_linecap, 0, 0}, {"linejoin", a_linejoin, 0, 0},
@@ -274,7 +276,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"clippoly", a_clippoly, 0, 0}, {"xpoly", a_xpoly, 0, 0}, {"push", a_none, 0, 0}, {"pop", a_none, "push", 0},
     {"identity", a_none, 0, 0}, {"translate", a_translate, 0, 0}, {"scale", a_scale, 0, 0}, {"rotate", a_rotate, 0, 0},
     {"shear", a_shear, 0, 0}, {"reflect", a_reflect, 0, 0}, {"window", a_window, 0, 0},
-    {"viewport", a_viewport, "window 0 0 10 10", 0},
+    {"viewport", a_viewport, "window 0 0 10 10", 0}, {"pixelaspect", a_pixelaspect, 0, 0},
     {"gradient", a_gradient, 0, 0}, {"proctex", a_proctex, 0, 0}, {"texture", a_texture, 0, 0},
     {"textri", a_textri, TEX, 0}, {"texpoly", a_texpoly, TEX, 0}, {"texstyle", a_texstyle, TEX, 0},
     {"flood", a_flood, 0, 0}, {"boundaryfill", a_boundaryfill, 0, 0}, {"fillpoly", a_fillpoly, 0, 0},

@@ -18,6 +18,7 @@
 #include "fixel/scene.h"
 #include "fixel/xform.h"
 #include "../base/fx_internal.h"
+#include "scene_frame.h"
 
 #define TRY(x)                   \
     do {                         \
@@ -40,6 +41,7 @@ typedef struct clip_state {
     int xn;
     fx16 win[4];
     int have_win;
+    int32_t par_num, par_den; /* pixel aspect ratio, 'pixelaspect' */
 } clip_state;
 
 static clip_state *state(fx_scene *sc)
@@ -52,6 +54,7 @@ static clip_state *state(fx_scene *sc)
         fx_clip_stack_init(&st->stack, st->saved, CLIP_DEPTH);
         fx_xform2_identity(&st->cur);
         fx_xform2_identity(&st->base);
+        st->par_num = st->par_den = 1;
         sc->mod[FX_SCENE_MOD_CLIP] = st;
     }
     sc->ctx.xform = &st->cur;
@@ -404,15 +407,38 @@ static int cmd_viewport(fx_scene *sc)
         return fx_scene_error(sc, "'viewport' needs a world 'window' first");
     if (r.x0 < -32767 || r.x1 > 32767 || r.y0 < -32767 || r.y1 > 32767)
         return fx_scene_error(sc, "viewport outside the Q16.16 range");
-    if (fx_xform2_window_viewport(&st->base, st->win[0], st->win[1], st->win[2], st->win[3],
-                                  fx16_from_int(r.x0), fx16_from_int(r.y0), fx16_from_int(r.x1 - 1),
-                                  fx16_from_int(r.y1 - 1), aspect) < 0)
+    if (fx_xform2_window_viewport_par(&st->base, st->win[0], st->win[1], st->win[2], st->win[3],
+                                      fx16_from_int(r.x0), fx16_from_int(r.y0), fx16_from_int(r.x1 - 1),
+                                      fx16_from_int(r.y1 - 1), aspect, st->par_num, st->par_den) < 0)
         return fx_scene_error(sc, "the world window has no area");
     st->cur = st->base;
     /* The course clips against the window before mapping; clipping against
      * the viewport after mapping removes the same points. */
     fx_ctx_set_clip(&sc->ctx, r);
     return 0;
+}
+
+/* Non-square pixels: later 'viewport ... aspect' mappings and 3D
+ * projections draw x at NUM/DEN of the y scale. */
+static int cmd_pixelaspect(fx_scene *sc)
+{
+    STATE(st);
+    int32_t n, d;
+    TRY(fx_scene_arg_int(sc, &n));
+    TRY(fx_scene_arg_int(sc, &d));
+    TRY(fx_scene_end(sc));
+    if (n < 1 || d < 1 || n > FX_PAR_MAX || d > FX_PAR_MAX)
+        return fx_scene_error(sc, "pixelaspect %d %d out of range (1..%d each)", n, d, FX_PAR_MAX);
+    st->par_num = n;
+    st->par_den = d;
+    return 0;
+}
+
+void fx_scene_pixel_aspect(fx_scene *sc, int32_t *num, int32_t *den)
+{
+    const clip_state *st = sc->mod[FX_SCENE_MOD_CLIP];
+    *num = st ? st->par_num : 1;
+    *den = st ? st->par_den : 1;
 }
 
 const fx_scene_cmd fx_scene_cmds_clip[] = {
@@ -432,10 +458,15 @@ const fx_scene_cmd fx_scene_cmds_clip[] = {
     {"identity", cmd_identity, "identity (back to the window-to-viewport mapping, or none)", FX_SCENE_DRAWS},
     {"translate", cmd_translate, "translate TX TY", FX_SCENE_DRAWS},
     {"scale", cmd_scale, "scale SX [SY [PX PY]] (about the fixed point PX PY)", FX_SCENE_DRAWS},
-    {"rotate", cmd_rotate, "rotate DEGREES [PX PY] (clockwise on screen, y down)", FX_SCENE_DRAWS},
+    {"rotate", cmd_rotate,
+     "rotate DEGREES [PX PY] (from +x towards +y: clockwise on screen; counter-clockwise after 'coords course')",
+     FX_SCENE_DRAWS},
     {"shear", cmd_shear, "shear x|y SH [REF] (relative to the line y = REF or x = REF)", FX_SCENE_DRAWS},
     {"reflect", cmd_reflect, "reflect x|y|origin|diagonal | reflect line X0 Y0 X1 Y1", FX_SCENE_DRAWS},
     {"window", cmd_window, "window WX0 WY0 WX1 WY1 (world coordinates for 'viewport')", FX_SCENE_DRAWS},
     {"viewport", cmd_viewport, "viewport X0 Y0 X1 Y1 [aspect] | viewport off", FX_SCENE_DRAWS},
+    {"pixelaspect", cmd_pixelaspect,
+     "pixelaspect NUM DEN (non-square pixels: x drawn NUM/DEN of y by 'viewport ... aspect' and 3D projections)",
+     FX_SCENE_DRAWS},
     {0, 0, 0, 0},
 };

@@ -125,8 +125,8 @@ static int cmd_fillellipse(fx_scene *sc)
 const fx_scene_cmd fx_scene_cmds_conic[] = {
     {"circle", cmd_circle, "circle CX CY R", FX_SCENE_DRAWS},
     {"disc", cmd_disc, "disc CX CY R", FX_SCENE_DRAWS},
-    {"arc", cmd_arc, "arc CX CY R START END   (degrees, counter-clockwise)", FX_SCENE_DRAWS},
-    {"pie", cmd_pie, "pie CX CY R START END   (degrees, counter-clockwise)", FX_SCENE_DRAWS},
+    {"arc", cmd_arc, "arc CX CY R START END   (degrees, turning as 'rotate' does: clockwise on screen, counter-clockwise after 'coords course')", FX_SCENE_DRAWS},
+    {"pie", cmd_pie, "pie CX CY R START END   (degrees, turning as 'rotate' does: clockwise on screen, counter-clockwise after 'coords course')", FX_SCENE_DRAWS},
     {"aacircle", cmd_aacircle, "aacircle CX CY R", FX_SCENE_DRAWS},
     {"ellipse", cmd_ellipse, "ellipse CX CY RX RY", FX_SCENE_DRAWS},
     {"fillellipse", cmd_fillellipse, "fillellipse CX CY RX RY", FX_SCENE_DRAWS},

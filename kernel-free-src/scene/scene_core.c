@@ -127,6 +127,17 @@ static int cmd_line(fx_scene *sc)
     return 0;
 }
 
+/* 'coords course' turns the 2D commands to the notes' frame (fx_ctx_set_coords):
+ * origin at the bottom-left pixel, y up, rotations and arcs counter-clockwise. */
+static int cmd_coords(fx_scene *sc)
+{
+    static const char *const modes[] = {"screen", "course", 0};
+    int m = fx_scene_arg_choice(sc, modes);
+    TRY(m);
+    TRY(fx_scene_end(sc));
+    return fx_ctx_set_coords(&sc->ctx, m ? FX_COORDS_COURSE : FX_COORDS_SCREEN);
+}
+
 static int cmd_present(fx_scene *sc)
 {
     TRY(fx_scene_end(sc));
@@ -142,6 +153,9 @@ const fx_scene_cmd fx_scene_cmds_core[] = {
     {"rect", cmd_rect, "rect X Y W H", FX_SCENE_DRAWS},
     {"fillrect", cmd_fillrect, "fillrect X Y W H", FX_SCENE_DRAWS},
     {"line", cmd_line, "line X0 Y0 X1 Y1", FX_SCENE_DRAWS},
+    {"coords", cmd_coords,
+     "coords screen|course (course: origin bottom-left, y up, +angles counter-clockwise, as the notes and GLUT)",
+     FX_SCENE_DRAWS},
     {"present", cmd_present, "present", FX_SCENE_DRAWS},
     {0, 0, 0, 0},
 };

@@ -4,6 +4,7 @@
  * nodes over the last two objects, `raytrace` (a tile or the whole surface)
  * and `rttrace` (one pixel's ray tree to the host's trace). State lives in
  * the arena (sc->mod[FX_SCENE_MOD_RT]); the first rt command creates it. */
+#include "scene_frame.h"
 #include "fixel/error.h"
 #include "fixel/rt.h"
 #include "fixel/scene.h"
@@ -370,11 +371,12 @@ static int cmd_raytrace(fx_scene *sc)
         for (int i = 0; i < 4; i++)
             TRY(fx_scene_arg_int(sc, &v[i]));
     TRY(fx_scene_end(sc));
+    fx_surface scr = fx_scene_screen_surf(&sc->ctx);
     if (sc->raytrace) {
-        int e = sc->raytrace(sc->host.user, &r->s, &sc->ctx.surf, v[0], v[1], v[2], v[3]);
+        int e = sc->raytrace(sc->host.user, &r->s, &scr, v[0], v[1], v[2], v[3]);
         return e < 0 ? fx_scene_error(sc, "raytrace: the host's renderer failed (%d)", e) : 0;
     }
-    fx_rt_render(&r->s, &sc->ctx.surf, v[0], v[1], v[2], v[3]);
+    fx_rt_render(&r->s, &scr, v[0], v[1], v[2], v[3]);
     return 0;
 }
 

@@ -10,6 +10,7 @@
  *   vsdoctree K SCALE       the course's voxel solid (2^K cube) by the octree
  *                           method, SCALE pixels per voxel, grey by depth
  * State lives in the arena (sc->mod[FX_SCENE_MOD_VSD]). */
+#include "scene_frame.h"
 #include "fixel/error.h"
 #include "fixel/scene.h"
 #include "fixel/vsd.h"
@@ -144,10 +145,11 @@ static int cmd_vsd(fx_scene *sc)
                                   (unsigned long)need);
     }
     const fx_ctx *c = sc->ctx.trace ? &sc->ctx : 0;
+    fx_surface scr = fx_scene_screen_surf(&sc->ctx);
     int e;
     if (m == FX_VSD_ABUFFER) {
         int32_t edges = 0;
-        e = fx_vsd_abuffer(s, &sc->ctx.surf, 0, 0, st->work, st->work_bytes, &edges);
+        e = fx_vsd_abuffer(s, &scr, 0, 0, st->work, st->work_bytes, &edges);
         if (c && e == 0)
             fx_trace(c, "abuffer: %d polygons, %d edge pixels blended", s->npoly, edges);
     } else {
@@ -159,7 +161,7 @@ static int cmd_vsd(fx_scene *sc)
         fx_vsd_stats stats;
         e = fx_vsd_render(s, (fx_vsd_method)m, st->ids, st->work, st->work_bytes, c, row, &stats);
         if (e == 0) {
-            fx_vsd_paint(s, st->ids, &sc->ctx.surf, 0, 0);
+            fx_vsd_paint(s, st->ids, &scr, 0, 0);
             if (c)
                 fx_trace(c, "%s: %d polygons, %d pieces, %d splits, %d moves, %d regions, "
                             "longest active edge list %d",
@@ -198,6 +200,7 @@ int fx_scene_octree_draw(fx_scene *sc, const uint8_t *vox, int32_t k, int32_t sc
     int32_t visited = fx_vsd_octree_render(&o, scale, depth, w, h);
     if (visited < 0)
         return fx_scene_error(sc, "octree rendering failed (%d)", visited);
+    fx_surface scr = fx_scene_screen_surf(&sc->ctx);
     for (int32_t y = 0; y < h; y++)
         for (int32_t x = 0; x < w; x++) {
             int32_t z = depth[(size_t)y * (size_t)w + (size_t)x];
@@ -205,7 +208,7 @@ int fx_scene_octree_draw(fx_scene *sc, const uint8_t *vox, int32_t k, int32_t sc
             if (z < 0 || px < 0 || py < 0)
                 continue;
             uint32_t g = (uint32_t)(230 - z * 170 / n);
-            fx_surface_put(&sc->ctx.surf, (int32_t)px, (int32_t)py, 0xFF000000u | g << 16 | g << 8 | (g * 3 / 4));
+            fx_surface_put(&scr, (int32_t)px, (int32_t)py, 0xFF000000u | g << 16 | g << 8 | (g * 3 / 4));
         }
     *nodes_out = o.nnode;
     return visited;

@@ -418,6 +418,13 @@ int fx_text(const fx_ctx *c, int32_t x, int32_t y, const char *utf8)
 {
     if (!c || !utf8)
         return -FX_EINVAL;
+    if (c->coords == FX_COORDS_COURSE) {
+        /* Glyphs stay upright (draw.h): the anchor is mapped, the text is
+         * drawn in the surface's own frame from there. */
+        fx_ctx s = *c;
+        fx_ctx_set_coords(&s, FX_COORDS_SCREEN);
+        return fx_text(&s, x, fx_sat32((int64_t)s.surf.h - 1 - y), utf8);
+    }
     const fx_text_style *st = c->text_style ? c->text_style : &default_style;
     const fx_font *f = st->font ? st->font : &builtin;
     const fx_rect *cl = &c->clip;

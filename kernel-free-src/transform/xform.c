@@ -82,8 +82,15 @@ static int64_t rdiv64(int64_t n, int64_t d) { return fx_w_rounddiv_away(fx_w_fro
 int fx_xform2_window_viewport(fx_xform2 *o, fx16 wx0, fx16 wy0, fx16 wx1, fx16 wy1, fx16 vx0,
                               fx16 vy0, fx16 vx1, fx16 vy1, int keep_aspect)
 {
+    return fx_xform2_window_viewport_par(o, wx0, wy0, wx1, wy1, vx0, vy0, vx1, vy1, keep_aspect, 1, 1);
+}
+
+int fx_xform2_window_viewport_par(fx_xform2 *o, fx16 wx0, fx16 wy0, fx16 wx1, fx16 wy1, fx16 vx0,
+                                  fx16 vy0, fx16 vx1, fx16 vy1, int keep_aspect, int32_t par_num,
+                                  int32_t par_den)
+{
     int64_t ww = (int64_t)wx1 - wx0, wh = (int64_t)wy1 - wy0;
-    if (!ww || !wh)
+    if (!ww || !wh || par_num < 1 || par_den < 1 || par_num > FX_PAR_MAX || par_den > FX_PAR_MAX)
         return -FX_EINVAL;
     int64_t sx = rdiv64(((int64_t)vx1 - vx0) * ONE, ww), sy = rdiv64(((int64_t)vy1 - vy0) * ONE, wh);
     if (!keep_aspect) {
@@ -93,8 +100,13 @@ int fx_xform2_window_viewport(fx_xform2 *o, fx16 wx0, fx16 wy0, fx16 wx1, fx16 w
                round16(fx_w_sub(fx_w_mul(vy0, ONE), fx_w_mul(fsy, wy0))));
         return 0;
     }
-    int64_t ax = sx < 0 ? -sx : sx, ay = sy < 0 ? -sy : sy, s = ax < ay ? ax : ay;
-    fx16 fsx = fx_sat32(sx < 0 ? -s : s), fsy = fx_sat32(sy < 0 ? -s : s);
+    /* One scale s for y and s * num/den for x (the pixels' aspect), the
+     * largest with which the window still fits: x fits while s <= ax
+     * den/num. With num == den this is the plain min(ax, ay). */
+    int64_t ax = sx < 0 ? -sx : sx, ay = sy < 0 ? -sy : sy;
+    int64_t axy = par_num == par_den ? ax : rdiv64(ax * par_den, par_num);
+    int64_t s = axy < ay ? axy : ay, s_x = par_num == par_den ? s : rdiv64(s * par_num, par_den);
+    fx16 fsx = fx_sat32(sx < 0 ? -s_x : s_x), fsy = fx_sat32(sy < 0 ? -s : s);
     /* centre onto centre: t = (v0 + v1)/2 - s (w0 + w1)/2 */
     fx_s128 nx = fx_w_sub(fx_w_mul((int64_t)vx0 + vx1, ONE), fx_w_mul(fsx, (int64_t)wx0 + wx1));
     fx_s128 ny = fx_w_sub(fx_w_mul((int64_t)vy0 + vy1, ONE), fx_w_mul(fsy, (int64_t)wy0 + wy1));

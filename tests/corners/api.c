@@ -89,11 +89,14 @@ static void nulls(const fx_surface *s)
     fx_blit(s, 0, 0, NULL);
 }
 
-/* Every primitive with every pair of extreme coordinates. */
+/* Every primitive with every pair of extreme coordinates, in both frames
+ * (course mode: the surface seen bottom-up, issue #23). */
 static void extremes(const fx_surface *s)
 {
     fx_ctx c;
     fx_ctx_init(&c, s);
+    for (int mode = 0; mode < 2; mode++) {
+    WANT(fx_ctx_set_coords(&c, mode ? FX_COORDS_COURSE : FX_COORDS_SCREEN) == 0);
     for (int i = 0; i < NE; i++)
         for (int j = 0; j < NE; j++) {
             int32_t a = E[i], b = E[j];
@@ -104,6 +107,8 @@ static void extremes(const fx_surface *s)
             fx_fill_rect(&c, a, b, a, b);
             fx_rect_outline(&c, a, b, b, a);
             fx_circle(&c, a, b, b < 0 ? 0 : b > 4096 ? 4096 : b);
+            fx_arc(&c, a, b, 3, (fx_angle)a, (fx_angle)b);
+            fx_pie(&c, b, a, 3, (fx_angle)b, (fx_angle)a);
             fx_fill_tri(&c, a, b, b, a, a, a);
             fx_fill_poly(&c, xy, 3, FX_FILL_NONZERO);
             fx_polygon(&c, xy, 3);
@@ -118,6 +123,7 @@ static void extremes(const fx_surface *s)
             if (fx_sprite_draw(s, 0, fx_sprite_arrow(), a, b, &sv) == 0)
                 fx_sprite_restore(s, &sv);
         }
+    }
     fx_fract_params p = {0, FX16_ONE, 1, 1};
     int32_t xy[6] = {INT32_MIN, 0, INT32_MAX, 0, 0, INT32_MAX};
     fx_coastline(&c, xy, 3, &p);

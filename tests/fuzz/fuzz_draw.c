@@ -93,7 +93,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         case 16: fx_hilbert(&c, v[0], v[1], v[2], u8(&r) % 7); break;
         case 17: fx_text(&c, v[0], v[1], "fixel \xE2\x82\xAC"); break;
         case 18: fx_ctx_set_clip(&c, (fx_rect){v[0], v[1], v[2], v[3]}); break;
-        case 19: c.blend = (uint8_t)(op >> 7); break;
+        case 19:
+            c.blend = (uint8_t)(op >> 7);
+            fx_ctx_set_coords(&c, (op >> 6) & 1 ? FX_COORDS_COURSE : FX_COORDS_SCREEN); /* issue #23 */
+            break;
         case 20:
             c.exterior = (uint8_t)(op >> 7);
             c.exterior_rect = (fx_rect){v[0], v[1], v[2], v[3]};

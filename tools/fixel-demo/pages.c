@@ -175,17 +175,17 @@ static void page_circles(fx_ctx *c, demo_state *st)
         color(c, fx_cmap_color(FX_CMAP_HOT, (uint32_t)(16000 + i * 8000)));
         fx_ellipse(c, 664, top + 120, 110 - i * 16, 20 + i * 14);
     }
-    panel(c, 8, top + 228, 384, 216, "Arcs");
+    panel(c, 8, top + 228, 384, 216, "Arcs: +angle turns clockwise, y down");
     for (int i = 0; i < 8; i++) {
         color(c, fx_cmap_color(FX_CMAP_HSV, (uint32_t)(i * 8192)));
-        fx_arc(c, 200, top + 340, 20 + i * 11, fx_angle_from_deg(i * 30), fx_angle_from_deg(i * 30 + 200));
+        fx_arc(c, 200, top + 340, 20 + i * 11, fx_angle_from_deg(-(i * 30 + 200)), fx_angle_from_deg(-(i * 30)));
     }
-    panel(c, 400, top + 228, 392, 216, "Pies and filled ellipses");
+    panel(c, 400, top + 228, 392, 216, "Pies (+angle clockwise), filled ellipses");
     static const int32_t share[5] = {90, 70, 100, 60, 40};
     uint32_t a = 0;
     for (int i = 0; i < 5; i++) {
         color(c, fx_cmap_color(FX_CMAP_VIRIDIS, (uint32_t)(i * 15000 + 3000)));
-        fx_pie(c, 500, top + 340, 80, fx_angle_from_deg((int32_t)a), fx_angle_from_deg((int32_t)a + share[i]));
+        fx_pie(c, 500, top + 340, 80, fx_angle_from_deg(-(int32_t)a - share[i]), fx_angle_from_deg(-(int32_t)a));
         a += (uint32_t)share[i];
     }
     color(c, ORANGE);
@@ -208,27 +208,65 @@ static void code_str(unsigned code, char *s)
     s[4] = 0;
 }
 
+/* The chosen clipper's trace, collected for the readout: each line without
+ * the decimal forms "(0.250000)" the narrow panel has no room for. */
+typedef struct clip_log {
+    char line[24][96];
+    int n;
+} clip_log;
+
+static void clip_log_line(void *user, const char *line)
+{
+    clip_log *l = user;
+    if (l->n >= 24)
+        return;
+    char *o = l->line[l->n++];
+    size_t k = 0;
+    for (const char *p = line; *p && k + 1 < sizeof l->line[0]; p++) {
+        if (*p == ' ' && p[1] == '(' && p[2] >= '0' && p[2] <= '9') {
+            while (*p && *p != ')')
+                p++;
+            if (!*p)
+                break;
+            continue;
+        }
+        if (*p == ' ' && (k == 0 || o[k - 1] == ' '))
+            continue; /* leading and doubled blanks */
+        o[k++] = *p;
+    }
+    o[k] = 0;
+}
+
+/* The playground is drawn in the course's frame (fx_ctx_set_coords: origin
+ * bottom-left, y up), so the region codes sit where the notes draw them,
+ * 1000 (top) above the window, and the numbers are the notes'. The state
+ * keeps the pointer's screen coordinates; cy() turns them. */
 static void page_clipping(fx_ctx *c, demo_state *st)
 {
-    int32_t top = DEMO_TAB_H + 8;
+    int32_t top = DEMO_TAB_H + 8, H = c->surf.h;
+#define cy(y) (H - 1 - (y))
     fx_rect area = {8, top, 572, st->h - 8};
     panel(c, area.x0, area.y0, area.x1 - area.x0, area.y1 - area.y0, NULL);
-    fx_rect w = st->win;
     fx_ctx a = *c;
     fx_ctx_set_clip(&a, (fx_rect){area.x0 + 1, area.y0 + 1, area.x1 - 1, area.y1 - 1});
+    fx_ctx_set_coords(&a, FX_COORDS_COURSE);
+    fx_rect w = {st->win.x0, H - st->win.y1, st->win.x1, H - st->win.y0};
+    fx_rect ar = {area.x0, H - area.y1, area.x1, H - area.y0};
+    int32_t lx0 = st->lx0, ly0 = cy(st->ly0), lx1 = st->lx1, ly1 = cy(st->ly1);
+#undef cy
     /* the nine regions: the window's edges extended */
     color(&a, 0xFF2E4A6Bu);
-    fx_line(&a, w.x0, area.y0, w.x0, area.y1);
-    fx_line(&a, w.x1 - 1, area.y0, w.x1 - 1, area.y1);
-    fx_line(&a, area.x0, w.y0, area.x1, w.y0);
-    fx_line(&a, area.x0, w.y1 - 1, area.x1, w.y1 - 1);
-    int32_t xs[3] = {(area.x0 + w.x0) / 2, (w.x0 + w.x1) / 2, (w.x1 + area.x1) / 2};
-    int32_t ys[3] = {(area.y0 + w.y0) / 2, (w.y0 + w.y1) / 2, (w.y1 + area.y1) / 2};
+    fx_line(&a, w.x0, ar.y0, w.x0, ar.y1);
+    fx_line(&a, w.x1 - 1, ar.y0, w.x1 - 1, ar.y1);
+    fx_line(&a, ar.x0, w.y0, ar.x1, w.y0);
+    fx_line(&a, ar.x0, w.y1 - 1, ar.x1, w.y1 - 1);
+    int32_t xs[3] = {(ar.x0 + w.x0) / 2, (w.x0 + w.x1) / 2, (w.x1 + ar.x1) / 2};
+    int32_t ys[3] = {(ar.y0 + w.y0) / 2, (w.y0 + w.y1) / 2, (w.y1 + ar.y1) / 2};
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             char s[5];
             code_str(fx_clip_region_code(w, xs[j], ys[i]), s);
-            demo_text(&a, xs[j] - 12, ys[i] - 5, 0xFF3F5F85u, "%s", s);
+            demo_text(&a, xs[j] - 12, ys[i] + 4, 0xFF3F5F85u, "%s", s); /* text: top-left corner, upright */
         }
     color(&a, 0xFF1E3A5Fu);
     fx_fill_rect(&a, w.x0, w.y0, w.x1 - w.x0, w.y1 - w.y0);
@@ -236,54 +274,69 @@ static void page_clipping(fx_ctx *c, demo_state *st)
     fx_rect_outline(&a, w.x0, w.y0, w.x1 - w.x0, w.y1 - w.y0);
     /* the whole line faint, the clipped part bright */
     color(&a, 0xFF5A6478u);
-    fx_line(&a, st->lx0, st->ly0, st->lx1, st->ly1);
+    fx_line(&a, lx0, ly0, lx1, ly1);
     fx_ctx k = a;
     k.line_clipper = (uint8_t)st->clipper;
     fx_ctx_set_clip(&k, fx_rect_intersect(w, a.clip));
     color(&k, ORANGE);
-    fx_line(&k, st->lx0, st->ly0, st->lx1, st->ly1);
+    fx_line(&k, lx0, ly0, lx1, ly1);
     color(&a, GREEN);
-    fx_disc(&a, st->lx0, st->ly0, 4);
+    fx_disc(&a, lx0, ly0, 4);
     color(&a, BLUE);
-    fx_disc(&a, st->lx1, st->ly1, 4);
+    fx_disc(&a, lx1, ly1, 4);
 
-    /* the readouts */
-    int32_t px = 580;
+    /* the readouts, in the course's coordinates */
+    int32_t px = 580, ty = top + 24;
     panel(c, px, top, 212, st->h - 8 - top, "Clipping");
-    demo_text(c, px + 8, top + 24, INK, "%s", clipper_name(st->clipper));
-    demo_text(c, px + 8, top + 36, DIM, "keys c / l / n switch");
-    demo_text(c, px + 8, top + 56, DIM, "window (%d,%d)-(%d,%d)", w.x0, w.y0, w.x1 - 1, w.y1 - 1);
+    demo_text(c, px + 8, ty, INK, "%s", clipper_name(st->clipper));
+    demo_text(c, px + 8, ty += 12, DIM, "keys c / l / n switch");
+    demo_text(c, px + 8, ty += 12, DIM, "y up, origin bottom-left");
+    demo_text(c, px + 8, ty += 16, DIM, "window (%d,%d)-(%d,%d)", w.x0, w.y0, w.x1 - 1, w.y1 - 1);
     char s0[5], s1[5];
-    unsigned c0 = fx_clip_region_code(w, st->lx0, st->ly0), c1 = fx_clip_region_code(w, st->lx1, st->ly1);
+    unsigned c0 = fx_clip_region_code(w, lx0, ly0), c1 = fx_clip_region_code(w, lx1, ly1);
     code_str(c0, s0);
     code_str(c1, s1);
-    demo_text(c, px + 8, top + 76, GREEN, "P0 (%d,%d)", st->lx0, st->ly0);
-    demo_text(c, px + 8, top + 88, GREEN, "   code %s", s0);
-    demo_text(c, px + 8, top + 104, BLUE, "P1 (%d,%d)", st->lx1, st->ly1);
-    demo_text(c, px + 8, top + 116, BLUE, "   code %s", s1);
-    demo_text(c, px + 8, top + 136, DIM, "codes: top bottom right left");
+    demo_text(c, px + 8, ty += 16, GREEN, "P0 (%d,%d) code %s", lx0, ly0, s0);
+    demo_text(c, px + 8, ty += 12, BLUE, "P1 (%d,%d) code %s", lx1, ly1, s1);
+    demo_text(c, px + 8, ty += 14, DIM, "codes: top bottom right left");
     const char *verdict = (c0 | c1) == 0 ? "trivially accepted" : (c0 & c1) ? "trivially rejected" : "needs clipping";
-    demo_text(c, px + 8, top + 150, INK, "%s", verdict);
+    demo_text(c, px + 8, ty += 12, INK, "%s", verdict);
+    /* the chosen algorithm at work: its own trace, the notes' numbers */
+    static clip_log log;
+    log.n = 0;
+    fx_ctx t = a;
+    t.trace = clip_log_line;
+    t.trace_user = &log;
     fx_clip_param p;
-    int vis = fx_clip_line_param(NULL, FX_CLIP_LIANG, w, st->lx0, st->ly0, st->lx1, st->ly1, &p);
-    demo_text(c, px + 8, top + 174, ACCENT, "Liang-Barsky parameters");
-    if (vis && p.u1_den && p.u2_den) {
-        demo_text(c, px + 8, top + 188, INK, "u1 = %lld/%lld", (long long)p.u1_num, (long long)p.u1_den);
-        demo_text(c, px + 8, top + 200, INK, "u2 = %lld/%lld", (long long)p.u2_num, (long long)p.u2_den);
-        demo_text(c, px + 8, top + 212, DIM, "   = %lld.%03lld .. %lld.%03lld",
-                  (long long)(p.u1_num / p.u1_den), (long long)(p.u1_num * 1000 / p.u1_den % 1000),
-                  (long long)(p.u2_num / p.u2_den), (long long)(p.u2_num * 1000 / p.u2_den % 1000));
-    } else {
-        demo_text(c, px + 8, top + 188, INK, "%s", vis ? "inside" : "outside: nothing drawn");
+    fx_clip_line_param(&t, (fx_line_clipper)st->clipper, w, lx0, ly0, lx1, ly1, &p);
+    ty += 16;
+    const int cols = 25;
+    for (int i = 0; i < log.n && ty < st->h - 60; i++) {
+        const char *l = log.line[i];
+        for (size_t o = 0, n = strlen(l); o < n && ty < st->h - 60;) {
+            size_t len = (size_t)(o ? cols - 2 : cols); /* continuation rows indented */
+            if (n - o > len) { /* break at the last blank that fits */
+                size_t b = len;
+                while (b > 0 && l[o + b] != ' ')
+                    b--;
+                if (b > 0)
+                    len = b;
+            } else {
+                len = n - o;
+            }
+            demo_text(c, px + 8 + (o ? 16 : 0), ty, o ? DIM : INK, "%.*s", (int)len, l + o);
+            o += len;
+            while (l[o] == ' ')
+                o++;
+            ty += 11;
+        }
     }
     uint32_t k0, k1;
-    if (fx_clip_line_steps(NULL, (fx_line_clipper)st->clipper, w, st->lx0, st->ly0, st->lx1, st->ly1, &k0, &k1))
-        demo_text(c, px + 8, top + 236, INK, "visible steps %u..%u", k0, k1);
+    if (fx_clip_line_steps(NULL, (fx_line_clipper)st->clipper, w, lx0, ly0, lx1, ly1, &k0, &k1))
+        demo_text(c, px + 8, st->h - 56, ACCENT, "visible steps %u..%u", k0, k1);
     else
-        demo_text(c, px + 8, top + 236, INK, "no visible steps");
-    demo_text(c, px + 8, top + 270, DIM, "drag the dots to move");
-    demo_text(c, px + 8, top + 282, DIM, "the line, drag elsewhere");
-    demo_text(c, px + 8, top + 294, DIM, "to move the window");
+        demo_text(c, px + 8, st->h - 56, ACCENT, "no visible steps");
+    demo_text(c, px + 8, st->h - 40, DIM, "drag the dots or the window");
 }
 
 /* Styled fills (patterns, shaders) go through fx_fill_span, which the
@@ -488,7 +541,7 @@ static void draw_xformed(fx_ctx *c, const fx_xform2 *m, int32_t cx, int32_t cy, 
 static void page_transforms(fx_ctx *c, demo_state *st)
 {
     int32_t top = DEMO_TAB_H + 8;
-    static const char *names[8] = {"original", "rotate 30", "scale 1.5 x 0.7", "shear x 0.5",
+    static const char *names[8] = {"original", "rotate 30: clockwise", "scale 1.5 x 0.7", "shear x 0.5",
                                    "reflect y axis", "rotate+scale", "reflect y=x", "animated"};
     for (int i = 0; i < 8; i++) {
         int32_t x = 8 + (i % 4) * 197, y = top + (i / 4) * 222;

@@ -478,13 +478,16 @@ static void draw_gauge(kiosk *k, fx_ctx *c, const kiosk_widget *w, fx_rect r, fx
     int32_t thick = rad / 5 < 4 ? 4 : rad / 5;
     fx_ctx t = *c;
     fx_ctx_set_color(&t, 0xFF374151u);
-    fx_pie(&t, cx, cy, rad, fx_angle_from_deg(315), fx_angle_from_deg(225));
+    /* The dial's angles are y-up (the needle below uses cy - sin); fx_pie
+     * turns with y down, so each slice is given mirrored: y-up a0 -> a1 is
+     * -a1 -> -a0. */
+    fx_pie(&t, cx, cy, rad, 0u - fx_angle_from_deg(225), 0u - fx_angle_from_deg(315));
     int64_t f = s->has_value ? frac_permille(w, s->value) : 0;
     fx_angle a225 = fx_angle_from_deg(225);
     fx_angle av = a225 - (fx_angle)((uint64_t)0xC0000000u * (uint64_t)f / 1000);
     if (f > 0) {
         fx_ctx_set_color(&t, acc);
-        fx_pie(&t, cx, cy, rad, av, a225);
+        fx_pie(&t, cx, cy, rad, 0u - a225, 0u - av);
     }
     fx_ctx_set_color(&t, k->cfg.panel);
     fx_disc(&t, cx, cy, rad - thick);

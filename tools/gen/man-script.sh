@@ -27,6 +27,23 @@ or
 Fractal views, 3D transforms and plots take fixed\\-point decimals, parsed
 exactly (no floating point anywhere in the core).
 Angles are in degrees.
+.PP
+Coordinates are pixels with the origin at the top\-left pixel and y
+growing downwards, until
+.B coords course
+puts the origin at the bottom\-left pixel with y growing upwards, as the
+course notes and GLUT do (the same drawing mirrored top to bottom; text
+stays upright).
+A positive angle turns from +x towards +y for
+.BR rotate ,
+.B arc
+and
+.BR pie
+alike: clockwise on the screen by default, counter\-clockwise after
+.BR "coords course" .
+3D, ray\-tracing and visible\-surface commands have y\-up cameras of their
+own and draw the same picture in both.
+.PP
 The first error stops the script with a message naming its line.
 .PP
 .B size

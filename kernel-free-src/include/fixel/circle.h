@@ -17,11 +17,17 @@
  *
  * The disc is exactly the pixels with (x-cx)^2 + (y-cy)^2 <= r^2 (W6).
  *
- * Angles are binary (fixed.h: one turn = 2^32), counter-clockwise from +x
- * with y pointing up on the screen; arcs and pie slices run
- * counter-clockwise from a0 to a1, and a0 == a1 means the whole circle. A
- * pixel belongs to the slice when its centre offset (dx, -dy) from the
- * circle's centre lies in the angular sector (boundary rays included).
+ * Angles are binary (fixed.h: one turn = 2^32) and turn the way rotations
+ * do (xform.h): from +x towards +y of the context's frame. Arcs and pie
+ * slices run from a0 to a1 in that sense, and a0 == a1 means the whole
+ * circle; a point at angle a0 rotated by a1 - a0 ends at a1, on the slice.
+ * On the screen that is clockwise in a screen-mode context (y down) and
+ * counter-clockwise, as in the course notes, in a course-mode one (y up,
+ * fx_ctx_set_coords). A pixel belongs to the slice when its centre offset
+ * (dx, dy) from the circle's centre lies in the angular sector (boundary
+ * rays included). (Arcs used to run counter-clockwise on the y-down
+ * screen, against the rotations: the old fx_arc(a0, a1) is fx_arc(-a1, -a0)
+ * now, pixel for pixel.)
  *
  * Centres anywhere in int32 and radii 0..INT32_MAX work without overflow;
  * negative radii draw nothing.

@@ -44,6 +44,8 @@ typedef struct fx_ctx {
     uint8_t blend;       /* fx_blend */
     uint8_t line_clipper; /* which line clipper (clip.h); the pixels are the same for all */
     uint8_t exterior;    /* 1: draw only outside exterior_rect (clip.h) */
+    uint8_t coords;      /* fx_coords; set only through fx_ctx_set_coords (it fills
+                          * what was padding, so the layout is unchanged) */
     fx_rect exterior_rect;
     const struct fx_line_style *line_style; /* NULL: solid, 1 px */
     const struct fx_text_style *text_style; /* NULL: built-in font, scale 1 */
@@ -52,6 +54,29 @@ typedef struct fx_ctx {
     fx_trace_fn trace;                      /* NULL: no tracing */
     void *trace_user;
 } fx_ctx;
+
+/* Which way y points for everything drawn through a context.
+ *
+ * FX_COORDS_SCREEN (the default): the surface's own frame, origin at the
+ * top-left pixel, y growing downwards (docs/CONVENTIONS.md).
+ * FX_COORDS_COURSE: the course notes' (and GLUT/OpenGL's) frame, origin at
+ * the bottom-left pixel, y growing upwards: pixel (x, y) is the surface's
+ * (x, H-1-y). The mapping is made once, in the context's view of the surface
+ * (row 0 is the bottom row, the stride negated), so every primitive,
+ * transform, clip window and trace of the core works in the chosen frame
+ * with the same algorithm: a drawing in course mode is exactly the same
+ * drawing in screen mode mirrored top to bottom, and the numbers a trace
+ * prints are the ones a student works out by hand in y-up coordinates.
+ * One exception keeps text readable: fx_text draws its glyphs upright, with
+ * (x, y) still the text's top-left corner (see font.h). */
+typedef enum fx_coords { FX_COORDS_SCREEN = 0, FX_COORDS_COURSE = 1 } fx_coords;
+
+/* Switch c to mode. The clip and exterior rectangles are carried over so
+ * that they keep covering the same pixels of the surface (their y is
+ * mirrored); the colour and styles are unchanged. Switching to the mode c is
+ * in does nothing. -FX_EINVAL for c NULL or an unknown mode. */
+int fx_ctx_set_coords(fx_ctx *c, fx_coords mode);
+static inline fx_coords fx_ctx_coords(const fx_ctx *c) { return (fx_coords)c->coords; }
 
 /* A context on s: clip = whole surface, colour opaque white, SRC blending.
  * c NULL: nothing happens; s NULL: an empty context that draws nothing. */

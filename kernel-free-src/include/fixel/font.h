@@ -109,6 +109,10 @@ void fx_text_extent(const fx_text_style *st, const char *utf8, int64_t *w, int64
  * scale 1, no background, per-pixel clipping). Malformed UTF-8 shows the
  * fallback glyph. Returns the number of characters drawn at least in part,
  * or -FX_EINVAL when c or utf8 is NULL. */
+/* In a course-mode context (draw.h, y up) the glyphs are still drawn
+ * upright, reading left to right: (x, y) is the text's top-left corner in
+ * course coordinates and the lines go on downwards on the screen, so a
+ * label stays readable when the drawing around it is mirrored. */
 int fx_text(const fx_ctx *c, int32_t x, int32_t y, const char *utf8);
 
 #ifdef __cplusplus

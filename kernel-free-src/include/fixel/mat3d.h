@@ -137,6 +137,14 @@ void fx_camera_view(const fx_camera *c, fx_mat4 *m);
  * perspective, left == right, ...). */
 int fx_mat4_perspective(fx_mat4 *m, fx_angle fovy, fx16 aspect, fx16 znear, fx16 zfar);
 int fx_mat4_ortho(fx_mat4 *m, fx16 l, fx16 r, fx16 b, fx16 t, fx16 znear, fx16 zfar);
+/* Non-square pixels (the pixel aspect ratio, e.g. the notes' 3/4): m =
+ * S(num/den, 1, 1) . m, the first row of a projection multiplied by
+ * num/den, each entry rounded to nearest (ties away from zero), so every
+ * projected x (about the viewport's centre) is num/den of what it was and
+ * a sphere is drawn num/den as many pixels wide as it is tall. For 3/4
+ * (and any den that is a power of two) the entries are exact. num, den in
+ * 1..65536, else -FX_EINVAL and m unchanged. */
+int fx_mat4_pixel_aspect(fx_mat4 *m, int32_t num, int32_t den);
 /* Oblique parallel projection: a point at depth d = -z in front of the
  * camera moves by (L (d - plane) cos alpha, L (d - plane) sin alpha)
  * before the orthographic projection, so the plane at depth `plane` (the

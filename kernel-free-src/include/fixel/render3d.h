@@ -230,6 +230,9 @@ int fx3d_set_translucent(fx3d *r, void *mem, size_t bytes);
  * the viewer is at infinity, for specular highlights). */
 int fx3d_perspective(fx3d *r, fx_angle fovy, fx16 aspect, fx16 znear, fx16 zfar);
 int fx3d_ortho(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar);
+/* Non-square pixels: fx_mat4_pixel_aspect on the current projection matrix
+ * (call it after the projection helper, as glScale on GL_PROJECTION). */
+int fx3d_pixel_aspect(fx3d *r, int32_t num, int32_t den);
 int fx3d_oblique(fx3d *r, fx16 l, fx16 rt, fx16 b, fx16 t, fx16 znear, fx16 zfar,
                  fx_angle alpha, fx16 len, fx16 plane);
 

@@ -7,8 +7,11 @@
  * handles any 3x3 and fx_xform2_apply divides by w when the bottom row is
  * not 0 0 1.
  *
- * Coordinates are the surface's: x right, y DOWN. A rotation by +a maps
- * (1, 0) to (cos a, sin a), which on the screen turns clockwise. Angles are
+ * Coordinates are the context's: x right, y down in the default screen
+ * mode, y up in course mode (draw.h, fx_ctx_set_coords). A rotation by +a
+ * maps (1, 0) to (cos a, sin a), turning from +x towards +y: clockwise on
+ * the screen in screen mode, counter-clockwise (as in the course notes) in
+ * course mode. Arcs and pie slices (circle.h) follow the same rule. Angles are
  * binary (fx_angle, a full turn = 2^32); rotations by multiples of 90
  * degrees and reflections about lines at multiples of 45 degrees are exact
  * (fx_sin/fx_cos are exact there and no other rounding happens).
@@ -77,6 +80,20 @@ void fx_xform2_reflection_line(fx_xform2 *out, fx16 px, fx16 py, fx_angle a);
  * the window centred in the viewport. -FX_EINVAL for an empty window. */
 int fx_xform2_window_viewport(fx_xform2 *out, fx16 wx0, fx16 wy0, fx16 wx1, fx16 wy1, fx16 vx0,
                               fx16 vy0, fx16 vx1, fx16 vy1, int keep_aspect);
+
+/* The same on a display whose pixels are not square (pixel aspect ratio,
+ * e.g. the notes' 3/4): with keep_aspect, x is scaled by par_num/par_den
+ * times the y scale, so a shape that is as wide as it is tall in the world
+ * is par_num/par_den as many pixels wide as it is tall, and looks round on
+ * such a display (a world circle becomes an ellipse with rx/ry = num/den);
+ * the window is fitted and centred as above. Without keep_aspect the window
+ * fills the viewport whatever the pixels are, as in
+ * fx_xform2_window_viewport. par_num, par_den in 1..FX_PAR_MAX (else
+ * -FX_EINVAL); 1/1 is fx_xform2_window_viewport exactly. */
+#define FX_PAR_MAX 65536
+int fx_xform2_window_viewport_par(fx_xform2 *out, fx16 wx0, fx16 wy0, fx16 wx1, fx16 wy1, fx16 vx0,
+                                  fx16 vy0, fx16 vx1, fx16 vy1, int keep_aspect, int32_t par_num,
+                                  int32_t par_den);
 
 /* ---- composition and inversion ---- */
 /* out = a . b (b applies first); out may alias a or b. Saturates. */
