@@ -124,7 +124,11 @@ int fx_fire(const fx_ctx *c, fx_rect r, fx16 rough, uint32_t seed)
         int64_t pos = (int64_t)(x - r.x0) * FIRE_N * 256 / w;
         int32_t i = (int32_t)(pos >> 8), f = (int32_t)(pos & 255);
         int32_t tx = i >= FIRE_N ? t[FIRE_N] : (int32_t)(t[i] + (((int64_t)(t[i + 1] - t[i]) * f) >> 8));
-        int64_t top = (int64_t)tx * h; /* tongue height in Q16.16 px */
+        /* a parabolic envelope (0.3 at the sides, 1 in the middle): the
+         * fire is a blaze, not a wall cut off by the rectangle */
+        int64_t uu = (int64_t)(2 * (x - r.x0) + 1) * 256 / (2 * w); /* 0..256 */
+        int64_t env = 77 + (179 * 4 * uu * (256 - uu) >> 16);    /* /256 */
+        int64_t top = ((int64_t)tx * h * env >> 8) + 65536; /* tongue height in Q16.16 px */
         for (int32_t y = cl.y0; y < cl.y1; y++) {
             int64_t u = (int64_t)(r.y1 - 1 - y) << 16;
             int32_t base = (int32_t)((top - u) * 270 / top); /* 270 at the foot, 0 at the tip */

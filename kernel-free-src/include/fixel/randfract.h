@@ -14,7 +14,8 @@
  *
  * Fire: the flame's outline is an upward midpoint-displacement profile
  * (the 1D fract() of koch.h over 257 samples across the rectangle: tongue
- * heights 1/8 .. 1 of the rectangle, roughness H = rough), and inside it
+ * heights 1/8 .. 1 of the rectangle, roughness H = rough, under a
+ * parabolic envelope falling to 0.3 at the sides), and inside it
  * the heat falls off linearly with height, perturbed by three octaves of
  * seeded value noise (a fractal sum, amplitude halving per octave); heat
  * maps to black - red - yellow - white. Pixels below a heat of 24/255 are
