@@ -10,6 +10,7 @@
 #include "fixel/scene.h"
 #include "fixel/boxdim.h"
 #include "fixel/circle.h"
+#include "fixel/collage.h"
 #include "fixel/julia.h"
 #include "fixel/randfract.h"
 #include "fixel/turtle.h"
@@ -561,6 +562,23 @@ static int cmd_fire(fx_scene *sc)
     return 0;
 }
 
+/* The module's scratch block (mountain, collage, fractcompress): kept and
+ * reused, replaced by a bigger one only when a command needs more. */
+static void *scratch(fx_scene *sc, size_t need)
+{
+    fx_scene_fractal *st = state(sc);
+    if (!st)
+        return 0;
+    if (need > st->buf_bytes) {
+        void *mem = fx_scene_alloc(sc, need);
+        if (!mem)
+            return 0;
+        st->buf = mem;
+        st->buf_bytes = need;
+    }
+    return st->buf;
+}
+
 static int cmd_mountain(fx_scene *sc)
 {
     fx16 size, height, rough = 45875 /* 0.7 */, sea = 13107 /* 0.2 */;
@@ -579,19 +597,10 @@ static int cmd_mountain(fx_scene *sc)
         return fx_scene_error(sc, "grid order %d out of range (1..%d)", k, FX_TERRAIN_MESH_MAX_K);
     if (size <= 0 || height < 0 || rough < 0 || rough > FX16_ONE || sea < 0 || sea > FX16_ONE)
         return fx_scene_error(sc, "SIZE > 0, HEIGHT >= 0, ROUGH and SEA in 0..1");
-    fx_scene_fractal *st = state(sc);
-    if (!st)
-        return fx_scene_error(sc, "out of scene memory");
     int32_t side = (1 << k) + 1;
-    size_t need = (size_t)side * side * sizeof(int32_t) + (size_t)nv * sizeof(uint32_t);
-    if (need > st->buf_bytes) {
-        void *mem = fx_scene_alloc(sc, need);
-        if (!mem)
-            return fx_scene_error(sc, "out of scene memory for a %dx%d terrain", side, side);
-        st->buf = mem;
-        st->buf_bytes = need;
-    }
-    int32_t *h = st->buf;
+    int32_t *h = scratch(sc, (size_t)side * side * sizeof(int32_t) + (size_t)nv * sizeof(uint32_t));
+    if (!h)
+        return fx_scene_error(sc, "out of scene memory for a %dx%d terrain", side, side);
     fx_mesh m;
     TRY(fx_scene_mesh_alloc(sc, nv, nt, 0, &m));
     m.col = (uint32_t *)(h + (size_t)side * side);
@@ -602,6 +611,117 @@ static int cmd_mountain(fx_scene *sc)
         return fx_scene_error(sc, "bad terrain parameters");
     fx_trace(&sc->ctx, "mountain: %dx%d grid, %d triangles", side, side, nt);
     return fx_scene_mesh_draw(sc, &m);
+}
+
+static int32_t clamp32(int64_t v) { return v > INT32_MAX ? INT32_MAX : (int32_t)v; }
+
+/* The square [x, x + n)^2 lies on the surface (commands that read pixels). */
+static int on_surface(fx_scene *sc, int32_t x, int32_t y, int32_t n, const char *what)
+{
+    const fx_surface *s = &sc->ctx.surf;
+    if (x < 0 || y < 0 || (int64_t)x + n > s->w || (int64_t)y + n > s->h)
+        return fx_scene_error(sc, "%s square %d,%d size %d is not inside the %dx%d surface", what, x, y, n, s->w, s->h);
+    return 0;
+}
+
+static int cmd_collage(fx_scene *sc)
+{
+    int32_t x, y, n, maxmaps, dx, dy, npoints, seed;
+    fx_color bg;
+    TRY(fx_scene_arg_int(sc, &x));
+    TRY(fx_scene_arg_int(sc, &y));
+    TRY(fx_scene_arg_int(sc, &n));
+    TRY(fx_scene_arg_color(sc, &bg));
+    TRY(fx_scene_arg_int(sc, &maxmaps));
+    TRY(fx_scene_arg_int(sc, &dx));
+    TRY(fx_scene_arg_int(sc, &dy));
+    TRY(fx_scene_arg_int(sc, &npoints));
+    TRY(fx_scene_arg_int(sc, &seed));
+    TRY(fx_scene_end(sc));
+    if (n < 12 || n > FX_COLLAGE_MAX_SIDE || n % 12)
+        return fx_scene_error(sc, "size %d: a multiple of 12 in 12..%d", n, FX_COLLAGE_MAX_SIDE);
+    if (maxmaps < 1 || maxmaps > FX_IFS_MAX_MAPS)
+        return fx_scene_error(sc, "map count %d out of range (1..%d)", maxmaps, FX_IFS_MAX_MAPS);
+    if (npoints < 0 || npoints > 4000000)
+        return fx_scene_error(sc, "point count %d out of range (0..4000000)", npoints);
+    TRY(on_surface(sc, x, y, n, "target"));
+    uint8_t *t = scratch(sc, 2 * (size_t)n * n);
+    if (!t)
+        return fx_scene_error(sc, "out of scene memory");
+    const fx_surface *s = &sc->ctx.surf;
+    uint32_t bgn = fx_pack(s->format, bg);
+    for (int32_t j = 0; j < n; j++)
+        for (int32_t i = 0; i < n; i++)
+            t[j * n + i] = fx_surface_get_native(s, x + i, y + j) != bgn;
+    fx_collage_result res;
+    fx_collage_search(t, n, n, maxmaps, t + (size_t)n * n, &res);
+    for (int i = 0; i < res.n; i++)
+        fx_trace(&sc->ctx, "collage: map %d: scale 1/%d x 1/%d, offset %d/12, %d/12", i + 1, res.maps[i].ax_den,
+                 res.maps[i].ay_den, res.maps[i].ex, res.maps[i].ey);
+    fx_trace(&sc->ctx, "collage: %d maps; distance %d px (%d of %d target pixels missed, %d extra)", res.n,
+             res.missed + res.extra, res.missed, res.target, res.extra);
+    if (res.n == 0)
+        return 0;
+    /* the attractor, and the maps kept as the user IFS ('ifs user ...') */
+    fx_scene_fractal *st = state(sc);
+    fx_ifs ifs;
+    fx_collage_to_ifs(res.maps, res.n, st->maps, &ifs);
+    st->nmaps = res.n;
+    st->win[0] = st->win[1] = 0;
+    st->win[2] = st->win[3] = FX16_ONE;
+    fx_rect d = {dx, dy, clamp32((int64_t)dx + n), clamp32((int64_t)dy + n)};
+    fx_ifs_chaos(&sc->ctx, d, &ifs, (uint32_t)npoints, (uint32_t)seed);
+    return 0;
+}
+
+static int cmd_fractcompress(fx_scene *sc)
+{
+    int32_t x, y, n, dx, dy, iters;
+    TRY(fx_scene_arg_int(sc, &x));
+    TRY(fx_scene_arg_int(sc, &y));
+    TRY(fx_scene_arg_int(sc, &n));
+    TRY(fx_scene_arg_int(sc, &dx));
+    TRY(fx_scene_arg_int(sc, &dy));
+    TRY(fx_scene_arg_int(sc, &iters));
+    TRY(fx_scene_end(sc));
+    if (n < 8 || n > FX_FIC_SCENE_SIDE || n % 8)
+        return fx_scene_error(sc, "size %d: a multiple of 8 in 8..%d", n, FX_FIC_SCENE_SIDE);
+    if (iters < 0 || iters > 100)
+        return fx_scene_error(sc, "iteration count %d out of range (0..100)", iters);
+    TRY(on_surface(sc, x, y, n, "source"));
+    size_t px = (size_t)n * n, nc = px / 16;
+    uint8_t *img = scratch(sc, 3 * px + nc * sizeof(fx_fic_code) + 8);
+    if (!img)
+        return fx_scene_error(sc, "out of scene memory");
+    uint8_t *out = img + px, *tmp = out + px;
+    fx_fic_code *codes = (fx_fic_code *)(((uintptr_t)(tmp + px) + 7) & ~(uintptr_t)7);
+    const fx_surface *s = &sc->ctx.surf;
+    for (int32_t j = 0; j < n; j++)
+        for (int32_t i = 0; i < n; i++) {
+            fx_color c = fx_unpack(s->format, fx_surface_get_native(s, x + i, y + j));
+            /* Rec. 601 luma in integers */
+            img[j * n + i] = (uint8_t)((77 * (c >> 16 & 255) + 150 * (c >> 8 & 255) + 29 * (c & 255) + 128) >> 8);
+        }
+    fx_fic_encode(img, n, codes);
+    fx_fic_decode(codes, n, (uint32_t)iters, out, tmp);
+    for (int32_t j = 0; j < n; j++)
+        for (int32_t i = 0; i < n; i++) {
+            uint32_t g = out[j * n + i];
+            fx_surface_put(s, clamp32((int64_t)dx + i), clamp32((int64_t)dy + j),
+                           0xFF000000u | g << 16 | g << 8 | g);
+        }
+    /* the code: per 4 x 4 block a domain index, 3 bits of symmetry, 5 of
+     * scale, 11 of offset */
+    int32_t nd = (n / 4 - 1) * (n / 4 - 1), bits = 0;
+    while ((1 << bits) < nd)
+        bits++;
+    char p[24];
+    fx16 q = fx_psnr(img, out, (int32_t)px);
+    fx_trace(&sc->ctx, "fractcompress: %dx%d grey, %d range blocks, %d bytes of code (%d%% of the pixels), %d rounds, "
+             "PSNR %s dB", n, n, (int)nc, (int)((nc * (uint32_t)(bits + 19) + 7) / 8),
+             (int)((nc * (uint32_t)(bits + 19) + 7) / 8 * 100 / px), iters,
+             q == INT32_MAX ? "inf" : dec4(p, sizeof p, q));
+    return 0;
 }
 
 const fx_scene_cmd fx_scene_cmds_fractal[] = {
@@ -631,6 +751,8 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
      0},
     {"grass", cmd_grass, "grass X Y W H NBLADES SEED", FX_SCENE_DRAWS},
     {"fire", cmd_fire, "fire X Y W H ROUGH SEED", FX_SCENE_DRAWS},
+    {"collage", cmd_collage, "collage X Y SIZE BG MAXMAPS DX DY NPOINTS SEED", FX_SCENE_DRAWS},
+    {"fractcompress", cmd_fractcompress, "fractcompress X Y SIZE DX DY ROUNDS", FX_SCENE_DRAWS},
     {"mountain", cmd_mountain, "mountain SIZE HEIGHT K SEED [ROUGH [SEA]]", FX_SCENE_DRAWS},
     {0, 0, 0, 0},
 };

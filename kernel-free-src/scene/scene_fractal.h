@@ -14,6 +14,7 @@
 #define FX_JULIA_SCENE_DEPTH 18
 #define FX_JULIA_SCENE_ITER 4096
 #define FX_GRASS_SCENE_BLADES 16384
+#define FX_FIC_SCENE_SIDE 128
 
 typedef struct fx_scene_fractal {
     fx_cmap cmap;    /* FX_CMAP_COUNT: the W9 grey ramp */

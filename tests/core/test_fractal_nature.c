@@ -450,3 +450,110 @@ FX_TEST(terrain_mesh_faces_up)
     FX_CHECK(fx_terrain_color(0) != fx_terrain_color(1 << 16));
     FX_CHECK_EQ(fx_terrain_color(1 << 16), 0xFFFFFFFFu);
 }
+
+/* ---- collage and fractal compression ---- */
+
+#include "fixel/collage.h"
+
+/* The right-angled Sierpinski triangle (Pascal's triangle mod 2) on a
+ * 64-cell grid drawn n px wide: cell (u, v), v up, is in it when u & v == 0. */
+static void sierpinski_bitmap(uint8_t *t, int32_t n)
+{
+    for (int32_t y = 0; y < n; y++)
+        for (int32_t x = 0; x < n; x++) {
+            int32_t u = x * 64 / n, v = (n - 1 - y) * 64 / n;
+            t[y * n + x] = (u & v) == 0;
+        }
+}
+
+FX_TEST(collage_finds_sierpinski)
+{
+    enum { N = 96 };
+    uint8_t t[N * N], work[N * N];
+    sierpinski_bitmap(t, N);
+    fx_collage_result res;
+    int n = fx_collage_search(t, N, N, 8, work, &res);
+    /* three maps of ratio 1/2 at (0, 0), (1/2, 0) and (0, 1/2) of the
+     * right-angled triangle, and a collage equal to the target */
+    FX_CHECK_EQ(n, 3);
+    FX_CHECK_EQ(res.missed + res.extra, 0);
+    int found[3] = {0, 0, 0};
+    for (int i = 0; i < n; i++) {
+        FX_CHECK(res.maps[i].ax_den == 2 && res.maps[i].ay_den == 2);
+        int k = res.maps[i].ex == 0 && res.maps[i].ey == 6 ? 0 : res.maps[i].ex == 6 && res.maps[i].ey == 6 ? 1
+              : res.maps[i].ex == 0 && res.maps[i].ey == 0 ? 2 : -1;
+        FX_CHECK(k >= 0);
+        if (k >= 0)
+            found[k]++;
+    }
+    FX_CHECK(found[0] == 1 && found[1] == 1 && found[2] == 1);
+    /* a wrong map costs: the distance counts the missed and the extra pixels */
+    fx_collage_map bad[3] = {res.maps[0], res.maps[1], {2, 2, 6, 0}};
+    FX_CHECK(fx_collage_distance(t, N, N, bad, 3, work, &res) > 0);
+    FX_CHECK(res.extra > 0);
+    /* the IFS of the maps draws the triangle back by the chaos game */
+    fx_ifs_map im[3];
+    fx_ifs ifs;
+    fx_collage_to_ifs(res.maps, 2, im, &ifs);
+    FX_CHECK_EQ(fx_ifs_check(&ifs), 0);
+    fx_collage_search(t, N, N, 8, work, &res);
+    fx_collage_to_ifs(res.maps, res.n, im, &ifs);
+    FX_CHECK_EQ(fx_ifs_check(&ifs), 0);
+    canvas k;
+    canvas_new(&k, N, N);
+    fx_ifs_chaos(&k.c, (fx_rect){0, 0, N, N}, &ifs, 60000, 1);
+    long off = 0, on = 0;
+    for (int i = 0; i < N * N; i++) {
+        off += k.px[i] && !t[i];
+        on += k.px[i] && t[i];
+    }
+    FX_CHECK_MSG(off * 100 <= on, "%ld of %ld chaos points off the target", off, on + off);
+    free(k.px);
+    FX_CHECK_EQ(fx_collage_search(t, 100, 96, 8, work, &res), -FX_EINVAL);
+}
+
+static void test_picture(uint8_t *img, int32_t n)
+{
+    /* a lit sphere on a diagonal ramp with a dark stripe: edges, a
+     * gradient, smooth shading */
+    for (int32_t y = 0; y < n; y++)
+        for (int32_t x = 0; x < n; x++) {
+            int32_t v = 40 + (x + y) * 100 / (2 * n);
+            int32_t dx = x - n / 2, dy = y - n / 2, r2 = dx * dx + dy * dy, R = n / 3;
+            if (r2 < R * R)
+                v = 255 - r2 * 150 / (R * R) - (dx + dy) * 40 / n;
+            if (x > n / 8 && x < n / 8 + 3)
+                v = 10;
+            img[y * n + x] = (uint8_t)v;
+        }
+}
+
+FX_TEST(fic_round_trip_psnr)
+{
+    enum { N = 64 };
+    uint8_t img[N * N], out[N * N], tmp[N * N];
+    fx_fic_code codes[(N / 4) * (N / 4)];
+    test_picture(img, N);
+    FX_CHECK_EQ(fx_fic_encode(img, N, codes), 0);
+    FX_CHECK_EQ(fx_fic_decode(codes, N, 10, out, tmp), 0);
+    fx16 p10 = fx_psnr(img, out, N * N);
+    /* measured 10 log10(255^2 / MSE) in floating point agrees */
+    double sse = 0;
+    for (int i = 0; i < N * N; i++)
+        sse += (double)(img[i] - out[i]) * (img[i] - out[i]);
+    double want = 10 * log10(65025.0 * N * N / sse);
+    FX_CHECK_MSG(fabs(p10 / 65536.0 - want) < 0.01, "psnr %.3f vs %.3f", p10 / 65536.0, want);
+    FX_CHECK_MSG(p10 > 28 * 65536, "PSNR %.2f dB after 10 rounds", p10 / 65536.0);
+    /* one round from flat grey is far worse: the decoder converges */
+    FX_CHECK_EQ(fx_fic_decode(codes, N, 1, out, tmp), 0);
+    fx16 p1 = fx_psnr(img, out, N * N);
+    FX_CHECK(p1 + 5 * 65536 < p10);
+    /* converged: another ten rounds change next to nothing */
+    FX_CHECK_EQ(fx_fic_decode(codes, N, 20, out, tmp), 0);
+    FX_CHECK(abs(fx_psnr(img, out, N * N) - p10) < 65536 / 4);
+    FX_CHECK_EQ(fx_psnr(img, img, N * N), INT32_MAX);
+    /* contractive codes only */
+    codes[3].s = 16;
+    FX_CHECK_EQ(fx_fic_decode(codes, N, 1, out, tmp), -FX_EINVAL);
+    FX_CHECK_EQ(fx_fic_encode(img, 60, codes), -FX_EINVAL);
+}
