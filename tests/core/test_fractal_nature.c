@@ -557,3 +557,95 @@ FX_TEST(fic_round_trip_psnr)
     FX_CHECK_EQ(fx_fic_decode(codes, N, 1, out, tmp), -FX_EINVAL);
     FX_CHECK_EQ(fx_fic_encode(img, 60, codes), -FX_EINVAL);
 }
+
+/* ---- through the scene: the trace path prints what the commands measured ---- */
+
+#include <stdio.h>
+#include "fixel/scene.h"
+#include "scenebuf.h"
+
+typedef struct {
+    scene_buf b; /* first: scene_buf_make's user */
+    char log[8192];
+    size_t len;
+} traced;
+
+static void keep_line(void *user, const char *line)
+{
+    traced *t = user;
+    /* only the commands' reports: the line drawing traces its every step */
+    static const char *const keep[] = {"boxdim:", "turtle:", "julia", "collage:", "fractcompress:"};
+    int want = 0;
+    for (unsigned i = 0; i < sizeof keep / sizeof keep[0]; i++)
+        want |= strncmp(line, keep[i], strlen(keep[i])) == 0;
+    if (!want)
+        return;
+    int n = snprintf(t->log + t->len, sizeof t->log - t->len, "%s\n", line);
+    if (n > 0 && t->len + (size_t)n < sizeof t->log)
+        t->len += (size_t)n;
+}
+
+static int run_traced(traced *t, const char *script, fx_scene *sc)
+{
+    static uint32_t mem[800 * 300];
+    static uint8_t arena[1 << 20];
+    t->b.mem = mem;
+    t->b.n = 800 * 300;
+    t->len = 0;
+    t->log[0] = 0;
+    fx_scene_host h = {t, scene_buf_make, NULL, NULL, keep_line, NULL};
+    fx_scene_init(sc, &h, arena, sizeof arena);
+    return fx_scene_run(sc, script, strlen(script));
+}
+
+FX_TEST(scene_boxdim_and_turtle_report)
+{
+    traced t;
+    fx_scene sc;
+    FX_CHECK_EQ(run_traced(&t,
+                           "size 760 300\nclear #000000\ncolor #FFFFFF\nkoch 15 280 744 280 6\n"
+                           "boxdim 0 0 760 300 #000000 2 64 1.2619\n",
+                           &sc),
+                0);
+    /* D = 1.29.. against 1.2619: within 0.05 (boxdim_known_figures) */
+    const char *d = strstr(t.log, "boxdim: D = ");
+    FX_CHECK_MSG(d != NULL, "%s", t.log);
+    double v = d ? atof(d + 12) : 0;
+    FX_CHECK_MSG(fabs(v - 1.2619) < 0.05, "%s", t.log);
+    FX_CHECK(strstr(t.log, "known 1.2619") != NULL);
+    FX_CHECK(strstr(t.log, "boxdim: box 64 px:") != NULL);
+    /* nothing drawn: a clear error, not a dimension */
+    FX_CHECK_EQ(run_traced(&t, "size 64 64\nclear #000000\nboxdim 0 0 64 64 #000000 2 16\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "background") != NULL, "%s", sc.err);
+    FX_CHECK_EQ(run_traced(&t, "size 64 64\nboxdim 0 0 64 64 #000000 8 8\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "two box sizes") != NULL, "%s", sc.err);
+
+    /* the turtle keeps its state from line to line */
+    FX_CHECK_EQ(run_traced(&t,
+                           "size 64 64\nturtle home 10 50 0\nturtle forward 20\nturtle turn 90\n"
+                           "turtle forward 10\nturtle linerel -5 0\nturtle where\n",
+                           &sc),
+                0);
+    FX_CHECK_MSG(strstr(t.log, "turtle: CP (25.0000, 40.0000) heading 90.0000, 3 segments") != NULL, "%s", t.log);
+    FX_CHECK_EQ(run_traced(&t, "turtle koch 10 11\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "0..10") != NULL, "%s", sc.err);
+
+    /* fixed points and cycle through the trace */
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njuliafixed 0 0 0 0 3\njuliabasins 0 0 -1 0 3 100\n", &sc), 0);
+    FX_CHECK_MSG(strstr(t.log, "z1 = 1.0000 0.0000 i, |2z| = 2.0000, repelling") != NULL, "%s", t.log);
+    FX_CHECK_MSG(strstr(t.log, "z2 = 0.0000 0.0000 i, |2z| = 0.0000, attracting") != NULL, "%s", t.log);
+    FX_CHECK(strstr(t.log, "attracting cycle of period 2") != NULL);
+    FX_CHECK_EQ(run_traced(&t, "juliaset random 0 0 2.5 0 3 100 1\n", &sc), -FX_EINVAL);
+
+    /* collage and compression report their measures */
+    FX_CHECK_EQ(run_traced(&t,
+                           "size 200 100\nclear #000000\ncolor #FFFFFF\nifs sierpinski chaos 0 0 96 96 40000 1\n"
+                           "collage 0 0 96 #000000 8 100 0 1000 1\nfractcompress 0 0 64 100 0 8\n",
+                           &sc),
+                0);
+    FX_CHECK_MSG(strstr(t.log, "collage: 3 maps; distance 0 px") != NULL, "%s", t.log);
+    FX_CHECK_MSG(strstr(t.log, "fractcompress: 64x64 grey, 256 range blocks") != NULL, "%s", t.log);
+    FX_CHECK(strstr(t.log, "PSNR ") != NULL);
+    FX_CHECK_EQ(run_traced(&t, "size 64 64\nfractcompress 0 0 72 0 0 8\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "not inside") != NULL, "%s", sc.err);
+}
