@@ -50,7 +50,7 @@ int32_t fx_grass(const fx_ctx *c, fx_rect r, uint32_t nblades, uint32_t seed)
                  bb = FX_MIN(255u, (col & 255) * k / 256);
         fx_ctx_set_color(&cc, (col & 0xFF000000u) | rr << 16 | gg << 8 | bb);
         blade_job j;
-        fx16 x = (fx16)((r.x0 + (int32_t)below(&st, (uint32_t)w)) << 16), y = (fx16)((r.y1 - 1) << 16);
+        fx16 x = (fx16)((r.x0 + (int32_t)below(&st, (uint32_t)w)) * 65536), y = (fx16)((r.y1 - 1) * 65536);
         fx_turtle_init(&j.t, &cc, x, y, (90 << 16) + fx16_mul(fx_gauss16(&st), 10 << 16));
         j.st = &st;
         fx16 len = (fx16)(((int64_t)h << 16) * (128 + below(&st, 129)) / 256);
