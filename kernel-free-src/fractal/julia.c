@@ -52,13 +52,13 @@ void fx_csqrt28(int64_t a, int64_t b, int64_t *sre, int64_t *sim)
     if (a >= 0) {
         int64_t u = fx_isqrt64((uint64_t)(((int64_t)r + a) / 2) << Q);
         *sre = u;
-        *sim = u ? (b << Q) / (2 * u) : 0;
+        *sim = u ? b * ONE28 / (2 * u) : 0;
     } else {
         int64_t v = fx_isqrt64((uint64_t)(((int64_t)r - a) / 2) << Q);
         if (b < 0)
             v = -v;
         *sim = v;
-        *sre = v ? (b << Q) / (2 * v) : 0;
+        *sre = v ? b * ONE28 / (2 * v) : 0;
     }
 }
 
@@ -70,8 +70,8 @@ int fx_julia_fixed_points(fx56 cre, fx56 cim, fx_julia_fixed out[2])
     fx_csqrt28(ONE28 / 4 - to28(cre), -to28(cim), &sr, &si);
     for (int k = 0; k < 2; k++) {
         int64_t zr = ONE28 / 2 + (k ? -sr : sr), zi = k ? -si : si;
-        out[k].re = zr << 28;
-        out[k].im = zi << 28;
+        out[k].re = zr * ONE28;
+        out[k].im = zi * ONE28;
         /* |2z| = 2 sqrt(zr^2 + zi^2): Q56 under the root, Q28 out, to Q16 */
         uint64_t m = 2 * (uint64_t)fx_isqrt64((uint64_t)(zr * zr) + (uint64_t)(zi * zi));
         out[k].mult = (fx16)((m + (1u << 11)) >> 12);
