@@ -452,7 +452,7 @@ static int cmd_boxdim(fx_scene *sc)
     if (v[2] < 1 || v[3] < 1)
         return fx_scene_error(sc, "empty rectangle");
     if (smin < 1 || smax < 2 * smin)
-        return fx_scene_error(sc, "need SMAX >= 2 SMIN >= 2 (at least two box sizes)");
+        return fx_scene_error(sc, "need SMAX >= 2 x SMIN (at least two box sizes)");
     int64_t x1 = (int64_t)v[0] + v[2], y1 = (int64_t)v[1] + v[3];
     fx_rect r = {v[0], v[1], x1 > INT32_MAX ? INT32_MAX : (int32_t)x1, y1 > INT32_MAX ? INT32_MAX : (int32_t)y1};
     r = fx_rect_intersect(r, sc->ctx.clip);
