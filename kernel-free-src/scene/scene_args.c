@@ -24,6 +24,10 @@
 #include "fixel/rt.h"
 #include "fixel/vsd.h"
 #include "fixel/objects.h"
+#include "fixel/collage.h"
+#include "fixel/randfract.h"
+#include "fixel/turtle.h"
+#include "scene_fractal.h"
 
 #define CO 1048576 /* coordinate bound, 2^20 */
 #define G3 1024    /* 3D geometry bound */
@@ -141,6 +145,30 @@ A(ifs, W("sierpinski|fern|user"), FORM("chaos"), XY("X"), XY("Y"), I("W", 1, CO)
   I("H", 1, CO), IW("DEPTH", 0, 20));
 A(fern, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("NPOINTS", 0, 4000000),
   I("SEED", INT32_MIN, INT32_MAX));
+#define QW {FX_ARG_FX56, FX_ARG_OPEN_MIN, "WIDTH", 0, 16 * FX56_ONE}
+#define JV Q("CRE", -16, 16), Q("CIM", -16, 16), Q("CX", -2, 2), Q("CY", -2, 2), QW
+A(juliaset, FORM("random"), JV, IW("NPOINTS", 0, FX_JULIA_SCENE_POINTS), I("SEED", INT32_MIN, INT32_MAX),
+  FORM("tree"), JV, IW("DEPTH", 0, FX_JULIA_SCENE_DEPTH));
+A(juliafixed, JV);
+A(juliabasins, JV, IW("MAXITER", 1, FX_JULIA_SCENE_ITER));
+A(boxdim, XY("X"), XY("Y"), I("W", 1, INT32_MAX), I("H", 1, INT32_MAX), C("BG"), I("SMIN", 1, 1 << 20),
+  I("SMAX", 2, 1 << 21), OPT, F("KNOWN", 0, 3));
+#define TP(n) F(n, -32767, 32767)
+A(turtle, FORM("home"), TP("X"), TP("Y"), DEG("DEG"), FORM("moveto"), TP("X"), TP("Y"), FORM("lineto"), TP("X"),
+  TP("Y"), FORM("moverel"), TP("DX"), TP("DY"), FORM("linerel"), TP("DX"), TP("DY"), FORM("turn"), DEG("DEG"),
+  FORM("turnto"), DEG("DEG"), FORM("forward"), TP("D"), FORM("jump"), TP("D"), FORM("koch"), TP("LEN"),
+  IW("ORDER", 0, FX_TURTLE_MAX_ORDER), FORM("hilbert"), TP("STEP"), IW("ORDER", 0, FX_TURTLE_MAX_ORDER), OPT,
+  I("PARITY", -1, 1), FORM("where"));
+A(grass, I("X", -16384, 16384), I("Y", -16384, 16384), I("W", 1, 16384), I("H", 1, 16384),
+  IW("NBLADES", 0, FX_GRASS_SCENE_BLADES), I("SEED", INT32_MIN, INT32_MAX));
+A(fire, I("X", 0, 16384), I("Y", 0, 16384), I("W", 1, 16384), I("H", 1, 16384), F("ROUGH", 0, 1),
+  I("SEED", INT32_MIN, INT32_MAX));
+A(collage, I("X", 0, 16383), I("Y", 0, 16383), IW("SIZE", 12, FX_COLLAGE_MAX_SIDE), C("BG"),
+  IW("MAXMAPS", 1, FX_IFS_MAX_MAPS), XY("DX"), XY("DY"), IW("NPOINTS", 0, 4000000), I("SEED", INT32_MIN, INT32_MAX));
+A(fractcompress, I("X", 0, 16383), I("Y", 0, 16383), IW("SIZE", 8, FX_FIC_SCENE_SIDE), XY("DX"), XY("DY"),
+  IW("ROUNDS", 0, 100));
+A(mountain, FR("SIZE", 1, G3 * 65536), F("HEIGHT", 0, G3), IW("K", 1, FX_TERRAIN_MESH_MAX_K),
+  I("SEED", INT32_MIN, INT32_MAX), OPT, F("ROUGH", 0, 1), F("SEA", 0, 1));
 /* ---- viz ---- */
 A(field, FORM("terrain"), IW("GW", 2, 1025), IW("GH", 2, 1025), I("SEED", INT32_MIN, INT32_MAX), OPT,
   F("ROUGH", 0, 1), FORM(0), W("waves|peaks"), IW("GW", 2, 1025), IW("GH", 2, 1025));
@@ -289,6 +317,13 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"ifsmap", a_ifsmap, 0, 0}, {"ifswindow", a_ifswindow, 0, 0},
     {"ifs", a_ifs, "ifsmap 0.5 0 0 0.5 0 0 0.5\nifsmap 0.5 0 0 0.5 0.5 0 0.5\nifswindow 0 0 1 1", 0},
     {"fern", a_fern, 0, 0},
+    {"juliaset", a_juliaset, 0, 0}, {"juliafixed", a_juliafixed, 0, 0}, {"juliabasins", a_juliabasins, 0, 0},
+    {"boxdim", a_boxdim, 0, "W x H clipped to the surface, read once per box size (at most 21 sizes)"},
+    {"turtle", a_turtle, 0, 0}, {"grass", a_grass, 0, "at most 8 + 5 x 8 + 25 x 8 segments per blade"},
+    {"fire", a_fire, 0, "W x H clipped to the surface"},
+    {"collage", a_collage, 0, "SIZE a multiple of 12; each of MAXMAPS rounds tries at most 9 x 121 maps over SIZE^2 / 4 px"},
+    {"fractcompress", a_fractcompress, 0,
+     "SIZE a multiple of 8: (SIZE/4)^2 range blocks x (SIZE/4 - 1)^2 domains x 8 symmetries x 16 px"}, {"mountain", a_mountain, 0, "2 x 4^K triangles"},
     {"field", a_field, 0, 0}, {"vfield", a_vfield, 0, 0}, {"heatmap", a_heatmap, "field waves 8 8", 0},
     {"colorbar", a_colorbar, 0, 0}, {"contour", a_contour, "field waves 8 8", 0},
     {"quiver", a_quiver, "vfield vortex 8 8", 0}, {"stream", a_stream, "vfield vortex 8 8", 0},

@@ -8,6 +8,13 @@
 #include "fixel/ifs.h"
 #include "fixel/koch.h"
 #include "fixel/scene.h"
+#include "fixel/boxdim.h"
+#include "fixel/circle.h"
+#include "fixel/collage.h"
+#include "fixel/julia.h"
+#include "fixel/randfract.h"
+#include "fixel/turtle.h"
+#include "scene_mesh.h"
 #include "scene_fractal.h"
 
 #define TRY(x)                   \
@@ -17,7 +24,7 @@
             return r_;           \
     } while (0)
 
-static const fx_scene_fractal defaults = {FX_CMAP_COUNT, 0, 0xFF000000u, 0, {{0}}, {0, 0, 65536, 65536}};
+static const fx_scene_fractal defaults = {FX_CMAP_COUNT, 0, 0xFF000000u, 0, {{0}}, {0, 0, 65536, 65536}, {0, 0, 0, 0, 0}, 0, 0};
 
 const fx_scene_fractal *fx_scene_fractal_state(fx_scene *sc)
 {
@@ -71,6 +78,31 @@ static int cmd_insidecolor(fx_scene *sc)
     return 0;
 }
 
+/* The dwell colours of the scene's colour map (W9 grey by default): a
+ * period cycles through the map every `period` iterations; without one the
+ * map spans the dwells 0..maxiter-1 once. */
+static void dwell_pal(fx_scene *sc, fx_dwell_pal *pal, uint32_t lut[256], uint32_t maxiter)
+{
+    const fx_scene_fractal *st = fx_scene_fractal_state(sc);
+    const fx_surface *s = &sc->ctx.surf;
+    if (st->cmap == FX_CMAP_COUNT) {
+        fx_dwell_pal_w9(pal, lut, s->format);
+    } else {
+        fx_color tab[256];
+        fx_cmap_table(st->cmap, tab, 256);
+        for (int i = 0; i < 256; i++)
+            lut[i] = fx_pack(s->format, tab[i]);
+        pal->lut = lut;
+        pal->len = 256;
+        uint32_t span = st->period ? st->period : maxiter;
+        pal->mul = (uint32_t)(((uint64_t)256 << 16) / span);
+        if (pal->mul == 0)
+            pal->mul = 1;
+        pal->wrap = st->period != 0;
+    }
+    pal->inside = fx_pack(s->format, st->inside);
+}
+
 static int escape_time(fx_scene *sc, int julia)
 {
     fx56 cre, cim, jre = 0, jim = 0, width;
@@ -93,28 +125,9 @@ static int escape_time(fx_scene *sc, int julia)
     if (fx_fractal_check(&v) < 0)
         return fx_scene_error(sc, "view out of range (|centre|, |c| <= 16, 0 < width <= 16)");
 
-    const fx_scene_fractal *st = fx_scene_fractal_state(sc);
     uint32_t lut[256];
     fx_dwell_pal pal;
-    if (st->cmap == FX_CMAP_COUNT) {
-        /* the W9 grey ramp, whatever maxiter is */
-        fx_dwell_pal_w9(&pal, lut, s->format);
-    } else {
-        fx_color tab[256];
-        fx_cmap_table(st->cmap, tab, 256);
-        for (int i = 0; i < 256; i++)
-            lut[i] = fx_pack(s->format, tab[i]);
-        pal.lut = lut;
-        pal.len = 256;
-        /* a period cycles through the map every `period` iterations;
-         * without one the map spans the dwells 0..maxiter-1 once */
-        uint32_t span = st->period ? st->period : (uint32_t)maxiter;
-        pal.mul = (uint32_t)(((uint64_t)256 << 16) / span);
-        if (pal.mul == 0)
-            pal.mul = 1;
-        pal.wrap = st->period != 0;
-    }
-    pal.inside = fx_pack(s->format, st->inside);
+    dwell_pal(sc, &pal, lut, (uint32_t)maxiter);
     fx_trace(&sc->ctx, "%s: %s path, pixel step %lld/2^56, %d iterations",
              julia ? "julia" : "mandelbrot",
              fx_fractal_precision(&v) == 32 ? "Q4.28 (32-bit)" : "Q8.56 (64-bit)",
@@ -308,6 +321,409 @@ static int cmd_ifs(fx_scene *sc)
 static int cmd_fern(fx_scene *sc) { return run_ifs(sc, &fx_ifs_fern, 1); }
 static int cmd_julia(fx_scene *sc) { return escape_time(sc, 1); }
 
+/* ---- issue #23: J_c, fixed points and basins, box counting, the turtle,
+ * grass, fire and the 3D mountain ---- */
+
+/* v in Q16.16 as a signed decimal with four places, for trace lines */
+static const char *dec4(char *buf, size_t n, int64_t v16)
+{
+    int64_t a = v16 < 0 ? -v16 : v16;
+    int64_t ip = a >> 16, fr = ((a & 0xFFFF) * 10000 + 32768) >> 16;
+    if (fr == 10000) {
+        ip++;
+        fr = 0;
+    }
+    fx_fmt(buf, n, "%s%lld.%04lld", v16 < 0 ? "-" : "", (long long)ip, (long long)fr);
+    return buf;
+}
+
+/* CRE CIM CX CY WIDTH: a Julia view of the whole surface (|c| parts <= 2) */
+static int julia_view_args(fx_scene *sc, fx_fractal_view *v, uint32_t maxiter)
+{
+    fx56 a[5];
+    for (int i = 0; i < 5; i++)
+        TRY(fx_scene_arg_fx56(sc, &a[i]));
+    const fx_surface *s = &sc->ctx.surf;
+    *v = fx_julia_view(a[0], a[1], a[2], a[3], a[4], s->w, s->h, maxiter);
+    return 0;
+}
+
+static int julia_view_ok(fx_scene *sc, const fx_fractal_view *v)
+{
+    if (fx_julia_check(v) < 0)
+        return fx_scene_error(sc, "view out of range (|centre| <= 16, |CX|, |CY| <= 2, 2^-28 <= width <= 16)");
+    return 0;
+}
+
+static int cmd_juliaset(fx_scene *sc)
+{
+    static const char *const modes[] = {"random", "tree", 0};
+    int mode = fx_scene_arg_choice(sc, modes);
+    TRY(mode);
+    fx_fractal_view v;
+    int32_t n, seed = 1;
+    TRY(julia_view_args(sc, &v, 1));
+    TRY(fx_scene_arg_int(sc, &n));
+    if (mode == 0)
+        TRY(fx_scene_arg_int(sc, &seed));
+    TRY(fx_scene_end(sc));
+    TRY(julia_view_ok(sc, &v));
+    int32_t hits;
+    if (mode == 0) {
+        if (n < 0 || n > FX_JULIA_SCENE_POINTS)
+            return fx_scene_error(sc, "point count %d out of range (0..%d)", n, FX_JULIA_SCENE_POINTS);
+        hits = fx_julia_inverse_random(&sc->ctx, &v, (uint32_t)n, (uint32_t)seed);
+    } else {
+        if (n < 0 || n > FX_JULIA_SCENE_DEPTH)
+            return fx_scene_error(sc, "depth %d out of range (0..%d)", n, FX_JULIA_SCENE_DEPTH);
+        hits = fx_julia_inverse_tree(&sc->ctx, &v, (uint32_t)n);
+    }
+    if (hits < 0)
+        return fx_scene_error(sc, "bad Julia view");
+    fx_trace(&sc->ctx, "juliaset: %d points of J_c inside the clip", hits);
+    return 0;
+}
+
+static const char *const fixed_kind[] = {"attracting", "neutral", "repelling"};
+
+static int cmd_juliafixed(fx_scene *sc)
+{
+    fx_fractal_view v;
+    TRY(julia_view_args(sc, &v, 1));
+    TRY(fx_scene_end(sc));
+    TRY(julia_view_ok(sc, &v));
+    fx_julia_fixed fp[2];
+    fx_julia_fixed_points(v.jre, v.jim, fp);
+    for (int k = 0; k < 2; k++) {
+        int32_t x, y;
+        fx_julia_to_pixel(&v, fp[k].re, fp[k].im, &x, &y);
+        /* attracting: a disc; repelling: a ring; neutral: a square */
+        if (fp[k].kind == FX_FIXED_ATTRACTING)
+            fx_disc(&sc->ctx, x, y, 3);
+        else if (fp[k].kind == FX_FIXED_REPELLING)
+            fx_circle(&sc->ctx, x, y, 4);
+        else
+            fx_rect_outline(&sc->ctx, x - 3, y - 3, 7, 7);
+        char a[24], b[24], m[24];
+        fx_trace(&sc->ctx, "juliafixed: z%d = %s %s i, |2z| = %s, %s, pixel (%d, %d)", k + 1,
+                 dec4(a, sizeof a, fp[k].re >> 40), dec4(b, sizeof b, fp[k].im >> 40), dec4(m, sizeof m, fp[k].mult),
+                 fixed_kind[fp[k].kind], x, y);
+    }
+    return 0;
+}
+
+static int cmd_juliabasins(fx_scene *sc)
+{
+    static const fx_color basin[6] = {0xFFFFC040u, 0xFF40B0FFu, 0xFFFF5A5Au, 0xFF60E060u, 0xFFC080FFu, 0xFFF0F0F0u};
+    fx_fractal_view v;
+    int32_t maxiter;
+    TRY(julia_view_args(sc, &v, 1));
+    TRY(fx_scene_arg_int(sc, &maxiter));
+    TRY(fx_scene_end(sc));
+    if (maxiter < 1 || maxiter > FX_JULIA_SCENE_ITER)
+        return fx_scene_error(sc, "iteration count %d out of range (1..%d)", maxiter, FX_JULIA_SCENE_ITER);
+    v.maxiter = (uint32_t)maxiter;
+    TRY(julia_view_ok(sc, &v));
+    uint32_t lut[256];
+    fx_dwell_pal pal;
+    dwell_pal(sc, &pal, lut, (uint32_t)maxiter);
+    int p = fx_julia_basins(&sc->ctx.surf, sc->ctx.clip, &v, &pal, basin, 6);
+    if (p < 0)
+        return fx_scene_error(sc, "bad Julia view");
+    fx_trace(&sc->ctx, "juliabasins: attracting cycle of period %d%s", p, p ? "" : " (none: no interior basin)");
+    return 0;
+}
+
+static int cmd_boxdim(fx_scene *sc)
+{
+    int32_t v[4], smin, smax;
+    fx_color bg;
+    fx16 expect = 0;
+    int have_expect = 0;
+    TRY(ints(sc, v, 4));
+    TRY(fx_scene_arg_color(sc, &bg));
+    TRY(fx_scene_arg_int(sc, &smin));
+    TRY(fx_scene_arg_int(sc, &smax));
+    if (fx_scene_more(sc)) {
+        TRY(fx_scene_arg_fx16(sc, &expect));
+        have_expect = 1;
+    }
+    TRY(fx_scene_end(sc));
+    if (v[2] < 1 || v[3] < 1)
+        return fx_scene_error(sc, "empty rectangle");
+    if (smin < 1 || smax < 2 * smin)
+        return fx_scene_error(sc, "need SMAX >= 2 x SMIN (at least two box sizes)");
+    int64_t x1 = (int64_t)v[0] + v[2], y1 = (int64_t)v[1] + v[3];
+    fx_rect r = {v[0], v[1], x1 > INT32_MAX ? INT32_MAX : (int32_t)x1, y1 > INT32_MAX ? INT32_MAX : (int32_t)y1};
+    r = fx_rect_intersect(r, sc->ctx.clip);
+    const fx_surface *s = &sc->ctx.surf;
+    fx16 dim;
+    int32_t counts[FX_BOXDIM_MAX_SIZES];
+    int n;
+    if (fx_rect_empty(r) || fx_boxdim_surface(s, r, fx_pack(s->format, bg), smin, smax, &dim, counts, &n) < 0)
+        return fx_scene_error(sc, "nothing but the background colour in the rectangle");
+    char a[24], b[24], c[24];
+    for (int i = 0; i < n; i++)
+        fx_trace(&sc->ctx, "boxdim: box %d px: %d boxes", smin << i, counts[i]);
+    if (have_expect)
+        fx_trace(&sc->ctx, "boxdim: D = %s from %d sizes; known %s, off by %s", dec4(a, sizeof a, dim), n,
+                 dec4(b, sizeof b, expect), dec4(c, sizeof c, (int64_t)dim - expect));
+    else
+        fx_trace(&sc->ctx, "boxdim: D = %s from %d sizes", dec4(a, sizeof a, dim), n);
+    return 0;
+}
+
+static int cmd_turtle(fx_scene *sc)
+{
+    static const char *const ops[] = {"home", "moveto", "lineto", "moverel", "linerel", "turn", "turnto",
+                                      "forward", "jump", "koch", "hilbert", "where", 0};
+    int op = fx_scene_arg_choice(sc, ops);
+    TRY(op);
+    fx16 a[3] = {0, 0, 0};
+    int32_t order = 0, parity = 1;
+    static const int nfx[] = {3, 2, 2, 2, 2, 1, 1, 1, 1, 1, 1, 0};
+    for (int i = 0; i < nfx[op]; i++)
+        TRY(fx_scene_arg_fx16(sc, &a[i]));
+    if (op == 9 || op == 10) {
+        TRY(fx_scene_arg_int(sc, &order));
+        if (op == 10 && fx_scene_more(sc))
+            TRY(fx_scene_arg_int(sc, &parity));
+    }
+    TRY(fx_scene_end(sc));
+    if (order < 0 || order > FX_TURTLE_MAX_ORDER)
+        return fx_scene_error(sc, "order %d out of range (0..%d)", order, FX_TURTLE_MAX_ORDER);
+    if (parity != 1 && parity != -1)
+        return fx_scene_error(sc, "parity must be 1 or -1");
+    fx_scene_fractal *st = state(sc);
+    if (!st)
+        return fx_scene_error(sc, "out of scene memory");
+    fx_turtle *t = &st->turtle;
+    if (op != 11 && op != 0)
+        TRY(fx_scene_surface(sc));
+    t->ctx = &sc->ctx;
+    switch (op) {
+    case 0: fx_turtle_init(t, &sc->ctx, a[0], a[1], a[2]); break;
+    case 1: fx_turtle_move_to(t, a[0], a[1]); break;
+    case 2: fx_turtle_line_to(t, a[0], a[1]); break;
+    case 3: fx_turtle_move_rel(t, a[0], a[1]); break;
+    case 4: fx_turtle_line_rel(t, a[0], a[1]); break;
+    case 5: fx_turtle_turn(t, a[0]); break;
+    case 6: fx_turtle_turn_to(t, a[0]); break;
+    case 7: fx_turtle_forward(t, a[0], 1); break;
+    case 8: fx_turtle_forward(t, a[0], 0); break;
+    case 9: fx_turtle_koch(t, a[0], (uint32_t)order); break;
+    case 10: fx_turtle_hilbert(t, a[0], (uint32_t)order, parity); break;
+    default: break;
+    }
+    char x[24], y[24], h[24];
+    fx_trace(&sc->ctx, "turtle: CP (%s, %s) heading %s, %lld segments", dec4(x, sizeof x, t->x),
+             dec4(y, sizeof y, t->y), dec4(h, sizeof h, fx_turtle_heading(t)), (long long)t->segs);
+    return 0;
+}
+
+static int rect_args(fx_scene *sc, fx_rect *r)
+{
+    int32_t v[4];
+    TRY(ints(sc, v, 4));
+    if (v[2] < 1 || v[3] < 1)
+        return fx_scene_error(sc, "empty rectangle");
+    *r = (fx_rect){v[0], v[1], (int32_t)((int64_t)v[0] + v[2]), (int32_t)((int64_t)v[1] + v[3])};
+    return 0;
+}
+
+static int cmd_grass(fx_scene *sc)
+{
+    fx_rect r;
+    int32_t n, seed;
+    TRY(rect_args(sc, &r));
+    TRY(fx_scene_arg_int(sc, &n));
+    TRY(fx_scene_arg_int(sc, &seed));
+    TRY(fx_scene_end(sc));
+    if (n < 0 || n > FX_GRASS_SCENE_BLADES)
+        return fx_scene_error(sc, "blade count %d out of range (0..%d)", n, FX_GRASS_SCENE_BLADES);
+    int32_t segs = fx_grass(&sc->ctx, r, (uint32_t)n, (uint32_t)seed);
+    if (segs < 0)
+        return fx_scene_error(sc, "grass rectangle out of range (within +-32767)");
+    fx_trace(&sc->ctx, "grass: %d blades, %d segments", n, segs);
+    return 0;
+}
+
+static int cmd_fire(fx_scene *sc)
+{
+    fx_rect r;
+    fx16 rough;
+    int32_t seed;
+    TRY(rect_args(sc, &r));
+    TRY(fx_scene_arg_fx16(sc, &rough));
+    TRY(fx_scene_arg_int(sc, &seed));
+    TRY(fx_scene_end(sc));
+    if (fx_fire(&sc->ctx, r, rough, (uint32_t)seed) < 0)
+        return fx_scene_error(sc, "fire rectangle out of range (0..16384) or roughness outside 0..1");
+    return 0;
+}
+
+/* The module's scratch block (mountain, collage, fractcompress): kept and
+ * reused, replaced by a bigger one only when a command needs more. */
+static void *scratch(fx_scene *sc, size_t need)
+{
+    fx_scene_fractal *st = state(sc);
+    if (!st)
+        return 0;
+    if (need > st->buf_bytes) {
+        void *mem = fx_scene_alloc(sc, need);
+        if (!mem)
+            return 0;
+        st->buf = mem;
+        st->buf_bytes = need;
+    }
+    return st->buf;
+}
+
+static int cmd_mountain(fx_scene *sc)
+{
+    fx16 size, height, rough = 45875 /* 0.7 */, sea = 13107 /* 0.2 */;
+    int32_t k, seed;
+    TRY(fx_scene_arg_fx16(sc, &size));
+    TRY(fx_scene_arg_fx16(sc, &height));
+    TRY(fx_scene_arg_int(sc, &k));
+    TRY(fx_scene_arg_int(sc, &seed));
+    if (fx_scene_more(sc))
+        TRY(fx_scene_arg_fx16(sc, &rough));
+    if (fx_scene_more(sc))
+        TRY(fx_scene_arg_fx16(sc, &sea));
+    TRY(fx_scene_end(sc));
+    int32_t nv, nt;
+    if (fx_terrain_mesh_size(k, &nv, &nt) < 0)
+        return fx_scene_error(sc, "grid order %d out of range (1..%d)", k, FX_TERRAIN_MESH_MAX_K);
+    if (size <= 0 || height < 0 || rough < 0 || rough > FX16_ONE || sea < 0 || sea > FX16_ONE)
+        return fx_scene_error(sc, "SIZE > 0, HEIGHT >= 0, ROUGH and SEA in 0..1");
+    int32_t side = (1 << k) + 1;
+    int32_t *h = scratch(sc, (size_t)side * side * sizeof(int32_t) + (size_t)nv * sizeof(uint32_t));
+    if (!h)
+        return fx_scene_error(sc, "out of scene memory for a %dx%d terrain", side, side);
+    fx_mesh m;
+    TRY(fx_scene_mesh_alloc(sc, nv, nt, 0, &m));
+    m.col = (uint32_t *)(h + (size_t)side * side);
+    /* a central peak under the random relief: a mountain, not a plain */
+    fx_terrain(h, side, k, 1 << 20, rough, (uint32_t)seed);
+    fx_terrain_peak(h, side, k, 3 << 19);
+    if (fx_terrain_mesh(&m, h, side, k, size, height, sea) < 0)
+        return fx_scene_error(sc, "bad terrain parameters");
+    fx_trace(&sc->ctx, "mountain: %dx%d grid, %d triangles", side, side, nt);
+    return fx_scene_mesh_draw(sc, &m);
+}
+
+static int32_t clamp32(int64_t v) { return v > INT32_MAX ? INT32_MAX : (int32_t)v; }
+
+/* The square [x, x + n)^2 lies on the surface (commands that read pixels). */
+static int on_surface(fx_scene *sc, int32_t x, int32_t y, int32_t n, const char *what)
+{
+    const fx_surface *s = &sc->ctx.surf;
+    if (x < 0 || y < 0 || (int64_t)x + n > s->w || (int64_t)y + n > s->h)
+        return fx_scene_error(sc, "%s square %d,%d size %d is not inside the %dx%d surface", what, x, y, n, s->w, s->h);
+    return 0;
+}
+
+static int cmd_collage(fx_scene *sc)
+{
+    int32_t x, y, n, maxmaps, dx, dy, npoints, seed;
+    fx_color bg;
+    TRY(fx_scene_arg_int(sc, &x));
+    TRY(fx_scene_arg_int(sc, &y));
+    TRY(fx_scene_arg_int(sc, &n));
+    TRY(fx_scene_arg_color(sc, &bg));
+    TRY(fx_scene_arg_int(sc, &maxmaps));
+    TRY(fx_scene_arg_int(sc, &dx));
+    TRY(fx_scene_arg_int(sc, &dy));
+    TRY(fx_scene_arg_int(sc, &npoints));
+    TRY(fx_scene_arg_int(sc, &seed));
+    TRY(fx_scene_end(sc));
+    if (n < 12 || n > FX_COLLAGE_MAX_SIDE || n % 12)
+        return fx_scene_error(sc, "size %d: a multiple of 12 in 12..%d", n, FX_COLLAGE_MAX_SIDE);
+    if (maxmaps < 1 || maxmaps > FX_IFS_MAX_MAPS)
+        return fx_scene_error(sc, "map count %d out of range (1..%d)", maxmaps, FX_IFS_MAX_MAPS);
+    if (npoints < 0 || npoints > 4000000)
+        return fx_scene_error(sc, "point count %d out of range (0..4000000)", npoints);
+    TRY(on_surface(sc, x, y, n, "target"));
+    uint8_t *t = scratch(sc, 2 * (size_t)n * n);
+    if (!t)
+        return fx_scene_error(sc, "out of scene memory");
+    const fx_surface *s = &sc->ctx.surf;
+    uint32_t bgn = fx_pack(s->format, bg);
+    for (int32_t j = 0; j < n; j++)
+        for (int32_t i = 0; i < n; i++)
+            t[j * n + i] = fx_surface_get_native(s, x + i, y + j) != bgn;
+    fx_collage_result res;
+    fx_collage_search(t, n, n, maxmaps, t + (size_t)n * n, &res);
+    for (int i = 0; i < res.n; i++)
+        fx_trace(&sc->ctx, "collage: map %d: scale 1/%d x 1/%d, offset %d/12, %d/12", i + 1, res.maps[i].ax_den,
+                 res.maps[i].ay_den, res.maps[i].ex, res.maps[i].ey);
+    fx_trace(&sc->ctx, "collage: %d maps; distance %d px (%d of %d target pixels missed, %d extra)", res.n,
+             res.missed + res.extra, res.missed, res.target, res.extra);
+    if (res.n == 0)
+        return 0;
+    /* the attractor, and the maps kept as the user IFS ('ifs user ...') */
+    fx_scene_fractal *st = state(sc);
+    fx_ifs ifs;
+    fx_collage_to_ifs(res.maps, res.n, st->maps, &ifs);
+    st->nmaps = res.n;
+    st->win[0] = st->win[1] = 0;
+    st->win[2] = st->win[3] = FX16_ONE;
+    fx_rect d = {dx, dy, clamp32((int64_t)dx + n), clamp32((int64_t)dy + n)};
+    fx_ifs_chaos(&sc->ctx, d, &ifs, (uint32_t)npoints, (uint32_t)seed);
+    return 0;
+}
+
+static int cmd_fractcompress(fx_scene *sc)
+{
+    int32_t x, y, n, dx, dy, iters;
+    TRY(fx_scene_arg_int(sc, &x));
+    TRY(fx_scene_arg_int(sc, &y));
+    TRY(fx_scene_arg_int(sc, &n));
+    TRY(fx_scene_arg_int(sc, &dx));
+    TRY(fx_scene_arg_int(sc, &dy));
+    TRY(fx_scene_arg_int(sc, &iters));
+    TRY(fx_scene_end(sc));
+    if (n < 8 || n > FX_FIC_SCENE_SIDE || n % 8)
+        return fx_scene_error(sc, "size %d: a multiple of 8 in 8..%d", n, FX_FIC_SCENE_SIDE);
+    if (iters < 0 || iters > 100)
+        return fx_scene_error(sc, "iteration count %d out of range (0..100)", iters);
+    TRY(on_surface(sc, x, y, n, "source"));
+    size_t px = (size_t)n * n, nc = px / 16;
+    uint8_t *img = scratch(sc, 3 * px + nc * sizeof(fx_fic_code) + 8);
+    if (!img)
+        return fx_scene_error(sc, "out of scene memory");
+    uint8_t *out = img + px, *tmp = out + px;
+    fx_fic_code *codes = (fx_fic_code *)(((uintptr_t)(tmp + px) + 7) & ~(uintptr_t)7);
+    const fx_surface *s = &sc->ctx.surf;
+    for (int32_t j = 0; j < n; j++)
+        for (int32_t i = 0; i < n; i++) {
+            fx_color c = fx_unpack(s->format, fx_surface_get_native(s, x + i, y + j));
+            /* Rec. 601 luma in integers */
+            img[j * n + i] = (uint8_t)((77 * (c >> 16 & 255) + 150 * (c >> 8 & 255) + 29 * (c & 255) + 128) >> 8);
+        }
+    fx_fic_encode(img, n, codes);
+    fx_fic_decode(codes, n, (uint32_t)iters, out, tmp);
+    for (int32_t j = 0; j < n; j++)
+        for (int32_t i = 0; i < n; i++) {
+            uint32_t g = out[j * n + i];
+            fx_surface_put(s, clamp32((int64_t)dx + i), clamp32((int64_t)dy + j),
+                           0xFF000000u | g << 16 | g << 8 | g);
+        }
+    /* the code: per 4 x 4 block a domain index, 3 bits of symmetry, 5 of
+     * scale, 11 of offset */
+    int32_t nd = (n / 4 - 1) * (n / 4 - 1), bits = 0;
+    while ((1 << bits) < nd)
+        bits++;
+    char p[24];
+    fx16 q = fx_psnr(img, out, (int32_t)px);
+    fx_trace(&sc->ctx, "fractcompress: %dx%d grey, %d range blocks, %d bytes of code (%d%% of the pixels), %d rounds, "
+             "PSNR %s dB", n, n, (int)nc, (int)((nc * (uint32_t)(bits + 19) + 7) / 8),
+             (int)((nc * (uint32_t)(bits + 19) + 7) / 8 * 100 / px), iters,
+             q == INT32_MAX ? "inf" : dec4(p, sizeof p, q));
+    return 0;
+}
+
 const fx_scene_cmd fx_scene_cmds_fractal[] = {
     {"colormap", cmd_colormap, "colormap grey|hot|viridis|hsv|w9 [PERIOD]", 0},
     {"insidecolor", cmd_insidecolor, "insidecolor #RRGGBB", 0},
@@ -324,5 +740,19 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
     {"ifs", cmd_ifs, "ifs sierpinski|fern|user chaos X Y W H NPOINTS SEED | ... copier X Y W H DEPTH",
      FX_SCENE_DRAWS},
     {"fern", cmd_fern, "fern X Y W H NPOINTS SEED", FX_SCENE_DRAWS},
+    {"juliaset", cmd_juliaset, "juliaset random CRE CIM CX CY WIDTH NPOINTS SEED | juliaset tree CRE CIM CX CY WIDTH DEPTH",
+     FX_SCENE_DRAWS},
+    {"juliafixed", cmd_juliafixed, "juliafixed CRE CIM CX CY WIDTH", FX_SCENE_DRAWS},
+    {"juliabasins", cmd_juliabasins, "juliabasins CRE CIM CX CY WIDTH MAXITER", FX_SCENE_DRAWS},
+    {"boxdim", cmd_boxdim, "boxdim X Y W H BG SMIN SMAX [KNOWN]", FX_SCENE_DRAWS},
+    {"turtle", cmd_turtle,
+     "turtle home X Y DEG | moveto X Y | lineto X Y | moverel DX DY | linerel DX DY | turn DEG | turnto DEG | "
+     "forward D | jump D | koch LEN ORDER | hilbert STEP ORDER [PARITY] | where",
+     0},
+    {"grass", cmd_grass, "grass X Y W H NBLADES SEED", FX_SCENE_DRAWS},
+    {"fire", cmd_fire, "fire X Y W H ROUGH SEED", FX_SCENE_DRAWS},
+    {"collage", cmd_collage, "collage X Y SIZE BG MAXMAPS DX DY NPOINTS SEED", FX_SCENE_DRAWS},
+    {"fractcompress", cmd_fractcompress, "fractcompress X Y SIZE DX DY ROUNDS", FX_SCENE_DRAWS},
+    {"mountain", cmd_mountain, "mountain SIZE HEIGHT K SEED [ROUGH [SEA]]", FX_SCENE_DRAWS},
     {0, 0, 0, 0},
 };

@@ -16,7 +16,12 @@
 #include "fixel/error.h"
 #include "fixel/fill.h"
 #include "fixel/font.h"
+#include "fixel/boxdim.h"
+#include "fixel/collage.h"
+#include "fixel/julia.h"
 #include "fixel/koch.h"
+#include "fixel/randfract.h"
+#include "fixel/turtle.h"
 #include "fixel/line.h"
 #include "fixel/mesh.h"
 #include "fixel/sprite.h"
@@ -129,6 +134,59 @@ static void extremes(const fx_surface *s)
     fx_coastline(&c, xy, 3, &p);
 }
 
+/* Issue #23's fractals on every surface: extreme rectangles, NULLs, the
+ * turtle walking off the Q16.16 range. */
+static void fractals(const fx_surface *s)
+{
+    fx_ctx c;
+    fx_ctx_init(&c, s);
+    uint32_t lut[1] = {0};
+    fx_dwell_pal pal = {lut, 1, 65536, 0, 0};
+    const fx_color basin[1] = {0xFFFFFFFFu};
+    fx_fractal_view v = fx_julia_view(0, 0, -FX56_ONE, 0, 3 * FX56_ONE, s->w, s->h, 50);
+    for (int i = 0; i < NE; i++)
+        for (int j = 0; j < NE; j++) {
+            int32_t a = E[i], b = E[j];
+            fx_rect r = {a, b, b, a};
+            fx_grass(&c, r, 3, 1);
+            fx_fire(&c, r, FX16_ONE / 2, 1);
+            fx_julia_basins(s, r, &v, &pal, basin, 1);
+            WANT(fx_boxcount(s, r, 0, 1) >= 0);
+            WANT(fx_boxcount(s, r, 0, b < 1 ? 1 : b) >= 0);
+            fx_turtle t;
+            fx_turtle_init(&t, &c, a, b, a);
+            fx_turtle_forward(&t, INT32_MAX, 1);
+            fx_turtle_line_rel(&t, a, b);
+            fx_turtle_turn(&t, b);
+            fx_turtle_koch(&t, a, 2);
+            fx_turtle_hilbert(&t, b, 2, a);
+            int32_t x, y;
+            fx_julia_to_pixel(&v, (fx56)a * ((fx56)1 << 27), (fx56)b * ((fx56)1 << 27), &x, &y); /* |a| 2^-29 <= 4 */
+        }
+    WANT(fx_grass(NULL, (fx_rect){0, 0, 1, 1}, 1, 1) == -FX_EINVAL);
+    WANT(fx_fire(NULL, (fx_rect){0, 0, 1, 1}, 0, 1) == -FX_EINVAL);
+    WANT(fx_julia_basins(NULL, (fx_rect){0, 0, 1, 1}, &v, &pal, basin, 1) == -FX_EINVAL);
+    WANT(fx_julia_basins(s, (fx_rect){0, 0, 1, 1}, NULL, &pal, basin, 1) == -FX_EINVAL);
+    WANT(fx_julia_inverse_random(NULL, &v, 10, 1) == -FX_EINVAL);
+    WANT(fx_julia_inverse_tree(&c, NULL, 3) == -FX_EINVAL);
+    WANT(fx_julia_inverse_random(&c, &v, 1000, 1) >= 0);
+    WANT(fx_boxcount(NULL, (fx_rect){0, 0, 1, 1}, 0, 1) == -FX_EINVAL);
+    fx16 d;
+    WANT(fx_boxdim_surface(s, (fx_rect){INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX}, 0, 1, INT32_MAX, &d, NULL, NULL) != 0 ||
+         d >= 0);
+    int32_t sz[2] = {1, 2}, ct[2] = {INT32_MAX, 1};
+    WANT(fx_boxdim_fit(sz, ct, 2, &d) == 0);
+    WANT(fx_boxdim_fit(NULL, ct, 2, &d) == -FX_EINVAL);
+    WANT(fx_terrain_mesh(NULL, NULL, 0, 1, 1, 1, 0) == -FX_EINVAL);
+    uint8_t t[12 * 12], w[12 * 12];
+    fx_collage_result res;
+    memset(t, 1, sizeof t);
+    WANT(fx_collage_search(t, 12, 12, 16, w, &res) >= 0);
+    WANT(fx_collage_search(NULL, 12, 12, 1, w, &res) == -FX_EINVAL);
+    WANT(fx_fic_encode(NULL, 8, NULL) == -FX_EINVAL);
+    WANT(fx_psnr(NULL, t, 1) == 0);
+}
+
 /* One vertex in 2^19 + 1 faces: the normal sums overflowed int32. */
 static void valence(const fx_surface *s)
 {
@@ -187,6 +245,7 @@ int main(void)
     for (size_t i = 0; i < sizeof confs / sizeof confs[0]; i++) {
         run("NULL and count preconditions", nulls, &confs[i]);
         run("extreme coordinates", extremes, &confs[i]);
+        run("issue #23 fractals", fractals, &confs[i]);
     }
     run("normals of a vertex in 2^19 + 1 faces", valence, &confs[0]);
     printf("api: %d passed, %d failed\n", passed, failed);

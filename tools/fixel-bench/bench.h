@@ -139,5 +139,8 @@ void raytrace_print(FILE *o);
 /* TABLE 6 (vsd_bench.c): the visible-surface methods at two scene sizes. */
 void vsd_bench_run(int trials, double min_s, int quiet);
 void vsd_bench_print(FILE *o);
+/* TABLE 7 (fractal_bench.c): issue #23's fractals, one call each. */
+void fractal_bench_run(int trials, double min_s, int quiet);
+void fractal_bench_print(FILE *o);
 
 #endif

@@ -881,7 +881,8 @@ static void usage_to(FILE *f, int status)
             "  -q: no progress on stderr; -x: skip the reference-picture comparison (TABLE 3)\n"
             "  TABLE 4 (presentation, teapot, deep zoom, idle loop) runs unless --no-extras;\n"
             "  -w present,teapot,deepzoom,idle picks parts of it; TABLE 5 (raytrace) likewise;\n"
-            "  TABLE 6 (visible-surface methods at two scene sizes) runs with it, or alone with -w vsd\n"
+            "  TABLE 6 (visible-surface methods at two scene sizes) runs with it, or alone with -w vsd;\n"
+            "  TABLE 7 (fractals of issue #23) likewise, alone with -w fractal\n"
             "  --check: verify nominal counts, checksums and W9 agreement only, then exit\n");
     exit(status);
 }
@@ -968,6 +969,8 @@ int main(int argc, char **argv)
             raytrace_run(opt_quiet);
         if (!opt_w || listed(opt_w, "vsd"))
             vsd_bench_run(opt_t, opt_m, opt_quiet);
+        if (!opt_w || listed(opt_w, "fractal"))
+            fractal_bench_run(opt_t, opt_m, opt_quiet);
     }
     machine(stdout);
     printf("\n");
@@ -977,6 +980,7 @@ int main(int argc, char **argv)
     extras_print(stdout);
     raytrace_print(stdout);
     vsd_bench_print(stdout);
+    fractal_bench_print(stdout);
     if (opt_md) {
         FILE *o = fopen(opt_md, "w");
         if (o) {
@@ -988,6 +992,7 @@ int main(int argc, char **argv)
             extras_print(o);
             raytrace_print(o);
             vsd_bench_print(o);
+            fractal_bench_print(o);
             fclose(o);
         }
     }

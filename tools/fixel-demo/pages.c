@@ -14,6 +14,10 @@
 #include "fixel/fixed.h"
 #include "fixel/font.h"
 #include "fixel/fractal.h"
+#include "fixel/boxdim.h"
+#include "fixel/julia.h"
+#include "fixel/randfract.h"
+#include "fixel/turtle.h"
 #include "fixel/ifs.h"
 #include "fixel/koch.h"
 #include "fixel/line.h"
@@ -857,6 +861,54 @@ static const fx_ifs_map fern_maps[4] = {
     {-9830, 18350, 17039, 15729, 0, 28835, 4587},
 };
 
+/* Box-counting dimension of what was drawn in r (boxes of smin..16 smin px over
+ * the panel's colour), as "D = 1.27 (1.2619)". */
+static void measure_dim(fx_ctx *c, fx_rect r, int32_t smin, char *buf, size_t n, const char *known)
+{
+    fx16 d;
+    if (fx_boxdim_surface(&c->surf, r, fx_pack(c->surf.format, PANEL), smin, 16 * smin, &d, NULL, NULL) < 0) {
+        snprintf(buf, n, "D: nothing drawn");
+        return;
+    }
+    snprintf(buf, n, "box dim %.3f (%s)", d / 65536.0, known);
+}
+
+/* The diamond-square terrain raised into a mountain, as a lit mesh
+ * coloured by height (the scene's 'mountain' command, in C). */
+static void draw_mountain(fx_ctx *c, fx_rect r)
+{
+    enum { K = 5, N = (1 << K) + 1 };
+    static int32_t h[N * N];
+    static fx_vec3 pos[N * N], nrm[N * N];
+    static uint32_t tri[3 * 2 * (N - 1) * (N - 1)], col[N * N];
+    fx_surface s = fx_surface_sub(c->surf, r);
+    fx_mesh m = {pos, nrm, tri, 0, 0, N * N, 2 * (N - 1) * (N - 1), NULL, col};
+    fx_terrain(h, N, K, 1 << 20, 36045, 11);
+    fx_terrain_peak(h, N, K, 3 << 19);
+    if (fx_terrain_mesh(&m, h, N, K, 7 * FX16_ONE, FX16_ONE * 9 / 5, 19661) < 0)
+        return;
+    void *z = malloc(fx3d_depth_bytes(&s, 32));
+    fx3d *rd = malloc(sizeof *rd);
+    fx_mat4 ms[2], ps[2];
+    fx_camera cam;
+    if (z && rd && fx3d_init(rd, &s, ms, 2, ps, 2) == 0 &&
+        fx_camera_set(&cam, fx_vec3_make(0, 4 * FX16_ONE, 7 * FX16_ONE), fx_vec3_make(0, FX16_ONE / 4, 0),
+                      fx_vec3_make(0, FX16_ONE, 0)) == 0) {
+        fx3d_set_depth(rd, z, 32);
+        fx_camera_view(&cam, &rd->view);
+        fx3d_perspective(rd, fx_angle_from_deg(45), fx16_from_ratio(s.w, s.h), FX16_ONE / 10, 50 * FX16_ONE);
+        rd->light[0].type = FX3D_LIGHT_DIRECTIONAL;
+        rd->light[0].pos = fx_vec3_make(-FX16_ONE, 2 * FX16_ONE, FX16_ONE);
+        rd->ambient = fx3d_rgb_from_color(0x505050);
+        rd->mat.ambient = rd->mat.diffuse = fx3d_rgb_from_color(0xFFFFFF);
+        rd->mat.specular = fx3d_rgb_from_color(0);
+        rd->shading = FX3D_GOURAUD;
+        fx3d_draw(rd, &m);
+    }
+    free(rd);
+    free(z);
+}
+
 static void page_fractals(fx_ctx *c, demo_state *st)
 {
     int32_t top = DEMO_TAB_H + 8;
@@ -883,27 +935,78 @@ static void page_fractals(fx_ctx *c, demo_state *st)
     dwell_lut(lut2, 64, c->surf.format, FX_CMAP_VIRIDIS);
     fx_dwell_pal pal2 = {lut2, 64, 65536, 1, fx_pack(c->surf.format, 0xFF000000u)};
     fx_surface js = fx_surface_sub(c->surf, jr);
-    fx_fractal_render(&js, (fx_rect){0, 0, js.w, js.h}, &jv, &pal2);
+    /* K_c with the basins of its attracting cycle coloured, J_c itself by
+     * inverse iteration on top, and the fixed points (ring: repelling,
+     * disc: attracting, square: neutral) -- where |c| fits (parts <= 2) */
+    int period = -1;
+    if (fx_julia_check(&jv) == 0) {
+        static const fx_color basin[4] = {0xFFFFC040u, 0xFF40B0FFu, 0xFFFF5A5Au, 0xFF60E060u};
+        period = fx_julia_basins(&js, (fx_rect){0, 0, js.w, js.h}, &jv, &pal2, basin, 4);
+        fx_ctx jc;
+        fx_ctx_init(&jc, &js);
+        fx_ctx_set_color(&jc, 0xFFFFFFFFu);
+        fx_julia_inverse_random(&jc, &jv, 30000, 1);
+        fx_julia_fixed fp[2];
+        fx_julia_fixed_points(jre, jim, fp);
+        fx_ctx_set_color(&jc, 0xFFFF40FFu);
+        for (int k = 0; k < 2; k++) {
+            int32_t x, y;
+            fx_julia_to_pixel(&jv, fp[k].re, fp[k].im, &x, &y);
+            if (fp[k].kind == FX_FIXED_ATTRACTING)
+                fx_disc(&jc, x, y, 3);
+            else if (fp[k].kind == FX_FIXED_REPELLING)
+                fx_circle(&jc, x, y, 4);
+            else
+                fx_rect_outline(&jc, x - 3, y - 3, 7, 7);
+        }
+    } else {
+        fx_fractal_render(&js, (fx_rect){0, 0, js.w, js.h}, &jv, &pal2);
+    }
     demo_text(c, 410, top + 5, ACCENT, "Julia c = %+.4f %+.4fi (follows the pointer)",
               (double)jre / (double)FX56_ONE, (double)jim / (double)FX56_ONE);
+    if (period > 0)
+        demo_text(c, 416, top + 230, 0xFFFFFFFFu, "J_c, basins of the period-%d cycle, fixed points", period);
+    else if (period == 0)
+        demo_text(c, 416, top + 230, 0xFFFFFFFFu, "J_c by inverse iteration, fixed points");
     if (st->mwidth != 3 * FX56_ONE)
         demo_text(c, 20, top + 230, 0xFFFFFFFFu, "width %.3g, %u iterations", (double)st->mwidth / (double)FX56_ONE,
                   maxiter);
     color(c, 0xFFFFFFFFu);
     fx_circle(c, st->julia_x, st->julia_y, 3);
 
-    /* Koch, fern, Hilbert */
-    panel(c, 8, top + 258, 256, 186, NULL);
-    demo_text(c, 14, top + 263, ACCENT, "Koch snowflake, order %d (keys 0-6)", st->koch_order);
+    /* the bottom row: five panels of 152 px */
+    int32_t by = top + 258, bh = 186;
+    char dim[48];
+    /* Koch snowflake drawn by the turtle, its box-counting dimension */
+    panel(c, 8, by, 152, bh, NULL);
+    demo_text(c, 14, by + 5, ACCENT, "Koch (turtle), n=%d", st->koch_order);
     color(c, 0xFF5CE1E6u);
-    fx_koch_snowflake(c, 136, top + 360, 80, (uint32_t)st->koch_order);
-    panel(c, 272, top + 258, 256, 186, "Barnsley fern (IFS)");
+    fx_turtle t;
+    fx_turtle_init(&t, c, 22 << 16, (by + 118) << 16, 60 << 16);
+    for (int i = 0; i < 3; i++) {
+        fx_turtle_koch(&t, 124 << 16, (uint32_t)st->koch_order);
+        fx_turtle_turn(&t, -120 * 65536);
+    }
+    measure_dim(c, (fx_rect){10, by + 20, 158, by + bh - 22}, 2, dim, sizeof dim, "1.2619");
+    demo_text(c, 14, by + bh - 16, INK, "%s", dim);
+    panel(c, 166, by, 152, bh, "Barnsley fern (IFS)");
     fx_ifs fern = {fern_maps, 4, -3 * FX16_ONE, 0, 3 * FX16_ONE, 10 * FX16_ONE};
     color(c, GREEN);
-    fx_ifs_chaos(c, (fx_rect){330, top + 276, 470, top + 440}, &fern, 40000, 1);
-    panel(c, 536, top + 258, 256, 186, "Hilbert curve, order 5");
+    fx_ifs_chaos(c, (fx_rect){182, by + 20, 302, by + bh - 4}, &fern, 30000, 1);
+    panel(c, 324, by, 152, bh, "Hilbert curve, order 5");
     color(c, ORANGE);
-    fx_hilbert(c, 600, top + 278, 160, 5);
+    fx_hilbert(c, 336, by + 22, 128, 5);
+    /* boxes from the curve's own 4-px cells up: below them it is lines */
+    measure_dim(c, (fx_rect){336, by + 22, 464, by + 150}, 4, dim, sizeof dim, "2");
+    demo_text(c, 330, by + bh - 16, INK, "%s", dim);
+    /* random fractals: fire behind grass */
+    panel(c, 482, by, 152, bh, "Fire and grass");
+    fx_fire(c, (fx_rect){540, by + 30, 630, by + bh - 2}, 39322, 5);
+    color(c, 0xFF3CB030u);
+    fx_grass(c, (fx_rect){486, by + 120, 630, by + bh - 2}, 110, 3);
+    panel(c, 640, by, 152, bh, NULL);
+    draw_mountain(c, (fx_rect){641, by + 1, 791, by + bh - 1});
+    demo_text(c, 646, by + 5, ACCENT, "Terrain, diamond-square");
 }
 
 /* ---- visualization ---- */
@@ -1062,8 +1165,10 @@ void demo_state_init(demo_state *st, int32_t w, int32_t h)
     st->mcre = -FX56_ONE / 2;
     st->mcim = 0;
     st->mwidth = 3 * FX56_ONE;
-    st->julia_x = 14 + 140;
-    st->julia_y = top + 20 + 150;
+    /* c = -0.12 + 0.75i: Douady's rabbit, whose basins of the attracting
+     * 3-cycle the Julia panel colours */
+    st->julia_x = 14 + 235;
+    st->julia_y = top + 20 + 18;
     st->koch_order = 4;
     st->pick_x = WHEEL_CX + 66;
     st->pick_y = WHEEL_CY + 32;
