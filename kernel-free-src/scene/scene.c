@@ -3,6 +3,7 @@
 #include "fixel/scene.h"
 #include "fixel/error.h"
 #include "../base/fx_internal.h"
+#include "scene_shared.h"
 
 extern const fx_scene_cmd fx_scene_cmds_core[];
 extern const fx_scene_cmd fx_scene_cmds_raster[];
@@ -17,13 +18,14 @@ extern const fx_scene_cmd fx_scene_cmds_input[];
 extern const fx_scene_cmd fx_scene_cmds_rt[];
 extern const fx_scene_cmd fx_scene_cmds_vsd[];
 extern const fx_scene_cmd fx_scene_cmds_objects[];
+extern const fx_scene_cmd fx_scene_cmds_anim[];
 
 /* One table per module, each in its own scene_<module>.c. */
 const fx_scene_cmd *const fx_scene_tables[] = {
     fx_scene_cmds_core,    fx_scene_cmds_raster, fx_scene_cmds_conic, fx_scene_cmds_text,
     fx_scene_cmds_clip,    fx_scene_cmds_fill,   fx_scene_cmds_3d,    fx_scene_cmds_fractal,
     fx_scene_cmds_viz,     fx_scene_cmds_input,  fx_scene_cmds_rt,     fx_scene_cmds_vsd,
-    fx_scene_cmds_objects,
+    fx_scene_cmds_objects, fx_scene_cmds_anim,
     0,
 };
 
@@ -481,6 +483,8 @@ int fx_scene_exec_line(fx_scene *sc, const char *line, size_t len, int lineno)
     if (!next_token(sc, &s, &l))
         return 0;
     sc->cmd_col = s;
+    if (fx_scene_anim_recording(sc) && !tok_is(line + s, l, "endblur"))
+        return fx_scene_anim_record(sc, line, len, lineno);
     const fx_scene_cmd *cmd = fx_scene_find(line + s, (size_t)l);
     if (!cmd)
         return fx_scene_error(sc, "unknown command '%.*s'", l > 40 ? 40 : l, line + s);
@@ -517,5 +521,6 @@ int fx_scene_run(fx_scene *sc, const char *text, size_t len)
         i = e + 1;
         lineno++;
     }
-    return fx_scene_surface(sc);
+    int r = fx_scene_end_script(sc);
+    return r < 0 ? r : fx_scene_surface(sc);
 }

@@ -8,6 +8,7 @@
 #include "fixel/render3d.h"
 #include "fixel/scene.h"
 #include "scene_mesh.h"
+#include "scene_shared.h"
 
 #define TRY(x)                   \
     do {                         \
@@ -183,6 +184,22 @@ static int cmd_camera(fx_scene *sc)
                       fx_vec3_make(v[6], v[7], v[8])) < 0)
         return fx_scene_error(sc, "camera: eye equals look, or up is parallel to the view");
     fx_camera_view(&s->cam, &s->r.view);
+    return 0;
+}
+
+int fx_scene_3d_camera(fx_scene *sc, fx_vec3 eye, fx_vec3 look, fx_vec3 up)
+{
+    GET(s);
+    if (fx_camera_set(&s->cam, eye, look, up) < 0)
+        return fx_scene_error(sc, "camera: eye equals look, or up is parallel to the view");
+    fx_camera_view(&s->cam, &s->r.view);
+    return 0;
+}
+
+int fx_scene_3d_model(fx_scene *sc, const fx_mat4 *m)
+{
+    GET(s);
+    fx_mat_stack_mult(&s->r.model, m);
     return 0;
 }
 

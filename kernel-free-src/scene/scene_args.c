@@ -28,6 +28,7 @@
 #include "fixel/randfract.h"
 #include "fixel/turtle.h"
 #include "scene_fractal.h"
+#include "fixel/anim.h"
 
 #define CO 1048576 /* coordinate bound, 2^20 */
 #define G3 1024    /* 3D geometry bound */
@@ -280,6 +281,28 @@ A(rtmesh, FORM("teapot"), IW("N", 1, 16), FORM("torus"), F("R", 0, 16), F("r", 0
 A(raytrace, OPT, XY("X"), XY("Y"), I("W", 0, 16384), I("H", 0, 16384));
 A(rttrace, I("X", 0, 16383), I("Y", 0, 16383));
 
+/* ---- animation (scene_anim.c): times 0..32767 s; the ball within fixel/anim.h's limits ---- */
+#define TM(n) F(n, 0, 32767)
+#define EASES "none|in|out|inout|smooth"
+A(time, TM("T"));
+A(key, W("NAME"), TM("T"), REP("value", 1, FX_ANIM_MAX_CH), FALL("V"));
+A(keycolor, W("NAME"), TM("T"), C("COLOR"));
+A(interp, W("NAME"), W("linear|spline|step"));
+A(ease, W("NAME"), W(EASES));
+A(tween, W("NAME"), W("translate|rotate|scale|color|follow|translate3d|rotatex|rotatey|rotatez|camera"));
+A(path, W("NAME"), OPT, IW("STEPS", 1, 4096));
+A(shape, W("NAME"), REP("vertex", 3, 256), F("X", -32768, 32767), F("Y", -32768, 32767));
+A(morph, W("A"), W("B"), W("fill|outline|vertices"), TM("T0"), TM("T1"), OPT, W(EASES));
+A(bounce, I("X0", -FX_ANIM_BALL_POS, FX_ANIM_BALL_POS), I("Y0", -FX_ANIM_BALL_POS, FX_ANIM_BALL_POS),
+  I("X1", -FX_ANIM_BALL_POS, FX_ANIM_BALL_POS), I("Y1", -FX_ANIM_BALL_POS, FX_ANIM_BALL_POS),
+  F("X", -FX_ANIM_BALL_POS, FX_ANIM_BALL_POS), F("Y", -FX_ANIM_BALL_POS, FX_ANIM_BALL_POS),
+  F("VX", -FX_ANIM_BALL_SPEED, FX_ANIM_BALL_SPEED), F("VY", -FX_ANIM_BALL_SPEED, FX_ANIM_BALL_SPEED),
+  F("G", 0, FX_ANIM_BALL_G), F("E", 0, 1), I("R", 0, 1024), OPT, IW("TRAIL", 1, 4096));
+A(blur, IW("N", 1, 64), TM("SHUTTER"));
+#define BLURW "N runs of the block's lines (at most 1024 lines, 64 KiB), each preceded by a copy of the arena and the pixels"
+#define BALLW "at most 4096 impacts solved per position (FX_ANIM_BALL_MAX_BOUNCES), TRAIL + 1 positions"
+#define KEYS2 "key a 0 0 0\nkey a 1 10 10"
+
 #define TRIS "at most 262144 triangles (FX_SCENE_MAX_TRIANGLES)"
 #define TEX "texture checker 8 8 2 #000000 #FFFFFF"
 #define RTWORK                                                                                                \
@@ -366,6 +389,10 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"patch", a_patch, 0, 0}, {"ptabcull", a_ptabcull, 0, 0}, {"coloursolid", a_coloursolid, 0, 0},
     {"octree", a_octree, "blobball 0 0 0 1 1",
      "2^(3K) voxels, each (blob) a field evaluation of every ball or (supertoroid) a row test of every triangle"},
+    {"time", a_time, 0, 0}, {"key", a_key, 0, 0}, {"keycolor", a_keycolor, 0, 0}, {"interp", a_interp, 0, 0},
+    {"ease", a_ease, 0, 0}, {"tween", a_tween, KEYS2, 0}, {"path", a_path, KEYS2, 0}, {"shape", a_shape, 0, 0},
+    {"morph", a_morph, "shape a 0 0 10 0 0 10\nshape b 0 0 10 0 10 10 0 10", 0}, {"bounce", a_bounce, 0, BALLW},
+    {"blur", a_blur, 0, BLURW}, {"endblur", a_none, "blur 2 0.1", BLURW},
     {0, 0, 0, 0},
 };
 

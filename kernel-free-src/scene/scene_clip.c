@@ -19,6 +19,7 @@
 #include "fixel/xform.h"
 #include "../base/fx_internal.h"
 #include "scene_frame.h"
+#include "scene_shared.h"
 
 #define TRY(x)                   \
     do {                         \
@@ -65,6 +66,16 @@ static clip_state *state(fx_scene *sc)
     clip_state *st = state(sc);                                        \
     if (!st)                                                           \
         return fx_scene_error(sc, "scene arena full (clip state)")
+
+fx_xform2 *fx_scene_ctm(fx_scene *sc)
+{
+    clip_state *st = state(sc);
+    if (!st) {
+        fx_scene_error(sc, "scene arena full (clip state)");
+        return 0;
+    }
+    return &st->cur;
+}
 
 /* Four integers: two inclusive corner pixels -> half-open rectangle. */
 static int arg_window(fx_scene *sc, fx_rect *r)

@@ -14,6 +14,8 @@
 # message naming the variable (FIXEL_REPLAY: "replay: " and the file), and never echo a raw control character.
 #   sh tests/corners/env-corners.sh DRAW OUTDIR [LIMIT]
 draw=$1; out=$2; limit=${3:-1}
+# OUTDIR is removed and made again: without it "$PWD/" would be removed
+[ -n "$draw" ] && [ -n "$out" ] || { echo "usage: sh tests/corners/env-corners.sh DRAW OUTDIR [LIMIT]" >&2; exit 2; }
 case $draw in /*) ;; *) draw=$PWD/$draw;; esac
 case $out in /*) ;; *) out=$PWD/$out;; esac
 P=0; F=0

@@ -7,6 +7,9 @@
 #include "fixel/draw.h"
 #include "fixel/clip.h"
 #include "fixel/mat3d.h"
+#include "fixel/anim.h"
+
+#define DEMO_FLIGHT_MAX 32
 
 #define DEMO_TAB_H 22
 
@@ -41,6 +44,12 @@ typedef struct demo_state {
     int32_t vsd_turn;   /* its rotation, degrees */
     /* animation */
     uint32_t frame;
+    /* the Animation page's camera flight (page_anim.c) */
+    fx_camera acam;
+    fx_anim_key flight[DEMO_FLIGHT_MAX];
+    int32_t nflight;
+    int flying;
+    uint32_t fly_from; /* the frame the flight started */
 } demo_state;
 
 typedef struct demo_page {
@@ -78,6 +87,12 @@ void demo_rt_page(fx_ctx *c, demo_state *st, int32_t top);
 void demo_objects_page(fx_ctx *c, demo_state *st, int32_t top);
 int demo_rt_key(demo_state *st, int key);
 int demo_rt_busy(const demo_state *st);
+
+/* the Animation page (page_anim.c); --flight FILE keeps its recorded keys */
+void demo_anim_init(demo_state *st);
+void demo_anim_page(fx_ctx *c, demo_state *st, int32_t top);
+int demo_anim_key(demo_state *st, int key);
+void demo_anim_set_file(const char *path);
 
 /* helpers */
 void demo_text(const fx_ctx *c, int32_t x, int32_t y, fx_color col, const char *fmt, ...)

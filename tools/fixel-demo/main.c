@@ -24,7 +24,7 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: fixel-demo [--headless] [--out DIR] [--page NAME] [--list]\n"
+            "usage: fixel-demo [--headless] [--out DIR] [--page NAME] [--list] [--flight FILE]\n"
             "       fixel-demo --display OUTPUT=PAGE [--display OUTPUT=PAGE...]\n"
             "       fixel-demo --golden DIR [--update]\n"
             "  --headless    render pages to PNG files instead of opening a display\n"
@@ -32,6 +32,8 @@ static void usage(FILE *f)
             "  --out DIR     where headless pictures go (default out)\n"
             "  --page NAME   only this page (headless) or start on it (interactive)\n"
             "  --list        print the page names\n"
+            "  --flight FILE the Animation page's camera flight: loaded from FILE, and each\n"
+            "                key recorded (k) appended to it (docs/ANIMATION.md)\n"
             "  --display OUTPUT=PAGE  show PAGE on OUTPUT (a connector: HDMI-A-2,\n"
             "                vc4:HDMI-A-1, DSI-1; empty: the next free output); repeat it\n"
             "                for one page per output, each with its own state; input\n"
@@ -47,7 +49,9 @@ static void usage(FILE *f)
             "fractals: click zooms in, right click out, the Julia set follows the pointer, 0-6 Koch order\n"
             "3d: s shading; camera u/d up/down, f/b forward/back, h/j left/right, y/Y yaw, t/T pitch, o/O roll\n"
             "hidden: 1-9 z-buffer/painter/Newell/BSP/scan-line/Warnock/ray casting/A-buffer/octree,\n"
-            "        [ ] move the traced scan line, m torus / course scene, +/- triangles or turn\n");
+            "        [ ] move the traced scan line, m torus / course scene, +/- triangles or turn\n"
+            "anim (no tab: n/p or --page anim): camera u/d f/b h/j y/Y t/T, k record a key,\n"
+            "        g fly the recorded keys, x clear\n");
 }
 
 static int find_page(const char *name)
@@ -422,7 +426,8 @@ static void tick(void *user, int value)
         d->st.frame++;
         /* only the animated pages need a frame on every tick */
         const char *n = demo_pages[d->st.page].name;
-        if (!strcmp(n, "3d") || !strcmp(n, "transforms") || (!strcmp(n, "raytrace") && demo_rt_busy(&d->st)))
+        if (!strcmp(n, "3d") || !strcmp(n, "transforms") || !strcmp(n, "anim") ||
+            (!strcmp(n, "raytrace") && demo_rt_busy(&d->st)))
             redisplay(d);
     }
     fx_app_timer(first->app, 33, tick, 0);
@@ -550,6 +555,8 @@ int main(int argc, char **argv)
             }
             snprintf(outs[nout], sizeof outs[0], "%.*s", (int)(eq - v), v);
             nout++;
+        } else if (!strcmp(a, "--flight") && i + 1 < argc) {
+            demo_anim_set_file(argv[++i]);
         } else if ((!strcmp(a, "--out") || !strcmp(a, "--page") || !strcmp(a, "--golden")) && i + 1 < argc) {
             const char *v = argv[++i];
             if (a[2] == 'o')

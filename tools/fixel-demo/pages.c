@@ -1122,6 +1122,7 @@ static void page_vsd(fx_ctx *c, demo_state *st) { demo_vsd_page(c, st, DEMO_TAB_
 static void page_rt(fx_ctx *c, demo_state *st) { demo_rt_page(c, st, DEMO_RT_Y); }
 
 static void page_objects(fx_ctx *c, demo_state *st) { demo_objects_page(c, st, DEMO_TAB_H + 8); }
+static void page_anim(fx_ctx *c, demo_state *st) { demo_anim_page(c, st, DEMO_TAB_H + 8); }
 
 const demo_page demo_pages[] = {
     {"lines", "Lines", page_lines},
@@ -1138,11 +1139,14 @@ const demo_page demo_pages[] = {
     {"viz", "Viz", page_viz},
     {"glut", "GLUT", demo_page_glut},
     {"raytrace", "Ray trace", page_rt},
+    {"anim", "Animation", page_anim},
 };
 const int demo_npages = (int)(sizeof demo_pages / sizeof demo_pages[0]);
-/* Every page has a tab: fourteen 57-pixel tabs still hold the longest
- * label ("Transform", "Ray trace": 54 px) at 800 px. */
-const int demo_ntabs = (int)(sizeof demo_pages / sizeof demo_pages[0]);
+/* Fourteen 57-pixel tabs still hold the longest label ("Transform",
+ * "Ray trace": 54 px) at 800 px; a fifteenth would not, so the pages
+ * after the fourteenth (Animation) are reached with n/p and --page,
+ * without a tab. */
+const int demo_ntabs = 14;
 
 void demo_state_init(demo_state *st, int32_t w, int32_t h)
 {
@@ -1177,6 +1181,7 @@ void demo_state_init(demo_state *st, int32_t w, int32_t h)
     st->shading = FX3D_GOURAUD;
     st->vsd_method = 5; /* Warnock: the picture shows its regions */
     st->vsd_row = 80;
+    demo_anim_init(st);
 }
 
 void demo_draw(fx_ctx *c, demo_state *st)
@@ -1286,6 +1291,8 @@ int demo_key(demo_state *st, int key)
         return demo_vsd_key(st, key);
     if (!strcmp(name, "raytrace"))
         return demo_rt_key(st, key);
+    if (!strcmp(name, "anim"))
+        return demo_anim_key(st, key);
     if (!strcmp(name, "3d")) {
         fx16 d = FX16_ONE / 4;
         fx_angle a = FX_ANGLE_45 / 9;

@@ -23,6 +23,7 @@
 
 static const char usage[] =
     "usage: fixel-draw [-o OUT.png|OUT.ppm] [-s WxH] [-f FORMAT] [--trace] [SCRIPT|-]\n"
+    "       fixel-draw --frames N [--fps F] -o OUT-%04d.png [SCRIPT|-]\n"
     "       fixel-draw --display [--hold] [SCRIPT|-]\n"
     "Render a fixel scene script headless into a PNG or PPM file, or onto the display.\n"
     "  -o FILE      output image (default out.png; .ppm writes binary PPM)\n"
@@ -31,6 +32,10 @@ static const char usage[] =
     "  --trace      print each algorithm's steps (decision tables) on stdout\n"
     "  -j N         ray trace ('raytrace') on N threads (default: every core; same pixels);\n"
     "               with --display the rows appear as they finish\n"
+    "  --frames N   render frames 0..N-1 (1..100000) of an animated script, frame k at\n"
+    "               the clock k/FPS seconds, each to -o OUT, which must hold one %d\n"
+    "               (e.g. %04d: out/frame-0000.png ...)\n"
+    "  --fps F      frames a second for --frames (1..1000, default 25)\n"
     "  --commands   list every script command and exit\n"
     "  --display    show the result on the display (DRM, fbdev) instead of writing a file;\n"
     "               with the script on stdin ('-') lines run as they arrive and a line\n"
@@ -379,6 +384,30 @@ static long long now_ms(void)
     return (long long)t.tv_sec * 1000 + t.tv_nsec / 1000000;
 }
 
+/* -o for --frames: exactly one %d, %Nd or %0Nd (N < 10), and %% for a
+ * percent sign; anything else would let the name run printf wild. */
+static int frame_pattern_ok(const char *p)
+{
+    int convs = 0;
+    for (; *p; p++) {
+        if (*p != '%')
+            continue;
+        if (p[1] == '%') {
+            p++;
+            continue;
+        }
+        p++;
+        if (*p == '0')
+            p++;
+        if (*p >= '1' && *p <= '9')
+            p++;
+        if (*p != 'd')
+            return 0;
+        convs++;
+    }
+    return convs == 1;
+}
+
 static int run_lines(fx_scene *sc, const char *text, size_t len, const host *H, int display)
 {
     int tty = isatty(2), lines = 0, lineno = 1, shown = 0;
@@ -404,7 +433,8 @@ static int run_lines(fx_scene *sc, const char *text, size_t len, const host *H, 
         }
     }
     if (shown) fprintf(stderr, "\r\033[K");
-    return fx_scene_surface(sc);
+    int r = fx_scene_end_script(sc);
+    return r < 0 ? r : fx_scene_surface(sc);
 }
 
 /* Streaming: each stdin line runs as it arrives; "present" shows the frame. */
@@ -441,6 +471,8 @@ static int run_stream(fx_scene *sc, const host *H)
         lineno++;
     }
     free(line);
+    if (r >= 0)
+        r = fx_scene_end_script(sc);
     return r < 0 ? r : fx_scene_surface(sc);
 }
 
@@ -492,7 +524,7 @@ static void list_commands(void)
 int main(int argc, char **argv)
 {
     const char *out = "out.png", *script = "-";
-    int trace = 0, w = 0, h = 0, display = 0, hold = 0, threads = 0;
+    int trace = 0, w = 0, h = 0, display = 0, hold = 0, threads = 0, frames = 0, fps = 25;
     fx_format fmt = FX_FMT_COUNT;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -514,6 +546,14 @@ int main(int argc, char **argv)
                 fprintf(stderr, "fixel-draw: bad thread count '%s' (expected 1..64)\n", argv[i]);
                 return 2;
             }
+        } else if ((!strcmp(a, "--frames") || !strcmp(a, "--fps")) && i + 1 < argc) {
+            int v, big = a[2] == 'f' && a[3] == 'r' ? 100000 : 1000;
+            char extra;
+            if (sscanf(argv[++i], "%d%c", &v, &extra) != 1 || v < 1 || v > big) {
+                fprintf(stderr, "fixel-draw: bad %s '%s' (expected 1..%d)\n", a, argv[i], big);
+                return 2;
+            }
+            *(big == 1000 ? &fps : &frames) = v;
         } else if (!strcmp(a, "-o") && i + 1 < argc) {
             out = argv[++i];
             /* fx_write_image writes PNG unless the name ends in .ppm: a name
@@ -546,6 +586,12 @@ int main(int argc, char **argv)
         }
     }
 
+    if (frames && (display || !frame_pattern_ok(out))) {
+        fprintf(stderr, "fixel-draw: --frames %s\n",
+                display ? "writes files: it does not go with --display"
+                        : "needs -o with one %d, %4d or %04d for the frame number (e.g. -o frame-%04d.png)");
+        return 2;
+    }
     int streaming = display && !strcmp(script, "-");
     FILE *in = streaming ? NULL : strcmp(script, "-") ? open_input(script, 1) : stdin;
     if (!in && !streaming) {
@@ -577,6 +623,37 @@ int main(int argc, char **argv)
         return 1;
     }
     static fx_scene sc;
+    int status = 0;
+    /* --frames: the whole script once per frame, from a fresh scene, with
+     * the clock at k / fps; each picture to its own file */
+    for (int k = 0; k < frames && !status; k++) {
+        fx_scene_init(&sc, &hs, arena, arena_size);
+        sc.raytrace = host_raytrace;
+        if (w)
+            fx_scene_fix_size(&sc, w, h);
+        if (fmt != FX_FMT_COUNT)
+            fx_scene_fix_format(&sc, fmt);
+        fx_scene_set_clock(&sc, fx16_from_ratio(k, fps));
+        if (run_lines(&sc, (const char *)text, len, &H, 0) < 0) {
+            fprintf(stderr, "%s:%d:%d: %s (frame %d)\n", strcmp(script, "-") ? script : "<stdin>", sc.err_line,
+                    sc.err_col, sc.err, k);
+            status = 1;
+        } else {
+            char name[4096];
+            if (snprintf(name, sizeof name, out, k) >= (int)sizeof name) {
+                fprintf(stderr, "fixel-draw: output name too long\n");
+                status = 2;
+            } else if ((r = fx_write_image(name, &H.fb.surf)) < 0) {
+                fprintf(stderr, "fixel-draw: cannot write %s: %s\n", name, strerror(-r));
+                status = 3;
+            }
+        }
+        if (H.have_fb)
+            fx_memfb_destroy(&H.fb);
+        H.have_fb = 0;
+    }
+    if (frames)
+        goto done;
     fx_scene_init(&sc, &hs, arena, arena_size);
     sc.raytrace = host_raytrace;
     if (w)
@@ -584,7 +661,6 @@ int main(int argc, char **argv)
     if (fmt != FX_FMT_COUNT)
         fx_scene_fix_format(&sc, fmt);
     r = streaming ? run_stream(&sc, &H) : run_lines(&sc, (const char *)text, len, &H, display);
-    int status = 0;
     if (r < 0) {
         fprintf(stderr, "%s:%d:%d: %s\n", strcmp(script, "-") ? script : "<stdin>", sc.err_line,
                 sc.err_col, sc.err);
@@ -606,6 +682,7 @@ int main(int argc, char **argv)
             status = 3;
         }
     }
+done:
     if (g_app)
         fx_app_close(g_app);
     if (H.have_fb)

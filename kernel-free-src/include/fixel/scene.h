@@ -69,6 +69,7 @@ enum {
     FX_SCENE_MOD_RT,
     FX_SCENE_MOD_VSD,
     FX_SCENE_MOD_OBJECTS,
+    FX_SCENE_MOD_ANIM,
     FX_SCENE_MOD_COUNT
 };
 
@@ -118,6 +119,15 @@ int fx_scene_run(fx_scene *sc, const char *text, size_t len);
 int fx_scene_exec_line(fx_scene *sc, const char *line, size_t len, int lineno);
 /* Make sure the surface exists (commands flagged FX_SCENE_DRAWS get it for free). */
 int fx_scene_surface(fx_scene *sc);
+/* After the last line of a script run line by line (fx_scene_run does it):
+ * 0, or the error of a block left open ('blur' without 'endblur'). */
+int fx_scene_end_script(fx_scene *sc);
+/* The animation clock (Q16.16 seconds) the script's tracks, morphs and
+ * balls are drawn at: a host rendering frame k at F frames a second sets
+ * k / F before running the script, and the script's 'time' lines are then
+ * ignored (as 'size' is after fx_scene_fix_size). 0, or -FX_ENOMEM when the
+ * arena cannot hold the animation state. */
+int fx_scene_set_clock(fx_scene *sc, fx16 t);
 
 /* ---- for command implementations ---- */
 /* Record an error at the current token and return -FX_EINVAL. */

@@ -1,0 +1,93 @@
+/* SPDX-License-Identifier: MIT */
+/* fixel-demo's camera flight (tools/fixel-demo/page_anim.c): keys recorded
+ * with 'k' go to the --flight file, a fresh page loads the same keys from
+ * it, and 'g' flies the camera through them, on each recorded view exactly
+ * at its key time (1.5 s apart, 45 frames at 30 a second) and resting on the
+ * last one. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "fx_test.h"
+#include "../../tools/fixel-demo/page_anim.c"
+
+/* page_anim.c's only call into the rest of the demo */
+void demo_text(const fx_ctx *c, int32_t x, int32_t y, fx_color col, const char *fmt, ...)
+{
+    (void)c, (void)x, (void)y, (void)col, (void)fmt;
+}
+
+static void press(demo_state *st, const char *keys)
+{
+    for (; *keys; keys++)
+        FX_CHECK(demo_anim_key(st, *keys));
+}
+
+static int eye_is(const demo_state *st, const fx_anim_key *k)
+{
+    return st->acam.eye.x == k->v[0] && st->acam.eye.y == k->v[1] && st->acam.eye.z == k->v[2];
+}
+
+FX_TEST(demo_flight_records_to_its_file_and_plays_back)
+{
+    char path[] = "/tmp/fixel-flight-XXXXXX";
+    int fd = mkstemp(path);
+    FX_CHECK(fd >= 0);
+    close(fd);
+    unlink(path); /* a new file: the flight starts empty */
+    static demo_state st, st2;
+    memset(&st, 0, sizeof st);
+    st.interactive = 1;
+    demo_anim_set_file(path);
+    demo_anim_init(&st);
+    FX_CHECK_EQ(st.nflight, 0);
+    press(&st, "kffyykhhYuk");
+    FX_CHECK_EQ(st.nflight, 3);
+    FX_CHECK(!eye_is(&st, &st.flight[0]) || !eye_is(&st, &st.flight[1]));
+    FILE *f = fopen(path, "r");
+    int lines = 0, ch;
+    while (f && (ch = fgetc(f)) != EOF)
+        lines += ch == '\n';
+    if (f)
+        fclose(f);
+    FX_CHECK_EQ(lines, 3);
+
+    memset(&st2, 0, sizeof st2);
+    st2.interactive = 1;
+    demo_anim_init(&st2); /* played back from the file */
+    FX_CHECK_EQ(st2.nflight, 3);
+    FX_CHECK(!memcmp(st2.flight, st.flight, 3 * sizeof st.flight[0]));
+
+    uint32_t *px = calloc(800 * 480, 4);
+    fx_surface s;
+    fx_surface_init(&s, px, 800, 480, 800 * 4, FX_FMT_XRGB8888);
+    fx_ctx c;
+    fx_ctx_init(&c, &s);
+    st2.frame = 100;
+    press(&st2, "g");
+    FX_CHECK(st2.flying);
+    int at_key[3] = {0, 0, 0}, moved = 0;
+    fx_vec3 prev = st2.acam.eye;
+    for (int f2 = 0; f2 <= 95; f2 += 5) {
+        st2.frame = 100 + (uint32_t)f2;
+        demo_anim_page(&c, &st2, DEMO_TAB_H + 8);
+        for (int k = 0; k < 3; k++)
+            if (f2 == 45 * k) {
+                at_key[k] = eye_is(&st2, &st2.flight[k]);
+                FX_CHECK_MSG(at_key[k], "frame %d: the camera is not on key %d", f2, k);
+            }
+        moved += memcmp(&prev, &st2.acam.eye, sizeof prev) != 0;
+        prev = st2.acam.eye;
+    }
+    FX_CHECK(moved >= 10);
+    FX_CHECK(!st2.flying); /* arrived */
+    FX_CHECK(eye_is(&st2, &st2.flight[2]));
+    /* the look-at point recorded is where the camera looks on arrival */
+    FX_CHECK(st2.acam.n.x || st2.acam.n.y || st2.acam.n.z);
+    press(&st2, "x");
+    FX_CHECK_EQ(st2.nflight, 0);
+    free(px);
+    unlink(path);
+    demo_anim_set_file(NULL);
+}
