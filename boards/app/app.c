@@ -587,12 +587,17 @@ int fx_app_main_loop(fx_app *a)
         uint64_t next = run_timers(a);
         if (a->quit)
             break;
-        if (a->redisplay && !fx_display_flip_pending(a->disp) && a->cb.display) {
+        /* An animated page whose frame outlasts its tick always has a frame
+         * due; the replay, which runs when none is, would never run again.
+         * So once a frame has been drawn the replay gets its turn before
+         * the next one, and frames and replay statements alternate. */
+        if (a->redisplay && !fx_display_flip_pending(a->disp) && a->cb.display && !a->replay_owed) {
             a->redisplay = 0;
             a->cb.display(a->user);
             int f = fx_app_frame_done(a);
             if (f < 0)
                 return f;
+            a->replay_owed = a->replay != NULL;
             continue; /* timers or input may have become due meanwhile */
         }
         int x = draw_extra(a);
@@ -604,6 +609,7 @@ int fx_app_main_loop(fx_app *a)
             /* The replay runs when no frame is due: "frame" lets the
              * program draw what the statements before it asked for. */
             uint64_t resume;
+            a->replay_owed = 0;
             int s = fx_replay_step(a, now_us(), &resume);
             if (s < 0)
                 return s;

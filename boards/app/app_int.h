@@ -68,6 +68,8 @@ struct fx_app {
     } timers[FX_APP_MAX_TIMERS];
 
     int redisplay, quit, started;
+    /* a frame was drawn since the replay's last turn (see the main loop) */
+    int replay_owed;
 
     /* Displays added with fx_app_add_display: each drawn by its own
      * callback when it asked for a frame and has no flip pending. */

@@ -66,6 +66,37 @@ run 0 unbound FIXEL_REPLAY="$W/taps.txt" FIXEL_OUT="$W/unbound.png" "$D" --displ
 run 1 badbind FIXEL_INPUT_BIND="no equals sign" FIXEL_REPLAY="$W/one.txt" "$D" --display =lines &&
     { grep -q "FIXEL_INPUT_BIND\|DEVICE=DISPLAY" "$W/badbind.err" && ok || bad "badbind: $(cat "$W/badbind.err")"; }
 
+# A replay on an animated page: the Animation page redraws every tick, and
+# on a loaded machine a frame is always due; the replay must still advance
+# (it used to wait for an idle moment that never came, and the run hung).
+# 'k' records the camera as a flight key, 'f' moves it forward, 'k' again:
+# the flight file gets two different keys and the end of the file ends the run.
+# (tests/boards/test_replay_anim.c makes the always-due case certain.)
+cat > "$W/flight.txt" <<'X'
+device 0 keyboard
+frame
+ev 0 KEY KEY_K 1
+syn 0
+ev 0 KEY KEY_K 0
+syn 0
+frame
+ev 0 KEY KEY_F 1
+syn 0
+ev 0 KEY KEY_F 0
+syn 0
+frame
+ev 0 KEY KEY_K 1
+syn 0
+ev 0 KEY KEY_K 0
+syn 0
+frame
+frame
+X
+rm -f "$W/keys.txt"
+run 0 animreplay FIXEL_REPLAY="$W/flight.txt" FIXEL_OUT="$W/anim.png" timeout -k 5 120 "$D" --display =anim --flight "$W/keys.txt" &&
+    { [ "$(wc -l < "$W/keys.txt")" = 2 ] && [ "$(sed -n 1p "$W/keys.txt" | cut -d' ' -f2-)" != "$(sed -n 2p "$W/keys.txt" | cut -d' ' -f2-)" ] &&
+          ok || bad "animreplay: flight keys: $(cat "$W/keys.txt")"; }
+
 # Refused arguments.
 run 2 noeq "$D" --display lines
 grep -q "OUTPUT=PAGE" "$W/noeq.err" && ok || bad "noeq message: $(cat "$W/noeq.err")"
