@@ -71,4 +71,4 @@ $(BENCH_API_INC)/.stamp: $(BENCH_API_HDRS)
 TOOL_SRC_fixel-bench += tools/fixel-bench/api/peer_fixel_api.c
 $(BUILD)/obj/tools/fixel-bench/api/peer_fixel_api.o: tools/fixel-bench/api/peer_fixel_api.c $(BENCH_API_INC)/.stamp
 	@mkdir -p $(dir $@)
-	$(CC) -std=c11 -O2 -I$(BENCH_API_INC) -Itools/fixel-bench -c $< -o $@
+	$(CC) -std=c11 -O2 -I$(BENCH_API_INC) -c $< -o $@

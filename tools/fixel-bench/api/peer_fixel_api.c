@@ -7,7 +7,7 @@
  * primitive, fx_ctx_set_color before each. It is the "fixel-api" column;
  * the "fixel" column (peer_fixel.c) is built with the project's flags.
  * The harness side (struct peer, the workload arrays) is plain C in bench.h. */
-#include "bench.h"
+#include "../bench.h"
 
 #include <fixel/circle.h>
 #include <fixel/draw.h>

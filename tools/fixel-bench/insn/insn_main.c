@@ -3,7 +3,7 @@
  * fixel-bench's fixel peer, between two marker calls, so that an
  * instruction counter can count exactly that drawing: callgrind
  * (--toggle-collect=insn_region) on x86-64, or qemu-user's exec trace
- * (tools/fixel-insn/qemu-count.c counts between insn_begin and insn_end) for
+ * (tools/fixel-bench/insn/qemu-count.c counts between insn_begin and insn_end) for
  * the Pi targets. Instruction counts do not depend on a loaded machine, so
  * `make bench-insn` shows per-primitive costs that timing on a shared box
  * cannot. It is a plain program (no peer libraries), so it cross-builds.
@@ -11,7 +11,7 @@
  *   fixel-insn -w W3 -f xrgb8888 [-n N]     draw the first N primitives (all)
  *   fixel-insn --list                       the workloads, one "name N" a line
  */
-#include "../fixel-bench/bench.h"
+#include "../bench.h"
 
 #include <stdlib.h>
 #include <string.h>

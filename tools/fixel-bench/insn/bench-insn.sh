@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 # `make bench-insn`: instructions per primitive of the workloads of
 # docs/BENCHMARK.md, x86-64 (callgrind, counting only insn_region) next to
-# aarch64 (the rpi4 build under qemu-aarch64-static; tools/fixel-insn/qemu/
+# aarch64 (the rpi4 build under qemu-aarch64-static; tools/fixel-bench/insn/
 # qemu-count.c sums the exec trace between the markers). Counts do not
 # depend on the machine's load, so they show a change where a shared box's
 # timings cannot.
@@ -12,7 +12,7 @@
 # architectures: per-primitive averages of the same primitives); W9 (1.7 G
 # instructions, a trace of ~10^8 lines) is counted on x86-64 only unless
 # INSN_W9_ARM=1.
-#   sh tools/fixel-insn/bench-insn.sh HOSTBIN ARMBIN COUNTER [OUT]
+#   sh tools/fixel-bench/insn/bench-insn.sh HOSTBIN ARMBIN COUNTER [OUT]
 host=$1; arm=$2; counter=$3; out=${4:-/dev/stdout}
 prefix() { # workload -> primitives counted
     case $1 in
