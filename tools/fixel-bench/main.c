@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 const struct workloads *WL;
@@ -223,7 +224,7 @@ static const struct peer *PEERS[] = {
 /* ---- options -------------------------------------------------------------- */
 
 static double opt_F = 1.0, opt_S = 0.25, opt_m = 0.2, opt_cal = 0.020;
-static int opt_t = 7, opt_peers, opt_check, opt_quiet, opt_x, opt_noextras;
+static int opt_huge, opt_t = 7, opt_peers, opt_check, opt_quiet, opt_x, opt_noextras;
 static const char *opt_w, *opt_p, *opt_f, *opt_md;
 
 static int listed(const char *list, const char *name)
@@ -795,12 +796,13 @@ static void usage_to(FILE *f, int status)
     fprintf(f,
             "usage: fixel-bench [--peers] [--check] [-w W2,W3..] [-p fixel,cairo..] [-f xrgb8888|rgb565]\n"
             "                   [-t trials] [-m min_trial_s] [-F full_limit_s] [-S prefix_target_s]\n"
-            "                   [-o table.txt] [-q] [-x] [--no-extras]\n"
+            "                   [-o table.txt] [-q] [-x] [--no-extras] [--hugepages]\n"
             "  default: fixel with the libc and ref ceilings; --peers adds cairo, pixman, sdl2, sdlgfx\n"
             "  -q: no progress on stderr; -x: skip the reference-picture comparison (TABLE 3)\n"
             "  TABLE 4 (presentation, teapot, deep zoom, idle loop) runs unless --no-extras;\n"
             "  -w present,teapot,deepzoom,idle picks parts of it; TABLE 5 (raytrace) likewise;\n"
             "  TABLE 6 (visible-surface methods at two scene sizes) runs with it, or alone with -w vsd\n"
+            "  --hugepages: the destination and W10 sources in 2 MB pages (madvise), the TLB experiment\n"
             "  --check: verify nominal counts, checksums and W9 agreement only, then exit\n");
     exit(status);
 }
@@ -818,6 +820,8 @@ int main(int argc, char **argv)
             opt_peers = 1;
         else if (!strcmp(a, "--check"))
             opt_check = 1;
+        else if (!strcmp(a, "--hugepages"))
+            opt_huge = 1;
         else if (!strcmp(a, "-x"))
             opt_x = 1;
         else if (!strcmp(a, "-q"))
@@ -854,7 +858,23 @@ int main(int argc, char **argv)
     struct workloads *w = calloc(1, sizeof *w);
     bench_generate(w);
     WL = w;
-    BUF = xalloc64(BUFSZ);
+    if (opt_huge) {
+        /* 2 MB pages for the destination and the W10 sources (THP in
+         * madvise mode): the TLB experiment of docs/PERFORMANCE.md */
+        size_t hp = (size_t)2 << 20, sz = (BUFSZ + hp - 1) & ~(hp - 1);
+        BUF = aligned_alloc(hp, sz);
+        if (!BUF || madvise(BUF, sz, MADV_HUGEPAGE) != 0)
+            fprintf(stderr, "fixel-bench: --hugepages: madvise failed\n");
+        for (int f = 0; f < FMT_COUNT; f++) {
+            void *q = aligned_alloc(hp, sz);
+            if (q && madvise(q, sz, MADV_HUGEPAGE) == 0) {
+                memcpy(q, w->blit_src[f], (size_t)BW * BH * BPP[f]);
+                w->blit_src[f] = q;
+            }
+        }
+    } else {
+        BUF = xalloc64(BUFSZ);
+    }
     compute_nominal();
     verify();
     if (!opt_x)
