@@ -69,6 +69,6 @@ $(BENCH_API_INC)/.stamp: $(BENCH_API_HDRS)
 	cp $(BENCH_API_HDRS) $(BENCH_API_INC)/fixel/
 	@touch $@
 TOOL_SRC_fixel-bench += tools/fixel-bench/api/peer_fixel_api.c
-$(BUILD)/obj/tools/fixel-bench/api/peer_fixel_api.o: tools/fixel-bench/api/peer_fixel_api.c $(BENCH_API_INC)/.stamp
+$(BUILD)/obj/tools/fixel-bench/api/peer_fixel_api.o: tools/fixel-bench/api/peer_fixel_api.c tools/fixel-bench/bench.h $(BENCH_API_INC)/.stamp
 	@mkdir -p $(dir $@)
 	$(CC) -std=c11 -O2 -I$(BENCH_API_INC) -c $< -o $@
