@@ -178,6 +178,7 @@ void fx_rect_fill_avx512(uint8_t *row, size_t nb, int32_t h, ptrdiff_t stride, u
  * touched) ran as fast as SDL2's streaming and 1.1-1.4x memcpy. */
 #define FX_STREAM_MIN_BYTES (6u << 20)
 void fx_stream_fill(uint8_t *p, size_t n, uint64_t pattern);
+void fx_stream_fill_avx(uint8_t *p, size_t n, uint64_t pattern);
 void fx_stream_copy(uint8_t *d, const uint8_t *s, size_t n);
 
 #endif

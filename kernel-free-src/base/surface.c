@@ -297,7 +297,8 @@ void fx_rect_fill_native(const fx_surface *s, fx_rect r, uint32_t v)
     if (h == 1 && (bpp == 32 || bpp == 16) && (size_t)w * (size_t)bpp / 8 >= FX_STREAM_MIN_BYTES &&
         !((uintptr_t)row & (size_t)(bpp / 8 - 1))) {
         uint64_t pat = bpp == 32 ? (v & 0xFFFFFFFFull) * 0x100000001ull : (v & 0xFFFF) * 0x0001000100010001ull;
-        fx_stream_fill(row + (size_t)r.x0 * (size_t)(bpp / 8), (size_t)w * (size_t)(bpp / 8), pat);
+        (s->fill_isa ? fx_stream_fill_avx : fx_stream_fill)(row + (size_t)r.x0 * (size_t)(bpp / 8),
+                                                           (size_t)w * (size_t)(bpp / 8), pat);
         return;
     }
     /* Runs long enough for rep stosq (a clear) stay with fx_run32/16. */
