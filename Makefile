@@ -386,6 +386,7 @@ help:
 	@echo '  valgrind             unit, golden and tool suites under memcheck (slow)'
 	@echo '  fuzz                 each libFuzzer target for FUZZ_SECONDS'
 	@echo '  bench, bench-peers   the benchmark table (docs/BENCHMARK.md)'
+	@echo '  bench-insn           instructions per primitive, x86-64 and aarch64 (docs/PERFORMANCE.md)'
 	@echo '  golden-update        re-render every golden set (then look at git status)'
 	@echo '  kiosk-soak           the long constant-memory run of fixel-kiosk'
 	@echo '  deps                 install the Debian packages the build needs (root)'

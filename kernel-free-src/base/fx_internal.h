@@ -168,5 +168,17 @@ uint8_t fx_x86_fill_level(void);
  * 16-bit one twice). */
 void fx_rect_fill_avx(uint8_t *row, size_t nb, int32_t h, ptrdiff_t stride, uint32_t p);
 void fx_rect_fill_avx512(uint8_t *row, size_t nb, int32_t h, ptrdiff_t stride, uint32_t p);
+/* Whole frames with streaming stores (surface_x86.c): fill n bytes at the
+ * pixel-aligned p with the 8-byte pattern of whole pixels; copy n bytes
+ * between blocks that do not overlap. The same bytes as the cached paths.
+ * Taken when the bytes an operation touches (a fill n, a copy 2n) reach
+ * FX_STREAM_MIN_BYTES: measured interleaved on a shared 2-core Zen 3 (32 MB
+ * L3), a 4 MB RGB565 clear was 0.5-0.6x as fast streamed as cached (it stays
+ * in the L3), while the 8 MB XRGB8888 clear and both blits (8 and 16 MB
+ * touched) ran as fast as SDL2's streaming and 1.1-1.4x memcpy. */
+#define FX_STREAM_MIN_BYTES (6u << 20)
+void fx_stream_fill(uint8_t *p, size_t n, uint64_t pattern);
+void fx_stream_fill_avx(uint8_t *p, size_t n, uint64_t pattern);
+void fx_stream_copy(uint8_t *d, const uint8_t *s, size_t n);
 
 #endif

@@ -294,6 +294,13 @@ void fx_rect_fill_native(const fx_surface *s, fx_rect r, uint32_t v)
     /* The format is chosen once per rectangle; rows advance by the stride. */
     uint8_t *row = fx_row(s, r.y0);
 #if FX_X86_FILL
+    if (h == 1 && (bpp == 32 || bpp == 16) && (size_t)w * (size_t)bpp / 8 >= FX_STREAM_MIN_BYTES &&
+        !((uintptr_t)row & (size_t)(bpp / 8 - 1))) {
+        uint64_t pat = bpp == 32 ? (v & 0xFFFFFFFFull) * 0x100000001ull : (v & 0xFFFF) * 0x0001000100010001ull;
+        (s->fill_isa ? fx_stream_fill_avx : fx_stream_fill)(row + (size_t)r.x0 * (size_t)(bpp / 8),
+                                                           (size_t)w * (size_t)(bpp / 8), pat);
+        return;
+    }
     /* Runs long enough for rep stosq (a clear) stay with fx_run32/16. */
     if (s->fill_isa && (bpp == 32 || bpp == 16) && (size_t)w * (size_t)bpp / 8 < FX_STOS_MIN_BYTES) {
         size_t bytes = (size_t)bpp / 8;
@@ -356,7 +363,16 @@ void fx_blit(const fx_surface *dst, int32_t dx, int32_t dy, const fx_surface *sr
          * runs at libc's full-buffer speed (and keeps the overlap rule)
          * instead of paying its per-call set-up on every row. */
         if (dst->stride == (int64_t)bytes && src->stride == (int64_t)bytes) {
-            fx_memmove(fx_row(dst, r.y0) + off_d, s_first + off_s, bytes * (size_t)h);
+            uint8_t *d = fx_row(dst, r.y0) + off_d;
+            const uint8_t *sp = s_first + off_s;
+            size_t n = bytes * (size_t)h;
+#if FX_X86_FILL
+            if (2 * n >= FX_STREAM_MIN_BYTES && (d + n <= sp || sp + n <= d)) {
+                fx_stream_copy(d, sp, n);
+                return;
+            }
+#endif
+            fx_memmove(d, sp, n);
             return;
         }
         for (int32_t i = 0; i < h; i++) {

@@ -304,3 +304,86 @@ FX_TEST(unpadded_blits_match_padded_ones_and_scroll_both_ways)
         }
     }
 }
+
+/* Frames whose fill or copy touches 6 MiB or more take streaming stores on
+ * x86-64 (fx_internal.h FX_STREAM_MIN_BYTES): a clear of such a frame and a
+ * blit of one, at every pixel alignment of the start within 16 bytes and
+ * with lengths that leave a head, whole 64-byte blocks, 16-byte blocks and a
+ * tail, write exactly their pixels and nothing around them; the overlapping
+ * scroll of a frame this size still copies right (memmove, never streamed). */
+FX_TEST(frame_sized_clears_and_blits_write_exactly_their_pixels)
+{
+    enum { GUARD = 64, MAXB = (7 << 20) + 4096 };
+    static const fx_format fmts[] = {FX_FMT_XRGB8888, FX_FMT_RGB565};
+    uint8_t *mem = malloc(MAXB + 2 * GUARD), *src = malloc(MAXB);
+    FX_CHECK(mem && src);
+    if (!mem || !src) {
+        free(mem);
+        free(src);
+        return;
+    }
+    uint32_t seed = 9;
+    for (size_t i = 0; i < MAXB; i++)
+        src[i] = (uint8_t)fx_test_rand(&seed);
+    for (size_t f = 0; f < 2; f++) {
+        int bytes = fx_format_get(fmts[f])->bits_per_pixel / 8;
+        uint32_t v = fmts[f] == FX_FMT_RGB565 ? 0xA5C3u : 0x12345678u;
+        /* width 1000: 4000- and 2000-byte rows; the heights make blocks over
+         * 6 MiB (a fill) or 3 MiB (a copy) with tails of 16n + 2k bytes */
+        const int32_t W = 1000, hs[] = {1601, 1799, 3147, 3600};
+        for (int off = 0; off < 16 / bytes; off++)
+            for (size_t k = 0; k < sizeof hs / sizeof hs[0]; k++) {
+                int32_t H = hs[k] / (bytes == 4 ? 2 : 1) + (int32_t)k, w = W + (int32_t)k * 3;
+                size_t n = (size_t)w * (size_t)H * (size_t)bytes;
+                if (n + (size_t)off * (size_t)bytes > MAXB)
+                    continue;
+                uint8_t *p = mem + GUARD + off * bytes;
+                fx_surface s, t;
+                /* pass 1: the portable choice of a surface built field by
+                 * field (fill_isa 0: the 16-byte streaming loop on x86-64) */
+                for (int pass = 0; pass < 2; pass++) {
+                memset(mem, 0xEE, MAXB + 2 * GUARD);
+                FX_CHECK_EQ(fx_surface_init(&s, p, w, H, w * bytes, fmts[f]), 0);
+                if (pass)
+                    s.fill_isa = 0;
+                fx_surface_fill(&s, fx_surface_rect(&s), fmts[f] == FX_FMT_RGB565 ? fx_unpack(fmts[f], v) : 0xFF000000u | v);
+                size_t bad = 0;
+                for (size_t i = 0; i < n && !bad; i += (size_t)bytes) {
+                    uint32_t got = bytes == 4 ? (uint32_t)p[i] | (uint32_t)p[i + 1] << 8 |
+                                                    (uint32_t)p[i + 2] << 16 | (uint32_t)p[i + 3] << 24
+                                              : (uint32_t)p[i] | (uint32_t)p[i + 1] << 8;
+                    if ((got & (bytes == 4 ? 0xFFFFFFu : 0xFFFFu)) != (v & (bytes == 4 ? 0xFFFFFFu : 0xFFFFu)))
+                        bad = i + 1;
+                }
+                FX_CHECK_MSG(!bad, "%s fill %dx%d at +%d (pass %d): byte %zu", fx_format_get(fmts[f])->name, w, H, off, pass,
+                             bad - 1);
+                for (int i = 0; i < GUARD + off * bytes; i++)
+                    FX_CHECK_EQ(mem[i], 0xEE);
+                for (int i = 0; i < GUARD; i++)
+                    FX_CHECK_EQ(p[n + (size_t)i], 0xEE);
+                }
+                /* the blit, the source at another alignment */
+                memset(mem, 0xEE, MAXB + 2 * GUARD);
+                FX_CHECK_EQ(fx_surface_init(&t, src + (size_t)(k & 1) * (size_t)bytes, w, H, w * bytes, fmts[f]), 0);
+                fx_blit(&s, 0, 0, &t);
+                FX_CHECK_MSG(!memcmp(p, t.pixels, n), "%s blit %dx%d at +%d", fx_format_get(fmts[f])->name, w, H, off);
+                for (int i = 0; i < GUARD + off * bytes; i++)
+                    FX_CHECK_EQ(mem[i], 0xEE);
+                for (int i = 0; i < GUARD; i++)
+                    FX_CHECK_EQ(p[n + (size_t)i], 0xEE);
+            }
+    }
+    /* a 7 MB frame scrolled down by one row within itself */
+    {
+        int32_t w = 1000, H = 1800;
+        size_t n = (size_t)w * (size_t)H * 4;
+        memcpy(mem, src, n);
+        fx_surface s;
+        fx_surface_init(&s, mem, w, H, w * 4, FX_FMT_XRGB8888);
+        fx_surface rows = fx_surface_sub(s, (fx_rect){0, 0, w, H - 1});
+        fx_blit(&s, 0, 1, &rows);
+        FX_CHECK(!memcmp(mem + (size_t)w * 4, src, n - (size_t)w * 4));
+    }
+    free(mem);
+    free(src);
+}

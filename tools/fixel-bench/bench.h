@@ -62,6 +62,10 @@ struct workloads {
 
 /* Generated once before anything is timed; read-only afterwards. */
 extern const struct workloads *WL;
+/* gen.c: fills w by section 2 (and the W10 sources); bench_alloc64 exits
+ * the program when memory runs out. */
+void bench_generate(struct workloads *w);
+void *bench_alloc64(size_t n);
 
 /* The destination every peer draws into for the current format. */
 struct target {
@@ -84,7 +88,7 @@ struct peer {
     draw_fn fn[W_COUNT];
 };
 
-extern const struct peer peer_fixel, peer_fixel_mt, peer_libc, peer_ref, peer_ref_native;
+extern const struct peer peer_fixel, peer_fixel_api, peer_fixel_mt, peer_libc, peer_ref, peer_ref_native;
 #ifdef BENCH_PEERS
 extern const struct peer peer_cairo, peer_pixman, peer_sdl2, peer_sdlgfx;
 #endif

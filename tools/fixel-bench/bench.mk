@@ -57,3 +57,18 @@ TEST_SUITES += "$(BUILD)/bin/fixel-bench --check"
 # The workload frames (workloads.c) are benchmark code, not library API; the
 # unit tests that check them (tests/core/test_3d.c, test_fractal.c) link them in.
 TEST_OBJ += $(BUILD)/obj/tools/fixel-bench/workloads.o
+
+# The fixel-api peer (tools/fixel-bench/api/): a user's program. Its object
+# is compiled against the headers copied as `make install` lays them out and
+# with a user's flags only (-O2, no -march, no -fPIC, none of the project's
+# CFLAGS), then linked with the rest of fixel-bench to libfixel.a.
+BENCH_API_INC := $(BUILD)/api-include
+BENCH_API_HDRS := $(wildcard kernel-free-src/include/fixel/*.h boards/include/fixel/*.h)
+$(BENCH_API_INC)/.stamp: $(BENCH_API_HDRS)
+	@rm -rf $(BENCH_API_INC) && mkdir -p $(BENCH_API_INC)/fixel
+	cp $(BENCH_API_HDRS) $(BENCH_API_INC)/fixel/
+	@touch $@
+TOOL_SRC_fixel-bench += tools/fixel-bench/api/peer_fixel_api.c
+$(BUILD)/obj/tools/fixel-bench/api/peer_fixel_api.o: tools/fixel-bench/api/peer_fixel_api.c tools/fixel-bench/bench.h $(BENCH_API_INC)/.stamp
+	@mkdir -p $(dir $@)
+	$(CC) -std=c11 -O2 -I$(BENCH_API_INC) -c $< -o $@

@@ -20,97 +20,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 const struct workloads *WL;
 
-/* ---- generation (section 2) --------------------------------------------- */
-
-static inline uint32_t xorshift32(uint32_t *s)
-{
-    uint32_t x = *s;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    return *s = x;
-}
-static inline int rnd(uint32_t *s, uint32_t n) { return (int)(xorshift32(s) % n); }
-
-static void generate(struct workloads *w)
-{
-    uint32_t s = 12345;
-    for (int i = 0; i < N_RECTS; i++) {
-        struct wl_rect *r = &w->rects[i];
-        r->x = rnd(&s, 1920);
-        r->y = rnd(&s, 1080);
-        r->w = 1 + rnd(&s, 128);
-        r->h = 1 + rnd(&s, 128);
-        r->c = xorshift32(&s) & 0xFFFFFF;
-    }
-    s = 12345;
-    for (int i = 0; i < N_LINES; i++) {
-        struct wl_line *l = &w->lines[i];
-        l->x0 = rnd(&s, 1920);
-        l->y0 = rnd(&s, 1080);
-        l->x1 = rnd(&s, 1920);
-        l->y1 = rnd(&s, 1080);
-        l->c = xorshift32(&s) & 0xFFFFFF;
-    }
-    s = 12345;
-    for (int i = 0; i < N_CIRCLES; i++) {
-        struct wl_circle *c = &w->circles[i];
-        c->cx = rnd(&s, 1920);
-        c->cy = rnd(&s, 1080);
-        c->r = 1 + rnd(&s, 200);
-        c->c = xorshift32(&s) & 0xFFFFFF;
-    }
-    s = 12345;
-    for (int i = 0; i < N_POLYS; i++) {
-        struct wl_poly *p = &w->polys[i];
-        int bx = rnd(&s, 1620), by = rnd(&s, 780);
-        for (int k = 0; k < POLY_N; k++) {
-            p->x[k] = bx + rnd(&s, 300);
-            p->y[k] = by + rnd(&s, 300);
-        }
-        p->c = xorshift32(&s) & 0xFFFFFF;
-    }
-    s = 12345;
-    for (int i = 0; i < N_TRIS; i++) {
-        struct wl_tri *t = &w->tris[i];
-        int bx = rnd(&s, 1820), by = rnd(&s, 980);
-        for (int k = 0; k < 3; k++) {
-            t->x[k] = bx + rnd(&s, 100);
-            t->y[k] = by + rnd(&s, 100);
-        }
-        for (int k = 0; k < 3; k++)
-            t->c[k] = xorshift32(&s) & 0xFFFFFF;
-    }
-}
-
-static void *xalloc64(size_t n)
-{
-    void *p = aligned_alloc(64, (n + 63) & ~(size_t)63);
-    if (!p) {
-        fprintf(stderr, "fixel-bench: out of memory\n");
-        exit(2);
-    }
-    return p;
-}
-
-static void make_blit_sources(struct workloads *w)
-{
-    uint32_t *x = xalloc64((size_t)BW * BH * 4);
-    uint16_t *r = xalloc64((size_t)BW * BH * 2);
-    for (int y = 0; y < BH; y++)
-        for (int i = 0; i < BW; i++) {
-            uint32_t c = (uint32_t)((i ^ y) & 0xFF) << 16 | (uint32_t)(i * 255 / 1920) << 8 |
-                         (uint32_t)(y * 255 / 1080);
-            x[(size_t)y * BW + i] = c;
-            r[(size_t)y * BW + i] = (uint16_t)pack565(c);
-        }
-    w->blit_src[FMT_XRGB8888] = x;
-    w->blit_src[FMT_RGB565] = r;
-}
+#define xalloc64 bench_alloc64
 
 /* ---- nominal pixel counts (section 3) ------------------------------------ */
 
@@ -299,7 +214,7 @@ static const uint64_t expected_sum[W_COUNT][FMT_COUNT] = {
 /* ---- peers ---------------------------------------------------------------- */
 
 static const struct peer *PEERS[] = {
-    &peer_fixel, &peer_fixel_mt, &peer_libc, &peer_ref, &peer_ref_native,
+    &peer_fixel, &peer_fixel_api, &peer_fixel_mt, &peer_libc, &peer_ref, &peer_ref_native,
 #ifdef BENCH_PEERS
     &peer_cairo, &peer_pixman, &peer_sdl2, &peer_sdlgfx,
 #endif
@@ -309,7 +224,7 @@ static const struct peer *PEERS[] = {
 /* ---- options -------------------------------------------------------------- */
 
 static double opt_F = 1.0, opt_S = 0.25, opt_m = 0.2, opt_cal = 0.020;
-static int opt_t = 7, opt_peers, opt_check, opt_quiet, opt_x, opt_noextras;
+static int opt_huge, opt_t = 7, opt_peers, opt_check, opt_quiet, opt_x, opt_noextras;
 static const char *opt_w, *opt_p, *opt_f, *opt_md;
 
 static int listed(const char *list, const char *name)
@@ -337,7 +252,7 @@ static int peer_enabled(const struct peer *p)
     if (opt_p)
         return listed(opt_p, p->name);
     if (!opt_peers)
-        return p == &peer_fixel || p == &peer_fixel_mt || p == &peer_libc || p == &peer_ref;
+        return p == &peer_fixel || p == &peer_fixel_api || p == &peer_fixel_mt || p == &peer_libc || p == &peer_ref;
     return 1;
 }
 
@@ -615,7 +530,7 @@ static void compare_with_reference(void)
                 if (!peer_enabled(p) || !p->fn[w] || !(p->fmt_mask & (1u << f)))
                     continue;
                 /* in --check only fixel: the libraries' edge rules are known */
-                if (opt_check && p != &peer_fixel)
+                if (opt_check && p != &peer_fixel && p != &peer_fixel_api)
                     continue;
                 tg.pixels = BUF;
                 memset(BUF, 0, BUFSZ);
@@ -631,8 +546,8 @@ static void compare_with_reference(void)
                  * for circles, discs, polygons and triangles (docs/CONVENTIONS.md, fill.h,
                  * circle.h), so there a difference is a failure; for lines the
                  * tie rule is fixel's own and the count is information. */
-                if (p == &peer_fixel && w != W3_LINES)
-                    report(DIFFS[w][f][i] == 0, 0, "fixel %s.%s: %" PRId64 " px differ from the reference picture",
+                if ((p == &peer_fixel || p == &peer_fixel_api) && w != W3_LINES)
+                    report(DIFFS[w][f][i] == 0, 0, "%s %s.%s: %" PRId64 " px differ from the reference picture", p->name,
                            WD[w].name, FMT_NAME[f], DIFFS[w][f][i]);
                 else if (opt_check)
                     fprintf(stderr, "info %s %s.%s: %" PRId64 " px differ from the reference picture\n",
@@ -743,16 +658,18 @@ static int best_of(int w, int f, int libs)
 {
     int best = -1;
     for (int i = 1; i < NPEERS; i++)
-        if (shown(i) && PEERS[i] != &peer_fixel_mt && is_ceiling(PEERS[i]) != libs &&
+        if (shown(i) && PEERS[i] != &peer_fixel_mt && PEERS[i] != &peer_fixel_api &&
+            is_ceiling(PEERS[i]) != libs &&
             CELLS[w][f][i].state == 1 &&
             (best < 0 || primary(w, &CELLS[w][f][i]) > primary(w, &CELLS[w][f][best])))
             best = i;
     return best;
 }
 
-static void print_ratio(FILE *o, int w, int f, int peer)
+/* fixel: the column whose ratio this is (0 = fixel, 1 = fixel-api). */
+static void print_ratio(FILE *o, int w, int f, int fixel, int peer)
 {
-    const struct cell *fx = &CELLS[w][f][0];
+    const struct cell *fx = &CELLS[w][f][fixel];
     char t[48] = "-";
     if (fx->state == 1 && peer >= 0)
         snprintf(t, sizeof t, "%5.2f x %s", primary(w, fx) / primary(w, &CELLS[w][f][peer]),
@@ -776,8 +693,9 @@ static void print_table(FILE *o, int which)
             width += 12;
         }
     if (which == 0 && ratio) {
-        fprintf(o, "  %-20s  %-s", "fixel/best peer", "fixel/ceiling");
-        width += 42;
+        fprintf(o, "  %-20s  %-20s  %-20s  %-s", "fixel/best peer", "fixel/ceiling", "api/best peer",
+                "api/ceiling");
+        width += 86;
     }
     fprintf(o, "\n");
     for (int i = 0; i < width; i++)
@@ -827,8 +745,10 @@ static void print_table(FILE *o, int which)
                  * for W9, which no library draws: there the double
                  * reference is the peer to beat. */
                 int lib = best_of(w, f, 1), ceil = best_of(w, f, 0);
-                print_ratio(o, w, f, lib >= 0 ? lib : ceil);
-                print_ratio(o, w, f, lib >= 0 ? ceil : -1);
+                for (int k = 0; k < 2; k++) {
+                    print_ratio(o, w, f, k, lib >= 0 ? lib : ceil);
+                    print_ratio(o, w, f, k, lib >= 0 ? ceil : -1);
+                }
             }
             fprintf(o, "\n");
         }
@@ -876,13 +796,14 @@ static void usage_to(FILE *f, int status)
     fprintf(f,
             "usage: fixel-bench [--peers] [--check] [-w W2,W3..] [-p fixel,cairo..] [-f xrgb8888|rgb565]\n"
             "                   [-t trials] [-m min_trial_s] [-F full_limit_s] [-S prefix_target_s]\n"
-            "                   [-o table.txt] [-q] [-x] [--no-extras]\n"
+            "                   [-o table.txt] [-q] [-x] [--no-extras] [--hugepages]\n"
             "  default: fixel with the libc and ref ceilings; --peers adds cairo, pixman, sdl2, sdlgfx\n"
             "  -q: no progress on stderr; -x: skip the reference-picture comparison (TABLE 3)\n"
             "  TABLE 4 (presentation, teapot, deep zoom, idle loop) runs unless --no-extras;\n"
             "  -w present,teapot,deepzoom,idle picks parts of it; TABLE 5 (raytrace) likewise;\n"
             "  TABLE 6 (visible-surface methods at two scene sizes) runs with it, or alone with -w vsd;\n"
             "  TABLE 7 (fractals of issue #23) likewise, alone with -w fractal\n"
+            "  --hugepages: the destination and W10 sources in 2 MB pages (madvise), the TLB experiment\n"
             "  --check: verify nominal counts, checksums and W9 agreement only, then exit\n");
     exit(status);
 }
@@ -900,6 +821,8 @@ int main(int argc, char **argv)
             opt_peers = 1;
         else if (!strcmp(a, "--check"))
             opt_check = 1;
+        else if (!strcmp(a, "--hugepages"))
+            opt_huge = 1;
         else if (!strcmp(a, "-x"))
             opt_x = 1;
         else if (!strcmp(a, "-q"))
@@ -934,10 +857,25 @@ int main(int argc, char **argv)
 #endif
 
     struct workloads *w = calloc(1, sizeof *w);
-    generate(w);
-    make_blit_sources(w);
+    bench_generate(w);
     WL = w;
-    BUF = xalloc64(BUFSZ);
+    if (opt_huge) {
+        /* 2 MB pages for the destination and the W10 sources (THP in
+         * madvise mode): the TLB experiment of docs/PERFORMANCE.md */
+        size_t hp = (size_t)2 << 20, sz = (BUFSZ + hp - 1) & ~(hp - 1);
+        BUF = aligned_alloc(hp, sz);
+        if (!BUF || madvise(BUF, sz, MADV_HUGEPAGE) != 0)
+            fprintf(stderr, "fixel-bench: --hugepages: madvise failed\n");
+        for (int f = 0; f < FMT_COUNT; f++) {
+            void *q = aligned_alloc(hp, sz);
+            if (q && madvise(q, sz, MADV_HUGEPAGE) == 0) {
+                memcpy(q, w->blit_src[f], (size_t)BW * BH * BPP[f]);
+                w->blit_src[f] = q;
+            }
+        }
+    } else {
+        BUF = xalloc64(BUFSZ);
+    }
     compute_nominal();
     verify();
     if (!opt_x)
