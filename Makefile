@@ -216,7 +216,8 @@ $(GOLDEN_BIN): $(BUILD)/obj/tests/golden/golden.o $(LIB_A)
 # own total.
 build_suites = "$(1)/tests/unit" \
 	"$(1)/tests/golden --dir tests/golden --out $(1)/golden" \
-	"sh tests/script-errors.sh $(1)/bin/fixel-draw $(1)/script-errors"
+	"sh tests/script-errors.sh $(1)/bin/fixel-draw $(1)/script-errors" \
+	"sh tests/boards/bands.sh $(1)"
 BUILD_SUITES = $(call build_suites,$(BUILD))
 
 test-plain: all $(TEST_BIN) $(GOLDEN_BIN)

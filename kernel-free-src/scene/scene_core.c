@@ -142,6 +142,6 @@ const fx_scene_cmd fx_scene_cmds_core[] = {
     {"rect", cmd_rect, "rect X Y W H", FX_SCENE_DRAWS},
     {"fillrect", cmd_fillrect, "fillrect X Y W H", FX_SCENE_DRAWS},
     {"line", cmd_line, "line X0 Y0 X1 Y1", FX_SCENE_DRAWS},
-    {"present", cmd_present, "present", FX_SCENE_DRAWS},
+    {"present", cmd_present, "present", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {0, 0, 0, 0},
 };

@@ -32,6 +32,8 @@ static void usage(FILE *f)
             "  --out DIR     where headless pictures go (default out)\n"
             "  --page NAME   only this page (headless) or start on it (interactive)\n"
             "  --list        print the page names\n"
+            "  -j N          draw headless and --golden pages on N threads, in bands of rows\n"
+            "                (pages that cannot be cut draw on one; the same pixels)\n"
             "  --display OUTPUT=PAGE  show PAGE on OUTPUT (a connector: HDMI-A-2,\n"
             "                vc4:HDMI-A-1, DSI-1; empty: the next free output); repeat it\n"
             "                for one page per output, each with its own state; input\n"
@@ -65,6 +67,8 @@ static double now_s(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
+static int g_threads = 1; /* -j: headless pages and --golden in bands */
+
 static int render_page(fx_memfb *fb, int page)
 {
     demo_state st;
@@ -72,7 +76,7 @@ static int render_page(fx_memfb *fb, int page)
     st.page = page;
     fx_ctx c;
     fx_ctx_init(&c, &fb->surf);
-    demo_draw(&c, &st);
+    demo_draw_threads(&c, &st, g_threads);
     return 0;
 }
 
@@ -489,6 +493,12 @@ int main(int argc, char **argv)
             force_headless = 1;
         } else if (!strcmp(a, "--update")) {
             update = 1;
+        } else if (!strcmp(a, "-j") && i + 1 < argc) {
+            char extra;
+            if (sscanf(argv[++i], "%d%c", &g_threads, &extra) != 1 || g_threads < 1 || g_threads > 64) {
+                fprintf(stderr, "fixel-demo: bad thread count '%s' (expected 1..64)\n", argv[i]);
+                return 2;
+            }
         } else if (!strcmp(a, "--list")) {
             for (int k = 0; k < demo_npages; k++)
                 printf("%s\n", demo_pages[k].name);

@@ -19,6 +19,7 @@
 #include "fixel/line.h"
 #include "fixel/mat3d.h"
 #include "fixel/mesh.h"
+#include "fixel/par.h"
 #include "fixel/render3d.h"
 #include "fixel/texture.h"
 #include "fixel/viz.h"
@@ -87,7 +88,7 @@ static void page_lines(fx_ctx *c, demo_state *st)
     /* a clipped line whose ends are far outside the surface */
     panel(c, 8, top + 268, 300, 176, "Clipped from +-100000, exactly");
     fx_ctx k = *c;
-    fx_ctx_set_clip(&k, (fx_rect){9, top + 286, 307, top + 443});
+    fx_ctx_set_clip(&k, fx_rect_intersect((fx_rect){9, top + 286, 307, top + 443}, c->clip));
     for (int i = 0; i < 24; i++) {
         fx_angle a = (fx_angle)((uint32_t)i * (0x80000000u / 24));
         int32_t dx = fx16_round(fx16_mul(fx_cos(a), fx16_from_int(100000)));
@@ -215,7 +216,7 @@ static void page_clipping(fx_ctx *c, demo_state *st)
     panel(c, area.x0, area.y0, area.x1 - area.x0, area.y1 - area.y0, NULL);
     fx_rect w = st->win;
     fx_ctx a = *c;
-    fx_ctx_set_clip(&a, (fx_rect){area.x0 + 1, area.y0 + 1, area.x1 - 1, area.y1 - 1});
+    fx_ctx_set_clip(&a, fx_rect_intersect((fx_rect){area.x0 + 1, area.y0 + 1, area.x1 - 1, area.y1 - 1}, c->clip));
     /* the nine regions: the window's edges extended */
     color(&a, 0xFF2E4A6Bu);
     fx_line(&a, w.x0, area.y0, w.x0, area.y1);
@@ -421,7 +422,7 @@ static void page_textures(fx_ctx *c, demo_state *st)
         styled_rect(&s, x + 7, top + 22, 136, 140);
     }
     /* a checkerboard texture mapped onto a quad */
-    static uint32_t texels[64 * 64];
+    uint32_t texels[64 * 64]; /* per call: bands draw at once (fixel/par.h) */
     for (int y = 0; y < 64; y++)
         for (int x = 0; x < 64; x++)
             texels[y * 64 + x] = ((x / 8 + y / 8) & 1) ? 0xFFF2C14Eu : 0xFF1E3A5Fu;
@@ -537,7 +538,8 @@ static void page_colour(fx_ctx *c, demo_state *st)
             h.h = fx_angle_to_deg16(fx_atan2(-y, x));
             h.s = (fx16)((int64_t)d * FX16_ONE / R);
             h.v = FX16_ONE;
-            fx_surface_put(&c->surf, cx + x, cy + y, fx_hsv_to_rgb(h));
+            if (cx + x >= c->clip.x0 && cx + x < c->clip.x1 && cy + y >= c->clip.y0 && cy + y < c->clip.y1)
+                fx_surface_put(&c->surf, cx + x, cy + y, fx_hsv_to_rgb(h));
         }
     int32_t px = st->pick_x - cx, py = st->pick_y - cy;
     if (fx_hypot(px, py) > (uint32_t)R)
@@ -601,6 +603,16 @@ static void page_colour(fx_ctx *c, demo_state *st)
     }
 }
 
+/* c's clip (the whole surface, or a band: fixel/par.h) inside the
+ * rectangle r, in the coordinates of r's sub-surface */
+static fx_rect clip_in(const fx_ctx *c, fx_rect r)
+{
+    fx_rect k = fx_rect_intersect(c->clip, r);
+    if (fx_rect_empty(k))
+        return (fx_rect){0, 0, 0, 0};
+    return (fx_rect){k.x0 - r.x0, k.y0 - r.y0, k.x1 - r.x0, k.y1 - r.y0};
+}
+
 /* ---- 3D: the mesh renderer on two objects, one camera ---- */
 static const char *shading_name(int s)
 {
@@ -610,6 +622,9 @@ static const char *shading_name(int s)
 static void draw_object(fx_ctx *c, demo_state *st, fx_rect r, fx_mesh_kind kind, fx_color col, fx_angle spin)
 {
     fx_surface s = fx_surface_sub(c->surf, r);
+    fx_rect band = clip_in(c, r);
+    if (fx_rect_empty(band))
+        return;
     fx_mesh_params mp = {kind, FX16_ONE * 7 / 10, 0, 0, 8, 0};
     if (kind == FX_MESH_TORUS)
         mp = (fx_mesh_params){kind, FX16_ONE + FX16_HALF, FX16_ONE / 2 + FX16_ONE / 8, 0, 20, 32};
@@ -628,6 +643,7 @@ static void draw_object(fx_ctx *c, demo_state *st, fx_rect r, fx_mesh_kind kind,
         m.cap_verts = nv;
         m.cap_tris = nt;
         if (fx_mesh_make(&m, &mp) == 0 && fx3d_init(rd, &s, ms, 4, ps, 2) == 0) {
+            rd->ctx.clip = fx_rect_intersect(rd->ctx.clip, band);
             fx3d_set_depth(rd, z, 32);
             fx_camera_view(&st->cam, &rd->view);
             fx3d_perspective(rd, fx_angle_from_deg(40), fx16_from_ratio(s.w, s.h), FX16_ONE / 2, 50 * FX16_ONE);
@@ -696,7 +712,7 @@ static const fx_ifs_map fern_maps[4] = {
 static void page_fractals(fx_ctx *c, demo_state *st)
 {
     int32_t top = DEMO_TAB_H + 8;
-    static uint32_t lut[64];
+    uint32_t lut[64];
     dwell_lut(lut, 64, c->surf.format, FX_CMAP_HOT);
     fx_dwell_pal pal = {lut, 64, 65536, 1, fx_pack(c->surf.format, 0xFF000000u)};
     /* Mandelbrot */
@@ -708,18 +724,18 @@ static void page_fractals(fx_ctx *c, demo_state *st)
         maxiter += 96;
     fx_fractal_view mv = fx_mandel_view(st->mcre, st->mcim, st->mwidth, mr.x1 - mr.x0, mr.y1 - mr.y0, maxiter);
     fx_surface ms = fx_surface_sub(c->surf, mr);
-    fx_fractal_render(&ms, (fx_rect){0, 0, ms.w, ms.h}, &mv, &pal);
+    fx_fractal_render(&ms, clip_in(c, mr), &mv, &pal);
     /* Julia of the pointer's point in the Mandelbrot frame */
     panel(c, 404, top, 388, 250, NULL);
     int32_t jx = st->julia_x - mr.x0, jy = st->julia_y - mr.y0;
     fx56 jre = fx_fractal_re(&mv, jx), jim = fx_fractal_im(&mv, jy);
     fx_rect jr = {410, top + 20, 786, top + 244};
     fx_fractal_view jv = fx_julia_view(0, 0, jre, jim, 3 * FX56_ONE, jr.x1 - jr.x0, jr.y1 - jr.y0, 192);
-    static uint32_t lut2[64];
+    uint32_t lut2[64];
     dwell_lut(lut2, 64, c->surf.format, FX_CMAP_VIRIDIS);
     fx_dwell_pal pal2 = {lut2, 64, 65536, 1, fx_pack(c->surf.format, 0xFF000000u)};
     fx_surface js = fx_surface_sub(c->surf, jr);
-    fx_fractal_render(&js, (fx_rect){0, 0, js.w, js.h}, &jv, &pal2);
+    fx_fractal_render(&js, clip_in(c, jr), &jv, &pal2);
     demo_text(c, 410, top + 5, ACCENT, "Julia c = %+.4f %+.4fi (follows the pointer)",
               (double)jre / (double)FX56_ONE, (double)jim / (double)FX56_ONE);
     if (st->mwidth != 3 * FX56_ONE)
@@ -762,7 +778,7 @@ static void page_viz(fx_ctx *c, demo_state *st)
 {
     (void)st;
     int32_t top = DEMO_TAB_H + 8;
-    static int32_t g[GW * GH], u[GW * GH], vv[GW * GH];
+    int32_t g[GW * GH], u[GW * GH], vv[GW * GH]; /* per call: bands draw at once */
     for (int y = 0; y < GH; y++)
         for (int x = 0; x < GW; x++)
             g[y * GW + x] = field(x, y);
@@ -812,19 +828,19 @@ static void page_vsd(fx_ctx *c, demo_state *st) { demo_vsd_page(c, st, DEMO_TAB_
 static void page_rt(fx_ctx *c, demo_state *st) { demo_rt_page(c, st, DEMO_RT_Y); }
 
 const demo_page demo_pages[] = {
-    {"lines", "Lines", page_lines},
-    {"circles", "Circles", page_circles},
-    {"clipping", "Clipping", page_clipping},
-    {"fills", "Fills", page_fills},
-    {"textures", "Textures", page_textures},
-    {"transforms", "Transforms", page_transforms},
-    {"colour", "Colour", page_colour},
-    {"3d", "3D", page_3d},
-    {"vsd", "Hidden", page_vsd},
-    {"fractals", "Fractals", page_fractals},
-    {"viz", "Viz", page_viz},
-    {"glut", "GLUT", demo_page_glut},
-    {"raytrace", "Ray trace", page_rt},
+    {"lines", "Lines", page_lines, 1},
+    {"circles", "Circles", page_circles, 1},
+    {"clipping", "Clipping", page_clipping, 1},
+    {"fills", "Fills", page_fills, 0},          /* flood fills read the picture */
+    {"textures", "Textures", page_textures, 1},
+    {"transforms", "Transforms", page_transforms, 1},
+    {"colour", "Colour", page_colour, 1},
+    {"3d", "3D", page_3d, 1},
+    {"vsd", "Hidden", page_vsd, 0},             /* static buffers, painted unclipped */
+    {"fractals", "Fractals", page_fractals, 1},
+    {"viz", "Viz", page_viz, 1},
+    {"glut", "GLUT", demo_page_glut, 0},        /* one GL context, blitted */
+    {"raytrace", "Ray trace", page_rt, 0},      /* a static picture, blitted */
 };
 const int demo_npages = (int)(sizeof demo_pages / sizeof demo_pages[0]);
 /* Every page has a tab: thirteen 61-pixel tabs still hold the longest
@@ -866,7 +882,7 @@ void demo_state_init(demo_state *st, int32_t w, int32_t h)
 
 void demo_draw(fx_ctx *c, demo_state *st)
 {
-    fx_ctx_reset_clip(c);
+    /* c's clip stays: the whole surface, or the band being drawn */
     color(c, BG);
     fx_clear(c);
     /* the tab bar */
@@ -880,6 +896,31 @@ void demo_draw(fx_ctx *c, demo_state *st)
                   i == st->page ? ACCENT : DIM, "%s", demo_pages[i].title);
     }
     demo_pages[st->page].draw(c, st);
+}
+
+typedef struct demo_band_job {
+    const demo_state *st;
+} demo_band_job;
+
+static void draw_band(void *user, fx_ctx *c, int band)
+{
+    (void)band;
+    demo_state st = *((demo_band_job *)user)->st; /* a page may touch its state: each band its own */
+    demo_draw(c, &st);
+}
+
+int demo_draw_threads(fx_ctx *c, demo_state *st, int nthreads)
+{
+    if (nthreads <= 1 || !demo_pages[st->page].bands) {
+        demo_draw(c, st);
+        return 1;
+    }
+    demo_band_job j = {st};
+    if (fx_par_bands(c, nthreads, nthreads, draw_band, &j) < 0) {
+        demo_draw(c, st);
+        return 1;
+    }
+    return nthreads;
 }
 
 static int near(int32_t x, int32_t y, int32_t px, int32_t py)

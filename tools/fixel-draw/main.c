@@ -18,6 +18,7 @@
 #include "fixel/env.h"
 #include "fixel/error.h"
 #include "fixel/memfb.h"
+#include "fixel/par.h"
 #include "fixel/rt_mt.h"
 #include "fixel/scene.h"
 
@@ -29,8 +30,10 @@ static const char usage[] =
     "  -s WxH       surface size, overriding the script's 'size'\n"
     "  -f FORMAT    pixel format, overriding the script's 'format'\n"
     "  --trace      print each algorithm's steps (decision tables) on stdout\n"
-    "  -j N         ray trace ('raytrace') on N threads (default: every core; same pixels);\n"
-    "               with --display the rows appear as they finish\n"
+    "  -j N         draw on N threads (default: every core; the same pixels as one):\n"
+    "               a script is drawn in N bands of rows at once (fixel/par.h), or, when\n"
+    "               it cannot be (seed fills, 'present', --trace, --display, stdin), only\n"
+    "               its 'raytrace' is; with --display the traced rows appear as they finish\n"
     "  --commands   list every script command and exit\n"
     "  --display    show the result on the display (DRM, fbdev) instead of writing a file;\n"
     "               with the script on stdin ('-') lines run as they arrive and a line\n"
@@ -42,7 +45,7 @@ static const char usage[] =
 typedef struct host {
     fx_memfb fb;
     int have_fb;
-    int threads; /* for 'raytrace' */
+    int threads; /* -j: bands of a script, or 'raytrace' rows */
     int display; /* --display: show ray-traced rows as they finish */
     struct loaded {
         uint8_t *data;
@@ -583,7 +586,12 @@ int main(int argc, char **argv)
         fx_scene_fix_size(&sc, w, h);
     if (fmt != FX_FMT_COUNT)
         fx_scene_fix_format(&sc, fmt);
-    r = streaming ? run_stream(&sc, &H) : run_lines(&sc, (const char *)text, len, &H, display);
+    /* Whole scripts in bands where nothing is shown or traced line by line
+     * (a display shows 'present' frames and ray-traced rows as they come) */
+    if (!streaming && !display && !trace && H.threads > 1)
+        r = fx_scene_run_mt(&sc, (const char *)text, len, H.threads, NULL);
+    else
+        r = streaming ? run_stream(&sc, &H) : run_lines(&sc, (const char *)text, len, &H, display);
     int status = 0;
     if (r < 0) {
         fprintf(stderr, "%s:%d:%d: %s\n", strcmp(script, "-") ? script : "<stdin>", sc.err_line,
