@@ -529,7 +529,9 @@ static void page_colour(fx_ctx *c, demo_state *st)
     int32_t top = DEMO_TAB_H + 8;
     panel(c, 8, top, 440, 444, "HSV wheel (click to pick)");
     int32_t cx = 228, cy = top + 232, R = 190;
-    for (int32_t y = -R; y <= R; y++)
+    /* only the rows of the clip (a band draws its own; fixel/par.h) */
+    int32_t ya = c->clip.y0 - cy > -R ? c->clip.y0 - cy : -R, yb = c->clip.y1 - 1 - cy < R ? c->clip.y1 - 1 - cy : R;
+    for (int32_t y = ya; y <= yb; y++)
         for (int32_t x = -R; x <= R; x++) {
             uint32_t d = fx_hypot(x, y);
             if (d > (uint32_t)R)
