@@ -31,9 +31,6 @@ endif
 # The user's CPPFLAGS/CFLAGS come before the fixed optimisation flags, so
 # they cannot change what the reference is measured at.
 TOOL_SRC_fixel-bench := tools/fixel-bench/ref/ref.c tools/fixel-bench/ref/ref_native.c
-# the frames table (frames.c) draws fixel-demo's pages, the GLUT page through the layer
-TOOL_SRC_fixel-bench += $(filter-out tools/fixel-demo/main.c,$(wildcard tools/fixel-demo/*.c)) $(GLUT_SRC)
-$(BUILD)/obj/tools/fixel-bench/frames.o: BASEFLAGS += -Itools/fixel-demo
 BENCH_REF_FLAGS := $(CSTD) $(WARN) -g -fPIC -MMD -MP $(INCLUDES)
 $(BUILD)/obj/tools/fixel-bench/ref/ref.o: tools/fixel-bench/ref/ref.c
 	@mkdir -p $(dir $@)
@@ -42,7 +39,7 @@ $(BUILD)/obj/tools/fixel-bench/ref/ref_native.o: tools/fixel-bench/ref/ref_nativ
 	@mkdir -p $(dir $@)
 	$(CC) $(BENCH_REF_FLAGS) $(CPPFLAGS) $(CFLAGS) -O3 $(if $(CROSS_COMPILE),$(CPU_FLAGS),-march=native) -c $< -o $@
 
-bench: $(BUILD)/bin/fixel-bench $(BUILD)/bin/fixel-kiosk
+bench: $(BUILD)/bin/fixel-bench $(BUILD)/bin/fixel-kiosk $(BUILD)/bin/fixel-demo
 	$(BUILD)/bin/fixel-bench -o $(BUILD)/bench.txt
 	$(BUILD)/bin/fixel-bench --frames -o $(BUILD)/bench-frames.txt
 

@@ -21,7 +21,6 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "demo.h"
 #include "fixel/memfb.h"
 #include "fixel/par.h"
 #include "fixel/scene.h"
@@ -72,56 +71,42 @@ typedef struct cell {
     int bands;           /* 1: one thread */
 } cell;
 
-/* ---- demo pages ---- */
+static void row(FILE *o, const char *what, int w, int h, fx_format f, cell a, cell b);
 
-typedef struct page_job {
-    const demo_state *st;
-    double cpu[MAXB];
-} page_job;
+/* ---- demo pages (fixel-demo --time-pages draws and times them) ---- */
 
-static void page_band(void *u, fx_ctx *c, int band)
+/* Run "DEMO --time-pages WxH FORMAT THREADS REPS" and print a row per page. */
+static int demo_rows(FILE *o, const char *demo, int w, int h, fx_format f, int nthreads)
 {
-    page_job *j = u;
-    double t0 = thread_cpu_ms();
-    demo_state st = *j->st;
-    demo_draw(c, &st);
-    if (band < MAXB)
-        j->cpu[band] = thread_cpu_ms() - t0;
-}
-
-static cell time_page(fx_memfb *fb, int page, int nthreads)
-{
-    cell r;
-    memset(&r, 0, sizeof r);
-    double wall[64], cpu[64], bc[MAXB][64];
-    demo_state st;
-    demo_state_init(&st, fb->surf.w, fb->surf.h);
-    st.page = page;
-    int bands = nthreads > 1 && demo_pages[page].bands ? nthreads : 1;
-    for (int k = -1; k < REPS; k++) { /* k = -1: warm-up (first-frame set-up, caches) */
-        fx_ctx c;
-        fx_ctx_init(&c, &fb->surf);
-        page_job j;
-        memset(&j, 0, sizeof j);
-        j.st = &st;
-        double t0 = now_ms(), c0 = process_cpu_ms();
-        if (bands > 1)
-            fx_par_bands(&c, bands, bands, page_band, &j);
-        else
-            page_band(&j, &c, 0);
-        if (k < 0)
+    char cmd[4400];
+    snprintf(cmd, sizeof cmd, "'%s' --time-pages %dx%d %s %d %d", demo, w, h, fx_format_get(f)->name, nthreads,
+             REPS);
+    FILE *p = popen(cmd, "r");
+    if (!p)
+        return 1;
+    char line[512];
+    int rows = 0;
+    while (fgets(line, sizeof line, p)) {
+        /* NAME MS1 CPU1 MSN CPUN BANDS BANDCPU/BANDCPU... */
+        char name[64], bc[256] = "";
+        cell a, b;
+        memset(&a, 0, sizeof a);
+        memset(&b, 0, sizeof b);
+        if (sscanf(line, "%63s %lf %lf %lf %lf %d %255s", name, &a.ms, &a.cpu_ms, &b.ms, &b.cpu_ms, &b.bands, bc) < 6)
             continue;
-        wall[k] = now_ms() - t0;
-        cpu[k] = process_cpu_ms() - c0;
-        for (int b = 0; b < bands && b < MAXB; b++)
-            bc[b][k] = j.cpu[b];
+        a.bands = 1;
+        char *q = bc;
+        for (int k = 0; k < b.bands && k < MAXB && *q; k++) {
+            b.band_cpu[k] = strtod(q, &q);
+            if (*q == '/')
+                q++;
+        }
+        char what[80];
+        snprintf(what, sizeof what, "demo %s", name);
+        row(o, what, w, h, f, a, b);
+        rows++;
     }
-    r.ms = median(wall, REPS);
-    r.cpu_ms = median(cpu, REPS);
-    r.bands = bands;
-    for (int b = 0; b < bands && b < MAXB; b++)
-        r.band_cpu[b] = median(bc[b], REPS);
-    return r;
+    return pclose(p) != 0 || !rows;
 }
 
 /* ---- scene scripts ---- */
@@ -190,7 +175,7 @@ static cell time_script(fx_memfb *fb, const char *text, size_t len, int nthreads
 
 /* ---- kiosk configs (fixel-kiosk --headless, a process per run) ---- */
 
-static double run_kiosk(const char *kiosk, const char *conf, int w, int h, const char *fmt, int frames)
+static double run_kiosk(const char *kiosk, const char *conf, int w, int h, const char *fmt, int frames, double *cpu)
 {
     char size[32], nf[16];
     snprintf(size, sizeof size, "%dx%d", w, h);
@@ -208,25 +193,29 @@ static double run_kiosk(const char *kiosk, const char *conf, int w, int h, const
     if (e)
         return -1;
     int st;
-    waitpid(pid, &st, 0);
-    if (!WIFEXITED(st) || WEXITSTATUS(st))
+    struct rusage ru;
+    if (wait4(pid, &st, 0, &ru) < 0 || !WIFEXITED(st) || WEXITSTATUS(st))
         return -1;
+    *cpu = (double)(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) * 1e3 +
+           (double)(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec) / 1e3;
     return now_ms() - t0;
 }
 
 /* ms per frame: (N frames - 1 frame) / (N - 1), which takes out the
  * process start and the config's parse; the median of three */
-static double time_kiosk(const char *kiosk, const char *conf, int w, int h, const char *fmt)
+static double time_kiosk(const char *kiosk, const char *conf, int w, int h, const char *fmt, double *cpu)
 {
     enum { N = 31 };
-    double v[3];
+    double v[3], c[3];
     for (int k = 0; k < 3; k++) {
-        double a = run_kiosk(kiosk, conf, w, h, fmt, 1), b = run_kiosk(kiosk, conf, w, h, fmt, N);
+        double ca, cb, a = run_kiosk(kiosk, conf, w, h, fmt, 1, &ca), b = run_kiosk(kiosk, conf, w, h, fmt, N, &cb);
         if (a < 0 || b < 0)
             return -1;
         v[k] = (b - a) / (N - 1);
+        c[k] = (cb - ca) / (N - 1);
     }
     double m = median(v, 3);
+    *cpu = median(c, 3);
     return m < 0 ? 0 : m;
 }
 
@@ -296,20 +285,17 @@ int frames_run(FILE *o, const char *self, int nthreads, int reps)
             "cpu 1", "cpu N", "band cpu");
     fx_memfb fb, dst;
     int bad = 0;
+    char demo[4096], kiosk[4096];
+    const char *slash = strrchr(self, '/');
+    snprintf(demo, sizeof demo, "%.*sfixel-demo", slash ? (int)(slash - self + 1) : 0, self);
+    snprintf(kiosk, sizeof kiosk, "%.*sfixel-kiosk", slash ? (int)(slash - self + 1) : 0, self);
     for (int s = 0; s < 2; s++)
-        for (int f = 0; f < 2; f++) {
-            int w = sizes[s][0], h = sizes[s][1];
-            if (fx_memfb_create(&fb, w, h, fmts[f]) < 0)
-                return 1;
-            for (int p = 0; p < demo_npages; p++) {
-                char what[48];
-                snprintf(what, sizeof what, "demo %s", demo_pages[p].name);
-                cell a = time_page(&fb, p, 1), b = time_page(&fb, p, nthreads);
-                row(o, what, w, h, fmts[f], a, b);
-                fflush(o);
+        for (int f = 0; f < 2; f++)
+            if (access(demo, X_OK) || demo_rows(o, demo, sizes[s][0], sizes[s][1], fmts[f], nthreads)) {
+                fprintf(o, "demo pages %dx%d %s: %s --time-pages failed or is missing\n", sizes[s][0], sizes[s][1],
+                        fx_format_get(fmts[f])->name, demo);
+                bad = 1;
             }
-            fx_memfb_destroy(&fb);
-        }
     /* the 3D and ray-traced golden scripts at frame size: the pipelines'
      * scaling (the demo's ray-traced page is one cached picture); the ray
      * tracer at a quarter of 800x480 (a whole frame takes seconds) */
@@ -345,9 +331,6 @@ int frames_run(FILE *o, const char *self, int nthreads, int reps)
         }
     free(arena);
     /* the kiosk: one process per run, every widget redrawn (--full) */
-    char kiosk[4096];
-    const char *slash = strrchr(self, '/');
-    snprintf(kiosk, sizeof kiosk, "%.*sfixel-kiosk", slash ? (int)(slash - self + 1) : 0, self);
     DIR *d = opendir("examples");
     char *confs[32];
     int nconf = 0;
@@ -366,15 +349,16 @@ int frames_run(FILE *o, const char *self, int nthreads, int reps)
         for (int s = 0; s < 2; s++)
             for (int f = 0; f < 2; f++) {
                 int w = sizes[s][0], h = sizes[s][1];
-                double ms = access(kiosk, X_OK) ? -1 : time_kiosk(kiosk, path, w, h, fx_format_get(fmts[f])->name);
+                double cpu = 0;
+                double ms = access(kiosk, X_OK) ? -1 : time_kiosk(kiosk, path, w, h, fx_format_get(fmts[f])->name, &cpu);
                 char what[48];
                 snprintf(what, sizeof what, "kiosk %.*s", (int)(strlen(confs[c]) - 5), confs[c]);
                 if (ms < 0)
                     fprintf(o, "%-24s %4dx%-4d %-8s  (fixel-kiosk failed or missing: %s)\n", what, w, h,
                             fx_format_get(fmts[f])->name, kiosk);
                 else
-                    fprintf(o, "%-24s %4dx%-4d %-8s %9.2f %9s     kiosk frames draw on one thread (--full)\n",
-                            what, w, h, fx_format_get(fmts[f])->name, ms, "-");
+                    fprintf(o, "%-24s %4dx%-4d %-8s %9.2f %9s        %8.2f  one thread, every widget (--full)\n",
+                            what, w, h, fx_format_get(fmts[f])->name, ms, "-", cpu);
                 fflush(o);
             }
         free(confs[c]);
