@@ -75,6 +75,16 @@ struct scene_job {
     pthread_mutex_t host_lock; /* the host's functions, one call at a time */
     int have_surface;
     fx_surface surf;
+    /* files and images loaded for one band serve the others (a 48 MiB font
+     * is read and unpacked once, not once per band) */
+    struct loaded {
+        char path[256];
+        const uint8_t *data;
+        size_t len;
+        fx_surface img;
+        int rc, image;
+    } cache[32];
+    int ncache;
     atomic_int next;
     /* the collective steps (the ray tracer): a barrier of the bands still
      * running the script */
@@ -139,11 +149,41 @@ static int host_make_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surf
     return 0;
 }
 
+/* The cache entry of path (image or file), or NULL; under host_lock. */
+static struct loaded *cached(scene_job *j, const char *path, int image)
+{
+    for (int i = 0; i < j->ncache; i++)
+        if (j->cache[i].image == image && !strcmp(j->cache[i].path, path))
+            return &j->cache[i];
+    return 0;
+}
+
+static struct loaded *remember(scene_job *j, const char *path, int image)
+{
+    if (j->ncache == 32 || strlen(path) >= sizeof j->cache[0].path)
+        return 0;
+    struct loaded *l = &j->cache[j->ncache++];
+    memset(l, 0, sizeof *l);
+    strcpy(l->path, path);
+    l->image = image;
+    return l;
+}
+
 static int host_load_file(void *u, const char *path, const uint8_t **data, size_t *len)
 {
     scene_job *j = ((band *)u)->job;
     pthread_mutex_lock(&j->host_lock);
-    int r = j->host.load_file(j->host.user, path, data, len);
+    struct loaded *l = cached(j, path, 0);
+    int r;
+    if (l) {
+        r = l->rc;
+        *data = l->data;
+        *len = l->len;
+    } else {
+        r = j->host.load_file(j->host.user, path, data, len);
+        if ((l = remember(j, path, 0)))
+            l->rc = r, l->data = r < 0 ? 0 : *data, l->len = r < 0 ? 0 : *len;
+    }
     pthread_mutex_unlock(&j->host_lock);
     return r;
 }
@@ -152,7 +192,17 @@ static int host_load_image(void *u, const char *path, fx_surface *out)
 {
     scene_job *j = ((band *)u)->job;
     pthread_mutex_lock(&j->host_lock);
-    int r = j->host.load_image(j->host.user, path, out);
+    struct loaded *l = cached(j, path, 1);
+    int r;
+    if (l) {
+        r = l->rc;
+        if (r >= 0)
+            *out = l->img;
+    } else {
+        r = j->host.load_image(j->host.user, path, out);
+        if ((l = remember(j, path, 1)))
+            l->rc = r, l->img = r < 0 ? (fx_surface){0} : *out;
+    }
     pthread_mutex_unlock(&j->host_lock);
     return r;
 }

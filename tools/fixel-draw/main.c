@@ -30,10 +30,11 @@ static const char usage[] =
     "  -s WxH       surface size, overriding the script's 'size'\n"
     "  -f FORMAT    pixel format, overriding the script's 'format'\n"
     "  --trace      print each algorithm's steps (decision tables) on stdout\n"
-    "  -j N         draw on N threads (default: every core; the same pixels as one):\n"
-    "               a script is drawn in N bands of rows at once (fixel/par.h), or, when\n"
-    "               it cannot be (seed fills, 'present', --trace, --display, stdin), only\n"
-    "               its 'raytrace' is; with --display the traced rows appear as they finish\n"
+    "  -j N         draw on N threads (1..64; the same pixels as one): the script in N\n"
+    "               bands of rows at once (fixel/par.h), or, when it cannot be (seed\n"
+    "               fills, 'present', --trace, --display, stdin), only its 'raytrace';\n"
+    "               without -j only 'raytrace' runs on every core; with --display the\n"
+    "               traced rows appear as they finish\n"
     "  --commands   list every script command and exit\n"
     "  --display    show the result on the display (DRM, fbdev) instead of writing a file;\n"
     "               with the script on stdin ('-') lines run as they arrive and a line\n"
@@ -586,9 +587,12 @@ int main(int argc, char **argv)
         fx_scene_fix_size(&sc, w, h);
     if (fmt != FX_FMT_COUNT)
         fx_scene_fix_format(&sc, fmt);
-    /* Whole scripts in bands where nothing is shown or traced line by line
-     * (a display shows 'present' frames and ray-traced rows as they come) */
-    if (!streaming && !display && !trace && H.threads > 1)
+    /* Whole scripts in bands when -j asks for it, where nothing is shown or
+     * traced line by line (a display shows 'present' frames and ray-traced
+     * rows as they come). Not by default: every band repeats the script's
+     * set-up (a big font's glyph look-ups, tessellation), which a CPU limit
+     * set for one thread would count N times. */
+    if (threads > 1 && !streaming && !display && !trace)
         r = fx_scene_run_mt(&sc, (const char *)text, len, H.threads, NULL);
     else
         r = streaming ? run_stream(&sc, &H) : run_lines(&sc, (const char *)text, len, &H, display);

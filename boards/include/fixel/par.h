@@ -46,7 +46,9 @@ int fx_par_bands(const fx_ctx *c, int nbands, int nthreads, fx_par_draw_fn draw,
  * nthreads bands, with the same pixels. sc is fresh (initialised, nothing
  * run yet); the other bands get scenes like it, with arenas of sc's size
  * (allocated here, freed before returning), and call sc's host functions
- * one at a time (a mutex), make_surface only once. On return sc holds band
+ * one at a time (a mutex), make_surface only once; a file or image the
+ * script names is loaded once and its data shared by the bands (it is
+ * only read). On return sc holds band
  * 0's state, unbanded; sc->err as fx_scene_run sets it (the first band's
  * error). *bands (NULL: not wanted) is the number of bands drawn: 1 when
  * the script ran on one thread (nthreads 1, a serial command, tracing, or
