@@ -217,7 +217,8 @@ $(GOLDEN_BIN): $(BUILD)/obj/tests/golden/golden.o $(LIB_A)
 build_suites = "$(1)/tests/unit" \
 	"$(1)/tests/golden --dir tests/golden --out $(1)/golden" \
 	"$(1)/tests/golden --dir tests/golden/course --scripts examples/course --out $(1)/golden-course" \
-	"sh tests/script-errors.sh $(1)/bin/fixel-draw $(1)/script-errors"
+	"sh tests/script-errors.sh $(1)/bin/fixel-draw $(1)/script-errors" \
+	"sh tests/boards/bands.sh $(1)"
 BUILD_SUITES = $(call build_suites,$(BUILD))
 
 test-plain: all $(TEST_BIN) $(GOLDEN_BIN)

@@ -82,7 +82,25 @@ int fx_scene_surface(fx_scene *sc)
     sc->ctx.trace = sc->host.trace;
     sc->ctx.trace_user = sc->host.user;
     sc->have_surface = 1;
+    fx_scene_band_clip(sc, &sc->ctx.clip);
     return 0;
+}
+
+void fx_scene_set_band(fx_scene *sc, fx_rect band)
+{
+    sc->banded = 1;
+    sc->band = band;
+    if (sc->have_surface)
+        fx_scene_band_clip(sc, &sc->ctx.clip);
+}
+
+void fx_scene_band_clip(const fx_scene *sc, fx_rect *clip)
+{
+    if (!sc->banded)
+        return;
+    *clip = fx_rect_intersect(*clip, sc->band);
+    if (fx_rect_empty(*clip)) /* empty, but still a valid rectangle */
+        clip->x1 = clip->x0, clip->y1 = clip->y0;
 }
 
 int fx_scene_error(fx_scene *sc, const char *fmt, ...)
@@ -500,9 +518,38 @@ int fx_scene_exec_line(fx_scene *sc, const char *line, size_t len, int lineno)
             return r;
     }
     int r = cmd->run(sc);
+    /* clip, clip pop, viewport and the rest set the clip the script asked
+     * for; a band narrows it again before the next command draws */
+    if (sc->have_surface)
+        fx_scene_band_clip(sc, &sc->ctx.clip);
     if (r < 0 && !sc->err[0])
         fx_scene_error(sc, "%s failed: %s (usage: %s)", cmd->name, fx_strerror(r), cmd->usage);
     return r < 0 ? r : 0;
+}
+
+int fx_scene_script_serial(const char *text, size_t len)
+{
+    size_t i = 0;
+    int lineno = 1;
+    while (i < len) {
+        size_t e = i;
+        while (e < len && text[e] != '\n')
+            e++;
+        size_t s = i;
+        while (s < e && is_space(text[s]))
+            s++;
+        size_t w = s;
+        while (w < e && !is_space(text[w]))
+            w++;
+        if (w > s && text[s] != '#') {
+            const fx_scene_cmd *c = fx_scene_find(text + s, w - s);
+            if (c && (c->flags & FX_SCENE_SERIAL))
+                return lineno;
+        }
+        i = e + 1;
+        lineno++;
+    }
+    return 0;
 }
 
 int fx_scene_run(fx_scene *sc, const char *text, size_t len)

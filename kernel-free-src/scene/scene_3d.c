@@ -60,6 +60,7 @@ static int get(fx_scene *sc, s3d **out)
         fx_mat_stack_load(&s->r.proj, &p);
         sc->mod[FX_SCENE_MOD_3D] = s;
     }
+    fx_scene_band_clip(sc, &s->r.ctx.clip);
     *out = s;
     return 0;
 }

@@ -641,7 +641,9 @@ const fx_scene_cmd fx_scene_cmds_anim[] = {
     {"shape", cmd_shape, "shape NAME X0 Y0 X1 Y1 X2 Y2 ... (an outline for 'morph')", 0},
     {"morph", cmd_morph, "morph A B fill|outline|vertices T0 T1 [none|in|out|inout|smooth] (A at T0 to B at T1)", D},
     {"bounce", cmd_bounce, "bounce X0 Y0 X1 Y1 X Y VX VY G E R [TRAIL] (a ball in the box at the clock)", D},
-    {"blur", cmd_blur, "blur N SHUTTER (the lines up to 'endblur' drawn at N times across SHUTTER, averaged)", D},
-    {"endblur", cmd_endblur, "endblur", D},
+    /* the accumulation reads and writes the whole clip rectangle, not a band's rows */
+    {"blur", cmd_blur, "blur N SHUTTER (the lines up to 'endblur' drawn at N times across SHUTTER, averaged)",
+     D | FX_SCENE_SERIAL},
+    {"endblur", cmd_endblur, "endblur", D | FX_SCENE_SERIAL},
     {0, 0, 0, 0},
 };

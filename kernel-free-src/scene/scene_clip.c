@@ -460,8 +460,7 @@ const fx_scene_cmd fx_scene_cmds_clip[] = {
      FX_SCENE_DRAWS},
     {"clippoly", cmd_clippoly,
      "clippoly sh|wa fill|outline X0 Y0 X1 Y1 X2 Y2 ... (clip to the clip window; sh = Sutherland-Hodgman, wa = "
-     "Weiler-Atherton pieces)",
-     FX_SCENE_DRAWS},
+     "Weiler-Atherton pieces)", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {"xpoly", cmd_xpoly, "xpoly fill|outline|open X0 Y0 X1 Y1 ... (Q16.16 vertices through the transform)",
      FX_SCENE_DRAWS},
     {"push", cmd_push, "push (save the current transform)", FX_SCENE_DRAWS},

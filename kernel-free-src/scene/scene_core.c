@@ -155,7 +155,7 @@ const fx_scene_cmd fx_scene_cmds_core[] = {
     {"line", cmd_line, "line X0 Y0 X1 Y1", FX_SCENE_DRAWS},
     {"coords", cmd_coords,
      "coords screen|course (course: origin bottom-left, y up, +angles counter-clockwise, as the notes and GLUT)",
-     FX_SCENE_DRAWS},
-    {"present", cmd_present, "present", FX_SCENE_DRAWS},
+     FX_SCENE_DRAWS | FX_SCENE_SERIAL}, /* bands are cut in the surface's rows, not the mirrored frame's */
+    {"present", cmd_present, "present", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {0, 0, 0, 0},
 };

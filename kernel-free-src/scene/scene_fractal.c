@@ -744,15 +744,16 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
      FX_SCENE_DRAWS},
     {"juliafixed", cmd_juliafixed, "juliafixed CRE CIM CX CY WIDTH", FX_SCENE_DRAWS},
     {"juliabasins", cmd_juliabasins, "juliabasins CRE CIM CX CY WIDTH MAXITER", FX_SCENE_DRAWS},
-    {"boxdim", cmd_boxdim, "boxdim X Y W H BG SMIN SMAX [KNOWN]", FX_SCENE_DRAWS},
+    /* these read the picture drawn so far, which a band has only part of */
+    {"boxdim", cmd_boxdim, "boxdim X Y W H BG SMIN SMAX [KNOWN]", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {"turtle", cmd_turtle,
      "turtle home X Y DEG | moveto X Y | lineto X Y | moverel DX DY | linerel DX DY | turn DEG | turnto DEG | "
      "forward D | jump D | koch LEN ORDER | hilbert STEP ORDER [PARITY] | where",
      0},
     {"grass", cmd_grass, "grass X Y W H NBLADES SEED", FX_SCENE_DRAWS},
     {"fire", cmd_fire, "fire X Y W H ROUGH SEED", FX_SCENE_DRAWS},
-    {"collage", cmd_collage, "collage X Y SIZE BG MAXMAPS DX DY NPOINTS SEED", FX_SCENE_DRAWS},
-    {"fractcompress", cmd_fractcompress, "fractcompress X Y SIZE DX DY ROUNDS", FX_SCENE_DRAWS},
+    {"collage", cmd_collage, "collage X Y SIZE BG MAXMAPS DX DY NPOINTS SEED", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
+    {"fractcompress", cmd_fractcompress, "fractcompress X Y SIZE DX DY ROUNDS", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {"mountain", cmd_mountain, "mountain SIZE HEIGHT K SEED [ROUGH [SEA]]", FX_SCENE_DRAWS},
     {0, 0, 0, 0},
 };

@@ -372,6 +372,20 @@ static int cmd_raytrace(fx_scene *sc)
             TRY(fx_scene_arg_int(sc, &v[i]));
     TRY(fx_scene_end(sc));
     fx_surface scr = fx_scene_screen_surf(&sc->ctx);
+    if (sc->banded && !sc->raytrace) {
+        /* the part of the rectangle inside the band; each pixel's rays are
+         * its own, so the part is the same pixels as in the whole (a host
+         * renderer gets the whole rectangle: fx_scene_run_mt's traces it
+         * once, on all threads together) */
+        int64_t x0 = v[0], x1 = (int64_t)v[0] + v[2], y0 = v[1], y1 = (int64_t)v[1] + v[3];
+        x0 = x0 > sc->band.x0 ? x0 : sc->band.x0;
+        x1 = x1 < sc->band.x1 ? x1 : sc->band.x1;
+        y0 = y0 > sc->band.y0 ? y0 : sc->band.y0;
+        y1 = y1 < sc->band.y1 ? y1 : sc->band.y1;
+        if (x0 >= x1 || y0 >= y1)
+            return 0;
+        v[0] = (int32_t)x0, v[1] = (int32_t)y0, v[2] = (int32_t)(x1 - x0), v[3] = (int32_t)(y1 - y0);
+    }
     if (sc->raytrace) {
         int e = sc->raytrace(sc->host.user, &r->s, &scr, v[0], v[1], v[2], v[3]);
         return e < 0 ? fx_scene_error(sc, "raytrace: the host's renderer failed (%d)", e) : 0;

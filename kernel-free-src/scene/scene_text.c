@@ -155,7 +155,7 @@ static int cmd_textbg(fx_scene *sc)
 const fx_scene_cmd fx_scene_cmds_text[] = {
     {"font", cmd_font, "font builtin|PATH|\"PATH\"   (PSF1/PSF2, .psf.gz in fixel-draw)", 0},
     {"text", cmd_text, "text X Y \"STRING\"   (top-left corner; \\n starts a new line)", FX_SCENE_DRAWS},
-    {"textclip", cmd_textclip, "textclip pixel|char|string", 0},
+    {"textclip", cmd_textclip, "textclip pixel|char|string", FX_SCENE_SERIAL},
     {"textscale", cmd_textscale, "textscale N", 0},
     {"textbg", cmd_textbg, "textbg #RRGGBB|#AARRGGBB|none", 0},
     {0, 0, 0, 0},

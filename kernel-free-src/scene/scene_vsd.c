@@ -207,6 +207,8 @@ int fx_scene_octree_draw(fx_scene *sc, const uint8_t *vox, int32_t k, int32_t sc
             int64_t px = (int64_t)sx + x, py = (int64_t)sy + y;
             if (z < 0 || px < 0 || py < 0)
                 continue;
+            if (sc->banded && (px < sc->band.x0 || px >= sc->band.x1 || py < sc->band.y0 || py >= sc->band.y1))
+                continue; /* another band's pixel */
             uint32_t g = (uint32_t)(230 - z * 170 / n);
             fx_surface_put(&scr, (int32_t)px, (int32_t)py, 0xFF000000u | g << 16 | g << 8 | (g * 3 / 4));
         }
@@ -242,6 +244,6 @@ const fx_scene_cmd fx_scene_cmds_vsd[] = {
     {"vsdcull", cmd_vsdcull, "vsdcull on|off", 0},
     {"vsdclear", cmd_vsdclear, "vsdclear", 0},
     {"vsdoctree", cmd_vsdoctree, "vsdoctree K SCALE", D},
-    {"vsd", cmd_vsd, "vsd zbuffer|painter|newell|bsp|scanline|warnock|raycast|abuffer [ROW]", D},
+    {"vsd", cmd_vsd, "vsd zbuffer|painter|newell|bsp|scanline|warnock|raycast|abuffer [ROW]", D | FX_SCENE_SERIAL},
     {0, 0, 0, 0},
 };

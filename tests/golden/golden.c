@@ -15,10 +15,12 @@
 #include "fixel/error.h"
 #include "fixel/memfb.h"
 #include "fixel/scene.h"
+#include "fixel/par.h"
 
 typedef struct host {
     fx_memfb fb;
     int have;
+    int prefill; /* --band-check: the surface starts as 0x5A bytes, not black */
     void *files[64];
     int nfiles;
 } host;
@@ -29,6 +31,8 @@ static int make_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surface *
     int r = fx_memfb_create(&H->fb, w, h, f);
     if (r == 0) {
         H->have = 1;
+        if (H->prefill)
+            memset(H->fb.surf.pixels, 0x5A, (size_t)H->fb.surf.stride * (size_t)h);
         *out = H->fb.surf;
     }
     return r;
@@ -103,6 +107,57 @@ static int load_image(void *u, const char *path, fx_surface *out)
 }
 
 static void mkdirs(const char *dir);
+
+static char band_msg[256];
+
+/* --band-check: each of n bands of the script drawn alone (fx_scene_set_band)
+ * on a surface of 0x5A bytes equals want inside the band and leaves the rest
+ * alone. 0, or 1 with band_msg set. */
+static int check_bands(const char *text, size_t len, fx_format f, const fx_surface *want, int n)
+{
+    static void *arena;
+    size_t arena_size = (size_t)64 << 20;
+    if (!arena && !(arena = malloc(arena_size))) {
+        snprintf(band_msg, sizeof band_msg, "out of memory");
+        return 1;
+    }
+    size_t row = (size_t)want->w * fx_format_get(f)->bits_per_pixel / 8; /* MONO1: the padding bits of a last byte are not pixels */
+    for (int k = 0; k < n; k++) {
+        host B;
+        memset(&B, 0, sizeof B);
+        B.prefill = 1;
+        fx_scene_host hs = {&B, make_surface, load_file, NULL, NULL, load_image};
+        static fx_scene sc;
+        fx_scene_init(&sc, &hs, arena, arena_size);
+        fx_scene_fix_format(&sc, f);
+        fx_rect band = {0, (int32_t)((int64_t)want->h * k / n), want->w, (int32_t)((int64_t)want->h * (k + 1) / n)};
+        fx_scene_set_band(&sc, band);
+        int r = fx_scene_run(&sc, text, len), bad = 0;
+        if (r < 0)
+            snprintf(band_msg, sizeof band_msg, "band %d/%d: %d:%d: %s", k, n, sc.err_line, sc.err_col, sc.err);
+        for (int32_t y = 0; r >= 0 && !bad && y < want->h; y++) {
+            const uint8_t *g = (const uint8_t *)B.fb.surf.pixels + (size_t)y * (size_t)B.fb.surf.stride;
+            const uint8_t *w = (const uint8_t *)want->pixels + (size_t)y * (size_t)want->stride;
+            if (y >= band.y0 && y < band.y1) {
+                if (memcmp(g, w, row))
+                    bad = snprintf(band_msg, sizeof band_msg, "band %d/%d (rows %d..%d): row %d differs from the whole picture",
+                                   k, n, band.y0, band.y1 - 1, y);
+            } else {
+                for (size_t x = 0; x < row && !bad; x++)
+                    if (g[x] != 0x5A)
+                        bad = snprintf(band_msg, sizeof band_msg, "band %d/%d (rows %d..%d) wrote row %d (byte %zu)",
+                                       k, n, band.y0, band.y1 - 1, y, x);
+            }
+        }
+        if (B.have)
+            fx_memfb_destroy(&B.fb);
+        for (int i = 0; i < B.nfiles; i++)
+            free(B.files[i]);
+        if (r < 0 || bad)
+            return 1;
+    }
+    return 0;
+}
 
 /* The host's side of textures_ppm: every DIR/textures/NAME.png as OUT/NAME.ppm. */
 static int export_textures(const char *dir, const char *out)
@@ -184,7 +239,7 @@ int main(int argc, char **argv)
 {
     const char *dir = "tests/golden", *out = "build/golden", *render_ppm = NULL, *compare_ppm = NULL;
     const char *scripts = NULL; /* default DIR/scripts */
-    int update = 0;
+    int update = 0, threads = 0, band_check = 0, banded = 0, renders = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--dir") && i + 1 < argc)
             dir = argv[++i];
@@ -195,6 +250,15 @@ int main(int argc, char **argv)
             out = argv[++i];
         else if (!strcmp(argv[i], "--update"))
             update = 1;
+        /* Banded rendering (boards/posix/par.c, docs/ARCHITECTURE.md): run
+         * every script with fx_scene_run_mt on N threads, against the same
+         * goldens; --band-check N also draws each band of N alone on a
+         * surface of 0x5A bytes: inside the band it must be the one-thread
+         * picture, outside it untouched. */
+        else if (!strcmp(argv[i], "--threads") && i + 1 < argc)
+            threads = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--band-check") && i + 1 < argc)
+            band_check = atoi(argv[++i]);
         /* Cross-architecture runs without libpng on the target: the target
          * renders PPMs (--render-ppm DIR), the host compares them with the
          * same golden PNGs (--compare-ppm DIR). */
@@ -266,8 +330,24 @@ int main(int argc, char **argv)
                         }
                 }
                 free(ppm);
+            } else if (threads) {
+                int bands = 1;
+                r = fx_scene_run_mt(&sc, text, len, threads, &bands);
+                renders++;
+                banded += bands > 1;
             } else {
                 r = fx_scene_run(&sc, text, len);
+            }
+            if (r >= 0 && band_check && H.have && !fx_scene_script_serial(text, len)) {
+                int bad = check_bands(text, len, (fx_format)f, &H.fb.surf, band_check);
+                renders++;
+                banded++;
+                if (bad) {
+                    printf("FAIL %s [%s]: %s\n", names[i], fname, band_msg);
+                    failed++;
+                } else {
+                    passed++;
+                }
             }
             if (r >= 0 && render_ppm) {
                 char rdir[1024];
@@ -352,6 +432,9 @@ int main(int argc, char **argv)
         free(names[i]);
     }
     free(arena);
+    if (threads || band_check)
+        printf("golden: %d of %d renders drawn in bands (%s %d)\n", banded, renders,
+               threads ? "threads" : "band-check", threads ? threads : band_check);
     printf("golden: %d passed, %d failed\n", passed, failed);
     return failed != 0;
 }

@@ -39,8 +39,9 @@ $(BUILD)/obj/tools/fixel-bench/ref/ref_native.o: tools/fixel-bench/ref/ref_nativ
 	@mkdir -p $(dir $@)
 	$(CC) $(BENCH_REF_FLAGS) $(CPPFLAGS) $(CFLAGS) -O3 $(if $(CROSS_COMPILE),$(CPU_FLAGS),-march=native) -c $< -o $@
 
-bench: $(BUILD)/bin/fixel-bench
+bench: $(BUILD)/bin/fixel-bench $(BUILD)/bin/fixel-kiosk $(BUILD)/bin/fixel-demo
 	$(BUILD)/bin/fixel-bench -o $(BUILD)/bench.txt
+	$(BUILD)/bin/fixel-bench --frames -o $(BUILD)/bench-frames.txt
 
 # A new make after the install, so that BENCH_HAVE_PEERS sees the peers.
 bench-peers:

@@ -13,6 +13,7 @@
 #define _GNU_SOURCE
 #endif
 #include "bench.h"
+#include "frames.h"
 
 #include <inttypes.h>
 #include <math.h>
@@ -224,7 +225,7 @@ static const struct peer *PEERS[] = {
 /* ---- options -------------------------------------------------------------- */
 
 static double opt_F = 1.0, opt_S = 0.25, opt_m = 0.2, opt_cal = 0.020;
-static int opt_huge, opt_t = 7, opt_peers, opt_check, opt_quiet, opt_x, opt_noextras;
+static int opt_huge, opt_t = 7, opt_peers, opt_check, opt_quiet, opt_x, opt_noextras, opt_frames, opt_j, opt_t_given;
 static const char *opt_w, *opt_p, *opt_f, *opt_md;
 
 static int listed(const char *list, const char *name)
@@ -797,6 +798,10 @@ static void usage_to(FILE *f, int status)
             "usage: fixel-bench [--peers] [--check] [-w W2,W3..] [-p fixel,cairo..] [-f xrgb8888|rgb565]\n"
             "                   [-t trials] [-m min_trial_s] [-F full_limit_s] [-S prefix_target_s]\n"
             "                   [-o table.txt] [-q] [-x] [--no-extras] [--hugepages]\n"
+            "       fixel-bench --frames [-j N] [-t frames] [-o table.txt]\n"
+            "  --frames: ms per frame of the demo pages, 3D and ray-traced scripts and kiosk configs at\n"
+            "  800x480 and 1920x1080, XRGB8888 and RGB565, on 1 and N threads (-j; default every core,\n"
+            "  at least 2), and the cost of presenting a whole frame and a 10%% damage rectangle\n"
             "  default: fixel with the libc and ref ceilings; --peers adds cairo, pixman, sdl2, sdlgfx\n"
             "  -q: no progress on stderr; -x: skip the reference-picture comparison (TABLE 3)\n"
             "  TABLE 4 (presentation, teapot, deep zoom, idle loop) runs unless --no-extras;\n"
@@ -827,6 +832,10 @@ int main(int argc, char **argv)
             opt_x = 1;
         else if (!strcmp(a, "-q"))
             opt_quiet = 1;
+        else if (!strcmp(a, "--frames"))
+            opt_frames = 1;
+        else if (v && !strcmp(a, "-j"))
+            opt_j = atoi(argv[++i]);
         else if (!strcmp(a, "--no-extras"))
             opt_noextras = 1;
         else if (v && !strcmp(a, "-w"))
@@ -838,7 +847,7 @@ int main(int argc, char **argv)
         else if (v && !strcmp(a, "-o"))
             opt_md = argv[++i];
         else if (v && !strcmp(a, "-t"))
-            opt_t = atoi(argv[++i]);
+            opt_t = atoi(argv[++i]), opt_t_given = 1;
         else if (v && !strcmp(a, "-m"))
             opt_m = atof(argv[++i]);
         else if (v && !strcmp(a, "-F"))
@@ -848,8 +857,30 @@ int main(int argc, char **argv)
         else
             usage();
     }
-    if (opt_t < 1 || opt_t > 64)
+    if (opt_t < 1 || opt_t > 64 || opt_j < 0 || opt_j > 64)
         usage();
+    if (opt_frames) {
+        /* the frames table alone (make bench runs it after the workloads):
+         * on stdout as it goes, then into -o */
+        int reps = opt_t_given ? opt_t : 5;
+        FILE *o = opt_md ? fopen(opt_md, "w+") : stdout;
+        if (!o) {
+            perror(opt_md);
+            return 1;
+        }
+        machine(o);
+        fprintf(o, "\n");
+        int bad = frames_run(o, argv[0], opt_j, reps);
+        if (o != stdout) { /* the table on stdout too */
+            char buf[4096];
+            size_t n;
+            rewind(o);
+            while ((n = fread(buf, 1, sizeof buf, o)) > 0)
+                fwrite(buf, 1, n, stdout);
+            fclose(o);
+        }
+        return bad;
+    }
 #ifndef BENCH_PEERS
     if (opt_peers)
         fprintf(stderr, "fixel-bench: built without cairo/pixman/SDL2 (run make deps); "

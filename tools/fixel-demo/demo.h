@@ -56,6 +56,9 @@ typedef struct demo_page {
     const char *name;  /* file name and tab label */
     const char *title;
     void (*draw)(fx_ctx *c, demo_state *st);
+    /* 1: draws only inside c's clip, reads no other pixel and writes no
+     * shared memory, so bands of it may be drawn at once (fixel/par.h) */
+    int bands;
 } demo_page;
 
 extern const demo_page demo_pages[];
@@ -67,6 +70,10 @@ void demo_page_glut(fx_ctx *c, demo_state *st);
 void demo_state_init(demo_state *st, int32_t w, int32_t h);
 /* Draw page st->page with its tab bar into c's surface. */
 void demo_draw(fx_ctx *c, demo_state *st);
+/* demo_draw on nthreads threads in bands (fixel/par.h) when the page allows
+ * (demo_page.bands), else on this thread: the same pixels. Returns the
+ * number of bands drawn (1: one thread). */
+int demo_draw_threads(fx_ctx *c, demo_state *st, int nthreads);
 /* Pointer input on the current page (down: 1 press, 0 move while pressed, -1 release). */
 void demo_pointer(demo_state *st, int32_t x, int32_t y, int down);
 /* A character key for the current page; returns 1 when it was used. */

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "demo.h"
+#include "fixel/par.h"
 #include "fixel/app.h"
 #include "fixel/display.h"
 #include "fixel/env.h"
@@ -34,6 +35,9 @@ static void usage(FILE *f)
             "  --list        print the page names\n"
             "  --flight FILE the Animation page's camera flight: loaded from FILE, and each\n"
             "                key recorded (k) appended to it (docs/ANIMATION.md)\n"
+            "  --time-pages WxH FORMAT THREADS REPS  time every page (fixel-bench --frames)\n"
+            "  -j N          draw headless and --golden pages on N threads, in bands of rows\n"
+            "                (pages that cannot be cut draw on one; the same pixels)\n"
             "  --display OUTPUT=PAGE  show PAGE on OUTPUT (a connector: HDMI-A-2,\n"
             "                vc4:HDMI-A-1, DSI-1; empty: the next free output); repeat it\n"
             "                for one page per output, each with its own state; input\n"
@@ -69,6 +73,8 @@ static double now_s(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
+static int g_threads = 1; /* -j: headless pages and --golden in bands */
+
 static int render_page(fx_memfb *fb, int page)
 {
     demo_state st;
@@ -76,7 +82,106 @@ static int render_page(fx_memfb *fb, int page)
     st.page = page;
     fx_ctx c;
     fx_ctx_init(&c, &fb->surf);
-    demo_draw(&c, &st);
+    demo_draw_threads(&c, &st, g_threads);
+    return 0;
+}
+
+/* --time-pages WxH FORMAT THREADS REPS (fixel-bench --frames reads it):
+ * per page "NAME MS1 CPU1 MSN CPUN BANDS CPU0/CPU1/...", the median wall
+ * and process CPU ms of REPS frames after a warm-up on one thread and in
+ * bands on THREADS threads, and each band's thread CPU ms. */
+enum { TIME_MAXB = 8 };
+
+typedef struct time_job {
+    const demo_state *st;
+    double cpu[TIME_MAXB];
+} time_job;
+
+static double clock_ms(clockid_t id)
+{
+    struct timespec t;
+    clock_gettime(id, &t);
+    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec / 1e6;
+}
+
+static void time_band(void *u, fx_ctx *c, int band)
+{
+    time_job *j = u;
+    double t0 = clock_ms(CLOCK_THREAD_CPUTIME_ID);
+    demo_state st = *j->st; /* each band its own state, as demo_draw_threads */
+    demo_draw(c, &st);
+    if (band < TIME_MAXB)
+        j->cpu[band] = clock_ms(CLOCK_THREAD_CPUTIME_ID) - t0;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static double median_of(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+/* one page on nthreads: median wall and CPU ms; bands' CPU into bc */
+static void time_one(fx_memfb *fb, int page, int nthreads, int reps, double *ms, double *cpu, double *bc, int *bands)
+{
+    double wall[64], pc[64], b[TIME_MAXB][64];
+    demo_state st;
+    demo_state_init(&st, fb->surf.w, fb->surf.h);
+    st.page = page;
+    *bands = nthreads > 1 && demo_pages[page].bands ? (nthreads < TIME_MAXB ? nthreads : TIME_MAXB) : 1;
+    for (int k = -1; k < reps; k++) {
+        fx_ctx c;
+        fx_ctx_init(&c, &fb->surf);
+        time_job j;
+        memset(&j, 0, sizeof j);
+        j.st = &st;
+        double t0 = clock_ms(CLOCK_MONOTONIC), c0 = clock_ms(CLOCK_PROCESS_CPUTIME_ID);
+        if (*bands > 1)
+            fx_par_bands(&c, *bands, *bands, time_band, &j);
+        else
+            time_band(&j, &c, 0);
+        if (k < 0)
+            continue;
+        wall[k] = clock_ms(CLOCK_MONOTONIC) - t0;
+        pc[k] = clock_ms(CLOCK_PROCESS_CPUTIME_ID) - c0;
+        for (int i = 0; i < *bands; i++)
+            b[i][k] = j.cpu[i];
+    }
+    *ms = median_of(wall, reps);
+    *cpu = median_of(pc, reps);
+    for (int i = 0; i < *bands; i++)
+        bc[i] = median_of(b[i], reps);
+}
+
+static int time_pages(const char *size, const char *format, const char *threads, const char *reps_s)
+{
+    int w, h, nthreads = atoi(threads), reps = atoi(reps_s);
+    fx_format f = fx_format_from_name(format);
+    if (sscanf(size, "%dx%d", &w, &h) != 2 || w < 1 || h < 1 || w > 8192 || h > 8192 || f == FX_FMT_COUNT ||
+        nthreads < 1 || nthreads > 64 || reps < 1 || reps > 64) {
+        fprintf(stderr, "fixel-demo: --time-pages WxH FORMAT THREADS REPS\n");
+        return 2;
+    }
+    fx_memfb fb;
+    if (fx_memfb_create(&fb, w, h, f) < 0)
+        return 1;
+    for (int p = 0; p < demo_npages; p++) {
+        double ms1, cpu1, msn, cpun, bc1[TIME_MAXB], bc[TIME_MAXB];
+        int b1, bn;
+        time_one(&fb, p, 1, reps, &ms1, &cpu1, bc1, &b1);
+        time_one(&fb, p, nthreads, reps, &msn, &cpun, bc, &bn);
+        printf("%s %.3f %.3f %.3f %.3f %d ", demo_pages[p].name, ms1, cpu1, msn, cpun, bn);
+        for (int i = 0; i < bn; i++)
+            printf("%s%.3f", i ? "/" : "", bc[i]);
+        printf("\n");
+        fflush(stdout);
+    }
+    fx_memfb_destroy(&fb);
     return 0;
 }
 
@@ -534,6 +639,14 @@ int main(int argc, char **argv)
             force_headless = 1;
         } else if (!strcmp(a, "--update")) {
             update = 1;
+        } else if (!strcmp(a, "--time-pages") && i + 4 < argc) {
+            return time_pages(argv[i + 1], argv[i + 2], argv[i + 3], argv[i + 4]);
+        } else if (!strcmp(a, "-j") && i + 1 < argc) {
+            char extra;
+            if (sscanf(argv[++i], "%d%c", &g_threads, &extra) != 1 || g_threads < 1 || g_threads > 64) {
+                fprintf(stderr, "fixel-demo: bad thread count '%s' (expected 1..64)\n", argv[i]);
+                return 2;
+            }
         } else if (!strcmp(a, "--list")) {
             for (int k = 0; k < demo_npages; k++)
                 printf("%s\n", demo_pages[k].name);

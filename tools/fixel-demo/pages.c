@@ -23,6 +23,7 @@
 #include "fixel/line.h"
 #include "fixel/mat3d.h"
 #include "fixel/mesh.h"
+#include "fixel/par.h"
 #include "fixel/render3d.h"
 #include "fixel/texture.h"
 #include "fixel/viz.h"
@@ -91,7 +92,7 @@ static void page_lines(fx_ctx *c, demo_state *st)
     /* a clipped line whose ends are far outside the surface */
     panel(c, 8, top + 268, 300, 176, "Clipped from +-100000, exactly");
     fx_ctx k = *c;
-    fx_ctx_set_clip(&k, (fx_rect){9, top + 286, 307, top + 443});
+    fx_ctx_set_clip(&k, fx_rect_intersect((fx_rect){9, top + 286, 307, top + 443}, c->clip));
     for (int i = 0; i < 24; i++) {
         fx_angle a = (fx_angle)((uint32_t)i * (0x80000000u / 24));
         int32_t dx = fx16_round(fx16_mul(fx_cos(a), fx16_from_int(100000)));
@@ -252,7 +253,7 @@ static void page_clipping(fx_ctx *c, demo_state *st)
     fx_rect area = {8, top, 572, st->h - 8};
     panel(c, area.x0, area.y0, area.x1 - area.x0, area.y1 - area.y0, NULL);
     fx_ctx a = *c;
-    fx_ctx_set_clip(&a, (fx_rect){area.x0 + 1, area.y0 + 1, area.x1 - 1, area.y1 - 1});
+    fx_ctx_set_clip(&a, fx_rect_intersect((fx_rect){area.x0 + 1, area.y0 + 1, area.x1 - 1, area.y1 - 1}, c->clip));
     fx_ctx_set_coords(&a, FX_COORDS_COURSE);
     fx_rect w = {st->win.x0, H - st->win.y1, st->win.x1, H - st->win.y0};
     fx_rect ar = {area.x0, H - area.y1, area.x1, H - area.y0};
@@ -478,7 +479,7 @@ static void page_textures(fx_ctx *c, demo_state *st)
         styled_rect(&s, x + 7, top + 22, 136, 140);
     }
     /* a checkerboard texture mapped onto a quad */
-    static uint32_t texels[64 * 64];
+    uint32_t texels[64 * 64]; /* per call: bands draw at once (fixel/par.h) */
     for (int y = 0; y < 64; y++)
         for (int x = 0; x < 64; x++)
             texels[y * 64 + x] = ((x / 8 + y / 8) & 1) ? 0xFFF2C14Eu : 0xFF1E3A5Fu;
@@ -651,7 +652,9 @@ static void page_colour(fx_ctx *c, demo_state *st)
     int32_t top = DEMO_TAB_H + 8;
     panel(c, 8, top, 260, 270, "HSV wheel (click to pick)");
     int32_t cx = WHEEL_CX, cy = WHEEL_CY, R = WHEEL_R;
-    for (int32_t y = -R; y <= R; y++)
+    /* only the rows of the clip (a band draws its own; fixel/par.h) */
+    int32_t ya = c->clip.y0 - cy > -R ? c->clip.y0 - cy : -R, yb = c->clip.y1 - 1 - cy < R ? c->clip.y1 - 1 - cy : R;
+    for (int32_t y = ya; y <= yb; y++)
         for (int32_t x = -R; x <= R; x++) {
             uint32_t d = fx_hypot(x, y);
             if (d > (uint32_t)R)
@@ -660,7 +663,8 @@ static void page_colour(fx_ctx *c, demo_state *st)
             h.h = fx_angle_to_deg16(fx_atan2(-y, x));
             h.s = (fx16)((int64_t)d * FX16_ONE / R);
             h.v = FX16_ONE;
-            fx_surface_put(&c->surf, cx + x, cy + y, fx_hsv_to_rgb(h));
+            if (cx + x >= c->clip.x0 && cx + x < c->clip.x1 && cy + y >= c->clip.y0 && cy + y < c->clip.y1)
+                fx_surface_put(&c->surf, cx + x, cy + y, fx_hsv_to_rgb(h));
         }
     int32_t px = st->pick_x - cx, py = st->pick_y - cy;
     if (fx_hypot(px, py) > (uint32_t)R)
@@ -753,6 +757,16 @@ static void page_colour(fx_ctx *c, demo_state *st)
     draw_hatching(c, 16, top + 396, 56, 36);
 }
 
+/* c's clip (the whole surface, or a band: fixel/par.h) inside the
+ * rectangle r, in the coordinates of r's sub-surface */
+static fx_rect clip_in(const fx_ctx *c, fx_rect r)
+{
+    fx_rect k = fx_rect_intersect(c->clip, r);
+    if (fx_rect_empty(k))
+        return (fx_rect){0, 0, 0, 0};
+    return (fx_rect){k.x0 - r.x0, k.y0 - r.y0, k.x1 - r.x0, k.y1 - r.y0};
+}
+
 /* ---- 3D: the mesh renderer on two objects, one camera ---- */
 static const char *shading_name(int s)
 {
@@ -762,6 +776,9 @@ static const char *shading_name(int s)
 static void draw_object(fx_ctx *c, demo_state *st, fx_rect r, fx_mesh_kind kind, fx_color col, fx_angle spin)
 {
     fx_surface s = fx_surface_sub(c->surf, r);
+    fx_rect band = clip_in(c, r);
+    if (fx_rect_empty(band))
+        return;
     fx_mesh_params mp = {kind, FX16_ONE * 7 / 10, 0, 0, 8, 0};
     if (kind == FX_MESH_TORUS)
         mp = (fx_mesh_params){kind, FX16_ONE + FX16_HALF, FX16_ONE / 2 + FX16_ONE / 8, 0, 20, 32};
@@ -793,6 +810,7 @@ static void draw_object(fx_ctx *c, demo_state *st, fx_rect r, fx_mesh_kind kind,
         m.cap_verts = nv;
         m.cap_tris = nt;
         if (fx_mesh_make(&m, &mp) == 0 && fx3d_init(rd, &s, ms, 4, ps, 2) == 0) {
+            rd->ctx.clip = fx_rect_intersect(rd->ctx.clip, band);
             fx3d_set_depth(rd, z, 32);
             fx_camera_view(&st->cam, &rd->view);
             fx3d_perspective(rd, fx_angle_from_deg(40), fx16_from_ratio(s.w, s.h), FX16_ONE / 2, 50 * FX16_ONE);
@@ -912,7 +930,7 @@ static void draw_mountain(fx_ctx *c, fx_rect r)
 static void page_fractals(fx_ctx *c, demo_state *st)
 {
     int32_t top = DEMO_TAB_H + 8;
-    static uint32_t lut[64];
+    uint32_t lut[64];
     dwell_lut(lut, 64, c->surf.format, FX_CMAP_HOT);
     fx_dwell_pal pal = {lut, 64, 65536, 1, fx_pack(c->surf.format, 0xFF000000u)};
     /* Mandelbrot */
@@ -924,14 +942,14 @@ static void page_fractals(fx_ctx *c, demo_state *st)
         maxiter += 96;
     fx_fractal_view mv = fx_mandel_view(st->mcre, st->mcim, st->mwidth, mr.x1 - mr.x0, mr.y1 - mr.y0, maxiter);
     fx_surface ms = fx_surface_sub(c->surf, mr);
-    fx_fractal_render(&ms, (fx_rect){0, 0, ms.w, ms.h}, &mv, &pal);
+    fx_fractal_render(&ms, clip_in(c, mr), &mv, &pal);
     /* Julia of the pointer's point in the Mandelbrot frame */
     panel(c, 404, top, 388, 250, NULL);
     int32_t jx = st->julia_x - mr.x0, jy = st->julia_y - mr.y0;
     fx56 jre = fx_fractal_re(&mv, jx), jim = fx_fractal_im(&mv, jy);
     fx_rect jr = {410, top + 20, 786, top + 244};
     fx_fractal_view jv = fx_julia_view(0, 0, jre, jim, 3 * FX56_ONE, jr.x1 - jr.x0, jr.y1 - jr.y0, 192);
-    static uint32_t lut2[64];
+    uint32_t lut2[64];
     dwell_lut(lut2, 64, c->surf.format, FX_CMAP_VIRIDIS);
     fx_dwell_pal pal2 = {lut2, 64, 65536, 1, fx_pack(c->surf.format, 0xFF000000u)};
     fx_surface js = fx_surface_sub(c->surf, jr);
@@ -1029,7 +1047,7 @@ static void page_viz(fx_ctx *c, demo_state *st)
 {
     (void)st;
     int32_t top = DEMO_TAB_H + 8;
-    static int32_t g[GW * GH], u[GW * GH], vv[GW * GH];
+    int32_t g[GW * GH], u[GW * GH], vv[GW * GH]; /* per call: bands draw at once */
     for (int y = 0; y < GH; y++)
         for (int x = 0; x < GW; x++)
             g[y * GW + x] = field(x, y);
@@ -1125,21 +1143,21 @@ static void page_objects(fx_ctx *c, demo_state *st) { demo_objects_page(c, st, D
 static void page_anim(fx_ctx *c, demo_state *st) { demo_anim_page(c, st, DEMO_TAB_H + 8); }
 
 const demo_page demo_pages[] = {
-    {"lines", "Lines", page_lines},
-    {"circles", "Circles", page_circles},
-    {"clipping", "Clipping", page_clipping},
-    {"fills", "Fills", page_fills},
-    {"textures", "Textures", page_textures},
-    {"transforms", "Transform", page_transforms},
-    {"colour", "Colour", page_colour},
-    {"3d", "3D", page_3d},
-    {"vsd", "Hidden", page_vsd},
-    {"objects", "Objects", page_objects},
-    {"fractals", "Fractals", page_fractals},
-    {"viz", "Viz", page_viz},
-    {"glut", "GLUT", demo_page_glut},
-    {"raytrace", "Ray trace", page_rt},
-    {"anim", "Animation", page_anim},
+    {"lines", "Lines", page_lines, 1},
+    {"circles", "Circles", page_circles, 1},
+    {"clipping", "Clipping", page_clipping, 0},     /* drawn in the course frame (mirrored rows) */
+    {"fills", "Fills", page_fills, 0},              /* flood fills read the picture */
+    {"textures", "Textures", page_textures, 1},
+    {"transforms", "Transform", page_transforms, 1},
+    {"colour", "Colour", page_colour, 1},
+    {"3d", "3D", page_3d, 1},
+    {"vsd", "Hidden", page_vsd, 0},                 /* static buffers, painted unclipped */
+    {"objects", "Objects", page_objects, 0},        /* scene scripts into sub-surfaces, unclipped */
+    {"fractals", "Fractals", page_fractals, 0},     /* the Julia panel is drawn whole into its sub-surface */
+    {"viz", "Viz", page_viz, 1},
+    {"glut", "GLUT", demo_page_glut, 0},            /* one GL context, blitted */
+    {"raytrace", "Ray trace", page_rt, 0},          /* a static picture, blitted */
+    {"anim", "Animation", page_anim, 0},            /* the camera flight keeps state between frames */
 };
 const int demo_npages = (int)(sizeof demo_pages / sizeof demo_pages[0]);
 /* Fourteen 57-pixel tabs still hold the longest label ("Transform",
@@ -1186,7 +1204,7 @@ void demo_state_init(demo_state *st, int32_t w, int32_t h)
 
 void demo_draw(fx_ctx *c, demo_state *st)
 {
-    fx_ctx_reset_clip(c);
+    /* c's clip stays: the whole surface, or the band being drawn */
     color(c, BG);
     fx_clear(c);
     /* the tab bar */
@@ -1200,6 +1218,31 @@ void demo_draw(fx_ctx *c, demo_state *st)
                   i == st->page ? ACCENT : DIM, "%s", demo_pages[i].title);
     }
     demo_pages[st->page].draw(c, st);
+}
+
+typedef struct demo_band_job {
+    const demo_state *st;
+} demo_band_job;
+
+static void draw_band(void *user, fx_ctx *c, int band)
+{
+    (void)band;
+    demo_state st = *((demo_band_job *)user)->st; /* a page may touch its state: each band its own */
+    demo_draw(c, &st);
+}
+
+int demo_draw_threads(fx_ctx *c, demo_state *st, int nthreads)
+{
+    if (nthreads <= 1 || !demo_pages[st->page].bands) {
+        demo_draw(c, st);
+        return 1;
+    }
+    demo_band_job j = {st};
+    if (fx_par_bands(c, nthreads, nthreads, draw_band, &j) < 0) {
+        demo_draw(c, st);
+        return 1;
+    }
+    return nthreads;
 }
 
 static int near(int32_t x, int32_t y, int32_t px, int32_t py)

@@ -18,6 +18,7 @@
 #include "fixel/env.h"
 #include "fixel/error.h"
 #include "fixel/memfb.h"
+#include "fixel/par.h"
 #include "fixel/rt_mt.h"
 #include "fixel/scene.h"
 
@@ -30,8 +31,11 @@ static const char usage[] =
     "  -s WxH       surface size, overriding the script's 'size'\n"
     "  -f FORMAT    pixel format, overriding the script's 'format'\n"
     "  --trace      print each algorithm's steps (decision tables) on stdout\n"
-    "  -j N         ray trace ('raytrace') on N threads (default: every core; same pixels);\n"
-    "               with --display the rows appear as they finish\n"
+    "  -j N         draw on N threads (1..64; the same pixels as one): the script in N\n"
+    "               bands of rows at once (fixel/par.h), or, when it cannot be (seed\n"
+    "               fills, 'present', --trace, --display, stdin), only its 'raytrace';\n"
+    "               without -j only 'raytrace' runs on every core; with --display the\n"
+    "               traced rows appear as they finish\n"
     "  --frames N   render frames 0..N-1 (1..100000) of an animated script, frame k at\n"
     "               the clock k/FPS seconds, each to -o OUT, which must hold one %d\n"
     "               (e.g. %04d: out/frame-0000.png ...)\n"
@@ -47,7 +51,7 @@ static const char usage[] =
 typedef struct host {
     fx_memfb fb;
     int have_fb;
-    int threads; /* for 'raytrace' */
+    int threads; /* -j: bands of a script, or 'raytrace' rows */
     int display; /* --display: show ray-traced rows as they finish */
     struct loaded {
         uint8_t *data;
@@ -660,7 +664,15 @@ int main(int argc, char **argv)
         fx_scene_fix_size(&sc, w, h);
     if (fmt != FX_FMT_COUNT)
         fx_scene_fix_format(&sc, fmt);
-    r = streaming ? run_stream(&sc, &H) : run_lines(&sc, (const char *)text, len, &H, display);
+    /* Whole scripts in bands when -j asks for it, where nothing is shown or
+     * traced line by line (a display shows 'present' frames and ray-traced
+     * rows as they come). Not by default: every band repeats the script's
+     * set-up (a big font's glyph look-ups, tessellation), which a CPU limit
+     * set for one thread would count N times. */
+    if (threads > 1 && !streaming && !display && !trace)
+        r = fx_scene_run_mt(&sc, (const char *)text, len, H.threads, NULL);
+    else
+        r = streaming ? run_stream(&sc, &H) : run_lines(&sc, (const char *)text, len, &H, display);
     if (r < 0) {
         fprintf(stderr, "%s:%d:%d: %s\n", strcmp(script, "-") ? script : "<stdin>", sc.err_line,
                 sc.err_col, sc.err);

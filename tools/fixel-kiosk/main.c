@@ -1463,6 +1463,7 @@ static void usage(FILE *f)
             "  --full            redraw every widget each frame (default: only changed ones)\n"
             "  --mem-report N    headless: print RSS and heap in use after frame N and at the end\n"
             "  --size WxH        headless surface size (default: the config's size, else 480x320)\n"
+            "  --format F        headless pixel format: XRGB8888 (default) or RGB565, as on a panel\n"
             "Screens: \"output NAME\" lines split the config into one section per display (up to 4,\n"
             "one process; docs/kiosk-screens.md).\n"
             "  --help            this text\n"
@@ -1478,6 +1479,7 @@ int main(int argc, char **argv)
     kiosk *k = &K;
     const char *cfgpath = NULL, *data = "-", *out = NULL;
     int frames = 1, last_only = 0, sw = 0, sh = 0, mem_frame = -1;
+    fx_format headless_fmt = FX_FMT_COUNT; /* --format: the memory display's, as a panel's would be */
     k->fd = -1;
     k->pressed = -1;
     for (int i = 1; i < argc; i++) {
@@ -1538,6 +1540,12 @@ int main(int argc, char **argv)
                 fprintf(stderr, "fixel-kiosk: --size wants WxH\n");
                 return 2;
             }
+        } else if (!strcmp(a, "--format") && i + 1 < argc) {
+            headless_fmt = fx_format_from_name(argv[++i]);
+            if (headless_fmt != FX_FMT_XRGB8888 && headless_fmt != FX_FMT_RGB565) {
+                fprintf(stderr, "fixel-kiosk: --format wants XRGB8888 or RGB565\n");
+                return 2;
+            }
         } else if (a[0] == '-' && a[1]) { fprintf(stderr, "fixel-kiosk: unknown option %s\n", a); usage(stderr); return 2; }
         else cfgpath = a;
     }
@@ -1572,6 +1580,7 @@ int main(int argc, char **argv)
         o.display.backend = FX_BACKEND_MEMORY;
         o.display.memory_w = sw ? sw : k->cfg.width ? k->cfg.width : 480;
         o.display.memory_h = sh ? sh : k->cfg.height ? k->cfg.height : 320;
+        o.display.format = headless_fmt;
         o.input = 0;
         /* blocking reads: a scripted stream is consumed frame by frame */
         fcntl(k->fd, F_SETFL, fcntl(k->fd, F_GETFL) & ~O_NONBLOCK);

@@ -82,7 +82,8 @@ struct fx_scene {
     uint8_t size_fixed, format_fixed; /* set by the host: script 'size'/'format' ignored */
     /* set by the host after fx_scene_init (kept out of fx_scene_host so
      * its initialisers stay as they are); NULL: the core ray traces on the
-     * calling thread */
+     * calling thread (in a banded scene: only the band's part). A banded
+     * scene hands it the whole rectangle */
     fx_scene_raytrace_fn raytrace;
     /* arena */
     uint8_t *arena;
@@ -94,6 +95,10 @@ struct fx_scene {
     /* the first error */
     int err_line, err_col;
     char err[200];
+    /* banded rendering (fx_scene_set_band): every clip this scene draws
+     * through is intersected with band; set by a parallel player */
+    int banded;
+    fx_rect band;
 };
 
 typedef struct fx_scene_cmd {
@@ -103,6 +108,11 @@ typedef struct fx_scene_cmd {
     unsigned flags;    /* FX_SCENE_DRAWS: needs the surface */
 } fx_scene_cmd;
 #define FX_SCENE_DRAWS 1u
+/* The command cannot be drawn in bands (fx_scene_set_band): it reads pixels
+ * other than the ones it writes (seed fills), writes outside the clip, or
+ * shows the surface mid-frame. A parallel player runs a script holding one
+ * on a single thread. */
+#define FX_SCENE_SERIAL 2u
 
 /* Set up a scene: default size 320x240 XRGB8888, colour white. The arena
  * (any size; 0 is allowed) holds module state such as depth buffers. */
@@ -129,6 +139,19 @@ int fx_scene_end_script(fx_scene *sc);
  * arena cannot hold the animation state. */
 int fx_scene_set_clock(fx_scene *sc, fx16 t);
 
+/* Banded rendering, for running one script on several threads (the
+ * boards side's fx_scene_run_mt, fixel/par.h): every pixel the scene
+ * writes is then inside band (surface coordinates; the 3D pipeline's and
+ * the ray tracer's targets included), while every primitive still steps
+ * exactly as on the whole surface, so scenes on disjoint bands of one
+ * surface together draw the one-band picture. Call before the first
+ * command; a script clip is intersected with the band. */
+void fx_scene_set_band(fx_scene *sc, fx_rect band);
+/* 0 when every command of the script can be drawn in bands; else the line
+ * number of the first command flagged FX_SCENE_SERIAL (unknown commands
+ * count as bandable: running the script reports them). */
+int fx_scene_script_serial(const char *text, size_t len);
+
 /* ---- for command implementations ---- */
 /* Record an error at the current token and return -FX_EINVAL. */
 int fx_scene_error(fx_scene *sc, const char *fmt, ...)
@@ -151,6 +174,10 @@ int fx_scene_arg_word(fx_scene *sc, char *buf, size_t size);
 int fx_scene_arg_string(fx_scene *sc, char *buf, size_t size);
 /* One of the given words (NULL-terminated list): returns its index. */
 int fx_scene_arg_choice(fx_scene *sc, const char *const *choices);
+/* Narrow a clip rectangle on the scene's surface to the band (nothing when
+ * the scene is not banded): for targets of their own, such as the 3D
+ * pipeline's context. */
+void fx_scene_band_clip(const fx_scene *sc, fx_rect *clip);
 /* Take size bytes (8-byte aligned, zeroed) from the arena; NULL when full. */
 void *fx_scene_alloc(fx_scene *sc, size_t size);
 

@@ -1,0 +1,355 @@
+/* SPDX-License-Identifier: MIT */
+/* fixel — whole frames on several threads, in bands (see par.h). */
+#include "fixel/par.h"
+
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "fixel/error.h"
+#include "fixel/rt.h"
+#include "posix_int.h"
+
+/* ---- drawing functions ---- */
+
+typedef struct bands_job {
+    const fx_ctx *c;
+    int nbands;
+    fx_par_draw_fn draw;
+    void *user;
+    atomic_int next;
+} bands_job;
+
+static fx_rect band_rect(fx_rect r, int k, int n)
+{
+    int64_t h = (int64_t)r.y1 - r.y0;
+    fx_rect b = r;
+    b.y0 = (int32_t)(r.y0 + h * k / n);
+    b.y1 = (int32_t)(r.y0 + h * (k + 1) / n);
+    return b;
+}
+
+static void *bands_worker(void *arg)
+{
+    bands_job *j = arg;
+    for (;;) {
+        int k = atomic_fetch_add(&j->next, 1);
+        if (k >= j->nbands)
+            return 0;
+        fx_ctx c = *j->c;
+        c.clip = band_rect(j->c->clip, k, j->nbands);
+        if (!fx_rect_empty(c.clip))
+            j->draw(j->user, &c, k);
+    }
+}
+
+int fx_par_bands(const fx_ctx *c, int nbands, int nthreads, fx_par_draw_fn draw, void *user)
+{
+    if (!c || !draw || nthreads < 1 || nthreads > 64 || nbands < 0 || nbands > 1024)
+        return -FX_EINVAL;
+    bands_job j = {.c = c, .nbands = nbands ? nbands : nthreads, .draw = draw, .user = user};
+    atomic_init(&j.next, 0);
+    return fx_posix_workers(bands_worker, &j, nthreads < j.nbands ? nthreads : j.nbands);
+}
+
+/* ---- scene scripts ---- */
+
+typedef struct scene_job scene_job;
+
+typedef struct band {
+    scene_job *job;
+    fx_scene *sc;
+    int index;
+    int rc;
+} band;
+
+struct scene_job {
+    const char *text;
+    size_t len;
+    int n;
+    band b[64];
+    fx_scene_host host; /* the caller's */
+    fx_scene_raytrace_fn raytrace;
+    pthread_mutex_t host_lock; /* the host's functions, one call at a time */
+    int have_surface;
+    fx_surface surf;
+    /* files and images loaded for one band serve the others (a 48 MiB font
+     * is read and unpacked once, not once per band) */
+    struct loaded {
+        char path[256];
+        const uint8_t *data;
+        size_t len;
+        fx_surface img;
+        int rc, image;
+    } cache[32];
+    int ncache;
+    atomic_int next;
+    /* the collective steps (the ray tracer): a barrier of the bands still
+     * running the script */
+    pthread_mutex_t lock;
+    pthread_cond_t cond;
+    int active, arrived, go;
+    unsigned gen;
+    /* the rectangle traced together */
+    const fx_rt_scene *rt;
+    int32_t rx0, rx1, ry0, ry1;
+    atomic_int rt_next;
+};
+
+/* Wait until every band still running has arrived (bands that finished
+ * their script, or failed, no longer count). */
+static void barrier(scene_job *j)
+{
+    pthread_mutex_lock(&j->lock);
+    unsigned gen = j->gen;
+    if (++j->arrived >= j->active) {
+        j->arrived = 0;
+        j->gen++;
+        pthread_cond_broadcast(&j->cond);
+    } else {
+        while (gen == j->gen)
+            pthread_cond_wait(&j->cond, &j->lock);
+    }
+    pthread_mutex_unlock(&j->lock);
+}
+
+static void band_done(scene_job *j)
+{
+    pthread_mutex_lock(&j->lock);
+    j->active--;
+    if (j->arrived && j->arrived >= j->active) {
+        j->arrived = 0;
+        j->gen++;
+        pthread_cond_broadcast(&j->cond);
+    }
+    pthread_mutex_unlock(&j->lock);
+}
+
+static int host_make_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
+{
+    band *b = u;
+    scene_job *j = b->job;
+    int r = 0;
+    pthread_mutex_lock(&j->host_lock);
+    if (!j->have_surface) {
+        r = j->host.make_surface(j->host.user, w, h, f, &j->surf);
+        j->have_surface = r >= 0;
+    }
+    pthread_mutex_unlock(&j->host_lock);
+    if (r < 0)
+        return r;
+    /* every band asks for the same size and format: it runs the same script */
+    if (j->surf.w != w || j->surf.h != h || j->surf.format != f)
+        return -FX_EINVAL;
+    *out = j->surf;
+    fx_rect whole = {0, 0, w, h};
+    fx_scene_set_band(b->sc, band_rect(whole, b->index, j->n));
+    return 0;
+}
+
+/* The cache entry of path (image or file), or NULL; under host_lock. */
+static struct loaded *cached(scene_job *j, const char *path, int image)
+{
+    for (int i = 0; i < j->ncache; i++)
+        if (j->cache[i].image == image && !strcmp(j->cache[i].path, path))
+            return &j->cache[i];
+    return 0;
+}
+
+static struct loaded *remember(scene_job *j, const char *path, int image)
+{
+    if (j->ncache == 32 || strlen(path) >= sizeof j->cache[0].path)
+        return 0;
+    struct loaded *l = &j->cache[j->ncache++];
+    memset(l, 0, sizeof *l);
+    strcpy(l->path, path);
+    l->image = image;
+    return l;
+}
+
+static int host_load_file(void *u, const char *path, const uint8_t **data, size_t *len)
+{
+    scene_job *j = ((band *)u)->job;
+    pthread_mutex_lock(&j->host_lock);
+    struct loaded *l = cached(j, path, 0);
+    int r;
+    if (l) {
+        r = l->rc;
+        *data = l->data;
+        *len = l->len;
+    } else {
+        r = j->host.load_file(j->host.user, path, data, len);
+        if ((l = remember(j, path, 0)))
+            l->rc = r, l->data = r < 0 ? 0 : *data, l->len = r < 0 ? 0 : *len;
+    }
+    pthread_mutex_unlock(&j->host_lock);
+    return r;
+}
+
+static int host_load_image(void *u, const char *path, fx_surface *out)
+{
+    scene_job *j = ((band *)u)->job;
+    pthread_mutex_lock(&j->host_lock);
+    struct loaded *l = cached(j, path, 1);
+    int r;
+    if (l) {
+        r = l->rc;
+        if (r >= 0)
+            *out = l->img;
+    } else {
+        r = j->host.load_image(j->host.user, path, out);
+        if ((l = remember(j, path, 1)))
+            l->rc = r, l->img = r < 0 ? (fx_surface){0} : *out;
+    }
+    pthread_mutex_unlock(&j->host_lock);
+    return r;
+}
+
+/* 'raytrace': every band arrives with the same rectangle; the first sets it
+ * up, all trace rows of it from a shared counter, and none goes on until
+ * the whole rectangle is done (the bands' later commands draw over it). */
+static int band_raytrace(void *u, const struct fx_rt_scene *s, const fx_surface *surf, int32_t x, int32_t y,
+                         int32_t w, int32_t h)
+{
+    scene_job *j = ((band *)u)->job;
+    barrier(j); /* every band's earlier drawing is done */
+    pthread_mutex_lock(&j->lock);
+    if (!j->rt) {
+        int64_t x1 = (int64_t)x + w, y1 = (int64_t)y + h;
+        j->rt = s;
+        j->rx0 = x < 0 ? 0 : x;
+        j->ry0 = y < 0 ? 0 : y;
+        j->rx1 = (int32_t)(x1 > surf->w ? surf->w : x1);
+        j->ry1 = (int32_t)(y1 > surf->h ? surf->h : y1);
+        atomic_store(&j->rt_next, 0);
+    }
+    pthread_mutex_unlock(&j->lock);
+    enum { ROWS = 4 };
+    for (;;) {
+        int64_t y0 = j->ry0 + (int64_t)atomic_fetch_add(&j->rt_next, 1) * ROWS;
+        if (y0 >= j->ry1 || j->rx0 >= j->rx1)
+            break;
+        int32_t y1 = (int32_t)(y0 + ROWS < j->ry1 ? y0 + ROWS : j->ry1);
+        fx_rt_render(j->rt, surf, j->rx0, (int32_t)y0, j->rx1 - j->rx0, y1 - (int32_t)y0);
+    }
+    barrier(j); /* the whole rectangle is done */
+    pthread_mutex_lock(&j->lock);
+    j->rt = 0; /* the next 'raytrace' sets up anew (all are past its use) */
+    pthread_mutex_unlock(&j->lock);
+    return 0;
+}
+
+/* A band runs the script; the bands run all at once, one per thread (the
+ * collective steps wait for every band), so the number of bands is the
+ * number of threads that could be started. */
+static void *scene_worker(void *arg)
+{
+    scene_job *j = arg;
+    pthread_mutex_lock(&j->lock);
+    while (!j->go)
+        pthread_cond_wait(&j->cond, &j->lock);
+    pthread_mutex_unlock(&j->lock);
+    int k = atomic_fetch_add(&j->next, 1);
+    if (k < j->n) {
+        band *b = &j->b[k];
+        b->rc = fx_scene_run(b->sc, j->text, j->len);
+        band_done(j);
+    }
+    return 0;
+}
+
+int fx_scene_run_mt(fx_scene *sc, const char *text, size_t len, int nthreads, int *bands)
+{
+    if (bands)
+        *bands = 1;
+    if (!sc || nthreads < 1 || nthreads > 64)
+        return -FX_EINVAL;
+    if (nthreads == 1 || sc->host.trace || sc->have_surface || sc->arena_used || !sc->host.make_surface ||
+        fx_scene_script_serial(text, len))
+        return fx_scene_run(sc, text, len);
+    scene_job *j = calloc(1, sizeof *j);
+    fx_scene *extra = calloc((size_t)nthreads - 1, sizeof *extra);
+    uint8_t *arenas = sc->arena_size ? malloc(sc->arena_size * (size_t)(nthreads - 1)) : 0;
+    if (!j || !extra || (sc->arena_size && !arenas)) {
+        free(j);
+        free(extra);
+        free(arenas);
+        return fx_scene_run(sc, text, len);
+    }
+    j->text = text;
+    j->len = len;
+    j->host = sc->host;
+    j->raytrace = sc->raytrace;
+    atomic_init(&j->next, 0);
+    atomic_init(&j->rt_next, 0);
+    pthread_mutex_init(&j->host_lock, 0);
+    pthread_mutex_init(&j->lock, 0);
+    pthread_cond_init(&j->cond, 0);
+    pthread_t t[63];
+    int started = 0;
+    while (started < nthreads - 1 && pthread_create(&t[started], 0, scene_worker, j) == 0)
+        started++;
+    j->n = started + 1;
+
+    fx_scene_host wrapped = sc->host;
+    wrapped.make_surface = host_make_surface;
+    wrapped.load_file = sc->host.load_file ? host_load_file : 0;
+    wrapped.load_image = sc->host.load_image ? host_load_image : 0;
+    wrapped.present = 0; /* 'present' is serial: never called */
+    for (int k = 0; k < j->n; k++) {
+        fx_scene *s = k ? &extra[k - 1] : sc;
+        if (k) {
+            *s = *sc; /* size, format and what the host fixed */
+            s->arena = arenas + sc->arena_size * (size_t)(k - 1);
+        }
+        j->b[k] = (band){.job = j, .sc = s, .index = k};
+        s->host = wrapped;
+        s->host.user = &j->b[k];
+        s->raytrace = band_raytrace;
+    }
+    pthread_mutex_lock(&j->lock);
+    j->active = j->n;
+    j->go = 1;
+    pthread_cond_broadcast(&j->cond);
+    pthread_mutex_unlock(&j->lock);
+    scene_worker(j);
+    for (int i = 0; i < started; i++)
+        pthread_join(t[i], 0);
+
+    int rc = 0;
+    for (int k = 0; k < j->n; k++)
+        if (j->b[k].rc < 0) {
+            rc = j->b[k].rc;
+            if (k) {
+                memcpy(sc->err, extra[k - 1].err, sizeof sc->err);
+                sc->err_line = extra[k - 1].err_line;
+                sc->err_col = extra[k - 1].err_col;
+            }
+            break;
+        }
+    /* sc goes on as an ordinary scene on the whole surface */
+    sc->host = j->host;
+    sc->raytrace = j->raytrace;
+    sc->banded = 0;
+    if (sc->have_surface) {
+        sc->ctx.trace_user = sc->host.user;
+        fx_ctx_reset_clip(&sc->ctx);
+    }
+    if (bands)
+        *bands = j->n;
+    pthread_cond_destroy(&j->cond);
+    pthread_mutex_destroy(&j->lock);
+    pthread_mutex_destroy(&j->host_lock);
+    free(arenas);
+    free(extra);
+    free(j);
+    return rc;
+}
+
+int fx_par_cpu_count(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n < 1 ? 1 : n > 64 ? 64 : (int)n;
+}

@@ -1,0 +1,383 @@
+/* SPDX-License-Identifier: MIT */
+/* fixel-bench --frames: the frames a user sees (issue #27, docs/PERFORMANCE.md).
+ * Milliseconds per frame of every fixel-demo page, of the 3D and ray-traced
+ * golden scripts and of every examples/kiosk-*.conf, at 800x480 and
+ * 1920x1080 in XRGB8888 and RGB565, on one thread and on every core (bands:
+ * fixel/par.h), and what presenting a whole frame or a 10% damage rectangle
+ * costs. Each figure is the median of several frames; the table says the
+ * machine's load, and for banded runs the CPU time each band took, which
+ * shows the split when the wall time is noisy (a shared machine). */
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE
+#endif
+#include <dirent.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "fixel/memfb.h"
+#include "fixel/par.h"
+#include "fixel/scene.h"
+#include "frames.h"
+
+extern char **environ;
+
+static double now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec / 1e6;
+}
+
+static double thread_cpu_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec / 1e6;
+}
+
+static double process_cpu_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec / 1e6;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+enum { MAXB = 8 };
+static int REPS = 5; /* -t */
+
+typedef struct cell {
+    double ms;           /* median wall ms per frame */
+    double cpu_ms;       /* median process CPU ms per frame */
+    double band_cpu[MAXB]; /* median CPU ms of each band (pages) */
+    int bands;           /* 1: one thread */
+} cell;
+
+static void row(FILE *o, const char *what, int w, int h, fx_format f, cell a, cell b);
+
+/* ---- demo pages (fixel-demo --time-pages draws and times them) ---- */
+
+/* Run "DEMO --time-pages WxH FORMAT THREADS REPS" and print a row per page. */
+static int demo_rows(FILE *o, const char *demo, int w, int h, fx_format f, int nthreads)
+{
+    char cmd[4400];
+    snprintf(cmd, sizeof cmd, "'%s' --time-pages %dx%d %s %d %d", demo, w, h, fx_format_get(f)->name, nthreads,
+             REPS);
+    FILE *p = popen(cmd, "r");
+    if (!p)
+        return 1;
+    char line[512];
+    int rows = 0;
+    while (fgets(line, sizeof line, p)) {
+        /* NAME MS1 CPU1 MSN CPUN BANDS BANDCPU/BANDCPU... */
+        char name[64], bc[256] = "";
+        cell a, b;
+        memset(&a, 0, sizeof a);
+        memset(&b, 0, sizeof b);
+        if (sscanf(line, "%63s %lf %lf %lf %lf %d %255s", name, &a.ms, &a.cpu_ms, &b.ms, &b.cpu_ms, &b.bands, bc) < 6)
+            continue;
+        a.bands = 1;
+        char *q = bc;
+        for (int k = 0; k < b.bands && k < MAXB && *q; k++) {
+            b.band_cpu[k] = strtod(q, &q);
+            if (*q == '/')
+                q++;
+        }
+        char what[80];
+        snprintf(what, sizeof what, "demo %s", name);
+        row(o, what, w, h, f, a, b);
+        rows++;
+    }
+    return pclose(p) != 0 || !rows;
+}
+
+/* ---- scene scripts ---- */
+
+typedef struct shost {
+    fx_memfb *fb;
+} shost;
+
+static int make_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
+{
+    shost *H = u;
+    if (w != H->fb->surf.w || h != H->fb->surf.h || f != H->fb->surf.format)
+        return -1;
+    memset(H->fb->surf.pixels, 0, (size_t)H->fb->surf.stride * (size_t)h);
+    *out = H->fb->surf;
+    return 0;
+}
+
+static char *slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    char *b = malloc(1 << 20);
+    size_t n = b ? fread(b, 1, (1 << 20) - 1, f) : 0;
+    fclose(f);
+    if (b)
+        b[n] = 0;
+    *len = n;
+    return b;
+}
+
+static cell time_script(fx_memfb *fb, const char *text, size_t len, int nthreads, void *arena, size_t arena_size,
+                        int *ok)
+{
+    cell r;
+    memset(&r, 0, sizeof r);
+    double wall[64], cpu[64], c0cpu[64];
+    *ok = 1;
+    for (int k = -1; k < REPS; k++) {
+        shost H = {fb};
+        fx_scene_host hs = {&H, make_surface, NULL, NULL, NULL, NULL};
+        static fx_scene sc;
+        fx_scene_init(&sc, &hs, arena, arena_size);
+        fx_scene_fix_size(&sc, fb->surf.w, fb->surf.h);
+        fx_scene_fix_format(&sc, fb->surf.format);
+        int bands = 1;
+        double t0 = now_ms(), c0 = process_cpu_ms(), b0 = thread_cpu_ms();
+        if (fx_scene_run_mt(&sc, text, len, nthreads, &bands) < 0)
+            *ok = 0;
+        r.bands = bands;
+        if (k < 0)
+            continue;
+        wall[k] = now_ms() - t0;
+        cpu[k] = process_cpu_ms() - c0;
+        c0cpu[k] = thread_cpu_ms() - b0; /* band 0 runs on this thread */
+    }
+    r.ms = median(wall, REPS);
+    r.cpu_ms = median(cpu, REPS);
+    if (r.bands == 2) { /* the other band: the rest of the process's CPU */
+        r.band_cpu[0] = median(c0cpu, REPS);
+        r.band_cpu[1] = r.cpu_ms - r.band_cpu[0];
+    }
+    return r;
+}
+
+/* ---- kiosk configs (fixel-kiosk --headless, a process per run) ---- */
+
+static double run_kiosk(const char *kiosk, const char *conf, int w, int h, const char *fmt, int frames, double *cpu)
+{
+    char size[32], nf[16];
+    snprintf(size, sizeof size, "%dx%d", w, h);
+    snprintf(nf, sizeof nf, "%d", frames);
+    char *argv[] = {(char *)kiosk, "--headless", "--full", "--frames", nf, "--size", size, "--format", (char *)fmt,
+                    "--data", "/dev/null", (char *)conf, NULL};
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+    pid_t pid;
+    double t0 = now_ms();
+    int e = posix_spawn(&pid, kiosk, &fa, NULL, argv, environ);
+    posix_spawn_file_actions_destroy(&fa);
+    if (e)
+        return -1;
+    int st;
+    struct rusage ru;
+    if (wait4(pid, &st, 0, &ru) < 0 || !WIFEXITED(st) || WEXITSTATUS(st))
+        return -1;
+    *cpu = (double)(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) * 1e3 +
+           (double)(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec) / 1e3;
+    return now_ms() - t0;
+}
+
+/* ms per frame: (N frames - 1 frame) / (N - 1), which takes out the
+ * process start and the config's parse; the median of three */
+static double time_kiosk(const char *kiosk, const char *conf, int w, int h, const char *fmt, double *cpu)
+{
+    enum { N = 31 };
+    double v[3], c[3];
+    for (int k = 0; k < 3; k++) {
+        double ca, cb, a = run_kiosk(kiosk, conf, w, h, fmt, 1, &ca), b = run_kiosk(kiosk, conf, w, h, fmt, N, &cb);
+        if (a < 0 || b < 0)
+            return -1;
+        v[k] = (b - a) / (N - 1);
+        c[k] = (cb - ca) / (N - 1);
+    }
+    double m = median(v, 3);
+    *cpu = median(c, 3);
+    return m < 0 ? 0 : m;
+}
+
+/* ---- present ---- */
+
+static double time_present(fx_memfb *src, fx_memfb *dst, int damage)
+{
+    int32_t w = src->surf.w, h = src->surf.h;
+    /* 10% of the area: a rectangle of sqrt(0.1) of each side, in the middle */
+    int32_t dw = damage ? w * 316 / 1000 : w, dh = damage ? h * 316 / 1000 : h;
+    int32_t x = (w - dw) / 2, y = (h - dh) / 2;
+    fx_surface part = fx_surface_sub(src->surf, (fx_rect){x, y, x + dw, y + dh});
+    enum { N = 21 };
+    double v[N];
+    for (int k = 0; k < N; k++) {
+        double t0 = now_ms();
+        fx_blit(&dst->surf, x, y, &part);
+        v[k] = now_ms() - t0;
+    }
+    return median(v, N);
+}
+
+/* ---- the table ---- */
+
+static const int sizes[2][2] = {{800, 480}, {1920, 1080}};
+static const fx_format fmts[2] = {FX_FMT_XRGB8888, FX_FMT_RGB565};
+
+static void row(FILE *o, const char *what, int w, int h, fx_format f, cell a, cell b)
+{
+    fprintf(o, "%-24s %4dx%-4d %-8s %9.2f %9.2f", what, w, h, fx_format_get(f)->name, a.ms, b.ms);
+    if (b.bands > 1) {
+        fprintf(o, " %5.2fx %8.2f %8.2f  ", a.ms / b.ms, a.cpu_ms, b.cpu_ms);
+        for (int k = 0; k < b.bands && k < MAXB && b.band_cpu[0] > 0; k++)
+            fprintf(o, "%s%.2f", k ? "/" : "", b.band_cpu[k]);
+        fprintf(o, "\n");
+    } else {
+        fprintf(o, "     one thread %8.2f\n", a.cpu_ms);
+    }
+}
+
+static void load(char *buf, size_t n)
+{
+    double l[3] = {0, 0, 0};
+    if (getloadavg(l, 3) < 0)
+        snprintf(buf, n, "unknown");
+    else
+        snprintf(buf, n, "%.2f %.2f %.2f", l[0], l[1], l[2]);
+}
+
+int frames_run(FILE *o, const char *self, int nthreads, int reps)
+{
+    REPS = reps < 1 ? 1 : reps > 64 ? 64 : reps;
+    int ncpu = fx_par_cpu_count();
+    if (nthreads < 2)
+        nthreads = ncpu > 1 ? ncpu : 2;
+    if (nthreads > MAXB)
+        nthreads = MAXB;
+    char la[64], lb[64];
+    load(la, sizeof la);
+    fprintf(o, "TABLE 8  frames a user sees: ms per frame, median of %d (after one warm-up frame)\n", REPS);
+    fprintf(o, "  1 thr: one thread; %d thr: %d bands of rows on %d threads (fixel/par.h), same pixels;\n",
+            nthreads, nthreads, nthreads);
+    fprintf(o, "  x: speed-up; cpu 1/cpu N: process CPU ms per frame (cpu N > cpu 1 is the set-up each band\n"
+               "  repeats); band cpu: CPU ms of each band's thread (an even split shows despite a noisy wall)\n");
+    fprintf(o, "  %d online cores; load average at the start %s\n\n", ncpu, la);
+    fprintf(o, "%-24s %-9s %-8s %9s %9s %6s %8s %8s  %s\n", "what", "size", "format", "1 thr", "N thr", "x",
+            "cpu 1", "cpu N", "band cpu");
+    fx_memfb fb, dst;
+    int bad = 0;
+    char demo[4096], kiosk[4096];
+    const char *slash = strrchr(self, '/');
+    snprintf(demo, sizeof demo, "%.*sfixel-demo", slash ? (int)(slash - self + 1) : 0, self);
+    snprintf(kiosk, sizeof kiosk, "%.*sfixel-kiosk", slash ? (int)(slash - self + 1) : 0, self);
+    for (int s = 0; s < 2; s++)
+        for (int f = 0; f < 2; f++)
+            if (access(demo, X_OK) || demo_rows(o, demo, sizes[s][0], sizes[s][1], fmts[f], nthreads)) {
+                fprintf(o, "demo pages %dx%d %s: %s --time-pages failed or is missing\n", sizes[s][0], sizes[s][1],
+                        fx_format_get(fmts[f])->name, demo);
+                bad = 1;
+            }
+    /* the 3D and ray-traced golden scripts at frame size: the pipelines'
+     * scaling (the demo's ray-traced page is one cached picture); the ray
+     * tracer at a quarter of 800x480 (a whole frame takes seconds) */
+    static const struct {
+        const char *name;
+        int w, h;
+    } scripts[] = {{"3d-teapot-phong", 800, 480},   {"3d-teapot-gouraud", 800, 480}, {"3d-torus-phong", 800, 480},
+                   {"3d-teapot-phong", 1920, 1080}, {"3d-torus-phong", 1920, 1080},  {"rt-spheres", 400, 240},
+                   {"rt-torus", 400, 240},          {0, 0, 0}};
+    size_t arena_size = (size_t)64 << 20;
+    void *arena = malloc(arena_size);
+    for (int i = 0; scripts[i].name && arena; i++)
+        for (int f = 0; f < 2; f++) {
+            int w = scripts[i].w, h = scripts[i].h;
+            char path[256];
+            snprintf(path, sizeof path, "tests/golden/scripts/%s.fxs", scripts[i].name);
+            size_t len;
+            char *text = slurp(path, &len);
+            if (!text)
+                continue; /* run from the source tree */
+            if (fx_memfb_create(&fb, w, h, fmts[f]) < 0)
+                return 1;
+            int ok1, ok2;
+            cell a = time_script(&fb, text, len, 1, arena, arena_size, &ok1);
+            cell b = time_script(&fb, text, len, nthreads, arena, arena_size, &ok2);
+            free(text);
+            char what[48];
+            snprintf(what, sizeof what, "script %s%s", scripts[i].name, ok1 && ok2 ? "" : " FAILED");
+            bad |= !(ok1 && ok2);
+            row(o, what, w, h, fmts[f], a, b);
+            fflush(o);
+            fx_memfb_destroy(&fb);
+        }
+    free(arena);
+    /* the kiosk: one process per run, every widget redrawn (--full) */
+    DIR *d = opendir("examples");
+    char *confs[32];
+    int nconf = 0;
+    struct dirent *e;
+    while (d && (e = readdir(d)) && nconf < 32) {
+        size_t l = strlen(e->d_name);
+        if (!strncmp(e->d_name, "kiosk-", 6) && l > 5 && !strcmp(e->d_name + l - 5, ".conf"))
+            confs[nconf++] = strdup(e->d_name);
+    }
+    if (d)
+        closedir(d);
+    qsort(confs, (size_t)nconf, sizeof *confs, (int (*)(const void *, const void *))strcmp);
+    for (int c = 0; c < nconf; c++) {
+        char path[300];
+        snprintf(path, sizeof path, "examples/%s", confs[c]);
+        for (int s = 0; s < 2; s++)
+            for (int f = 0; f < 2; f++) {
+                int w = sizes[s][0], h = sizes[s][1];
+                double cpu = 0;
+                double ms = access(kiosk, X_OK) ? -1 : time_kiosk(kiosk, path, w, h, fx_format_get(fmts[f])->name, &cpu);
+                char what[48];
+                snprintf(what, sizeof what, "kiosk %.*s", (int)(strlen(confs[c]) - 5), confs[c]);
+                if (ms < 0)
+                    fprintf(o, "%-24s %4dx%-4d %-8s  (fixel-kiosk failed or missing: %s)\n", what, w, h,
+                            fx_format_get(fmts[f])->name, kiosk);
+                else
+                    fprintf(o, "%-24s %4dx%-4d %-8s %9.2f %9s        %8.2f  one thread, every widget (--full)\n",
+                            what, w, h, fx_format_get(fmts[f])->name, ms, "-", cpu);
+                fflush(o);
+            }
+        free(confs[c]);
+    }
+    /* presenting: a copy into a second buffer, as the shadow path copies
+     * into the scanout buffer (a real framebuffer is uncached or
+     * write-combined memory and slower) */
+    fprintf(o, "\n%-24s %-9s %-8s %9s %9s\n", "present (copy)", "size", "format", "full", "10% dmg");
+    for (int s = 0; s < 2; s++)
+        for (int f = 0; f < 2; f++) {
+            int w = sizes[s][0], h = sizes[s][1];
+            if (fx_memfb_create(&fb, w, h, fmts[f]) < 0 || fx_memfb_create(&dst, w, h, fmts[f]) < 0)
+                return 1;
+            fprintf(o, "%-24s %4dx%-4d %-8s %9.3f %9.3f\n", "present", w, h, fx_format_get(fmts[f])->name,
+                    time_present(&fb, &dst, 0), time_present(&fb, &dst, 1));
+            fx_memfb_destroy(&fb);
+            fx_memfb_destroy(&dst);
+        }
+    load(lb, sizeof lb);
+    fprintf(o, "\nload average at the end %s\n", lb);
+    return bad;
+}
