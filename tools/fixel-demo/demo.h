@@ -99,6 +99,7 @@ int demo_rt_busy(const demo_state *st);
 void demo_anim_init(demo_state *st);
 void demo_anim_page(fx_ctx *c, demo_state *st, int32_t top);
 int demo_anim_key(demo_state *st, int key);
+int demo_camera_key(fx_camera *cam, int key, fx16 step);
 void demo_anim_set_file(const char *path);
 
 /* helpers */

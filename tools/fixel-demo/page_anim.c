@@ -293,21 +293,37 @@ void demo_anim_page(fx_ctx *c, demo_state *st, int32_t top)
     demo_text(c, 16, top + 428, INK, "(spline, ease in/out), x clear%s", flight_file ? ";  keys saved to --flight FILE" : "");
 }
 
-int demo_anim_key(demo_state *st, int key)
+/* The camera keys of the 3D and Animation pages (here, where the flight
+ * test compiles this file alone): slides of STEP, turns of 5 degrees; 1
+ * when the key was one of them. */
+int demo_camera_key(fx_camera *cam, int key, fx16 step)
 {
-    fx16 d = FX16_ONE / 2;
     fx_angle a = FX_ANGLE_45 / 9;
     switch (key) {
-    case 'u': fx_camera_slide(&st->acam, 0, d, 0); break;
-    case 'd': fx_camera_slide(&st->acam, 0, -d, 0); break;
-    case 'f': fx_camera_slide(&st->acam, 0, 0, -d); break;
-    case 'b': fx_camera_slide(&st->acam, 0, 0, d); break;
-    case 'h': fx_camera_slide(&st->acam, -d, 0, 0); break;
-    case 'j': fx_camera_slide(&st->acam, d, 0, 0); break;
-    case 'y': fx_camera_yaw(&st->acam, a); break;
-    case 'Y': fx_camera_yaw(&st->acam, (fx_angle)-a); break;
-    case 't': fx_camera_pitch(&st->acam, a); break;
-    case 'T': fx_camera_pitch(&st->acam, (fx_angle)-a); break;
+    case 'u': fx_camera_slide(cam, 0, step, 0); break;
+    case 'd': fx_camera_slide(cam, 0, -step, 0); break;
+    case 'f': fx_camera_slide(cam, 0, 0, -step); break;
+    case 'b': fx_camera_slide(cam, 0, 0, step); break;
+    case 'h': fx_camera_slide(cam, -step, 0, 0); break;
+    case 'j': fx_camera_slide(cam, step, 0, 0); break;
+    case 'y': fx_camera_yaw(cam, a); break;
+    case 'Y': fx_camera_yaw(cam, (fx_angle)-a); break;
+    case 't': fx_camera_pitch(cam, a); break;
+    case 'T': fx_camera_pitch(cam, (fx_angle)-a); break;
+    case 'o': fx_camera_roll(cam, a); break;
+    case 'O': fx_camera_roll(cam, (fx_angle)-a); break;
+    default: return 0;
+    }
+    return 1;
+}
+
+int demo_anim_key(demo_state *st, int key)
+{
+    /* no roll (o/O): a flight key holds the eye and the point looked at,
+     * not the up vector, so a roll could not be flown back */
+    if (key != 'o' && key != 'O' && demo_camera_key(&st->acam, key, FX16_ONE / 2))
+        return 1;
+    switch (key) {
     case 'x':
         st->nflight = 0;
         st->flying = 0;

@@ -1337,25 +1337,11 @@ int demo_key(demo_state *st, int key)
     if (!strcmp(name, "anim"))
         return demo_anim_key(st, key);
     if (!strcmp(name, "3d")) {
-        fx16 d = FX16_ONE / 4;
-        fx_angle a = FX_ANGLE_45 / 9;
-        switch (key) {
-        case 's': st->shading = (st->shading + 1) % 3; break;
-        case 'u': fx_camera_slide(&st->cam, 0, d, 0); break;
-        case 'd': fx_camera_slide(&st->cam, 0, -d, 0); break;
-        case 'f': fx_camera_slide(&st->cam, 0, 0, -d); break;
-        case 'b': fx_camera_slide(&st->cam, 0, 0, d); break;
-        case 'h': fx_camera_slide(&st->cam, -d, 0, 0); break;
-        case 'j': fx_camera_slide(&st->cam, d, 0, 0); break;
-        case 'y': fx_camera_yaw(&st->cam, a); break;
-        case 'Y': fx_camera_yaw(&st->cam, (fx_angle)-a); break;
-        case 't': fx_camera_pitch(&st->cam, a); break;
-        case 'T': fx_camera_pitch(&st->cam, (fx_angle)-a); break;
-        case 'o': fx_camera_roll(&st->cam, a); break;
-        case 'O': fx_camera_roll(&st->cam, (fx_angle)-a); break;
-        default: return 0;
+        if (key == 's') {
+            st->shading = (st->shading + 1) % 3;
+            return 1;
         }
-        return 1;
+        return demo_camera_key(&st->cam, key, FX16_ONE / 4);
     }
     if (!strcmp(name, "fractals") && key >= '0' && key <= '6') {
         st->koch_order = key - '0';
