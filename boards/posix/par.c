@@ -4,6 +4,7 @@
 
 #include <pthread.h>
 #include <stdatomic.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -268,6 +269,10 @@ int fx_scene_run_mt(fx_scene *sc, const char *text, size_t len, int nthreads, in
         return -FX_EINVAL;
     if (nthreads == 1 || sc->host.trace || sc->have_surface || sc->arena_used || !sc->host.make_surface ||
         fx_scene_script_serial(text, len))
+        return fx_scene_run(sc, text, len);
+    /* one arena per extra band: fixel-draw's is 128 MiB, and 32-bit boards
+     * would wrap the product at -j 33 */
+    if (sc->arena_size > SIZE_MAX / (size_t)(nthreads - 1))
         return fx_scene_run(sc, text, len);
     scene_job *j = calloc(1, sizeof *j);
     fx_scene *extra = calloc((size_t)nthreads - 1, sizeof *extra);

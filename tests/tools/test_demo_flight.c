@@ -87,6 +87,16 @@ FX_TEST(demo_flight_records_to_its_file_and_plays_back)
     FX_CHECK(st2.acam.n.x || st2.acam.n.y || st2.acam.n.z);
     press(&st2, "x");
     FX_CHECK_EQ(st2.nflight, 0);
+    /* x clears the file too: a new flight recorded after it is the one a
+     * fresh page loads (appended, its t = 0 key stopped the reload at the
+     * old flight) */
+    press(&st2, "fkfk");
+    static demo_state st3;
+    memset(&st3, 0, sizeof st3);
+    st3.interactive = 1;
+    demo_anim_init(&st3);
+    FX_CHECK_EQ(st3.nflight, 2);
+    FX_CHECK(!memcmp(st3.flight, st2.flight, 2 * sizeof st2.flight[0]));
     free(px);
     unlink(path);
     demo_anim_set_file(NULL);

@@ -4,6 +4,7 @@
  * a 3D camera flight recorded from key presses and played back through
  * fx_anim_eval. The clock is the demo's frame counter (30 a second); the
  * headless picture is drawn at 1.2 s with the default flight half flown. */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -327,6 +328,15 @@ int demo_anim_key(demo_state *st, int key)
     case 'x':
         st->nflight = 0;
         st->flying = 0;
+        /* the file too: keys appended after a clear start again at t = 0,
+         * and a reload stops where times stop increasing */
+        if (flight_file) {
+            FILE *f = fopen(flight_file, "w");
+            if (f)
+                fclose(f);
+            else
+                fprintf(stderr, "fixel-demo: cannot clear the flight file %s: %s\n", flight_file, strerror(errno));
+        }
         break;
     case 'g':
         if (st->nflight < 2)
@@ -342,10 +352,13 @@ int demo_anim_key(demo_state *st, int key)
         st->nflight++;
         if (flight_file) {
             FILE *f = fopen(flight_file, "a");
+            int ok = f != NULL;
             if (f) {
-                fprintf(f, "%d %d %d %d %d %d %d\n", k->t, k->v[0], k->v[1], k->v[2], k->v[3], k->v[4], k->v[5]);
-                fclose(f);
+                ok = fprintf(f, "%d %d %d %d %d %d %d\n", k->t, k->v[0], k->v[1], k->v[2], k->v[3], k->v[4], k->v[5]) > 0;
+                ok = fclose(f) == 0 && ok;
             }
+            if (!ok)
+                fprintf(stderr, "fixel-demo: cannot save the flight key to %s: %s\n", flight_file, strerror(errno));
         }
         break;
     }

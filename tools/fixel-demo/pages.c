@@ -792,7 +792,7 @@ static void draw_object(fx_ctx *c, demo_state *st, fx_rect r, fx_mesh_kind kind,
     /* The teapot is textured: each Bezier patch has its own (u, v) square
      * (fx_mesh_make fills uv), here a 4 x 4 checker per patch, modulated
      * by the lighting. */
-    static uint32_t teximg[64 * 64];
+    uint32_t teximg[64 * 64]; /* per call: bands draw at once */
     fx_texture tx;
     memset(&tx, 0, sizeof tx);
     if (kind == FX_MESH_TEAPOT) {
@@ -1086,7 +1086,7 @@ static void page_viz(fx_ctx *c, demo_state *st)
     /* the field's Hessian as tensor glyphs: red over the peaks (both
      * curvatures negative), blue in the dip, green on the saddles */
     panel(c, 8, top + 308, 388, 136, "Hessian as tensor glyphs (scale compressed)");
-    static int32_t ta[GW * GH], tb[GW * GH], tc[GW * GH];
+    int32_t ta[GW * GH], tb[GW * GH], tc[GW * GH]; /* per call, like g: bands draw at once */
     for (int y = 0; y < GH; y++)
         for (int x = 0; x < GW; x++) {
             int xa = x > 0 ? x - 1 : x, xb = x < GW - 1 ? x + 1 : x;

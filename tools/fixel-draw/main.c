@@ -33,7 +33,7 @@ static const char usage[] =
     "  --trace      print each algorithm's steps (decision tables) on stdout\n"
     "  -j N         draw on N threads (1..64; the same pixels as one): the script in N\n"
     "               bands of rows at once (fixel/par.h), or, when it cannot be (seed\n"
-    "               fills, 'present', --trace, --display, stdin), only its 'raytrace';\n"
+    "               fills, 'present', --trace, --display, --frames), only its 'raytrace';\n"
     "               without -j only 'raytrace' runs on every core; with --display the\n"
     "               traced rows appear as they finish\n"
     "  --frames N   render frames 0..N-1 (1..100000) of an animated script, frame k at\n"
@@ -412,6 +412,19 @@ static int frame_pattern_ok(const char *p)
     return convs == 1;
 }
 
+/* The fonts, meshes and images a scene loaded: a scene's data lives until
+ * its picture is written (--frames frees them after each frame, or a long
+ * sequence would hold every frame's copy). */
+static void free_files(host *H)
+{
+    while (H->files) {
+        struct loaded *n = H->files->next;
+        free(H->files->data);
+        free(H->files);
+        H->files = n;
+    }
+}
+
 static int run_lines(fx_scene *sc, const char *text, size_t len, const host *H, int display)
 {
     int tty = isatty(2), lines = 0, lineno = 1, shown = 0;
@@ -637,8 +650,10 @@ int main(int argc, char **argv)
             fx_scene_fix_size(&sc, w, h);
         if (fmt != FX_FMT_COUNT)
             fx_scene_fix_format(&sc, fmt);
-        fx_scene_set_clock(&sc, fx16_from_ratio(k, fps));
-        if (run_lines(&sc, (const char *)text, len, &H, 0) < 0) {
+        if (fx_scene_set_clock(&sc, fx16_from_ratio(k, fps)) < 0) {
+            fprintf(stderr, "fixel-draw: frame %d: out of scene memory for the clock\n", k);
+            status = 1;
+        } else if (run_lines(&sc, (const char *)text, len, &H, 0) < 0) {
             fprintf(stderr, "%s:%d:%d: %s (frame %d)\n", strcmp(script, "-") ? script : "<stdin>", sc.err_line,
                     sc.err_col, sc.err, k);
             status = 1;
@@ -655,6 +670,7 @@ int main(int argc, char **argv)
         if (H.have_fb)
             fx_memfb_destroy(&H.fb);
         H.have_fb = 0;
+        free_files(&H);
     }
     if (frames)
         goto done;
@@ -699,12 +715,7 @@ done:
         fx_app_close(g_app);
     if (H.have_fb)
         fx_memfb_destroy(&H.fb);
-    while (H.files) {
-        struct loaded *n = H.files->next;
-        free(H.files->data);
-        free(H.files);
-        H.files = n;
-    }
+    free_files(&H);
     free(arena);
     free(text);
     return status;
