@@ -566,6 +566,10 @@ int fx3d_pass(fx3d *r, int kind, int light)
     if (kind < FX3D_PASS_ALL || kind > FX3D_PASS_LIGHT ||
         (kind == FX3D_PASS_LIGHT && (light < 0 || light >= FX3D_MAX_LIGHTS)))
         return -FX_EINVAL;
+    /* a light pass tests depth against the ambient pass's buffer; the
+     * painter's sort has none and would light hidden triangles too */
+    if (kind == FX3D_PASS_LIGHT && r->visibility == FX3D_VIS_PAINTER)
+        return -FX_ENOTSUP;
     r->pass = kind;
     r->pass_light = kind == FX3D_PASS_LIGHT ? light : 0;
     return 0;

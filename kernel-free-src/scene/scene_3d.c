@@ -137,7 +137,7 @@ static int cmd_flush(fx_scene *sc)
 {
     GET(s);
     TRY(fx_scene_end(sc));
-    s->r.ctx = sc->ctx;
+    s->r.ctx = fx_scene_screen_ctx(&sc->ctx);
     fx3d_flush(&s->r);
     if (s->r.pdropped)
         return fx_scene_error(sc, "%d triangles did not fit the painter's buffer", s->r.pdropped);
@@ -572,7 +572,7 @@ int fx_scene_mesh_draw(fx_scene *sc, fx_mesh *m)
 {
     s3d *s;
     TRY(get(sc, &s));
-    s->r.ctx = sc->ctx;
+    s->r.ctx = fx_scene_screen_ctx(&sc->ctx);
     return fx3d_draw(&s->r, m);
 }
 
@@ -667,7 +667,7 @@ static int cmd_obj(fx_scene *sc)
     GET(s);
     fx_mesh m = {0};
     TRY(fx_scene_obj_mesh(sc, &m));
-    s->r.ctx = sc->ctx;
+    s->r.ctx = fx_scene_screen_ctx(&sc->ctx);
     return fx3d_draw(&s->r, &m);
 }
 
@@ -697,7 +697,7 @@ static int cmd_polygon3d(fx_scene *sc)
         tri[3 * (i - 1) + 2] = (uint32_t)i + 1;
     }
     fx_mesh m = {pos, NULL, tri, n, n - 2, n, n - 2, NULL, col};
-    s->r.ctx = sc->ctx;
+    s->r.ctx = fx_scene_screen_ctx(&sc->ctx);
     return fx3d_draw(&s->r, &m);
 }
 
@@ -920,7 +920,8 @@ static int cmd_pass3d(fx_scene *sc)
     TRY(fx_scene_end(sc));
     if (c == 2 && (li < 0 || li >= FX3D_MAX_LIGHTS))
         return fx_scene_error(sc, "light number %d out of range (0..%d)", li, FX3D_MAX_LIGHTS - 1);
-    fx3d_pass(&s->r, c == 0 ? FX3D_PASS_ALL : c == 1 ? FX3D_PASS_AMBIENT : FX3D_PASS_LIGHT, li);
+    if (fx3d_pass(&s->r, c == 0 ? FX3D_PASS_ALL : c == 1 ? FX3D_PASS_AMBIENT : FX3D_PASS_LIGHT, li) < 0)
+        return fx_scene_error(sc, "pass3d light needs the depth buffer ('depth 16|32'), not the painter's sort");
     return 0;
 }
 

@@ -16,6 +16,7 @@
 #include "fixel/scene.h"
 #include "fixel/xform.h"
 #include "../base/fx_internal.h"
+#include "scene_frame.h"
 #include "scene_shared.h"
 
 #define TRY(x)                   \
@@ -574,7 +575,10 @@ static int cmd_endblur(fx_scene *sc)
         return fx_scene_error(sc, "'endblur' without 'blur'");
     st->recording = 0;
     st->replaying = 1;
-    const fx_surface *s = &sc->ctx.surf;
+    /* the snapshot and the accumulation in the surface's own rows: after
+     * 'coords course' the context's view has a negative stride */
+    fx_surface scr = fx_scene_screen_surf(&sc->ctx);
+    const fx_surface *s = &scr;
     size_t used0 = sc->arena_used, pix = (size_t)s->h * (size_t)s->stride;
     uint8_t *snap = fx_scene_alloc(sc, used0), *pixels = fx_scene_alloc(sc, pix);
     void *acc_mem = fx_scene_alloc(sc, fx_accum_size(s->w, s->h));
@@ -586,7 +590,7 @@ static int cmd_endblur(fx_scene *sc)
                               (unsigned long long)(used0 + pix + fx_accum_size(s->w, s->h)));
     }
     fx_memcpy(snap, sc->arena, used0);
-    fx_memcpy(pixels, s->pixels, pix);
+    fx_memcpy(pixels, scr.pixels, pix);
     fx_ctx ctx = sc->ctx;
     void *mod[FX_SCENE_MOD_COUNT];
     fx_memcpy(mod, sc->mod, sizeof mod);
@@ -599,20 +603,20 @@ static int cmd_endblur(fx_scene *sc)
         fx_memcpy(sc->mod, mod, sizeof mod);
         sc->ctx = ctx;
         sc->arena_used = used1;
-        fx_memcpy(ctx.surf.pixels, pixels, pix);
+        fx_memcpy(scr.pixels, pixels, pix);
         st->clock = fx_sat32((int64_t)t0 + (int64_t)shutter * k / n);
         for (int32_t i = 0; i < lines && r >= 0; i++)
             r = fx_scene_exec_line(sc, st->rec + st->line_at[i], (size_t)st->line_len[i], st->line_no[i]);
         if (r >= 0)
-            r = fx_accum_add(&acc, &ctx.surf);
+            r = fx_accum_add(&acc, &scr);
     }
     fx_memcpy(sc->arena, snap, used0);
     fx_memcpy(sc->mod, mod, sizeof mod);
     sc->ctx = ctx;
     if (r >= 0)
-        fx_accum_resolve(&acc, &ctx.surf);
+        fx_accum_resolve(&acc, &scr);
     else
-        fx_memcpy(ctx.surf.pixels, pixels, pix);
+        fx_memcpy(scr.pixels, pixels, pix);
     sc->arena_used = used0;
     st->replaying = 0;
     return r;

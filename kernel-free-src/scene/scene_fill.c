@@ -556,6 +556,7 @@ const fx_scene_cmd fx_scene_cmds_fill[] = {
     {"gouraudpoly", cmd_gouraudpoly, "gouraudpoly X0 Y0 #C0 X1 Y1 #C1 ... (convex)", FX_SCENE_DRAWS},
     {"blend", cmd_blend, "blend src|over", FX_SCENE_DRAWS},
     {"pattern", cmd_pattern, "pattern off | W H HEXROW... | bg #C|none | anchor X Y", FX_SCENE_DRAWS},
-    {"hatch", cmd_hatch, "hatch INTENSITY | hatch off", 0},
+    /* DRAWS: a style set before the surface exists would be lost when it is made */
+    {"hatch", cmd_hatch, "hatch INTENSITY | hatch off", FX_SCENE_DRAWS},
     {0, 0, 0, 0},
 };

@@ -104,8 +104,11 @@ int fx_xform2_window_viewport_par(fx_xform2 *o, fx16 wx0, fx16 wy0, fx16 wx1, fx
      * largest with which the window still fits: x fits while s <= ax
      * den/num. With num == den this is the plain min(ax, ay). */
     int64_t ax = sx < 0 ? -sx : sx, ay = sy < 0 ? -sy : sy;
-    int64_t axy = par_num == par_den ? ax : rdiv64(ax * par_den, par_num);
-    int64_t s = axy < ay ? axy : ay, s_x = par_num == par_den ? s : rdiv64(s * par_num, par_den);
+    /* 128-bit products: ax reaches ~2^48 (a 65533-px viewport over a
+     * window 2^-16 wide) and the ratio's terms 2^16 */
+    int64_t axy = par_num == par_den ? ax : fx_w_rounddiv_away(fx_w_mul(ax, par_den), par_num);
+    int64_t s = axy < ay ? axy : ay;
+    int64_t s_x = par_num == par_den ? s : fx_w_rounddiv_away(fx_w_mul(s, par_num), par_den);
     fx16 fsx = fx_sat32(sx < 0 ? -s_x : s_x), fsy = fx_sat32(sy < 0 ? -s : s);
     /* centre onto centre: t = (v0 + v1)/2 - s (w0 + w1)/2 */
     fx_s128 nx = fx_w_sub(fx_w_mul((int64_t)vx0 + vx1, ONE), fx_w_mul(fsx, (int64_t)wx0 + wx1));

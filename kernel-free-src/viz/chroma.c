@@ -76,9 +76,13 @@ int fx_chromaticity_diagram(const fx_ctx *c, fx_rect dest, int flags)
         m.h1 = 1;
     fx16 xy[2 * FX_CIE_N];
     fx_spectral_locus(xy);
-    /* the diagram is off the clip: 24.8 positions would not fit fx8 */
-    if ((int64_t)dest.x1 < c->clip.x0 || (int64_t)dest.x0 > c->clip.x1 || (int64_t)dest.y1 < c->clip.y0 ||
-        (int64_t)dest.y0 > c->clip.y1)
+    /* the diagram is off the clip: 24.8 positions would not fit fx8. The
+     * wavelength labels stand up to ~17 px outside dest (13 px out plus
+     * half the 8x16 font), so the margin keeps them when only they reach
+     * into the clip (a band, or a clip beside the diagram). */
+    const int64_t margin = 32;
+    if ((int64_t)dest.x1 + margin < c->clip.x0 || (int64_t)dest.x0 - margin > c->clip.x1 ||
+        (int64_t)dest.y1 + margin < c->clip.y0 || (int64_t)dest.y0 - margin > c->clip.y1)
         return 0;
     int32_t pts[2 * FX_CIE_N];
     int32_t pix[2 * FX_CIE_N];

@@ -227,6 +227,10 @@ int32_t fx_tensor_glyphs(const fx_ctx *c, fx_rect dest, const fx_tgrid *g, int32
             if (x < ((int64_t)c->clip.x0 - 1) * 256 - rmax || x > ((int64_t)c->clip.x1 + 1) * 256 + rmax ||
                 y < ((int64_t)c->clip.y0 - 1) * 256 - rmax || y > ((int64_t)c->clip.y1 + 1) * 256 + rmax)
                 continue;
+            /* near the clip but with a radius past 2^23 px its centre does
+             * not fit fx8: skipped rather than drawn round a wrapped centre */
+            if (x < INT32_MIN || x > INT32_MAX || y < INT32_MIN || y > INT32_MAX)
+                continue;
             fx_tensor_glyph(c, (fx8)x, (fx8)y, &e, lmax, rmax, st);
         }
     return n;

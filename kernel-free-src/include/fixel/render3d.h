@@ -364,7 +364,8 @@ int fx3d_shadow_use(fx3d *r, fx3d_shadowmap *const *maps, int n);
  * (RGB565: a 5-bit step). Lights with attenuation or a spot
  * cone also differ in the rounding of the factor (the single pass
  * multiplies ambient + diffuse + specular by it at once). -FX_EINVAL for
- * a bad kind or light. */
+ * a bad kind or light; -FX_ENOTSUP for a light pass under the painter's
+ * visibility, which has no depth buffer to compare with. */
 int fx3d_pass(fx3d *r, int kind, int light);
 
 /* Lighting of one point (eye-space position and unit normal) with the
