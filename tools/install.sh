@@ -23,7 +23,8 @@ mode=$1
 D=$DESTDIR
 EXDIR=$DATADIR/fixel/examples
 HEADERS=$(ls kernel-free-src/include/fixel/*.h boards/include/fixel/*.h)
-EXAMPLES=$(ls examples/* 2>/dev/null || true)
+# files only: examples/course/ holds the course scripts (tests/golden/course)
+EXAMPLES=$(find examples -maxdepth 1 -type f 2>/dev/null | sort)
 
 # "destination source mode" lines; source "-" is generated, "@link" a symlink
 files() {

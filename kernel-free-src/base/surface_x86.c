@@ -123,6 +123,15 @@ __attribute__((target("avx512f"))) void fx_rect_fill_avx512(uint8_t *row, size_t
  * x86-64, so no run-time check is needed. The sfence orders the weakly
  * ordered streaming stores before whatever the caller does next (a present
  * by another thread, a DMA). */
+/* Non-temporal stores: GCC names the instructions' builtins; clang (the
+ * fuzz build) has only its generic form. */
+#if defined(__clang__)
+#define FX_STREAM16(p, v) __builtin_nontemporal_store((v), (p))
+#define FX_STREAM32(p, v) __builtin_nontemporal_store((v), (p))
+#else
+#define FX_STREAM16(p, v) __builtin_ia32_movntdq((p), (v))
+#define FX_STREAM32(p, v) __builtin_ia32_movntdq256((p), (v))
+#endif
 typedef long long v2i64 __attribute__((vector_size(16)));
 
 void fx_stream_fill(uint8_t *p, size_t n, uint64_t pattern)
@@ -136,14 +145,14 @@ void fx_stream_fill(uint8_t *p, size_t n, uint64_t pattern)
     n -= head;
     uint8_t *e = p + (n & ~(size_t)63);
     for (; p < e; p += 64) {
-        __builtin_ia32_movntdq((v2i64 *)(void *)p, q);
-        __builtin_ia32_movntdq((v2i64 *)(void *)(p + 16), q);
-        __builtin_ia32_movntdq((v2i64 *)(void *)(p + 32), q);
-        __builtin_ia32_movntdq((v2i64 *)(void *)(p + 48), q);
+        FX_STREAM16((v2i64 *)(void *)p, q);
+        FX_STREAM16((v2i64 *)(void *)(p + 16), q);
+        FX_STREAM16((v2i64 *)(void *)(p + 32), q);
+        FX_STREAM16((v2i64 *)(void *)(p + 48), q);
     }
     n &= 63;
     for (; n >= 16; n -= 16, p += 16)
-        __builtin_ia32_movntdq((v2i64 *)(void *)p, q);
+        FX_STREAM16((v2i64 *)(void *)p, q);
     __builtin_ia32_sfence();
     fx_memcpy(p, &q, n);
 }
@@ -160,12 +169,12 @@ __attribute__((target("avx"))) void fx_stream_fill_avx(uint8_t *p, size_t n, uin
     n -= head;
     uint8_t *e = p + (n & ~(size_t)63);
     for (; p < e; p += 64) {
-        __builtin_ia32_movntdq256((v4i64 *)(void *)p, q);
-        __builtin_ia32_movntdq256((v4i64 *)(void *)(p + 32), q);
+        FX_STREAM32((v4i64 *)(void *)p, q);
+        FX_STREAM32((v4i64 *)(void *)(p + 32), q);
     }
     n &= 63;
     if (n >= 32) {
-        __builtin_ia32_movntdq256((v4i64 *)(void *)p, q);
+        FX_STREAM32((v4i64 *)(void *)p, q);
         p += 32;
         n -= 32;
     }
@@ -187,10 +196,10 @@ void fx_stream_copy(uint8_t *d, const uint8_t *s, size_t n)
         fx_memcpy(&b, s + 16, 16);
         fx_memcpy(&c, s + 32, 16);
         fx_memcpy(&x, s + 48, 16);
-        __builtin_ia32_movntdq((v2i64 *)(void *)d, a);
-        __builtin_ia32_movntdq((v2i64 *)(void *)(d + 16), b);
-        __builtin_ia32_movntdq((v2i64 *)(void *)(d + 32), c);
-        __builtin_ia32_movntdq((v2i64 *)(void *)(d + 48), x);
+        FX_STREAM16((v2i64 *)(void *)d, a);
+        FX_STREAM16((v2i64 *)(void *)(d + 16), b);
+        FX_STREAM16((v2i64 *)(void *)(d + 32), c);
+        FX_STREAM16((v2i64 *)(void *)(d + 48), x);
     }
     __builtin_ia32_sfence();
     fx_memcpy(d, s, n & 63);
