@@ -172,11 +172,22 @@ void fx_rect_fill_avx512(uint8_t *row, size_t nb, int32_t h, ptrdiff_t stride, u
  * pixel-aligned p with the 8-byte pattern of whole pixels; copy n bytes
  * between blocks that do not overlap. The same bytes as the cached paths.
  * Taken when the bytes an operation touches (a fill n, a copy 2n) reach
- * FX_STREAM_MIN_BYTES: measured interleaved on a shared 2-core Zen 3 (32 MB
- * L3), a 4 MB RGB565 clear was 0.5-0.6x as fast streamed as cached (it stays
- * in the L3), while the 8 MB XRGB8888 clear and both blits (8 and 16 MB
- * touched) ran as fast as SDL2's streaming and 1.1-1.4x memcpy. */
+ * fx_stream_min(s): three quarters of the CPU's last-level cache
+ * (fx_x86_stream_mib, read once), never below FX_STREAM_MIN_BYTES; like
+ * glibc's memset and memcpy, which stream only above a large fraction of
+ * the L3, so a frame that fits stays cached. Below that a frame is
+ * left in the cache, where the drawing that follows a clear finds it:
+ * measured on a 2-core Zen 3 with a 32 MB L3, an 8 MB XRGB8888 clear
+ * streamed ran at 0.42x memset on a quiet machine (the cached fill
+ * stays in the L3) and a kiosk's panels drawn over a streamed clear took
+ * twice the CPU; only when other tenants keep evicting the L3 did streaming
+ * win (1.1-1.4x memcpy, SDL2's speed). */
 #define FX_STREAM_MIN_BYTES (6u << 20)
+uint8_t fx_x86_stream_mib(void);
+static inline size_t fx_stream_min(const fx_surface *s)
+{
+    return s->stream_mib ? (size_t)s->stream_mib << 20 : FX_STREAM_MIN_BYTES;
+}
 void fx_stream_fill(uint8_t *p, size_t n, uint64_t pattern);
 void fx_stream_fill_avx(uint8_t *p, size_t n, uint64_t pattern);
 void fx_stream_copy(uint8_t *d, const uint8_t *s, size_t n);

@@ -72,6 +72,7 @@ int fx_surface_init(fx_surface *s, void *pixels, int32_t w, int32_t h, int32_t s
     s->format = format;
     s->bit_offset = 0;
     s->fill_isa = fx_x86_fill_level();
+    s->stream_mib = fx_x86_stream_mib();
     return 0;
 }
 
@@ -294,7 +295,7 @@ void fx_rect_fill_native(const fx_surface *s, fx_rect r, uint32_t v)
     /* The format is chosen once per rectangle; rows advance by the stride. */
     uint8_t *row = fx_row(s, r.y0);
 #if FX_X86_FILL
-    if (h == 1 && (bpp == 32 || bpp == 16) && (size_t)w * (size_t)bpp / 8 >= FX_STREAM_MIN_BYTES &&
+    if (h == 1 && (bpp == 32 || bpp == 16) && (size_t)w * (size_t)bpp / 8 >= fx_stream_min(s) &&
         !((uintptr_t)row & (size_t)(bpp / 8 - 1))) {
         uint64_t pat = bpp == 32 ? (v & 0xFFFFFFFFull) * 0x100000001ull : (v & 0xFFFF) * 0x0001000100010001ull;
         (s->fill_isa ? fx_stream_fill_avx : fx_stream_fill)(row + (size_t)r.x0 * (size_t)(bpp / 8),
@@ -367,7 +368,7 @@ void fx_blit(const fx_surface *dst, int32_t dx, int32_t dy, const fx_surface *sr
             const uint8_t *sp = s_first + off_s;
             size_t n = bytes * (size_t)h;
 #if FX_X86_FILL
-            if (2 * n >= FX_STREAM_MIN_BYTES && (d + n <= sp || sp + n <= d)) {
+            if (2 * n >= fx_stream_min(dst) && (d + n <= sp || sp + n <= d)) {
                 fx_stream_copy(d, sp, n);
                 return;
             }

@@ -35,6 +35,55 @@ uint8_t fx_x86_fill_level(void)
     return FX_FILL_AVX;
 }
 
+static void cpuid_sub(uint32_t leaf, uint32_t sub, uint32_t r[4])
+{
+    __asm__ volatile("cpuid" : "=a"(r[0]), "=b"(r[1]), "=c"(r[2]), "=d"(r[3]) : "a"(leaf), "c"(sub));
+}
+
+/* The bytes of the last-level cache: Intel's deterministic cache leaf 4
+ * (AMD's reads as empty), else AMD's 0x80000006 (L3 in 512 KiB units);
+ * 0 when neither says. */
+static uint64_t llc_bytes(void)
+{
+    uint32_t r[4];
+    cpuid(0, r);
+    uint64_t best = 0;
+    if (r[0] >= 4) {
+        for (uint32_t sub = 0; sub < 16; sub++) {
+            cpuid_sub(4, sub, r);
+            if ((r[0] & 31) == 0)
+                break;
+            uint64_t b = (uint64_t)((r[1] >> 22) + 1) * (((r[1] >> 12) & 0x3FF) + 1) * ((r[1] & 0xFFF) + 1) *
+                         ((uint64_t)r[2] + 1);
+            if (b > best)
+                best = b;
+        }
+    }
+    if (best)
+        return best;
+    cpuid(0x80000000u, r);
+    if (r[0] >= 0x80000006u) {
+        cpuid(0x80000006u, r);
+        best = (uint64_t)(r[3] >> 18) * (512u << 10);
+    }
+    return best;
+}
+
+/* CPUID traps to the hypervisor in a VM, and surfaces are made per image
+ * and per band: read once (a race only repeats the same answer). 0 here
+ * means not read yet, so a "no threshold" answer is kept as 1. */
+uint8_t fx_x86_stream_mib(void)
+{
+    static uint8_t known;
+    uint8_t v = __atomic_load_n(&known, __ATOMIC_RELAXED);
+    if (!v) {
+        uint64_t mib = llc_bytes() / 4 * 3 >> 20;
+        v = mib < (FX_STREAM_MIN_BYTES >> 20) ? 1 : mib > 255 ? 255 : (uint8_t)mib;
+        __atomic_store_n(&known, v, __ATOMIC_RELAXED);
+    }
+    return v == 1 ? 0 : v;
+}
+
 typedef uint32_t v4u32 __attribute__((vector_size(16)));
 typedef uint32_t v8u32 __attribute__((vector_size(32)));
 typedef uint32_t v16u32 __attribute__((vector_size(64)));
@@ -114,15 +163,14 @@ __attribute__((target("avx512f"))) void fx_rect_fill_avx512(uint8_t *row, size_t
 /* ---- streaming (non-temporal) stores for whole frames ----
  * movntdq writes a full line to memory without reading it first and without
  * keeping it: a cached store of a line that is not in the cache costs a
- * read for ownership, then the write-back. A frame of several MB does not
- * stay in a core's cache anyway (and on a shared L3 it is evicted by the
- * neighbours), so for frames the streaming store moves a third less data.
- * SDL2's SDL_BlitCopy and SDL_FillRect do this (SDL_memcpySSE,
- * _mm_stream_ps), which is how SDL2 ran at 1.3-1.8x glibc's memcpy of the
- * same 8 MB here: glibc streams only above ~3/4 of the L3. SSE2 is part of
- * x86-64, so no run-time check is needed. The sfence orders the weakly
- * ordered streaming stores before whatever the caller does next (a present
- * by another thread, a DMA). */
+ * read for ownership, then the write-back. That wins only for blocks the
+ * last-level cache cannot keep (fx_stream_min: three quarters of it, as
+ * glibc decides); a frame that fits stays cached for the drawing that
+ * follows. SDL2's SDL_BlitCopy and SDL_FillRect stream every size
+ * (SDL_memcpySSE, _mm_stream_ps), which beat memcpy only while neighbours
+ * kept evicting a shared L3. SSE2 is part of x86-64, so no run-time check
+ * is needed. The sfence orders the weakly ordered streaming stores before
+ * whatever the caller does next (a present by another thread, a DMA). */
 /* Non-temporal stores: GCC names the instructions' builtins; clang (the
  * fuzz build) has only its generic form. */
 #if defined(__clang__)
@@ -208,5 +256,6 @@ void fx_stream_copy(uint8_t *d, const uint8_t *s, size_t n)
 #else
 
 uint8_t fx_x86_fill_level(void) { return FX_FILL_PORTABLE; }
+uint8_t fx_x86_stream_mib(void) { return 0; }
 
 #endif

@@ -64,6 +64,10 @@ typedef struct fx_surface {
      * for solid rectangles (0: the portable loops, always safe). A surface
      * set up field by field must zero it. */
     uint8_t fill_isa;
+    /* Set by fx_surface_init on x86-64: the MiB an operation must touch
+     * before a whole-frame fill or copy bypasses the cache (0: the
+     * built-in 6 MiB). */
+    uint8_t stream_mib;
 } fx_surface;
 
 /* Half-open rectangle [x0, x1) x [y0, y1); empty when x0 >= x1 or y0 >= y1. */
