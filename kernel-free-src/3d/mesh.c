@@ -468,9 +468,20 @@ static void patch_eval(int p, fx16 u, fx16 v, fx16 scale, fx_vec3 *pt, fx_vec3 *
     }
 }
 
-static void make_teapot(fx_mesh *m, fx16 scale, int32_t n)
+static void make_teapot(fx_mesh *m, fx16 scale, int32_t n, int (*away)(void *, const fx_vec3 *, int), void *user)
 {
     for (int p = 0; p < FX_TEAPOT_PATCHES; p++) {
+        if (away) {
+            fx_vec3 cp[16];
+            for (int i = 0; i < 16; i++) {
+                const int16_t *c = fx_teapot_points[fx_teapot_patches[p][i]];
+                fx16 q[3] = {fx16_from_ratio(c[0], FX_TEAPOT_UNIT), fx16_from_ratio(c[2], FX_TEAPOT_UNIT),
+                             fx16_from_ratio(-c[1], FX_TEAPOT_UNIT)}; /* y-up, as patch_eval */
+                cp[i] = fx_vec3_make(fx16_mul(q[0], scale), fx16_mul(q[1], scale), fx16_mul(q[2], scale));
+            }
+            if (away(user, cp, 16))
+                continue;
+        }
         int32_t b = m->nverts;
         for (int32_t i = 0; i <= n; i++)
             for (int32_t j = 0; j <= n; j++) {
@@ -500,6 +511,21 @@ static void make_teapot(fx_mesh *m, fx16 scale, int32_t n)
     }
 }
 
+int fx_mesh_make_teapot(fx_mesh *m, fx16 scale, int32_t n, int (*away)(void *user, const fx_vec3 *pts, int npts),
+                        void *user)
+{
+    fx_mesh_params p = {FX_MESH_TEAPOT, scale, 0, 0, n, 0};
+    int32_t nv = 0, nt = 0;
+    int e = fx_mesh_size(&p, &nv, &nt);
+    e = fx_obj_mesh_begin(m, e, nv, nt);
+    if (e < 0)
+        return e;
+    if (m->uv)
+        fx_memset(m->uv, 0, sizeof(fx16) * 2 * (size_t)nv);
+    make_teapot(m, scale, n, away, user);
+    return 0;
+}
+
 int fx_mesh_make(fx_mesh *m, const fx_mesh_params *p)
 {
     int32_t nv = 0, nt = 0;
@@ -520,7 +546,7 @@ int fx_mesh_make(fx_mesh *m, const fx_mesh_params *p)
     case FX_MESH_TORUS: make_torus(m, p->a, p->b, p->n, p->k); break;
     case FX_MESH_CONE: make_cone_cyl(m, p->a, p->b, p->n, 1); break;
     case FX_MESH_CYLINDER: make_cone_cyl(m, p->a, p->b, p->n, 0); break;
-    case FX_MESH_TEAPOT: make_teapot(m, p->a, p->n); break;
+    case FX_MESH_TEAPOT: make_teapot(m, p->a, p->n, NULL, NULL); break;
     case FX_MESH_PLANE: make_plane(m, p->a, p->n); break;
     default: return -FX_EINVAL;
     }

@@ -323,8 +323,46 @@ size_t fx3d_depth_bytes(const fx_surface *s, int bits)
 
 void fx3d_clear_depth(fx3d *r)
 {
-    if (r->depth)
-        fx_memset(r->depth, 0xFF, fx3d_depth_bytes(&r->ctx.surf, r->depth_bits));
+    if (!r->depth)
+        return;
+    int32_t y0 = 0, y1 = r->ctx.surf.h;
+    if (r->depth_y1 > r->depth_y0) {
+        y0 = FX_MAX(y0, r->depth_y0);
+        y1 = FX_MIN(y1, r->depth_y1);
+        if (y1 <= y0)
+            return;
+    }
+    size_t row = (size_t)r->ctx.surf.w * (r->depth_bits == 16 ? 2u : 4u);
+    fx_memset((uint8_t *)r->depth + row * (size_t)y0, 0xFF, row * (size_t)(y1 - y0));
+}
+
+/* One vertex of the cache: valid in the draw numbered gen; its normal in
+ * ngen (nok: it normalized, so it does not fall back to the face's); its
+ * Gouraud colour seen from the front (lgen[0]) and from behind (lgen[1]). */
+typedef struct vcent {
+    uint32_t gen, ngen, lgen[2];
+    int32_t c[4];
+    fx_vec3 ep, n;
+    int32_t nok;
+    fx3d_rgb col[2];
+} vcent;
+
+size_t fx3d_vertex_cache_bytes(int32_t nverts) { return (size_t)(nverts > 0 ? nverts : 0) * sizeof(vcent); }
+
+void fx3d_set_vertex_cache(fx3d *r, void *mem, size_t bytes)
+{
+    size_t n = mem ? bytes / sizeof(vcent) : 0;
+    r->vcache = n ? mem : NULL;
+    r->vcache_n = n > INT32_MAX ? INT32_MAX : (int32_t)n;
+    r->vcache_gen = 0;
+    if (n)
+        fx_memset(mem, 0, n * sizeof(vcent));
+}
+
+void fx3d_depth_rows(fx3d *r, int32_t y0, int32_t y1)
+{
+    r->depth_y0 = y0;
+    r->depth_y1 = y1;
 }
 
 int fx3d_set_depth(fx3d *r, void *buf, int bits)
@@ -1201,6 +1239,102 @@ static int facing(const cvert *v)
     return d > 0 ? 1 : d < 0 ? -1 : 0;
 }
 
+/* Whether a triangle certainly draws nothing in pc->clip: every vertex in
+ * front of the eye (w >= 1/16) and beyond the same edge of the clip widened
+ * by AWAY_PX pixels, tested on x/w and y/w without a division. The clipped
+ * and projected triangle lies in the convex hull of its vertices' screen
+ * points (projection keeps convexity where w > 0), so nothing of it can
+ * reach the clip; the margin covers the rounding of clipping, projection
+ * and the rasterizer's edges. Such triangles need no lighting: in a band
+ * of a frame drawn on several threads most triangles are outside the band,
+ * and skipping them changes no pixel. */
+#define AWAY_PX 8
+static int clip_away(const pctx *pc, const int32_t (*v)[4], int n)
+{
+    const fx_rect c = pc->clip;
+    if (pc->vw > (1 << 14) || pc->vh > (1 << 14) || pc->vw < 1 || pc->vh < 1 || pc->vx < -(1 << 20) ||
+        pc->vx > (1 << 20) || pc->vy < -(1 << 20) || pc->vy > (1 << 20) || c.x0 < -(1 << 20) ||
+        c.y0 < -(1 << 20) || c.x1 > (1 << 20) || c.y1 > (1 << 20))
+        return 0;
+    for (int i = 0; i < n; i++)
+        if (v[i][3] < (1 << 12))
+            return 0;
+    if (fx_rect_empty(c))
+        return 1;
+    /* screen x = vx*256 - 128 + (x + w) hx / w, in 24.8 with pixel centres
+     * at integers; the same for y with (w - y) */
+    int64_t hx = (int64_t)pc->vw * 128, hy = (int64_t)pc->vh * 128;
+    int64_t kx0 = ((int64_t)c.x0 - AWAY_PX) * 256 - (int64_t)pc->vx * 256 + 128;
+    int64_t kx1 = ((int64_t)c.x1 - 1 + AWAY_PX) * 256 - (int64_t)pc->vx * 256 + 128;
+    int64_t ky0 = ((int64_t)c.y0 - AWAY_PX) * 256 - (int64_t)pc->vy * 256 + 128;
+    int64_t ky1 = ((int64_t)c.y1 - 1 + AWAY_PX) * 256 - (int64_t)pc->vy * 256 + 128;
+    int l = 1, rt = 1, t = 1, b = 1;
+    for (int i = 0; i < n; i++) {
+        int64_t x = v[i][0], y = v[i][1], w = v[i][3];
+        int64_t sx = (x + w) * hx, sy = (w - y) * hy;
+        l &= sx < kx0 * w;
+        rt &= sx > kx1 * w;
+        t &= sy < ky0 * w;
+        b &= sy > ky1 * w;
+    }
+    return l | rt | t | b;
+}
+
+static int tri_away(const pctx *pc, const cvert *v)
+{
+    int32_t c[3][4];
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 4; k++)
+            c[i][k] = v[i].c[k];
+    return clip_away(pc, (const int32_t(*)[4])c, 3);
+}
+
+int fx3d_hull_away(fx3d *r, const fx_vec3 *pts, int n)
+{
+    /* sorted triangles (the set a full buffer drops), a planar shadow (it
+     * falls elsewhere) and a shadow-map pass (not drawn in the clip) */
+    if (!r || !pts || n < 1 || r->visibility == FX3D_VIS_PAINTER || (r->alpha < 255 && r->tbuf) ||
+        r->sm_phase == 1 || r->plane_shadow)
+        return 0;
+    /* The box of the points, widened by 1/256 of their largest coordinate
+     * and 64 units: what is made from them in fixed point (a Bezier patch
+     * evaluated with rounded weights) may stray a little outside their
+     * hull, and the slack is in object space, so it holds at any zoom. */
+    int64_t lo[3], hi[3], big = 0;
+    for (int i = 0; i < n; i++) {
+        int64_t q[3] = {pts[i].x, pts[i].y, pts[i].z};
+        for (int k = 0; k < 3; k++) {
+            lo[k] = i == 0 || q[k] < lo[k] ? q[k] : lo[k];
+            hi[k] = i == 0 || q[k] > hi[k] ? q[k] : hi[k];
+            big = q[k] > big ? q[k] : -q[k] > big ? -q[k] : big;
+        }
+    }
+    int64_t slack = big / 256 + 64;
+    for (int k = 0; k < 3; k++) {
+        lo[k] -= slack;
+        hi[k] += slack;
+        if (lo[k] < -(INT64_C(1) << 30) || hi[k] > (INT64_C(1) << 30))
+            return 0; /* far beyond any scene: not worth the overflow care */
+    }
+    pctx pc;
+    pc.clip = fx_rect_intersect(r->ctx.clip, r->viewport);
+    pc.vx = r->viewport.x0;
+    pc.vy = r->viewport.y0;
+    pc.vw = r->viewport.x1 - r->viewport.x0;
+    pc.vh = r->viewport.y1 - r->viewport.y0;
+    fx_mat4 mv;
+    fx_mat4_mul(&mv, &r->view, fx_mat_stack_top(&r->model));
+    const fx_mat4 *P = fx_mat_stack_top(&r->proj);
+    int32_t c[8][4];
+    for (int i = 0; i < 8; i++) { /* the corners, as fx3d_draw transforms a vertex */
+        fx_vec3 p = fx_vec3_make((fx16)(i & 1 ? hi[0] : lo[0]), (fx16)(i & 2 ? hi[1] : lo[1]),
+                                 (fx16)(i & 4 ? hi[2] : lo[2]));
+        fx_vec4 e = fx_mat4_apply(P, fx_mat4_apply_point(&mv, p));
+        c[i][0] = e.x, c[i][1] = e.y, c[i][2] = e.z, c[i][3] = e.w;
+    }
+    return clip_away(&pc, (const int32_t(*)[4])c, 8);
+}
+
 static void set_rgb(int32_t *a, fx3d_rgb c)
 {
     a[0] = c.r;
@@ -1370,6 +1504,21 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
         tm.flat[0] = tm.flat[1] = r->background;
     }
 
+    /* Triangles kept for a sort (painter's, translucent) are never skipped:
+     * the set a full buffer drops, and the order of equal keys, would
+     * change with the clip. */
+    int may_skip = r->visibility != FX3D_VIS_PAINTER && !(tm.blend == 1 && r->tbuf);
+    /* The vertex cache: entries of an earlier draw have an older gen. */
+    vcent *vc = NULL;
+    uint32_t gen = 0;
+    if (r->vcache && m->nverts <= r->vcache_n) {
+        vc = (vcent *)r->vcache;
+        if (++r->vcache_gen == 0) {
+            fx_memset(vc, 0, (size_t)r->vcache_n * sizeof *vc);
+            r->vcache_gen = 1;
+        }
+        gen = r->vcache_gen;
+    }
     /* Hidden lines without the painter: all faces of the mesh first (depth
      * and background), then all edges against that depth. */
     int passes = r->polymode == FX3D_HIDDEN_LINE && r->visibility != FX3D_VIS_PAINTER ? 2 : 1;
@@ -1385,6 +1534,13 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                 idx[i] = m->tri[3 * t + i];
                 if (idx[i] >= (uint32_t)m->nverts)
                     return -FX_EINVAL;
+                vcent *ce = vc ? &vc[idx[i]] : NULL;
+                if (ce && ce->gen == gen) {
+                    ep[i] = ce->ep;
+                    for (int k = 0; k < 4; k++)
+                        v[i].c[k] = ce->c[k];
+                    continue;
+                }
                 fx_vec4 e = fx_mat4_apply_point(&mv, m->pos[idx[i]]);
                 ep[i] = fx_vec3_make(e.x, e.y, e.z);
                 fx_vec4 c = fx_mat4_apply(P, e);
@@ -1392,6 +1548,12 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                 v[i].c[1] = c.y;
                 v[i].c[2] = c.z;
                 v[i].c[3] = c.w;
+                if (ce) {
+                    ce->ep = ep[i];
+                    for (int k = 0; k < 4; k++)
+                        ce->c[k] = v[i].c[k];
+                    ce->gen = gen;
+                }
             }
             int f = facing(v);
             if (f == 0 || (r->cull == FX3D_CULL_BACK && f < 0) || (r->cull == FX3D_CULL_FRONT && f > 0)) {
@@ -1399,104 +1561,131 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                 continue;
             }
             r->stat_drawn++;
-            fx_vec3 fn = fx_vec3_cross(fx_vec3_sub(ep[1], ep[0]), fx_vec3_sub(ep[2], ep[0]));
-            if (fx_vec3_normalize(&fn) < 0) {
-                /* Too small for Q16.16 cross products: scale up and retry. */
-                fn = fx_vec3_cross(fx_vec3_scale(fx_vec3_sub(ep[1], ep[0]), 256 << 16),
-                                   fx_vec3_sub(ep[2], ep[0]));
-                fx_vec3_normalize(&fn);
-            }
-            /* Back faces seen through openings are lit from their own side. */
-            int flip = f < 0;
-            if (flip)
-                fn = fx_vec3_make(-fn.x, -fn.y, -fn.z);
-            if (tm.solid || tm.bump)
-                for (int i = 0; i < 3; i++) {
-                    fx_vec3 o = m->pos[idx[i]];
-                    fx16 sc = tm.obj_scale;
-                    v[i].a[A_OBJ] = fx_sat32((int64_t)o.x * 65536 / sc);
-                    v[i].a[A_OBJ + 1] = fx_sat32((int64_t)o.y * 65536 / sc);
-                    v[i].a[A_OBJ + 2] = fx_sat32((int64_t)o.z * 65536 / sc);
-                }
-            if (tm.tex)
-                for (int i = 0; i < 3; i++) {
-                    if (r->tex_sphere_map) {
-                        fx_vec3 n = fn;
-                        if (smooth) {
-                            n = fx_mat4_apply_dir(&nm, m->nrm[idx[i]]);
-                            if (fx_vec3_normalize(&n) < 0)
-                                n = fn;
-                        }
-                        sphere_st(ep[i], n, r->parallel, &v[i].a[A_TEX]);
-                    } else {
-                        v[i].a[A_TEX] = m->uv[2 * idx[i]];
-                        v[i].a[A_TEX + 1] = m->uv[2 * idx[i] + 1];
-                    }
-                    if (r->texm.slot) {
-                        fx16 st[2];
-                        fx3d_tex_coord(r, v[i].a[A_TEX], v[i].a[A_TEX + 1], st);
-                        v[i].a[A_TEX] = st[0], v[i].a[A_TEX + 1] = st[1];
-                    }
-                }
-            if (tm.use_sm) {
-                for (int i = 0; i < 3; i++) {
-                    fx_vec4 w4 = fx_mat4_apply_point(model, m->pos[idx[i]]);
-                    wp[i] = fx_vec3_make(w4.x, w4.y, w4.z);
-                    for (int k = 0; k < tm.use_sm; k++)
-                        sm_coords(pc.smv[k], wp[i], &v[i].a[k ? A_SMK + 3 * (k - 1) : A_SM]);
-                }
-            }
-            if (r->polymode == FX3D_FILL) {
-                if (tm.kind == K_FLAT) {
-                    fx_vec3 cen = fx_vec3_make(
-                        (fx16)(((int64_t)ep[0].x + ep[1].x + ep[2].x) / 3),
-                        (fx16)(((int64_t)ep[0].y + ep[1].y + ep[2].y) / 3),
-                        (fx16)(((int64_t)ep[0].z + ep[1].z + ep[2].z) / 3));
-                    /* GL's flat shading takes the last vertex's colour */
-                    fx3d_rgb pv, *pvc = NULL;
-                    if (m->col) {
-                        pv = fx3d_rgb_from_color(m->col[idx[2]]);
-                        pvc = &pv;
-                    }
-                    tm.flat_full = pshade(&pc, cen, fn, 0, pvc);
-                    tm.flat[0] = fx3d_rgb_to_color(tm.flat_full);
-                    for (int k = 0; k < tm.use_sm; k++)
-                        tm.flat_wo[k] = pshade(&pc, cen, fn, 1u << pc.smv[k]->light, pvc);
-                    tm.flat[1] = tm.use_sm ? fx3d_rgb_to_color(tm.flat_wo[0]) : tm.flat[0];
-                } else {
-                    for (int i = 0; i < 3; i++) {
-                        fx_vec3 n = fn;
-                        if (smooth) {
-                            n = fx_mat4_apply_dir(&nm, m->nrm[idx[i]]);
-                            if (fx_vec3_normalize(&n) < 0)
-                                n = fn;
-                            else if (flip)
-                                n = fx_vec3_make(-n.x, -n.y, -n.z);
-                        }
-                        fx3d_rgb vc, *vcp = NULL;
-                        if (m->col) {
-                            vc = fx3d_rgb_from_color(m->col[idx[i]]);
-                            vcp = &vc;
-                        }
-                        if (tm.kind == K_GOURAUD) {
-                            set_rgb(&v[i].a[A_COL], pshade(&pc, ep[i], n, 0, vcp));
-                            for (int k = 0; k < tm.use_sm; k++)
-                                set_rgb(&v[i].a[k ? A_WOK + 3 * (k - 1) : A_POS],
-                                        pshade(&pc, ep[i], n, 1u << pc.smv[k]->light, vcp));
-                        } else {
-                            set_vec(&v[i].a[A_COL], n);
-                            set_vec(&v[i].a[A_POS], ep[i]);
-                            if (vcp)
-                                set_rgb(&v[i].a[A_VCOL], vc);
-                        }
-                    }
-                }
-            }
             cvert keep[3];
-            if (plane_on && f > 0)
+            if (may_skip && tri_away(&pc, v)) {
+                /* its planar shadow may still fall into the clip */
+                if (!(plane_on && f > 0))
+                    continue;
                 for (int i = 0; i < 3; i++)
                     keep[i] = v[i];
-            draw_clipped(&pc, v, &tm);
+            } else {
+                fx_vec3 fn = fx_vec3_cross(fx_vec3_sub(ep[1], ep[0]), fx_vec3_sub(ep[2], ep[0]));
+                if (fx_vec3_normalize(&fn) < 0) {
+                    /* Too small for Q16.16 cross products: scale up and retry. */
+                    fn = fx_vec3_cross(fx_vec3_scale(fx_vec3_sub(ep[1], ep[0]), 256 << 16),
+                                       fx_vec3_sub(ep[2], ep[0]));
+                    fx_vec3_normalize(&fn);
+                }
+                /* Back faces seen through openings are lit from their own side. */
+                int flip = f < 0;
+                if (flip)
+                    fn = fx_vec3_make(-fn.x, -fn.y, -fn.z);
+                if (tm.solid || tm.bump)
+                    for (int i = 0; i < 3; i++) {
+                        fx_vec3 o = m->pos[idx[i]];
+                        fx16 sc = tm.obj_scale;
+                        v[i].a[A_OBJ] = fx_sat32((int64_t)o.x * 65536 / sc);
+                        v[i].a[A_OBJ + 1] = fx_sat32((int64_t)o.y * 65536 / sc);
+                        v[i].a[A_OBJ + 2] = fx_sat32((int64_t)o.z * 65536 / sc);
+                    }
+                if (tm.tex)
+                    for (int i = 0; i < 3; i++) {
+                        if (r->tex_sphere_map) {
+                            fx_vec3 n = fn;
+                            if (smooth) {
+                                n = fx_mat4_apply_dir(&nm, m->nrm[idx[i]]);
+                                if (fx_vec3_normalize(&n) < 0)
+                                    n = fn;
+                            }
+                            sphere_st(ep[i], n, r->parallel, &v[i].a[A_TEX]);
+                        } else {
+                            v[i].a[A_TEX] = m->uv[2 * idx[i]];
+                            v[i].a[A_TEX + 1] = m->uv[2 * idx[i] + 1];
+                        }
+                        if (r->texm.slot) {
+                            fx16 st[2];
+                            fx3d_tex_coord(r, v[i].a[A_TEX], v[i].a[A_TEX + 1], st);
+                            v[i].a[A_TEX] = st[0], v[i].a[A_TEX + 1] = st[1];
+                        }
+                    }
+                if (tm.use_sm) {
+                    for (int i = 0; i < 3; i++) {
+                        fx_vec4 w4 = fx_mat4_apply_point(model, m->pos[idx[i]]);
+                        wp[i] = fx_vec3_make(w4.x, w4.y, w4.z);
+                        for (int k = 0; k < tm.use_sm; k++)
+                            sm_coords(pc.smv[k], wp[i], &v[i].a[k ? A_SMK + 3 * (k - 1) : A_SM]);
+                    }
+                }
+                if (r->polymode == FX3D_FILL) {
+                    if (tm.kind == K_FLAT) {
+                        fx_vec3 cen = fx_vec3_make(
+                            (fx16)(((int64_t)ep[0].x + ep[1].x + ep[2].x) / 3),
+                            (fx16)(((int64_t)ep[0].y + ep[1].y + ep[2].y) / 3),
+                            (fx16)(((int64_t)ep[0].z + ep[1].z + ep[2].z) / 3));
+                        /* GL's flat shading takes the last vertex's colour */
+                        fx3d_rgb pv, *pvc = NULL;
+                        if (m->col) {
+                            pv = fx3d_rgb_from_color(m->col[idx[2]]);
+                            pvc = &pv;
+                        }
+                        tm.flat_full = pshade(&pc, cen, fn, 0, pvc);
+                        tm.flat[0] = fx3d_rgb_to_color(tm.flat_full);
+                        for (int k = 0; k < tm.use_sm; k++)
+                            tm.flat_wo[k] = pshade(&pc, cen, fn, 1u << pc.smv[k]->light, pvc);
+                        tm.flat[1] = tm.use_sm ? fx3d_rgb_to_color(tm.flat_wo[0]) : tm.flat[0];
+                    } else {
+                        for (int i = 0; i < 3; i++) {
+                            vcent *ce = vc ? &vc[idx[i]] : NULL;
+                            fx_vec3 n = fn;
+                            int nok = 0;
+                            if (smooth && ce && ce->ngen == gen) {
+                                nok = ce->nok;
+                                if (nok)
+                                    n = ce->n;
+                            } else if (smooth) {
+                                n = fx_mat4_apply_dir(&nm, m->nrm[idx[i]]);
+                                nok = fx_vec3_normalize(&n) >= 0;
+                                if (ce) {
+                                    ce->n = n;
+                                    ce->nok = nok;
+                                    ce->ngen = gen;
+                                }
+                                if (!nok)
+                                    n = fn;
+                            }
+                            if (nok && flip)
+                                n = fx_vec3_make(-n.x, -n.y, -n.z);
+                            fx3d_rgb vcl, *vcp = NULL;
+                            if (m->col) {
+                                vcl = fx3d_rgb_from_color(m->col[idx[i]]);
+                                vcp = &vcl;
+                            }
+                            if (tm.kind == K_GOURAUD && ce && nok && !tm.use_sm) {
+                                /* a function of the vertex and its side alone */
+                                if (ce->lgen[flip] != gen) {
+                                    ce->col[flip] = pshade(&pc, ep[i], n, 0, vcp);
+                                    ce->lgen[flip] = gen;
+                                }
+                                set_rgb(&v[i].a[A_COL], ce->col[flip]);
+                            } else if (tm.kind == K_GOURAUD) {
+                                set_rgb(&v[i].a[A_COL], pshade(&pc, ep[i], n, 0, vcp));
+                                for (int k = 0; k < tm.use_sm; k++)
+                                    set_rgb(&v[i].a[k ? A_WOK + 3 * (k - 1) : A_POS],
+                                            pshade(&pc, ep[i], n, 1u << pc.smv[k]->light, vcp));
+                            } else {
+                                set_vec(&v[i].a[A_COL], n);
+                                set_vec(&v[i].a[A_POS], ep[i]);
+                                if (vcp)
+                                    set_rgb(&v[i].a[A_VCOL], vcl);
+                            }
+                        }
+                    }
+                }
+                if (plane_on && f > 0)
+                    for (int i = 0; i < 3; i++)
+                        keep[i] = v[i];
+                draw_clipped(&pc, v, &tm);
+            }
 
             if (plane_on && f > 0) {
                 tri_mode sm_mode;

@@ -54,14 +54,21 @@ void fx_scene_fix_format(fx_scene *sc, fx_format f)
     sc->format_fixed = 1;
 }
 
-void *fx_scene_alloc(fx_scene *sc, size_t size)
+void *fx_scene_alloc_raw(fx_scene *sc, size_t size)
 {
     size_t at = (sc->arena_used + 7) & ~(size_t)7;
     if (at > sc->arena_size || size > sc->arena_size - at)
         return 0;
     sc->arena_used = at + size;
-    fx_memset(sc->arena + at, 0, size);
     return sc->arena + at;
+}
+
+void *fx_scene_alloc(fx_scene *sc, size_t size)
+{
+    void *p = fx_scene_alloc_raw(sc, size);
+    if (p)
+        fx_memset(p, 0, size);
+    return p;
 }
 
 int fx_scene_surface(fx_scene *sc)

@@ -61,6 +61,20 @@ static int get(fx_scene *sc, s3d **out)
         sc->mod[FX_SCENE_MOD_3D] = s;
     }
     fx_scene_band_clip(sc, &s->r.ctx.clip);
+    /* every clip of a band lies in its rows: the rest of the depth buffer
+     * is never read, so clearing it in every band would only repeat work */
+    if (sc->banded) {
+        fx3d_depth_rows(&s->r, sc->band.y0, sc->band.y1);
+    } else if (s->r.depth_y1 > s->r.depth_y0) {
+        /* the scene goes on unbanded (after fx_scene_run_mt): the rows its
+         * band never cleared become far, and clears cover every row again */
+        int32_t y0 = s->r.depth_y0, y1 = s->r.depth_y1;
+        fx3d_depth_rows(&s->r, 0, y0);
+        fx3d_clear_depth(&s->r);
+        fx3d_depth_rows(&s->r, y1, INT32_MAX);
+        fx3d_clear_depth(&s->r);
+        fx3d_depth_rows(&s->r, 0, 0);
+    }
     *out = s;
     return 0;
 }
@@ -99,7 +113,8 @@ static int cmd_depth(fx_scene *sc)
     if (c == 2)
         return fx3d_set_depth(&s->r, NULL, 0);
     if (!s->zbuf[c]) {
-        s->zbuf[c] = fx_scene_alloc(sc, fx3d_depth_bytes(&sc->ctx.surf, c ? 32 : 16));
+        /* not zeroed: fx3d_set_depth clears it (the rows a band reads) */
+        s->zbuf[c] = fx_scene_alloc_raw(sc, fx3d_depth_bytes(&sc->ctx.surf, c ? 32 : 16));
         if (!s->zbuf[c])
             return fx_scene_error(sc, "out of scene memory for a depth buffer");
     }
@@ -573,7 +588,22 @@ int fx_scene_mesh_draw(fx_scene *sc, fx_mesh *m)
     s3d *s;
     TRY(get(sc, &s));
     s->r.ctx = fx_scene_screen_ctx(&sc->ctx);
-    return fx3d_draw(&s->r, m);
+    /* Each vertex transformed and lit once, not once per triangle (a band
+     * of a frame on several threads repeats this part). The cache is
+     * scratch: taken from the free arena for this draw only (zeroed: the
+     * renderer's generation count starts anew) and given back after it, so
+     * a script that fitted before still fits; without room for it the
+     * pixels are the same, only slower. */
+    size_t mark = sc->arena_used, need = fx3d_vertex_cache_bytes(m->nverts);
+    void *mem = need ? fx_scene_alloc_raw(sc, need) : NULL; /* zeroed by fx3d_set_vertex_cache */
+    if (mem)
+        fx3d_set_vertex_cache(&s->r, mem, need);
+    int rc = fx3d_draw(&s->r, m);
+    if (mem) {
+        fx3d_set_vertex_cache(&s->r, NULL, 0);
+        sc->arena_used = mark;
+    }
+    return rc;
 }
 
 int fx_scene_object_view(fx_scene *sc, fx_vec3 *eye, int *parallel)
@@ -594,14 +624,33 @@ int fx_scene_object_view(fx_scene *sc, fx_vec3 *eye, int *parallel)
     return 0;
 }
 
-static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
+/* The mesh block for the shape p describes (sizes checked, not yet made). */
+static int mesh_for(fx_scene *sc, s3d *s, const fx_mesh_params *p, fx_mesh *m)
 {
     int32_t nv, nt;
     if (fx_mesh_size(p, &nv, &nt) < 0)
         return fx_scene_error(sc, "tessellation out of range");
+    return fx_scene_mesh_alloc(sc, nv, nt, s->r.tex != 0, m);
+}
+
+static int draw_params(fx_scene *sc, s3d *s, const fx_mesh_params *p)
+{
     fx_mesh m;
-    TRY(fx_scene_mesh_alloc(sc, nv, nt, s->r.tex != 0, &m));
+    TRY(mesh_for(sc, s, p, &m));
     TRY(fx_mesh_make(&m, p));
+    return fx_scene_mesh_draw(sc, &m);
+}
+
+static int hull_away(void *u, const fx_vec3 *pts, int n) { return fx3d_hull_away(u, pts, n); }
+
+/* The teapot without the patches that cannot reach the clip (a band of a
+ * frame on several threads tessellates only its own). */
+static int draw_teapot(fx_scene *sc, s3d *s, const fx_mesh_params *p)
+{
+    fx_mesh m;
+    TRY(mesh_for(sc, s, p, &m));
+    s->r.ctx = fx_scene_screen_ctx(&sc->ctx); /* the clip fx3d_draw will have */
+    TRY(fx_mesh_make_teapot(&m, p->a, p->n, hull_away, &s->r));
     return fx_scene_mesh_draw(sc, &m);
 }
 
@@ -616,7 +665,7 @@ static int mesh_cmd(fx_scene *sc, fx_mesh_kind kind, int nfx, int nint)
     for (int i = 0; i < nint; i++)
         TRY(fx_scene_arg_int(sc, iv[i]));
     TRY(fx_scene_end(sc));
-    return draw_params(sc, s, &p);
+    return kind == FX_MESH_TEAPOT ? draw_teapot(sc, s, &p) : draw_params(sc, s, &p);
 }
 
 static int cmd_cube(fx_scene *sc) { return mesh_cmd(sc, FX_MESH_CUBE, 1, 0); }

@@ -489,3 +489,126 @@ FX_TEST(render3d_bench_frame_draws_the_teapot)
     FX_CHECK_MSG(teapot > 192 * 108 / 8 && teapot < 192 * 108 / 2, "%d teapot pixels", teapot);
     free(mem);
 }
+
+/* ---- the per-band savings: vertex cache, hull test, depth rows ---- */
+
+static void lit_teapot(rig *g, fx_mesh *m, int depth)
+{
+    memset(g->px, 0, sizeof g->px);
+    fx3d_set_depth(&g->r, depth ? g->z : NULL, 32);
+    FX_CHECK_EQ(fx3d_draw(&g->r, m), 0);
+}
+
+/* Transformed and lit once per vertex (fx3d_set_vertex_cache) or once per
+ * triangle, a Gouraud teapot under three lights, its inside seen through
+ * the open top with culling off (each vertex lit from both sides), with
+ * and without vertex colours, is the same picture; a cache too small for
+ * the mesh is not used. */
+FX_TEST(render3d_vertex_cache_keeps_the_pixels)
+{
+    rig *g = rig_new();
+    fx_mesh_params p = {FX_MESH_TEAPOT, ONE, 0, 0, 5, 0};
+    int32_t nv, nt;
+    FX_CHECK_EQ(fx_mesh_size(&p, &nv, &nt), 0);
+    fx_mesh m = {calloc((size_t)nv, sizeof(fx_vec3)), calloc((size_t)nv, sizeof(fx_vec3)),
+                 calloc((size_t)nt * 3, sizeof(uint32_t)), 0, 0, nv, nt, NULL, NULL};
+    FX_CHECK_EQ(fx_mesh_make(&m, &p), 0);
+    fx_color *col = calloc((size_t)nv, sizeof *col);
+    for (int32_t i = 0; i < nv; i++)
+        col[i] = 0xFF000000u | (uint32_t)(i * 2654435761u >> 8);
+    g->r.light[0] = (fx3d_light){0};
+    g->r.light[0].type = FX3D_LIGHT_DIRECTIONAL;
+    g->r.light[0].pos = fx_vec3_make(ONE, ONE, ONE);
+    g->r.light[0].diffuse = g->r.light[0].specular = fx3d_rgb_from_color(0xFFFFFF);
+    g->r.light[1] = g->r.light[0];
+    g->r.light[1].type = FX3D_LIGHT_POINT;
+    g->r.light[1].pos = fx_vec3_make(-3 * ONE, 2 * ONE, 0);
+    g->r.light[1].diffuse = fx3d_rgb_from_color(0x4060FF);
+    g->r.light[1].att_const = ONE, g->r.light[1].att_quad = ONE / 16;
+    g->r.light[2] = g->r.light[1];
+    g->r.light[2].type = FX3D_LIGHT_SPOT;
+    g->r.light[2].pos = fx_vec3_make(0, 4 * ONE, -4 * ONE);
+    g->r.light[2].spot_dir = fx_vec3_make(0, -ONE, 0);
+    g->r.light[2].cutoff = fx_angle_from_deg(40);
+    g->r.light[2].spot_exp = 2;
+    g->r.ambient = fx3d_rgb_from_color(0x202020);
+    g->r.mat.ambient = g->r.mat.diffuse = fx3d_rgb_from_color(0xC04020);
+    g->r.mat.specular = fx3d_rgb_from_color(0xFFFFFF);
+    g->r.mat.shininess = 40;
+    g->r.cull = FX3D_CULL_NONE;
+    fx_mat4 look;
+    fx_mat4_rotate_x(&look, fx_angle_from_deg(35));
+    fx_mat4_translate(&g->r.view, 0, -ONE, -6 * ONE);
+    fx_mat4_mul(&g->r.view, &g->r.view, &look);
+    static uint32_t plain[100 * 100];
+    void *mem = malloc(fx3d_vertex_cache_bytes(nv));
+    for (int vcol = 0; vcol < 2; vcol++) {
+        m.col = vcol ? col : NULL;
+        fx3d_set_vertex_cache(&g->r, NULL, 0);
+        lit_teapot(g, &m, 1);
+        memcpy(plain, g->px, sizeof plain);
+        int lit = 0;
+        for (int i = 0; i < 100 * 100; i++)
+            lit += (plain[i] & 0xFFFFFF) != 0;
+        FX_CHECK(lit > 1000);
+        fx3d_set_vertex_cache(&g->r, mem, fx3d_vertex_cache_bytes(nv));
+        FX_CHECK_EQ(g->r.vcache_n, nv);
+        for (int k = 0; k < 2; k++) { /* a second draw finds last draw's entries stale */
+            lit_teapot(g, &m, 1);
+            FX_CHECK(memcmp(plain, g->px, sizeof plain) == 0);
+        }
+        g->r.vcache_gen = UINT32_MAX; /* the generation wraps: entries cleared */
+        lit_teapot(g, &m, 1);
+        FX_CHECK(memcmp(plain, g->px, sizeof plain) == 0);
+        fx3d_set_vertex_cache(&g->r, mem, fx3d_vertex_cache_bytes(nv - 1));
+        lit_teapot(g, &m, 1);
+        FX_CHECK(memcmp(plain, g->px, sizeof plain) == 0);
+    }
+    free(mem);
+    free(col);
+    free(m.pos);
+    free(m.nrm);
+    free(m.tri);
+    free(g);
+}
+
+/* fx3d_hull_away: points beyond one edge of the clip (widened by a margin)
+ * are away; points across it, behind the eye, or under painter's mode or a
+ * planar shadow are not. fx3d_depth_rows: only those rows are cleared. */
+FX_TEST(render3d_hull_away_and_depth_rows)
+{
+    rig *g = rig_new();
+    /* at z = -2 the view spans x, y in [-2, 2]: 25 pixels a unit */
+    fx_vec3 left[2] = {fx_vec3_make(-5 * ONE, 0, -2 * ONE), fx_vec3_make(-3 * ONE, ONE, -2 * ONE)};
+    fx_vec3 mid[2] = {fx_vec3_make(-5 * ONE, 0, -2 * ONE), fx_vec3_make(ONE, ONE, -2 * ONE)};
+    fx_vec3 behind[2] = {fx_vec3_make(-5 * ONE, 0, 2 * ONE), fx_vec3_make(-3 * ONE, 0, -2 * ONE)};
+    FX_CHECK_EQ(fx3d_hull_away(&g->r, left, 2), 1);
+    FX_CHECK_EQ(fx3d_hull_away(&g->r, mid, 2), 0);
+    FX_CHECK_EQ(fx3d_hull_away(&g->r, behind, 2), 0);
+    FX_CHECK_EQ(fx3d_hull_away(&g->r, left, 0), 0);
+    /* a band of rows 0..29: y = -1 (pixel 74) is below it, y = 0.4 (pixel
+     * 40) beyond the 8-pixel margin, y = 0.6 (pixel 35) within it */
+    g->r.ctx.clip = (fx_rect){0, 0, 100, 30};
+    fx_vec3 low[1] = {fx_vec3_make(0, -ONE, -2 * ONE)};
+    fx_vec3 near_edge[1] = {fx_vec3_make(0, ONE * 4 / 10, -2 * ONE)};
+    fx_vec3 past_edge[1] = {fx_vec3_make(0, ONE * 6 / 10, -2 * ONE)};
+    FX_CHECK_EQ(fx3d_hull_away(&g->r, low, 1), 1);
+    FX_CHECK_EQ(fx3d_hull_away(&g->r, near_edge, 1), 1);
+    FX_CHECK_EQ(fx3d_hull_away(&g->r, past_edge, 1), 0);
+    g->r.visibility = FX3D_VIS_PAINTER;
+    FX_CHECK_EQ(fx3d_hull_away(&g->r, low, 1), 0);
+    g->r.visibility = FX3D_VIS_NONE;
+    g->r.plane_shadow = 1;
+    FX_CHECK_EQ(fx3d_hull_away(&g->r, low, 1), 0);
+    g->r.plane_shadow = 0;
+    /* depth rows */
+    memset(g->z, 0x11, sizeof g->z);
+    fx3d_depth_rows(&g->r, 10, 20);
+    FX_CHECK_EQ(fx3d_set_depth(&g->r, g->z, 32), 0);
+    for (int y = 0; y < 100; y++)
+        FX_CHECK_EQ(g->z[y * 100 + 37], y >= 10 && y < 20 ? 0xFFFFFFFFu : 0x11111111u);
+    fx3d_depth_rows(&g->r, 0, 0);
+    fx3d_clear_depth(&g->r);
+    FX_CHECK_EQ(g->z[99 * 100 + 99], 0xFFFFFFFFu);
+    free(g);
+}

@@ -233,3 +233,75 @@ FX_TEST(obj_rejects_malformed_files_with_the_line)
         FX_CHECK_MSG(strcmp(err.msg, bad[i].msg) == 0, "case %zu: '%s' (want '%s')", i, err.msg, bad[i].msg);
     }
 }
+
+/* fx_mesh_make_teapot leaves out the patches away() names, keeping the
+ * others' vertices, normals and triangles as in the whole teapot (a band
+ * of a frame then tessellates only its patches and draws the same ones);
+ * away() sees each patch's 16 control points, whose hull holds the patch. */
+typedef struct skipper {
+    int calls;
+    int hull_ok;
+    fx_vec3 lo[32], hi[32];
+} skipper;
+
+static int odd_patches(void *u, const fx_vec3 *pts, int n)
+{
+    skipper *s = u;
+    int p = s->calls++;
+    FX_CHECK_EQ(n, 16);
+    fx_vec3 lo = pts[0], hi = pts[0];
+    for (int i = 1; i < n; i++) {
+        lo.x = pts[i].x < lo.x ? pts[i].x : lo.x, hi.x = pts[i].x > hi.x ? pts[i].x : hi.x;
+        lo.y = pts[i].y < lo.y ? pts[i].y : lo.y, hi.y = pts[i].y > hi.y ? pts[i].y : hi.y;
+        lo.z = pts[i].z < lo.z ? pts[i].z : lo.z, hi.z = pts[i].z > hi.z ? pts[i].z : hi.z;
+    }
+    s->lo[p] = lo, s->hi[p] = hi;
+    return p & 1;
+}
+
+FX_TEST(mesh_teapot_leaves_out_the_patches_asked)
+{
+    fx_mesh all = {0}, some = {0};
+    fx_mesh_params p = {FX_MESH_TEAPOT, 3 * ONE / 2, 0, 0, 5, 0};
+    FX_CHECK_EQ(make(&all, p), 0);
+    some.pos = calloc((size_t)all.nverts, sizeof(fx_vec3));
+    some.nrm = calloc((size_t)all.nverts, sizeof(fx_vec3));
+    some.tri = calloc((size_t)all.ntris * 3, sizeof(uint32_t));
+    some.cap_verts = all.nverts;
+    some.cap_tris = all.ntris;
+    /* no callback: the whole teapot */
+    FX_CHECK_EQ(fx_mesh_make_teapot(&some, p.a, p.n, NULL, NULL), 0);
+    FX_CHECK_EQ(some.nverts, all.nverts);
+    FX_CHECK(memcmp(some.pos, all.pos, sizeof(fx_vec3) * (size_t)all.nverts) == 0);
+    FX_CHECK(memcmp(some.tri, all.tri, sizeof(uint32_t) * 3 * (size_t)all.ntris) == 0);
+    skipper s = {0};
+    FX_CHECK_EQ(fx_mesh_make_teapot(&some, p.a, p.n, odd_patches, &s), 0);
+    FX_CHECK_EQ(s.calls, 32);
+    int32_t pv = 36, pt = 2 * 25; /* a patch: 6x6 vertices, 50 triangles */
+    FX_CHECK_EQ(some.nverts, 16 * pv);
+    FX_CHECK_EQ(some.ntris, 16 * pt);
+    for (int k = 0; k < 16; k++) { /* kept patch k is patch 2k */
+        const fx_vec3 *a = all.pos + 2 * k * pv, *b = some.pos + k * pv;
+        FX_CHECK(memcmp(a, b, sizeof(fx_vec3) * (size_t)pv) == 0);
+        FX_CHECK(memcmp(all.nrm + 2 * k * pv, some.nrm + k * pv, sizeof(fx_vec3) * (size_t)pv) == 0);
+        for (int32_t t = 0; t < 3 * pt; t++)
+            FX_CHECK_EQ(some.tri[3 * k * pt + t] - (uint32_t)(k * pv), all.tri[3 * 2 * k * pt + t] - (uint32_t)(2 * k * pv));
+    }
+    /* every tessellated point lies in its patch's control box (the hull's
+     * box) widened by the slack fx3d_hull_away allows: 1/256 of the largest
+     * coordinate (the weights' rounding strays some 10^-5 of it) */
+    for (int q = 0; q < 32; q++) {
+        int32_t big = 0;
+        fx16 e[6] = {s.lo[q].x, s.lo[q].y, s.lo[q].z, s.hi[q].x, s.hi[q].y, s.hi[q].z};
+        for (int k = 0; k < 6; k++)
+            big = e[k] > big ? e[k] : -e[k] > big ? -e[k] : big;
+        int32_t sl = big / 256 + 64;
+        for (int32_t i = 0; i < pv; i++) {
+            fx_vec3 v = all.pos[q * pv + i];
+            FX_CHECK(v.x >= s.lo[q].x - sl && v.x <= s.hi[q].x + sl && v.y >= s.lo[q].y - sl &&
+                     v.y <= s.hi[q].y + sl && v.z >= s.lo[q].z - sl && v.z <= s.hi[q].z + sl);
+        }
+    }
+    drop(&all);
+    drop(&some);
+}

@@ -79,6 +79,14 @@ int fx_mesh_size(const fx_mesh_params *p, int32_t *nverts, int32_t *ntris);
 /* Generate into m (pos, nrm, tri and the capacities set by the caller;
  * nrm must not be NULL). */
 int fx_mesh_make(fx_mesh *m, const fx_mesh_params *p);
+/* The teapot of fx_mesh_make (FX_MESH_TEAPOT, scale, n) without the patches
+ * for which away(user, its 16 control points, 16) returns nonzero (say,
+ * fx3d_hull_away: a patch lies in the convex hull of its control points,
+ * so one wholly outside a band of the frame need not be tessellated);
+ * away NULL keeps every patch. The kept patches are the same vertices and
+ * triangles, in the same order, as in the whole teapot. */
+int fx_mesh_make_teapot(fx_mesh *m, fx16 scale, int32_t n, int (*away)(void *user, const fx_vec3 *pts, int npts),
+                        void *user);
 /* Names as used by scripts ("cube", "teapot", ...); FX_MESH_KIND_COUNT if unknown. */
 fx_mesh_kind fx_mesh_kind_from_name(const char *name);
 

@@ -188,6 +188,13 @@ typedef struct fx3d {
     int32_t alpha;        /* 255 opaque */
     void *tbuf;
     int32_t tcap, tcount, tdropped;
+    /* Rows of the depth buffer fx3d_clear_depth clears (fx3d_depth_rows);
+     * depth_y1 <= depth_y0: all. */
+    int32_t depth_y0, depth_y1;
+    /* Vertex cache (fx3d_set_vertex_cache) */
+    void *vcache;
+    int32_t vcache_n;
+    uint32_t vcache_gen;
 } fx3d;
 
 /* A pipeline on surface s: viewport = whole surface, identity matrices,
@@ -203,6 +210,28 @@ size_t fx3d_depth_bytes(const fx_surface *s, int bits);
  * buf == NULL detaches it. */
 int fx3d_set_depth(fx3d *r, void *buf, int bits);
 void fx3d_clear_depth(fx3d *r);
+/* Clear only rows y0..y1-1 of the depth buffer from now on (y1 <= y0: every
+ * row, the default). For a band of a frame drawn on several threads, whose
+ * every clip lies in those rows: the depth of other rows is never read, so
+ * a band need not clear (or the caller zero) the whole buffer. */
+void fx3d_depth_rows(fx3d *r, int32_t y0, int32_t y1);
+/* Optional scratch memory for fx3d_draw (mem NULL: none): a mesh of at most
+ * as many vertices as fit has each vertex transformed, and under Gouraud
+ * shading lit, once per draw instead of once per triangle using it. The
+ * pixels are the same with and without it. fx3d_vertex_cache_bytes gives
+ * the bytes for nverts vertices. The memory must stay until replaced. */
+size_t fx3d_vertex_cache_bytes(int32_t nverts);
+/* 1 when nothing inside the convex hull of the n object-space points pts
+ * (widened by 1/256 of their largest coordinate, for what fixed-point
+ * evaluation makes of them) can be drawn in the clip with the current
+ * matrices and viewport: the corners of their box all in front of the eye
+ * and beyond one edge of the clip widened by a margin. fx3d_draw skips the
+ * lighting of such triangles itself; this lets a caller skip making them
+ * (fx_mesh_make_teapot's patches in a band of a frame). 0 when unsure, and
+ * always for painter's or translucent triangles (sorted), a planar shadow
+ * or a shadow-map pass. */
+int fx3d_hull_away(fx3d *r, const fx_vec3 *pts, int n);
+void fx3d_set_vertex_cache(fx3d *r, void *mem, size_t bytes);
 
 /* Painter's mode: triangles are kept (up to what fits in mem) and drawn
  * sorted by mean depth, farthest first, by fx3d_flush. Triangles beyond the

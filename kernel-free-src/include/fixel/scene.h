@@ -180,6 +180,9 @@ int fx_scene_arg_choice(fx_scene *sc, const char *const *choices);
 void fx_scene_band_clip(const fx_scene *sc, fx_rect *clip);
 /* Take size bytes (8-byte aligned, zeroed) from the arena; NULL when full. */
 void *fx_scene_alloc(fx_scene *sc, size_t size);
+/* The same, not zeroed: for buffers the caller fills before reading (a
+ * depth buffer, which fx3d clears; in a band only the band's rows). */
+void *fx_scene_alloc_raw(fx_scene *sc, size_t size);
 
 /* ---- the argument table (kernel-free-src/scene/scene_args.c) ----
  * Every command declares the type and range of each argument, once. Before a
