@@ -1,5 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* fixel — whole frames on several threads, in bands (see par.h). */
+/* clock_gettime and CLOCK_THREAD_CPUTIME_ID are POSIX, hidden by a plain
+ * -std=c11 (the kernel rig builds this file with one). */
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE
+#endif
 #include "fixel/par.h"
 
 #include <pthread.h>
@@ -7,6 +12,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "fixel/error.h"
@@ -64,6 +70,7 @@ typedef struct band {
     fx_scene *sc;
     int index;
     int rc;
+    int64_t cpu_ns; /* the band's script run, CPU time of its thread */
 } band;
 
 struct scene_job {
@@ -76,6 +83,8 @@ struct scene_job {
     pthread_mutex_t host_lock; /* the host's functions, one call at a time */
     int have_surface;
     fx_surface surf;
+    uint64_t key;      /* the script, size, format and band count (plan_key) */
+    int32_t cut[65];   /* band k is rows [cut[k], cut[k + 1]) */
     /* files and images loaded for one band serve the others (a 48 MiB font
      * is read and unpacked once, not once per band) */
     struct loaded {
@@ -128,6 +137,108 @@ static void band_done(scene_job *j)
     pthread_mutex_unlock(&j->lock);
 }
 
+/* ---- where the bands are cut ----
+ * Equal bands of rows are only as even as the picture (a teapot's lid and
+ * spout are in its top half), so a script drawn again at the same size is
+ * cut where the last frame's cost says: each band's thread CPU time is
+ * spread evenly over its rows, and the new cuts split that cost into equal
+ * parts. Only the time a frame takes depends on the cuts, never its pixels
+ * (every band draws the whole frame clipped to its rows). One plan is
+ * kept, for the last script run banded. */
+static pthread_mutex_t plan_lock = PTHREAD_MUTEX_INITIALIZER;
+static uint64_t plan_key;
+static int32_t plan_cut[65];
+
+static uint64_t plan_key_of(const char *text, size_t len, int32_t w, int32_t h, fx_format f, int n)
+{
+    uint64_t k = 0xcbf29ce484222325ull; /* FNV-1a */
+    for (size_t i = 0; i < len; i++)
+        k = (k ^ (uint8_t)text[i]) * 0x100000001b3ull;
+    uint64_t v[4] = {(uint64_t)len, (uint64_t)(uint32_t)w << 32 | (uint32_t)h, (uint64_t)f, (uint64_t)n};
+    for (int i = 0; i < 4; i++)
+        k = (k ^ v[i]) * 0x100000001b3ull;
+    return k | 1; /* never 0, the empty plan */
+}
+
+void fx_par_balance(int n, const int32_t *cut, const int64_t *cost, int32_t *out)
+{
+    int32_t h = cut[n];
+    for (int k = 0; k <= n; k++)
+        out[k] = (int32_t)((int64_t)h * k / n);
+    int64_t total = 0;
+    for (int k = 0; k < n; k++) {
+        if (cost[k] < 0 || cut[k + 1] <= cut[k] || cost[k] > INT64_MAX / 2 / 64 - total)
+            return; /* not a plan to follow: equal bands */
+        total += cost[k];
+    }
+    if (total <= 0 || h < n)
+        return;
+    int k = 0;
+    int64_t before = 0; /* the cost of bands before k */
+    for (int m = 1; m < n; m++) {
+        int64_t want = total * m; /* the cost up to cut m, times n */
+        while (k < n - 1 && (before + cost[k]) * n <= want)
+            before += cost[k++];
+        /* inside band k, cost[k] spread over its rows */
+        int64_t rows = cut[k + 1] - cut[k], c = cost[k] * n;
+        /* want - before*n < c here, so scaling both below 2^31 keeps
+         * (part * rows) inside 64 bits without __int128, which 32-bit ARM lacks */
+        int64_t part = want - before * n;
+        while (c >= ((int64_t)1 << 31)) {
+            c >>= 1;
+            part >>= 1;
+        }
+        int64_t at = cut[k] + (c > 0 ? part * rows / c : 0);
+        if (at > cut[k + 1])
+            at = cut[k + 1];
+        /* at least one row per band */
+        if (at < out[m - 1] + 1)
+            at = out[m - 1] + 1;
+        if (at > h - (n - m))
+            at = h - (n - m);
+        out[m] = (int32_t)at;
+    }
+}
+
+static void plan_cuts(scene_job *j, int32_t w, int32_t h, fx_format f)
+{
+    j->key = plan_key_of(j->text, j->len, w, h, f, j->n);
+    for (int k = 0; k <= j->n; k++)
+        j->cut[k] = (int32_t)((int64_t)h * k / j->n);
+    pthread_mutex_lock(&plan_lock);
+    if (plan_key == j->key)
+        memcpy(j->cut, plan_cut, sizeof j->cut[0] * (size_t)(j->n + 1));
+    pthread_mutex_unlock(&plan_lock);
+}
+
+static void plan_learn(scene_job *j)
+{
+    int64_t cost[64];
+    for (int k = 0; k < j->n; k++)
+        cost[k] = j->b[k].cpu_ns;
+    int32_t next[65];
+    fx_par_balance(j->n, j->cut, cost, next);
+    pthread_mutex_lock(&plan_lock);
+    plan_key = j->key;
+    memcpy(plan_cut, next, sizeof next[0] * (size_t)(j->n + 1));
+    pthread_mutex_unlock(&plan_lock);
+}
+
+void fx_par_last_cuts(int32_t *cut, int n)
+{
+    pthread_mutex_lock(&plan_lock);
+    memcpy(cut, plan_cut, sizeof cut[0] * (size_t)(n + 1));
+    pthread_mutex_unlock(&plan_lock);
+}
+
+static int64_t thread_cpu_ns(void)
+{
+    struct timespec t;
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t))
+        return 0;
+    return (int64_t)t.tv_sec * 1000000000 + t.tv_nsec;
+}
+
 static int host_make_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surface *out)
 {
     band *b = u;
@@ -137,6 +248,8 @@ static int host_make_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surf
     if (!j->have_surface) {
         r = j->host.make_surface(j->host.user, w, h, f, &j->surf);
         j->have_surface = r >= 0;
+        if (r >= 0)
+            plan_cuts(j, w, h, f);
     }
     pthread_mutex_unlock(&j->host_lock);
     if (r < 0)
@@ -146,7 +259,9 @@ static int host_make_surface(void *u, int32_t w, int32_t h, fx_format f, fx_surf
         return -FX_EINVAL;
     *out = j->surf;
     fx_rect whole = {0, 0, w, h};
-    fx_scene_set_band(b->sc, band_rect(whole, b->index, j->n));
+    whole.y0 = j->cut[b->index];
+    whole.y1 = j->cut[b->index + 1];
+    fx_scene_set_band(b->sc, whole);
     return 0;
 }
 
@@ -242,6 +357,43 @@ static int band_raytrace(void *u, const struct fx_rt_scene *s, const fx_surface 
     return 0;
 }
 
+/* The extra bands' arenas, kept from one frame to the next: fresh memory
+ * from malloc is mapped anew each time, and a band's first touch of every
+ * page of its depth buffer then faults and has the kernel zero the page
+ * (at 1920x1080 that was an eighth of the band's CPU time). One set is
+ * kept; a second caller at the same time takes its own. Reachable until
+ * exit, like any cache. */
+static pthread_mutex_t arena_lock = PTHREAD_MUTEX_INITIALIZER;
+static uint8_t *arena_keep;
+static size_t arena_keep_size;
+
+static uint8_t *arenas_take(size_t size)
+{
+    uint8_t *a = 0;
+    pthread_mutex_lock(&arena_lock);
+    if (arena_keep && arena_keep_size >= size) {
+        a = arena_keep;
+        arena_keep = 0;
+    }
+    pthread_mutex_unlock(&arena_lock);
+    return a ? a : malloc(size);
+}
+
+static void arenas_give(uint8_t *a, size_t size)
+{
+    if (!a)
+        return;
+    pthread_mutex_lock(&arena_lock);
+    if (!arena_keep || arena_keep_size < size) {
+        uint8_t *old = arena_keep;
+        arena_keep = a;
+        arena_keep_size = size;
+        a = old;
+    }
+    pthread_mutex_unlock(&arena_lock);
+    free(a);
+}
+
 /* A band runs the script; the bands run all at once, one per thread (the
  * collective steps wait for every band), so the number of bands is the
  * number of threads that could be started. */
@@ -255,7 +407,9 @@ static void *scene_worker(void *arg)
     int k = atomic_fetch_add(&j->next, 1);
     if (k < j->n) {
         band *b = &j->b[k];
+        int64_t t0 = thread_cpu_ns();
         b->rc = fx_scene_run(b->sc, j->text, j->len);
+        b->cpu_ns = thread_cpu_ns() - t0;
         band_done(j);
     }
     return 0;
@@ -276,11 +430,12 @@ int fx_scene_run_mt(fx_scene *sc, const char *text, size_t len, int nthreads, in
         return fx_scene_run(sc, text, len);
     scene_job *j = calloc(1, sizeof *j);
     fx_scene *extra = calloc((size_t)nthreads - 1, sizeof *extra);
-    uint8_t *arenas = sc->arena_size ? malloc(sc->arena_size * (size_t)(nthreads - 1)) : 0;
+    size_t arenas_size = sc->arena_size * (size_t)(nthreads - 1);
+    uint8_t *arenas = sc->arena_size ? arenas_take(arenas_size) : 0;
     if (!j || !extra || (sc->arena_size && !arenas)) {
         free(j);
         free(extra);
-        free(arenas);
+        arenas_give(arenas, arenas_size);
         return fx_scene_run(sc, text, len);
     }
     j->text = text;
@@ -324,6 +479,8 @@ int fx_scene_run_mt(fx_scene *sc, const char *text, size_t len, int nthreads, in
         pthread_join(t[i], 0);
 
     int rc = 0;
+    if (j->have_surface && j->n > 1)
+        plan_learn(j);
     for (int k = 0; k < j->n; k++)
         if (j->b[k].rc < 0) {
             rc = j->b[k].rc;
@@ -347,7 +504,7 @@ int fx_scene_run_mt(fx_scene *sc, const char *text, size_t len, int nthreads, in
     pthread_cond_destroy(&j->cond);
     pthread_mutex_destroy(&j->lock);
     pthread_mutex_destroy(&j->host_lock);
-    free(arenas);
+    arenas_give(arenas, arenas_size);
     free(extra);
     free(j);
     return rc;

@@ -8,6 +8,7 @@
 #define FIXEL_POSIX_INT_H
 
 #include <stdarg.h>
+#include <stdint.h>
 
 #include "fixel/log.h"
 
@@ -33,6 +34,17 @@ void fx_log_access_hint(const fx_logger *l, const char *path);
  * caller's; returns when all have returned: 0, or the -errno of a thread
  * that could not start (those that did start still do all the work). */
 int fx_posix_workers(void *(*fn)(void *), void *arg, int nthreads);
+
+/* ---- band cuts of fx_scene_run_mt (par.c) ---- */
+
+/* New cuts out[0..n] for n bands whose rows were [cut[k], cut[k + 1]) and
+ * cost cost[k] each (cut[0] = 0, cut[n] = rows): the cost spread evenly
+ * over each band's rows, cut into n equal parts, every band at least one
+ * row. Equal bands when the costs say nothing (all zero, negative). */
+void fx_par_balance(int n, const int32_t *cut, const int64_t *cost, int32_t *out);
+/* The cuts fx_scene_run_mt will use for the last script it ran banded, if
+ * that script runs again at the same size, format and band count. */
+void fx_par_last_cuts(int32_t *cut, int n);
 
 /* ---- blocking calls with a timeout (waiter.c) ---- */
 

@@ -5,6 +5,7 @@
  * one thread for serial commands and tracing, and reports errors as
  * fx_scene_run does. (Every golden script and demo page: tests/boards/bands.sh.) */
 #include <stdatomic.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -12,6 +13,7 @@
 #include "fixel/memfb.h"
 #include "fixel/par.h"
 #include "fx_test.h"
+#include "../../boards/posix/posix_int.h"
 
 typedef struct seen {
     atomic_int rows[100];
@@ -156,4 +158,223 @@ FX_TEST(scene_run_mt_falls_back_and_reports_errors)
     if (H.have)
         fx_memfb_destroy(&H.fb);
     FX_CHECK_EQ(fx_scene_run_mt(&sc, "", 0, 0, NULL), -FX_EINVAL);
+}
+
+/* The 3D pipeline skips the lighting of triangles that cannot reach the
+ * clip (a band): the Gouraud and flat teapots, and Gouraud meshes under
+ * several lights (directional, attenuated point, spot) with a planar shadow
+ * (an unlit triangle's shadow may fall into the band), a clip, a wire frame,
+ * a viewport, a cleared depth buffer (a band clears its own rows only) and
+ * teapots reaching past every edge, are the one-thread picture byte for byte
+ * in 2, 3 and 4 bands, in XRGB8888 and RGB565. */
+static const char *const lit3d[] = {
+    "size 240 180\nclear #1C2430\ndepth 32\ncamera 0 3.2 7.5 0 1.3 0 0 1 0\nperspective 40 0.5 50\n"
+    "light 0 directional 1 1.2 1 #FFFFFF\nlight 1 point -5 4 3 #4060FF\nambient #282828\n"
+    "material #B03818 #C04020 #FFFFFF 40\nshading gouraud\nrotatey -20\nteapot 1 6\n"
+    "translate3d -3.5 -2 0\nteapot 1.6 5\ntranslate3d 7 4.2 0\nteapot 1.6 5\n",
+    "size 240 180\nclear #1C2430\ndepth 16\ncamera 0 3.2 7.5 0 1.3 0 0 1 0\nperspective 40 0.5 50\n"
+    "light 0 directional 1 1.2 1 #FFFFFF\nlight 1 point -5 4 3 #4060FF\nambient #282828\n"
+    "material #B03818 #C04020 #FFFFFF 40\nshading flat\nrotatey -20\nteapot 1 6\n"
+    "translate3d 3 -1 1\nteapot 1.8 4\n",
+    "size 240 180\nclear #000000\ndepth 32\ncamera 0 4 7 0 0.6 0 0 1 0\nperspective 40 0.5 50\n"
+    "light 0 point 2 6 2 #FFFFFF\nattenuation 0 1 0.05 0.01\n"
+    "light 1 spot -3 5 2 0.6 -1 -0.4 45 2 #80FF80\nlight 2 directional -1 0.5 1 #402020\n"
+    "ambient #202020\nshading gouraud\nmaterial #808080 #A0A0A0 #000000 1\nfloor 8 8\n"
+    "shadowplane 0 1 0 0 0 #303438\nmaterial #C04020 #C04020 #FFFFFF 40\npush3d\n"
+    "translate3d 0 0.02 0\nteapot 0.6 5\npop3d\nshadowplane off\n"
+    "push3d\ntranslate3d -2.4 0.8 0.5\nsphere 0.8 16 12\npop3d\n"
+    "clip 20 30 200 150\npush3d\ntranslate3d 2 1.4 0\nrotatex 60\ntorus 0.7 0.25 20 12\npop3d\nclip off\n"
+    "polymode wire\ncolor #FFFF00\npush3d\ntranslate3d 0 2.6 0\ntorus 1.2 0.2 16 8\npop3d\n"
+    "polymode fill\ncleardepth\nviewport3d 140 100 100 80\nshading flat\ncube 2.5\n",
+};
+
+static int run_fmt(const char *text, int nthreads, fx_format f, host *H, int *bands)
+{
+    static fx_scene sc;
+    static uint8_t arena[2 << 20];
+    memset(H, 0, sizeof *H);
+    fx_scene_host hs = {H, make_surface, NULL, NULL, NULL, NULL};
+    fx_scene_init(&sc, &hs, arena, sizeof arena);
+    fx_scene_fix_format(&sc, f);
+    return fx_scene_run_mt(&sc, text, strlen(text), nthreads, bands);
+}
+
+FX_TEST(scene_run_mt_3d_lit_bands_are_the_one_thread_picture)
+{
+    static const fx_format fmts[2] = {FX_FMT_XRGB8888, FX_FMT_RGB565};
+    for (size_t s = 0; s < sizeof lit3d / sizeof lit3d[0]; s++)
+        for (int f = 0; f < 2; f++) {
+            host one, many;
+            int bands = 0;
+            FX_CHECK_EQ(run_fmt(lit3d[s], 1, fmts[f], &one, &bands), 0);
+            FX_CHECK_EQ(bands, 1);
+            size_t bytes = (size_t)one.fb.surf.stride * (size_t)one.fb.surf.h;
+            /* the picture is not empty: a band drawing nothing would fail */
+            int lit = 0;
+            for (size_t i = 1; i < bytes && !lit; i++)
+                lit = ((uint8_t *)one.fb.surf.pixels)[i] != ((uint8_t *)one.fb.surf.pixels)[0];
+            FX_CHECK(lit);
+            for (int n = 2; n <= 4; n++) {
+                FX_CHECK_EQ(run_fmt(lit3d[s], n, fmts[f], &many, &bands), 0);
+                FX_CHECK_EQ(bands, n);
+                FX_CHECK_EQ(many.fb.surf.format, fmts[f]);
+                if (memcmp(one.fb.surf.pixels, many.fb.surf.pixels, bytes))
+                    fprintf(stderr, "script %zu, format %d, %d bands differ\n", s, f, n);
+                FX_CHECK(memcmp(one.fb.surf.pixels, many.fb.surf.pixels, bytes) == 0);
+                fx_memfb_destroy(&many.fb);
+            }
+            fx_memfb_destroy(&one.fb);
+        }
+}
+
+/* A banded scene goes on unbanded after fx_scene_run_mt: its band cleared
+ * only its own rows of the depth buffer (the arena is not zeroed for it),
+ * so the first 3D command after the run clears the rest; a cube drawn then
+ * is the cube of a one-thread scene (before: rows of the other bands held
+ * whatever the arena held, and hid it there). */
+FX_TEST(scene_run_mt_depth_rows_after_the_bands)
+{
+    static fx_scene sc;
+    host one, many;
+    int bands = 0;
+    static const char pre[] = "size 64 48\nclear #000000\ndepth 32\n";
+    const char cube[] = "cube 2.5";
+    FX_CHECK_EQ(run(pre, 1, 0, &one, &bands, &sc), 0);
+    FX_CHECK_EQ(fx_scene_exec_line(&sc, cube, strlen(cube), 4), 0);
+    static uint32_t want[64 * 48];
+    memcpy(want, one.fb.surf.pixels, sizeof want);
+    int lit = 0;
+    for (int i = 0; i < 64 * 48; i++)
+        lit += (want[i] & 0xFFFFFF) != 0;
+    FX_CHECK(lit > 300);
+    fx_memfb_destroy(&one.fb);
+    for (int n = 2; n <= 4; n++) {
+        /* the arena as a frame before left it: dirty */
+        FX_CHECK_EQ(run("size 64 48\nclear #000000\ndepth 32\ncube 1\n", n, 0, &many, &bands, &sc), 0);
+        fx_memfb_destroy(&many.fb);
+        FX_CHECK_EQ(run(pre, n, 0, &many, &bands, &sc), 0);
+        FX_CHECK_EQ(bands, n);
+        FX_CHECK_EQ(fx_scene_exec_line(&sc, cube, strlen(cube), 4), 0);
+        FX_CHECK(memcmp(want, many.fb.surf.pixels, sizeof want) == 0);
+        fx_memfb_destroy(&many.fb);
+    }
+}
+
+/* Band cuts from the last frame's cost (par.c fx_par_balance): the cost of
+ * each band spread evenly over its rows, cut into equal parts. */
+FX_TEST(par_balance_cuts_the_cost_into_equal_parts)
+{
+    int32_t out[65];
+    /* 3/4 of the cost in the top half: the cut moves up to a third */
+    {
+        const int32_t cut[] = {0, 50, 100};
+        const int64_t cost[] = {3000, 1000};
+        fx_par_balance(2, cut, cost, out);
+        FX_CHECK_EQ(out[0], 0);
+        FX_CHECK_EQ(out[1], 33);
+        FX_CHECK_EQ(out[2], 100);
+        /* the same in nanoseconds of a 3 s frame: past 32 bits */
+        const int64_t ns[] = {3000000000000000, 1000000000000000};
+        fx_par_balance(2, cut, ns, out);
+        FX_CHECK_EQ(out[1], 33);
+    }
+    /* already even: unchanged */
+    {
+        const int32_t cut[] = {0, 20, 60, 90};
+        const int64_t cost[] = {500, 500, 500};
+        fx_par_balance(3, cut, cost, out);
+        FX_CHECK_EQ(out[1], 20);
+        FX_CHECK_EQ(out[2], 60);
+        FX_CHECK_EQ(out[3], 90);
+    }
+    /* every cost in the last band: the others get a row each */
+    {
+        const int32_t cut[] = {0, 25, 50, 75, 100};
+        const int64_t cost[] = {0, 0, 0, 4000};
+        fx_par_balance(4, cut, cost, out);
+        FX_CHECK_EQ(out[1], 81);
+        FX_CHECK_EQ(out[2], 87);
+        FX_CHECK_EQ(out[3], 93);
+        FX_CHECK(out[1] < out[2] && out[2] < out[3] && out[3] < out[4]);
+    }
+    /* nothing measured, a negative time, too few rows: equal bands */
+    {
+        const int32_t cut[] = {0, 10, 100};
+        const int64_t zero[] = {0, 0}, neg[] = {-5, 100};
+        fx_par_balance(2, cut, zero, out);
+        FX_CHECK_EQ(out[1], 50);
+        fx_par_balance(2, cut, neg, out);
+        FX_CHECK_EQ(out[1], 50);
+        const int32_t small[] = {0, 1, 2, 3};
+        const int64_t c3[] = {1, 1, 100};
+        fx_par_balance(3, small, c3, out);
+        FX_CHECK(out[1] == 1 && out[2] == 2 && out[3] == 3);
+        const int64_t huge[] = {INT64_MAX, INT64_MAX};
+        const int32_t c2[] = {0, 50, 100};
+        fx_par_balance(2, c2, huge, out);
+        FX_CHECK_EQ(out[1], 50);
+    }
+    /* a random split: cuts increase, each band has a row, and the predicted
+     * cost of every new band is within one row's cost of the mean */
+    uint32_t seed = 5;
+    for (int t = 0; t < 2000; t++) {
+        int n = 2 + (int)(fx_test_rand(&seed) % 63);
+        int32_t h = n + (int32_t)(fx_test_rand(&seed) % 2000), cut[65];
+        int64_t cost[64];
+        cut[0] = 0;
+        cut[n] = h;
+        for (int k = 1; k < n; k++)
+            cut[k] = (int32_t)((int64_t)h * k / n);
+        for (int k = 0; k < n; k++)
+            cost[k] = cut[k + 1] > cut[k] ? (int64_t)(fx_test_rand(&seed) % 1000000) : 0;
+        fx_par_balance(n, cut, cost, out);
+        FX_CHECK_EQ(out[0], 0);
+        FX_CHECK_EQ(out[n], h);
+        int ok = 1;
+        for (int k = 0; k < n; k++)
+            ok &= out[k + 1] > out[k];
+        FX_CHECK_MSG(ok, "cuts do not increase (trial %d)", t);
+        /* the same costs in units 2^30 times smaller (nanoseconds of long
+         * frames): cuts within a row, with no 128-bit arithmetic (32-bit ARM) */
+        int64_t big[64];
+        int32_t out_big[65];
+        for (int k = 0; k < n; k++)
+            big[k] = cost[k] << 30;
+        fx_par_balance(n, cut, big, out_big);
+        int near = 1;
+        for (int k = 0; k <= n; k++)
+            near &= out_big[k] - out[k] <= 1 && out[k] - out_big[k] <= 1;
+        FX_CHECK_MSG(near, "large costs moved a cut by more than a row (trial %d)", t);
+    }
+}
+
+/* A script drawn again at the same size is cut where the last frame's
+ * cost says (the top-heavy teapot moves the cut up), and every frame is
+ * still the one-thread picture. */
+FX_TEST(scene_run_mt_rebalanced_bands_are_the_one_thread_picture)
+{
+    static const char top[] = "size 64 96\n"
+                              "clear #000000\n"
+                              "clip 0 0 63 23\n"
+                              "mandelbrot -0.5 0 3 3000\n"
+                              "clip off\n"
+                              "color #FFFFFF\n"
+                              "line 0 95 63 60\n";
+    static fx_scene sc;
+    host one, many;
+    int bands = 0;
+    FX_CHECK_EQ(run(top, 1, 0, &one, &bands, &sc), 0);
+    size_t bytes = (size_t)64 * 96 * 4;
+    int32_t cut[3] = {0, 0, 0};
+    for (int frame = 0; frame < 4; frame++) {
+        FX_CHECK_EQ(run(top, 2, 0, &many, &bands, &sc), 0);
+        FX_CHECK_EQ(bands, 2);
+        FX_CHECK(memcmp(one.fb.surf.pixels, many.fb.surf.pixels, bytes) == 0);
+        fx_memfb_destroy(&many.fb);
+        fx_par_last_cuts(cut, 2);
+    }
+    /* the work is all in rows 0-23: the cut moved up from the middle */
+    FX_CHECK_MSG(cut[1] < 40, "cut at %d", cut[1]);
+    FX_CHECK_EQ(cut[2], 96);
+    fx_memfb_destroy(&one.fb);
 }

@@ -44,7 +44,9 @@ int fx_par_bands(const fx_ctx *c, int nbands, int nthreads, fx_par_draw_fn draw,
 
 /* Run a whole script as fx_scene_run does, on nthreads threads (1..64) in
  * nthreads bands (as many as threads could be started), with the same
- * pixels. sc is fresh (initialised, nothing
+ * pixels. The bands are equal the first time; the same script run again at
+ * the same size is cut by the last run's cost per band (docs/ARCHITECTURE.md),
+ * which changes its speed, never its pixels. sc is fresh (initialised, nothing
  * run yet); the other bands get scenes like it, with arenas of sc's size
  * (allocated here, freed before returning), and call sc's host functions
  * one at a time (a mutex), make_surface only once; a file or image the
