@@ -49,3 +49,5 @@ TEST_SUITES += "sh tests/kiosk/notify.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk
 TEST_DEB_PKGS += libsystemd-dev python3
 # output sections: one process, one screen per section (issue #25)
 TEST_SUITES += "sh tests/kiosk/screens.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-screens"
+# --threads: frames drawn in bands on 2, 3, 4 threads equal one thread's (issue #27)
+TEST_SUITES += "sh tests/kiosk/threads.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-threads"

@@ -16,7 +16,9 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <malloc.h>
+#include <pthread.h>
 #include <signal.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,6 +37,7 @@
 #include "fixel/font.h"
 #include "fixel/line.h"
 #include "fixel/memfb.h"
+#include "fixel/par.h"
 #include "fixel/texture.h"
 #include "fixel/version.h"
 #include "fixel/viz.h"
@@ -103,6 +106,7 @@ typedef struct kiosk {
     uint8_t stale[KIOSK_MAX_WIDGETS];
     int status_dirty, full;
     int64_t clock_sec;
+    int64_t wall_sec; /* the clock widgets' time of day, read once per frame (every band shows the same) */
     int fd;
     /* one line buffer per source: a partial stdin line must not swallow an
      * MQTT payload arriving meanwhile (issue #24 review) */
@@ -112,6 +116,7 @@ typedef struct kiosk {
     kscreen scr[KIOSK_MAX_OUTPUTS];
     int nscr;        /* 1, or the config's output sections */
     int always_full; /* --full: redraw everything each frame (tests check damage against it) */
+    int threads;     /* --threads: a frame's drawing in bands of rows on this many threads */
     kimg img[KIOSK_MAX_WIDGETS];
     uint32_t img_errors;  /* image loads that failed (missing, corrupt, too large) */
     /* live mode: MQTT, control and status (docs/kiosk.md, "MQTT") */
@@ -653,7 +658,8 @@ static void draw_widget(kiosk *k, fx_ctx *base, int i)
     const kiosk_widget *w = &k->cfg.widgets[i];
     fx_rect r = widget_rect(k, w);
     fx_ctx c = *base;
-    fx_ctx_set_clip(&c, r);
+    /* narrowed, never replaced: base's clip is a band when threads draw (fixel/par.h) */
+    c.clip = fx_rect_intersect(r, base->clip);
     if (w->type == KIOSK_BUTTON) { draw_button(k, &c, i, r); return; }
     int stale = k->stale[i];
     fx_color acc = stale ? STALE_FG : w->color, fgc = stale ? STALE_FG : k->cfg.fg;
@@ -711,14 +717,7 @@ static void draw_widget(kiosk *k, fx_ctx *base, int i)
     case KIOSK_BUTTON:
     case KIOSK_NTYPES: break;
     case KIOSK_CLOCK: {
-        int64_t sec;
-        if (k->headless) sec = k->now_ms / 1000; /* virtual time: reproducible frames */
-        else {
-            time_t now = time(NULL);
-            struct tm tmv;
-            localtime_r(&now, &tmv);
-            sec = tmv.tm_hour * 3600 + tmv.tm_min * 60 + tmv.tm_sec;
-        }
+        int64_t sec = k->wall_sec;
         snprintf(buf, sizeof buf, "%02d:%02d:%02d", (int)(sec / 3600 % 24), (int)(sec / 60 % 60), (int)(sec % 60));
         int32_t sc = fit_scale(buf, rw - 16, rh - 24, 8);
         text_at(&c, r.x0 + (rw - text_w(buf, sc)) / 2, r.y0 + 14 + (rh - 14 - 10 * sc) / 2, sc, w->color, buf);
@@ -738,7 +737,7 @@ static void draw_status(kiosk *k, fx_ctx *base, int si)
 {
     fx_rect r = status_rect(k, si);
     fx_ctx c = *base;
-    fx_ctx_set_clip(&c, r);
+    c.clip = fx_rect_intersect(r, base->clip);
     fill(&c, k->cfg.bg, r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
     int nstale = 0;
     for (int i = 0; i < k->cfg.nwidgets; i++) nstale += k->stale[i];
@@ -804,9 +803,154 @@ static void spread_flags(kiosk *k)
     k->full = k->status_dirty = 0;
 }
 
+/* One frame's drawing, decided before any is done: --threads draws it in
+ * bands of rows, each thread all of it with its clip narrowed to its band
+ * (fixel/par.h), so the drawing only reads the kiosk (the widgets' values,
+ * decoded images, page and press state) and writes pixels inside c's clip;
+ * the flags and counters are settled by render() on its own thread. */
+typedef struct kframe {
+    kiosk *k;
+    int si, whole, status;
+    const char *title;
+    const uint8_t *draw; /* the widgets to draw */
+} kframe;
+
+static void draw_frame(void *user, fx_ctx *c, int band)
+{
+    const kframe *f = user;
+    kiosk *k = f->k;
+    kscreen *sc = &k->scr[f->si];
+    (void)band;
+    if (f->whole) {
+        fx_surface_fill(&c->surf, c->clip, k->cfg.bg);
+        if (f->title[0]) text_at(c, 8, 4, 2, k->cfg.fg, f->title);
+    }
+    for (int i = 0; i < k->cfg.nwidgets; i++)
+        /* a widget draws only inside its own rectangle: outside the band it is skipped whole */
+        if (f->draw[i] && !fx_rect_empty(fx_rect_intersect(widget_rect(k, &k->cfg.widgets[i]), c->clip)))
+            draw_widget(k, c, i);
+    if (f->status && !fx_rect_empty(fx_rect_intersect(status_rect(k, f->si), c->clip))) draw_status(k, c, f->si);
+    if (k->identify_phase) {
+        /* identify: a frame around the whole screen, alternating colours;
+         * each phase change is a full redraw (the frame crosses every widget gap) */
+        fx_color col = k->identify_phase == 1 ? AMBER : 0xFFFFFFFFu;
+        fill(c, col, 0, 0, sc->W, 6);
+        fill(c, col, 0, sc->H - 6, sc->W, 6);
+        fill(c, col, 0, 0, 6, sc->H);
+        fill(c, col, sc->W - 6, 0, 6, sc->H);
+    }
+}
+
+/* --threads' workers, started once and woken per frame: a thread started
+ * for each frame (fx_par_bands) starts behind the tasks already running on
+ * a busy core and often came in after a 5 ms frame was done. The job lives
+ * here, not on render()'s stack: a worker that wakes late finds every band
+ * taken (next >= nbands) and touches nothing; render() returns once every
+ * band is drawn (done == nbands), so no band is drawn from a frame that
+ * has ended. Bands and clips as fx_par_bands cuts them (fixel/par.h). */
+typedef struct kpool {
+    pthread_mutex_t m;
+    pthread_cond_t go, fin;
+    unsigned gen;  /* frames posted; workers wait for it to change */
+    int quit, n;   /* n: workers started */
+    fx_ctx c;
+    kframe f;
+    uint8_t draw[KIOSK_MAX_WIDGETS];
+    int nbands;    /* set once, before any worker starts */
+    atomic_int next, done;
+    pthread_t t[64];
+} kpool;
+
+static kpool pool = {.m = PTHREAD_MUTEX_INITIALIZER, .go = PTHREAD_COND_INITIALIZER, .fin = PTHREAD_COND_INITIALIZER};
+
+static void pool_bands(kpool *p)
+{
+    for (;;) {
+        int b = atomic_fetch_add(&p->next, 1);
+        if (b >= p->nbands) return;
+        fx_ctx c = p->c;
+        int64_t h = (int64_t)p->c.clip.y1 - p->c.clip.y0;
+        c.clip.y0 = (int32_t)(p->c.clip.y0 + h * b / p->nbands);
+        c.clip.y1 = (int32_t)(p->c.clip.y0 + h * (b + 1) / p->nbands);
+        if (!fx_rect_empty(c.clip)) draw_frame(&p->f, &c, b);
+        if (atomic_fetch_add(&p->done, 1) + 1 == p->nbands) {
+            pthread_mutex_lock(&p->m);
+            pthread_cond_signal(&p->fin);
+            pthread_mutex_unlock(&p->m);
+        }
+    }
+}
+
+static void *pool_worker(void *arg)
+{
+    kpool *p = arg;
+    pthread_mutex_lock(&p->m);
+    unsigned seen = p->gen;
+    for (;;) {
+        while (!p->quit && p->gen == seen) pthread_cond_wait(&p->go, &p->m);
+        if (p->quit) break;
+        seen = p->gen;
+        pthread_mutex_unlock(&p->m);
+        pool_bands(p);
+        pthread_mutex_lock(&p->m);
+    }
+    pthread_mutex_unlock(&p->m);
+    return NULL;
+}
+
+/* Start up to nthreads - 1 workers, each frame cut into 4 * nthreads bands
+ * (widgets cost unevenly: a heat map, an image; each thread takes the next
+ * band as it finishes). Returns how many threads draw, the caller's too:
+ * fewer when a thread cannot be started. After fx_app_open: the workers
+ * inherit its blocked signals, which only the main loop's signalfd reads. */
+static int pool_start(int nthreads)
+{
+    pool.nbands = 4 * nthreads;
+    while (pool.n < nthreads - 1 && pool.n < 63 && pthread_create(&pool.t[pool.n], NULL, pool_worker, &pool) == 0)
+        pool.n++;
+    return pool.n + 1;
+}
+
+static void pool_stop(void)
+{
+    pthread_mutex_lock(&pool.m);
+    pool.quit = 1;
+    pthread_cond_broadcast(&pool.go);
+    pthread_mutex_unlock(&pool.m);
+    for (int i = 0; i < pool.n; i++) pthread_join(pool.t[i], NULL);
+    pool.n = 0;
+}
+
+/* Draw f through c in nbands bands on the pool and this thread. */
+static void pool_draw(const fx_ctx *c, const kframe *f)
+{
+    kpool *p = &pool;
+    p->c = *c;
+    p->f = *f;
+    memcpy(p->draw, f->draw, sizeof p->draw);
+    p->f.draw = p->draw;
+    atomic_store(&p->done, 0);
+    atomic_store(&p->next, 0); /* after the job: a band claimed from here on sees it */
+    pthread_mutex_lock(&p->m);
+    p->gen++;
+    pthread_cond_broadcast(&p->go);
+    pthread_mutex_unlock(&p->m);
+    pool_bands(p);
+    pthread_mutex_lock(&p->m);
+    while (atomic_load(&p->done) < p->nbands) pthread_cond_wait(&p->fin, &p->m);
+    pthread_mutex_unlock(&p->m);
+}
+
 /* Draw what changed on screen si and present exactly those rectangles. */
 static void render(kiosk *k, int si)
 {
+    if (k->headless) k->wall_sec = k->now_ms / 1000; /* virtual time: reproducible frames */
+    else {
+        time_t now = time(NULL);
+        struct tm tmv;
+        localtime_r(&now, &tmv);
+        k->wall_sec = tmv.tm_hour * 3600 + tmv.tm_min * 60 + tmv.tm_sec;
+    }
     kscreen *sc = &k->scr[si];
     uint8_t drawn[KIOSK_MAX_WIDGETS] = {0};
     fx_surface s = sc->d ? fx_display_surface(sc->d) : fx_app_surface(k->app);
@@ -821,9 +965,8 @@ static void render(kiosk *k, int si)
         sc->full = 1;
     }
     fx_ctx_init(&c, &s);
-    if (sc->full || k->always_full) {
-        fx_surface_clear(&s, k->cfg.bg);
-        if (title[0]) text_at(&c, 8, 4, 2, k->cfg.fg, title);
+    int whole = sc->full || k->always_full;
+    if (whole) {
         for (int i = 0; i < k->cfg.nwidgets; i++)
             if (k->cfg.widgets[i].screen == si) k->dirty[i] = 1;
         sc->status = 1;
@@ -833,25 +976,30 @@ static void render(kiosk *k, int si)
             k->dirty[i] = 0;
             /* widgets of other pages keep their values; a page turn redraws everything */
             if (k->cfg.widgets[i].page != k->page) continue;
-            draw_widget(k, &c, i);
             drawn[i] = 1;
             dmg[n++] = widget_rect(k, &k->cfg.widgets[i]);
         }
+    kframe fr = {k, si, whole, sc->status, title, drawn};
     if (sc->status) {
-        draw_status(k, &c, si);
         sc->status = 0;
         dmg[n++] = status_rect(k, si);
     }
-    int whole = sc->full || k->always_full;
-    if (k->identify_phase) {
-        /* identify: a frame around the whole screen, alternating colours;
-         * each phase change is a full redraw (the frame crosses every widget gap) */
-        fx_color col = k->identify_phase == 1 ? AMBER : 0xFFFFFFFFu;
-        fill(&c, col, 0, 0, sc->W, 6);
-        fill(&c, col, 0, sc->H - 6, sc->W, 6);
-        fill(&c, col, 0, 0, 6, sc->H);
-        fill(&c, col, sc->W - 6, 0, 6, sc->H);
-    }
+    if (k->threads > 1 && (whole || n || k->identify_phase)) {
+        if (!whole && !k->identify_phase) {
+            /* only the damage's rows are cut into bands: one changed
+             * widget keeps every thread on it, not one */
+            fx_rect b = dmg[0];
+            for (int i = 1; i < n; i++) {
+                b.x0 = dmg[i].x0 < b.x0 ? dmg[i].x0 : b.x0;
+                b.y0 = dmg[i].y0 < b.y0 ? dmg[i].y0 : b.y0;
+                b.x1 = dmg[i].x1 > b.x1 ? dmg[i].x1 : b.x1;
+                b.y1 = dmg[i].y1 > b.y1 ? dmg[i].y1 : b.y1;
+            }
+            c.clip = fx_rect_intersect(b, c.clip);
+        }
+        pool_draw(&c, &fr);
+    } else
+        draw_frame(&fr, &c, 0);
     if (sc->d) {
         if (whole) fx_display_present(sc->d, NULL, 0);
         else if (n) fx_display_present(sc->d, dmg, n);
@@ -1461,6 +1609,8 @@ static void usage(FILE *f)
             "                    FIXEL_BACKEND=memory, say): DIR/live.ppm after every frame drawn\n"
             "  --last            headless: write only the last frame (DIR/last.png)\n"
             "  --full            redraw every widget each frame (default: only changed ones)\n"
+            "  --threads N       draw each frame on N threads (1..64, 0: every online core; default\n"
+            "                    1), in bands of rows: the same pixels as one thread\n"
             "  --mem-report N    headless: print RSS and heap in use after frame N and at the end\n"
             "  --size WxH        headless surface size (default: the config's size, else 480x320)\n"
             "  --format F        headless pixel format: XRGB8888 (default) or RGB565, as on a panel\n"
@@ -1482,6 +1632,7 @@ int main(int argc, char **argv)
     fx_format headless_fmt = FX_FMT_COUNT; /* --format: the memory display's, as a panel's would be */
     k->fd = -1;
     k->pressed = -1;
+    k->threads = 1;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { usage(stdout); return 0; }
@@ -1523,6 +1674,16 @@ int main(int argc, char **argv)
         }
         else if (!strcmp(a, "--last")) last_only = 1;
         else if (!strcmp(a, "--full")) k->always_full = 1;
+        else if (!strcmp(a, "--threads") && i + 1 < argc) {
+            char *end;
+            long n = strtol(argv[++i], &end, 10);
+            if (end == argv[i] || *end || n < 0 || n > 64) {
+                fprintf(stderr, "fixel-kiosk: --threads wants a number of threads from 0 (every core) to 64, not '%s'\n",
+                        argv[i]);
+                return 2;
+            }
+            k->threads = n ? (int)n : fx_par_cpu_count();
+        }
         else if (!strcmp(a, "--data") && i + 1 < argc) data = argv[++i];
         else if (!strcmp(a, "--out") && i + 1 < argc) out = argv[++i];
         else if (!strcmp(a, "--frames") && i + 1 < argc) {
@@ -1629,6 +1790,7 @@ int main(int argc, char **argv)
         if (w < 0 && w != -FX_ENODEV) return 1;
     }
     if (fx_app_open(&k->app, &o) < 0) return 1;
+    if (k->threads > 1) k->threads = pool_start(k->threads);
     if (k->headless) {
         /* fx_app_open blocks SIGINT/SIGTERM/SIGHUP for its signalfd, which
          * only the main loop reads: the headless loop never does, so Ctrl-C
@@ -1768,6 +1930,7 @@ int main(int argc, char **argv)
         kmq_stop(k->mq);
     }
     fx_app_close(k->app);
+    pool_stop();
     free_images(k);
     if (k->fd > 0) close(k->fd);
     return rc;
