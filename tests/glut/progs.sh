@@ -13,8 +13,11 @@ P=0; F=0
 pass() { P=$((P + 1)); echo "ok   $1"; }
 fail() { F=$((F + 1)); echo "FAIL $1"; }
 LIBS="$B/libfixel-glut.a $B/libfixel.a $(make -s --no-print-directory print-LDLIBS 2>/dev/null) -lm"
+# the ASan build's libraries need the sanitizer runtimes at link time
+SANF=
+nm "$B/libfixel.a" 2>/dev/null | grep -q __asan_ && SANF="-fsanitize=address,undefined"
 for lang in c c++; do
-    cc=gcc; [ $lang = c++ ] && cc="g++ -x c++"
+    cc="gcc $SANF"; [ $lang = c++ ] && cc="g++ $SANF -x c++"
     if $cc -Wall -Wextra -Werror -Iboards/glut/include tests/glut/layer/bres.c -x none -o "$out/bres-$lang" $LIBS 2>"$out/bres-$lang.log"; then
         pass "bres builds as $lang"
     else

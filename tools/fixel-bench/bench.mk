@@ -53,6 +53,7 @@ bench-peers-nodeps: $(BUILD)/bin/fixel-bench
 
 TEST_SUITES += "$(BUILD)/bin/fixel-bench --check"
 
+
 .PHONY: bench bench-peers bench-peers-nodeps
 
 # The workload frames (workloads.c) are benchmark code, not library API; the
@@ -73,3 +74,15 @@ TOOL_SRC_fixel-bench += tools/fixel-bench/api/peer_fixel_api.c
 $(BUILD)/obj/tools/fixel-bench/api/peer_fixel_api.o: tools/fixel-bench/api/peer_fixel_api.c tools/fixel-bench/bench.h $(BENCH_API_INC)/.stamp
 	@mkdir -p $(dir $@)
 	$(CC) -std=c11 -O2 -I$(BENCH_API_INC) -c $< -o $@
+
+# The same program linked to libfixel.so instead of libfixel.a (calls
+# through the PLT into -fPIC code, only the exported API), as a program
+# built with `pkg-config --libs fixel` meets the library:
+#   make bench-shared; sh tools/fixel-bench/spread.sh 5 build/bin/fixel-bench-shared --peers ...
+.PHONY: bench-shared
+bench-shared: $(BUILD)/bin/fixel-bench-shared
+$(BUILD)/bin/fixel-bench-shared: $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/fixel-bench/*.c) $(TOOL_SRC_fixel-bench)) $(LIB_SO)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(filter %.o,$^) -L$(BUILD) -Wl,-rpath,$(abspath $(BUILD)) -lfixel \
+	  $(TOOL_LIBS_fixel-bench) $(LDLIBS)
+TEST_SUITES += "$(MAKE) --no-print-directory -s $(BUILD)/bin/fixel-bench-shared && $(BUILD)/bin/fixel-bench-shared --check"

@@ -61,7 +61,7 @@ static double median(double *v, int n)
     return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
-enum { MAXB = 8 };
+enum { MAXB = 64 }; /* fx_scene_run_mt's limit */
 static int REPS = 5; /* -t */
 
 typedef struct cell {
@@ -175,13 +175,15 @@ static cell time_script(fx_memfb *fb, const char *text, size_t len, int nthreads
 
 /* ---- kiosk configs (fixel-kiosk --headless, a process per run) ---- */
 
-static double run_kiosk(const char *kiosk, const char *conf, int w, int h, const char *fmt, int frames, double *cpu)
+static double run_kiosk(const char *kiosk, const char *conf, int w, int h, const char *fmt, int frames,
+                        int nthreads, double *cpu)
 {
-    char size[32], nf[16];
+    char size[32], nf[16], nt[16];
     snprintf(size, sizeof size, "%dx%d", w, h);
     snprintf(nf, sizeof nf, "%d", frames);
-    char *argv[] = {(char *)kiosk, "--headless", "--full", "--frames", nf, "--size", size, "--format", (char *)fmt,
-                    "--data", "/dev/null", (char *)conf, NULL};
+    snprintf(nt, sizeof nt, "%d", nthreads);
+    char *argv[] = {(char *)kiosk, "--headless", "--full", "--frames", nf,        "--size", size, "--format",
+                    (char *)fmt,   "--threads",  nt,       "--data",   "/dev/null", (char *)conf, NULL};
     posix_spawn_file_actions_t fa;
     posix_spawn_file_actions_init(&fa);
     posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
@@ -202,20 +204,24 @@ static double run_kiosk(const char *kiosk, const char *conf, int w, int h, const
 }
 
 /* ms per frame: (N frames - 1 frame) / (N - 1), which takes out the
- * process start and the config's parse; the median of three */
-static double time_kiosk(const char *kiosk, const char *conf, int w, int h, const char *fmt, double *cpu)
+ * process start and the config's parse; the median of -t runs (at least
+ * three). cpu: the process's CPU ms per frame, every thread's. */
+static double time_kiosk(const char *kiosk, const char *conf, int w, int h, const char *fmt, int nthreads,
+                         double *cpu)
 {
     enum { N = 31 };
-    double v[3], c[3];
-    for (int k = 0; k < 3; k++) {
-        double ca, cb, a = run_kiosk(kiosk, conf, w, h, fmt, 1, &ca), b = run_kiosk(kiosk, conf, w, h, fmt, N, &cb);
+    double v[64], c[64];
+    int reps = REPS < 3 ? 3 : REPS;
+    for (int k = 0; k < reps; k++) {
+        double ca, cb, a = run_kiosk(kiosk, conf, w, h, fmt, 1, nthreads, &ca),
+                       b = run_kiosk(kiosk, conf, w, h, fmt, N, nthreads, &cb);
         if (a < 0 || b < 0)
             return -1;
         v[k] = (b - a) / (N - 1);
         c[k] = (cb - ca) / (N - 1);
     }
-    double m = median(v, 3);
-    *cpu = median(c, 3);
+    double m = median(v, reps);
+    *cpu = median(c, reps);
     return m < 0 ? 0 : m;
 }
 
@@ -247,9 +253,10 @@ static void row(FILE *o, const char *what, int w, int h, fx_format f, cell a, ce
 {
     fprintf(o, "%-24s %4dx%-4d %-8s %9.2f %9.2f", what, w, h, fx_format_get(f)->name, a.ms, b.ms);
     if (b.bands > 1) {
-        fprintf(o, " %5.2fx %8.2f %8.2f  ", a.ms / b.ms, a.cpu_ms, b.cpu_ms);
+        fprintf(o, " %5.2fx %8.2f %8.2f", a.ms / b.ms, a.cpu_ms, b.cpu_ms);
+        /* none for the kiosk (a process: its CPU in all) */
         for (int k = 0; k < b.bands && k < MAXB && b.band_cpu[0] > 0; k++)
-            fprintf(o, "%s%.2f", k ? "/" : "", b.band_cpu[k]);
+            fprintf(o, "%s%.2f", k ? "/" : "  ", b.band_cpu[k]);
         fprintf(o, "\n");
     } else {
         fprintf(o, "     one thread %8.2f\n", a.cpu_ms);
@@ -265,14 +272,33 @@ static void load(char *buf, size_t n)
         snprintf(buf, n, "%.2f %.2f %.2f", l[0], l[1], l[2]);
 }
 
-int frames_run(FILE *o, const char *self, int nthreads, int reps)
+/* Whether a row labelled what is asked for: only is NULL (every row) or a
+ * comma-separated list of which one is part of what. */
+static int wanted(const char *only, const char *what)
+{
+    if (!only)
+        return 1;
+    for (const char *p = only; *p;) {
+        size_t n = strcspn(p, ",");
+        for (const char *q = what; n && *q; q++)
+            if (!strncmp(q, p, n))
+                return 1;
+        p += n + (p[n] == ',');
+    }
+    return 0;
+}
+
+int frames_run(FILE *o, const char *self, int nthreads, int reps, const char *only)
 {
     REPS = reps < 1 ? 1 : reps > 64 ? 64 : reps;
     int ncpu = fx_par_cpu_count();
-    if (nthreads < 2)
+    if (nthreads == 1 || nthreads < 0 || nthreads > MAXB) {
+        fprintf(stderr, "fixel-bench: --frames -j wants 2..%d threads for the N-thread column (0: every core), not %d\n",
+                MAXB, nthreads);
+        return 2;
+    }
+    if (nthreads == 0)
         nthreads = ncpu > 1 ? ncpu : 2;
-    if (nthreads > MAXB)
-        nthreads = MAXB;
     char la[64], lb[64];
     load(la, sizeof la);
     fprintf(o, "TABLE 8  frames a user sees: ms per frame, median of %d (after one warm-up frame)\n", REPS);
@@ -291,31 +317,43 @@ int frames_run(FILE *o, const char *self, int nthreads, int reps)
     snprintf(kiosk, sizeof kiosk, "%.*sfixel-kiosk", slash ? (int)(slash - self + 1) : 0, self);
     for (int s = 0; s < 2; s++)
         for (int f = 0; f < 2; f++)
-            if (access(demo, X_OK) || demo_rows(o, demo, sizes[s][0], sizes[s][1], fmts[f], nthreads)) {
+            if (!wanted(only, "demo"))
+                continue;
+            else if (access(demo, X_OK) || demo_rows(o, demo, sizes[s][0], sizes[s][1], fmts[f], nthreads)) {
                 fprintf(o, "demo pages %dx%d %s: %s --time-pages failed or is missing\n", sizes[s][0], sizes[s][1],
                         fx_format_get(fmts[f])->name, demo);
                 bad = 1;
             }
     /* the 3D and ray-traced golden scripts at frame size: the pipelines'
-     * scaling (the demo's ray-traced page is one cached picture); the ray
+     * scaling (the demo's ray-traced page is a fixed 784x408 picture); the ray
      * tracer at a quarter of 800x480 (a whole frame takes seconds) */
     static const struct {
         const char *name;
         int w, h;
-    } scripts[] = {{"3d-teapot-phong", 800, 480},   {"3d-teapot-gouraud", 800, 480}, {"3d-torus-phong", 800, 480},
-                   {"3d-teapot-phong", 1920, 1080}, {"3d-torus-phong", 1920, 1080},  {"rt-spheres", 400, 240},
-                   {"rt-torus", 400, 240},          {0, 0, 0}};
+    } scripts[] = {{"3d-teapot-phong", 800, 480},     {"3d-teapot-gouraud", 800, 480},
+                   {"3d-teapot-flat", 800, 480},      {"3d-torus-phong", 800, 480},
+                   {"3d-teapot-phong", 1920, 1080},   {"3d-teapot-gouraud", 1920, 1080},
+                   {"3d-teapot-flat", 1920, 1080},    {"3d-torus-phong", 1920, 1080},
+                   {"rt-spheres", 400, 240},          {"rt-torus", 400, 240},
+                   {0, 0, 0}};
     size_t arena_size = (size_t)64 << 20;
     void *arena = malloc(arena_size);
     for (int i = 0; scripts[i].name && arena; i++)
         for (int f = 0; f < 2; f++) {
             int w = scripts[i].w, h = scripts[i].h;
             char path[256];
+            snprintf(path, sizeof path, "script %s", scripts[i].name);
+            if (!wanted(only, path))
+                continue;
             snprintf(path, sizeof path, "tests/golden/scripts/%s.fxs", scripts[i].name);
             size_t len;
             char *text = slurp(path, &len);
-            if (!text)
-                continue; /* run from the source tree */
+            if (!text) { /* the scripts are read from the source tree */
+                fprintf(o, "script %s: %s not found (run fixel-bench from the source tree)\n", scripts[i].name,
+                        path);
+                bad = 1;
+                continue;
+            }
             if (fx_memfb_create(&fb, w, h, fmts[f]) < 0)
                 return 1;
             int ok1, ok2;
@@ -330,7 +368,8 @@ int frames_run(FILE *o, const char *self, int nthreads, int reps)
             fx_memfb_destroy(&fb);
         }
     free(arena);
-    /* the kiosk: one process per run, every widget redrawn (--full) */
+    /* the kiosk: one process per run, every widget redrawn (--full), on
+     * one thread and on nthreads (--threads: bands of rows, same pixels) */
     DIR *d = opendir("examples");
     char *confs[32];
     int nconf = 0;
@@ -345,20 +384,31 @@ int frames_run(FILE *o, const char *self, int nthreads, int reps)
     qsort(confs, (size_t)nconf, sizeof *confs, (int (*)(const void *, const void *))strcmp);
     for (int c = 0; c < nconf; c++) {
         char path[300];
+        snprintf(path, sizeof path, "kiosk %.*s", (int)(strlen(confs[c]) - 5), confs[c]);
+        int want = wanted(only, path);
         snprintf(path, sizeof path, "examples/%s", confs[c]);
-        for (int s = 0; s < 2; s++)
+        for (int s = 0; s < 2 && want; s++)
             for (int f = 0; f < 2; f++) {
                 int w = sizes[s][0], h = sizes[s][1];
-                double cpu = 0;
-                double ms = access(kiosk, X_OK) ? -1 : time_kiosk(kiosk, path, w, h, fx_format_get(fmts[f])->name, &cpu);
+                cell a, b;
+                memset(&a, 0, sizeof a);
+                memset(&b, 0, sizeof b);
+                const char *fn = fx_format_get(fmts[f])->name;
+                int ok = !access(kiosk, X_OK);
+                if (ok)
+                    a.ms = time_kiosk(kiosk, path, w, h, fn, 1, &a.cpu_ms);
+                if (ok && a.ms >= 0)
+                    b.ms = time_kiosk(kiosk, path, w, h, fn, nthreads, &b.cpu_ms);
                 char what[48];
                 snprintf(what, sizeof what, "kiosk %.*s", (int)(strlen(confs[c]) - 5), confs[c]);
-                if (ms < 0)
-                    fprintf(o, "%-24s %4dx%-4d %-8s  (fixel-kiosk failed or missing: %s)\n", what, w, h,
-                            fx_format_get(fmts[f])->name, kiosk);
-                else
-                    fprintf(o, "%-24s %4dx%-4d %-8s %9.2f %9s        %8.2f  one thread, every widget (--full)\n",
-                            what, w, h, fx_format_get(fmts[f])->name, ms, "-", cpu);
+                if (!ok || a.ms < 0 || b.ms < 0) {
+                    fprintf(o, "%-24s %4dx%-4d %-8s  (fixel-kiosk failed or missing: %s)\n", what, w, h, fn, kiosk);
+                    bad |= ok; /* a kiosk that is there and fails; none built is only said */
+                } else {
+                    a.bands = 1;
+                    b.bands = nthreads; /* no per-band CPU: the process's, every thread's */
+                    row(o, what, w, h, fmts[f], a, b);
+                }
                 fflush(o);
             }
         free(confs[c]);
@@ -367,7 +417,7 @@ int frames_run(FILE *o, const char *self, int nthreads, int reps)
      * into the scanout buffer (a real framebuffer is uncached or
      * write-combined memory and slower) */
     fprintf(o, "\n%-24s %-9s %-8s %9s %9s\n", "present (copy)", "size", "format", "full", "10% dmg");
-    for (int s = 0; s < 2; s++)
+    for (int s = 0; s < 2 && wanted(only, "present"); s++)
         for (int f = 0; f < 2; f++) {
             int w = sizes[s][0], h = sizes[s][1];
             if (fx_memfb_create(&fb, w, h, fmts[f]) < 0 || fx_memfb_create(&dst, w, h, fmts[f]) < 0)

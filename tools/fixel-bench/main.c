@@ -798,10 +798,11 @@ static void usage_to(FILE *f, int status)
             "usage: fixel-bench [--peers] [--check] [-w W2,W3..] [-p fixel,cairo..] [-f xrgb8888|rgb565]\n"
             "                   [-t trials] [-m min_trial_s] [-F full_limit_s] [-S prefix_target_s]\n"
             "                   [-o table.txt] [-q] [-x] [--no-extras] [--hugepages]\n"
-            "       fixel-bench --frames [-j N] [-t frames] [-o table.txt]\n"
+            "       fixel-bench --frames [-j N] [-t frames] [-w part,..] [-o table.txt]\n"
             "  --frames: ms per frame of the demo pages, 3D and ray-traced scripts and kiosk configs at\n"
             "  800x480 and 1920x1080, XRGB8888 and RGB565, on 1 and N threads (-j; default every core,\n"
-            "  at least 2), and the cost of presenting a whole frame and a 10%% damage rectangle\n"
+            "  at least 2), and the cost of presenting a whole frame and a 10%% damage rectangle;\n"
+            "  -w demo,script 3d-teapot,kiosk,present: only rows whose label holds one of them\n"
             "  default: fixel with the libc and ref ceilings; --peers adds cairo, pixman, sdl2, sdlgfx\n"
             "  -q: no progress on stderr; -x: skip the reference-picture comparison (TABLE 3)\n"
             "  TABLE 4 (presentation, teapot, deep zoom, idle loop) runs unless --no-extras;\n"
@@ -870,7 +871,7 @@ int main(int argc, char **argv)
         }
         machine(o);
         fprintf(o, "\n");
-        int bad = frames_run(o, argv[0], opt_j, reps);
+        int bad = frames_run(o, argv[0], opt_j, reps, opt_w);
         if (o != stdout) { /* the table on stdout too */
             char buf[4096];
             size_t n;

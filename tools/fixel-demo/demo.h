@@ -16,6 +16,7 @@
 typedef struct demo_state {
     int page;
     int interactive;    /* 0: headless, deterministic pictures */
+    int threads;        /* threads a page may start itself (demo_page.threads); 0: every core */
     int32_t w, h;
     int32_t mx, my;     /* last pointer position */
     /* clipping playground */
@@ -59,6 +60,9 @@ typedef struct demo_page {
     /* 1: draws only inside c's clip, reads no other pixel and writes no
      * shared memory, so bands of it may be drawn at once (fixel/par.h) */
     int bands;
+    /* 1: not cut into bands but drawn on st->threads threads by the page
+     * itself (the ray tracer's rows), with the same pixels on any number */
+    int threads;
 } demo_page;
 
 extern const demo_page demo_pages[];

@@ -37,7 +37,8 @@ static void usage(FILE *f)
             "                key recorded (k) appended to it (docs/ANIMATION.md)\n"
             "  --time-pages WxH FORMAT THREADS REPS  time every page (fixel-bench --frames)\n"
             "  -j N          draw headless and --golden pages on N threads, in bands of rows\n"
-            "                (pages that cannot be cut draw on one; the same pixels)\n"
+            "                (pages that cannot be cut draw on one, the ray tracer traces on N;\n"
+            "                the same pixels)\n"
             "  --display OUTPUT=PAGE  show PAGE on OUTPUT (a connector: HDMI-A-2,\n"
             "                vc4:HDMI-A-1, DSI-1; empty: the next free output); repeat it\n"
             "                for one page per output, each with its own state; input\n"
@@ -74,6 +75,7 @@ static double now_s(void)
 }
 
 static int g_threads = 1; /* -j: headless pages and --golden in bands */
+static int g_threads_given; /* without -j the ray tracer takes every core */
 
 static int render_page(fx_memfb *fb, int page)
 {
@@ -82,6 +84,7 @@ static int render_page(fx_memfb *fb, int page)
     st.page = page;
     fx_ctx c;
     fx_ctx_init(&c, &fb->surf);
+    st.threads = g_threads_given ? g_threads : 0;
     demo_draw_threads(&c, &st, g_threads);
     return 0;
 }
@@ -133,6 +136,7 @@ static void time_one(fx_memfb *fb, int page, int nthreads, int reps, double *ms,
     demo_state st;
     demo_state_init(&st, fb->surf.w, fb->surf.h);
     st.page = page;
+    st.threads = nthreads; /* a page with threads of its own (the ray tracer) starts this many */
     *bands = nthreads > 1 && demo_pages[page].bands ? (nthreads < TIME_MAXB ? nthreads : TIME_MAXB) : 1;
     for (int k = -1; k < reps; k++) {
         fx_ctx c;
@@ -175,9 +179,17 @@ static int time_pages(const char *size, const char *format, const char *threads,
         int b1, bn;
         time_one(&fb, p, 1, reps, &ms1, &cpu1, bc1, &b1);
         time_one(&fb, p, nthreads, reps, &msn, &cpun, bc, &bn);
-        printf("%s %.3f %.3f %.3f %.3f %d ", demo_pages[p].name, ms1, cpu1, msn, cpun, bn);
-        for (int i = 0; i < bn; i++)
-            printf("%s%.3f", i ? "/" : "", bc[i]);
+        if (demo_pages[p].threads && nthreads > 1) {
+            /* a page on threads of its own: N threads, no bands; on two,
+             * this thread's CPU and the other's (the rest of the process's) */
+            printf("%s %.3f %.3f %.3f %.3f %d ", demo_pages[p].name, ms1, cpu1, msn, cpun, nthreads);
+            if (nthreads == 2)
+                printf("%.3f/%.3f", bc[0], cpun - bc[0]);
+        } else {
+            printf("%s %.3f %.3f %.3f %.3f %d ", demo_pages[p].name, ms1, cpu1, msn, cpun, bn);
+            for (int i = 0; i < bn; i++)
+                printf("%s%.3f", i ? "/" : "", bc[i]);
+        }
         printf("\n");
         fflush(stdout);
     }
@@ -647,6 +659,7 @@ int main(int argc, char **argv)
                 fprintf(stderr, "fixel-demo: bad thread count '%s' (expected 1..64)\n", argv[i]);
                 return 2;
             }
+            g_threads_given = 1;
         } else if (!strcmp(a, "--list")) {
             for (int k = 0; k < demo_npages; k++)
                 printf("%s\n", demo_pages[k].name);

@@ -4,8 +4,9 @@
  * R = C1 u C2 u C3 u C4) behind a glass and a mirror sphere on a marble
  * floor, traced by the fixed-point ray tracer on every core. On a display
  * the picture builds up a few bands a frame, so it appears row by row;
- * headless it is traced whole (the same pixels: every pixel depends on its
- * own rays only). */
+ * headless it is traced whole, on st->threads (fixel-demo -j, fixel-bench
+ * --frames) or every core: the same pixels (every pixel depends on its own
+ * rays only). */
 #include <string.h>
 
 #include "demo.h"
@@ -142,7 +143,7 @@ void demo_rt_page(fx_ctx *c, demo_state *st, int32_t top)
         built = 1;
         rows_done = 0;
     }
-    int cpus = fx_rt_cpu_count();
+    int cpus = st->threads > 0 ? st->threads : fx_rt_cpu_count();
     if (!st->interactive) {
         fx_rt_render_mt(&scene, &im, cpus, 8, NULL, NULL);
         rows_done = IH;

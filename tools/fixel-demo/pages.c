@@ -1143,21 +1143,21 @@ static void page_objects(fx_ctx *c, demo_state *st) { demo_objects_page(c, st, D
 static void page_anim(fx_ctx *c, demo_state *st) { demo_anim_page(c, st, DEMO_TAB_H + 8); }
 
 const demo_page demo_pages[] = {
-    {"lines", "Lines", page_lines, 1},
-    {"circles", "Circles", page_circles, 1},
-    {"clipping", "Clipping", page_clipping, 0},     /* drawn in the course frame (mirrored rows) */
-    {"fills", "Fills", page_fills, 0},              /* flood fills read the picture */
-    {"textures", "Textures", page_textures, 1},
-    {"transforms", "Transform", page_transforms, 1},
-    {"colour", "Colour", page_colour, 1},
-    {"3d", "3D", page_3d, 1},
-    {"vsd", "Hidden", page_vsd, 0},                 /* static buffers, painted unclipped */
-    {"objects", "Objects", page_objects, 0},        /* scene scripts into sub-surfaces, unclipped */
-    {"fractals", "Fractals", page_fractals, 0},     /* the Julia panel is drawn whole into its sub-surface */
-    {"viz", "Viz", page_viz, 1},
-    {"glut", "GLUT", demo_page_glut, 0},            /* one GL context, blitted */
-    {"raytrace", "Ray trace", page_rt, 0},          /* a static picture, blitted */
-    {"anim", "Animation", page_anim, 0},            /* the camera flight keeps state between frames */
+    {"lines", "Lines", page_lines, 1, 0},
+    {"circles", "Circles", page_circles, 1, 0},
+    {"clipping", "Clipping", page_clipping, 0, 0},     /* drawn in the course frame (mirrored rows) */
+    {"fills", "Fills", page_fills, 0, 0},              /* flood fills read the picture */
+    {"textures", "Textures", page_textures, 1, 0},
+    {"transforms", "Transform", page_transforms, 1, 0},
+    {"colour", "Colour", page_colour, 1, 0},
+    {"3d", "3D", page_3d, 1, 0},
+    {"vsd", "Hidden", page_vsd, 0, 0},                 /* static buffers, painted unclipped */
+    {"objects", "Objects", page_objects, 0, 0},        /* scene scripts into sub-surfaces, unclipped */
+    {"fractals", "Fractals", page_fractals, 0, 0},     /* the Julia panel is drawn whole into its sub-surface */
+    {"viz", "Viz", page_viz, 1, 0},
+    {"glut", "GLUT", demo_page_glut, 0, 0},            /* one GL context, blitted */
+    {"raytrace", "Ray trace", page_rt, 0, 1},         /* traced on st->threads, blitted */
+    {"anim", "Animation", page_anim, 0, 0},            /* the camera flight keeps state between frames */
 };
 const int demo_npages = (int)(sizeof demo_pages / sizeof demo_pages[0]);
 /* Fourteen 57-pixel tabs still hold the longest label ("Transform",
