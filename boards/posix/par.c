@@ -360,25 +360,34 @@ static int band_raytrace(void *u, const struct fx_rt_scene *s, const fx_surface 
 /* The extra bands' arenas, kept from one frame to the next: fresh memory
  * from malloc is mapped anew each time, and a band's first touch of every
  * page of its depth buffer then faults and has the kernel zero the page
- * (at 1920x1080 that was an eighth of the band's CPU time). One set is
- * kept; a second caller at the same time takes its own. Reachable until
- * exit, like any cache. */
+ * (at 1920x1080 that was an eighth of the band's CPU time). One block is
+ * kept, with its real size (a smaller script may use a bigger block, which
+ * stays as big); a second caller at the same time takes its own. It stays
+ * until exit, like any cache, or until fx_par_trim. */
 static pthread_mutex_t arena_lock = PTHREAD_MUTEX_INITIALIZER;
 static uint8_t *arena_keep;
 static size_t arena_keep_size;
 
-static uint8_t *arenas_take(size_t size)
+/* At least size bytes; *got is what the block really holds. */
+static uint8_t *arenas_take(size_t size, size_t *got)
 {
     uint8_t *a = 0;
     pthread_mutex_lock(&arena_lock);
     if (arena_keep && arena_keep_size >= size) {
         a = arena_keep;
+        *got = arena_keep_size;
         arena_keep = 0;
+        arena_keep_size = 0;
     }
     pthread_mutex_unlock(&arena_lock);
-    return a ? a : malloc(size);
+    if (!a) {
+        a = malloc(size);
+        *got = a ? size : 0;
+    }
+    return a;
 }
 
+/* Keep the bigger of a and the block kept so far; free the other. */
 static void arenas_give(uint8_t *a, size_t size)
 {
     if (!a)
@@ -392,6 +401,18 @@ static void arenas_give(uint8_t *a, size_t size)
     }
     pthread_mutex_unlock(&arena_lock);
     free(a);
+}
+
+size_t fx_par_trim(void)
+{
+    pthread_mutex_lock(&arena_lock);
+    uint8_t *a = arena_keep;
+    size_t n = arena_keep_size;
+    arena_keep = 0;
+    arena_keep_size = 0;
+    pthread_mutex_unlock(&arena_lock);
+    free(a);
+    return a ? n : 0;
 }
 
 /* A band runs the script; the bands run all at once, one per thread (the
@@ -430,8 +451,8 @@ int fx_scene_run_mt(fx_scene *sc, const char *text, size_t len, int nthreads, in
         return fx_scene_run(sc, text, len);
     scene_job *j = calloc(1, sizeof *j);
     fx_scene *extra = calloc((size_t)nthreads - 1, sizeof *extra);
-    size_t arenas_size = sc->arena_size * (size_t)(nthreads - 1);
-    uint8_t *arenas = sc->arena_size ? arenas_take(arenas_size) : 0;
+    size_t arenas_size = 0;
+    uint8_t *arenas = sc->arena_size ? arenas_take(sc->arena_size * (size_t)(nthreads - 1), &arenas_size) : 0;
     if (!j || !extra || (sc->arena_size && !arenas)) {
         free(j);
         free(extra);

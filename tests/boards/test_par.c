@@ -227,6 +227,31 @@ FX_TEST(scene_run_mt_3d_lit_bands_are_the_one_thread_picture)
         }
 }
 
+/* The extra bands' arenas are kept for the next frame with the size they
+ * really have: a 4-band run leaves 3 arenas' worth, a 2-band run after it
+ * reuses that block and must keep it at its real size (it was once
+ * recorded as the 1 arena asked for, so the next 4-band run allocated
+ * anew); fx_par_trim frees what is kept and says how much. */
+FX_TEST(scene_run_mt_keeps_its_arenas_at_their_real_size_until_trimmed)
+{
+    const size_t A = 2 << 20; /* run_fmt's arena */
+    host H;
+    int bands = 0;
+    (void)fx_par_trim();
+    FX_CHECK_EQ(fx_par_trim(), 0u);
+    FX_CHECK_EQ(run_fmt(lit3d[0], 4, FX_FMT_XRGB8888, &H, &bands), 0);
+    fx_memfb_destroy(&H.fb);
+    FX_CHECK_EQ(bands, 4);
+    FX_CHECK_EQ(run_fmt(lit3d[0], 2, FX_FMT_XRGB8888, &H, &bands), 0);
+    fx_memfb_destroy(&H.fb);
+    FX_CHECK_EQ(bands, 2);
+    FX_CHECK_EQ(fx_par_trim(), 3 * A);
+    FX_CHECK_EQ(fx_par_trim(), 0u);
+    FX_CHECK_EQ(run_fmt(lit3d[0], 2, FX_FMT_XRGB8888, &H, &bands), 0);
+    fx_memfb_destroy(&H.fb);
+    FX_CHECK_EQ(fx_par_trim(), A);
+}
+
 /* A banded scene goes on unbanded after fx_scene_run_mt: its band cleared
  * only its own rows of the depth buffer (the arena is not zeroed for it),
  * so the first 3D command after the run clears the rest; a cube drawn then

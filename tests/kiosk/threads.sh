@@ -97,5 +97,12 @@ for v in -1 65 x 2x ""; do
     if [ $rc -eq 2 ] && grep -q "0 (every core) to 64" "$out/bad.log"; then ok; else bad "--threads '$v': exit $rc, $(cat "$out/bad.log")"; fi
 done
 "$bin" --help | grep -q -- "--threads N" && ok || bad "--help does not name --threads"
+# the other numeric options are whole strings in their ranges too
+for a in "--size 100x100x" "--size 8x8" "--mem-report 3q" "--mem-report -1" "--frames 2x"; do
+    # shellcheck disable=SC2086
+    "$bin" --headless $a --data /dev/null examples/kiosk-basic.conf > "$out/bad.log" 2>&1
+    rc=$?
+    if [ $rc -eq 2 ] && grep -q "wants .* from .* to .*, not" "$out/bad.log"; then ok; else bad "$a: exit $rc, $(cat "$out/bad.log")"; fi
+done
 echo "kiosk-threads: $P passed, $F failed"
 [ "$F" -eq 0 ]

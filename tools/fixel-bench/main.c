@@ -15,6 +15,7 @@
 #include "bench.h"
 #include "frames.h"
 
+#include <errno.h>
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
@@ -816,6 +817,31 @@ static void usage_to(FILE *f, int status)
 
 static void usage(void) { usage_to(stderr, 2); }
 
+/* A whole-string number in [lo, hi], or the usage error naming it. */
+static long arg_long(const char *opt, const char *v, long lo, long hi)
+{
+    char *end;
+    errno = 0;
+    long n = strtol(v, &end, 10);
+    if (end == v || *end || errno || n < lo || n > hi) {
+        fprintf(stderr, "fixel-bench: %s wants a whole number from %ld to %ld, not '%s'\n", opt, lo, hi, v);
+        exit(2);
+    }
+    return n;
+}
+
+static double arg_double(const char *opt, const char *v, double lo, double hi)
+{
+    char *end;
+    errno = 0;
+    double d = strtod(v, &end);
+    if (end == v || *end || errno || !(d >= lo && d <= hi)) {
+        fprintf(stderr, "fixel-bench: %s wants a number from %g to %g, not '%s'\n", opt, lo, hi, v);
+        exit(2);
+    }
+    return d;
+}
+
 int main(int argc, char **argv)
 {
     for (int i = 1; i < argc; i++) {
@@ -836,7 +862,7 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--frames"))
             opt_frames = 1;
         else if (v && !strcmp(a, "-j"))
-            opt_j = atoi(argv[++i]);
+            opt_j = (int)arg_long("-j", argv[++i], 0, 64);
         else if (!strcmp(a, "--no-extras"))
             opt_noextras = 1;
         else if (v && !strcmp(a, "-w"))
@@ -848,13 +874,13 @@ int main(int argc, char **argv)
         else if (v && !strcmp(a, "-o"))
             opt_md = argv[++i];
         else if (v && !strcmp(a, "-t"))
-            opt_t = atoi(argv[++i]), opt_t_given = 1;
+            opt_t = (int)arg_long("-t", argv[++i], 1, 64), opt_t_given = 1;
         else if (v && !strcmp(a, "-m"))
-            opt_m = atof(argv[++i]);
+            opt_m = arg_double("-m", argv[++i], 0.001, 3600);
         else if (v && !strcmp(a, "-F"))
-            opt_F = atof(argv[++i]);
+            opt_F = arg_double("-F", argv[++i], 0.001, 3600);
         else if (v && !strcmp(a, "-S"))
-            opt_S = atof(argv[++i]);
+            opt_S = arg_double("-S", argv[++i], 0.001, 3600);
         else
             usage();
     }

@@ -164,10 +164,12 @@ static void time_one(fx_memfb *fb, int page, int nthreads, int reps, double *ms,
 
 static int time_pages(const char *size, const char *format, const char *threads, const char *reps_s)
 {
-    int w, h, nthreads = atoi(threads), reps = atoi(reps_s);
+    int w, h, nthreads, reps;
+    char extra;
     fx_format f = fx_format_from_name(format);
-    if (sscanf(size, "%dx%d", &w, &h) != 2 || w < 1 || h < 1 || w > 8192 || h > 8192 || f == FX_FMT_COUNT ||
-        nthreads < 1 || nthreads > 64 || reps < 1 || reps > 64) {
+    if (sscanf(size, "%dx%d%c", &w, &h, &extra) != 2 || w < 1 || h < 1 || w > 8192 || h > 8192 ||
+        f == FX_FMT_COUNT || sscanf(threads, "%d%c", &nthreads, &extra) != 1 || nthreads < 1 || nthreads > 64 ||
+        sscanf(reps_s, "%d%c", &reps, &extra) != 1 || reps < 1 || reps > 64) {
         fprintf(stderr, "fixel-demo: --time-pages WxH FORMAT THREADS REPS\n");
         return 2;
     }

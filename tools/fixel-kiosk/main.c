@@ -1695,10 +1695,20 @@ int main(int argc, char **argv)
             }
             frames = (int)n;
         }
-        else if (!strcmp(a, "--mem-report") && i + 1 < argc) mem_frame = atoi(argv[++i]);
+        else if (!strcmp(a, "--mem-report") && i + 1 < argc) {
+            char *end;
+            long n = strtol(argv[++i], &end, 10);
+            if (end == argv[i] || *end || n < 0 || n > 100000000L) {
+                fprintf(stderr, "fixel-kiosk: --mem-report wants a frame number from 0 to 100000000, not '%s'\n",
+                        argv[i]);
+                return 2;
+            }
+            mem_frame = (int)n;
+        }
         else if (!strcmp(a, "--size") && i + 1 < argc) {
-            if (sscanf(argv[++i], "%dx%d", &sw, &sh) != 2 || sw < 16 || sh < 16 || sw > 8192 || sh > 8192) {
-                fprintf(stderr, "fixel-kiosk: --size wants WxH\n");
+            char extra;
+            if (sscanf(argv[++i], "%dx%d%c", &sw, &sh, &extra) != 2 || sw < 16 || sh < 16 || sw > 8192 || sh > 8192) {
+                fprintf(stderr, "fixel-kiosk: --size wants WxH, each from 16 to 8192, not '%s'\n", argv[i]);
                 return 2;
             }
         } else if (!strcmp(a, "--format") && i + 1 < argc) {

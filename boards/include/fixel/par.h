@@ -48,7 +48,9 @@ int fx_par_bands(const fx_ctx *c, int nbands, int nthreads, fx_par_draw_fn draw,
  * the same size is cut by the last run's cost per band (docs/ARCHITECTURE.md),
  * which changes its speed, never its pixels. sc is fresh (initialised, nothing
  * run yet); the other bands get scenes like it, with arenas of sc's size
- * (allocated here, freed before returning), and call sc's host functions
+ * (allocated here and, to spare the next frame the page faults of fresh
+ * memory, kept after returning: (nthreads - 1) arenas, the largest set so
+ * far, until exit or fx_par_trim), and call sc's host functions
  * one at a time (a mutex), make_surface only once; a file or image the
  * script names is loaded once and its data shared by the bands (it is
  * only read). On return sc holds band
@@ -57,6 +59,13 @@ int fx_par_bands(const fx_ctx *c, int nbands, int nthreads, fx_par_draw_fn draw,
  * the script ran on one thread (nthreads 1, a serial command, tracing, or
  * no memory for the other arenas). Returns 0 or a negative error. */
 int fx_scene_run_mt(fx_scene *sc, const char *text, size_t len, int nthreads, int *bands);
+
+/* Free the arenas fx_scene_run_mt keeps for the next frame (a program
+ * done with banded scripts, or one checking its heap); returns the bytes
+ * freed, 0 when none were kept. The next banded run allocates anew. Safe
+ * at any time, also while another thread runs a script (it keeps its own
+ * arenas until it returns, and those are kept after it). */
+size_t fx_par_trim(void);
 
 /* The number of online CPUs (1..64). */
 int fx_par_cpu_count(void);
