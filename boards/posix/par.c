@@ -468,11 +468,9 @@ int fx_scene_run_mt(fx_scene *sc, const char *text, size_t len, int nthreads, in
     pthread_mutex_init(&j->host_lock, 0);
     pthread_mutex_init(&j->lock, 0);
     pthread_cond_init(&j->cond, 0);
-    pthread_t t[63];
-    int started = 0;
-    while (started < nthreads - 1 && pthread_create(&t[started], 0, scene_worker, j) == 0)
-        started++;
-    j->n = started + 1;
+    fx_posix_batch pool;
+    (void)fx_posix_pool_start(&pool, scene_worker, j, nthreads - 1); /* fewer: fewer bands */
+    j->n = pool.n + 1;
 
     fx_scene_host wrapped = sc->host;
     wrapped.make_surface = host_make_surface;
@@ -496,8 +494,7 @@ int fx_scene_run_mt(fx_scene *sc, const char *text, size_t len, int nthreads, in
     pthread_cond_broadcast(&j->cond);
     pthread_mutex_unlock(&j->lock);
     scene_worker(j);
-    for (int i = 0; i < started; i++)
-        pthread_join(t[i], 0);
+    fx_posix_pool_wait(&pool);
 
     int rc = 0;
     if (j->have_surface && j->n > 1)

@@ -35,6 +35,20 @@ void fx_log_access_hint(const fx_logger *l, const char *path);
  * that could not start (those that did start still do all the work). */
 int fx_posix_workers(void *(*fn)(void *), void *arg, int nthreads);
 
+/* The threads behind it, kept alive between calls: start fn(arg) on up to
+ * n (0..63) idle pool threads, starting new ones as needed; b->n says how
+ * many took it (fewer when threads cannot be started, the -errno then
+ * returned, or when other calls hold the rest). fx_posix_pool_wait returns
+ * when they have all returned from fn. */
+typedef struct fx_posix_batch {
+    int n;
+    int slot[63];
+} fx_posix_batch;
+int fx_posix_pool_start(fx_posix_batch *b, void *(*fn)(void *), void *arg, int n);
+void fx_posix_pool_wait(fx_posix_batch *b);
+/* Threads in the pool (busy or idle). */
+int fx_posix_pool_size(void);
+
 /* ---- band cuts of fx_scene_run_mt (par.c) ---- */
 
 /* New cuts out[0..n] for n bands whose rows were [cut[k], cut[k + 1]) and

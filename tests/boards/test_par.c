@@ -4,10 +4,14 @@
  * 'raytrace' once on all threads with later drawing on top, falls back to
  * one thread for serial commands and tracing, and reports errors as
  * fx_scene_run does. (Every golden script and demo page: tests/boards/bands.sh.) */
+#include <pthread.h>
+#include <signal.h>
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "fixel/error.h"
 #include "fixel/memfb.h"
@@ -111,6 +115,121 @@ static const char picture[] =
     "line 0 0 63 47\n"
     "depth 16\n"
     "cube 1.5\n";
+
+/* ---- the kept-alive threads (boards/posix/workers.c) ---- */
+
+typedef struct pool_probe {
+    pthread_t caller;
+    atomic_int on_pool, sig_open, calls, inner_bad;
+    int nested;
+} pool_probe;
+
+static void count_band(void *u, fx_ctx *c, int band)
+{
+    (void)c;
+    (void)band;
+    atomic_fetch_add(&((pool_probe *)u)->calls, 1);
+}
+
+/* A band on a pool thread sees every signal blocked; a nested call from a
+ * band runs to the end (no call waits on a thread another call holds). */
+static void probe_band(void *u, fx_ctx *c, int band)
+{
+    pool_probe *p = u;
+    (void)band;
+    atomic_fetch_add(&p->calls, 1);
+    if (!pthread_equal(pthread_self(), p->caller)) {
+        atomic_fetch_add(&p->on_pool, 1);
+        sigset_t now;
+        pthread_sigmask(SIG_SETMASK, NULL, &now);
+        if (!sigismember(&now, SIGINT) || !sigismember(&now, SIGTERM) || !sigismember(&now, SIGHUP))
+            atomic_fetch_add(&p->sig_open, 1);
+    }
+    if (p->nested) {
+        pool_probe in;
+        memset(&in, 0, sizeof in);
+        in.caller = pthread_self();
+        if (fx_par_bands(c, 6, 3, count_band, &in) != 0 || atomic_load(&in.calls) != 6)
+            atomic_fetch_add(&p->inner_bad, 1);
+    }
+    for (volatile int i = 0; i < 20000; i++) /* long enough for the others to take bands */
+        ;
+}
+
+FX_TEST(par_threads_are_kept_and_reused_between_calls)
+{
+    fx_memfb fb;
+    FX_CHECK_EQ(fx_memfb_create(&fb, 40, 64, FX_FMT_XRGB8888), 0);
+    fx_ctx c;
+    fx_ctx_init(&c, &fb.surf);
+    pool_probe p;
+    memset(&p, 0, sizeof p);
+    p.caller = pthread_self();
+    FX_CHECK_EQ(fx_par_bands(&c, 32, 4, probe_band, &p), 0);
+    FX_CHECK_EQ(atomic_load(&p.calls), 32);
+    int size = fx_posix_pool_size();
+    FX_CHECK(size >= 3);
+    for (int round = 0; round < 50; round++) {
+        memset(&p, 0, sizeof p);
+        p.caller = pthread_self();
+        FX_CHECK_EQ(fx_par_bands(&c, 32, 4, probe_band, &p), 0);
+        FX_CHECK_EQ(atomic_load(&p.calls), 32);
+        FX_CHECK_EQ(atomic_load(&p.sig_open), 0);
+    }
+    /* fifty more calls started no thread */
+    FX_CHECK_EQ(fx_posix_pool_size(), size);
+    fx_memfb_destroy(&fb);
+}
+
+FX_TEST(par_nested_and_concurrent_calls_finish)
+{
+    fx_memfb fb;
+    FX_CHECK_EQ(fx_memfb_create(&fb, 40, 64, FX_FMT_XRGB8888), 0);
+    fx_ctx c;
+    fx_ctx_init(&c, &fb.surf);
+    pool_probe p;
+    memset(&p, 0, sizeof p);
+    p.caller = pthread_self();
+    p.nested = 1;
+    FX_CHECK_EQ(fx_par_bands(&c, 8, 4, probe_band, &p), 0);
+    FX_CHECK_EQ(atomic_load(&p.calls), 8);
+    FX_CHECK_EQ(atomic_load(&p.inner_bad), 0);
+    FX_CHECK_EQ(atomic_load(&p.sig_open), 0);
+    fx_memfb_destroy(&fb);
+}
+
+/* A child of fork has none of its parent's pool threads; its calls start
+ * their own instead of waiting forever on threads that are not there. */
+FX_TEST(par_pool_works_in_a_forked_child)
+{
+    fx_memfb fb;
+    FX_CHECK_EQ(fx_memfb_create(&fb, 40, 64, FX_FMT_XRGB8888), 0);
+    fx_ctx c;
+    fx_ctx_init(&c, &fb.surf);
+    pool_probe p;
+    memset(&p, 0, sizeof p);
+    p.caller = pthread_self();
+    FX_CHECK_EQ(fx_par_bands(&c, 16, 3, probe_band, &p), 0);
+    FX_CHECK(fx_posix_pool_size() >= 2);
+    fflush(NULL);
+    pid_t pid = fork();
+    FX_CHECK(pid >= 0);
+    if (pid == 0) {
+        alarm(20); /* a hang fails the test instead of stopping the suite */
+        memset(&p, 0, sizeof p);
+        p.caller = pthread_self();
+        int bad = fx_posix_pool_size() != 0;
+        bad |= (fx_par_bands(&c, 16, 3, probe_band, &p) != 0) << 1;
+        bad |= (atomic_load(&p.calls) != 16) << 2;
+        bad |= (fx_posix_pool_size() < 2) << 3; /* it started its own threads */
+        _exit(bad);
+    }
+    int st = 0;
+    FX_CHECK_EQ(waitpid(pid, &st, 0), pid);
+    FX_CHECK(WIFEXITED(st));
+    FX_CHECK_EQ(WEXITSTATUS(st), 0);
+    fx_memfb_destroy(&fb);
+}
 
 FX_TEST(scene_run_mt_is_the_one_thread_picture)
 {
