@@ -149,86 +149,113 @@ static void probe_band(void *u, fx_ctx *c, int band)
         pool_probe in;
         memset(&in, 0, sizeof in);
         in.caller = pthread_self();
-        if (fx_par_bands(c, 6, 3, count_band, &in) != 0 || atomic_load(&in.calls) != 6)
+        /* 3 inner bands: every band here has at least 5 rows, and an
+         * empty band is not drawn */
+        if (fx_par_bands(c, 3, 3, count_band, &in) != 0 || atomic_load(&in.calls) != 3)
             atomic_fetch_add(&p->inner_bad, 1);
     }
     for (volatile int i = 0; i < 20000; i++) /* long enough for the others to take bands */
         ;
 }
 
+/* fx_par_bands with a fresh probe; 0 when every band was drawn, no pool
+ * thread had a signal open and every nested call finished. */
+static int probe_run(const fx_ctx *c, pool_probe *p, int nbands, int nthreads, int nested)
+{
+    memset(p, 0, sizeof *p);
+    p->caller = pthread_self();
+    p->nested = nested;
+    return fx_par_bands(c, nbands, nthreads, probe_band, p) != 0 || atomic_load(&p->calls) != nbands ||
+           atomic_load(&p->sig_open) != 0 || atomic_load(&p->inner_bad) != 0;
+}
+
+typedef struct probe_fixture {
+    fx_memfb fb;
+    fx_ctx c;
+} probe_fixture;
+
+static int probe_setup(probe_fixture *f)
+{
+    if (fx_memfb_create(&f->fb, 40, 64, FX_FMT_XRGB8888) < 0)
+        return -1;
+    fx_ctx_init(&f->c, &f->fb.surf);
+    return 0;
+}
+
 FX_TEST(par_threads_are_kept_and_reused_between_calls)
 {
-    fx_memfb fb;
-    FX_CHECK_EQ(fx_memfb_create(&fb, 40, 64, FX_FMT_XRGB8888), 0);
-    fx_ctx c;
-    fx_ctx_init(&c, &fb.surf);
+    probe_fixture f;
     pool_probe p;
-    memset(&p, 0, sizeof p);
-    p.caller = pthread_self();
-    FX_CHECK_EQ(fx_par_bands(&c, 32, 4, probe_band, &p), 0);
-    FX_CHECK_EQ(atomic_load(&p.calls), 32);
+    FX_CHECK_EQ(probe_setup(&f), 0);
+    FX_CHECK_EQ(probe_run(&f.c, &p, 32, 4, 0), 0);
     int size = fx_posix_pool_size();
     FX_CHECK(size >= 3);
-    for (int round = 0; round < 50; round++) {
-        memset(&p, 0, sizeof p);
-        p.caller = pthread_self();
-        FX_CHECK_EQ(fx_par_bands(&c, 32, 4, probe_band, &p), 0);
-        FX_CHECK_EQ(atomic_load(&p.calls), 32);
-        FX_CHECK_EQ(atomic_load(&p.sig_open), 0);
-    }
+    for (int round = 0; round < 50; round++)
+        FX_CHECK_EQ(probe_run(&f.c, &p, 32, 4, 0), 0);
     /* fifty more calls started no thread */
     FX_CHECK_EQ(fx_posix_pool_size(), size);
-    fx_memfb_destroy(&fb);
+    fx_memfb_destroy(&f.fb);
+}
+
+typedef struct probe_caller {
+    const fx_ctx *c;
+    int bad;
+} probe_caller;
+
+static void *probe_thread(void *u)
+{
+    probe_caller *pc = u;
+    pool_probe p;
+    for (int round = 0; round < 20 && !pc->bad; round++)
+        pc->bad = probe_run(pc->c, &p, 12, 3, round & 1);
+    return 0;
 }
 
 FX_TEST(par_nested_and_concurrent_calls_finish)
 {
-    fx_memfb fb;
-    FX_CHECK_EQ(fx_memfb_create(&fb, 40, 64, FX_FMT_XRGB8888), 0);
-    fx_ctx c;
-    fx_ctx_init(&c, &fb.surf);
+    probe_fixture f;
     pool_probe p;
-    memset(&p, 0, sizeof p);
-    p.caller = pthread_self();
-    p.nested = 1;
-    FX_CHECK_EQ(fx_par_bands(&c, 8, 4, probe_band, &p), 0);
-    FX_CHECK_EQ(atomic_load(&p.calls), 8);
-    FX_CHECK_EQ(atomic_load(&p.inner_bad), 0);
-    FX_CHECK_EQ(atomic_load(&p.sig_open), 0);
-    fx_memfb_destroy(&fb);
+    FX_CHECK_EQ(probe_setup(&f), 0);
+    FX_CHECK_EQ(probe_run(&f.c, &p, 8, 4, 1), 0);
+    /* three callers at once, nested calls among them */
+    probe_caller pc[3] = {{&f.c, 0}, {&f.c, 0}, {&f.c, 0}};
+    pthread_t t[3];
+    int started = 0;
+    for (; started < 3; started++)
+        if (pthread_create(&t[started], 0, probe_thread, &pc[started]))
+            break;
+    FX_CHECK_EQ(started, 3);
+    for (int i = 0; i < started; i++) {
+        pthread_join(t[i], 0);
+        FX_CHECK_EQ(pc[i].bad, 0);
+    }
+    fx_memfb_destroy(&f.fb);
 }
 
 /* A child of fork has none of its parent's pool threads; its calls start
  * their own instead of waiting forever on threads that are not there. */
 FX_TEST(par_pool_works_in_a_forked_child)
 {
-    fx_memfb fb;
-    FX_CHECK_EQ(fx_memfb_create(&fb, 40, 64, FX_FMT_XRGB8888), 0);
-    fx_ctx c;
-    fx_ctx_init(&c, &fb.surf);
+    probe_fixture f;
     pool_probe p;
-    memset(&p, 0, sizeof p);
-    p.caller = pthread_self();
-    FX_CHECK_EQ(fx_par_bands(&c, 16, 3, probe_band, &p), 0);
+    FX_CHECK_EQ(probe_setup(&f), 0);
+    FX_CHECK_EQ(probe_run(&f.c, &p, 16, 3, 0), 0);
     FX_CHECK(fx_posix_pool_size() >= 2);
     fflush(NULL);
     pid_t pid = fork();
     FX_CHECK(pid >= 0);
     if (pid == 0) {
         alarm(20); /* a hang fails the test instead of stopping the suite */
-        memset(&p, 0, sizeof p);
-        p.caller = pthread_self();
         int bad = fx_posix_pool_size() != 0;
-        bad |= (fx_par_bands(&c, 16, 3, probe_band, &p) != 0) << 1;
-        bad |= (atomic_load(&p.calls) != 16) << 2;
-        bad |= (fx_posix_pool_size() < 2) << 3; /* it started its own threads */
+        bad |= probe_run(&f.c, &p, 16, 3, 0) << 1;
+        bad |= (fx_posix_pool_size() < 2) << 2; /* it started its own threads */
         _exit(bad);
     }
     int st = 0;
     FX_CHECK_EQ(waitpid(pid, &st, 0), pid);
     FX_CHECK(WIFEXITED(st));
     FX_CHECK_EQ(WEXITSTATUS(st), 0);
-    fx_memfb_destroy(&fb);
+    fx_memfb_destroy(&f.fb);
 }
 
 FX_TEST(scene_run_mt_is_the_one_thread_picture)
