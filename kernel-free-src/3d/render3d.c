@@ -1163,6 +1163,14 @@ static void draw_clipped(pctx *pc, const cvert *tri, const tri_mode *m)
 /* ------------------------------------------------------------------ */
 /* drawing                                                              */
 
+/* The guard band's G for a viewport (clip_poly): screen coordinates stay
+ * within +-2^14 pixels. */
+static int32_t guard_for(int32_t vw, int32_t vh)
+{
+    int32_t big = FX_MAX(FX_MAX(vw, vh), 1);
+    return FX_MAX(1, FX_MIN(4, (1 << 13) / big));
+}
+
 static void pctx_init(pctx *pc, fx3d *r)
 {
     pc->r = r;
@@ -1175,8 +1183,7 @@ static void pctx_init(pctx *pc, fx3d *r)
     pc->vy = r->viewport.y0;
     pc->vw = r->viewport.x1 - r->viewport.x0;
     pc->vh = r->viewport.y1 - r->viewport.y0;
-    int32_t big = FX_MAX(FX_MAX(pc->vw, pc->vh), 1);
-    pc->guard = FX_MAX(1, FX_MIN(4, (1 << 13) / big));
+    pc->guard = guard_for(pc->vw, pc->vh);
     prepare_lights(r, pc->el, &pc->nl);
     pc->wire = r->ctx.color;
     pc->sm = NULL;
@@ -1239,35 +1246,68 @@ static int facing(const cvert *v)
     return d > 0 ? 1 : d < 0 ? -1 : 0;
 }
 
-/* Whether a triangle certainly draws nothing in pc->clip: every vertex in
- * front of the eye (w >= 1/16) and beyond the same edge of the clip widened
- * by AWAY_PX pixels, tested on x/w and y/w without a division. The clipped
- * and projected triangle lies in the convex hull of its vertices' screen
- * points (projection keeps convexity where w > 0), so nothing of it can
- * reach the clip; the margin covers the rounding of clipping, projection
- * and the rasterizer's edges. Such triangles need no lighting: in a band
- * of a frame drawn on several threads most triangles are outside the band,
- * and skipping them changes no pixel. */
+/* Whether a triangle certainly draws nothing in pc->clip, tested on x/w and
+ * y/w without a division: every vertex in front of the eye (w >= 1/16) and
+ * beyond the same edge of the clip widened by a margin. Such triangles need
+ * no lighting: in a band of a frame drawn on several threads most
+ * triangles are outside the band, and skipping them changes no pixel.
+ *
+ * Why the margin suffices. Every vertex the rasterizer receives is
+ * R = Q + e, Q a real point of the homogeneous convex hull of v[0..n-1]
+ * and |e| <= k units of 2^-16 in each of x, y, w, with k = CLIP_ULPS +
+ * slop: clip_poly's new vertex is an exact convex combination (its
+ * parameter t, whatever its own rounding, lies in [0, 1]) of two earlier
+ * ones, then floored per coordinate, so each of the six planes adds at
+ * most one unit to the error of its inputs; slop is the caller's error of
+ * the vertices themselves (0 for a triangle's own, see fx3d_hull_away).
+ * Where every w > 0, Q projects into the convex hull of the vertices'
+ * screen points, so Q lies beyond the edge (the linear test holds for Q
+ * since it holds, in integers and strictly, for every vertex). R's screen
+ * x differs from Q's by h |e_x - u e_w| / (w_Q + e_w), h = W * 128 (24.8
+ * units), u = x_Q / w_Q. R lies inside the guard planes |x| <= G w but for
+ * 158 units: 128 from t truncated toward an end outside the plane (plane
+ * distances stay below 2^34, t has 28 bits) and G + 1 per later floor; so
+ * |x_Q| <= G w_Q + (G + 1) k + 158 and |u| <= G + 1 whenever
+ * (G + 1) k + 158 <= w_min (refused otherwise), w_min the least w of v.
+ * The error is then at most h k (G + 2) / (w_min - k), plus 1/2 for
+ * project's rounding and 1/2 pixel for raster_line, which rounds the ends
+ * to pixel centres; the rasterizer covers only pixel centres inside the
+ * hull of the vertices it gets. The same holds for y. The margin is that
+ * bound, and never less than AWAY_PX pixels. At w_min = 1/16, W = 2^14
+ * (G = 1) and k = 6 the bound is 37 pixels: 8 would not be proven there
+ * (tests/core/test_3d_cull.c's searches found vertices moved by more than
+ * 4 pixels, none by 6). */
 #define AWAY_PX 8
-static int clip_away(const pctx *pc, const int32_t (*v)[4], int n)
+#define CLIP_ULPS 6
+static int clip_away(const pctx *pc, const int32_t (*v)[4], int n, int64_t slop)
 {
     const fx_rect c = pc->clip;
     if (pc->vw > (1 << 14) || pc->vh > (1 << 14) || pc->vw < 1 || pc->vh < 1 || pc->vx < -(1 << 20) ||
         pc->vx > (1 << 20) || pc->vy < -(1 << 20) || pc->vy > (1 << 20) || c.x0 < -(1 << 20) ||
-        c.y0 < -(1 << 20) || c.x1 > (1 << 20) || c.y1 > (1 << 20))
+        c.y0 < -(1 << 20) || c.x1 > (1 << 20) || c.y1 > (1 << 20) || slop < 0 || slop > (1 << 10))
         return 0;
-    for (int i = 0; i < n; i++)
+    int64_t wmin = INT32_MAX;
+    for (int i = 0; i < n; i++) {
         if (v[i][3] < (1 << 12))
             return 0;
+        wmin = FX_MIN(wmin, (int64_t)v[i][3]);
+    }
+    int64_t g = guard_for(pc->vw, pc->vh), k = CLIP_ULPS + slop;
+    if ((g + 1) * k + 158 > wmin)
+        return 0;
     if (fx_rect_empty(c))
         return 1;
     /* screen x = vx*256 - 128 + (x + w) hx / w, in 24.8 with pixel centres
      * at integers; the same for y with (w - y) */
     int64_t hx = (int64_t)pc->vw * 128, hy = (int64_t)pc->vh * 128;
-    int64_t kx0 = ((int64_t)c.x0 - AWAY_PX) * 256 - (int64_t)pc->vx * 256 + 128;
-    int64_t kx1 = ((int64_t)c.x1 - 1 + AWAY_PX) * 256 - (int64_t)pc->vx * 256 + 128;
-    int64_t ky0 = ((int64_t)c.y0 - AWAY_PX) * 256 - (int64_t)pc->vy * 256 + 128;
-    int64_t ky1 = ((int64_t)c.y1 - 1 + AWAY_PX) * 256 - (int64_t)pc->vy * 256 + 128;
+    int64_t mx = (hx * k * (g + 2) + wmin - k - 1) / (wmin - k) + 129; /* rounded up */
+    int64_t my = (hy * k * (g + 2) + wmin - k - 1) / (wmin - k) + 129;
+    mx = FX_MAX(mx, (int64_t)AWAY_PX * 256);
+    my = FX_MAX(my, (int64_t)AWAY_PX * 256);
+    int64_t kx0 = (int64_t)c.x0 * 256 - mx - (int64_t)pc->vx * 256 + 128;
+    int64_t kx1 = ((int64_t)c.x1 - 1) * 256 + mx - (int64_t)pc->vx * 256 + 128;
+    int64_t ky0 = (int64_t)c.y0 * 256 - my - (int64_t)pc->vy * 256 + 128;
+    int64_t ky1 = ((int64_t)c.y1 - 1) * 256 + my - (int64_t)pc->vy * 256 + 128;
     int l = 1, rt = 1, t = 1, b = 1;
     for (int i = 0; i < n; i++) {
         int64_t x = v[i][0], y = v[i][1], w = v[i][3];
@@ -1286,7 +1326,16 @@ static int tri_away(const pctx *pc, const cvert *v)
     for (int i = 0; i < 3; i++)
         for (int k = 0; k < 4; k++)
             c[i][k] = v[i].c[k];
-    return clip_away(pc, (const int32_t(*)[4])c, 3);
+    return clip_away(pc, (const int32_t(*)[4])c, 3, 0);
+}
+
+/* Whether a component may have been clamped by fx_mat4_apply's fx_sat32:
+ * within `near` units of 2^-16 of a limit (a vertex inside the box, whose
+ * exact value lies within the corners' exact ones, rounds to within a few
+ * units of the corners' computed values and may reach the limit). */
+static int near_sat(int32_t c, int32_t near)
+{
+    return c >= INT32_MAX - near || c <= INT32_MIN + near;
 }
 
 int fx3d_hull_away(fx3d *r, const fx_vec3 *pts, int n)
@@ -1325,14 +1374,41 @@ int fx3d_hull_away(fx3d *r, const fx_vec3 *pts, int n)
     fx_mat4 mv;
     fx_mat4_mul(&mv, &r->view, fx_mat_stack_top(&r->model));
     const fx_mat4 *P = fx_mat_stack_top(&r->proj);
+    /* A vertex p in the box is transformed by fx3d_draw into A(p) + d_p,
+     * A the exact affine map of mv then P, and a corner c into A(c) + d_c:
+     * fx_mat4_apply rounds each component to within 1/2 + 2^-12 units, so
+     * an eye-space error of that much becomes, through a row of P with
+     * absolute sum S (Q16.16), at most S / 2^16 + 1 units in clip space.
+     * A(p) lies in the hull of the A(c), so the vertex lies in the hull of
+     * the computed corners up to 2 such errors: clip_away's slop. Only
+     * without clamping: fx_sat32 moves a corner to a point that is no
+     * longer the corner (the hull of the clamped corners need not hold the
+     * vertices, which may not clamp at all), so a component at a limit
+     * means unsure. */
+    int64_t s_max = 0;
+    for (int i = 0; i < 4; i += i == 1 ? 2 : 1) { /* rows x, y, w */
+        int64_t s = 0;
+        for (int j = 0; j < 4; j++)
+            s += P->m[i][j] < 0 ? -(int64_t)P->m[i][j] : P->m[i][j];
+        s_max = FX_MAX(s_max, s);
+    }
+    int64_t err = (s_max >> 16) + 2;
+    if (err > (1 << 9))
+        return 0;
     int32_t c[8][4];
     for (int i = 0; i < 8; i++) { /* the corners, as fx3d_draw transforms a vertex */
         fx_vec3 p = fx_vec3_make((fx16)(i & 1 ? hi[0] : lo[0]), (fx16)(i & 2 ? hi[1] : lo[1]),
                                  (fx16)(i & 4 ? hi[2] : lo[2]));
-        fx_vec4 e = fx_mat4_apply(P, fx_mat4_apply_point(&mv, p));
+        fx_vec4 e = fx_mat4_apply_point(&mv, p);
+        if (near_sat(e.x, 2) || near_sat(e.y, 2) || near_sat(e.z, 2) || near_sat(e.w, 2))
+            return 0;
+        e = fx_mat4_apply(P, e);
+        if (near_sat(e.x, (int32_t)(2 * err)) || near_sat(e.y, (int32_t)(2 * err)) ||
+            near_sat(e.z, (int32_t)(2 * err)) || near_sat(e.w, (int32_t)(2 * err)))
+            return 0;
         c[i][0] = e.x, c[i][1] = e.y, c[i][2] = e.z, c[i][3] = e.w;
     }
-    return clip_away(&pc, (const int32_t(*)[4])c, 8);
+    return clip_away(&pc, (const int32_t(*)[4])c, 8, 2 * err);
 }
 
 static void set_rgb(int32_t *a, fx3d_rgb c)

@@ -612,3 +612,59 @@ FX_TEST(render3d_hull_away_and_depth_rows)
     FX_CHECK_EQ(g->z[99 * 100 + 99], 0xFFFFFFFFu);
     free(g);
 }
+
+/* fx3d_hull_away with a box whose far corners clamp in fixed point. The
+ * model matrix puts object (X, Y, 0) at eye (-1228.8 - 947 X, 4000 Y,
+ * -(2048 + 16384 X)); the points span X in [0, 16], Y in [-1, 1]. The
+ * corners at X = 16 lie 265000 units away, beyond int32 in Q16.16, and
+ * fx_mat4_apply clamps their eye z to -32768: with w cut to an eighth,
+ * x/w = -0.5 instead of -0.06, so all eight corners seemed beyond the
+ * left edge of a clip from column 40 (margin included), and the old code
+ * said "away". The hull holds the quad X in [1/4, 3/2], whose vertices do
+ * not clamp (w at most 26624) and which has pixels from column 40 on: it must
+ * say unsure. */
+FX_TEST(render3d_hull_away_unsure_when_corners_clamp)
+{
+    rig *g = rig_new();
+    emissive(&g->r, 0xFFFFFF);
+    g->r.cull = FX3D_CULL_NONE;
+    FX_CHECK_EQ(fx3d_perspective(&g->r, FX_ANGLE_90, ONE, ONE, 32000 * ONE), 0);
+    fx_mat4 m;
+    memset(&m, 0, sizeof m);
+    m.m[0][0] = -947 * ONE;
+    m.m[0][3] = -(int32_t)(1228.8 * ONE);
+    m.m[1][1] = 4000 * ONE;
+    m.m[2][0] = -16384 * ONE;
+    m.m[2][3] = -2048 * ONE;
+    m.m[3][3] = ONE;
+    fx_mat_stack_load(&g->r.model, &m);
+    fx_vec3 pts[2] = {fx_vec3_make(0, -ONE, 0), fx_vec3_make(16 * ONE, ONE, 0)};
+    /* the far corner clamps; the quad's far vertex does not */
+    fx_vec4 far_corner = fx_mat4_apply_point(&m, fx_vec3_make(16 * ONE, ONE, 0));
+    fx_vec4 far_vertex = fx_mat4_apply_point(&m, fx_vec3_make(3 * ONE / 2, ONE / 2, 0));
+    FX_CHECK_EQ(far_corner.z, INT32_MIN);
+    FX_CHECK(far_vertex.z > -32000 * ONE && far_vertex.z < -26000 * ONE);
+    fx_vec3 a = fx_vec3_make(ONE / 4, -ONE / 2, 0), b = fx_vec3_make(3 * ONE / 2, -ONE / 2, 0),
+            c = fx_vec3_make(3 * ONE / 2, ONE / 2, 0), d = fx_vec3_make(ONE / 4, ONE / 2, 0);
+    quad(&g->r, a, b, c, d);
+    static uint32_t full[100 * 100];
+    memcpy(full, g->px, sizeof full);
+    int in_band = 0;
+    for (int y = 0; y < 100; y++)
+        for (int x = 40; x < 100; x++)
+            in_band += px(g, x, y) != 0;
+    FX_CHECK_MSG(in_band > 20, "%d pixels of the quad in columns 40..99", in_band);
+    g->r.ctx.clip = (fx_rect){40, 0, 100, 100};
+    FX_CHECK_EQ(fx3d_hull_away(&g->r, pts, 2), 0);
+    /* and the band drawn by itself has those pixels */
+    memset(g->px, 0, sizeof g->px);
+    quad(&g->r, a, b, c, d);
+    for (int y = 0; y < 100; y++)
+        for (int x = 0; x < 100; x++)
+            if (g->px[y * 100 + x] != (x >= 40 ? full[y * 100 + x] : 0)) {
+                FX_CHECK_MSG(0, "band pixel (%d, %d) %06x, full %06x", x, y, g->px[y * 100 + x],
+                             full[y * 100 + x]);
+                y = x = 100;
+            }
+    free(g);
+}

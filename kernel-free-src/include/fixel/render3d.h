@@ -225,11 +225,14 @@ size_t fx3d_vertex_cache_bytes(int32_t nverts);
  * (widened by 1/256 of their largest coordinate, for what fixed-point
  * evaluation makes of them) can be drawn in the clip with the current
  * matrices and viewport: the corners of their box all in front of the eye
- * and beyond one edge of the clip widened by a margin. fx3d_draw skips the
- * lighting of such triangles itself; this lets a caller skip making them
- * (fx_mesh_make_teapot's patches in a band of a frame). 0 when unsure, and
- * always for painter's or translucent triangles (sorted), a planar shadow
- * or a shadow-map pass. */
+ * and beyond one edge of the clip widened by a margin (which covers the
+ * rounding of the corners' and the vertices' transforms and of clipping).
+ * fx3d_draw skips the lighting of such triangles itself; this lets a
+ * caller skip making them (fx_mesh_make_teapot's patches in a band of a
+ * frame). 0 when unsure: a corner whose eye or clip coordinates reach the
+ * int32 limits (clamped, it is no longer the corner), and always for
+ * painter's or translucent triangles (sorted), a planar shadow or a
+ * shadow-map pass. */
 int fx3d_hull_away(fx3d *r, const fx_vec3 *pts, int n);
 void fx3d_set_vertex_cache(fx3d *r, void *mem, size_t bytes);
 
