@@ -347,11 +347,22 @@ typedef struct vcent {
     fx3d_rgb col[2];
 } vcent;
 
-size_t fx3d_vertex_cache_bytes(int32_t nverts) { return (size_t)(nverts > 0 ? nverts : 0) * sizeof(vcent); }
+/* The alignment render3d.h promises callers is enough for the entries. */
+_Static_assert(_Alignof(vcent) <= FX3D_VERTEX_CACHE_ALIGN,
+               "vcent needs more than FX3D_VERTEX_CACHE_ALIGN");
+
+size_t fx3d_vertex_cache_bytes(int32_t nverts)
+{
+    size_t n = (size_t)(nverts > 0 ? nverts : 0);
+    return n > SIZE_MAX / sizeof(vcent) ? SIZE_MAX : n * sizeof(vcent); /* 32-bit size_t */
+}
 
 void fx3d_set_vertex_cache(fx3d *r, void *mem, size_t bytes)
 {
-    size_t n = mem ? bytes / sizeof(vcent) : 0;
+    /* misaligned memory: no cache rather than misaligned loads (undefined,
+     * and a fault on some cores) */
+    int ok = mem && ((uintptr_t)mem & (FX3D_VERTEX_CACHE_ALIGN - 1)) == 0;
+    size_t n = ok ? bytes / sizeof(vcent) : 0;
     r->vcache = n ? mem : NULL;
     r->vcache_n = n > INT32_MAX ? INT32_MAX : (int32_t)n;
     r->vcache_gen = 0;

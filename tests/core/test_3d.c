@@ -503,7 +503,7 @@ static void lit_teapot(rig *g, fx_mesh *m, int depth)
  * triangle, a Gouraud teapot under three lights, its inside seen through
  * the open top with culling off (each vertex lit from both sides), with
  * and without vertex colours, is the same picture; a cache too small for
- * the mesh is not used. */
+ * the mesh is not used, and misaligned memory is no cache at all. */
 FX_TEST(render3d_vertex_cache_keeps_the_pixels)
 {
     rig *g = rig_new();
@@ -541,7 +541,7 @@ FX_TEST(render3d_vertex_cache_keeps_the_pixels)
     fx_mat4_translate(&g->r.view, 0, -ONE, -6 * ONE);
     fx_mat4_mul(&g->r.view, &g->r.view, &look);
     static uint32_t plain[100 * 100];
-    void *mem = malloc(fx3d_vertex_cache_bytes(nv));
+    void *mem = malloc(fx3d_vertex_cache_bytes(nv) + FX3D_VERTEX_CACHE_ALIGN);
     for (int vcol = 0; vcol < 2; vcol++) {
         m.col = vcol ? col : NULL;
         fx3d_set_vertex_cache(&g->r, NULL, 0);
@@ -563,7 +563,21 @@ FX_TEST(render3d_vertex_cache_keeps_the_pixels)
         fx3d_set_vertex_cache(&g->r, mem, fx3d_vertex_cache_bytes(nv - 1));
         lit_teapot(g, &m, 1);
         FX_CHECK(memcmp(plain, g->px, sizeof plain) == 0);
+        /* memory off FX3D_VERTEX_CACHE_ALIGN (room enough), or less than
+         * one entry: no cache, the same pixels */
+        for (int off = 1; off < FX3D_VERTEX_CACHE_ALIGN; off++) {
+            fx3d_set_vertex_cache(&g->r, (char *)mem + off, fx3d_vertex_cache_bytes(nv));
+            FX_CHECK_MSG(g->r.vcache == NULL && g->r.vcache_n == 0, "offset %d", off);
+        }
+        lit_teapot(g, &m, 1);
+        FX_CHECK(memcmp(plain, g->px, sizeof plain) == 0);
+        fx3d_set_vertex_cache(&g->r, mem, fx3d_vertex_cache_bytes(1) - 1);
+        FX_CHECK(g->r.vcache == NULL && g->r.vcache_n == 0);
+        fx3d_set_vertex_cache(&g->r, mem, fx3d_vertex_cache_bytes(1));
+        FX_CHECK(g->r.vcache == mem && g->r.vcache_n == 1);
     }
+    /* no wrap where size_t has 32 bits */
+    FX_CHECK(fx3d_vertex_cache_bytes(INT32_MAX) >= (size_t)INT32_MAX);
     free(mem);
     free(col);
     free(m.pos);

@@ -219,7 +219,13 @@ void fx3d_depth_rows(fx3d *r, int32_t y0, int32_t y1);
  * as many vertices as fit has each vertex transformed, and under Gouraud
  * shading lit, once per draw instead of once per triangle using it. The
  * pixels are the same with and without it. fx3d_vertex_cache_bytes gives
- * the bytes for nverts vertices. The memory must stay until replaced. */
+ * the bytes for nverts vertices (SIZE_MAX when that does not fit size_t).
+ * The memory must stay until replaced, and must be aligned to
+ * FX3D_VERTEX_CACHE_ALIGN bytes (as malloc's and fx_scene_alloc's are when
+ * the arena is): its entries hold 32-bit fields, and the 8 leaves them room
+ * to grow. Memory that is not aligned, or smaller than one entry, gives no
+ * cache (the same pixels, slower), never a misaligned access. */
+#define FX3D_VERTEX_CACHE_ALIGN 8
 size_t fx3d_vertex_cache_bytes(int32_t nverts);
 /* 1 when nothing inside the convex hull of the n object-space points pts
  * (widened by 1/256 of their largest coordinate, for what fixed-point
