@@ -52,6 +52,8 @@ bench-peers-nodeps: $(BUILD)/bin/fixel-bench
 	$(BUILD)/bin/fixel-bench --peers -o $(BUILD)/bench-peers.txt
 
 TEST_SUITES += "$(BUILD)/bin/fixel-bench --check"
+# the frames table (TABLE 8) runs, with its 2-thread column past 2 threads
+TEST_SUITES += "sh tools/fixel-bench/frames-check.sh $(BUILD)/bin $(BUILD)/frames-check"
 
 
 .PHONY: bench bench-peers bench-peers-nodeps

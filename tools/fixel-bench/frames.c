@@ -2,8 +2,8 @@
 /* fixel-bench --frames: the frames a user sees (issue #27, docs/PERFORMANCE.md).
  * Milliseconds per frame of every fixel-demo page, of the 3D and ray-traced
  * golden scripts and of every examples/kiosk-*.conf, at 800x480 and
- * 1920x1080 in XRGB8888 and RGB565, on one thread and on every core (bands:
- * fixel/par.h), and what presenting a whole frame or a 10% damage rectangle
+ * 1920x1080 in XRGB8888 and RGB565, on one thread, on two (past two cores)
+ * and on every core (bands: fixel/par.h), and what presenting a whole frame or a 10% damage rectangle
  * costs. Each figure is the median of several frames; the table says the
  * machine's load, and for banded runs the CPU time each band took, which
  * shows the split when the wall time is noisy (a shared machine). */
@@ -63,6 +63,9 @@ static double median(double *v, int n)
 
 enum { MAXB = 64 }; /* fx_scene_run_mt's limit */
 static int REPS = 5; /* -t */
+/* 2 when the N-thread column is more than 2 threads: a "2 thr" column
+ * then shows the scaling at two cores too (a Pi 4 or 5 has four) */
+static int MID;
 
 typedef struct cell {
     double ms;           /* median wall ms per frame */
@@ -71,42 +74,66 @@ typedef struct cell {
     int bands;           /* 1: one thread */
 } cell;
 
-static void row(FILE *o, const char *what, int w, int h, fx_format f, cell a, cell b);
+static void row(FILE *o, const char *what, int w, int h, fx_format f, cell a, cell m, cell b);
 
 /* ---- demo pages (fixel-demo --time-pages draws and times them) ---- */
 
-/* Run "DEMO --time-pages WxH FORMAT THREADS REPS" and print a row per page. */
-static int demo_rows(FILE *o, const char *demo, int w, int h, fx_format f, int nthreads)
+/* Run "DEMO --time-pages WxH FORMAT THREADS REPS": per page (at most
+ * maxp) its name, the one-thread cell a and the banded cell b. Returns the
+ * pages read, -1 when the demo failed. */
+enum { MAXPAGES = 32 };
+static int demo_time(const char *demo, int w, int h, fx_format f, int nthreads, char (*name)[64], cell *a,
+                     cell *b)
 {
     char cmd[4400];
     snprintf(cmd, sizeof cmd, "'%s' --time-pages %dx%d %s %d %d", demo, w, h, fx_format_get(f)->name, nthreads,
              REPS);
     FILE *p = popen(cmd, "r");
     if (!p)
-        return 1;
+        return -1;
     char line[512];
-    int rows = 0;
-    while (fgets(line, sizeof line, p)) {
+    int n = 0;
+    while (n < MAXPAGES && fgets(line, sizeof line, p)) {
         /* NAME MS1 CPU1 MSN CPUN BANDS BANDCPU/BANDCPU... */
-        char name[64], bc[256] = "";
-        cell a, b;
-        memset(&a, 0, sizeof a);
-        memset(&b, 0, sizeof b);
-        if (sscanf(line, "%63s %lf %lf %lf %lf %d %255s", name, &a.ms, &a.cpu_ms, &b.ms, &b.cpu_ms, &b.bands, bc) < 6)
+        char bc[256] = "";
+        memset(&a[n], 0, sizeof a[n]);
+        memset(&b[n], 0, sizeof b[n]);
+        if (sscanf(line, "%63s %lf %lf %lf %lf %d %255s", name[n], &a[n].ms, &a[n].cpu_ms, &b[n].ms, &b[n].cpu_ms,
+                   &b[n].bands, bc) < 6)
             continue;
-        a.bands = 1;
+        a[n].bands = 1;
         char *q = bc;
-        for (int k = 0; k < b.bands && k < MAXB && *q; k++) {
-            b.band_cpu[k] = strtod(q, &q);
+        for (int k = 0; k < b[n].bands && k < MAXB && *q; k++) {
+            b[n].band_cpu[k] = strtod(q, &q);
             if (*q == '/')
                 q++;
         }
-        char what[80];
-        snprintf(what, sizeof what, "demo %s", name);
-        row(o, what, w, h, f, a, b);
-        rows++;
+        n++;
     }
-    return pclose(p) != 0 || !rows;
+    return pclose(p) != 0 || !n ? -1 : n;
+}
+
+/* A row per demo page, on 1, (2,) and nthreads threads. */
+static int demo_rows(FILE *o, const char *demo, int w, int h, fx_format f, int nthreads)
+{
+    static char name[MAXPAGES][64], name2[MAXPAGES][64];
+    static cell a[MAXPAGES], b[MAXPAGES], a2[MAXPAGES], m[MAXPAGES];
+    int n = demo_time(demo, w, h, f, nthreads, name, a, b);
+    if (n < 0)
+        return 1;
+    int n2 = MID ? demo_time(demo, w, h, f, MID, name2, a2, m) : 0;
+    if (n2 < 0)
+        return 1;
+    for (int k = 0; k < n; k++) {
+        cell none;
+        memset(&none, 0, sizeof none);
+        char what[80];
+        snprintf(what, sizeof what, "demo %s", name[k]);
+        /* the same pages in the same order; a page missing in one run has
+         * no 2-thread cell */
+        row(o, what, w, h, f, a[k], k < n2 && !strcmp(name[k], name2[k]) ? m[k] : none, b[k]);
+    }
+    return 0;
 }
 
 /* ---- scene scripts ---- */
@@ -249,11 +276,22 @@ static double time_present(fx_memfb *src, fx_memfb *dst, int damage)
 static const int sizes[2][2] = {{800, 480}, {1920, 1080}};
 static const fx_format fmts[2] = {FX_FMT_XRGB8888, FX_FMT_RGB565};
 
-static void row(FILE *o, const char *what, int w, int h, fx_format f, cell a, cell b)
+static void row(FILE *o, const char *what, int w, int h, fx_format f, cell a, cell m, cell b)
 {
-    fprintf(o, "%-24s %4dx%-4d %-8s %9.2f %9.2f", what, w, h, fx_format_get(f)->name, a.ms, b.ms);
+    fprintf(o, "%-24s %4dx%-4d %-8s %9.2f", what, w, h, fx_format_get(f)->name, a.ms);
+    if (MID && m.bands > 1 && m.ms > 0)
+        fprintf(o, " %9.2f %5.2fx", m.ms, a.ms / m.ms);
+    else if (MID && m.bands > 1)
+        fprintf(o, " %9.2f %6s", m.ms, "-"); /* too short to time */
+    else if (MID)
+        fprintf(o, " %9s %6s", "-", "-");
+    fprintf(o, " %9.2f", b.ms);
     if (b.bands > 1) {
-        fprintf(o, " %5.2fx %8.2f %8.2f", a.ms / b.ms, a.cpu_ms, b.cpu_ms);
+        if (b.ms > 0)
+            fprintf(o, " %5.2fx", a.ms / b.ms);
+        else
+            fprintf(o, " %6s", "-"); /* too short to time */
+        fprintf(o, " %8.2f %8.2f", a.cpu_ms, b.cpu_ms);
         /* none for the kiosk (a process: its CPU in all) */
         for (int k = 0; k < b.bands && k < MAXB && b.band_cpu[0] > 0; k++)
             fprintf(o, "%s%.2f", k ? "/" : "  ", b.band_cpu[k]);
@@ -299,6 +337,7 @@ int frames_run(FILE *o, const char *self, int nthreads, int reps, const char *on
     }
     if (nthreads == 0)
         nthreads = ncpu > 1 ? ncpu : 2;
+    MID = nthreads > 2 ? 2 : 0;
     char la[64], lb[64];
     load(la, sizeof la);
     fprintf(o, "TABLE 8  frames a user sees: ms per frame, median of %d (after one warm-up frame)\n", REPS);
@@ -307,8 +346,12 @@ int frames_run(FILE *o, const char *self, int nthreads, int reps, const char *on
     fprintf(o, "  x: speed-up; cpu 1/cpu N: process CPU ms per frame (cpu N > cpu 1 is the set-up each band\n"
                "  repeats); band cpu: CPU ms of each band's thread (an even split shows despite a noisy wall)\n");
     fprintf(o, "  %d online cores; load average at the start %s\n\n", ncpu, la);
-    fprintf(o, "%-24s %-9s %-8s %9s %9s %6s %8s %8s  %s\n", "what", "size", "format", "1 thr", "N thr", "x",
-            "cpu 1", "cpu N", "band cpu");
+    if (MID)
+        fprintf(o, "  2 thr, x2: the same on 2 threads and its speed-up\n");
+    fprintf(o, "%-24s %-9s %-8s %9s", "what", "size", "format", "1 thr");
+    if (MID)
+        fprintf(o, " %9s %6s", "2 thr", "x2");
+    fprintf(o, " %9s %6s %8s %8s  %s\n", "N thr", "x", "cpu 1", "cpu N", "band cpu");
     fx_memfb fb, dst;
     int bad = 0;
     char demo[4096], kiosk[4096];
@@ -356,14 +399,18 @@ int frames_run(FILE *o, const char *self, int nthreads, int reps, const char *on
             }
             if (fx_memfb_create(&fb, w, h, fmts[f]) < 0)
                 return 1;
-            int ok1, ok2;
+            int ok1, ok2, okm = 1;
             cell a = time_script(&fb, text, len, 1, arena, arena_size, &ok1);
+            cell m;
+            memset(&m, 0, sizeof m);
+            if (MID)
+                m = time_script(&fb, text, len, MID, arena, arena_size, &okm);
             cell b = time_script(&fb, text, len, nthreads, arena, arena_size, &ok2);
             free(text);
             char what[48];
-            snprintf(what, sizeof what, "script %s%s", scripts[i].name, ok1 && ok2 ? "" : " FAILED");
-            bad |= !(ok1 && ok2);
-            row(o, what, w, h, fmts[f], a, b);
+            snprintf(what, sizeof what, "script %s%s", scripts[i].name, ok1 && ok2 && okm ? "" : " FAILED");
+            bad |= !(ok1 && ok2 && okm);
+            row(o, what, w, h, fmts[f], a, m, b);
             fflush(o);
             fx_memfb_destroy(&fb);
         }
@@ -390,24 +437,29 @@ int frames_run(FILE *o, const char *self, int nthreads, int reps, const char *on
         for (int s = 0; s < 2 && want; s++)
             for (int f = 0; f < 2; f++) {
                 int w = sizes[s][0], h = sizes[s][1];
-                cell a, b;
+                cell a, m, b;
                 memset(&a, 0, sizeof a);
+                memset(&m, 0, sizeof m);
                 memset(&b, 0, sizeof b);
                 const char *fn = fx_format_get(fmts[f])->name;
                 int ok = !access(kiosk, X_OK);
                 if (ok)
                     a.ms = time_kiosk(kiosk, path, w, h, fn, 1, &a.cpu_ms);
-                if (ok && a.ms >= 0)
+                if (ok && a.ms >= 0 && MID) {
+                    m.ms = time_kiosk(kiosk, path, w, h, fn, MID, &m.cpu_ms);
+                    m.bands = MID;
+                }
+                if (ok && a.ms >= 0 && m.ms >= 0)
                     b.ms = time_kiosk(kiosk, path, w, h, fn, nthreads, &b.cpu_ms);
                 char what[48];
                 snprintf(what, sizeof what, "kiosk %.*s", (int)(strlen(confs[c]) - 5), confs[c]);
-                if (!ok || a.ms < 0 || b.ms < 0) {
+                if (!ok || a.ms < 0 || m.ms < 0 || b.ms < 0) {
                     fprintf(o, "%-24s %4dx%-4d %-8s  (fixel-kiosk failed or missing: %s)\n", what, w, h, fn, kiosk);
                     bad |= ok; /* a kiosk that is there and fails; none built is only said */
                 } else {
                     a.bands = 1;
                     b.bands = nthreads; /* no per-band CPU: the process's, every thread's */
-                    row(o, what, w, h, fmts[f], a, b);
+                    row(o, what, w, h, fmts[f], a, m, b);
                 }
                 fflush(o);
             }
