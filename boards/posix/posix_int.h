@@ -42,6 +42,7 @@ int fx_posix_workers(void *(*fn)(void *), void *arg, int nthreads);
  * when they have all returned from fn. */
 typedef struct fx_posix_batch {
     int n;
+    unsigned gen;
     int slot[63];
 } fx_posix_batch;
 int fx_posix_pool_start(fx_posix_batch *b, void *(*fn)(void *), void *arg, int n);

@@ -8,8 +8,12 @@
  * up to 63; a thread is never shared by two calls at once, so nested and
  * concurrent calls cannot wait on each other: a call that finds no thread
  * free simply runs on fewer (every fn here takes its work from a shared
- * counter). The threads block every signal (a program's signalfd or
- * handler stays on its own threads) and are stopped at exit. */
+ * counter). The threads block the asynchronous signals (a program's
+ * signalfd or handler stays on its own threads) but not the ones a fault
+ * raises (SIGSEGV, SIGBUS, ...: blocked, the kernel would kill the process
+ * without running the console-restoring handler), and are stopped at exit.
+ * A child forked during a call has none of the pool's threads: its copy of
+ * the call returns without their part of the work. */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
@@ -29,7 +33,7 @@ typedef struct slot {
     void *(*fn)(void *);
     void *arg;
     int state; /* SLOT_*, under m */
-    int busy;  /* claimed by a call, under pool_lock */
+    int busy;  /* claimed by a call (or by pool_stop), under pool_lock */
 } slot;
 
 #define POOL_MAX 63
@@ -37,6 +41,8 @@ static slot pool[POOL_MAX];
 static int pool_n;
 static pthread_mutex_t pool_lock = PTHREAD_MUTEX_INITIALIZER;
 static int pool_hooks;
+static int pool_closed;     /* after exit began: nothing is claimed */
+static unsigned pool_gen;   /* a fork's child starts a new generation */
 
 static void *pool_thread(void *p)
 {
@@ -58,17 +64,21 @@ static void *pool_thread(void *p)
 }
 
 /* At exit, stop the idle threads (a leak checker then sees no live thread);
- * one still claimed by a call on another thread is left running. */
+ * one still claimed by a call on another thread is left running. Which ones
+ * are decided under the lock, and none is claimed after. */
 static void pool_stop(void)
 {
+    int stop[POOL_MAX], n = 0;
     pthread_mutex_lock(&pool_lock);
-    int n = pool_n;
-    for (int i = 0; i < n; i++)
-        pool[i].busy += 2; /* never claimed again */
+    pool_closed = 1;
+    for (int i = 0; i < pool_n; i++)
+        if (!pool[i].busy) {
+            pool[i].busy = 1;
+            stop[n++] = i;
+        }
     pthread_mutex_unlock(&pool_lock);
-    for (int i = 0; i < n; i++) {
-        if (pool[i].busy != 2)
-            continue;
+    for (int k = 0; k < n; k++) {
+        int i = stop[k];
         pthread_mutex_lock(&pool[i].m);
         pool[i].state = SLOT_QUIT;
         pthread_cond_broadcast(&pool[i].cv);
@@ -82,6 +92,7 @@ static void pool_forget(void)
 {
     memset(pool, 0, sizeof pool);
     pool_n = 0;
+    pool_gen++; /* a call the fork interrupted waits for none of them */
     pthread_mutex_t fresh = PTHREAD_MUTEX_INITIALIZER;
     pool_lock = fresh;
 }
@@ -97,6 +108,9 @@ static int pool_grow(slot *s)
     pthread_cond_init(&s->cv, 0);
     sigset_t all, old;
     sigfillset(&all);
+    static const int faults[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGTRAP, SIGSYS, SIGABRT};
+    for (size_t i = 0; i < sizeof faults / sizeof faults[0]; i++)
+        sigdelset(&all, faults[i]);
     pthread_sigmask(SIG_SETMASK, &all, &old);
     int e = pthread_create(&s->t, 0, pool_thread, s);
     pthread_sigmask(SIG_SETMASK, &old, 0);
@@ -115,6 +129,9 @@ int fx_posix_pool_start(fx_posix_batch *b, void *(*fn)(void *), void *arg, int n
     if (n > POOL_MAX)
         n = POOL_MAX;
     pthread_mutex_lock(&pool_lock);
+    b->gen = pool_gen;
+    if (pool_closed)
+        n = 0;
     if (!pool_hooks) {
         pool_hooks = 1;
         atexit(pool_stop);
@@ -147,6 +164,13 @@ int fx_posix_pool_start(fx_posix_batch *b, void *(*fn)(void *), void *arg, int n
 
 void fx_posix_pool_wait(fx_posix_batch *b)
 {
+    pthread_mutex_lock(&pool_lock);
+    int gone = b->gen != pool_gen;
+    pthread_mutex_unlock(&pool_lock);
+    if (gone) { /* forked during the call: those threads are the parent's */
+        b->n = 0;
+        return;
+    }
     for (int i = 0; i < b->n; i++) {
         slot *s = &pool[b->slot[i]];
         pthread_mutex_lock(&s->m);

@@ -286,10 +286,14 @@ static int cmd_stream(fx_scene *sc)
         return fx_scene_error(sc, "seed count %d out of range (1..64)", n);
     TRY(vector(sc, &g));
     int64_t w = (int64_t)r.x1 - r.x0, h = (int64_t)r.y1 - r.y0;
-    /* one-pixel steps: twice round the visible part is plenty */
-    fx_rect vis = fx_rect_intersect(r, sc->ctx.clip);
-    int32_t steps = 2 * ((vis.x1 - vis.x0) + (vis.y1 - vis.y0));
-    if (fx_rect_empty(vis))
+    /* one-pixel steps: twice round the part on the surface is plenty (and
+     * bounds the work). The surface, not the clip: a band of a frame must
+     * trace the same streamlines as the whole frame, and a streamline draws
+     * a step past its rectangle, so one whose rectangle misses a band can
+     * still light the band's edge row. */
+    fx_rect on = fx_rect_intersect(r, (fx_rect){0, 0, sc->ctx.surf.w, sc->ctx.surf.h});
+    int32_t steps = 2 * ((on.x1 - on.x0) + (on.y1 - on.y0));
+    if (fx_rect_empty(on))
         return 0;
     for (int32_t j = 0; j < n; j++)
         for (int32_t i = 0; i < n; i++) {

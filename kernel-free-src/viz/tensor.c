@@ -223,9 +223,13 @@ int32_t fx_tensor_glyphs(const fx_ctx *c, fx_rect dest, const fx_tgrid *g, int32
                 fx_plot(c, px8(x), px8(y));
                 continue;
             }
-            /* node positions reach 2^39 in 24.8: a glyph far off the clip is skipped whole */
-            if (x < ((int64_t)c->clip.x0 - 1) * 256 - rmax || x > ((int64_t)c->clip.x1 + 1) * 256 + rmax ||
-                y < ((int64_t)c->clip.y0 - 1) * 256 - rmax || y > ((int64_t)c->clip.y1 + 1) * 256 + rmax)
+            /* node positions reach 2^39 in 24.8: a glyph far off the clip is
+             * skipped whole. It reaches rmax from its centre, and a head's
+             * barbs up to 6 px (hl) beyond a tip; 8 px covers them and the
+             * rounding to pixels, so a band of a frame skips only glyphs
+             * that draw nothing in it (a 1 px margin lost barbs at band edges) */
+            if (x < ((int64_t)c->clip.x0 - 8) * 256 - rmax || x > ((int64_t)c->clip.x1 + 8) * 256 + rmax ||
+                y < ((int64_t)c->clip.y0 - 8) * 256 - rmax || y > ((int64_t)c->clip.y1 + 8) * 256 + rmax)
                 continue;
             /* near the clip but with a radius past 2^23 px its centre does
              * not fit fx8: skipped rather than drawn round a wrapped centre */

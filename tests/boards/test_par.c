@@ -122,6 +122,7 @@ typedef struct pool_probe {
     pthread_t caller;
     atomic_int on_pool, sig_open, calls, inner_bad;
     int nested;
+    int child; /* fork_band: the child's pid, -1 in the child (the caller's thread only) */
 } pool_probe;
 
 static void count_band(void *u, fx_ctx *c, int band)
@@ -143,6 +144,11 @@ static void probe_band(void *u, fx_ctx *c, int band)
         sigset_t now;
         pthread_sigmask(SIG_SETMASK, NULL, &now);
         if (!sigismember(&now, SIGINT) || !sigismember(&now, SIGTERM) || !sigismember(&now, SIGHUP))
+            atomic_fetch_add(&p->sig_open, 1);
+        /* a fault must reach its handler (the console restore), not be
+         * turned into a plain kill by a blocked mask */
+        if (sigismember(&now, SIGSEGV) || sigismember(&now, SIGBUS) || sigismember(&now, SIGFPE) ||
+            sigismember(&now, SIGILL) || sigismember(&now, SIGABRT))
             atomic_fetch_add(&p->sig_open, 1);
     }
     if (p->nested) {
@@ -229,6 +235,51 @@ FX_TEST(par_nested_and_concurrent_calls_finish)
         pthread_join(t[i], 0);
         FX_CHECK_EQ(pc[i].bad, 0);
     }
+    fx_memfb_destroy(&f.fb);
+}
+
+/* A band that forks on the calling thread: the child's copy of the call
+ * returns (it waited for the parent's pool threads forever), and the
+ * parent's call draws every band. */
+static void fork_band(void *u, fx_ctx *c, int band)
+{
+    pool_probe *p = u;
+    probe_band(u, c, band);
+    if (band == 0 && pthread_equal(pthread_self(), p->caller)) {
+        fflush(NULL);
+        pid_t pid = fork();
+        if (pid == 0) {
+            p->child = -1; /* the child: returns from the call, then exits */
+            alarm(20);
+        } else if (pid > 0) {
+            p->child = (int)pid;
+        }
+    }
+}
+
+FX_TEST(par_fork_inside_a_call_does_not_hang_the_child)
+{
+    probe_fixture f;
+    pool_probe p;
+    FX_CHECK_EQ(probe_setup(&f), 0);
+    int forked = 0;
+    for (int round = 0; round < 20 && !forked; round++) {
+        memset(&p, 0, sizeof p);
+        p.caller = pthread_self();
+        FX_CHECK_EQ(fx_par_bands(&f.c, 16, 3, fork_band, &p), 0);
+        if (p.child == -1)
+            _exit(0); /* the child got here: the call returned */
+        if (p.child > 0) {
+            forked = 1;
+            FX_CHECK_EQ(atomic_load(&p.calls), 16);
+            int st = 0;
+            FX_CHECK_EQ(waitpid((pid_t)p.child, &st, 0), (pid_t)p.child);
+            FX_CHECK(WIFEXITED(st)); /* not killed by its alarm */
+            FX_CHECK_EQ(WEXITSTATUS(st), 0);
+        }
+    }
+    /* band 0 runs on the caller whenever the caller takes it first */
+    FX_CHECK(forked);
     fx_memfb_destroy(&f.fb);
 }
 
@@ -486,7 +537,7 @@ FX_TEST(par_balance_cuts_the_cost_into_equal_parts)
         FX_CHECK_EQ(out[1], 50);
     }
     /* a random split: cuts increase, each band has a row, and the predicted
-     * cost of every new band is within one row's cost of the mean */
+     * cost of every new band is within two rows' cost of the mean */
     uint32_t seed = 5;
     for (int t = 0; t < 2000; t++) {
         int n = 2 + (int)(fx_test_rand(&seed) % 63);
@@ -505,6 +556,27 @@ FX_TEST(par_balance_cuts_the_cost_into_equal_parts)
         for (int k = 0; k < n; k++)
             ok &= out[k + 1] > out[k];
         FX_CHECK_MSG(ok, "cuts do not increase (trial %d)", t);
+        /* each new band's cost, with every old band's cost spread evenly
+         * over its rows, is the mean within two rows' cost (a cut falls
+         * on a whole row: each of its two cuts is off by under a row) */
+        double total = 0, maxrow = 0;
+        for (int k = 0; k < n; k++) {
+            total += (double)cost[k];
+            if (cut[k + 1] > cut[k] && (double)cost[k] / (cut[k + 1] - cut[k]) > maxrow)
+                maxrow = (double)cost[k] / (cut[k + 1] - cut[k]);
+        }
+        int even = 1;
+        for (int k = 0; k < n && total > 0; k++) {
+            double pred = 0;
+            for (int j = 0; j < n; j++) {
+                int32_t lo = out[k] > cut[j] ? out[k] : cut[j], hi = out[k + 1] < cut[j + 1] ? out[k + 1] : cut[j + 1];
+                if (hi > lo)
+                    pred += (double)cost[j] * (hi - lo) / (cut[j + 1] - cut[j]);
+            }
+            double off = pred - total / n;
+            even &= (off < 0 ? -off : off) <= 2 * maxrow + 1e-9 * total;
+        }
+        FX_CHECK_MSG(even, "a band's cost is off the mean by more than two rows' (trial %d)", t);
         /* the same costs in units 2^30 times smaller (nanoseconds of long
          * frames): cuts within a row, with no 128-bit arithmetic (32-bit ARM) */
         int64_t big[64];

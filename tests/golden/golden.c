@@ -112,9 +112,13 @@ static char band_msg[256];
 
 /* --band-check: each of n bands of the script drawn alone (fx_scene_set_band)
  * on a surface of 0x5A bytes equals want inside the band and leaves the rest
- * alone. 0, or 1 with band_msg set. */
+ * alone (n < 0: a band per row, every place a cut can fall, since
+ * fx_scene_run_mt cuts where the last frame's cost says). 0, or 1 with
+ * band_msg set. */
 static int check_bands(const char *text, size_t len, fx_format f, const fx_surface *want, int n)
 {
+    if (n < 0)
+        n = want->h;
     static void *arena;
     size_t arena_size = (size_t)64 << 20;
     if (!arena && !(arena = malloc(arena_size))) {
@@ -257,8 +261,11 @@ int main(int argc, char **argv)
          * picture, outside it untouched. */
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc)
             threads = atoi(argv[++i]);
-        else if (!strcmp(argv[i], "--band-check") && i + 1 < argc)
-            band_check = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--band-check") && i + 1 < argc) {
+            /* "rows": a band per row, in XRGB8888 only (its cost is a run
+             * per row; the formats differ only in how pixels are stored) */
+            band_check = !strcmp(argv[++i], "rows") ? -1 : atoi(argv[i]);
+        }
         /* Cross-architecture runs without libpng on the target: the target
          * renders PPMs (--render-ppm DIR), the host compares them with the
          * same golden PNGs (--compare-ppm DIR). */
@@ -338,7 +345,8 @@ int main(int argc, char **argv)
             } else {
                 r = fx_scene_run(&sc, text, len);
             }
-            if (r >= 0 && band_check && H.have && !fx_scene_script_serial(text, len)) {
+            if (r >= 0 && band_check && H.have && !fx_scene_script_serial(text, len) &&
+                (band_check > 0 || f == FX_FMT_XRGB8888)) {
                 int bad = check_bands(text, len, (fx_format)f, &H.fb.surf, band_check);
                 renders++;
                 banded++;
