@@ -36,8 +36,15 @@ void fx_scene_init(fx_scene *sc, const fx_scene_host *host, void *arena, size_t 
     sc->w = 320;
     sc->h = 240;
     sc->format = FX_FMT_XRGB8888;
-    sc->arena = arena;
-    sc->arena_size = arena ? arena_size : 0;
+    /* Module state in the arena holds 64-bit fields: start at the first
+     * 8-byte boundary and keep whole 8-byte units, so any arena the caller
+     * has works (fx_scene_run_mt lays band arenas of this size end to end,
+     * each then aligned too). */
+    size_t skip = arena ? (size_t)(-(uintptr_t)arena & 7u) : 0;
+    sc->arena = arena && arena_size > skip ? (uint8_t *)arena + skip : NULL;
+    sc->arena_size = sc->arena ? (arena_size - skip) & ~(size_t)7 : 0;
+    if (!sc->arena_size)
+        sc->arena = NULL;
     sc->ctx.color = 0xFFFFFFFFu; /* kept until the surface exists, then packed */
 }
 

@@ -115,7 +115,9 @@ typedef struct fx_scene_cmd {
 #define FX_SCENE_SERIAL 2u
 
 /* Set up a scene: default size 320x240 XRGB8888, colour white. The arena
- * (any size; 0 is allowed) holds module state such as depth buffers. */
+ * (any size and alignment; 0 is allowed) holds module state such as depth
+ * buffers; the scene uses it from its first 8-byte boundary, in whole
+ * 8-byte units (sc->arena, sc->arena_size say what it uses). */
 void fx_scene_init(fx_scene *sc, const fx_scene_host *host, void *arena, size_t arena_size);
 /* Force size/format regardless of the script (command-line overrides). */
 void fx_scene_fix_size(fx_scene *sc, int32_t w, int32_t h);
