@@ -388,7 +388,7 @@ static const char *const lit3d[] = {
 static int run_fmt(const char *text, int nthreads, fx_format f, host *H, int *bands)
 {
     static fx_scene sc;
-    static uint8_t arena[2 << 20];
+    static _Alignas(8) uint8_t arena[2 << 20]; /* 8-aligned: fx_scene_init keeps all of it (A below) */
     memset(H, 0, sizeof *H);
     fx_scene_host hs = {H, make_surface, NULL, NULL, NULL, NULL};
     fx_scene_init(&sc, &hs, arena, sizeof arena);
