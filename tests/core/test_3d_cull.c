@@ -121,6 +121,16 @@ static int band_diff(const world *g, fx_rect band)
     return -1;
 }
 
+/* Draw m whole, then clipped to band: the first pixel where the two
+ * disagree (band_diff), or -1. */
+static int band_mismatch(world *g, const fx_mesh *m, fx_rect band)
+{
+    draw(g, m, fx_surface_rect(&g->s));
+    memcpy(g->ref, g->px, sizeof g->ref);
+    draw(g, m, band);
+    return band_diff(g, band);
+}
+
 /* Random meshes at the edges of random bands, in random viewports of up to
  * 16384 x 16384 pixels seen through a 48 x 40 surface, half the vertices
  * at w in [1/16, 1/8] (where one unit of 2^-16 in eye x moves a vertex two
@@ -226,10 +236,7 @@ FX_TEST(render3d_band_skips_keep_the_pixels)
             g->r.shading = sh < 3 ? (fx3d_shading)sh : FX3D_GOURAUD;
             g->r.polymode = sh < 3 ? FX3D_FILL : sh == 3 ? FX3D_WIRE : FX3D_HIDDEN_LINE;
             g->r.ctx.color = 0xFFFF00u;
-            draw(g, &m, fx_surface_rect(&g->s));
-            memcpy(g->ref, g->px, sizeof g->ref);
-            draw(g, &m, band);
-            int at = band_diff(g, band);
+            int at = band_mismatch(g, &m, band);
             if (at >= 0) {
                 FX_CHECK_MSG(0,
                              "case %d shading %d viewport %d %d %dx%d band %d,%d-%d,%d: pixel (%d, "
@@ -301,10 +308,7 @@ FX_TEST(render3d_band_skips_at_the_viewport_corner)
         for (int mode = 0; mode < 2; mode++) {
             g->r.polymode = mode ? FX3D_FILL : FX3D_WIRE;
             g->r.ctx.color = 0xFFFF00u;
-            draw(g, &m, fx_surface_rect(&g->s));
-            memcpy(g->ref, g->px, sizeof g->ref);
-            draw(g, &m, band);
-            int at = band_diff(g, band);
+            int at = band_mismatch(g, &m, band);
             if (at >= 0) {
                 FX_CHECK_MSG(0,
                              "case %d mode %d viewport at %d %d band %d,%d-%d,%d: pixel (%d, %d) "
