@@ -93,6 +93,11 @@ extern const struct peer peer_fixel, peer_fixel_api, peer_fixel_mt, peer_libc, p
 extern const struct peer peer_cairo, peer_pixman, peer_sdl2, peer_sdlgfx;
 #endif
 
+/* w3classes.c, fixel-bench --w3-classes: W3 split by slope class, each
+ * class timed for peers[0] (fixel) and the others, interleaved, with the
+ * steep lines' store floor; the formats in the mask fmts. */
+int w3_classes(FILE *o, const struct peer *const *peers, int npeers, uint8_t *buf, int rounds, unsigned fmts);
+
 /* Draws the full workload w onto t (black beforehand) by the literal
  * definitions of docs/BENCHMARK.md; returns 0 when w has no such reference. */
 int reference_draw(const struct target *t, int w);

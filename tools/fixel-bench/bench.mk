@@ -50,10 +50,13 @@ bench-peers:
 
 bench-peers-nodeps: $(BUILD)/bin/fixel-bench
 	$(BUILD)/bin/fixel-bench --peers -o $(BUILD)/bench-peers.txt
+	$(BUILD)/bin/fixel-bench --w3-classes --peers -t 9 -o $(BUILD)/bench-w3-classes.txt
 
 TEST_SUITES += "$(BUILD)/bin/fixel-bench --check"
 # the frames table (TABLE 8) runs, with its 2-thread column past 2 threads
 TEST_SUITES += "sh tools/fixel-bench/frames-check.sh $(BUILD)/bin $(BUILD)/frames-check"
+# W3 split by line class (--w3-classes): every line in one class, the floor row
+TEST_SUITES += "sh tools/fixel-bench/w3classes-check.sh $(BUILD)/bin $(BUILD)/w3classes-check"
 
 
 .PHONY: bench bench-peers bench-peers-nodeps

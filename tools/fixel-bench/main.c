@@ -226,7 +226,7 @@ static const struct peer *PEERS[] = {
 /* ---- options -------------------------------------------------------------- */
 
 static double opt_F = 1.0, opt_S = 0.25, opt_m = 0.2, opt_cal = 0.020;
-static int opt_huge, opt_t = 7, opt_peers, opt_check, opt_quiet, opt_x, opt_noextras, opt_frames, opt_j, opt_t_given;
+static int opt_w3c, opt_huge, opt_t = 7, opt_peers, opt_check, opt_quiet, opt_x, opt_noextras, opt_frames, opt_j, opt_t_given;
 static const char *opt_w, *opt_p, *opt_f, *opt_md;
 
 static int listed(const char *list, const char *name)
@@ -799,6 +799,7 @@ static void usage_to(FILE *f, int status)
             "usage: fixel-bench [--peers] [--check] [-w W2,W3..] [-p fixel,cairo..] [-f xrgb8888|rgb565]\n"
             "                   [-t trials] [-m min_trial_s] [-F full_limit_s] [-S prefix_target_s]\n"
             "                   [-o table.txt] [-q] [-x] [--no-extras] [--hugepages]\n"
+            "       fixel-bench --w3-classes [--peers] [-p ..] [-f ..] [-t rounds] [-o table.txt] [--hugepages]\n"
             "       fixel-bench --frames [-j N] [-t frames] [-w part,..] [-o table.txt]\n"
             "  --frames: ms per frame of the demo pages, 3D and ray-traced scripts and kiosk configs at\n"
             "  800x480 and 1920x1080, XRGB8888 and RGB565, on 1, 2 (when N > 2) and N threads (-j;\n"
@@ -810,6 +811,8 @@ static void usage_to(FILE *f, int status)
             "  -w present,teapot,deepzoom,idle picks parts of it; TABLE 5 (raytrace) likewise;\n"
             "  TABLE 6 (visible-surface methods at two scene sizes) runs with it, or alone with -w vsd;\n"
             "  TABLE 7 (fractals of issue #23) likewise, alone with -w fractal\n"
+            "  --w3-classes: W3's lines split into steep, mid (1-3 pixels a row) and shallow (4+), ns per\n"
+            "  pixel for each peer and a plain store loop on the steep ones (the floor), -t rounds interleaved\n"
             "  --hugepages: the destination and W10 sources in 2 MB pages (madvise), the TLB experiment\n"
             "  --check: verify nominal counts, checksums and W9 agreement only, then exit\n");
     exit(status);
@@ -855,6 +858,8 @@ int main(int argc, char **argv)
             opt_check = 1;
         else if (!strcmp(a, "--hugepages"))
             opt_huge = 1;
+        else if (!strcmp(a, "--w3-classes"))
+            opt_w3c = 1;
         else if (!strcmp(a, "-x"))
             opt_x = 1;
         else if (!strcmp(a, "-q"))
@@ -933,6 +938,26 @@ int main(int argc, char **argv)
         }
     } else {
         BUF = xalloc64(BUFSZ);
+    }
+    if (opt_w3c) { /* its own table; fixel first, the ratios are against it */
+        const struct peer *list[NPEERS];
+        int np = 0;
+        unsigned fmts = 0;
+        for (int i = 0; i < NPEERS; i++)
+            if (PEERS[i]->fn[W3_LINES] && (i == 0 || peer_enabled(PEERS[i])))
+                list[np++] = PEERS[i];
+        for (int f = 0; f < FMT_COUNT; f++)
+            if (!opt_f || listed(opt_f, FMT_NAME[f]))
+                fmts |= 1u << f;
+        FILE *o = opt_md ? fopen(opt_md, "w") : stdout;
+        if (!o) {
+            fprintf(stderr, "fixel-bench: %s: %s\n", opt_md, strerror(errno));
+            return 2;
+        }
+        int bad = w3_classes(o, list, np, BUF, opt_t, fmts);
+        if (o != stdout)
+            fclose(o);
+        return bad;
     }
     compute_nominal();
     verify();
