@@ -8,8 +8,9 @@
  * ratio is the classes' ratios weighted by their time, so this says which
  * class holds it back and whether that class is at the machine's store
  * floor: "floor" is a plain C loop storing the same pixels of the steep
- * lines (the DDA with nothing else; no library), the least any library
- * can pay for them here (docs/PERFORMANCE.md). */
+ * and the mid lines, one store a pixel (the DDA with nothing else; no
+ * library): what a per-pixel writer pays for them here
+ * (docs/PERFORMANCE.md). */
 #include "bench.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -77,6 +78,33 @@ static void floor_steep(const struct target *t, const struct workloads *w, int n
     }
 }
 
+/* The mid lines' pixels likewise: x-major, the row moves on the carry. */
+static void floor_mid(const struct target *t, const struct workloads *w, int n)
+{
+    for (int i = 0; i < n; i++) {
+        const struct wl_line *l = &w->lines[i];
+        int x0 = l->x0, y0 = l->y0, x1 = l->x1, y1 = l->y1;
+        if (x1 < x0) {
+            int s = x0; x0 = x1; x1 = s;
+            s = y0; y0 = y1; y1 = s;
+        }
+        unsigned dx = (unsigned)(x1 - x0), ady = (unsigned)abs(y1 - y0);
+        long st = y1 < y0 ? -(long)t->stride : (long)t->stride;
+        uint32_t S = (uint32_t)((((uint64_t)ady << 32) + dx - 1) / dx), f = 1u << 31;
+        uint8_t *row = t->pixels + (size_t)y0 * (size_t)t->stride;
+        for (unsigned j = 0; j <= dx; j++) {
+            if (t->fmt == FMT_XRGB8888)
+                ((uint32_t *)(void *)row)[x0 + (int)j] = l->c;
+            else
+                ((uint16_t *)(void *)row)[x0 + (int)j] = (uint16_t)l->c;
+            uint32_t g = f + S;
+            if (g < f && j < dx)
+                row += st;
+            f = g;
+        }
+    }
+}
+
 int w3_classes(FILE *o, const struct peer *const *peers, int npeers, uint8_t *buf, int rounds, unsigned fmts)
 {
     static struct workloads cls[C_COUNT];
@@ -118,9 +146,9 @@ int w3_classes(FILE *o, const struct peer *const *peers, int npeers, uint8_t *bu
                     T(k, p, r) = secs() - t0;
                     WL = all;
                 }
-                if (k == C_STEEP) {
+                if (k != C_SHALLOW) {
                     double t0 = secs();
-                    floor_steep(&tg, &cls[k], n[k]);
+                    (k == C_STEEP ? floor_steep : floor_mid)(&tg, &cls[k], n[k]);
                     T(k, npeers, r) = secs() - t0;
                 }
             }
@@ -136,7 +164,7 @@ int w3_classes(FILE *o, const struct peer *const *peers, int npeers, uint8_t *bu
         for (int k = 0; k < C_COUNT; k++) {
             fprintf(o, "%-22s %7d %5.1f%%", CLASS_NAME[k], n[k], 100.0 * (double)px[k] / (double)total);
             for (int p = 0; p <= npeers; p++) {
-                if (p < npeers ? !ctx[p] : k != C_STEEP) {
+                if (p < npeers ? !ctx[p] : k == C_SHALLOW) {
                     if (p == npeers)
                         fprintf(o, " %21s", "-");
                     continue;
@@ -175,8 +203,8 @@ int w3_classes(FILE *o, const struct peer *const *peers, int npeers, uint8_t *bu
         if (fx > 0 && pb > 0)
             fprintf(o, "; the sum of the classes: %.2f x the best peer", pb / fx);
         if (fx > 0 && pb > 0 && med[C_STEEP][npeers] > 0)
-            fprintf(o, "; with fixel's steep lines at the floor: %.2f x",
-                    pb / (fx - med[C_STEEP][0] + med[C_STEEP][npeers]));
+            fprintf(o, "; with fixel's steep and mid lines at the floor: %.2f x",
+                    pb / (fx - med[C_STEEP][0] - med[C_MID][0] + med[C_STEEP][npeers] + med[C_MID][npeers]));
         fprintf(o, "\n\n");
     }
 #undef T
