@@ -61,6 +61,23 @@ int fx_par_bands(const fx_ctx *c, int nbands, int nthreads, fx_par_draw_fn draw,
     return fx_posix_workers(bands_worker, &j, nthreads < j.nbands ? nthreads : j.nbands);
 }
 
+static void *no_job(void *arg)
+{
+    (void)arg;
+    return 0;
+}
+
+int fx_par_start(int nthreads)
+{
+    if (nthreads < 1 || nthreads > 64)
+        return -FX_EINVAL;
+    fx_posix_batch b;
+    (void)fx_posix_pool_start(&b, no_job, 0, nthreads - 1); /* the count says it */
+    int n = b.n + 1;
+    fx_posix_pool_wait(&b);
+    return n;
+}
+
 /* ---- scene scripts ---- */
 
 typedef struct scene_job scene_job;

@@ -203,6 +203,32 @@ FX_TEST(par_threads_are_kept_and_reused_between_calls)
     fx_memfb_destroy(&f.fb);
 }
 
+/* fx_par_start starts the threads a call will take, so the calls after it
+ * start none: every band drawn exactly once over many calls, the pool no
+ * bigger than after the start, and a repeated start grows nothing. */
+FX_TEST(par_start_starts_the_threads_ahead)
+{
+    probe_fixture f;
+    pool_probe p;
+    FX_CHECK_EQ(probe_setup(&f), 0);
+    FX_CHECK_EQ(fx_par_start(0), -FX_EINVAL);
+    FX_CHECK_EQ(fx_par_start(65), -FX_EINVAL);
+    int size = fx_posix_pool_size(); /* all idle: no call runs now */
+    FX_CHECK_EQ(fx_par_start(1), 1);
+    FX_CHECK_EQ(fx_posix_pool_size(), size); /* the caller's thread only */
+    /* more than the pool holds: the idle ones and two new ones */
+    int want = size + 3 > 64 ? 64 : size + 3;
+    FX_CHECK_EQ(fx_par_start(want), want);
+    FX_CHECK_EQ(fx_posix_pool_size(), want - 1 > size ? want - 1 : size);
+    size = fx_posix_pool_size();
+    for (int round = 0; round < 50; round++) {
+        FX_CHECK_EQ(fx_par_start(want), want);
+        FX_CHECK_EQ(probe_run(&f.c, &p, 4 * want > 64 ? 64 : 4 * want, want, 0), 0);
+    }
+    FX_CHECK_EQ(fx_posix_pool_size(), size);
+    fx_memfb_destroy(&f.fb);
+}
+
 typedef struct probe_caller {
     const fx_ctx *c;
     int bad;

@@ -16,9 +16,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <malloc.h>
-#include <pthread.h>
 #include <signal.h>
-#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -841,106 +839,6 @@ static void draw_frame(void *user, fx_ctx *c, int band)
     }
 }
 
-/* --threads' workers, started once and woken per frame: a thread started
- * for each frame (fx_par_bands) starts behind the tasks already running on
- * a busy core and often came in after a 5 ms frame was done. The job lives
- * here, not on render()'s stack: a worker that wakes late finds every band
- * taken (next >= nbands) and touches nothing; render() returns once every
- * band is drawn (done == nbands), so no band is drawn from a frame that
- * has ended. Bands and clips as fx_par_bands cuts them (fixel/par.h). */
-typedef struct kpool {
-    pthread_mutex_t m;
-    pthread_cond_t go, fin;
-    unsigned gen;  /* frames posted; workers wait for it to change */
-    int quit, n;   /* n: workers started */
-    fx_ctx c;
-    kframe f;
-    uint8_t draw[KIOSK_MAX_WIDGETS];
-    int nbands;    /* set once, before any worker starts */
-    atomic_int next, done;
-    pthread_t t[64];
-} kpool;
-
-static kpool pool = {.m = PTHREAD_MUTEX_INITIALIZER, .go = PTHREAD_COND_INITIALIZER, .fin = PTHREAD_COND_INITIALIZER};
-
-static void pool_bands(kpool *p)
-{
-    for (;;) {
-        int b = atomic_fetch_add(&p->next, 1);
-        if (b >= p->nbands) return;
-        fx_ctx c = p->c;
-        int64_t h = (int64_t)p->c.clip.y1 - p->c.clip.y0;
-        c.clip.y0 = (int32_t)(p->c.clip.y0 + h * b / p->nbands);
-        c.clip.y1 = (int32_t)(p->c.clip.y0 + h * (b + 1) / p->nbands);
-        if (!fx_rect_empty(c.clip)) draw_frame(&p->f, &c, b);
-        if (atomic_fetch_add(&p->done, 1) + 1 == p->nbands) {
-            pthread_mutex_lock(&p->m);
-            pthread_cond_signal(&p->fin);
-            pthread_mutex_unlock(&p->m);
-        }
-    }
-}
-
-static void *pool_worker(void *arg)
-{
-    kpool *p = arg;
-    pthread_mutex_lock(&p->m);
-    unsigned seen = p->gen;
-    for (;;) {
-        while (!p->quit && p->gen == seen) pthread_cond_wait(&p->go, &p->m);
-        if (p->quit) break;
-        seen = p->gen;
-        pthread_mutex_unlock(&p->m);
-        pool_bands(p);
-        pthread_mutex_lock(&p->m);
-    }
-    pthread_mutex_unlock(&p->m);
-    return NULL;
-}
-
-/* Start up to nthreads - 1 workers, each frame cut into 4 * nthreads bands
- * (widgets cost unevenly: a heat map, an image; each thread takes the next
- * band as it finishes). Returns how many threads draw, the caller's too:
- * fewer when a thread cannot be started. After fx_app_open: the workers
- * inherit its blocked signals, which only the main loop's signalfd reads. */
-static int pool_start(int nthreads)
-{
-    pool.nbands = 4 * nthreads;
-    while (pool.n < nthreads - 1 && pool.n < 63 && pthread_create(&pool.t[pool.n], NULL, pool_worker, &pool) == 0)
-        pool.n++;
-    return pool.n + 1;
-}
-
-static void pool_stop(void)
-{
-    pthread_mutex_lock(&pool.m);
-    pool.quit = 1;
-    pthread_cond_broadcast(&pool.go);
-    pthread_mutex_unlock(&pool.m);
-    for (int i = 0; i < pool.n; i++) pthread_join(pool.t[i], NULL);
-    pool.n = 0;
-}
-
-/* Draw f through c in nbands bands on the pool and this thread. */
-static void pool_draw(const fx_ctx *c, const kframe *f)
-{
-    kpool *p = &pool;
-    p->c = *c;
-    p->f = *f;
-    memcpy(p->draw, f->draw, sizeof p->draw);
-    p->f.draw = p->draw;
-    atomic_store(&p->done, 0);
-    atomic_store(&p->next, 0); /* after the job: a band claimed from here on sees it */
-    pthread_mutex_lock(&p->m);
-    p->gen++;
-    pthread_cond_broadcast(&p->go);
-    pthread_mutex_unlock(&p->m);
-    pool_bands(p);
-    pthread_mutex_lock(&p->m);
-    while (atomic_load(&p->done) < p->nbands) pthread_cond_wait(&p->fin, &p->m);
-    pthread_mutex_unlock(&p->m);
-}
-
 /* Draw what changed on screen si and present exactly those rectangles. */
 static void render(kiosk *k, int si)
 {
@@ -997,7 +895,13 @@ static void render(kiosk *k, int si)
             }
             c.clip = fx_rect_intersect(b, c.clip);
         }
-        pool_draw(&c, &fr);
+        /* 4 bands a thread: widgets cost unevenly (a heat map, an image)
+         * and each thread takes the next band as it finishes. The threads
+         * are the library's kept pool (started by fx_par_start); the call
+         * returns once they are all back from their bands, so none draws
+         * after the frame, and a thread that cannot be had leaves its bands
+         * to the others (every band is drawn: the result is not needed) */
+        (void)fx_par_bands(&c, 4 * k->threads, k->threads, draw_frame, &fr);
     } else
         draw_frame(&fr, &c, 0);
     if (sc->d) {
@@ -1800,7 +1704,11 @@ int main(int argc, char **argv)
         if (w < 0 && w != -FX_ENODEV) return 1;
     }
     if (fx_app_open(&k->app, &o) < 0) return 1;
-    if (k->threads > 1) k->threads = pool_start(k->threads);
+    /* the extra threads started now, not in the first frame; fewer when
+     * some cannot be (k->threads then says how many draw). They block the
+     * asynchronous signals themselves (boards/posix/workers.c), so those
+     * stay with the main loop's signalfd, and headless with this thread */
+    if (k->threads > 1) k->threads = fx_par_start(k->threads);
     if (k->headless) {
         /* fx_app_open blocks SIGINT/SIGTERM/SIGHUP for its signalfd, which
          * only the main loop reads: the headless loop never does, so Ctrl-C
@@ -1940,7 +1848,6 @@ int main(int argc, char **argv)
         kmq_stop(k->mq);
     }
     fx_app_close(k->app);
-    pool_stop();
     free_images(k);
     if (k->fd > 0) close(k->fd);
     return rc;

@@ -42,6 +42,16 @@ typedef void (*fx_par_draw_fn)(void *user, fx_ctx *c, int band);
  * start draw every band). */
 int fx_par_bands(const fx_ctx *c, int nbands, int nthreads, fx_par_draw_fn draw, void *user);
 
+/* Start ahead the threads a call on nthreads threads (1..64) takes from
+ * the kept pool (docs/ARCHITECTURE.md "The threads"), so that its first
+ * call does not pay for starting them: a program drawing short frames on
+ * N threads calls it once at start-up. Returns how many threads such a
+ * call has now, the caller's included (1..nthreads): fewer when threads
+ * cannot be started (or other calls hold them at this moment); -FX_EINVAL.
+ * Nothing to stop: the pool's threads wait idle between calls and are
+ * stopped at exit. */
+int fx_par_start(int nthreads);
+
 /* Run a whole script as fx_scene_run does, on nthreads threads (1..64) in
  * nthreads bands (as many as threads could be started), with the same
  * pixels. The bands are equal the first time; the same script run again at
