@@ -93,6 +93,10 @@ extern const struct peer peer_fixel, peer_fixel_api, peer_fixel_mt, peer_libc, p
 extern const struct peer peer_cairo, peer_pixman, peer_sdl2, peer_sdlgfx;
 #endif
 
+/* timing.c: the monotonic clock in seconds, and qsort's order for doubles. */
+double bench_secs(void);
+int bench_cmp_double(const void *a, const void *b);
+
 /* w3classes.c, fixel-bench --w3-classes: W3 split by slope class, each
  * class timed for peers[0] (fixel) and the others, interleaved, with the
  * steep lines' store floor; the formats in the mask fmts. */

@@ -66,19 +66,6 @@ struct xjob {
     int reps; /* reps per trial, from calibration */
 };
 
-static double xnow(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
-
-static int cmpd(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
 static struct xrow *new_row(const char *unit, double bytes, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 static struct xrow *new_row(const char *unit, double bytes, const char *fmt, ...)
@@ -101,25 +88,25 @@ static void run_jobs(struct xjob *j, int n, int trials, double min_s, int quiet)
 {
     for (int i = 0; i < n; i++) {
         /* calibration doubles as the warm-up: trials come after it */
-        double t0 = xnow();
+        double t0 = bench_secs();
         int k = 0;
         do j[i].fn(j[i].arg, ++k);
-        while (xnow() - t0 < min_s / 4);
-        double per = (xnow() - t0) / k;
+        while (bench_secs() - t0 < min_s / 4);
+        double per = (bench_secs() - t0) / k;
         j[i].reps = per > 0 ? (int)(min_s / per) + 1 : 1;
     }
     for (int t = 0; t < trials; t++) {
         for (int q = 0; q < n; q++) {
             struct xjob *x = &j[(q + t) % n];
-            double t0 = xnow();
+            double t0 = bench_secs();
             for (int k = 0; k < x->reps; k++) x->fn(x->arg, k);
-            x->row->vals[x->row->nv++] = (xnow() - t0) / x->reps;
+            x->row->vals[x->row->nv++] = (bench_secs() - t0) / x->reps;
         }
         if (!quiet) fprintf(stderr, ".");
     }
     for (int i = 0; i < n; i++) {
         struct xrow *r = j[i].row;
-        qsort(r->vals, (size_t)r->nv, sizeof r->vals[0], cmpd);
+        qsort(r->vals, (size_t)r->nv, sizeof r->vals[0], bench_cmp_double);
         r->med = r->nv & 1 ? r->vals[r->nv / 2] : (r->vals[r->nv / 2 - 1] + r->vals[r->nv / 2]) / 2;
         r->spread = r->med > 0 ? (r->vals[r->nv - 1] - r->vals[0]) / r->med : 0;
     }
@@ -395,9 +382,9 @@ static void idle_group(void)
     fx_app_set_callbacks(a, &cb, a);
     struct rusage u0, u1;
     getrusage(RUSAGE_SELF, &u0);
-    double t0 = xnow();
+    double t0 = bench_secs();
     fx_app_main_loop(a);
-    double wall = xnow() - t0;
+    double wall = bench_secs() - t0;
     getrusage(RUSAGE_SELF, &u1);
     fx_app_close(a);
     double cpu = (double)(u1.ru_utime.tv_sec - u0.ru_utime.tv_sec) +

@@ -33,19 +33,6 @@ static const char *const row_name[NROWS] = {
 static double med_ms[NROWS];
 static int fractal_ran;
 
-static double fnow(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
-
-static int cmpd(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
 typedef struct fb {
     uint32_t *px;
     fx_surface s;
@@ -135,15 +122,15 @@ void fractal_bench_run(int trials, double min_s, int quiet)
         for (int k = 0; k < trials; k++) {
             /* at least min_s per trial: repeat the call, report per call */
             int reps = 0;
-            double t0 = fnow(), t1;
+            double t0 = bench_secs(), t1;
             do {
                 one(b, r);
                 reps++;
-                t1 = fnow();
+                t1 = bench_secs();
             } while (t1 - t0 < min_s / 10);
             ts[k] = (t1 - t0) * 1e3 / reps;
         }
-        qsort(ts, (size_t)trials, sizeof *ts, cmpd);
+        qsort(ts, (size_t)trials, sizeof *ts, bench_cmp_double);
         med_ms[r] = ts[trials / 2];
         free(ts);
         if (!quiet)

@@ -24,6 +24,7 @@
 #include "fixel/memfb.h"
 #include "fixel/par.h"
 #include "fixel/scene.h"
+#include "bench.h"
 #include "frames.h"
 
 extern char **environ;
@@ -49,15 +50,9 @@ static double process_cpu_ms(void)
     return (double)t.tv_sec * 1e3 + (double)t.tv_nsec / 1e6;
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
 static double median(double *v, int n)
 {
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    qsort(v, (size_t)n, sizeof *v, bench_cmp_double);
     return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 

@@ -260,18 +260,11 @@ static int peer_enabled(const struct peer *p)
 
 /* ---- timing (section 4) --------------------------------------------------- */
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
 static double time_once(const struct peer *p, void *ctx, int w, int n)
 {
-    double t0 = now();
+    double t0 = bench_secs();
     p->fn[w](ctx, n);
-    return now() - t0;
+    return bench_secs() - t0;
 }
 
 struct cell {
@@ -332,11 +325,11 @@ static void calibrate(const struct peer *p, void *ctx, int w, struct cell *c)
 static void trial(const struct peer *p, void *ctx, int w, struct cell *c)
 {
     long reps = 0;
-    double t0 = now(), t;
+    double t0 = bench_secs(), t;
     do {
         p->fn[w](ctx, c->n);
         reps++;
-        t = now() - t0;
+        t = bench_secs() - t0;
     } while (t < opt_m);
     c->ops[c->trials] = (double)reps * c->n / t;
     c->mpix[c->trials] = (double)reps * (double)cum[w][c->n] / t / 1e6;

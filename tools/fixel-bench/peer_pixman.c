@@ -88,12 +88,6 @@ static void px_w8(void *ctx, int n)
     }
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* Even-odd polygon -> trapezoids: cut at every vertex y and at every edge
  * crossing, so that inside each band the edges keep their order; then pair
  * the edges sorted by x in the middle of the band. */
@@ -122,7 +116,7 @@ static int tessellate(const struct wl_poly *p, pixman_trapezoid_t *out)
             if (u > 0 && u < 1 && v > 0 && v < 1)
                 cuts[nc++] = ey0[i] + u * ay;
         }
-    qsort(cuts, (size_t)nc, sizeof cuts[0], cmp_double);
+    qsort(cuts, (size_t)nc, sizeof cuts[0], bench_cmp_double);
     for (int b = 0; b + 1 < nc; b++) {
         double top = cuts[b], bot = cuts[b + 1];
         if (bot - top < 1e-9)

@@ -34,13 +34,6 @@ struct rtrow {
 static struct rtrow RT[4];
 static int NRT, NTHREADS;
 
-static double secs(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + t.tv_nsec * 1e-9;
-}
-
 void raytrace_run(int quiet)
 {
     NTHREADS = fx_rt_cpu_count();
@@ -63,18 +56,18 @@ void raytrace_run(int quiet)
             continue;
         if (!quiet)
             fprintf(stderr, "\rfixel-bench: raytrace %-8s", r->name);
-        double t0 = secs();
+        double t0 = bench_secs();
         fx_rt_render(&s, &sa, 0, 0, RW, RH);
-        r->t1 = secs() - t0;
-        t0 = secs();
+        r->t1 = bench_secs() - t0;
+        t0 = bench_secs();
         fx_rt_render_mt(&s, &sb, NTHREADS, 4, 0, 0);
-        r->tn = secs() - t0;
+        r->tn = bench_secs() - t0;
         r->same_mt = !memcmp(a, b, (size_t)RW * RH * 4);
-        t0 = secs();
+        t0 = bench_secs();
         for (int y = 0; y < RH; y++)
             for (int x = 0; x < RW; x++)
                 b[y * RW + x] = rtref_pixel(&s, RW, RH, x, y, &r->rays);
-        r->tref = secs() - t0;
+        r->tref = bench_secs() - t0;
         for (int i = 0; i < RW * RH; i++) {
             uint32_t p = a[i] & 0xFFFFFF, q = b[i] & 0xFFFFFF;
             int d = 0;

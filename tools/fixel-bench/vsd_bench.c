@@ -36,19 +36,6 @@ static double oct_ms[2];
 static int32_t oct_nodes[2];
 static int vsd_ran;
 
-static double vnow(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
-
-static int cmpd(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
 static int frame(const fx_vsd_scene *s, int m, int32_t *ids, void *work, size_t bytes,
                  const fx_surface *surf, int32_t *edges)
 {
@@ -89,12 +76,12 @@ void vsd_bench_run(int trials, double min_s, int quiet)
             if (m != FX_VSD_ABUFFER)
                 for (int32_t i = 0; i < VW * VH; i++)
                     differ[m][z] += ids[i] != ref[i];
-            double t0 = vnow();
+            double t0 = bench_secs();
             int k = 0;
             do
                 frame(&sc->s, m, ids, work[m], bytes[m], &surf, &edges), k++;
-            while (vnow() - t0 < min_s / 4);
-            double per = (vnow() - t0) / k;
+            while (bench_secs() - t0 < min_s / 4);
+            double per = (bench_secs() - t0) / k;
             reps[m] = per > 0 ? (int)(min_s / per) + 1 : 1;
         }
         int nt = trials > 64 ? 64 : trials;
@@ -102,16 +89,16 @@ void vsd_bench_run(int trials, double min_s, int quiet)
             for (int q = 0; q < FX_VSD_METHODS; q++) {
                 int m = (q + t) % FX_VSD_METHODS;
                 int32_t edges;
-                double t0 = vnow();
+                double t0 = bench_secs();
                 for (int k = 0; k < reps[m]; k++)
                     frame(&sc->s, m, ids, work[m], bytes[m], &surf, &edges);
-                vals[m][t] = (vnow() - t0) / reps[m];
+                vals[m][t] = (bench_secs() - t0) / reps[m];
             }
             if (!quiet)
                 fprintf(stderr, ".");
         }
         for (int m = 0; m < FX_VSD_METHODS; m++) {
-            qsort(vals[m], (size_t)nt, sizeof vals[m][0], cmpd);
+            qsort(vals[m], (size_t)nt, sizeof vals[m][0], bench_cmp_double);
             med_ms[m][z] = 1e3 * (nt & 1 ? vals[m][nt / 2] : (vals[m][nt / 2 - 1] + vals[m][nt / 2]) / 2);
             free(work[m]);
         }
@@ -128,21 +115,21 @@ void vsd_bench_run(int trials, double min_s, int quiet)
         if (fx_vsd_octree_build(&o, nodes, cap, vox, k) < 0)
             abort();
         oct_nodes[z] = o.nnode;
-        double t0 = vnow();
+        double t0 = bench_secs();
         int reps = 0;
         do
             fx_vsd_octree_render(&o, sc, ids, 256, 256), reps++;
-        while (vnow() - t0 < min_s / 4);
-        reps = (int)(min_s / ((vnow() - t0) / reps)) + 1;
+        while (bench_secs() - t0 < min_s / 4);
+        reps = (int)(min_s / ((bench_secs() - t0) / reps)) + 1;
         double vals[64];
         int nt = trials > 64 ? 64 : trials;
         for (int t = 0; t < nt; t++) {
-            t0 = vnow();
+            t0 = bench_secs();
             for (int r = 0; r < reps; r++)
                 fx_vsd_octree_render(&o, sc, ids, 256, 256);
-            vals[t] = (vnow() - t0) / reps;
+            vals[t] = (bench_secs() - t0) / reps;
         }
-        qsort(vals, (size_t)nt, sizeof vals[0], cmpd);
+        qsort(vals, (size_t)nt, sizeof vals[0], bench_cmp_double);
         oct_ms[z] = 1e3 * (nt & 1 ? vals[nt / 2] : (vals[nt / 2 - 1] + vals[nt / 2]) / 2);
         free(vox);
         free(nodes);

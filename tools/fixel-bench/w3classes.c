@@ -30,19 +30,6 @@ static int class_of(const struct wl_line *l)
     return dy == 0 || dx / dy >= 4 ? C_SHALLOW : C_MID;
 }
 
-static double secs(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* The steep lines' pixels by the same exact DDA as fixel's walk (ties
  * and all: the same cache lines in the same order), stored from a plain
  * loop: the store floor, not a library. */
@@ -141,15 +128,15 @@ int w3_classes(FILE *o, const struct peer *const *peers, int npeers, uint8_t *bu
                     if (!ctx[p])
                         continue;
                     WL = &cls[k];
-                    double t0 = secs();
+                    double t0 = bench_secs();
                     peers[p]->fn[W3_LINES](ctx[p], n[k]);
-                    T(k, p, r) = secs() - t0;
+                    T(k, p, r) = bench_secs() - t0;
                     WL = all;
                 }
                 if (k != C_SHALLOW) {
-                    double t0 = secs();
+                    double t0 = bench_secs();
                     (k == C_STEEP ? floor_steep : floor_mid)(&tg, &cls[k], n[k]);
-                    T(k, npeers, r) = secs() - t0;
+                    T(k, npeers, r) = bench_secs() - t0;
                 }
             }
         for (int p = 0; p < npeers; p++)
@@ -169,7 +156,7 @@ int w3_classes(FILE *o, const struct peer *const *peers, int npeers, uint8_t *bu
                         fprintf(o, " %21s", "-");
                     continue;
                 }
-                qsort(&T(k, p, 0), (size_t)rounds, sizeof(double), cmp_double);
+                qsort(&T(k, p, 0), (size_t)rounds, sizeof(double), bench_cmp_double);
                 double s = 1e9 / (double)px[k];
                 med[k][p] = T(k, p, rounds / 2);
                 fprintf(o, "   %5.2f [%5.2f-%5.2f]", med[k][p] * s, T(k, p, 0) * s, T(k, p, rounds - 1) * s);
