@@ -52,18 +52,20 @@ for arch in arm64 armhf armel; do
     if [ $arch = armel ]; then
         # bookworm-security has no armel: once the host's zlib1g, libpng16-16
         # or linux-libc-dev has a security update, the armel packages
-        # (bookworm main, older) cannot be co-installed. Asking apt first
-        # (no download) tells that case from a real failure; the sysroot
+        # (bookworm main, older) cannot be co-installed. apt's simulation
+        # (no download) tells that case from a failed download; the sysroot
         # serves either way.
-        if $APT -s install $need >/dev/null 2>&1 && $APT install $need >/dev/null 2>&1; then
-            echo "tests/arm/deps.sh: installed$need"
-        elif { [ -f build/sysroot-armel/.fixel-sysroot ] ||
-               echo "tests/arm/deps.sh: the armel packages do not install beside the host's (no armel in bookworm-security); unpacking them into build/sysroot-armel"
-             } && sh tests/arm/sysroot-armel.sh; then
-            : # made, or already there
+        if $APT -s install $need >/dev/null 2>&1; then
+            if $APT install $need >/dev/null 2>&1; then
+                echo "tests/arm/deps.sh: installed$need"; continue
+            fi
+            why="could not install the armel libraries (mirror out of step?)"
         else
-            echo "tests/arm/deps.sh: no armel libraries (multiarch or sysroot, see above); test-arm runs rpi-zero without them"
+            why="the armel libraries do not install beside the host's packages (bookworm-security has no armel; multiarch needs equal versions)"
         fi
+        [ -f build/sysroot-armel/.fixel-sysroot ] || echo "tests/arm/deps.sh: $why; unpacking them into build/sysroot-armel"
+        sh tests/arm/sysroot-armel.sh ||
+            echo "tests/arm/deps.sh: no armel libraries (multiarch or sysroot, see above); test-arm runs rpi-zero without them"
         continue
     fi
     echo "tests/arm/deps.sh: installing$need"
