@@ -83,6 +83,15 @@ ifeq ($(STATIC),1)
   PKG_LIBS := $(shell $(PKG_CONFIG) --static --libs $(PKGS) 2>/dev/null)
 endif
 LDLIBS   := $(PKG_LIBS) -lpthread -lm
+# The libraries are chosen when make reads this file, so objects compiled
+# without them (before tests/arm/deps.sh unpacked rpi-zero's armel sysroot or
+# installed a board's -dev packages) must be rebuilt once they appear: the
+# stamp holds the choice and is rewritten only when it changes (as
+# tools/fixel-kiosk/kiosk.mk does). Only into an existing $(BUILD)/obj:
+# reading the Makefile must not create build/.
+LIBS_STAMP := $(BUILD)/obj/libs
+$(shell if [ -d '$(BUILD)/obj' ] && [ "$$(cat '$(LIBS_STAMP)' 2>/dev/null)" != '$(PKG_CFLAGS)' ]; then \
+	echo '$(PKG_CFLAGS)' > '$(LIBS_STAMP)'; fi)
 
 CORE_SRC   := $(sort $(wildcard kernel-free-src/*/*.c))
 # boards/: every .c of these folders; the folders that need libdrm, libevdev
@@ -153,10 +162,14 @@ $(BUILD)/obj/kernel-free-src/%.o: kernel-free-src/%.c
 	@$(if $(Q),echo "  CC      $<")
 	$(Q)$(CC) $(BASEFLAGS) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
-$(BUILD)/obj/%.o: %.c
+$(BUILD)/obj/%.o: %.c $(LIBS_STAMP)
 	@mkdir -p $(dir $@)
 	@$(if $(Q),echo "  CC      $<")
 	$(Q)$(CC) $(BASEFLAGS) -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 $(PKG_CFLAGS) -Itests -Itests/lib $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+
+$(LIBS_STAMP):
+	@mkdir -p $(@D)
+	@echo '$(PKG_CFLAGS)' > $@
 
 $(LIB_A): $(LIB_OBJ)
 	@mkdir -p $(dir $@)
@@ -196,7 +209,7 @@ $(BUILD)/fixel.pc: Makefile
 	  '$(abspath $(BUILD))' '$(VERSION)' '$(strip $(PKG_LIBS) -lpthread -lm)' '$(abspath kernel-free-src/include)' '$(abspath boards/include)' > $@
 
 # ---- tests ----
-$(BUILD)/tests/registry.c: $(TEST_SRC) tests/lib/gen-registry.sh
+$(BUILD)/tests/registry.c: $(TEST_SRC) tests/lib/gen-registry.sh $(LIBS_STAMP)
 	@mkdir -p $(dir $@)
 	sh tests/lib/gen-registry.sh $(TEST_SRC) > $@
 
@@ -295,9 +308,13 @@ DEB_ARCH_x86_64-linux-gnu    := amd64
 CROSS_DEB_ARCH := $(DEB_ARCH_$(CROSS_TRIPLET))
 CROSS_DEB_PKGS := gcc-$(CROSS_TRIPLET) libc6-dev-$(CROSS_DEB_ARCH)-cross \
   $(foreach p,libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev,$(p):$(CROSS_DEB_ARCH))
+# armel's multiarch packages no longer install beside an updated bookworm
+# host (no armel in bookworm-security): boards/rpi-zero.mk takes them from
+# the sysroot tests/arm/sysroot-armel.sh unpacks instead.
 cross-deps-check:
 	@sh tests/deps.sh --no-install --for "make BOARD=$(BOARD) (target $(or $(CROSS_DEB_ARCH),$(CROSS_TRIPLET)))" $(CROSS_DEB_PKGS) || \
-	  { echo "(or build the library alone: make BOARD=$(BOARD) lib)"; exit 1; }
+	  { $(if $(filter armel,$(CROSS_DEB_ARCH)),echo "(when apt cannot install the :armel packages: sh tests/arm/sysroot-armel.sh unpacks them into build/sysroot-armel, which make BOARD=$(BOARD) then uses)";) \
+	    echo "(or build the library alone: make BOARD=$(BOARD) lib)"; exit 1; }
 	@echo "make BOARD=$(BOARD): the target packages are installed, but PKG_CONFIG ($(PKG_CONFIG))"; \
 	 echo "  finds$(if $(HAVE_PNG),, no libpng/zlib)$(if $(HAVE_OPT),, no libdrm/libevdev/libgpiod) for $(CROSS_DEB_ARCH)"; exit 1
 ifneq ($(CROSS_DEB_ARCH),)

@@ -11,10 +11,12 @@ deps-arm:
 	sh tests/arm/deps.sh
 
 # What tests/arm/deps.sh installs, for `make test`'s package step. The armel
-# libraries are left to tests/arm/deps.sh (tried, not required): bookworm's
-# security suite has no armel, so once zlib1g or libpng16-16 has a security
-# update the armel ones cannot match it (multiarch needs equal versions), and
-# rpi-zero's suites run without them.
+# libraries are left to tests/arm/deps.sh, which test-arm runs as root:
+# bookworm's security suite has no armel, so once zlib1g, libpng16-16 or
+# linux-libc-dev has a security update the armel packages cannot match the
+# host's (multiarch needs equal versions); deps.sh then unpacks them into
+# build/sysroot-armel (tests/arm/sysroot-armel.sh), which boards/rpi-zero.mk
+# uses. Without either (no network), rpi-zero's suites run without them.
 TEST_DEB_PKGS += gcc-aarch64-linux-gnu gcc-arm-linux-gnueabihf gcc-arm-linux-gnueabi \
                  libc6-dev-arm64-cross libc6-dev-armhf-cross libc6-dev-armel-cross qemu-user-static \
                  $(foreach a,arm64 armhf,$(foreach p,libdrm-dev libevdev-dev libgpiod-dev libpng-dev zlib1g-dev,$(p):$(a)))

@@ -4,6 +4,7 @@
 # under qemu-user. An architecture whose toolchain, emulator or target
 # libraries are missing is skipped with the reason (tests/arm/deps.sh installs
 # them when run as root); one that builds must pass.
+# ARM_BOARDS="rpi-zero ..." runs only those boards (default: every one).
 P=0; F=0
 [ "$(id -u)" = 0 ] && sh tests/arm/deps.sh
 run_suite() { # label, command...
@@ -25,6 +26,7 @@ for spec in "rpi4 aarch64-linux-gnu- aarch64-linux-gnu qemu-aarch64-static -ffre
             "rpi-zero arm-linux-gnueabi- arm-linux-gnueabi qemu-arm-static_-cpu_arm1176 -ffreestanding_-mfloat-abi=soft_-march=armv6_-marm"; do
     set -- $spec
     board=$1; cross=$2; triplet=$3; qemu=$(echo "$4" | tr _ ' '); fsflags=$(echo "$5" | tr _ ' ')
+    case " ${ARM_BOARDS:-$board} " in *" $board "*) ;; *) continue ;; esac
     qbin=${qemu%% *}
     why=""
     command -v "${cross}gcc" >/dev/null 2>&1 || why="no ${cross}gcc"
@@ -41,7 +43,14 @@ for spec in "rpi4 aarch64-linux-gnu- aarch64-linux-gnu qemu-aarch64-static -ffre
     skipped=$(make --no-print-directory -s BOARD=$board STATIC=1 print-TEST_NEEDS_128 2>/dev/null)
     [ -n "$skipped" ] && echo "   (no __int128 on $triplet: not built here, run on 64-bit hosts: $skipped)"
     run_suite "$board unit" $qemu build/$board/static/tests/unit
-    if PKG_CONFIG_LIBDIR=/usr/lib/$triplet/pkgconfig pkg-config --exists libpng zlib; then
+    # The board profile's own pkg-config query (for rpi-zero the armel
+    # sysroot when the multiarch packages are absent: tests/arm/sysroot-armel.sh).
+    have_png=$(make --no-print-directory -s BOARD=$board STATIC=1 print-HAVE_PNG)
+    have_opt=$(make --no-print-directory -s BOARD=$board STATIC=1 print-HAVE_OPT)
+    [ "$have_opt" = 1 ] ||
+        echo "   (no libdrm/libevdev/libgpiod for $triplet: test_display, test_pointer and the tools not built;" \
+             "run tests/arm/deps.sh as root$([ $board = rpi-zero ] && echo ", or sh tests/arm/sysroot-armel.sh"))"
+    if [ "$have_png" = 1 ]; then
         run_suite "$board golden" $qemu build/$board/static/tests/golden --dir tests/golden --out build/$board/golden
     else
         # No target libpng: the target renders PPMs, the host compares them
