@@ -99,7 +99,7 @@ int bench_cmp_double(const void *a, const void *b);
 
 /* w3classes.c, fixel-bench --w3-classes: W3 split by slope class, each
  * class timed for peers[0] (fixel) and the others, interleaved, with the
- * steep lines' store floor; the formats in the mask fmts. */
+ * store floor of the steep and mid lines; the formats in the mask fmts. */
 int w3_classes(FILE *o, const struct peer *const *peers, int npeers, uint8_t *buf, int rounds, unsigned fmts);
 
 /* Draws the full workload w onto t (black beforehand) by the literal

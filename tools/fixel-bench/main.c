@@ -805,7 +805,7 @@ static void usage_to(FILE *f, int status)
             "  TABLE 6 (visible-surface methods at two scene sizes) runs with it, or alone with -w vsd;\n"
             "  TABLE 7 (fractals of issue #23) likewise, alone with -w fractal\n"
             "  --w3-classes: W3's lines split into steep, mid (1-3 pixels a row) and shallow (4+), ns per\n"
-            "  pixel for each peer and a plain store loop on the steep ones (the floor), -t rounds interleaved\n"
+            "  pixel for each peer and a plain store loop on the steep and mid ones (the floor), -t rounds interleaved\n"
             "  --hugepages: the destination and W10 sources in 2 MB pages (madvise), the TLB experiment\n"
             "  --check: verify nominal counts, checksums and W9 agreement only, then exit\n");
     exit(status);

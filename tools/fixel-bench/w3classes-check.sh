@@ -28,6 +28,9 @@ for f in xrgb8888 rgb565; do
     [ "$(grep '^shallow ' "$out/$f.txt" | grep -Ec '\] +- *$')" -eq 1 ] && ok ||
         bad "$f: the shallow row should show no floor: $(grep '^shallow' "$out/$f.txt")"
     grep -q '^all of W3 .*100000 100.0%' "$out/$f.txt" && ok || bad "$f: no whole-W3 line"
+    # the floor stores fixel's very pixels (a 45-degree line drawn flat once made it cheaper)
+    [ "$(grep -c '^floor of the \(steep\|mid\) lines: the same pixels as fixel.s$' "$out/$f.txt")" -eq 2 ] && ok ||
+        bad "$f: the floor's pixels are not fixel's: $(grep '^floor of' "$out/$f.txt")"
 done
 "$bin" --w3-classes -p fixel -t 3 -f rgb565 > "$out/565.txt" 2>&1
 grep -qx xrgb8888 "$out/565.txt" && bad "-f rgb565 printed xrgb8888" || ok
