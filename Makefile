@@ -89,9 +89,13 @@ LDLIBS   := $(PKG_LIBS) -lpthread -lm
 # stamp holds the choice and is rewritten only when it changes (as
 # tools/fixel-kiosk/kiosk.mk does). Only into an existing $(BUILD)/obj:
 # reading the Makefile must not create build/.
+# The text is taken here, once: the objects that add their own flags to
+# PKG_CFLAGS (fixel-bench's, fixel-info's, fixel-shot's) would otherwise
+# hand them to the stamp when one of them is the first built.
 LIBS_STAMP := $(BUILD)/obj/libs
-$(shell if [ -d '$(BUILD)/obj' ] && [ "$$(cat '$(LIBS_STAMP)' 2>/dev/null)" != '$(PKG_CFLAGS)' ]; then \
-	echo '$(PKG_CFLAGS)' > '$(LIBS_STAMP)'; fi)
+LIBS_STAMP_TEXT := $(PKG_CFLAGS)
+$(shell if [ -d '$(BUILD)/obj' ] && [ "$$(cat '$(LIBS_STAMP)' 2>/dev/null)" != '$(LIBS_STAMP_TEXT)' ]; then \
+	echo '$(LIBS_STAMP_TEXT)' > '$(LIBS_STAMP)'; fi)
 
 CORE_SRC   := $(sort $(wildcard kernel-free-src/*/*.c))
 # boards/: every .c of these folders; the folders that need libdrm, libevdev
@@ -169,7 +173,7 @@ $(BUILD)/obj/%.o: %.c $(LIBS_STAMP)
 
 $(LIBS_STAMP):
 	@mkdir -p $(@D)
-	@echo '$(PKG_CFLAGS)' > $@
+	@echo '$(LIBS_STAMP_TEXT)' > $@
 
 $(LIB_A): $(LIB_OBJ)
 	@mkdir -p $(dir $@)
