@@ -64,7 +64,10 @@ for arch in arm64 armhf armel; do
             why="the armel libraries do not install beside the host's packages (bookworm-security has no armel; multiarch needs equal versions)"
         fi
         [ -f build/sysroot-armel/.fixel-sysroot ] || echo "tests/arm/deps.sh: $why; unpacking them into build/sysroot-armel"
+        # the index may predate a point release that replaced the files:
+        # one fresh apt-get update and a second try
         sh tests/arm/sysroot-armel.sh ||
+            { $APT update >/dev/null 2>&1; sh tests/arm/sysroot-armel.sh; } ||
             echo "tests/arm/deps.sh: no armel libraries (multiarch or sysroot, see above); test-arm runs rpi-zero without them"
         continue
     fi

@@ -44,7 +44,8 @@ trap 'rm -rf "$tmp"' EXIT
 trap 'exit 1' INT TERM HUP
 mkdir "$tmp/debs" "$tmp/root"
 # apt drops to the _apt user to download: let it write there.
-[ "$(id -u)" = 0 ] && id _apt >/dev/null 2>&1 && chown _apt "$tmp/debs"
+# (mktemp -d is 0700: _apt must be able to pass through it too)
+[ "$(id -u)" = 0 ] && id _apt >/dev/null 2>&1 && chmod 755 "$tmp" && chown _apt "$tmp/debs"
 if ! (cd "$tmp/debs" && apt-get -q download $(printf '%s:armel ' $pkgs)) > "$tmp/download.log" 2>&1; then
     say "could not download the armel packages from the Debian archive:"
     grep -E '^E:' "$tmp/download.log" | head -n 2 | cut -c1-240 | sed 's/^/  /'
@@ -61,7 +62,8 @@ done
 (cd "$tmp/root" && find . -type l) | while read -r l; do
     t=$(readlink "$tmp/root/$l")
     case $t in
-    /*) up=$(dirname "${l#./}" | sed 's|[^/][^/]*|..|g')
+    /*) d=$(dirname "${l#./}")
+        if [ "$d" = . ]; then up=.; else up=$(echo "$d" | sed 's|[^/][^/]*|..|g'); fi
         ln -sfn "$up$t" "$tmp/root/$l" ;;
     esac
 done
