@@ -121,6 +121,7 @@ static const char picture[] =
 typedef struct pool_probe {
     pthread_t caller;
     atomic_int on_pool, sig_open, calls, inner_bad;
+    atomic_int per_band[64]; /* probe_run: each band drawn exactly once */
     int nested;
     int child; /* fork_band: the child's pid, -1 in the child (the caller's thread only) */
 } pool_probe;
@@ -137,8 +138,9 @@ static void count_band(void *u, fx_ctx *c, int band)
 static void probe_band(void *u, fx_ctx *c, int band)
 {
     pool_probe *p = u;
-    (void)band;
     atomic_fetch_add(&p->calls, 1);
+    if (band >= 0 && band < 64)
+        atomic_fetch_add(&p->per_band[band], 1);
     if (!pthread_equal(pthread_self(), p->caller)) {
         atomic_fetch_add(&p->on_pool, 1);
         sigset_t now;
@@ -171,8 +173,13 @@ static int probe_run(const fx_ctx *c, pool_probe *p, int nbands, int nthreads, i
     memset(p, 0, sizeof *p);
     p->caller = pthread_self();
     p->nested = nested;
-    return fx_par_bands(c, nbands, nthreads, probe_band, p) != 0 || atomic_load(&p->calls) != nbands ||
-           atomic_load(&p->sig_open) != 0 || atomic_load(&p->inner_bad) != 0;
+    if (fx_par_bands(c, nbands, nthreads, probe_band, p) != 0 || atomic_load(&p->calls) != nbands ||
+        atomic_load(&p->sig_open) != 0 || atomic_load(&p->inner_bad) != 0)
+        return 1;
+    for (int b = 0; b < nbands && b < 64; b++)
+        if (atomic_load(&p->per_band[b]) != 1)
+            return 1;
+    return 0;
 }
 
 typedef struct probe_fixture {
