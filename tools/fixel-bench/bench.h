@@ -60,6 +60,10 @@ struct workloads {
     void *blit_src[FMT_COUNT];
 };
 
+/* gen.c: each format's name (as -f and the tables spell it) and bytes a pixel. */
+extern const char *const FMT_NAME[FMT_COUNT];
+extern const int BPP[FMT_COUNT];
+
 /* Generated once before anything is timed; read-only afterwards. */
 extern const struct workloads *WL;
 /* gen.c: fills w by section 2 (and the W10 sources); bench_alloc64 exits

@@ -183,7 +183,6 @@ static fx_rect damage10(int rotation)
 
 static void present_group(int fmt, int trials, double min_s, int quiet)
 {
-    static const char *const FN[FMT_COUNT] = {"xrgb8888", "rgb565"};
     fx_format f = fmt == FMT_XRGB8888 ? FX_FMT_XRGB8888 : FX_FMT_RGB565;
     int bpp = fmt == FMT_XRGB8888 ? 4 : 2;
     double full = (double)BW * BH * bpp, part = 607.0 * 342 * bpp;
@@ -219,7 +218,7 @@ static void present_group(int fmt, int trials, double min_s, int quiet)
         fx_rect none = {0, 0, 0, 0};
         pa[i].damage = cases[i].dmg ? damage10(cases[i].rot) : none;
         double b = cases[i].m == FX_PRESENT_DIRECT ? 0 : cases[i].dmg ? part : full;
-        struct xrow *r = new_row("frames/s", b, "present.%s.%s", cases[i].label, FN[fmt]);
+        struct xrow *r = new_row("frames/s", b, "present.%s.%s", cases[i].label, FMT_NAME[fmt]);
         if (cases[i].m == FX_PRESENT_DIRECT)
             snprintf(r->note, sizeof r->note, "memory backend, 1 buffer: no copy");
         else if (cases[i].rot)
@@ -239,13 +238,13 @@ static void present_group(int fmt, int trials, double min_s, int quiet)
     }
     ca[0].r = fx_surface_rect(&ca[0].src);
     ca[1].r = damage10(0);
-    struct xrow *r = new_row("frames/s", full, "present.direct.full.2buf.%s", FN[fmt]);
+    struct xrow *r = new_row("frames/s", full, "present.direct.full.2buf.%s", FMT_NAME[fmt]);
     snprintf(r->note, sizeof r->note, "repair copy of last frame's damage");
     jobs[n++] = (struct xjob){r, rep_copy, &ca[0], 0};
-    r = new_row("frames/s", part, "present.direct.dmg10.2buf.%s", FN[fmt]);
+    r = new_row("frames/s", part, "present.direct.dmg10.2buf.%s", FMT_NAME[fmt]);
     snprintf(r->note, sizeof r->note, "repair copy of last frame's damage");
     jobs[n++] = (struct xjob){r, rep_copy, &ca[1], 0};
-    r = new_row("frames/s", full, "memcpy.full.%s", FN[fmt]);
+    r = new_row("frames/s", full, "memcpy.full.%s", FMT_NAME[fmt]);
     snprintf(r->note, sizeof r->note, "ceiling: libc memcpy of the frame");
     jobs[n++] = (struct xjob){r, rep_memcpy, &ca[2], 0};
     run_jobs(jobs, n, trials, min_s, quiet);

@@ -6,6 +6,9 @@
 
 #include <stdlib.h>
 
+const char *const FMT_NAME[FMT_COUNT] = {"xrgb8888", "rgb565"};
+const int BPP[FMT_COUNT] = {4, 2};
+
 /* ---- generation (section 2) --------------------------------------------- */
 
 static inline uint32_t xorshift32(uint32_t *s)

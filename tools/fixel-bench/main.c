@@ -157,8 +157,6 @@ static const struct wdesc WD[W_COUNT] = {
     [W9_MANDEL] = {"W9_mandel", "Mpix/s", 1, 1, 1},
     [W10_BLIT] = {"W10_blit", "Mpix/s", 1, 1, 3},
 };
-static const char *const FMT_NAME[FMT_COUNT] = {"xrgb8888", "rgb565"};
-static const int BPP[FMT_COUNT] = {4, 2};
 
 /* cum[w][i] = nominal pixels of the first i primitives */
 static int64_t *cum[W_COUNT];

@@ -19,8 +19,6 @@
 #include <time.h>
 
 enum { C_STEEP, C_MID, C_SHALLOW, C_COUNT };
-static const char *const FMT_NAME_W3[FMT_COUNT] = {"xrgb8888", "rgb565"};
-static const int BPP_W3[FMT_COUNT] = {4, 2};
 static const char *const CLASS_NAME[C_COUNT] = {"steep", "mid (x, 1-3/row)", "shallow (x, 4+/row)"};
 
 static int class_of(const struct wl_line *l)
@@ -31,57 +29,41 @@ static int class_of(const struct wl_line *l)
     return dy == 0 || dx / dy >= 4 ? C_SHALLOW : C_MID;
 }
 
-/* The steep lines' pixels by the same exact DDA as fixel's walk, from
- * (x0, y0) to (x1, y1) as given (the direction decides the ties), so the
- * same cache lines in the same order, stored from a plain loop: the
- * minor offset moves on the carry of the 32-bit fraction. */
-static void floor_steep(const struct target *t, const struct workloads *w, int n)
-{
-    for (int i = 0; i < n; i++) {
-        const struct wl_line *l = &w->lines[i];
-        unsigned dy = (unsigned)abs(l->y1 - l->y0), adx = (unsigned)abs(l->x1 - l->x0);
-        int sx = l->x1 < l->x0 ? -1 : 1;
-        long st = l->y1 < l->y0 ? -(long)t->stride : (long)t->stride;
-        uint32_t S = (uint32_t)((((uint64_t)adx << 32) + dy - 1) / dy), f = 1u << 31;
-        uint8_t *row = t->pixels + (size_t)l->y0 * (size_t)t->stride;
-        long x = l->x0;
-        for (unsigned j = 0; j <= dy; j++) {
-            if (t->fmt == FMT_XRGB8888)
-                ((uint32_t *)(void *)row)[x] = l->c;
-            else
-                ((uint16_t *)(void *)row)[x] = (uint16_t)l->c;
-            uint32_t g = f + S;
-            x += g < f ? sx : 0;
-            f = g;
-            if (j < dy)
-                row += st;
-        }
+/* The lines' pixels by the same exact DDA as fixel's walk, from (x0, y0)
+ * to (x1, y1) as given (the direction decides the ties), so the same
+ * cache lines in the same order, stored from a plain loop: a step along
+ * the major axis each pixel, one along the minor axis on the carry of the
+ * 32-bit fraction (a 45-degree line, minor == major, on every pixel: its
+ * slope 2^32 does not fit the 32-bit step). T is the pixel type, chosen
+ * once for all the lines, not in the loop. */
+#define FLOOR_LINES(T)                                                                           \
+    for (int i = 0; i < n; i++) {                                                                \
+        const struct wl_line *l = &w->lines[i];                                                  \
+        unsigned adx = (unsigned)abs(l->x1 - l->x0), ady = (unsigned)abs(l->y1 - l->y0);         \
+        long sx = l->x1 < l->x0 ? -(long)sizeof(T) : (long)sizeof(T);                           \
+        long sy = l->y1 < l->y0 ? -(long)t->stride : (long)t->stride;                            \
+        int ymajor = ady > adx;                                                                  \
+        unsigned major = ymajor ? ady : adx, minor = ymajor ? adx : ady, diag = minor == major;  \
+        long step_major = ymajor ? sy : sx, step_minor = ymajor ? sx : sy;                       \
+        uint32_t S = diag ? 0 : (uint32_t)((((uint64_t)minor << 32) + major - 1) / major);       \
+        uint32_t f = 1u << 31;                                                                   \
+        uint8_t *p = t->pixels + (size_t)l->y0 * (size_t)t->stride + (size_t)l->x0 * sizeof(T); \
+        for (unsigned j = 0;; j++) {                                                             \
+            *(T *)(void *)p = (T)l->c;                                                           \
+            if (j == major)                                                                      \
+                break;                                                                           \
+            uint32_t g = f + S;                                                                  \
+            p += step_major + (g < f || diag ? step_minor : 0);                                  \
+            f = g;                                                                               \
+        }                                                                                        \
     }
-}
 
-/* The mid lines' pixels likewise: x-major, the row moves on the carry (a
- * 45-degree line, ady == dx, on every pixel: its slope 2^32 does not fit
- * the 32-bit step). */
-static void floor_mid(const struct target *t, const struct workloads *w, int n)
+static void floor_lines(const struct target *t, const struct workloads *w, int n)
 {
-    for (int i = 0; i < n; i++) {
-        const struct wl_line *l = &w->lines[i];
-        unsigned dx = (unsigned)abs(l->x1 - l->x0), ady = (unsigned)abs(l->y1 - l->y0);
-        int sx = l->x1 < l->x0 ? -1 : 1, diag = ady == dx;
-        long st = l->y1 < l->y0 ? -(long)t->stride : (long)t->stride;
-        uint32_t S = diag ? 0 : (uint32_t)((((uint64_t)ady << 32) + dx - 1) / dx), f = 1u << 31;
-        uint8_t *row = t->pixels + (size_t)l->y0 * (size_t)t->stride;
-        long x = l->x0;
-        for (unsigned j = 0; j <= dx; j++, x += sx) {
-            if (t->fmt == FMT_XRGB8888)
-                ((uint32_t *)(void *)row)[x] = l->c;
-            else
-                ((uint16_t *)(void *)row)[x] = (uint16_t)l->c;
-            uint32_t g = f + S;
-            if ((g < f || diag) && j < dx)
-                row += st;
-            f = g;
-        }
+    if (t->fmt == FMT_XRGB8888) {
+        FLOOR_LINES(uint32_t)
+    } else {
+        FLOOR_LINES(uint16_t)
     }
 }
 
@@ -89,11 +71,10 @@ static void floor_mid(const struct target *t, const struct workloads *w, int n)
  * class's lines, all white, by fixel (peers[0], through its W3 call) and
  * by the floor loop onto two black frames; the same pixels must be lit.
  * Returns 1 when they differ or cannot be compared. */
-static int floor_same_pixels(const struct peer *fixel, const struct workloads *w, int n, int k, int f,
-                             uint8_t *buf)
+static int floor_same_pixels(const struct peer *fixel, const struct workloads *w, int n, int f, uint8_t *buf)
 {
     static struct workloads white;
-    size_t bytes = (size_t)BW * BH * (size_t)BPP_W3[f];
+    size_t bytes = (size_t)BW * BH * (size_t)BPP[f];
     uint8_t *mine = malloc(bytes);
     if (!mine)
         return 1;
@@ -101,7 +82,7 @@ static int floor_same_pixels(const struct peer *fixel, const struct workloads *w
         white.lines[i] = w->lines[i];
         white.lines[i].c = 0xFFFFFF;
     }
-    struct target tg = {buf, f, BW * BPP_W3[f]}, tm = {mine, f, BW * BPP_W3[f]};
+    struct target tg = {buf, f, BW * BPP[f]}, tm = {mine, f, BW * BPP[f]};
     memset(buf, 0, bytes);
     memset(mine, 0, bytes);
     const struct workloads *all = WL;
@@ -114,11 +95,11 @@ static int floor_same_pixels(const struct peer *fixel, const struct workloads *w
     fixel->fn[W3_LINES](ctx, n);
     WL = all;
     fixel->close(ctx);
-    (k == C_STEEP ? floor_steep : floor_mid)(&tm, &white, n);
+    floor_lines(&tm, &white, n);
     int differ = 0;
-    for (size_t i = 0; i < bytes; i += (size_t)BPP_W3[f]) {
-        int a = BPP_W3[f] == 4 ? (buf[i] | buf[i + 1] | buf[i + 2]) != 0 : (buf[i] | buf[i + 1]) != 0;
-        int b = BPP_W3[f] == 4 ? (mine[i] | mine[i + 1] | mine[i + 2]) != 0 : (mine[i] | mine[i + 1]) != 0;
+    for (size_t i = 0; i < bytes; i += (size_t)BPP[f]) {
+        int a = BPP[f] == 4 ? (buf[i] | buf[i + 1] | buf[i + 2]) != 0 : (buf[i] | buf[i + 1]) != 0;
+        int b = BPP[f] == 4 ? (mine[i] | mine[i + 1] | mine[i + 2]) != 0 : (mine[i] | mine[i + 1]) != 0;
         differ += a != b;
     }
     free(mine);
@@ -150,12 +131,12 @@ int w3_classes(FILE *o, const struct peer *const *peers, int npeers, uint8_t *bu
     for (int f = 0; f < FMT_COUNT; f++) {
         if (!(fmts & (1u << f)))
             continue;
-        struct target tg = {buf, f, BW * BPP_W3[f]};
+        struct target tg = {buf, f, BW * BPP[f]};
         void *ctx[64] = {0};
         int same[C_COUNT] = {0};
         if (peers[0]->fn[W3_LINES] && (peers[0]->fmt_mask & (1u << f)))
             for (int k = 0; k < C_SHALLOW; k++)
-                same[k] = !floor_same_pixels(peers[0], &cls[k], n[k], k, f, buf);
+                same[k] = !floor_same_pixels(peers[0], &cls[k], n[k], f, buf);
         memset(buf, 0, (size_t)BW * BH * 4);
         for (int p = 0; p < npeers && p < 64; p++)
             if (peers[p]->fn[W3_LINES] && (peers[p]->fmt_mask & (1u << f)))
@@ -173,14 +154,14 @@ int w3_classes(FILE *o, const struct peer *const *peers, int npeers, uint8_t *bu
                 }
                 if (k != C_SHALLOW) {
                     double t0 = bench_secs();
-                    (k == C_STEEP ? floor_steep : floor_mid)(&tg, &cls[k], n[k]);
+                    floor_lines(&tg, &cls[k], n[k]);
                     T(k, npeers, r) = bench_secs() - t0;
                 }
             }
         for (int p = 0; p < npeers; p++)
             if (ctx[p])
                 peers[p]->close(ctx[p]);
-        fprintf(o, "%s\n%-22s %7s %6s", FMT_NAME_W3[f], "class", "lines", "px%");
+        fprintf(o, "%s\n%-22s %7s %6s", FMT_NAME[f], "class", "lines", "px%");
         for (int p = 0; p < npeers; p++)
             if (ctx[p])
                 fprintf(o, " %21s", peers[p]->name);
