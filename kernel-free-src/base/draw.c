@@ -22,7 +22,7 @@ void fx_ctx_init(fx_ctx *c, const fx_surface *s)
 void fx_ctx_set_color(fx_ctx *c, fx_color color)
 {
     c->color = color;
-    c->native = fx_pack(c->surf.format, color);
+    c->native = fx_pack_inline(c->surf.format, color);
 }
 
 void fx_ctx_set_clip(fx_ctx *c, fx_rect r) { c->clip = fx_rect_intersect(r, fx_surface_rect(&c->surf)); }
@@ -110,19 +110,25 @@ static fx_rect rect_from(int32_t x, int32_t y, int32_t w, int32_t h)
     return r;
 }
 
+/* Apart, so that fx_fill_rect needs no stack frame: fx_rect_fill_native
+ * says why that matters. */
+__attribute__((noinline)) static void fill_rect_spans(const fx_ctx *c, fx_rect r)
+{
+    for (int32_t yy = r.y0; yy < r.y1; yy++)
+        fx_hspan(c, yy, r.x0, r.x1);
+}
+
 void fx_fill_rect(const fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h)
 {
     if (w <= 0 || h <= 0)
         return;
-    fx_rect r = fx_rect_intersect(rect_from(x, y, w, h), c->clip);
+    fx_rect r = fx_rect_meet(rect_from(x, y, w, h), c->clip);
     if (fx_rect_empty(r))
         return;
-    if (!c->exterior && (c->blend == FX_BLEND_SRC || (c->color >> 24) == 255)) {
+    if (c->exterior || (c->blend != FX_BLEND_SRC && (c->color >> 24) != 255))
+        fill_rect_spans(c, r);
+    else
         fx_rect_fill_native(&c->surf, r, c->native);
-        return;
-    }
-    for (int32_t yy = r.y0; yy < r.y1; yy++)
-        fx_hspan(c, yy, r.x0, r.x1);
 }
 
 void fx_rect_outline(const fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h)

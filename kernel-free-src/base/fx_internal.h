@@ -16,6 +16,10 @@
 
 #define FX_MIN(a, b) ((a) < (b) ? (a) : (b))
 #define FX_MAX(a, b) ((a) > (b) ? (a) : (b))
+/* Internal data shared between the core's files: not exported from the
+ * shared library, and reached without a GOT load from position-independent
+ * code. */
+#define FX_HIDDEN __attribute__((visibility("hidden")))
 #define FX_ARRAY_LEN(a) (sizeof(a) / sizeof((a)[0]))
 
 /* Return a negative error code from the enclosing function: the one TRY of
@@ -39,6 +43,40 @@ static inline fx16 fx16_powi(fx16 x, int32_t n)
         x = fx16_mul(x, x);
         n >>= 1;
     }
+    return r;
+}
+
+static inline uint32_t fx_luma(fx_color c)
+{
+    uint32_t r = (c >> 16) & 0xFF, g = (c >> 8) & 0xFF, b = c & 0xFF;
+    return (77 * r + 150 * g + 29 * b + 128) >> 8;
+}
+
+/* fx_pack, inline for fx_ctx_set_color: a program that sets the colour
+ * before every primitive pays no call for it. */
+static inline uint32_t fx_pack_inline(fx_format f, fx_color c)
+{
+    uint32_t r = (c >> 16) & 0xFF, g = (c >> 8) & 0xFF, b = c & 0xFF;
+    switch (f) {
+    case FX_FMT_XRGB8888: return c & 0xFFFFFF;
+    case FX_FMT_ARGB8888: return c;
+    case FX_FMT_XBGR8888: return (b << 16) | (g << 8) | r;
+    case FX_FMT_RGB565: return ((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3);
+    case FX_FMT_BGR565: return ((b >> 3) << 11) | ((g >> 2) << 5) | (r >> 3);
+    case FX_FMT_RGB888: return c & 0xFFFFFF;
+    case FX_FMT_BGR888: return (b << 16) | (g << 8) | r;
+    case FX_FMT_GRAY8: return fx_luma(c);
+    case FX_FMT_MONO1: return fx_luma(c) >= 128;
+    default: return 0;
+    }
+}
+
+/* fx_rect_intersect, inline for the per-primitive entry points. */
+static inline fx_rect fx_rect_meet(fx_rect a, fx_rect b)
+{
+    fx_rect r = {FX_MAX(a.x0, b.x0), FX_MAX(a.y0, b.y0), FX_MIN(a.x1, b.x1), FX_MIN(a.y1, b.y1)};
+    if (fx_rect_empty(r))
+        r.x1 = r.x0, r.y1 = r.y0;
     return r;
 }
 
@@ -163,11 +201,43 @@ static inline void fx_run16(uint16_t *p, int32_t n, uint16_t v)
 enum { FX_FILL_PORTABLE = 0, FX_FILL_AVX = 1, FX_FILL_AVX512 = 2 };
 /* The level this CPU and OS support (always FX_FILL_PORTABLE without FX_X86_FILL). */
 uint8_t fx_x86_fill_level(void);
-/* h rows of nb bytes (nb >= 2, a multiple of the pixel size; row and stride
- * pixel-aligned) filled with the pixel pattern p (a 32-bit pixel, or a
- * 16-bit one twice). */
-void fx_rect_fill_avx(uint8_t *row, size_t nb, int32_t h, ptrdiff_t stride, uint32_t p);
-void fx_rect_fill_avx512(uint8_t *row, size_t nb, int32_t h, ptrdiff_t stride, uint32_t p);
+/* The clipped, non-empty rectangle r of the 32- or 16-bit surface s (pixels
+ * and stride pixel-aligned) filled with the native value v. They take the
+ * surface, not a row pointer, so that their callers pass their own
+ * arguments on (fx_rect_fill_native). */
+void fx_rect_fill_avx(const fx_surface *s, fx_rect r, uint32_t v);
+void fx_rect_fill_avx512(const fx_surface *s, fx_rect r, uint32_t v);
+
+/* The format table (surface.c); callers index it with a valid format. */
+extern FX_HIDDEN const fx_format_info fx_format_table[FX_FMT_COUNT];
+
+/* The common rectangle of fx_rect_fill_native: 32- or 16-bit pixels, rows
+ * shorter than a rep-stos run, on a CPU with the AVX fills (why it is
+ * apart: fx_rect_fill_native). Whole rows of an unpadded surface are left
+ * to the general path, which merges them into one run. 0 when it is not
+ * that case (nothing written); r is clipped. */
+#if FX_X86_FILL
+static inline int fx_rect_fill_short(const fx_surface *s, fx_rect r, uint32_t v)
+{
+    size_t bytes = fx_format_table[s->format].bits_per_pixel / 8u;
+    size_t nb = (size_t)(r.x1 - r.x0) * bytes;
+    if (r.x0 >= r.x1 || r.y0 >= r.y1 || !s->fill_isa || (bytes != 4 && bytes != 2) ||
+        nb >= FX_STOS_MIN_BYTES || (r.x0 == 0 && r.x1 == s->w && s->stride == (int64_t)nb) ||
+        (((uintptr_t)s->pixels | (uintptr_t)(intptr_t)s->stride) & (bytes - 1)))
+        return 0;
+    if (s->fill_isa == FX_FILL_AVX512)
+        fx_rect_fill_avx512(s, r, v);
+    else
+        fx_rect_fill_avx(s, r, v);
+    return 1;
+}
+#else
+static inline int fx_rect_fill_short(const fx_surface *s, fx_rect r, uint32_t v)
+{
+    (void)s, (void)r, (void)v;
+    return 0;
+}
+#endif
 /* Whole frames with streaming stores (surface_x86.c): fill n bytes at the
  * pixel-aligned p with the 8-byte pattern of whole pixels; copy n bytes
  * between blocks that do not overlap. The same bytes as the cached paths.

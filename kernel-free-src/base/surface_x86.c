@@ -130,9 +130,19 @@ typedef uint32_t v16u32 __attribute__((vector_size(64)));
         fx_memcpy(e_, &q, W);                                                \
     }
 
-__attribute__((target("avx"))) void fx_rect_fill_avx(uint8_t *row, size_t nb, int32_t h,
-                                                     ptrdiff_t stride, uint32_t p)
+/* The arguments of the row loops from fx_rect_fill_avx*'s: the first
+ * pixel, the bytes per row and the pattern (a 16-bit pixel twice). */
+#define RECT_ROWS_ARGS(s, r, v)                                                    \
+    size_t bytes_ = fx_format_table[(s)->format].bits_per_pixel / 8u;             \
+    uint8_t *row = fx_row((s), (r).y0) + (size_t)(r).x0 * bytes_;                 \
+    size_t nb = (size_t)((r).x1 - (r).x0) * bytes_;                               \
+    int32_t h = (r).y1 - (r).y0;                                                   \
+    ptrdiff_t stride = (s)->stride;                                                \
+    uint32_t p = bytes_ == 4 ? (v) : ((v)&0xFFFF) * 0x10001u
+
+__attribute__((target("avx"))) void fx_rect_fill_avx(const fx_surface *s, fx_rect r, uint32_t v)
 {
+    RECT_ROWS_ARGS(s, r, v);
     if (nb < 32) {
         NARROW_ROWS(row, nb, h, stride, p);
         return;
@@ -141,9 +151,9 @@ __attribute__((target("avx"))) void fx_rect_fill_avx(uint8_t *row, size_t nb, in
     WIDE_ROWS(row, nb, h, stride, q, 32);
 }
 
-__attribute__((target("avx512f"))) void fx_rect_fill_avx512(uint8_t *row, size_t nb, int32_t h,
-                                                            ptrdiff_t stride, uint32_t p)
+__attribute__((target("avx512f"))) void fx_rect_fill_avx512(const fx_surface *s, fx_rect r, uint32_t v)
 {
+    RECT_ROWS_ARGS(s, r, v);
     if (nb < 32) {
         NARROW_ROWS(row, nb, h, stride, p);
         return;
