@@ -25,7 +25,7 @@ uint32_t fx_bres_minor_at(const fx_bres *b, uint32_t k)
 void fx_bres_seek(fx_bres *b, uint32_t k)
 {
     int64_t m = 0, p = 2 * (int64_t)b->minor - b->major;
-    if (b->major) {
+    if (b->major && k) { /* step 0 (every line's start) needs no division */
         uint64_t t = (uint64_t)k * b->minor;
         uint64_t q = t / b->major, r = t % b->major;
         int64_t rr = (int64_t)r;
@@ -319,34 +319,28 @@ static void walk_dda(const fx_ctx *c, const fx_bres *b, uint32_t n, unsigned byt
         FX_DDA_WALK(uint8_t);
 }
 
-void fx_bres_walk(const fx_ctx *c, fx_bres *b, uint32_t k0, uint32_t k1)
+/* fx_plot per step: traces, blending, exterior clipping, sub-byte formats. */
+__attribute__((noinline)) static void walk_plot(const fx_ctx *c, fx_bres *b, uint32_t n)
 {
-    fx_bres_seek(b, k0);
-    uint32_t n = k1 - k0 + 1;
-    unsigned bpp = fx_format_get(c->surf.format)->bits_per_pixel;
-    if (c->trace || c->exterior || (c->blend == FX_BLEND_OVER && (c->color >> 24) != 255) ||
-        bpp < 8 || bpp == 24) {
-        for (;;) {
-            fx_plot(c, b->x, b->y);
-            if (--n == 0)
-                break;
-            if (c->trace) {
-                int64_t p = b->p;
-                uint32_t k = b->k;
-                fx_bres_step(b);
-                fx_trace(c, "%-4u %-12lld (%d, %d)", k, (long long)p, b->x, b->y);
-            } else {
-                fx_bres_step(b);
-            }
+    for (;;) {
+        fx_plot(c, b->x, b->y);
+        if (--n == 0)
+            break;
+        if (c->trace) {
+            int64_t p = b->p;
+            uint32_t k = b->k;
+            fx_bres_step(b);
+            fx_trace(c, "%-4u %-12lld (%d, %d)", k, (long long)p, b->x, b->y);
+        } else {
+            fx_bres_step(b);
         }
-        return;
     }
-    if (b->major <= FX_DDA_WALK_MAX) {
-        walk_dda(c, b, n, bpp / 8);
-        return;
-    }
-    /* The Bresenham walk for the rest: the pointer moves by precomputed
-     * byte offsets, no per-pixel multiplies or checks. */
+}
+
+/* The Bresenham walk for lines too long for the DDA: the pointer moves by
+ * precomputed byte offsets, no per-pixel multiplies or checks. */
+__attribute__((noinline)) static void walk_bres(const fx_ctx *c, const fx_bres *b, uint32_t n, unsigned bpp)
+{
     ptrdiff_t bytes = (ptrdiff_t)(bpp / 8);
     ptrdiff_t step_x = b->sx * bytes, step_y = b->sy * (ptrdiff_t)c->surf.stride;
     ptrdiff_t step_major = b->ymajor ? step_y : step_x, step_minor = b->ymajor ? step_x : step_y;
@@ -354,6 +348,22 @@ void fx_bres_walk(const fx_ctx *c, fx_bres *b, uint32_t k0, uint32_t k1)
     int64_t e = b->p, inc1 = 2 * (int64_t)b->minor, inc2 = inc1 - 2 * (int64_t)b->major;
     uint32_t v = c->native;
     FX_LINE_WALK_BPP(bpp, 1, fx_bres_err_step(&e, inc1, inc2), (void)0);
+}
+
+/* A dispatcher only, so that a plain line reaches walk_dda without the
+ * register saves of the other walks (why that matters: fx_rect_fill_native). */
+void fx_bres_walk(const fx_ctx *c, fx_bres *b, uint32_t k0, uint32_t k1)
+{
+    fx_bres_seek(b, k0);
+    uint32_t n = k1 - k0 + 1;
+    unsigned bpp = fx_format_table[c->surf.format].bits_per_pixel;
+    if (c->trace || c->exterior || (c->blend == FX_BLEND_OVER && (c->color >> 24) != 255) ||
+        bpp < 8 || bpp == 24)
+        walk_plot(c, b, n);
+    else if (b->major <= FX_DDA_WALK_MAX)
+        walk_dda(c, b, n, bpp / 8);
+    else
+        walk_bres(c, b, n, bpp);
 }
 
 void fx_line_steps(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t k0,

@@ -34,6 +34,11 @@ void fx_line(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
     fx_bres_init(&b, x0, y0, x1, y1);
     if (c->trace)
         trace_header(c, &b, x0, y0, x1, y1);
-    if (fx_bres_clip(&b, c->clip, &k0, &k1))
+    /* A line lies in the box of its end points: with both inside the clip
+     * every step is drawn, and the exact step-range clip is not needed. */
+    if (FX_MIN(x0, x1) >= c->clip.x0 && FX_MAX(x0, x1) < c->clip.x1 && FX_MIN(y0, y1) >= c->clip.y0 &&
+        FX_MAX(y0, y1) < c->clip.y1)
+        fx_bres_walk(c, &b, 0, b.major);
+    else if (fx_bres_clip(&b, c->clip, &k0, &k1))
         fx_bres_walk(c, &b, k0, k1);
 }
