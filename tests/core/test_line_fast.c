@@ -283,8 +283,9 @@ FX_TEST(fast_walk_longest_dda_lines_whole)
     FX_CHECK_EQ(n_lines, 30);
 }
 
-/* Shallow x-major lines (major/minor >= 4) are drawn as horizontal runs:
- * ratios around the store-width changes (4, 8, 16, 32 pixels), both x
+/* x-major lines with major/minor >= 2 are drawn as horizontal runs:
+ * ratios from 1 (still the DDA) past every store-width change (2 to 32
+ * bytes a store, so rows of 2 to 40 pixels in each format), both x
  * directions, visible pieces starting and ending anywhere inside a run,
  * and pieces lying on the first or last row only. */
 FX_TEST(fast_walk_shallow_runs)
@@ -294,7 +295,7 @@ FX_TEST(fast_walk_shallow_runs)
     for (size_t f = 0; f < FX_ARRAY_LEN_T(formats); f++) {
         canvas c = make(211, 37, formats[f], 8, f == 2);
         for (int i = 0; i < 600; i++) {
-            uint32_t minor = 1 + fx_test_rand(&s) % 30, ratio = 3 + fx_test_rand(&s) % 36;
+            uint32_t minor = 1 + fx_test_rand(&s) % 30, ratio = 1 + fx_test_rand(&s) % 38;
             uint32_t major = minor * ratio + fx_test_rand(&s) % minor;
             int32_t sx = i & 1 ? -1 : 1, sy = i & 2 ? -1 : 1;
             int32_t x0 = (int32_t)(fx_test_rand(&s) % 211), y0 = (int32_t)(fx_test_rand(&s) % 37);
