@@ -211,33 +211,6 @@ void fx_rect_fill_avx512(const fx_surface *s, fx_rect r, uint32_t v);
 /* The format table (surface.c); callers index it with a valid format. */
 extern FX_HIDDEN const fx_format_info fx_format_table[FX_FMT_COUNT];
 
-/* The common rectangle of fx_rect_fill_native: 32- or 16-bit pixels, rows
- * shorter than a rep-stos run, on a CPU with the AVX fills (why it is
- * apart: fx_rect_fill_native). Whole rows of an unpadded surface are left
- * to the general path, which merges them into one run. 0 when it is not
- * that case (nothing written); r is clipped. */
-#if FX_X86_FILL
-static inline int fx_rect_fill_short(const fx_surface *s, fx_rect r, uint32_t v)
-{
-    size_t bytes = fx_format_table[s->format].bits_per_pixel / 8u;
-    size_t nb = (size_t)(r.x1 - r.x0) * bytes;
-    if (r.x0 >= r.x1 || r.y0 >= r.y1 || !s->fill_isa || (bytes != 4 && bytes != 2) ||
-        nb >= FX_STOS_MIN_BYTES || (r.x0 == 0 && r.x1 == s->w && s->stride == (int64_t)nb) ||
-        (((uintptr_t)s->pixels | (uintptr_t)(intptr_t)s->stride) & (bytes - 1)))
-        return 0;
-    if (s->fill_isa == FX_FILL_AVX512)
-        fx_rect_fill_avx512(s, r, v);
-    else
-        fx_rect_fill_avx(s, r, v);
-    return 1;
-}
-#else
-static inline int fx_rect_fill_short(const fx_surface *s, fx_rect r, uint32_t v)
-{
-    (void)s, (void)r, (void)v;
-    return 0;
-}
-#endif
 /* Whole frames with streaming stores (surface_x86.c): fill n bytes at the
  * pixel-aligned p with the 8-byte pattern of whole pixels; copy n bytes
  * between blocks that do not overlap. The same bytes as the cached paths.

@@ -252,16 +252,44 @@ void fx_span_fill(const fx_surface *s, int32_t y, int32_t x0, int32_t x1, uint32
     }
 }
 
+/* Whole rows of an unpadded buffer (pixels of bytes >= 1) are one run: a
+ * clear is a single loop with no per-row head and tail. */
+static inline int whole_rows(const fx_surface *s, fx_rect r, unsigned bytes)
+{
+    return bytes && r.x0 == 0 && r.x1 == s->w && s->stride == (int64_t)s->w * bytes;
+}
+
+/* The common rectangle of fx_rect_fill_native: 32- or 16-bit pixels, rows
+ * shorter than a rep-stos run and not merged into one run, on a CPU with
+ * the AVX fills. Inline, so that fx_rect_fill_native stays frameless on
+ * its way to the vector loop. 0 when it is not that case (nothing
+ * written); r is clipped. */
+static inline int rect_fill_short(const fx_surface *s, fx_rect r, uint32_t v)
+{
+#if FX_X86_FILL
+    unsigned bytes = fx_format_table[s->format].bits_per_pixel / 8u;
+    if (r.x0 >= r.x1 || r.y0 >= r.y1 || !s->fill_isa || (bytes != 4 && bytes != 2) ||
+        (size_t)(r.x1 - r.x0) * bytes >= FX_STOS_MIN_BYTES || whole_rows(s, r, bytes) ||
+        (((uintptr_t)s->pixels | (uintptr_t)(intptr_t)s->stride) & (bytes - 1)))
+        return 0;
+    if (s->fill_isa == FX_FILL_AVX512)
+        fx_rect_fill_avx512(s, r, v);
+    else
+        fx_rect_fill_avx(s, r, v);
+    return 1;
+#else
+    (void)s, (void)r, (void)v;
+    return 0;
+#endif
+}
+
 __attribute__((noinline)) static void rect_fill_general(const fx_surface *s, fx_rect r, uint32_t v)
 {
     int bpp = fx_format_table[s->format].bits_per_pixel;
     int32_t w = r.x1 - r.x0, h = r.y1 - r.y0;
     if (w <= 0 || h <= 0)
         return;
-    /* Whole rows of an unpadded buffer are one run: a clear is a single
-     * loop with no per-row head and tail. */
-    if (bpp >= 8 && r.x0 == 0 && r.x1 == s->w && s->stride == (int64_t)s->w * (bpp / 8) &&
-        (int64_t)w * h <= INT32_MAX) {
+    if (whole_rows(s, r, (unsigned)bpp / 8) && (int64_t)w * h <= INT32_MAX) { /* a run's length is an int32_t */
         w *= h;
         h = 1;
     }
@@ -292,7 +320,7 @@ __attribute__((noinline)) static void rect_fill_general(const fx_surface *s, fx_
     }
 }
 
-/* The common rectangle (fx_rect_fill_short) goes straight to the vector
+/* The common rectangle (rect_fill_short) goes straight to the vector
  * loop, everything else to the general function: kept apart so that this
  * entry, and fx_fill_rect before it, need no stack frame. Register saves
  * and spills are stack stores, queued behind the previous rectangle's
@@ -300,7 +328,7 @@ __attribute__((noinline)) static void rect_fill_general(const fx_surface *s, fx_
  * loop called directly. */
 void fx_rect_fill_native(const fx_surface *s, fx_rect r, uint32_t v)
 {
-    if (!fx_rect_fill_short(s, r, v))
+    if (!rect_fill_short(s, r, v))
         rect_fill_general(s, r, v);
 }
 

@@ -217,11 +217,12 @@ int fx_bres_clip(const fx_bres *b, fx_rect clip, uint32_t *k0, uint32_t *k1)
  * floor((m*R + C) / 2^32) = k_m while (minor + 1)*2*minor <= 2^32, true for
  * every minor < major <= FX_DDA_WALK_MAX. At m = minor + 1 (past the last
  * row) the value only overestimates, so it is > k_minor, which is all the
- * loop below asks of it. Interior rows (0 < m < minor) hold
- * floor(major/minor) or that + 1 pixels, so with W pixels per store,
- * W <= floor(major/minor) < 2W, a store at each end of the row covers it
- * exactly; the first and last rows (and rows cut by the clip) are filled
- * as plain runs. */
+ * loop below asks of it. Interior rows (0 < m < minor) hold q =
+ * floor(major/minor) or q + 1 pixels of B bytes; with W the largest power
+ * of two <= q*B, q*B < 2W, so (q + 1)*B <= 2W (both are multiples of B)
+ * and one W-byte store at each end of a row covers it exactly. Rows of 32
+ * bytes or more take 16-byte stores across them instead. The first and
+ * last rows (and rows cut by the clip) are filled as plain runs. */
 #define FX_RUNS_MIN_RATIO 2u
 
 static void fill_run(uint8_t *lo, uint32_t len, uint32_t v, unsigned bytes)
@@ -234,10 +235,12 @@ static void fill_run(uint8_t *lo, uint32_t len, uint32_t v, unsigned bytes)
         fx_memset(lo, (int)(v & 0xFF), len);
 }
 
-/* The lowest address of steps [ka, kb) on the row that starts at rowp. */
-#define FX_RUN_LO(ka, kb)                                                               \
-    (rowp + (b->sx > 0 ? (ptrdiff_t)((ka) - k0) : (ptrdiff_t)k0 + 1 - (ptrdiff_t)(kb)) * \
-                (ptrdiff_t)bytes)
+/* The lowest address of steps [ka, kb) on the row whose step-k0 column is
+ * at address rowa. The row moves as an integer, not a pointer, so that no
+ * pointer is formed past the last row drawn (undefined behaviour in C). */
+#define FX_RUN_LO(ka, kb)                                                                   \
+    ((uint8_t *)rowa +                                                                      \
+     (b->sx > 0 ? (ptrdiff_t)((ka) - k0) : (ptrdiff_t)k0 + 1 - (ptrdiff_t)(kb)) * (ptrdiff_t)bytes)
 
 /* Whole interior rows of B-byte pixels, the line running left when NEGX:
  * row [k, kn) is one W-byte store at each end, or for W = 32 (rows of 32
@@ -245,18 +248,19 @@ static void fill_run(uint8_t *lo, uint32_t len, uint32_t v, unsigned bytes)
  * each loop is a handful of instructions a row with everything in
  * registers (a generic loop that read b->sx and multiplied by the pixel
  * size on every row cost more than the stores it saved). */
-#define FX_RUN_ROWS(B, W, NEGX)                                                          \
-    for (; (kn = (uint32_t)(acc >> 32)) <= kend; acc += R, k = kn, rowp += st) {         \
-        ptrdiff_t a_ = (ptrdiff_t)(k - k0) * (B), e_ = (ptrdiff_t)(kn - k0) * (B);       \
-        uint8_t *lo = (NEGX) ? rowp + (B)-e_ : rowp + a_, *end = (NEGX) ? rowp + (B)-a_ : rowp + e_; \
-        if ((W) == 32) {                                                                 \
-            for (; lo < end - 16; lo += 16)                                              \
-                fx_memcpy(lo, &q, 16);                                                   \
-            fx_memcpy(end - 16, &q, 16);                                                 \
-        } else {                                                                         \
-            fx_memcpy(lo, &q, (W));                                                      \
-            fx_memcpy(end - (W), &q, (W));                                               \
-        }                                                                                \
+#define FX_RUN_ROWS(B, W, NEGX)                                                                      \
+    for (; (kn = (uint32_t)(acc >> 32)) <= kend; acc += R, k = kn, rowa += (uintptr_t)st) {          \
+        ptrdiff_t a_ = (ptrdiff_t)(k - k0) * (B), e_ = (ptrdiff_t)(kn - k0) * (B);                   \
+        uint8_t *rp_ = (uint8_t *)rowa;                                                              \
+        uint8_t *lo = (NEGX) ? rp_ + (B)-e_ : rp_ + a_, *end = (NEGX) ? rp_ + (B)-a_ : rp_ + e_;     \
+        if ((W) == 32) {                                                                             \
+            for (; lo < end - 16; lo += 16)                                                          \
+                fx_memcpy(lo, &q, 16);                                                               \
+            fx_memcpy(end - 16, &q, 16);                                                             \
+        } else {                                                                                     \
+            fx_memcpy(lo, &q, (W) > 16 ? 16 : (W));                                                  \
+            fx_memcpy(end - (W), &q, (W) > 16 ? 16 : (W));                                           \
+        }                                                                                            \
     }
 
 #define FX_RUN_ROWS_DIR(B, W)             \
@@ -267,10 +271,20 @@ static void fill_run(uint8_t *lo, uint32_t len, uint32_t v, unsigned bytes)
             FX_RUN_ROWS(B, W, 1)          \
     } while (0)
 
+/* Rows long enough for rep stos on x86-64 (fx_run32) go to fill_run. */
+#ifdef FX_STOS_MIN_BYTES
+#define FX_RUN_STOS_BYTES FX_STOS_MIN_BYTES
+#else
+#define FX_RUN_STOS_BYTES UINT32_MAX
+#endif
+
 /* W: the widest store that fits the shortest interior row (w bytes). */
 #define FX_RUN_ROWS_B(B)                           \
     do {                                           \
-        if (w >= 32)                               \
+        if (w >= FX_RUN_STOS_BYTES)                \
+            for (; (kn = (uint32_t)(acc >> 32)) <= kend; acc += R, k = kn, rowa += (uintptr_t)st) \
+                fill_run(FX_RUN_LO(k, kn), kn - k, v, bytes); \
+        else if (w >= 32)                          \
             FX_RUN_ROWS_DIR(B, 32);                \
         else if (w >= 16)                          \
             FX_RUN_ROWS_DIR(B, 16);                \
@@ -290,7 +304,7 @@ static void walk_runs(const fx_ctx *c, const fx_bres *b, uint32_t k0, uint32_t n
     uint32_t major = b->major, minor = b->minor, k1 = k0 + (n - 1);
     uint32_t M = (uint32_t)(((uint64_t)k0 * S + (1u << 31)) >> 32); /* the row of step k0 */
     ptrdiff_t st = b->sy * (ptrdiff_t)c->surf.stride;
-    uint8_t *rowp = fx_row(&c->surf, b->y) + (ptrdiff_t)b->x * (ptrdiff_t)bytes;
+    uintptr_t rowa = (uintptr_t)(fx_row(&c->surf, b->y) + (ptrdiff_t)b->x * (ptrdiff_t)bytes);
     uint32_t v = c->native, k = k0;
     if (M == minor) {
         fill_run(FX_RUN_LO(k0, k1 + 1), n, v, bytes);
@@ -309,7 +323,7 @@ static void walk_runs(const fx_ctx *c, const fx_bres *b, uint32_t k0, uint32_t n
     }
     fill_run(FX_RUN_LO(k0, kn), kn - k0, v, bytes);
     k = kn;
-    rowp += st;
+    rowa += (uintptr_t)st;
     acc += R;
     uint32_t w = major / minor * bytes; /* bytes of the shortest interior row */
     uint32_t v32 = bytes == 4 ? v : bytes == 2 ? (v & 0xFFFFu) * 0x10001u : (v & 0xFFu) * 0x01010101u;

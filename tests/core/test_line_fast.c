@@ -19,6 +19,7 @@ typedef struct {
     uint8_t *mem, *want;
     size_t size;
     int bytes;
+    fx_rect clip; /* the drawing context's clip: the surface unless a test sets it */
 } canvas;
 
 /* stride_pad extra bytes per row; flip: row 0 at the bottom (negative stride). */
@@ -32,6 +33,7 @@ static canvas make(int w, int h, fx_format f, int stride_pad, int flip)
     c.want = malloc(c.size);
     uint8_t *row0 = flip ? c.mem + (size_t)stride * (size_t)(h - 1) : c.mem;
     FX_CHECK_EQ(fx_surface_init(&c.s, row0, w, h, flip ? -stride : stride, f), 0);
+    c.clip = fx_surface_rect(&c.s);
     return c;
 }
 
@@ -52,7 +54,7 @@ static void clear(canvas *c, uint32_t native)
 
 static void want_pixel(canvas *c, int64_t x, int64_t y, uint32_t native)
 {
-    if (x < 0 || y < 0 || x >= c->s.w || y >= c->s.h)
+    if (x < c->clip.x0 || y < c->clip.y0 || x >= c->clip.x1 || y >= c->clip.y1)
         return;
     uint8_t *p = c->s.pixels + (ptrdiff_t)y * c->s.stride + (ptrdiff_t)x * c->bytes;
     uint8_t *w = c->want + (p - c->mem);
@@ -102,6 +104,7 @@ static void check(canvas *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1, uin
 {
     fx_ctx ctx;
     fx_ctx_init(&ctx, &c->s);
+    fx_ctx_set_clip(&ctx, c->clip);
     fx_ctx_set_color(&ctx, 0xFF000000u | colour);
     clear(c, ctx.native);
     if (inside) {
@@ -284,8 +287,10 @@ FX_TEST(fast_walk_longest_dda_lines_whole)
 }
 
 /* x-major lines with major/minor >= 2 are drawn as horizontal runs:
- * ratios from 1 (still the DDA) past every store-width change (2 to 32
- * bytes a store, so rows of 2 to 40 pixels in each format), both x
+ * ratios from 1 (still the DDA) to 38 and some of 64-303, past every
+ * store-width change of each format (8-byte stores to 16-byte loops for
+ * 32-bit pixels, 4 to 16 and loops for 16-bit, 2 to 16 and loops for
+ * 8-bit), both strides' signs, both x
  * directions, visible pieces starting and ending anywhere inside a run,
  * and pieces lying on the first or last row only. */
 FX_TEST(fast_walk_shallow_runs)
@@ -293,30 +298,76 @@ FX_TEST(fast_walk_shallow_runs)
     uint32_t s = 0x5151u;
     n_lines = n_bad = 0;
     for (size_t f = 0; f < FX_ARRAY_LEN_T(formats); f++) {
-        canvas c = make(211, 37, formats[f], 8, f == 2);
+        /* row 0 at the top and at the bottom (negative stride), wide enough
+         * for whole rows of up to 300 pixels */
+        canvas cs[2] = {make(320, 37, formats[f], 8, 0), make(320, 37, formats[f], 8, 1)};
         for (int i = 0; i < 600; i++) {
+            canvas *cp = &cs[(i >> 3) & 1];
             uint32_t minor = 1 + fx_test_rand(&s) % 30, ratio = 1 + fx_test_rand(&s) % 38;
-            uint32_t major = minor * ratio + fx_test_rand(&s) % minor;
             int32_t sx = i & 1 ? -1 : 1, sy = i & 2 ? -1 : 1;
-            int32_t x0 = (int32_t)(fx_test_rand(&s) % 211), y0 = (int32_t)(fx_test_rand(&s) % 37);
-            if (i & 4) { /* start outside so the line crosses the surface */
+            /* rows of 64-303 pixels: the first (half) row starts off the
+             * surface, so that the next row lies whole on it */
+            int longrows = i % 8 == 5;
+            if (longrows) {
+                minor = 2 + fx_test_rand(&s) % 3;
+                ratio = 64 + fx_test_rand(&s) % 240;
+                cp = &cs[(i >> 4) & 1];
+            }
+            uint32_t major = minor * ratio + fx_test_rand(&s) % minor;
+            int32_t x0 = (int32_t)(fx_test_rand(&s) % 320), y0 = (int32_t)(fx_test_rand(&s) % 37);
+            if (longrows) {
+                int32_t first = (int32_t)(major / (2 * minor)) + 2 - (int32_t)(fx_test_rand(&s) % 4);
+                x0 = sx > 0 ? -first : 319 + first;
+            } else if (i & 4) { /* start outside so the line crosses the surface */
                 x0 -= sx * (int32_t)(fx_test_rand(&s) % (major + 1));
                 y0 -= sy * (int32_t)(fx_test_rand(&s) % (minor + 1));
             }
             int32_t x1 = x0 + sx * (int32_t)major, y1 = y0 + sy * (int32_t)minor;
             uint32_t col = colour_of(fx_test_rand(&s));
-            check(&c, x0, y0, x1, y1, 0, UINT32_MAX, 0, col);
+            check(cp, x0, y0, x1, y1, 0, UINT32_MAX, 0, col);
             uint32_t k0 = fx_test_rand(&s) % (major + 1), k1 = k0 + fx_test_rand(&s) % (major + 1);
-            check(&c, x0, y0, x1, y1, k0, k1, 0, col);
-            check(&c, x0, y0, x1, y1, k0, k1, 1, col);
+            check(cp, x0, y0, x1, y1, k0, k1, 0, col);
+            check(cp, x0, y0, x1, y1, k0, k1, 1, col);
             /* the first and the last row alone */
             uint32_t half = major / (2 * minor);
-            check(&c, x0, y0, x1, y1, 0, half, 1, col);
-            check(&c, x0, y0, x1, y1, major - half, major, 1, col);
-            check(&c, x0, y0, x1, y1, major - half - 1, major, 0, col);
+            check(cp, x0, y0, x1, y1, 0, half, 1, col);
+            check(cp, x0, y0, x1, y1, major - half, major, 1, col);
+            check(cp, x0, y0, x1, y1, major - half - 1, major, 0, col);
+        }
+        drop(&cs[0]);
+        drop(&cs[1]);
+    }
+    FX_CHECK_EQ(n_bad, 0);
+    FX_CHECK_EQ(n_lines, 3 * 600 * 6);
+}
+
+/* A clip window smaller than the surface: lines with both end points
+ * inside it (fx_line skips the exact step-range clip for them), one or both
+ * just outside, and degenerate ones, in every format; pixels outside the
+ * window must stay untouched. */
+FX_TEST(fast_walk_clip_window)
+{
+    uint32_t s = 0xC11Bu;
+    n_lines = n_bad = 0;
+    for (size_t f = 0; f < FX_ARRAY_LEN_T(formats); f++) {
+        canvas c = make(97, 61, formats[f], 4, f == 1);
+        for (int i = 0; i < 400; i++) {
+            int32_t cx0 = (int32_t)(fx_test_rand(&s) % 60), cy0 = (int32_t)(fx_test_rand(&s) % 40);
+            fx_rect r = {cx0, cy0, cx0 + 1 + (int32_t)(fx_test_rand(&s) % 37),
+                         cy0 + 1 + (int32_t)(fx_test_rand(&s) % 21)};
+            c.clip = r;
+            /* end points inside the window, or up to 2 pixels around it */
+            int32_t m = i % 3 ? 0 : 2, w = r.x1 - r.x0 + 2 * m, h = r.y1 - r.y0 + 2 * m;
+            int32_t x0 = r.x0 - m + (int32_t)(fx_test_rand(&s) % (uint32_t)w);
+            int32_t y0 = r.y0 - m + (int32_t)(fx_test_rand(&s) % (uint32_t)h);
+            int32_t x1 = r.x0 - m + (int32_t)(fx_test_rand(&s) % (uint32_t)w);
+            int32_t y1 = r.y0 - m + (int32_t)(fx_test_rand(&s) % (uint32_t)h);
+            if (i % 7 == 0)
+                x1 = x0;
+            check(&c, x0, y0, x1, y1, 0, UINT32_MAX, 0, colour_of(fx_test_rand(&s)));
         }
         drop(&c);
     }
     FX_CHECK_EQ(n_bad, 0);
-    FX_CHECK_EQ(n_lines, 3 * 600 * 6);
+    FX_CHECK_EQ(n_lines, 3 * 400);
 }

@@ -113,6 +113,59 @@ FX_TEST(rect_fill_matches_plain_loop_16bit)
     check_format(FX_FMT_BGR565, 2, 6, 1);
 }
 
+/* Rectangles the full width of the surface: an unpadded surface's rows
+ * merge into one run (the general path), a padded one's stay rows (the
+ * vector path on x86-64); every surface width 1..MAXW at each level. */
+static void check_full_width(fx_format f, int bytes, int stride_pad, int flip)
+{
+    uint8_t lv[3];
+    int nl = levels(lv);
+    for (int32_t w = 1; w <= MAXW; w++) {
+        int32_t stride = w * bytes + stride_pad;
+        size_t size = (size_t)stride * ROWS;
+        uint8_t *mem = malloc(size), *ref = malloc(size);
+        FX_CHECK(mem && ref);
+        if (!mem || !ref) {
+            free(mem);
+            free(ref);
+            return;
+        }
+        uint8_t *row0 = flip ? mem + (size_t)stride * (ROWS - 1) : mem;
+        int32_t s_stride = flip ? -stride : stride;
+        fx_surface s;
+        FX_CHECK_EQ(fx_surface_init(&s, row0, w, ROWS, s_stride, f), 0);
+        int bad = 0;
+        for (int l = 0; l < nl && !bad; l++) {
+            s.fill_isa = lv[l];
+            for (size_t i = 0; i < size; i++)
+                mem[i] = (uint8_t)next();
+            memcpy(ref, mem, size);
+            int32_t y0 = (int32_t)(next() % 2), y1 = y0 + 1 + (int32_t)(next() % (ROWS - y0));
+            fx_rect r = {0, y0, w, y1};
+            uint32_t v = bytes == 4 ? next() : next() & 0xFFFF;
+            fx_rect_fill_native(&s, r, v);
+            plain_fill(ref + (row0 - mem), s_stride, bytes, r, v);
+            if (memcmp(mem, ref, size) != 0) {
+                FX_CHECK_MSG(0, "level %d bpp %d pad %d flip %d: surface width %d rows %d..%d",
+                             lv[l], bytes * 8, stride_pad, flip, w, y0, y1);
+                bad = 1;
+            }
+        }
+        free(mem);
+        free(ref);
+        if (bad)
+            return;
+    }
+}
+
+FX_TEST(rect_fill_full_width_rows_padded_and_not)
+{
+    check_full_width(FX_FMT_XRGB8888, 4, 0, 0);
+    check_full_width(FX_FMT_XRGB8888, 4, 12, 1);
+    check_full_width(FX_FMT_RGB565, 2, 0, 1);
+    check_full_width(FX_FMT_RGB565, 2, 6, 0);
+}
+
 /* Rows of FX_STOS_MIN_BYTES and more leave the vector path for rep stosq. */
 FX_TEST(rect_fill_matches_plain_loop_around_the_long_run_switch)
 {
