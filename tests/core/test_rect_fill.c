@@ -50,48 +50,77 @@ static int levels(uint8_t out[3])
     return n;
 }
 
+/* A w x ROWS surface in a buffer of its own (64-byte aligned), rows
+ * stride_pad bytes apart beyond the pixels, row 0 last in memory when flip;
+ * ref is the reference copy. */
+typedef struct {
+    uint8_t *mem, *ref, *row0;
+    size_t size;
+    int32_t stride;
+    int bytes;
+    fx_surface s;
+} buffer;
+
+static int buffer_make(buffer *b, int32_t w, fx_format f, int bytes, int stride_pad, int flip)
+{
+    int32_t stride = w * bytes + stride_pad;
+    b->size = (size_t)stride * ROWS;
+    b->mem = aligned_alloc(64, (b->size + 63) & ~(size_t)63);
+    b->ref = malloc(b->size);
+    FX_CHECK(b->mem && b->ref);
+    if (!b->mem || !b->ref) {
+        free(b->mem);
+        free(b->ref);
+        return 0;
+    }
+    b->row0 = flip ? b->mem + (size_t)stride * (ROWS - 1) : b->mem;
+    b->stride = flip ? -stride : stride;
+    b->bytes = bytes;
+    FX_CHECK_EQ(fx_surface_init(&b->s, b->row0, w, ROWS, b->stride, f), 0);
+    return 1;
+}
+
+static void buffer_drop(buffer *b)
+{
+    free(b->mem);
+    free(b->ref);
+}
+
+/* Columns [x0, x1) of random rows filled at the buffer's fill level over
+ * random bytes, against the plain loop; 0 (and a message) on a difference. */
+static int fill_matches(buffer *b, int32_t x0, int32_t x1, const char *what, int pad, int flip)
+{
+    for (size_t i = 0; i < b->size; i++)
+        b->mem[i] = (uint8_t)next();
+    memcpy(b->ref, b->mem, b->size);
+    int32_t y0 = (int32_t)(next() % 2), y1 = y0 + 1 + (int32_t)(next() % (ROWS - y0));
+    fx_rect r = {x0, y0, x1, y1};
+    uint32_t v = b->bytes == 4 ? next() : next() & 0xFFFF;
+    fx_rect_fill_native(&b->s, r, v);
+    plain_fill(b->ref + (b->row0 - b->mem), b->stride, b->bytes, r, v);
+    if (memcmp(b->mem, b->ref, b->size) == 0)
+        return 1;
+    FX_CHECK_MSG(0, "%s: level %d bpp %d pad %d flip %d: columns %d..%d of surface width %d, rows %d..%d",
+                 what, b->s.fill_isa, b->bytes * 8, pad, flip, x0, x1, b->s.w, y0, y1);
+    return 0;
+}
+
 /* Fills every width and start column at each level; stride_pad shifts the
  * alignment from row to row, flip walks rows backwards in memory. */
 static void check_widths(fx_format f, int bytes, int stride_pad, int flip, int32_t n_lo, int32_t n_hi)
 {
-    int32_t w = n_hi + 64 / bytes + 1;
-    int32_t stride = w * bytes + stride_pad;
-    size_t size = (size_t)stride * ROWS;
-    uint8_t *mem = aligned_alloc(64, (size + 63) & ~(size_t)63), *ref = malloc(size);
-    FX_CHECK(mem && ref);
-    if (!mem || !ref) {
-        free(mem);
-        free(ref);
+    buffer b;
+    if (!buffer_make(&b, n_hi + 64 / bytes + 1, f, bytes, stride_pad, flip))
         return;
-    }
-    uint8_t *row0 = flip ? mem + (size_t)stride * (ROWS - 1) : mem;
-    int32_t s_stride = flip ? -stride : stride;
-    fx_surface s;
-    FX_CHECK_EQ(fx_surface_init(&s, row0, w, ROWS, s_stride, f), 0);
     uint8_t lv[3];
-    int nl = levels(lv);
-    int bad = 0;
-    for (int l = 0; l < nl && !bad; l++) {
-        s.fill_isa = lv[l];
-        for (int32_t x0 = 0; x0 < 64 / bytes && !bad; x0++)
-            for (int32_t n = n_lo; n <= n_hi && !bad; n++) {
-                for (size_t i = 0; i < size; i++)
-                    mem[i] = (uint8_t)next();
-                memcpy(ref, mem, size);
-                int32_t y0 = (int32_t)(next() % 2), y1 = y0 + 1 + (int32_t)(next() % (ROWS - y0));
-                fx_rect r = {x0, y0, x0 + n, y1};
-                uint32_t v = bytes == 4 ? next() : next() & 0xFFFF;
-                fx_rect_fill_native(&s, r, v);
-                plain_fill(ref + (row0 - mem), s_stride, bytes, r, v);
-                if (memcmp(mem, ref, size) != 0) {
-                    FX_CHECK_MSG(0, "level %d bpp %d pad %d flip %d: x0 %d width %d rows %d..%d",
-                                 lv[l], bytes * 8, stride_pad, flip, x0, n, y0, y1);
-                    bad = 1;
-                }
-            }
+    int nl = levels(lv), ok = 1;
+    for (int l = 0; l < nl && ok; l++) {
+        b.s.fill_isa = lv[l];
+        for (int32_t x0 = 0; x0 < 64 / bytes && ok; x0++)
+            for (int32_t n = n_lo; n <= n_hi && ok; n++)
+                ok = fill_matches(&b, x0, x0 + n, "widths", stride_pad, flip);
     }
-    free(mem);
-    free(ref);
+    buffer_drop(&b);
 }
 
 static void check_format(fx_format f, int bytes, int stride_pad, int flip)
@@ -119,42 +148,16 @@ FX_TEST(rect_fill_matches_plain_loop_16bit)
 static void check_full_width(fx_format f, int bytes, int stride_pad, int flip)
 {
     uint8_t lv[3];
-    int nl = levels(lv);
-    for (int32_t w = 1; w <= MAXW; w++) {
-        int32_t stride = w * bytes + stride_pad;
-        size_t size = (size_t)stride * ROWS;
-        uint8_t *mem = malloc(size), *ref = malloc(size);
-        FX_CHECK(mem && ref);
-        if (!mem || !ref) {
-            free(mem);
-            free(ref);
+    int nl = levels(lv), ok = 1;
+    for (int32_t w = 1; w <= MAXW && ok; w++) {
+        buffer b;
+        if (!buffer_make(&b, w, f, bytes, stride_pad, flip))
             return;
+        for (int l = 0; l < nl && ok; l++) {
+            b.s.fill_isa = lv[l];
+            ok = fill_matches(&b, 0, w, "full width", stride_pad, flip);
         }
-        uint8_t *row0 = flip ? mem + (size_t)stride * (ROWS - 1) : mem;
-        int32_t s_stride = flip ? -stride : stride;
-        fx_surface s;
-        FX_CHECK_EQ(fx_surface_init(&s, row0, w, ROWS, s_stride, f), 0);
-        int bad = 0;
-        for (int l = 0; l < nl && !bad; l++) {
-            s.fill_isa = lv[l];
-            for (size_t i = 0; i < size; i++)
-                mem[i] = (uint8_t)next();
-            memcpy(ref, mem, size);
-            int32_t y0 = (int32_t)(next() % 2), y1 = y0 + 1 + (int32_t)(next() % (ROWS - y0));
-            fx_rect r = {0, y0, w, y1};
-            uint32_t v = bytes == 4 ? next() : next() & 0xFFFF;
-            fx_rect_fill_native(&s, r, v);
-            plain_fill(ref + (row0 - mem), s_stride, bytes, r, v);
-            if (memcmp(mem, ref, size) != 0) {
-                FX_CHECK_MSG(0, "level %d bpp %d pad %d flip %d: surface width %d rows %d..%d",
-                             lv[l], bytes * 8, stride_pad, flip, w, y0, y1);
-                bad = 1;
-            }
-        }
-        free(mem);
-        free(ref);
-        if (bad)
-            return;
+        buffer_drop(&b);
     }
 }
 
