@@ -278,22 +278,24 @@ static void fill_run(uint8_t *lo, uint32_t len, uint32_t v, unsigned bytes)
 #define FX_RUN_STOS_BYTES UINT32_MAX
 #endif
 
-/* W: the widest store that fits the shortest interior row (w bytes). */
-#define FX_RUN_ROWS_B(B)                           \
-    do {                                           \
-        if (w >= FX_RUN_STOS_BYTES)                \
+/* W: the widest store that fits the shortest interior row (w bytes); a
+ * width below the pixel size never occurs (w >= 2 pixels), the (B) tests
+ * only keep such loops from being compiled. */
+#define FX_RUN_ROWS_B(B)                                                                          \
+    do {                                                                                          \
+        if (w >= FX_RUN_STOS_BYTES)                                                               \
             for (; (kn = (uint32_t)(acc >> 32)) <= kend; acc += R, k = kn, rowa += (uintptr_t)st) \
-                fill_run(FX_RUN_LO(k, kn), kn - k, v, bytes); \
-        else if (w >= 32)                          \
-            FX_RUN_ROWS_DIR(B, 32);                \
-        else if (w >= 16)                          \
-            FX_RUN_ROWS_DIR(B, 16);                \
-        else if (w >= 8 || (B) == 4)               \
-            FX_RUN_ROWS_DIR(B, 8);                 \
-        else if (w >= 4 || (B) == 2)               \
-            FX_RUN_ROWS_DIR(B, 4);                 \
-        else                                       \
-            FX_RUN_ROWS_DIR(B, 2);                 \
+                fill_run(FX_RUN_LO(k, kn), kn - k, v, bytes);                                     \
+        else if (w >= 32)                                                                         \
+            FX_RUN_ROWS_DIR(B, 32);                                                               \
+        else if (w >= 16)                                                                         \
+            FX_RUN_ROWS_DIR(B, 16);                                                               \
+        else if (w >= 8 || (B) == 4)                                                              \
+            FX_RUN_ROWS_DIR(B, 8);                                                                \
+        else if (w >= 4 || (B) == 2)                                                              \
+            FX_RUN_ROWS_DIR(B, 4);                                                                \
+        else                                                                                      \
+            FX_RUN_ROWS_DIR(B, 2);                                                                \
     } while (0)
 
 /* Steps [k0, k0 + n) of an x-major line with minor >= 1 and

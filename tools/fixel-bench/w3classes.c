@@ -4,14 +4,16 @@
  * writes one pixel per row, so every pixel is a new cache line (and, in
  * XRGB8888, nearly every one a new 4 KiB page); an x-major line with fewer
  * than 4 pixels per row ("mid") starts a new line every 1-3 pixels; one
- * with 4 or more ("shallow", fixel's run path) writes runs. The whole-W3
+ * with 4 or more ("shallow") writes runs. (fixel draws x-major lines of 2
+ * or more pixels a row as runs, so most "mid" lines too.) The whole-W3
  * ratio is the classes' ratios weighted by their time, so this says which
  * class holds it back and whether that class is at the machine's store
  * floor: "floor" is a plain C loop storing the same pixels of the steep
  * and the mid lines, one store a pixel (the DDA with nothing else; no
  * library): what a per-pixel writer pays for them here. For the steep
- * lines, one pixel a cache line, that is the least anyone pays; fixel's
- * mid walk (independent steps) beats its chained loop (docs/PERFORMANCE.md). */
+ * lines, one pixel a cache line, that is the least anyone pays; on the mid
+ * lines fixel's DDA (independent steps) and its runs beat the chained
+ * loop (docs/PERFORMANCE.md). */
 #include "bench.h"
 #include <stdio.h>
 #include <stdlib.h>
