@@ -2,6 +2,7 @@
 # fixel — the one entry point.
 #   make                 library (static + shared), tools, fixel.pc
 #   make run             the main job (headless on a machine without a display)
+#   make check           the quick loop: unit, golden and script-error suites, plain and ASan
 #   make test            every test suite, plain and under ASan+UBSan, with a total
 #   make bench           the benchmark table (tools/fixel-bench)
 #   make deps            install the Debian packages the build needs (root) or say how
@@ -239,7 +240,7 @@ build_suites = "$(1)/tests/unit" \
 BUILD_SUITES = $(call build_suites,$(BUILD))
 
 test-plain: all $(TEST_BIN) $(GOLDEN_BIN)
-	@sh tests/run-suites.sh $(BUILD_SUITES)
+	@bash tests/run-suites.sh $(BUILD_SUITES)
 
 test-asan:
 	@$(MAKE) --no-print-directory SAN=1 test-plain
@@ -259,15 +260,35 @@ test:
 	@sh tests/deps.sh --for "make test" $(sort $(DEB_PKGS) $(TEST_DEB_PKGS))
 	@$(MAKE) --no-print-directory test-nodeps
 
+# Suites run TEST_JOBS at a time (tests/run-suites.sh; the ones marked
+# "solo:" alone): most use one core, and CI's machine has two.
+TEST_JOBS ?= $(shell n=$$(nproc 2>/dev/null || echo 1); [ $$n -gt 4 ] && n=4; echo $$n)
 test-nodeps:
 	@$(MAKE) --no-print-directory test-bins
 	@$(MAKE) --no-print-directory SAN=1 test-bins
-	@sh tests/run-suites.sh --total \
+	@bash tests/run-suites.sh --total -j $(TEST_JOBS) \
 	  $(call build_suites,$(PLAIN_BUILD)) \
 	  $(call build_suites,$(ASAN_BUILD)) \
 	  "sh tests/check-freestanding.sh '$(CC)' '$(NM)' build/freestanding $(CORE_SRC)" \
 	  "sh tests/check-layers.sh" \
 	  $(TEST_SUITES)
+
+# The edit-compile-test loop: the build set only (unit, golden, course
+# golden and script-error suites, plain and under ASan+UBSan, and the layer
+# rules), a few minutes on two cores; `make test` is everything.
+check_suites = "$(1)/tests/unit" \
+	"$(1)/tests/golden --dir tests/golden --out $(1)/golden" \
+	"$(1)/tests/golden --dir tests/golden/course --scripts examples/course --out $(1)/golden-course" \
+	"sh tests/script-errors.sh $(1)/bin/fixel-draw $(1)/script-errors"
+check:
+	@sh tests/deps.sh --for "make check" $(sort $(DEB_PKGS))
+	@$(MAKE) --no-print-directory check-nodeps
+check-nodeps:
+	@$(MAKE) --no-print-directory test-bins
+	@$(MAKE) --no-print-directory SAN=1 test-bins
+	@bash tests/run-suites.sh --total -j $(TEST_JOBS) \
+	  $(call check_suites,$(PLAIN_BUILD)) $(call check_suites,$(ASAN_BUILD)) "sh tests/check-layers.sh"
+.PHONY: check check-nodeps
 
 # Every golden set, in one go (`git status` then shows what changed; look at
 # the pictures before committing):
@@ -395,6 +416,7 @@ help:
 	@echo '  lib                  libfixel.a and libfixel.so only'
 	@echo '  tools                every tools/<name>/ program into $(BUILD)/bin/'
 	@echo '  run                  the main job (fixel-demo, or the showcase rendered headless)'
+	@echo '  check                the quick loop: unit, golden, script errors, plain and ASan'
 	@echo '  test                 every suite, plain and under ASan+UBSan, with a total'
 	@echo '                         (QUICK=1 skips test-arm, FIXEL_SKIP_KERNEL=1 the kernel rig)'
 	@echo '  test-plain           the suites of one build (SAN=1 for the sanitized one)'

@@ -7,4 +7,4 @@ TEST_SUITES += "sh tests/abi/abi.sh $(BUILD) $(VERSION) $(SOMAJOR) $(NM)" \
                "sh tests/cxx/cxx.sh $(BUILD) '$(LDLIBS)'"
 .PHONY: test-abi
 test-abi: all
-	@sh tests/run-suites.sh "sh tests/abi/abi.sh $(BUILD) $(VERSION) $(SOMAJOR) $(NM)" "sh tests/cxx/cxx.sh $(BUILD) '$(LDLIBS)'"
+	@bash tests/run-suites.sh "sh tests/abi/abi.sh $(BUILD) $(VERSION) $(SOMAJOR) $(NM)" "sh tests/cxx/cxx.sh $(BUILD) '$(LDLIBS)'"

@@ -18,6 +18,6 @@ $(GLUT_TEST_BIN): $(GLUT_TEST_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/lib/r
 
 .PHONY: test-glut
 test-glut: $(GLUT_TEST_BIN) $(GLUT_A) $(LIB_A)
-	@sh tests/run-suites.sh "$(GLUT_TEST_BIN)" "sh tests/glut/progs.sh $(BUILD)"
+	@bash tests/run-suites.sh "$(GLUT_TEST_BIN)" "sh tests/glut/progs.sh $(BUILD)"
 TEST_SUITES += "$(GLUT_TEST_BIN)" "sh tests/glut/progs.sh $(BUILD)"
 test-bins: $(GLUT_TEST_BIN)

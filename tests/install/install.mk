@@ -5,7 +5,7 @@ TEST_DEB_PKGS += man-db systemd
 TEST_SUITES += "sh tests/install/install.sh $(BUILD)"
 .PHONY: test-install
 test-install: all
-	@sh tests/run-suites.sh "sh tests/install/install.sh $(BUILD)"
+	@bash tests/run-suites.sh "sh tests/install/install.sh $(BUILD)"
 
 # `make deb`: Debian packages for amd64, arm64 and armhf (tests/deb/deb.sh);
 # DEB_ARCHES= to choose. Installs what it needs first (root) or names it.
@@ -15,4 +15,4 @@ DEB_BUILD_DEB_PKGS := dpkg-dev debhelper lintian fakeroot crossbuild-essential-a
 .PHONY: deb
 deb:
 	@sh tests/deps.sh --for "make deb" $(sort $(DEB_PKGS) $(DEB_BUILD_DEB_PKGS))
-	@sh tests/run-suites.sh "sh tests/deb/deb.sh build/deb $(DEB_ARCHES)"
+	@bash tests/run-suites.sh "sh tests/deb/deb.sh build/deb $(DEB_ARCHES)"

@@ -15,7 +15,7 @@ $(KBENCH_BIN): $(BUILD)/obj/tests/kbench/kbench.o
 test-bins: $(KBENCH_BIN)
 endif
 TEST_DEB_PKGS += mosquitto mosquitto-clients libmosquitto-dev libcjson-dev python3
-TEST_SUITES += "sh tests/kbench/run.sh --smoke $(BUILD)/bin/fixel-kiosk $(KBENCH_BIN) $(BUILD)/kbench-smoke"
+TEST_SUITES += "solo: sh tests/kbench/run.sh --smoke $(BUILD)/bin/fixel-kiosk $(KBENCH_BIN) $(BUILD)/kbench-smoke"
 # make bench runs it before the drawing table (tools/fixel-bench/bench.mk's
 # recipe untouched, as tests/glut/glut.mk does)
 bench: bench-kiosk

@@ -32,7 +32,7 @@ pids=""
 cleanup() { for p in $pids; do kill "$p" 2>/dev/null; done; }
 trap cleanup EXIT INT TERM
 # wait up to $1 tenths of a second for the command after it to succeed
-waitfor() { n=$1; shift; i=0; while [ $i -lt $n ]; do "$@" && return 0; sleep 0.1; i=$((i + 1)); done; return 1; }
+. "$(cd "$(dirname "$0")" && pwd)/../lib/patience.sh" # waitfor, scaled by the measured PATIENCE
 port=$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])')
 listening() { python3 -c 'import socket,sys; socket.create_connection(("127.0.0.1",int(sys.argv[1])),1)' $port 2>/dev/null; }
 

@@ -67,6 +67,6 @@ deps-kernel:
 # Part of `make test`; FIXEL_SKIP_KERNEL=1 leaves it out (a machine without
 # apt access or the time for a first download).
 ifneq ($(FIXEL_SKIP_KERNEL),1)
-TEST_SUITES += "$(MAKE) --no-print-directory -s test-kernel"
+TEST_SUITES += "solo: $(MAKE) --no-print-directory -s test-kernel"
 endif
 .PHONY: deps-kernel

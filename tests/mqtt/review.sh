@@ -29,7 +29,9 @@ trap cleanup EXIT INT TERM
 PA=$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])')
 # waitfor S CMD...: until CMD succeeds, at most S seconds (a broken kiosk
 # fails in bounded time even when each try waits for a retained message)
-waitfor() { end=$(( $(date +%s) + $1 )); shift; while :; do "$@" && return 0; [ $(date +%s) -ge $end ] && return 1; sleep 0.1; done; }
+. "$(cd "$(dirname "$0")" && pwd)/../lib/patience.sh"
+# waitfor SECONDS COMMAND (seconds here, times the measured PATIENCE)
+waitfor() { end=$(( $(date +%s) + $1 * PATIENCE )); shift; while :; do "$@" && return 0; [ $(date +%s) -ge $end ] && return 1; sleep 0.1; done; }
 pub() { mosquitto_pub -h 127.0.0.1 -p $PA "$@"; }
 retained() { mosquitto_sub -h 127.0.0.1 -p $PA -t "$1" -C 1 -W 1 2>/dev/null; }
 field() { retained "$1/status" | sed -n "s/.*\"$2\":\"\{0,1\}\([^\",}]*\).*/\1/p"; }

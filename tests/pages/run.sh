@@ -28,7 +28,7 @@ rm -rf "$out"; mkdir -p "$out"; out=$(cd "$out" && pwd)
 pids=""
 cleanup() { for p in $pids; do kill "$p" 2>/dev/null; done; }
 trap cleanup EXIT INT TERM
-waitfor() { n=$1; shift; i=0; while [ $i -lt $n ]; do "$@" && return 0; sleep 0.1; i=$((i + 1)); done; return 1; }
+. "$(cd "$(dirname "$0")" && pwd)/../lib/patience.sh" # waitfor, scaled by the measured PATIENCE
 # everything above the status line (the page indicator lives in it)
 TOP="0 0 480 306"
 

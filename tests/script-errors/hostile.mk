@@ -10,4 +10,7 @@ test-hostile:
 TEST_SUITES += "$(MAKE) --no-print-directory -s $(PLAIN_BUILD)/bin/fixel-shot && sh tests/script-errors/hostile.sh $(PLAIN_BUILD)/bin/fixel-draw $(PLAIN_BUILD)/bin/fixel-kiosk $(PLAIN_BUILD)/hostile 1" \
                "$(MAKE) --no-print-directory -s SAN=1 $(ASAN_BUILD)/bin/fixel-shot && sh tests/script-errors/hostile.sh $(ASAN_BUILD)/bin/fixel-draw $(ASAN_BUILD)/bin/fixel-kiosk $(ASAN_BUILD)/hostile 3"
 
+# /usr/bin/time measures the sanitized runs' RSS (their memory cap)
+TEST_DEB_PKGS += time
+
 .PHONY: test-hostile

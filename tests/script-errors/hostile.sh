@@ -15,12 +15,21 @@ export UBSAN_OPTIONS=halt_on_error=1:exitcode=99:print_stacktrace=1
 export ASAN_OPTIONS=exitcode=98:detect_leaks=0
 san=0; case "$draw" in *asan*) san=1;; esac
 have_time=0; [ -x /usr/bin/time ] && have_time=1
+# A sanitized build reserves terabytes of address space for its shadow, so
+# it can never run under the plain builds' ulimit -v; its cap is the RSS
+# that /usr/bin/time measures (the `time` package, in make test's set).
+# Without it the sanitized runs go uncapped and say so once, instead of
+# every one failing on the address-space limit (issue #39's fresh root).
+[ $san = 1 ] && [ $have_time = 0 ] && echo "hostile: no /usr/bin/time (package time): the sanitized runs' RSS is not measured"
 
 # check NAME WANT_RC MESSAGE-SUBSTRING(or '') COMMAND...
 check() {
     name=$1; want=$2; msg=$3; shift 3
     if [ $san = 1 ] && [ $have_time = 1 ]; then
         ( ulimit -t "$limit"; timeout -k 1 "$wall" /usr/bin/time -f '%M' -o "$out/rss" "$@" ) > "$out/stdout" 2> "$out/stderr"; rc=$?
+    elif [ $san = 1 ]; then
+        ( ulimit -t "$limit"; timeout -k 1 "$wall" "$@" ) > "$out/stdout" 2> "$out/stderr"; rc=$?
+        echo 0 > "$out/rss"
     else
         ( ulimit -v 1048576; ulimit -t "$limit"; timeout -k 1 "$wall" "$@" ) > "$out/stdout" 2> "$out/stderr"; rc=$?
         echo 0 > "$out/rss"

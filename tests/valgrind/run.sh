@@ -33,7 +33,7 @@ else
            "sh tests/kiosk/info.sh $vb/fixel-info" \
            "$vb/fixel-demo --golden tests/golden/demo"
 fi
-sh tests/run-suites.sh "$@" > "$out/suites.log" 2>&1
+bash tests/run-suites.sh "$@" > "$out/suites.log" 2>&1
 src=$?
 tail -n 1 "$out/suites.log"
 P=0; F=0

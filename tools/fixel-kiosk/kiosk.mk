@@ -3,7 +3,7 @@
 TEST_SUITES += "sh tests/kiosk/run.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk"
 # constant memory over a run (issue #14): a short soak and valgrind pass in
 # make test; make kiosk-soak is the long one whose numbers docs/kiosk.md quotes
-TEST_SUITES += "sh tests/kiosk/soak.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-soak 20000 1000"
+TEST_SUITES += "solo: sh tests/kiosk/soak.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-soak 20000 1000"
 KIOSK_SOAK_LINES ?= 200000
 KIOSK_SOAK_VG    ?= 5000
 .PHONY: kiosk-golden-update kiosk-soak
@@ -45,9 +45,9 @@ $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/fixel-kiosk/*.c)): $(KIOSK_STAM
 $(KIOSK_STAMP):
 	@mkdir -p $(@D)
 	@echo '$(KIOSK_FEATURES)' > $@
-TEST_SUITES += "sh tests/kiosk/notify.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-notify"
+TEST_SUITES += "solo: sh tests/kiosk/notify.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-notify"
 TEST_DEB_PKGS += libsystemd-dev python3
 # output sections: one process, one screen per section (issue #25)
-TEST_SUITES += "sh tests/kiosk/screens.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-screens"
+TEST_SUITES += "solo: sh tests/kiosk/screens.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-screens"
 # --threads: frames drawn in bands on 2, 3, 4 threads equal one thread's (issue #27)
 TEST_SUITES += "sh tests/kiosk/threads.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-threads"
