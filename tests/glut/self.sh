@@ -1,0 +1,80 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# Self-checking GLUT programs (tests/glut/self/*.c), each built against
+# fixel's layer (run headless) and, when freeglut, Mesa and xvfb-run are
+# installed (sh tests/glut/deps.sh), against freeglut + Mesa under Xvfb:
+# both must print the expected lines, so the expectations are freeglut's.
+# Also what a headless run tells the user (issue #39).
+# usage: self.sh BUILD   (needs BUILD/libfixel-glut.a); "glut-self: N passed, N failed"
+B=${1:-build}
+out=$B/glut/self
+mkdir -p "$out"
+P=0 F=0
+pass() { P=$((P + 1)); echo "PASS glut-self $1"; }
+fail() { F=$((F + 1)); echo "FAIL glut-self $1"; [ -f "$2" ] && cat "$2"; }
+if ! ${CC:-gcc} -std=gnu11 -O2 -Wall -Wextra -Werror -I boards/glut/include tests/glut/self/winlife.c \
+        "$B/libfixel-glut.a" "$B/libfixel.a" ${GLUT_FIXEL_LIBS:-} -lm -o "$out/winlife" 2> "$out/build.log"; then
+    cat "$out/build.log"; echo "glut-self: 0 passed, 1 failed"; exit 1
+fi
+mesa=
+if command -v xvfb-run >/dev/null && ${CC:-gcc} -std=gnu11 -O2 -o "$out/winlife-mesa" \
+        tests/glut/self/winlife.c -lglut -lGL 2> "$out/build-mesa.log"; then
+    mesa=1
+else
+    echo "glut-self: freeglut/Mesa/xvfb-run absent: the Mesa half is skipped (sh tests/glut/deps.sh)"
+fi
+# mode, wanted exit status, wanted stdout (lines joined by spaces)
+cases='size-before-init|0|ok window-width ok window-height ok init-width ok init-height ok init-x ok init-y ok viewport-width ok viewport-height close
+destroy-outside|7|returned ok current-window close
+destroy-exit|0|display destroyed close
+destroy-return|7|display destroyed close returned'
+echo "$cases" > "$out/cases"
+while IFS='|' read -r mode rc want; do
+    FIXEL_BACKEND=memory "$out/winlife" "$mode" > "$out/$mode.out" 2> "$out/$mode.err"
+    got_rc=$?
+    got=$(tr '\n' ' ' < "$out/$mode.out" | sed 's/ $//')
+    if [ "$got_rc" = "$rc" ] && [ "$got" = "$want" ]; then pass "fixel $mode"
+    else echo "  exit $got_rc, stdout: $got"; fail "fixel $mode" "$out/$mode.err"; fi
+done < "$out/cases"
+if [ -n "$mesa" ]; then
+    cat > "$out/mesa.sh" <<M
+while IFS='|' read -r mode rc want; do
+    LIBGL_ALWAYS_SOFTWARE=1 timeout 60 "$out/winlife-mesa" "\$mode" > "$out/\$mode.mesa" 2>&1
+    echo "\$mode \$?" >> "$out/mesa.rc"
+done < "$out/cases"
+M
+    rm -f "$out/mesa.rc"
+    xvfb-run -a -s "-screen 0 1024x768x24 -nolisten tcp" sh "$out/mesa.sh"
+    while IFS='|' read -r mode rc want; do
+        got_rc=$(awk -v m="$mode" '$1 == m {print $2}' "$out/mesa.rc" 2>/dev/null)
+        got=$(tr '\n' ' ' < "$out/$mode.mesa" | sed 's/ $//')
+        if [ "$got_rc" = "$rc" ] && [ "$got" = "$want" ]; then pass "mesa $mode"
+        else echo "  exit $got_rc, output: $got"; fail "mesa $mode"; fi
+    done < "$out/cases"
+fi
+# Issue #39: a run with nothing to show says so, with the window's size and
+# the variables that write a frame; a stall with no replay left says "none".
+FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=1 "$out/winlife" destroy-exit > /dev/null 2> "$out/quiet.err"
+if grep -q "FIXEL_BACKEND=memory: the 64x48 window runs headless and nothing is shown or written; FIXEL_GLUT_OUT=FILE.png writes a frame (FIXEL_GLUT_FRAMES=N" "$out/quiet.err"
+then pass "headless-without-out-says-so"; else fail "headless-without-out-says-so" "$out/quiet.err"; fi
+FIXEL_BACKEND=memory FIXEL_GLUT_OUT="$out/x.png" FIXEL_GLUT_FRAMES=1 "$out/winlife" destroy-exit > /dev/null 2> "$out/out.err"
+if [ -f "$out/x.png" ] && ! grep -q "nothing is shown" "$out/out.err"; then pass "headless-with-out-quiet"
+else fail "headless-with-out-quiet" "$out/out.err"; fi
+# With no display asked for and none there, the library's line names the
+# memory surface: it must be the window's 64x48, not a 640x480 screen.
+env -u FIXEL_BACKEND FIXEL_DRM_DEVICE=/nonexistent/card FIXEL_FB_DEVICE=/nonexistent/fb \
+    "$out/winlife" destroy-exit > /dev/null 2> "$out/auto.err"
+if grep -q "memory" "$out/auto.err"; then
+    if grep -q "memory 64x48" "$out/auto.err" && grep -q "no display: the 64x48 window" "$out/auto.err"
+    then pass "no-display-window-size"; else fail "no-display-window-size" "$out/auto.err"; fi
+else
+    echo "glut-self: a display opened here: no-display-window-size not checked"
+fi
+${CC:-gcc} -std=gnu11 -O2 -I boards/glut/include tests/glut/progs/bresenham.c "$B/libfixel-glut.a" \
+    "$B/libfixel.a" ${GLUT_FIXEL_LIBS:-} -lm -o "$out/bresenham" 2> "$out/build.log" || cat "$out/build.log"
+FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=3 "$out/bresenham" > /dev/null 2> "$out/stall.err"
+st=$?
+if [ $st = 3 ] && grep -q "stalled at frame 1 of 3 (no replay event left)" "$out/stall.err" && ! grep -q -- "-1" "$out/stall.err"
+then pass "stall-none-left"; else echo "  exit $st"; fail "stall-none-left" "$out/stall.err"; fi
+echo "glut-self: $P passed, $F failed"
+[ $F -eq 0 ]
