@@ -19,9 +19,12 @@
  * HELVETICA_18; the two fixed fonts keep their 8/9 pixel advance).
  *
  * Stroke fonts trace the 6x10 glyphs with GL lines through the lit pixels'
- * centres, in GLUT's stroke units (104.76 wide, 119.05 above the baseline
- * for ROMAN): freeglut's stroke data are its own (no packaged font holds
- * them), so they are not reproduced. */
+ * centres, in GLUT's stroke units (104.762 wide, 119.05 above the baseline);
+ * glutStrokeHeight, MONO_ROMAN's advance and the newline of
+ * glutStrokeString are freeglut's. freeglut's glyphs and ROMAN's advances
+ * are a table of its own: its advances are no one scale of the Hershey
+ * simplex Roman's widths (hershey-fonts-data), so they are not derived from
+ * it, and not copied. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -344,11 +347,16 @@ int glutBitmapHeight(void *font)
     return i >= 2 ? XFONTS[i].height : 0;
 }
 
-#define STROKE_W 104.76
+/* freeglut's advance of every MONO_ROMAN character (and of the space in
+ * ROMAN), its glutStrokeHeight (the line spacing of glutStrokeString) for
+ * both fonts, measured; the glyphs' own height, ROMAN's capitals. */
+#define STROKE_W 104.762
+#define STROKE_LINE 152.381
 #define STROKE_H 119.05
 void glutStrokeCharacter(void *font, int ch)
 {
-    (void)font;
+    if (font_index(font) < 0 || font_index(font) > 1 || ch < 32 || ch > 127)
+        return; /* freeglut has glyphs for 32-127 only */
     const fx_font *f = fx_font_builtin();
     uint32_t g = fx_font_glyph(f, (uint32_t)(ch & 0xFF));
     double sx = STROKE_W / f->width, sy = STROKE_H / 8.0; /* rows 0..7 above the baseline */
@@ -381,32 +389,50 @@ void glutStrokeCharacter(void *font, int ch)
 #undef LIT
     glTranslated(STROKE_W, 0, 0);
 }
+/* As freeglut: a newline goes back by the line's advance and down by
+ * glutStrokeHeight. */
 void glutStrokeString(void *font, const unsigned char *s)
 {
-    for (; s && *s; s++)
-        glutStrokeCharacter(font, *s);
+    if (font_index(font) < 0 || font_index(font) > 1)
+        return;
+    double x = 0;
+    for (; s && *s; s++) {
+        if (*s == '\n') {
+            glTranslated(-x, -STROKE_LINE, 0);
+            x = 0;
+        } else if (*s >= 32 && *s <= 127) {
+            glutStrokeCharacter(font, *s);
+            x += STROKE_W;
+        }
+    }
 }
-int glutStrokeWidth(void *font, int ch)
-{
-    (void)font, (void)ch;
-    return (int)(STROKE_W + 0.5);
-}
+int glutStrokeWidth(void *font, int ch) { return (int)(glutStrokeWidthf(font, ch) + 0.5f); }
 GLfloat glutStrokeWidthf(void *font, int ch)
 {
-    (void)font, (void)ch;
+    if (font_index(font) < 0 || font_index(font) > 1 || ch < 32 || ch > 127)
+        return 0;
     return (GLfloat)STROKE_W;
 }
 int glutStrokeLength(void *font, const unsigned char *s)
 {
     return (int)(glutStrokeLengthf(font, s) + 0.5f);
 }
+/* The widest line, as freeglut. */
 GLfloat glutStrokeLengthf(void *font, const unsigned char *s)
 {
-    (void)font;
-    return s ? (GLfloat)(STROKE_W * (double)strlen((const char *)s)) : 0.0f;
+    double n = 0, line = 0;
+    for (; s && *s; s++) {
+        if (*s == '\n') {
+            if (line > n)
+                n = line;
+            line = 0;
+        } else {
+            line += glutStrokeWidthf(font, *s);
+        }
+    }
+    return (GLfloat)(line > n ? line : n);
 }
 GLfloat glutStrokeHeight(void *font)
 {
-    (void)font;
-    return (GLfloat)STROKE_H;
+    return font_index(font) == 0 || font_index(font) == 1 ? (GLfloat)STROKE_LINE : 0.0f;
 }

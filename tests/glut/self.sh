@@ -85,6 +85,13 @@ helv18:'
                 echo "FAIL glut-self glyphs $font: differing:$got (known:$want) $other"
             fi
         done > "$out/glyphs.judged"
+        grep '^stroke' "$out/glyphs.mesa" > "$out/stroke.mesa"
+        grep '^stroke' "$out/glyphs.fixel" > "$out/stroke.fixel"
+        if cmp -s "$out/stroke.mesa" "$out/stroke.fixel" && [ "$(wc -l < "$out/stroke.fixel")" = 53 ]; then
+            echo "PASS glut-self stroke metrics: glutStrokeHeight, MONO_ROMAN widths, glutStrokeLength's widest line"
+        else
+            echo "FAIL glut-self stroke metrics"; diff "$out/stroke.mesa" "$out/stroke.fixel" | head -5
+        fi >> "$out/glyphs.judged"
         cat "$out/glyphs.judged"
         P=$((P + $(grep -c '^PASS' "$out/glyphs.judged"))) F=$((F + $(grep -c '^FAIL' "$out/glyphs.judged")))
     fi

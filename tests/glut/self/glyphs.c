@@ -6,7 +6,7 @@
  * glutBitmapLength and the raster position after glutBitmapString of a
  * two-line string. tests/glut/self.sh runs it on fixel and on freeglut +
  * Mesa and compares the two outputs glyph by glyph. */
-#include <GL/glut.h>
+#include <GL/freeglut.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -42,6 +42,14 @@ static void display(void)
         printf("%s length %d string moved %g %g\n", names[f], glutBitmapLength(fonts[f], two), rp[0] - O,
                rp[1] - O);
     }
+    /* the stroke metrics freeglut has as single numbers (ROMAN's advances
+     * are freeglut's own table, not reproduced) */
+    const unsigned char two[] = "ab\ncde";
+    printf("stroke height %.3f %.3f length %.3f\n", glutStrokeHeight(GLUT_STROKE_ROMAN),
+           glutStrokeHeight(GLUT_STROKE_MONO_ROMAN), glutStrokeLengthf(GLUT_STROKE_MONO_ROMAN, two));
+    for (int c = 0; c < 256; c += 5)
+        printf("stroke mono %d width %.3f %d\n", c, glutStrokeWidthf(GLUT_STROKE_MONO_ROMAN, c),
+               glutStrokeWidth(GLUT_STROKE_MONO_ROMAN, c));
     fflush(stdout);
     exit(0);
 }
