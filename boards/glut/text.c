@@ -64,10 +64,6 @@ static const xfont XFONTS[9] = {
     [7] = {"GLUT_BITMAP_HELVETICA_12", "75dpi", "helvR12", 16, 0, 4},
     [8] = {"GLUT_BITMAP_HELVETICA_18", "75dpi", "helvR18", 23, 0, 5},
 };
-/* Where Debian, Fedora and old X11 installations keep them. */
-static const char *const XFONT_ROOTS[] = {
-    "/usr/share/fonts/X11", "/usr/share/X11/fonts", "/usr/X11R6/lib/X11/fonts", "/usr/lib/X11/fonts",
-};
 
 /* A loaded font: every glyph cut to freeglut's cell (adv x height, rows top
  * first, 1 bit a pixel, MSB left). */
@@ -80,6 +76,11 @@ typedef struct cellfont {
 static cellfont CF[9];
 
 #if defined(FXG_HAVE_FREETYPE)
+/* Where Debian, Fedora and old X11 installations keep them. */
+static const char *const XFONT_ROOTS[] = {
+    "/usr/share/fonts/X11", "/usr/share/X11/fonts", "/usr/X11R6/lib/X11/fonts", "/usr/lib/X11/fonts",
+};
+
 typedef struct ftapi {
     FT_Error (*init)(FT_Library *);
     FT_Error (*done)(FT_Library);
