@@ -58,7 +58,8 @@ static struct {
     long frames;
     int redisplay, leave;
     int in_loop; /* inside glutMainLoop */
-    int close_pending; /* glutDestroyWindow: the close callback is still due */
+    void (*close_pending)(void); /* glutDestroyWindow: the window's close callback, still due */
+    int had_window;    /* a window was created (and destroyed): its buffers are still held */
     int on_close; /* GLUT_ACTION_ON_WINDOW_CLOSE: what the end of glutMainLoop does */
     uint64_t t0_us, vclock_us;
     unsigned mods;
@@ -250,6 +251,18 @@ int glutCreateWindow(const char *title)
         }
     }
     place_window(G.env.fullscreen);
+    if (G.had_window) {
+        /* a window after glutDestroyWindow: a new GL context and buffers,
+         * and none of the old window's callbacks or attached menus (idle,
+         * timers and menus themselves are global in freeglut) */
+        fx_memfb_destroy(&fxg.fb);
+        free(fxg.depth);
+        fxg.depth = NULL;
+        G.display = NULL, G.reshape = NULL, G.keyboard = NULL, G.keyboard_up = NULL;
+        G.special = NULL, G.special_up = NULL, G.mouse = NULL, G.motion = NULL;
+        G.passive = NULL, G.wheel = NULL, G.visibility = NULL, G.close = NULL, G.entry = NULL;
+        memset(G.attached, 0, sizeof G.attached);
+    }
     if (G.headless && !G.env.out)
         /* a run with no display and no output file otherwise ends in silence
          * with status 0, looking as if it worked (issue #39) */
@@ -268,6 +281,7 @@ int glutCreateWindow(const char *title)
     if (G.app)
         install_app_callbacks();
     G.created = 1;
+    G.had_window = 1;
     return 1;
 }
 int fx_glut_offscreen_window(int w, int h)
@@ -297,11 +311,10 @@ int glutCreateSubWindow(int win, int x, int y, int w, int h)
  * of glutMainLoop, or at exit. */
 static void run_pending_close(void)
 {
-    if (G.close_pending) {
-        G.close_pending = 0;
-        if (G.close)
-            G.close();
-    }
+    void (*f)(void) = G.close_pending;
+    G.close_pending = NULL;
+    if (f)
+        f();
 }
 
 /* As freeglut: the window goes and the call returns; a program that
@@ -318,7 +331,7 @@ void glutDestroyWindow(int win)
     }
     G.created = 0;
     G.redisplay = 0;
-    G.close_pending = 1;
+    G.close_pending = G.close;
     static int registered;
     if (!registered && atexit(run_pending_close) == 0)
         registered = 1;

@@ -34,7 +34,8 @@ fi
 cases='size-before-init|0|ok window-width ok window-height ok init-width ok init-height ok init-x ok init-y ok viewport-width ok viewport-height close
 destroy-outside|7|returned ok current-window close
 destroy-exit|0|display destroyed close
-destroy-return|7|display destroyed close returned'
+destroy-return|7|display destroyed close returned
+destroy-create|7|ok second-id ok second-width ok second-height ok second-pixel close returned'
 echo "$cases" > "$out/cases"
 while IFS='|' read -r mode rc want; do
     FIXEL_BACKEND=memory "$out/winlife" "$mode" > "$out/$mode.out" 2> "$out/$mode.err"

@@ -7,7 +7,8 @@
  *   winlife size-before-init   glutInitWindowSize/Position before glutInit
  *   winlife destroy-outside    glutDestroyWindow outside glutMainLoop returns
  *   winlife destroy-exit       ... inside it: the loop ends, exit(0)
- *   winlife destroy-return     ... with GLUT_ACTION_GLUTMAINLOOP_RETURNS */
+ *   winlife destroy-return     ... with GLUT_ACTION_GLUTMAINLOOP_RETURNS
+ *   winlife destroy-create     a new window after glutDestroyWindow */
 #include <GL/freeglut.h>
 #include <stdio.h>
 #include <string.h>
@@ -42,6 +43,18 @@ static void size_display(void)
     glGetIntegerv(GL_VIEWPORT, vp);
     EQ("viewport-width", vp[2], 123);
     EQ("viewport-height", vp[3], 77);
+    glFlush();
+    glutLeaveMainLoop();
+}
+static void second_display(void)
+{
+    glClearColor(0, 1, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    unsigned char px[3];
+    glReadPixels(31, 23, 1, 1, GL_RGB, GL_UNSIGNED_BYTE, px);
+    EQ("second-width", glutGet(GLUT_WINDOW_WIDTH), 32);
+    EQ("second-height", glutGet(GLUT_WINDOW_HEIGHT), 24);
+    EQ("second-pixel", px[1], 255);
     glFlush();
     glutLeaveMainLoop();
 }
@@ -86,6 +99,17 @@ int main(int argc, char **argv)
         if (!strcmp(mode, "destroy-return"))
             glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
         glutDisplayFunc(destroy_display);
+        glutMainLoop();
+        printf("returned\n");
+        return 7;
+    }
+    if (!strcmp(mode, "destroy-create")) {
+        glutDestroyWindow(win);
+        glutInitWindowSize(32, 24);
+        win = glutCreateWindow("second");
+        EQ("second-id", win > 0, 1);
+        glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
+        glutDisplayFunc(second_display);
         glutMainLoop();
         printf("returned\n");
         return 7;
