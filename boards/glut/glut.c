@@ -57,6 +57,9 @@ static struct {
     int32_t win_x, win_y; /* on screen */
     long frames;
     int redisplay, leave;
+    int in_loop; /* inside glutMainLoop */
+    void (*close_pending)(void); /* glutDestroyWindow: the window's close callback, still due */
+    int had_window;    /* a window was created (and destroyed): its buffers are still held */
     int on_close; /* GLUT_ACTION_ON_WINDOW_CLOSE: what the end of glutMainLoop does */
     uint64_t t0_us, vclock_us;
     unsigned mods;
@@ -96,7 +99,11 @@ static struct {
     fx_input in;
     fx_input_dev kbd, mouse_dev;
     int32_t px, py; /* last pointer, window coords */
-} G;
+} G = {
+    /* glutInitWindowSize/Position may come before glutInit (freeglut keeps
+     * them), so the defaults are here and glutInit does not touch them */
+    .init_x = -1, .init_y = -1, .init_w = 300, .init_h = 300,
+};
 
 void fxg_log(const char *fmt, ...)
 {
@@ -125,8 +132,6 @@ void glutInit(int *pargc, char **argv)
     if (G.inited)
         return;
     G.inited = 1;
-    G.init_x = G.init_y = -1;
-    G.init_w = 300, G.init_h = 300;
     fxg_env_read(&G.env);
     if (G.env.replay)
         fxg_replay_load(&G.rp, G.env.replay); /* a bad line exits 5 now */
@@ -216,6 +221,9 @@ int glutCreateWindow(const char *title)
         /* the FIXEL_* display and input variables, as every fixel program */
         if (fx_app_options_from_env(&o) < 0)
             exit(1);
+        /* when no display opens, the library's log line names the memory
+         * surface it falls back to: make it the window, not 640x480 */
+        o.display.memory_w = G.init_w, o.display.memory_h = G.init_h;
         if (fx_app_open(&G.app, &o) < 0) {
             G.app = NULL;
             if (o.display.backend != FX_BACKEND_AUTO) {
@@ -243,6 +251,24 @@ int glutCreateWindow(const char *title)
         }
     }
     place_window(G.env.fullscreen);
+    if (G.had_window) {
+        /* a window after glutDestroyWindow: a new GL context and buffers,
+         * and none of the old window's callbacks or attached menus (idle,
+         * timers and menus themselves are global in freeglut) */
+        fx_memfb_destroy(&fxg.fb);
+        free(fxg.depth);
+        fxg.depth = NULL;
+        G.display = NULL, G.reshape = NULL, G.keyboard = NULL, G.keyboard_up = NULL;
+        G.special = NULL, G.special_up = NULL, G.mouse = NULL, G.motion = NULL;
+        G.passive = NULL, G.wheel = NULL, G.visibility = NULL, G.close = NULL, G.entry = NULL;
+        memset(G.attached, 0, sizeof G.attached);
+    }
+    if (G.headless && !G.env.out)
+        /* a run with no display and no output file otherwise ends in silence
+         * with status 0, looking as if it worked (issue #39) */
+        fxg_log("%s: the %dx%d window runs headless and nothing is shown or written; "
+                "FIXEL_GLUT_OUT=FILE.png writes a frame (FIXEL_GLUT_FRAMES=N: the N-th, then exit)",
+                G.env.headless ? "FIXEL_BACKEND=memory" : "no display", G.init_w, G.init_h);
     if (fxg_gl_init(G.init_w, G.init_h) < 0) {
         fxg_log("out of memory for a %dx%d window", G.init_w, G.init_h);
         exit(1);
@@ -255,6 +281,7 @@ int glutCreateWindow(const char *title)
     if (G.app)
         install_app_callbacks();
     G.created = 1;
+    G.had_window = 1;
     return 1;
 }
 int fx_glut_offscreen_window(int w, int h)
@@ -279,10 +306,44 @@ int glutCreateSubWindow(int win, int x, int y, int w, int h)
     fxg_unimplemented("glutCreateSubWindow", GL_INVALID_OPERATION);
     return 0;
 }
+/* freeglut calls a destroyed window's close callback later, where it
+ * really closes windows: at the end of the main-loop iteration, at the end
+ * of glutMainLoop, or at exit. */
+static void run_pending_close(void)
+{
+    void (*f)(void) = G.close_pending;
+    G.close_pending = NULL;
+    if (f)
+        f();
+}
+
+/* As freeglut: the window goes and the call returns; a program that
+ * destroys its window outside glutMainLoop carries on (conformance-style
+ * programs print their results after it). Inside the loop, the loop ends
+ * once the iteration is over, since no window is left, and
+ * GLUT_ACTION_ON_WINDOW_CLOSE says whether glutMainLoop exits or returns
+ * (tests/glut/self/winlife.c, checked against freeglut too). */
 void glutDestroyWindow(int win)
 {
-    (void)win;
-    exit(0);
+    if (!G.created || win != 1) {
+        fxg_log("glutDestroyWindow(%d): no such window", win);
+        return;
+    }
+    G.created = 0;
+    G.redisplay = 0;
+    G.close_pending = G.close;
+    static int registered;
+    if (!registered && atexit(run_pending_close) == 0)
+        registered = 1;
+    if (G.app) {
+        if (G.in_loop) {
+            fx_app_quit(G.app); /* glutMainLoop closes it */
+        } else {
+            fx_app *a = G.app;
+            G.app = NULL;
+            fx_app_close(a);
+        }
+    }
 }
 void glutSetWindow(int win) { (void)win; }
 int glutGetWindow(void) { return G.created ? 1 : 0; }
@@ -890,8 +951,9 @@ static void app_idle(void *u)
 static void app_close(void *u)
 {
     (void)u;
-    if (G.close)
+    if (G.close && G.created)
         G.close();
+    G.created = 0; /* once: glutMainLoop's end does not call it again */
 }
 
 /* ---- replay (headless input, FIXEL_GLUT_REPLAY; parsed by replay.c) ---- */
@@ -1014,8 +1076,11 @@ static uint64_t wall_us(void)
 }
 __attribute__((noreturn)) static void stalled(void)
 {
-    fxg_log("stalled at frame %ld of %ld (next replay event at frame %ld)", G.frames, G.env.frames,
-            G.rp.next < G.rp.n ? G.rp.ev[G.rp.next].frame : -1L);
+    if (G.rp.next < G.rp.n)
+        fxg_log("stalled at frame %ld of %ld (next replay event at frame %ld)", G.frames,
+                G.env.frames, G.rp.ev[G.rp.next].frame);
+    else
+        fxg_log("stalled at frame %ld of %ld (no replay event left)", G.frames, G.env.frames);
     exit(3);
 }
 
@@ -1033,13 +1098,15 @@ static int headless_iteration(int with_idle)
             fxg_log("no display callback registered");
         did = 1;
     }
+    if (!G.created)
+        return did; /* glutDestroyWindow: no window left for events */
     if (replay_run())
         did = 1;
-    if (G.leave)
+    if (G.leave || !G.created)
         return did;
     if (run_timers())
         did = 1;
-    if (with_idle && G.idle) {
+    if (with_idle && G.idle && G.created) {
         G.idle();
         did = 1;
     }
@@ -1058,8 +1125,10 @@ static void headless_loop(void)
     long seen = G.frames;
     uint64_t since = 0;
     unsigned spins = 0;
-    while (!G.leave) {
-        if (headless_iteration(1) || G.redisplay) {
+    while (!G.leave && G.created) {
+        int did = headless_iteration(1);
+        run_pending_close();
+        if (did || G.redisplay) {
             /* an idle callback that never ends a frame: stalled after 10 s,
              * as the Mesa shim is, when frames are wanted */
             if (G.frames != seen) {
@@ -1123,6 +1192,7 @@ void glutMainLoop(void)
         exit(1);
     }
     G.leave = 0;
+    G.in_loop = 1;
     if (G.headless) {
         headless_loop();
     } else {
@@ -1130,6 +1200,17 @@ void glutMainLoop(void)
         fx_app_main_loop(G.app);
         fx_app_close(G.app);
         G.app = NULL;
+        /* glutDestroyWindow called it already */
+        if (G.close && G.created)
+            G.close();
+        G.created = 0;
+    }
+    G.in_loop = 0;
+    /* freeglut closes what is left when its loop ends, whether it then
+     * exits or returns */
+    run_pending_close();
+    if (G.created) {
+        G.created = 0;
         if (G.close)
             G.close();
     }
@@ -1140,8 +1221,9 @@ void glutMainLoop(void)
 }
 void glutMainLoopEvent(void)
 {
-    if (G.headless)
+    if (G.headless && G.created)
         headless_iteration(0);
+    run_pending_close();
 }
 void glutLeaveMainLoop(void)
 {

@@ -14,6 +14,10 @@ GLUT_PC     := $(BUILD)/fixel-glut.pc
 GLUT_LIBS   := $(GLUT_A) $(LIB_A) $(LDLIBS) -lm
 
 $(GLUT_OBJ): BASEFLAGS += -Iboards/glut/include
+# The X11 bitmap fonts are read with FreeType, opened at run time (text.c):
+# only its headers are needed here, and nothing is added to the link.
+GLUT_FT_CFLAGS := $(shell $(PKG_CONFIG) --cflags freetype2 2>/dev/null)
+$(BUILD)/obj/boards/glut/text.o: BASEFLAGS += $(if $(GLUT_FT_CFLAGS),$(GLUT_FT_CFLAGS) -DFXG_HAVE_FREETYPE)
 
 $(GLUT_A): $(GLUT_OBJ)
 	@mkdir -p $(dir $@)

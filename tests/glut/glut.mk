@@ -45,6 +45,15 @@ test-glut-layer: $(LIB_A) $(GLUT_LIB)
 .PHONY: test-glut-layer
 TEST_SUITES += "$(MAKE) --no-print-directory -s test-glut-layer"
 
+# Self-checking programs (tests/glut/self.sh): a window's life (glutDestroyWindow,
+# GLUT_ACTION_ON_WINDOW_CLOSE, glutInitWindowSize before glutInit), run on
+# fixel and on freeglut + Mesa when they are installed; what a headless run
+# says. A few seconds; part of make test.
+test-glut-self: $(LIB_A) $(GLUT_LIB)
+	@CC="$(CC) $(SANFLAGS)" GLUT_FIXEL_LIBS="$(LDLIBS)" sh tests/glut/self.sh $(BUILD)
+.PHONY: test-glut-self
+TEST_SUITES += "$(MAKE) --no-print-directory -s test-glut-self"
+
 # Part of `make test` (about 45 s on 2 cores, most of it Mesa's million-point
 # Mandelbrot); FIXEL_SKIP_GLUT_MESA=1 leaves it out.
 ifneq ($(FIXEL_SKIP_GLUT_MESA),1)
