@@ -107,13 +107,16 @@ reap() {
 declare -a cmds solo pid_of
 declare -A running=()
 failed=""
-# FIXEL_TEST_ONLY="WORD ...": only the suites whose command contains one of
-# the words (the fresh roots' first-try make test runs the suites that
-# depend on what a minimal system lacks; tests/README.md, "CI").
+# FIXEL_TEST_ONLY="TEXT,TEXT...": only the suites whose command contains
+# one of the comma-separated texts (the fresh roots' first-try make test
+# runs the suites that depend on what a minimal system lacks; tests/README.md,
+# "CI").
 if [ -n "${FIXEL_TEST_ONLY:-}" ]; then
     kept=()
+    IFS=, read -r -a words <<< "$FIXEL_TEST_ONLY"
     for c in "$@"; do
-        for w in $FIXEL_TEST_ONLY; do
+        for w in "${words[@]}"; do
+            [ -n "$w" ] || continue
             case $c in *"$w"*) kept+=("$c"); break ;; esac
         done
     done
