@@ -16,6 +16,10 @@
 #   ending. While suites run in parallel, every `make` they start takes a
 #   lock first (a wrapper put first on PATH), so two suites never build
 #   the same target at once.
+# The whole script is one function, read before it runs: bash reads a
+# script as it goes, and a suite run lasts long enough for a checkout or a
+# merge to rewrite this file under it.
+main() {
 total=0
 jobs=${FIXEL_TEST_JOBS:-1}
 while [ $# -gt 0 ]; do
@@ -154,3 +158,6 @@ done
 echo "== $M suites in $((SECONDS - t_all)) s${failed:+; failed:$failed}"
 if [ $total = 1 ]; then echo "total: $P passed, $F failed"; else echo "suites: $P passed, $F failed"; fi
 [ "$F" -eq 0 ]
+}
+main "$@"
+exit $?

@@ -25,12 +25,17 @@ PY
 }
 PATIENCE=${FIXEL_TEST_PATIENCE:-$(patience_measure)}
 case $PATIENCE in ''|*[!0-9]*|0) PATIENCE=1 ;; esac
-# waitfor N COMMAND...: up to N tenths of a second (times PATIENCE) for
-# COMMAND to succeed; returns as soon as it does.
+# waitfor N COMMAND...: up to N tenths of a second (times PATIENCE) of wall
+# time for COMMAND to succeed, tried every 0.1 s; returns as soon as it does.
+# A deadline, not a count of tries: a slow COMMAND (a python image check on
+# a loaded machine) must not stretch the wait by its own length.
 waitfor() {
-    _n=$(($1 * PATIENCE)); shift; _i=0
-    while [ $_i -lt $_n ]; do "$@" && return 0; sleep 0.1; _i=$((_i + 1)); done
-    return 1
+    _end=$(( $(date +%s%N) / 1000000 + $1 * 100 * PATIENCE )); shift
+    while :; do
+        "$@" && return 0
+        [ $(( $(date +%s%N) / 1000000 )) -ge $_end ] && return 1
+        sleep 0.1
+    done
 }
 # bound N: N (a quiet machine's bound, in any unit) scaled by PATIENCE
 bound() { echo $(($1 * PATIENCE)); }
