@@ -1300,7 +1300,8 @@ static void reload(kiosk *k)
 static int control(kiosk *k, const char *what, const char *v, size_t n)
 {
     char val[32];
-    if (n >= sizeof val) return KIOSK_LINE_BAD;
+    /* val is compared as a C string below: a NUL inside would cut it short */
+    if (n >= sizeof val || memchr(v, 0, n)) return KIOSK_LINE_BAD;
     memcpy(val, v, n);
     val[n] = 0;
     while (n && (val[n - 1] == ' ' || val[n - 1] == '\n' || val[n - 1] == '\r')) val[--n] = 0;
@@ -1308,7 +1309,7 @@ static int control(kiosk *k, const char *what, const char *v, size_t n)
     int isnum = n && kiosk_parse_milli(val, n, &x) == 0 && x % 1000 == 0;
     k->status_due = 1;
     if (!strcmp(what, "screen")) {
-        int on = !strcasecmp(val, "on") || !strcmp(val, "1") ? 1 : !strcasecmp(val, "off") || !strcmp(val, "0") ? 0 : -1;
+        int on = kiosk_parse_onoff(val, n);
         if (on < 0) return KIOSK_LINE_BAD;
         if (set_power_all(k, on) < 0) return KIOSK_LINE_BAD;
         k->screen_on = on;
