@@ -287,17 +287,17 @@ int fx_read_png_rgb_stream(FILE *f, uint32_t max_side, size_t max_pixels, uint8_
         huge = 1;
         png_error(png, "too large");
     }
-    int ct = png_get_color_type(png, info), depth = png_get_bit_depth(png, info);
-    if (depth == 16)
-        png_set_strip_16(png);
-    if (ct == PNG_COLOR_TYPE_PALETTE)
-        png_set_palette_to_rgb(png);
-    if (ct == PNG_COLOR_TYPE_GRAY && depth < 8)
-        png_set_expand_gray_1_2_4_to_8(png);
-    if (ct == PNG_COLOR_TYPE_GRAY || ct == PNG_COLOR_TYPE_GRAY_ALPHA)
+    /* Every colour type and depth to 8-bit RGB by libpng's transforms:
+     * png_set_expand turns palettes into RGB, grey below 8 bits into 8 and
+     * a tRNS chunk into an alpha channel (of any type: a palette with tRNS
+     * used to come out RGBA and fail the row size check below); the alpha,
+     * from the file or from tRNS, is then stripped, the colour kept. */
+    int ct = png_get_color_type(png, info);
+    png_set_expand(png);
+    png_set_strip_16(png);
+    if (!(ct & PNG_COLOR_MASK_COLOR))
         png_set_gray_to_rgb(png);
-    if (ct & PNG_COLOR_MASK_ALPHA)
-        png_set_strip_alpha(png);
+    png_set_strip_alpha(png);
     png_set_interlace_handling(png);
     png_read_update_info(png, info);
     if (png_get_rowbytes(png, info) != (size_t)W * 3)
