@@ -185,6 +185,16 @@ check pointercal-fifo 0 "calibration $out/fifo is not a regular file; ignored" \
 check pointercal-directory 0 "calibration $out is not a regular file; ignored" \
     env FIXEL_BACKEND=memory FIXEL_FRAMES=2 FIXEL_POINTERCAL="$out" "$kiosk" --data "$out/d1" "$out/pc.conf"
 
+# issue #40: fixel-demo --flight naming a FIFO hung reading it; a FIFO,
+# device or directory is refused by name (the file is also written)
+demo=$(dirname "$draw")/fixel-demo
+check demo-flight-fifo 2 "fixel-demo: --flight $out/fifo: is a FIFO, not a regular file" \
+    "$demo" --headless --flight "$out/fifo" --out "$out/demo"
+check demo-flight-device 2 "fixel-demo: --flight /dev/null: is a character device, not a regular file" \
+    "$demo" --headless --flight /dev/null --out "$out/demo"
+check demo-flight-directory 2 "fixel-demo: --flight $out: is a directory, not a regular file" \
+    "$demo" --headless --flight "$out" --out "$out/demo"
+
 # ---- display environment and live input ----
 script "clear #102030"
 check display-stdin-1GB-line 1 "line longer than 1048576 bytes" \
