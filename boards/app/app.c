@@ -23,6 +23,7 @@
 #include "app_int.h"
 #include "../display/display_int.h"
 #include "fixel/error.h"
+#include "fixel/files.h"
 
 #ifndef FX_BOARD_GPIO_BUTTONS
 #define FX_BOARD_GPIO_BUTTONS ""
@@ -313,19 +314,14 @@ static void load_pointercal(fx_app *a, const char *path)
     int explicit = path != NULL;
     if (!path)
         path = "/etc/pointercal";
-    /* O_NONBLOCK: a FIFO with no writer must not block the open; only a
-     * regular file is read. */
-    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-    struct stat st;
-    if (fd >= 0 && (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode))) {
-        close(fd);
+    /* fixel/files.h: a FIFO with no writer must not block the open; only
+     * a regular file is read. */
+    FILE *f = fx_fopen_regular(path, NULL, NULL, 0);
+    if (!f && (errno == EISDIR || errno == EOPNOTSUPP)) {
         fx_display_log(a->disp, FX_LOG_ERROR, "input: calibration %s is not a regular file; ignored", path);
         return;
     }
-    FILE *f = fd >= 0 ? fdopen(fd, "r") : NULL;
     if (!f) {
-        if (fd >= 0)
-            close(fd);
         if (explicit)
             fx_display_log(a->disp, FX_LOG_ERROR, "input: cannot read calibration %s: %s", path,
                            strerror(errno));

@@ -21,6 +21,7 @@
 #include "app_int.h"
 #include "../display/display_int.h"
 #include "fixel/error.h"
+#include "fixel/files.h"
 #include "fixel/memfb.h"
 
 struct fx_replay {
@@ -207,24 +208,15 @@ int fx_replay_open(fx_app *a, const char *path)
     fx_replay *r = calloc(1, sizeof *r);
     if (!r)
         return -FX_ENOMEM;
-    /* O_NONBLOCK: a FIFO with no writer must not block the open (its
-     * reads then end at once); a directory is refused here, not by a
+    /* fixel/files.h: a regular file only. A FIFO did not block the open
+     * (O_NONBLOCK) but one whose writer never wrote blocked the main
+     * loop's read (issue #40); a directory is refused here, not by a
      * failing read later. */
-    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-    struct stat st;
-    if (fd >= 0 && fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) {
-        close(fd);
-        fd = -1;
-        errno = EISDIR;
-    }
-    if (fd >= 0)
-        fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-    r->f = fd >= 0 ? fdopen(fd, "r") : NULL;
+    char why[160];
+    r->f = fx_fopen_regular(path, NULL, why, sizeof why);
     if (!r->f) {
         int e = errno ? -errno : -FX_EIO;
-        fx_display_log(a->disp, FX_LOG_ERROR, "replay: cannot open %s: %s", path, strerror(errno));
-        if (fd >= 0)
-            close(fd);
+        fx_display_log(a->disp, FX_LOG_ERROR, "replay: cannot open %s: %s", path, why);
         free(r);
         return e;
     }

@@ -6,6 +6,7 @@
 #endif
 #include "fixel/memfb.h"
 #include "fixel/error.h"
+#include "fixel/files.h"
 
 #include <errno.h>
 #include <setjmp.h>
@@ -117,6 +118,12 @@ static int finish_tmp(FILE *f, const char *tmp, const char *path, int ok)
     }
     if (!tmp[0]) /* written in place */
         return ok ? 0 : -(e ? e : FX_EIO);
+    /* open_tmp looked before writing; a FIFO or device node put there
+     * since must still not be replaced (issue #40) */
+    if (ok && fx_check_replaceable(path, NULL, 0) < 0) {
+        e = errno;
+        ok = 0;
+    }
     if (ok && rename(tmp, path) == 0)
         return 0;
     if (!e)
@@ -142,24 +149,16 @@ int fx_write_ppm(const char *path, const fx_surface *s)
 }
 
 /* Opens an input without blocking (a FIFO must not hang a reader), for
- * regular files only; *size gets its size. NULL with errno set. */
+ * regular files only (fixel/files.h); *size gets its size. NULL with errno
+ * set: EISDIR, EINVAL for another kind of file (these functions' documented
+ * results), or open()'s. */
 static FILE *open_regular(const char *path, off_t *size)
 {
-    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-    if (fd < 0)
-        return NULL;
-    struct stat st;
-    if (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode)) {
-        int e = S_ISDIR(st.st_mode) ? EISDIR : EINVAL;
-        close(fd);
-        errno = e;
-        return NULL;
-    }
-    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-    *size = st.st_size;
-    FILE *f = fdopen(fd, "rb");
-    if (!f)
-        close(fd);
+    int64_t sz = 0;
+    FILE *f = fx_fopen_regular(path, &sz, NULL, 0);
+    if (!f && errno == EOPNOTSUPP)
+        errno = EINVAL;
+    *size = (off_t)sz;
     return f;
 }
 
@@ -287,17 +286,17 @@ int fx_read_png_rgb_stream(FILE *f, uint32_t max_side, size_t max_pixels, uint8_
         huge = 1;
         png_error(png, "too large");
     }
-    int ct = png_get_color_type(png, info), depth = png_get_bit_depth(png, info);
-    if (depth == 16)
-        png_set_strip_16(png);
-    if (ct == PNG_COLOR_TYPE_PALETTE)
-        png_set_palette_to_rgb(png);
-    if (ct == PNG_COLOR_TYPE_GRAY && depth < 8)
-        png_set_expand_gray_1_2_4_to_8(png);
-    if (ct == PNG_COLOR_TYPE_GRAY || ct == PNG_COLOR_TYPE_GRAY_ALPHA)
+    /* Every colour type and depth to 8-bit RGB by libpng's transforms:
+     * png_set_expand turns palettes into RGB, grey below 8 bits into 8 and
+     * a tRNS chunk into an alpha channel (of any type: a palette with tRNS
+     * used to come out RGBA and fail the row size check below); the alpha,
+     * from the file or from tRNS, is then stripped, the colour kept. */
+    int ct = png_get_color_type(png, info);
+    png_set_expand(png);
+    png_set_strip_16(png);
+    if (!(ct & PNG_COLOR_MASK_COLOR))
         png_set_gray_to_rgb(png);
-    if (ct & PNG_COLOR_MASK_ALPHA)
-        png_set_strip_alpha(png);
+    png_set_strip_alpha(png);
     png_set_interlace_handling(png);
     png_read_update_info(png, info);
     if (png_get_rowbytes(png, info) != (size_t)W * 3)

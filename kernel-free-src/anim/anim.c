@@ -340,9 +340,15 @@ int fx_anim_ball_impact(const fx_anim_ball *b, int32_t k, fx16 *t)
     return 0;
 }
 
+/* Each term fits 64 bits for any int32 fields (|g (floor - y)| < 2^63,
+ * vy^2 / 2 <= 2^61) but their sum need not when g is past the limits, so it
+ * saturates. */
 int64_t fx_anim_ball_energy(const fx_anim_ball *b, const fx_anim_ball_state *s)
 {
-    return (int64_t)b->g * ((int64_t)b->floor - s->y) + (int64_t)s->vy * s->vy / 2;
+    if (!b || !s)
+        return 0;
+    int64_t pot = (int64_t)b->g * ((int64_t)b->floor - s->y), kin = (int64_t)s->vy * s->vy / 2;
+    return pot > INT64_MAX - kin ? INT64_MAX : pot + kin;
 }
 
 /* ---- the accumulation buffer ---- */

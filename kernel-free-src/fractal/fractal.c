@@ -27,7 +27,8 @@ static inline int64_t mulsh(int64_t a, int64_t b, unsigned s)
 #endif
 }
 
-static inline int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
+/* INT64_MIN, whose negation overflows, reads as INT64_MAX: past every limit. */
+static inline int64_t abs64(int64_t v) { return v == INT64_MIN ? INT64_MAX : v < 0 ? -v : v; }
 
 /* ---- the view and its grid ---- */
 

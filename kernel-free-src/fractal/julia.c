@@ -11,8 +11,12 @@
 #define ONE28 ((int64_t)1 << Q)
 #define LIM2 ((int64_t)2 << 56)
 
-static inline int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
-static inline int64_t to28(fx56 v) { return (v + ((int64_t)1 << 27)) >> 28; }
+/* |v|, with INT64_MIN (whose negation overflows) as INT64_MAX: still past
+ * every limit it is compared with. */
+static inline int64_t abs64(int64_t v) { return v == INT64_MIN ? INT64_MAX : v < 0 ? -v : v; }
+/* Q8.56 to Q4.28 rounded half up, as (v + 2^27) >> 28 without the sum,
+ * which overflows within 2^27 of INT64_MAX. */
+static inline int64_t to28(fx56 v) { return (v >> 28) + ((v >> 27) & 1); }
 
 int fx_julia_check(const fx_fractal_view *v)
 {

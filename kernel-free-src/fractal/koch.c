@@ -204,8 +204,13 @@ int fx_terrain(int32_t *h, int32_t stride, int k, int32_t amp, fx16 rough, uint3
 
 /* ---- space-filling curves ---- */
 
-void fx_hilbert_d2xy(uint32_t n, uint64_t d, uint32_t *xo, uint32_t *yo)
+/* Orders past the maximum (1u << n undefined at 32 for Hilbert; for Peano
+ * 3^n past uint32 and the digit array below sized for 20) and steps past
+ * the curve's end are refused before anything is written (issue #40). */
+int fx_hilbert_d2xy(uint32_t n, uint64_t d, uint32_t *xo, uint32_t *yo)
 {
+    if (!xo || !yo || n > FX_HILBERT_MAX_ORDER || d >> (2 * n) != 0)
+        return -FX_EINVAL;
     uint32_t x = 0, y = 0;
     uint64_t t = d;
     for (uint32_t s = 1; s < (1u << n); s *= 2) {
@@ -225,14 +230,20 @@ void fx_hilbert_d2xy(uint32_t n, uint64_t d, uint32_t *xo, uint32_t *yo)
     }
     *xo = x;
     *yo = y;
+    return 0;
 }
 
 /* Peano's own definition: with d = t1 t2 ... t2n in base 3,
  * x digit i = k^(t2 + t4 + ... + t(2i-2)) (t(2i-1)), y digit i =
  * k^(t1 + t3 + ... + t(2i-1)) (t(2i)), where k(t) = 2 - t. */
-void fx_peano_d2xy(uint32_t n, uint64_t d, uint32_t *xo, uint32_t *yo)
+int fx_peano_d2xy(uint32_t n, uint64_t d, uint32_t *xo, uint32_t *yo)
 {
-    uint8_t t[2 * 20];
+    uint64_t cells = 1; /* 9^n, at most 9^20 < 2^64 */
+    for (uint32_t i = 0; i < n && i < FX_PEANO_MAX_ORDER; i++)
+        cells *= 9;
+    if (!xo || !yo || n > FX_PEANO_MAX_ORDER || d >= cells)
+        return -FX_EINVAL;
+    uint8_t t[2 * FX_PEANO_MAX_ORDER];
     for (int i = (int)(2 * n) - 1; i >= 0; i--) {
         t[i] = (uint8_t)(d % 3);
         d /= 3;
@@ -247,6 +258,7 @@ void fx_peano_d2xy(uint32_t n, uint64_t d, uint32_t *xo, uint32_t *yo)
     }
     *xo = x;
     *yo = y;
+    return 0;
 }
 
 typedef struct sfc {
@@ -254,7 +266,7 @@ typedef struct sfc {
     uint32_t base, n;
     int32_t x, y, size;
     uint64_t cells; /* base^n per side */
-    void (*d2xy)(uint32_t, uint64_t, uint32_t *, uint32_t *);
+    int (*d2xy)(uint32_t, uint64_t, uint32_t *, uint32_t *);
     int have_prev;
     int32_t px, py;
     uint32_t segs;
@@ -312,14 +324,14 @@ static void sfc_block(sfc *s, uint64_t d, uint64_t count, uint64_t side)
 }
 
 static uint32_t sfc_draw(const fx_ctx *c, int32_t x, int32_t y, int32_t size, uint32_t order,
-                         uint32_t base, void (*d2xy)(uint32_t, uint64_t, uint32_t *, uint32_t *))
+                         uint32_t base, int (*d2xy)(uint32_t, uint64_t, uint32_t *, uint32_t *))
 {
     if (size < 1)
         return 0;
     /* the finest order whose cells are still >= 1 pixel */
     uint32_t n = 0;
     uint64_t cells = 1;
-    while (n < order && cells * base <= (uint64_t)size && n < (base == 2 ? 31u : 19u)) {
+    while (n < order && cells * base <= (uint64_t)size && n < (base == 2 ? FX_HILBERT_MAX_ORDER : FX_PEANO_MAX_ORDER - 1)) {
         n++;
         cells *= base;
     }

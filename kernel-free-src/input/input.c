@@ -51,7 +51,35 @@ static int32_t clamp(int64_t v, int32_t lo, int32_t hi)
     return v < lo ? lo : v > hi ? hi : (int32_t)v;
 }
 
-/* Device units -> physical screen pixels, by calibration or range scaling. */
+/* a + b saturated to [-INT64_MAX, INT64_MAX]: three pointercal terms of up
+ * to 2^62 each do not fit 64 bits, and a saturated sum divided by a
+ * coefficient of at most 2^31 still lands far outside the screen, where the
+ * clamp puts it, so saturating loses nothing. */
+static int64_t sat_add(int64_t a, int64_t b)
+{
+    if (b > 0 && a > INT64_MAX - b)
+        return INT64_MAX;
+    if (b < 0 && a < -INT64_MAX - b)
+        return -INT64_MAX;
+    return a + b;
+}
+
+/* r in [lo, hi] (any int32 range, hi - lo up to 2^32 - 1) scaled to
+ * 0..n-1, rounded to nearest so the range ends land on the edge pixels.
+ * Out-of-range r is clamped first (the result would be clamped anyway), so
+ * the numerator is at most (2^32 - 1)(2^31 - 2) < 2^63; the rounding is
+ * floor((2A + d) / 2d) computed as q + (2r >= d) without forming 2A. */
+static int64_t scale_range(int32_t r, int32_t lo, int32_t hi, int32_t n)
+{
+    int64_t d = (int64_t)hi - lo, t = (int64_t)r - lo;
+    t = t < 0 ? 0 : t > d ? d : t;
+    int64_t a = t * (n - 1), q = a / d, rem = a % d;
+    return q + (2 * rem >= d);
+}
+
+/* Device units -> physical screen pixels, by calibration or range scaling.
+ * Any int32 device values, ranges and coefficients give a pixel on the
+ * screen: the arithmetic is 64-bit and every step is bounded (issue #40). */
 static void to_screen(const fx_input *in, const fx_input_dev *d, int32_t rx, int32_t ry,
                       const int32_t *mn, const int32_t *mx, int32_t *sx, int32_t *sy)
 {
@@ -59,8 +87,9 @@ static void to_screen(const fx_input *in, const fx_input_dev *d, int32_t rx, int
     int64_t x, y;
     int32_t W = in->phys_w, H = in->phys_h;
     if (c->valid && c->a[6] != 0) {
-        x = ((int64_t)c->a[2] + (int64_t)c->a[0] * rx + (int64_t)c->a[1] * ry) / c->a[6];
-        y = ((int64_t)c->a[5] + (int64_t)c->a[3] * rx + (int64_t)c->a[4] * ry) / c->a[6];
+        /* each product is at most 2^62 in size; the sums saturate */
+        x = sat_add(sat_add(c->a[2], (int64_t)c->a[0] * rx), (int64_t)c->a[1] * ry) / c->a[6];
+        y = sat_add(sat_add(c->a[5], (int64_t)c->a[3] * rx), (int64_t)c->a[4] * ry) / c->a[6];
     } else {
         int32_t x0 = mn[0], x1 = mx[0], y0 = mn[1], y1 = mx[1];
         if (c->xmin < c->xmax)
@@ -78,9 +107,8 @@ static void to_screen(const fx_input *in, const fx_input_dev *d, int32_t rx, int
             x0 = 0, x1 = W - 1;
         if (y1 <= y0)
             y0 = 0, y1 = H - 1;
-        /* rounded to nearest: the range ends land on the screen's edge pixels */
-        x = (((int64_t)rx - x0) * (W - 1) * 2 + (x1 - x0)) / (2 * ((int64_t)x1 - x0));
-        y = (((int64_t)ry - y0) * (H - 1) * 2 + (y1 - y0)) / (2 * ((int64_t)y1 - y0));
+        x = x1 > x0 ? scale_range(rx, x0, x1, W) : 0; /* W == 1: one column */
+        y = y1 > y0 ? scale_range(ry, y0, y1, H) : 0;
         if (c->invert_x)
             x = W - 1 - x;
         if (c->invert_y)
@@ -94,12 +122,15 @@ static void to_screen(const fx_input *in, const fx_input_dev *d, int32_t rx, int
         x = y;
         y = t;
     }
+    /* clamped before the flip: W - 1 - x must not overflow */
+    x = clamp(x, 0, W - 1);
+    y = clamp(y, 0, H - 1);
     if (c->invert_x)
         x = W - 1 - x;
     if (c->invert_y)
         y = H - 1 - y;
-    *sx = clamp(x, 0, W - 1);
-    *sy = clamp(y, 0, H - 1);
+    *sx = (int32_t)x;
+    *sy = (int32_t)y;
 }
 
 static void emit_at(const fx_input *in, fx_event *e, fx_emit_fn emit, void *user)

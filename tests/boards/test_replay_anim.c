@@ -11,6 +11,10 @@
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+
+#include "fixel/error.h"
 
 typedef struct {
     fx_app *app;
@@ -76,4 +80,36 @@ FX_TEST(replay_advances_while_a_frame_is_always_due)
     FX_CHECK_MSG(s.keys == 3 && !strcmp(s.typed, "abc"), "keys %d '%s'", s.keys, s.typed);
     /* the end of the file ended the run, a few frames in, not the limit */
     FX_CHECK_MSG(s.frames >= 3 && s.frames < 20, "frames %d", s.frames);
+}
+
+/* Issue #40: FIXEL_REPLAY naming a FIFO opened (O_NONBLOCK) and then the
+ * main loop's read blocked for as long as its writer stayed silent. A
+ * replay is a regular file: a FIFO (here with a writer that never writes)
+ * and a directory are refused when the program opens. */
+FX_TEST(replay_is_a_regular_file)
+{
+    char fifo[64];
+    snprintf(fifo, sizeof fifo, "/tmp/fixel-replay-fifo-%d", (int)getpid());
+    unlink(fifo);
+    FX_CHECK_EQ(mkfifo(fifo, 0600), 0);
+    int writer = open(fifo, O_RDWR | O_NONBLOCK);
+    FX_CHECK(writer >= 0);
+    const char *paths[] = {fifo, "/tmp"};
+    const int want[] = {-FX_ENOTSUP, -FX_EISDIR};
+    for (int i = 0; i < 2; i++) {
+        fx_app_options o;
+        fx_app_options_init(&o);
+        o.display.backend = FX_BACKEND_MEMORY;
+        o.display.memory_w = 8;
+        o.display.memory_h = 8;
+        o.display.log_priority = -1;
+        o.replay = paths[i];
+        fx_app *app = NULL;
+        int r = fx_app_open(&app, &o);
+        FX_CHECK_MSG(r == want[i], "replay %s: %d", paths[i], r);
+        if (r == 0 && app)
+            fx_app_close(app);
+    }
+    close(writer);
+    unlink(fifo);
 }

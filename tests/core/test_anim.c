@@ -407,3 +407,27 @@ FX_TEST(anim_host_clock_overrides_time)
     FX_CHECK(run(sa, "size 9 9\ntween nope translate\n", 0, 0) < 0);
     FX_CHECK_MSG(strstr(last_err, "no track 'nope'"), "%s", last_err);
 }
+
+/* Issue #40: g (floor - y) + vy^2 / 2 overflowed for a ball past the
+ * limits (the energy is a query; nothing validates b first). It saturates;
+ * inside the limits it is exact. */
+FX_TEST(anim_ball_energy_extremes)
+{
+    fx_anim_ball b = {0};
+    fx_anim_ball_state s = {0};
+    b.g = INT32_MAX;
+    b.floor = INT32_MAX;
+    s.y = INT32_MIN;
+    s.vy = INT32_MIN;
+    FX_CHECK_EQ(fx_anim_ball_energy(&b, &s), INT64_MAX);
+    b.g = INT32_MIN; /* g (floor - y) = -2^31 (2^32 - 1), plus 2^61 */
+    FX_CHECK_EQ(fx_anim_ball_energy(&b, &s), -(((int64_t)1 << 31) * (((int64_t)1 << 32) - 1)) + ((int64_t)1 << 61));
+    /* at the limits: g 2^30, floor - y 2^31, vy^2 / 2 = 2^57 */
+    b.g = FX_ANIM_BALL_G << 16;
+    b.floor = FX_ANIM_BALL_POS << 16;
+    s.y = -(FX_ANIM_BALL_POS << 16);
+    s.vy = -(FX_ANIM_BALL_SPEED << 16);
+    FX_CHECK_EQ(fx_anim_ball_energy(&b, &s), ((int64_t)1 << 61) + ((int64_t)1 << 57));
+    FX_CHECK_EQ(fx_anim_ball_energy(NULL, &s), 0);
+    FX_CHECK_EQ(fx_anim_ball_energy(&b, NULL), 0);
+}

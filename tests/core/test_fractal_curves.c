@@ -180,7 +180,7 @@ FX_TEST(terrain_reproducible)
     FX_CHECK_EQ(fx_terrain(a, 32, 5, 1000, 0, 1), -FX_EINVAL);
 }
 
-static void curve_props(void (*d2xy)(uint32_t, uint64_t, uint32_t *, uint32_t *), uint32_t base,
+static void curve_props(int (*d2xy)(uint32_t, uint64_t, uint32_t *, uint32_t *), uint32_t base,
                         uint32_t n)
 {
     uint32_t side = 1;
@@ -190,7 +190,7 @@ static void curve_props(void (*d2xy)(uint32_t, uint64_t, uint32_t *, uint32_t *)
     uint32_t px = 0, py = 0;
     for (uint64_t d = 0; d < (uint64_t)side * side; d++) {
         uint32_t x, y;
-        d2xy(n, d, &x, &y);
+        FX_CHECK_EQ(d2xy(n, d, &x, &y), 0);
         FX_CHECK(x < side && y < side);
         FX_CHECK(!seen[y * side + x]);
         seen[y * side + x] = 1;
@@ -302,4 +302,32 @@ FX_TEST(curves_extreme_arguments)
     uint32_t segs = fx_fractline(&k.c, INT32_MIN, 0, INT32_MAX, 10, &p, &st);
     FX_CHECK(segs > 1000 && segs < (1u << 21));
     free(k.px);
+}
+
+/* Issue #40: fx_peano_d2xy(21, ...) wrote past its 40-digit array and
+ * fx_hilbert_d2xy(32, ...) shifted by 32. Orders and steps past the end are
+ * refused with nothing written; the largest orders still give the curve's
+ * last cell (3^20 - 1 and 2^31 - 1 are the far corner's coordinates). */
+FX_TEST(space_filling_curves_bound_the_order)
+{
+    uint32_t x = 7, y = 7;
+    FX_CHECK_EQ(fx_peano_d2xy(21, 0, &x, &y), -FX_EINVAL);
+    FX_CHECK_EQ(fx_peano_d2xy(UINT32_MAX, UINT64_MAX, &x, &y), -FX_EINVAL);
+    FX_CHECK_EQ(fx_hilbert_d2xy(32, 0, &x, &y), -FX_EINVAL);
+    FX_CHECK_EQ(fx_hilbert_d2xy(UINT32_MAX, 0, &x, &y), -FX_EINVAL);
+    FX_CHECK(x == 7 && y == 7);
+    FX_CHECK_EQ(fx_peano_d2xy(1, 9, &x, &y), -FX_EINVAL);
+    FX_CHECK_EQ(fx_hilbert_d2xy(1, 4, &x, &y), -FX_EINVAL);
+    FX_CHECK_EQ(fx_peano_d2xy(1, 0, NULL, &y), -FX_EINVAL);
+    FX_CHECK_EQ(fx_hilbert_d2xy(1, 0, &x, NULL), -FX_EINVAL);
+    FX_CHECK(x == 7 && y == 7);
+    uint64_t last = 1;
+    for (int i = 0; i < 20; i++)
+        last *= 9;
+    FX_CHECK_EQ(fx_peano_d2xy(20, last - 1, &x, &y), 0);
+    FX_CHECK(x == 3486784400u && y == 3486784400u);
+    FX_CHECK_EQ(fx_peano_d2xy(20, last, &x, &y), -FX_EINVAL);
+    FX_CHECK_EQ(fx_hilbert_d2xy(31, ((uint64_t)1 << 62) - 1, &x, &y), 0);
+    FX_CHECK(x == (1u << 31) - 1 && y == 0);
+    FX_CHECK_EQ(fx_hilbert_d2xy(31, (uint64_t)1 << 62, &x, &y), -FX_EINVAL);
 }

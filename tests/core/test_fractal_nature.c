@@ -651,3 +651,35 @@ FX_TEST(scene_boxdim_and_turtle_report)
     FX_CHECK_EQ(run_traced(&t, "size 64 64\nfractcompress 0 0 72 0 0 8\n", &sc), -FX_EINVAL);
     FX_CHECK_MSG(strstr(sc.err, "not inside") != NULL, "%s", sc.err);
 }
+
+/* Issue #40: |INT64_MIN| overflowed the range checks (INT64_MIN passed
+ * them as a negative "magnitude") and Q8.56 -> Q4.28 rounding overflowed
+ * near INT64_MAX. Both ends are refused or mapped to the far side. */
+FX_TEST(julia_int64_corners)
+{
+    const int64_t bad[] = {INT64_MIN, INT64_MIN + 1, INT64_MAX};
+    fx_julia_fixed fp[2];
+    fx_julia_cycle cyc;
+    for (int i = 0; i < 3; i++) {
+        FX_CHECK_EQ(fx_julia_fixed_points(bad[i], 0, fp), -FX_EINVAL);
+        FX_CHECK_EQ(fx_julia_fixed_points(0, bad[i], fp), -FX_EINVAL);
+        FX_CHECK_EQ(fx_julia_attractor(bad[i], 0, &cyc), -FX_EINVAL);
+        FX_CHECK_EQ(fx_julia_attractor(0, bad[i], &cyc), -FX_EINVAL);
+        fx_fractal_view v = fx_julia_view(0, 0, bad[i], 0, 4 * FX56_ONE, 64, 64, 50);
+        FX_CHECK_EQ(fx_fractal_check(&v), -FX_EINVAL);
+        FX_CHECK_EQ(fx_julia_check(&v), -FX_EINVAL);
+        v = fx_julia_view(0, 0, 0, bad[i], 4 * FX56_ONE, 64, 64, 50);
+        FX_CHECK_EQ(fx_julia_check(&v), -FX_EINVAL);
+        v = fx_julia_view(bad[i], 0, 0, 0, 4 * FX56_ONE, 64, 64, 50);
+        FX_CHECK_EQ(fx_fractal_check(&v), -FX_EINVAL);
+    }
+    fx_fractal_view v = fx_julia_view(0, 0, -FX56_ONE, 0, 4 * FX56_ONE, 64, 64, 50);
+    int32_t x, y;
+    /* +-128 (the ends of Q8.56) at 16 pixels per unit: 2048 pixels out */
+    fx_julia_to_pixel(&v, INT64_MAX, INT64_MIN, &x, &y);
+    FX_CHECK(x == 32 + 2048 && y == 32 + 2048);
+    fx_julia_to_pixel(&v, INT64_MIN, INT64_MAX, &x, &y);
+    FX_CHECK(x == 32 - 2048 && y == 32 - 2048);
+    fx_julia_to_pixel(&v, 0, 0, &x, &y); /* the centre */
+    FX_CHECK(x == 32 && y == 32);
+}

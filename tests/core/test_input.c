@@ -240,3 +240,89 @@ FX_TEST(calibration_file_parsing)
     FX_CHECK_EQ(fx_calib_parse(&c, "1 x 0 0 1 0 1", 13), -22);
     FX_CHECK_EQ(fx_calib_parse(&c, "99999999999 0 0 0 1 0 1", 23), -22);
 }
+
+typedef struct {
+    int32_t x, y;
+    int n;
+} last_pos;
+
+static void keep_last(void *u, const fx_event *e)
+{
+    last_pos *p = u;
+    p->x = e->x;
+    p->y = e->y;
+    p->n++;
+}
+
+static void feed_xy(fx_input *in, fx_input_dev *d, int32_t x, int32_t y, last_pos *p)
+{
+    fx_raw_event ev[] = {{0, 3, 0, x}, {0, 3, 1, y}, {0, 1, 0x14a, 1}, {0, 0, 0, 0}};
+    for (size_t i = 0; i < sizeof ev / sizeof ev[0]; i++)
+        fx_input_feed(in, d, &ev[i], keep_last, p);
+}
+
+/* The scaling's definition in exact arithmetic: nearest pixel, the range
+ * ends on the edge pixels, clamped to the screen. */
+static int32_t ref_scale(int64_t r, int64_t lo, int64_t hi, int64_t n)
+{
+    __extension__ __int128 a = (__int128)(r - lo) * (n - 1) * 2 + (hi - lo);
+    __extension__ __int128 q = a / (2 * (__int128)(hi - lo));
+    if (a < 0 && q * 2 * (hi - lo) != a)
+        q--; /* floor */
+    return q < 0 ? 0 : q > n - 1 ? (int32_t)(n - 1) : (int32_t)q;
+}
+
+/* Issue #40: a device reporting -1..2^31-1 overflowed the 32-bit range
+ * difference and the 64-bit numerator. Every corner of the int32 ranges and
+ * values, on tiny and huge screens, lands on the exact pixel. */
+FX_TEST(input_scaling_extreme_ranges)
+{
+    const int32_t v[] = {INT32_MIN, INT32_MIN + 1, -2, -1, 0, 1, 4095, INT32_MAX - 1, INT32_MAX};
+    const int32_t sizes[][2] = {{800, 480}, {1, 1}, {2, 3}, {INT32_MAX, INT32_MAX}};
+    const size_t nv = sizeof v / sizeof v[0];
+    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++)
+        for (size_t a = 0; a < nv; a++)
+            for (size_t b = a + 1; b < nv; b++)
+                for (size_t r = 0; r < nv; r++) {
+                    fx_input in;
+                    fx_input_dev d;
+                    fx_input_init(&in, sizes[s][0], sizes[s][1], 0);
+                    fx_input_dev_init(&d, FX_DEV_TOUCH);
+                    d.abs_min[0] = d.abs_min[1] = v[a];
+                    d.abs_max[0] = d.abs_max[1] = v[b];
+                    last_pos p = {-7, -7, 0};
+                    feed_xy(&in, &d, v[r], v[nv - 1 - r], &p);
+                    FX_CHECK(p.n > 0);
+                    int32_t ex = ref_scale(v[r], v[a], v[b], sizes[s][0]);
+                    int32_t ey = ref_scale(v[nv - 1 - r], v[a], v[b], sizes[s][1]);
+                    FX_CHECK_MSG(p.x == ex && p.y == ey,
+                                 "screen %d range %d..%d raw %d,%d: got %d,%d want %d,%d",
+                                 (int)sizes[s][0], (int)v[a], (int)v[b], (int)v[r],
+                                 (int)v[nv - 1 - r], (int)p.x, (int)p.y, (int)ex, (int)ey);
+                }
+}
+
+/* The pointercal path with every coefficient and value at an int32 corner:
+ * the three terms do not fit 64 bits together; the pixel is the exact
+ * quotient clamped to the screen, also after inversion. */
+FX_TEST(input_calibration_extreme_coefficients)
+{
+    const int32_t v[] = {INT32_MIN, -1, 1, INT32_MAX};
+    for (int i = 0; i < 4 * 4 * 4 * 4 * 2; i++) {
+        int32_t a0 = v[i & 3], a2 = v[(i >> 2) & 3], a6 = v[(i >> 4) & 3], r = v[(i >> 6) & 3];
+        int inv = (i >> 8) & 1;
+        fx_input in;
+        fx_input_dev d;
+        fx_input_init(&in, 800, 480, 0);
+        fx_input_dev_init(&d, FX_DEV_TOUCH);
+        d.calib = (fx_calib){.a = {a0, a0, a2, a0, a0, a2, a6}, .valid = 1, .invert_x = (uint8_t)inv};
+        last_pos p = {-7, -7, 0};
+        feed_xy(&in, &d, r, r, &p);
+        __extension__ __int128 q = ((__int128)a2 + (__int128)a0 * r + (__int128)a0 * r) / a6;
+        int32_t e = q < 0 ? 0 : q > 799 ? 799 : (int32_t)q;
+        int32_t ey = q < 0 ? 0 : q > 479 ? 479 : (int32_t)q;
+        FX_CHECK_MSG(p.n > 0 && p.x == (inv ? 799 - e : e) && p.y == ey,
+                     "a0 %d a2 %d a6 %d raw %d: got %d,%d", (int)a0, (int)a2, (int)a6, (int)r,
+                     (int)p.x, (int)p.y);
+    }
+}

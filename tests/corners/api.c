@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "fixel/anim.h"
 #include "fixel/circle.h"
 #include "fixel/curve.h"
 #include "fixel/error.h"
@@ -187,6 +188,51 @@ static void fractals(const fx_surface *s)
     WANT(fx_psnr(NULL, t, 1) == 0);
 }
 
+/* Issue #40: space-filling curve orders past their arrays, INT64 ends in
+ * the Julia checks and conversions, the ball's energy on any int32 fields.
+ * Under ASan a write past fx_peano_d2xy's digits is a crash. */
+static void int64_corners(const fx_surface *s)
+{
+    (void)s;
+    static const uint32_t orders[] = {0, 1, 20, 21, 31, 32, 33, 64, UINT32_MAX};
+    static const uint64_t steps[] = {0, 1, ((uint64_t)1 << 62) - 1, (uint64_t)1 << 62, UINT64_MAX};
+    for (size_t i = 0; i < sizeof orders / sizeof orders[0]; i++)
+        for (size_t j = 0; j < sizeof steps / sizeof steps[0]; j++) {
+            uint32_t x = 0, y = 0, n = orders[i];
+            int rp = fx_peano_d2xy(n, steps[j], &x, &y), rh;
+            WANT(n <= FX_PEANO_MAX_ORDER || rp == -FX_EINVAL);
+            rh = fx_hilbert_d2xy(n, steps[j], &x, &y);
+            WANT(n <= FX_HILBERT_MAX_ORDER || rh == -FX_EINVAL);
+            WANT(rh == -FX_EINVAL || (n == 32 ? 1 : (uint64_t)x < ((uint64_t)1 << n)));
+        }
+    static const int64_t L[] = {INT64_MIN, INT64_MIN + 1, -1, 0, 1, INT64_MAX - 1, INT64_MAX};
+    fx_julia_fixed fp[2];
+    fx_julia_cycle cyc;
+    for (int i = 0; i < 7; i++)
+        for (int j = 0; j < 7; j++) {
+            int far = L[i] < -1 || L[i] > 1 || L[j] < -1 || L[j] > 1;
+            WANT((fx_julia_fixed_points(L[i], L[j], fp) == -FX_EINVAL) == far);
+            WANT((fx_julia_attractor(L[i], L[j], &cyc) == -FX_EINVAL) == far);
+            fx_fractal_view v = fx_julia_view(L[i], L[j], L[j], L[i], 4 * FX56_ONE, 8, 8, 20);
+            WANT((fx_julia_check(&v) == -FX_EINVAL) == far);
+            int32_t x, y;
+            v = fx_julia_view(0, 0, 0, 0, 4 * FX56_ONE, 8, 8, 20);
+            fx_julia_to_pixel(&v, L[i], L[j], &x, &y);
+            WANT(x >= 4 - 256 && x <= 4 + 256 && y >= 4 - 256 && y <= 4 + 256);
+        }
+    for (int i = 0; i < NE; i++)
+        for (int j = 0; j < NE; j++) {
+            fx_anim_ball b = {0};
+            fx_anim_ball_state st = {0};
+            b.g = E[i];
+            b.floor = E[j];
+            st.y = E[NE - 1 - j];
+            st.vy = E[NE - 1 - i];
+            __extension__ __int128 ref = (__int128)b.g * ((int64_t)b.floor - st.y) + (int64_t)st.vy * st.vy / 2;
+            WANT(fx_anim_ball_energy(&b, &st) == (ref > INT64_MAX ? INT64_MAX : (int64_t)ref));
+        }
+}
+
 /* One vertex in 2^19 + 1 faces: the normal sums overflowed int32. */
 static void valence(const fx_surface *s)
 {
@@ -248,6 +294,7 @@ int main(void)
         run("issue #23 fractals", fractals, &confs[i]);
     }
     run("normals of a vertex in 2^19 + 1 faces", valence, &confs[0]);
+    run("issue #40 int64 corners", int64_corners, &confs[0]);
     printf("api: %d passed, %d failed\n", passed, failed);
     return failed != 0;
 }

@@ -241,6 +241,11 @@ waitfor 30 sh -c "mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | grep -q '\
 waitfor 30 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | sed -n 's/.*\"bad\":\([0-9]*\).*/\1/p')\" = 3 ]" && ok || bad "brightness 101, abc and an unknown command should be 3 bad lines: $(retained fleet/k1/status)"
 [ "$(bl bl1/panel brightness)" = 400 ] && [ "$(bl bl1/panel bl_power)" = 4 ] && ok ||
     bad "set/screen off, brightness 40: fake backlight has brightness $(bl bl1/panel brightness) bl_power $(bl bl1/panel bl_power), wanted 400 and 4"
+# a NUL inside the payload: not "on" (issue #40), the screen stays off
+printf 'on\000garbage' > "$out/onnul"
+pub -t fleet/k1/set/screen -f "$out/onnul"
+waitfor 30 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | sed -n 's/.*\"bad\":\([0-9]*\).*/\1/p')\" = 4 ]" && ok || bad "set/screen 'on\\0garbage' is not a bad line: $(retained fleet/k1/status)"
+[ "$(bl bl1/panel bl_power)" = 4 ] && ok || bad "set/screen 'on\\0garbage' switched the screen on: bl_power $(bl bl1/panel bl_power)"
 pub -t fleet/k1/set/screen -m on
 waitfor 30 sh -c "[ \"\$(cat $out/bl1/panel/bl_power)\" = 0 ]" && ok || bad "set/screen on left bl_power at $(bl bl1/panel bl_power)"
 [ "$(bl bl1/panel brightness)" = 400 ] && ok || bad "101 and abc must not reach the backlight: brightness $(bl bl1/panel brightness)"
@@ -306,8 +311,8 @@ echo "    k2 bad lines: $bad0 before, $bad4 after the hostile payloads, $bad1 af
 [ $((bad1 - bad4)) -eq 475 ] && ok || bad "the flood's 475 out-of-range brightness values counted $((bad1 - bad4)) bad"
 kill -0 $K1 && kill -0 $K2 && ok || bad "a kiosk died of hostile input: $(tail -3 "$out/k1.log" "$out/k2.log")"
 echo "    k1 bad lines: $(field k1 bad)"
-# 3 bad control values, 1 refused reload, 3 bad JSON payloads
-[ "$(field k1 bad)" -eq 7 ] && ok || bad "k1: nested, truncated and non-scalar JSON not counted bad: $(retained fleet/k1/status)"
+# 4 bad control values, 1 refused reload, 3 bad JSON payloads
+[ "$(field k1 bad)" -eq 8 ] && ok || bad "k1: nested, truncated and non-scalar JSON not counted bad: $(retained fleet/k1/status)"
 
 # 5. the broker goes away mid-stream and comes back
 step 5

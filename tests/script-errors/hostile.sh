@@ -193,6 +193,26 @@ check pointercal-fifo 0 "calibration $out/fifo is not a regular file; ignored" \
     env FIXEL_BACKEND=memory FIXEL_FRAMES=2 FIXEL_POINTERCAL="$out/fifo" "$kiosk" --data "$out/d1" "$out/pc.conf"
 check pointercal-directory 0 "calibration $out is not a regular file; ignored" \
     env FIXEL_BACKEND=memory FIXEL_FRAMES=2 FIXEL_POINTERCAL="$out" "$kiosk" --data "$out/d1" "$out/pc.conf"
+# issue #40: the live kiosk's DIR/live.ppm must never replace a FIFO or a
+# device node with a regular file: refused by name, the node left as it was
+mkdir -p "$out/live"; mkfifo "$out/live/live.ppm"; ln -s /dev/null "$out/live/live-null.ppm"
+check kiosk-live-fifo 0 "fixel-kiosk: --out $out/live/live.ppm: is a FIFO, not a regular file; live output stopped" \
+    env FIXEL_BACKEND=memory FIXEL_FRAMES=2 "$kiosk" --data "$out/d1" --out "$out/live" "$out/pc.conf"
+if [ -p "$out/live/live.ppm" ]; then P=$((P + 1)); else F=$((F + 1)); echo "FAIL kiosk-live-fifo: live.ppm is no longer a FIFO"; fi
+rm -f "$out/live/live.ppm"; mv "$out/live/live-null.ppm" "$out/live/live.ppm"
+check kiosk-live-device 0 "fixel-kiosk: --out $out/live/live.ppm: is a character device, not a regular file" \
+    env FIXEL_BACKEND=memory FIXEL_FRAMES=2 "$kiosk" --data "$out/d1" --out "$out/live" "$out/pc.conf"
+if [ -c /dev/null ] && [ -L "$out/live/live.ppm" ]; then P=$((P + 1)); else F=$((F + 1)); echo "FAIL kiosk-live-device: the link to /dev/null was replaced"; fi
+
+# issue #40: fixel-demo --flight naming a FIFO hung reading it; a FIFO,
+# device or directory is refused by name (the file is also written)
+demo=$(dirname "$draw")/fixel-demo
+check demo-flight-fifo 2 "fixel-demo: --flight $out/fifo: is a FIFO, not a regular file" \
+    "$demo" --headless --flight "$out/fifo" --out "$out/demo"
+check demo-flight-device 2 "fixel-demo: --flight /dev/null: is a character device, not a regular file" \
+    "$demo" --headless --flight /dev/null --out "$out/demo"
+check demo-flight-directory 2 "fixel-demo: --flight $out: is a directory, not a regular file" \
+    "$demo" --headless --flight "$out" --out "$out/demo"
 
 # ---- display environment and live input ----
 script "clear #102030"

@@ -52,6 +52,14 @@ run 1 line "$T" -o "$W/line" --points 100,100,200,200,300,300,400,400,500,500,60
 [ -e "$W/line" ] && bad "line: a file was written" || ok
 run 0 stdout "$T" -o - --points "$(raw 0)" && grep -q "^pointercal: $want\$" "$W/stdout.out" && ok ||
     bad "-o -: no pointercal line"
+# -o naming a FIFO (its write hung) or a device: refused by name before
+# any touch, the node left as it was (issue #40)
+mkfifo "$W/fifo"
+run 2 out-fifo timeout 10 "$T" -o "$W/fifo" --points "$(raw 0)" &&
+    grep -q "fixel-calibrate: -o $W/fifo: is a FIFO, not a regular file" "$W/out-fifo.err" && [ -p "$W/fifo" ] && ok ||
+    bad "out-fifo: no reason or the FIFO was replaced: $(cat "$W/out-fifo.err")"
+run 2 out-dir "$T" -o "$W" --points "$(raw 0)" && grep -q "is a directory, not a regular file" "$W/out-dir.err" && ok ||
+    bad "out-dir: no reason"
 # argument ranges
 run 2 margin-low "$T" --margin 3 --points "$(raw 0)"
 run 2 margin-big "$T" --margin 300 --points "$(raw 0)" && grep -q "leaves no room on a 640x480" "$W/margin-big.err" && ok || bad "margin-big: no reason"

@@ -348,3 +348,21 @@ FX_TEST(kiosk_output_sections)
     FX_CHECK_EQ(cfg("output A\noutput B\noutput C\noutput D\noutput E\n", err), -1);
     FX_CHECK(K.errline == 5 && strstr(err, "more than 4 outputs"));
 }
+
+/* Issue #40: set/screen read its payload as a C string, so "on\0garbage"
+ * switched the screen on. Every byte of the payload counts. */
+FX_TEST(kiosk_screen_payload_uses_its_whole_length)
+{
+    FX_CHECK_EQ(kiosk_parse_onoff("on", 2), 1);
+    FX_CHECK_EQ(kiosk_parse_onoff("ON\r\n", 4), 1);
+    FX_CHECK_EQ(kiosk_parse_onoff("1", 1), 1);
+    FX_CHECK_EQ(kiosk_parse_onoff("Off ", 4), 0);
+    FX_CHECK_EQ(kiosk_parse_onoff("0\n", 2), 0);
+    FX_CHECK_EQ(kiosk_parse_onoff("on\0garbage", 10), -1);
+    FX_CHECK_EQ(kiosk_parse_onoff("off\0", 4), -1);
+    FX_CHECK_EQ(kiosk_parse_onoff("1\0", 2), -1);
+    FX_CHECK_EQ(kiosk_parse_onoff("o", 1), -1);
+    FX_CHECK_EQ(kiosk_parse_onoff("onn", 3), -1);
+    FX_CHECK_EQ(kiosk_parse_onoff("", 0), -1);
+    FX_CHECK_EQ(kiosk_parse_onoff(" on", 3), -1);
+}

@@ -29,6 +29,7 @@
 #include "fixel/draw.h"
 #include "fixel/env.h"
 #include "fixel/error.h"
+#include "fixel/files.h"
 
 #define NT 6 /* five to fit, the sixth to check */
 
@@ -203,6 +204,13 @@ int main(int argc, char **argv)
             return 2;
         }
     }
+    /* checked before the touches: a FIFO with no reader would hang the
+     * write at the end, a device node be written to (issue #40) */
+    char why[160];
+    if (strcmp(out, "-") && fx_check_replaceable(out, why, sizeof why) < 0) {
+        fprintf(stderr, "fixel-calibrate: -o %s: %s\n", out, why);
+        return 2;
+    }
     double given[2 * NT];
     if (points) {
         const char *s = points;
@@ -309,9 +317,10 @@ int main(int argc, char **argv)
     snprintf(line, sizeof line, "%d %d %d %d %d %d %d %d %d\n", c[0], c[1], c[2], c[3], c[4], c[5], c[6],
              in.width, in.height);
     if (strcmp(out, "-")) {
-        FILE *f = fopen(out, "w");
+        why[0] = 0;
+        FILE *f = fx_fopen_regular_write(out, 0, why, sizeof why);
         if (!f || fputs(line, f) < 0 || fclose(f) != 0) {
-            fprintf(stderr, "fixel-calibrate: cannot write %s: %s\n", out, strerror(errno));
+            fprintf(stderr, "fixel-calibrate: cannot write %s: %s\n", out, why[0] ? why : strerror(errno));
             return 1;
         }
         printf("wrote %s (tslib pointercal: raw to physical pixels of %dx%d)\n", out, in.width, in.height);

@@ -17,6 +17,7 @@
 #include "fixel/app.h"
 #include "fixel/display.h"
 #include "fixel/env.h"
+#include "fixel/files.h"
 #include "fixel/memfb.h"
 
 #define HEADLESS_W 800
@@ -684,6 +685,13 @@ int main(int argc, char **argv)
             snprintf(outs[nout], sizeof outs[0], "%.*s", (int)(eq - v), v);
             nout++;
         } else if (!strcmp(a, "--flight") && i + 1 < argc) {
+            /* read at start and written by 'k' and 'x': a FIFO hung the
+             * read, a device would be truncated (issue #40) */
+            char why[160];
+            if (fx_check_replaceable(argv[i + 1], why, sizeof why) < 0) {
+                fprintf(stderr, "fixel-demo: --flight %s: %s\n", argv[i + 1], why);
+                return 2;
+            }
             demo_anim_set_file(argv[++i]);
         } else if ((!strcmp(a, "--out") || !strcmp(a, "--page") || !strcmp(a, "--golden")) && i + 1 < argc) {
             const char *v = argv[++i];

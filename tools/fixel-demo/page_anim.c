@@ -12,6 +12,7 @@
 #include "demo.h"
 #include "fixel/anim.h"
 #include "fixel/circle.h"
+#include "fixel/files.h"
 #include "fixel/fill.h"
 #include "fixel/line.h"
 #include "fixel/mesh.h"
@@ -63,7 +64,10 @@ void demo_anim_init(demo_state *st)
     st->nflight = 0;
     st->flying = 0;
     if (flight_file) { /* a recorded flight: T EX EY EZ LX LY LZ, raw Q16.16 */
-        FILE *f = fopen(flight_file, "r");
+        char why[160];
+        FILE *f = fx_fopen_regular(flight_file, NULL, why, sizeof why);
+        if (!f && errno != ENOENT) /* missing: no flight recorded yet */
+            fprintf(stderr, "fixel-demo: --flight %s: %s\n", flight_file, why);
         fx_anim_key k;
         memset(&k, 0, sizeof k);
         while (f && st->nflight < DEMO_FLIGHT_MAX &&
@@ -331,11 +335,12 @@ int demo_anim_key(demo_state *st, int key)
         /* the file too: keys appended after a clear start again at t = 0,
          * and a reload stops where times stop increasing */
         if (flight_file) {
-            FILE *f = fopen(flight_file, "w");
+            char why[160];
+            FILE *f = fx_fopen_regular_write(flight_file, 0, why, sizeof why);
             if (f)
                 fclose(f);
             else
-                fprintf(stderr, "fixel-demo: cannot clear the flight file %s: %s\n", flight_file, strerror(errno));
+                fprintf(stderr, "fixel-demo: cannot clear the flight file %s: %s\n", flight_file, why);
         }
         break;
     case 'g':
@@ -351,14 +356,16 @@ int demo_anim_key(demo_state *st, int key)
         cam_key(&st->acam, st->nflight ? st->flight[st->nflight - 1].t + KEY_GAP : 0, k);
         st->nflight++;
         if (flight_file) {
-            FILE *f = fopen(flight_file, "a");
+            char why[160] = "";
+            FILE *f = fx_fopen_regular_write(flight_file, 1, why, sizeof why);
             int ok = f != NULL;
             if (f) {
                 ok = fprintf(f, "%d %d %d %d %d %d %d\n", k->t, k->v[0], k->v[1], k->v[2], k->v[3], k->v[4], k->v[5]) > 0;
                 ok = fclose(f) == 0 && ok;
             }
             if (!ok)
-                fprintf(stderr, "fixel-demo: cannot save the flight key to %s: %s\n", flight_file, strerror(errno));
+                fprintf(stderr, "fixel-demo: cannot save the flight key to %s: %s\n", flight_file,
+                        why[0] ? why : strerror(errno));
         }
         break;
     }

@@ -17,6 +17,7 @@
 #include "fixel/app.h"
 #include "fixel/env.h"
 #include "fixel/error.h"
+#include "fixel/files.h"
 #include "fixel/memfb.h"
 #include "fixel/par.h"
 #include "fixel/rt_mt.h"
@@ -212,17 +213,21 @@ static int fx_code(int e)
     case ENOTDIR: return -FX_ENOTDIR;
     case ENOMEM: return -FX_ENOMEM;
     case ENAMETOOLONG: return -FX_ERANGE;
-    case EOPNOTSUPP: return -FX_ENOTSUP; /* a FIFO or socket where a file is needed */
+    case EOPNOTSUPP: return -FX_ENOTSUP; /* a FIFO, socket or device where a file is needed */
     default: return -FX_EIO;
     }
 }
 
 /* Opens an input without blocking (a FIFO with no writer blocked open()
- * forever, issue #26), then checks its type: a directory is refused, and so
- * are FIFOs and sockets unless fifo_ok (the script itself may come from a
- * pipe); then reads block again. NULL with errno set. */
+ * forever, issue #26). Files the script names (fonts, OBJ, PNG, gzip) go
+ * through fixel/files.h: regular files only, so a FIFO, socket or device
+ * is refused (errno EOPNOTSUPP) and a directory too (EISDIR). The script
+ * itself may come from a pipe (fifo_ok): then only a directory is
+ * refused. Reads block again afterwards. NULL with errno set. */
 static FILE *open_input(const char *path, int fifo_ok)
 {
+    if (!fifo_ok)
+        return fx_fopen_regular(path, NULL, NULL, 0);
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
     if (fd < 0)
         return NULL;
@@ -232,8 +237,6 @@ static FILE *open_input(const char *path, int fifo_ok)
         e = errno;
     else if (S_ISDIR(st.st_mode))
         e = EISDIR;
-    else if (!fifo_ok && (S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)))
-        e = EOPNOTSUPP;
     FILE *f = e ? NULL : (fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK), fdopen(fd, "rb"));
     if (!f) {
         if (!e)

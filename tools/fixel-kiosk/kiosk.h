@@ -181,6 +181,10 @@ const kiosk_key *kiosk_key_find(const char *scope, const char *name, size_t n);
 #define KIOSK_VALUE_MAX 1000000000000000LL
 int kiosk_parse_milli(const char *s, size_t len, int64_t *out);
 
+/* "on"/"1" -> 1, "off"/"0" -> 0 (any case, trailing blanks and line
+ * ends allowed), anything else of exactly len bytes (a NUL included) -> -1. */
+int kiosk_parse_onoff(const char *s, size_t len);
+
 typedef enum kiosk_line_result {
     KIOSK_LINE_OK = 0,      /* a value was stored */
     KIOSK_LINE_IGNORED = 1, /* blank, comment, or a name no widget shows */

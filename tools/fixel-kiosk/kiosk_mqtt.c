@@ -3,6 +3,7 @@
  * cJSON when pkg-config finds them (tools/fixel-kiosk/kiosk.mk), else every
  * entry point says MQTT is missing. */
 #include "kiosk_mqtt.h"
+#include "fixel/files.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -217,9 +218,10 @@ static void *run(void *arg)
  * where ps would show them to every user */
 static int read_auth(kmq *m, char *err, size_t errsize)
 {
-    FILE *f = fopen(m->cfg.auth, "r");
+    char why[160];
+    FILE *f = fx_fopen_regular(m->cfg.auth, NULL, why, sizeof why); /* a FIFO must not hang the kiosk */
     if (!f) {
-        snprintf(err, errsize, "mqtt auth=%s: %s", m->cfg.auth, strerror(errno));
+        snprintf(err, errsize, "mqtt auth=%s: %s", m->cfg.auth, why);
         return -1;
     }
     struct stat st;

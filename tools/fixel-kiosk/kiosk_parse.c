@@ -6,6 +6,7 @@
 #include "kiosk.h"
 
 #include <string.h>
+#include <strings.h>
 
 #include "fixel/colormap.h"
 
@@ -45,6 +46,15 @@ int kiosk_parse_milli(const char *s, size_t len, int64_t *out)
     if (i != len || digits + frac == 0) return -1;
     *out = neg ? -v : v;
     return 0;
+}
+
+int kiosk_parse_onoff(const char *s, size_t len)
+{
+    while (len && (s[len - 1] == ' ' || s[len - 1] == '\n' || s[len - 1] == '\r')) len--;
+    /* every byte counts: a C-string compare would read "on\0garbage" as "on" */
+    if ((len == 2 && !strncasecmp(s, "on", 2)) || (len == 1 && s[0] == '1')) return 1;
+    if ((len == 3 && !strncasecmp(s, "off", 3)) || (len == 1 && s[0] == '0')) return 0;
+    return -1;
 }
 
 void kiosk_format_milli(char *buf, size_t size, int64_t v, int d)

@@ -26,6 +26,7 @@
 
 #include "fixel/app.h"
 #include "fixel/env.h"
+#include "fixel/files.h"
 #include "fixel/circle.h"
 #include "fixel/colormap.h"
 #include "fixel/draw.h"
@@ -299,14 +300,10 @@ static int load_png(FILE *f, kimg *m)
 static int load_image(const char *path, kimg *m)
 {
     /* never blocks on open (a FIFO named as the image), regular files only */
-    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-    if (fd < 0) return IMG_MISSING;
-    struct stat st;
-    if (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode)) { close(fd); return IMG_BAD; }
-    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-    FILE *f = fdopen(fd, "rb");
-    if (!f) { close(fd); return IMG_MISSING; }
-    m->file_size = st.st_size;
+    int64_t size = 0;
+    FILE *f = fx_fopen_regular(path, &size, NULL, 0);
+    if (!f) return errno == EISDIR || errno == EOPNOTSUPP ? IMG_BAD : IMG_MISSING;
+    m->file_size = (off_t)size;
     unsigned char magic[8];
     size_t n = fread(magic, 1, sizeof magic, f);
     int r = IMG_BAD;
@@ -927,7 +924,17 @@ static void render(kiosk *k, int si)
             snprintf(path, sizeof path, "%s/live%s.ppm", k->live_out, sfx);
             snprintf(tmp, sizeof tmp, "%s/live%s.tmp.ppm", k->live_out, sfx);
             fx_surface sf = sc->d ? fx_display_surface(sc->d) : fx_app_surface(k->app);
-            if (fx_write_image(tmp, &sf) == 0) rename(tmp, path); /* readers never see half a frame */
+            /* the rename must not replace a FIFO or device node someone put
+             * there, nor the write go into one (issue #40): refused, said
+             * once, and live output stops */
+            char why[160];
+            const char *bad = fx_check_replaceable(path, why, sizeof why) < 0 ? path
+                              : fx_check_replaceable(tmp, why, sizeof why) < 0 ? tmp : NULL;
+            if (bad) {
+                fprintf(stderr, "fixel-kiosk: --out %s: %s; live output stopped\n", bad, why);
+                k->live_out = NULL;
+            } else if (fx_write_image(tmp, &sf) == 0)
+                rename(tmp, path); /* readers never see half a frame */
         }
     }
     sc->full = 0;
@@ -1167,18 +1174,11 @@ static int load_config(const char *path, kiosk_config *cfg, char *err, size_t er
 {
     static char cbuf[65536];
     /* never blocks in open (a FIFO without writer), refuses what is not a
-     * file, and a config of exactly 65536 bytes is fine (issue #26) */
-    int cfd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-    struct stat cst;
-    if (cfd < 0) { snprintf(err, errsize, "%s: %s", path, strerror(errno)); return -1; }
-    if (fstat(cfd, &cst) < 0 || !S_ISREG(cst.st_mode)) {
-        snprintf(err, errsize, "%s: %s", path, S_ISDIR(cst.st_mode) ? "is a directory" : "not a regular file");
-        close(cfd);
-        return -1;
-    }
-    fcntl(cfd, F_SETFL, fcntl(cfd, F_GETFL) & ~O_NONBLOCK);
-    FILE *cf = fdopen(cfd, "rb");
-    if (!cf) { snprintf(err, errsize, "%s: %s", path, strerror(errno)); close(cfd); return -1; }
+     * file (fixel/files.h), and a config of exactly 65536 bytes is fine
+     * (issue #26) */
+    char why[160];
+    FILE *cf = fx_fopen_regular(path, NULL, why, sizeof why);
+    if (!cf) { snprintf(err, errsize, "%s: %s", path, why); return -1; }
     size_t clen = fread(cbuf, 1, sizeof cbuf, cf);
     int toolong = clen == sizeof cbuf && fgetc(cf) != EOF, rerr = ferror(cf);
     fclose(cf);
@@ -1300,7 +1300,8 @@ static void reload(kiosk *k)
 static int control(kiosk *k, const char *what, const char *v, size_t n)
 {
     char val[32];
-    if (n >= sizeof val) return KIOSK_LINE_BAD;
+    /* val is compared as a C string below: a NUL inside would cut it short */
+    if (n >= sizeof val || memchr(v, 0, n)) return KIOSK_LINE_BAD;
     memcpy(val, v, n);
     val[n] = 0;
     while (n && (val[n - 1] == ' ' || val[n - 1] == '\n' || val[n - 1] == '\r')) val[--n] = 0;
@@ -1308,7 +1309,7 @@ static int control(kiosk *k, const char *what, const char *v, size_t n)
     int isnum = n && kiosk_parse_milli(val, n, &x) == 0 && x % 1000 == 0;
     k->status_due = 1;
     if (!strcmp(what, "screen")) {
-        int on = !strcasecmp(val, "on") || !strcmp(val, "1") ? 1 : !strcasecmp(val, "off") || !strcmp(val, "0") ? 0 : -1;
+        int on = kiosk_parse_onoff(val, n);
         if (on < 0) return KIOSK_LINE_BAD;
         if (set_power_all(k, on) < 0) return KIOSK_LINE_BAD;
         k->screen_on = on;

@@ -30,7 +30,10 @@ int fx_write_ppm(const char *path, const fx_surface *s);
 /* By extension: ".ppm" writes PPM, anything else PNG. */
 int fx_write_image(const char *path, const fx_surface *s);
 
-/* Read a PNG as 8-bit RGB (alpha dropped, palettes/grey expanded).
+/* Read a PNG of any colour type and bit depth (palette, grey 1..16 bits,
+ * grey+alpha, RGB and RGBA 8/16, tRNS, interlaced) as 8-bit RGB: palettes
+ * and grey expanded, 16-bit samples to their high byte, alpha and tRNS
+ * dropped with the colour kept.
  * *rgb is malloc'd (w*h*3 bytes); the caller frees it. */
 int fx_read_png_rgb(const char *path, uint8_t **rgb, int32_t *w, int32_t *h);
 /* The same from an open file, with libpng's limits: at most max_side pixels

@@ -143,7 +143,9 @@ int fx_anim_ball_at(const fx_anim_ball *b, fx16 t, fx_anim_ball_state *out);
 /* The time of the k-th floor impact (k >= 1): 0 and *t, or -FX_ENOENT when
  * the ball never makes that many (it came to rest), or -FX_ERANGE. */
 int fx_anim_ball_impact(const fx_anim_ball *b, int32_t k, fx16 *t);
-/* Energy per unit mass, g (floor - y) + v^2 / 2, in Q32.32 (int64). */
+/* Energy per unit mass, g (floor - y) + v^2 / 2, in Q32.32 (int64): exact
+ * within the limits above, saturated at INT64_MAX past them; 0 when b or s
+ * is NULL. */
 int64_t fx_anim_ball_energy(const fx_anim_ball *b, const fx_anim_ball_state *s);
 
 /* ---- temporal antialiasing: the accumulation buffer ---- */

@@ -79,9 +79,14 @@ int fx_terrain(int32_t *h, int32_t stride, int k, int32_t amp, fx16 rough, uint3
  * Returns the segments drawn. */
 uint32_t fx_hilbert(const fx_ctx *c, int32_t x, int32_t y, int32_t size, uint32_t order);
 uint32_t fx_peano(const fx_ctx *c, int32_t x, int32_t y, int32_t size, uint32_t order);
-/* Cell (x, y) of the d-th step of each curve of order n (d < 4^n or 9^n). */
-void fx_hilbert_d2xy(uint32_t n, uint64_t d, uint32_t *x, uint32_t *y);
-void fx_peano_d2xy(uint32_t n, uint64_t d, uint32_t *x, uint32_t *y);
+/* Cell (x, y) of the d-th step of each curve of order n: 0, or -FX_EINVAL
+ * with nothing written when n is above the maximum (the cells' coordinates
+ * must fit uint32_t), d is past the last step (d >= 4^n or 9^n), or x or y
+ * is NULL. */
+#define FX_HILBERT_MAX_ORDER 31
+#define FX_PEANO_MAX_ORDER 20
+int fx_hilbert_d2xy(uint32_t n, uint64_t d, uint32_t *x, uint32_t *y);
+int fx_peano_d2xy(uint32_t n, uint64_t d, uint32_t *x, uint32_t *y);
 
 #ifdef __cplusplus
 }  /* extern "C" */
