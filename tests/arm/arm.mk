@@ -23,8 +23,12 @@ TEST_DEB_PKGS += gcc-aarch64-linux-gnu gcc-arm-linux-gnueabihf gcc-arm-linux-gnu
 
 # QUICK=1 leaves the cross-architecture run out of `make test` (for quick
 # local iterations; CI always runs it).
+# One suite per board: each is a cross build and then qemu-user on one core,
+# so the three run beside the other suites (tests/run-suites.sh) instead of
+# one after another.
 ifneq ($(QUICK),1)
-TEST_SUITES += "sh tests/arm/test-arm.sh"
+TEST_SUITES += "ARM_BOARDS=rpi4 sh tests/arm/test-arm.sh" "ARM_BOARDS=rpi3-32 sh tests/arm/test-arm.sh" \
+               "ARM_BOARDS=rpi-zero sh tests/arm/test-arm.sh"
 endif
 
 .PHONY: test-arm deps-arm

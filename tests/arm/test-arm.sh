@@ -6,7 +6,8 @@
 # them when run as root); one that builds must pass.
 # ARM_BOARDS="rpi-zero ..." runs only those boards (default: every one).
 P=0; F=0
-[ "$(id -u)" = 0 ] && sh tests/arm/deps.sh
+# (make test runs one board per suite, side by side: one deps.sh at a time)
+if [ "$(id -u)" = 0 ]; then mkdir -p build; flock build/.arm-deps.lock sh tests/arm/deps.sh; fi
 run_suite() { # label, command...
     label=$1; shift
     out=$("$@" 2>&1); rc=$?
@@ -69,5 +70,5 @@ for spec in "rpi4 aarch64-linux-gnu- aarch64-linux-gnu qemu-aarch64-static -ffre
     FX_FS_FLAGS="$fsflags" run_suite "$board integer-only core" \
         sh tests/check-freestanding.sh "${cross}gcc" "${cross}nm" "build/$board/freestanding" $(make --no-print-directory -s print-CORE_SRC)
 done
-echo "test-arm: $P passed, $F failed"
+echo "test-arm$(echo ${ARM_BOARDS:+-$ARM_BOARDS} | tr " " -): $P passed, $F failed"
 [ $F -eq 0 ]
