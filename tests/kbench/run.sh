@@ -30,7 +30,10 @@ done
 rm -rf "$out"; mkdir -p "$out"; out=$(cd "$out" && pwd)
 pids=""
 cleanup() { for p in $pids; do kill "$p" 2>/dev/null; done; }
-trap cleanup EXIT INT TERM
+trap cleanup EXIT
+# a suite stopped by a signal stops: the EXIT trap alone would clean up and
+# let the script go on, and a stray run then fights the next one for its files
+trap 'exit 143' INT TERM
 # wait up to $1 tenths of a second for the command after it to succeed
 . "$(cd "$(dirname "$0")" && pwd)/../lib/patience.sh" # waitfor, scaled by the measured PATIENCE
 port=$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])')

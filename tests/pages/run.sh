@@ -27,7 +27,10 @@ command -v python3 >/dev/null 2>&1 || { echo "pages: python3 missing (make deps)
 rm -rf "$out"; mkdir -p "$out"; out=$(cd "$out" && pwd)
 pids=""
 cleanup() { for p in $pids; do kill "$p" 2>/dev/null; done; }
-trap cleanup EXIT INT TERM
+trap cleanup EXIT
+# a suite stopped by a signal stops: the EXIT trap alone would clean up and
+# let the script go on, and a stray run then fights the next one for its files
+trap 'exit 143' INT TERM
 . "$(cd "$(dirname "$0")" && pwd)/../lib/patience.sh" # waitfor, scaled by the measured PATIENCE
 # everything above the status line (the page indicator lives in it)
 TOP="0 0 480 306"
