@@ -228,59 +228,87 @@ int fx_glm_rotate(fx_glm *m, fx_angle a, fx32 x, fx32 y, fx32 z)
     return 0;
 }
 
+/* The extent hi - lo and the sum hi + lo of a pair of planes, exactly:
+ * both fit int64 (*sh = 0, the common case, the bits of the plain
+ * arithmetic) or both are taken of the halves (*sh = 1): |hi/2 - lo/2| and
+ * |hi/2 + lo/2| are below 2^63 for any int64 hi and lo, and the matrix
+ * entries are ratios of the two or a product over the extent, so halving
+ * costs one bit of 2^-32 units. With the boundary's +-2^31 units the
+ * extent reaches 2^32 units (2^64 in Q32.32): glOrtho(-1.1e9, 1.1e9) and
+ * a far plane of 2e9 take the halved path and stay right to 2^-31 units. */
+static void span(fx32 lo, fx32 hi, fx32 *ext, fx32 *sum, int *sh)
+{
+    if (!__builtin_sub_overflow(hi, lo, ext) && !__builtin_add_overflow(hi, lo, sum)) {
+        *sh = 0;
+        return;
+    }
+    *ext = (hi >> 1) - (lo >> 1);
+    *sum = (hi >> 1) + (lo >> 1);
+    *sh = 1;
+}
+
+/* Bound: every entry is a quotient of span()'s exact extents and sums
+ * (fx_muldiv64: 128-bit product, saturating), so any int64 planes give a
+ * matrix with no overflow; 2 / ext with ext halved is 1 / (ext / 2). */
 int fx_glm_ortho(fx_glm *m, fx32 l, fx32 r, fx32 b, fx32 t, fx32 n, fx32 f)
 {
     fx_glm_identity(m);
     if (l == r || b == t || n == f)
         return -1;
-    /* Bound: the inputs are any int64 (the boundary gives +-2^31 units, so
-     * r - l reaches 2^64). Sums and differences saturate: exact while the
-     * extent is below 2^31 units (glOrtho(-1e9, 1e9, ...) is), and beyond
-     * it the matrix is that of an extent of 2^31 units, which no vertex
-     * inside +-2^31 units can tell apart at 1/256 of a pixel. */
-    fx32 rl = fx32_sub(r, l), tb = fx32_sub(t, b), fn = fx32_sub(f, n);
-    m->m[0] = fx_muldiv64(2 * FX32_ONE, FX32_ONE, rl);
-    m->m[5] = fx_muldiv64(2 * FX32_ONE, FX32_ONE, tb);
-    m->m[10] = fx_muldiv64(-2 * FX32_ONE, FX32_ONE, fn);
-    m->m[12] = fx_muldiv64(fx32_neg(fx32_add(r, l)), FX32_ONE, rl);
-    m->m[13] = fx_muldiv64(fx32_neg(fx32_add(t, b)), FX32_ONE, tb);
-    m->m[14] = fx_muldiv64(fx32_neg(fx32_add(f, n)), FX32_ONE, fn);
+    fx32 rl, rs, tb, ts, fn, fs;
+    int hx, hy, hz;
+    span(l, r, &rl, &rs, &hx), span(b, t, &tb, &ts, &hy), span(n, f, &fn, &fs, &hz);
+    m->m[0] = fx_muldiv64(hx ? FX32_ONE : 2 * FX32_ONE, FX32_ONE, rl);
+    m->m[5] = fx_muldiv64(hy ? FX32_ONE : 2 * FX32_ONE, FX32_ONE, tb);
+    m->m[10] = fx_muldiv64(hz ? -FX32_ONE : -2 * FX32_ONE, FX32_ONE, fn);
+    m->m[12] = fx_muldiv64(fx32_neg(rs), FX32_ONE, rl);
+    m->m[13] = fx_muldiv64(fx32_neg(ts), FX32_ONE, tb);
+    m->m[14] = fx_muldiv64(fx32_neg(fs), FX32_ONE, fn);
     return 0;
 }
 
+/* Bound: as fx_glm_ortho. 2n / (r - l) is n / ((r - l) / 2) on the halved
+ * path and -2fn / (f - n) is -fn / ((f - n) / 2): the product f n is
+ * fx_muldiv64's 128-bit one; n > 0 and f > 0, so -f does not overflow. */
 int fx_glm_frustum(fx_glm *m, fx32 l, fx32 r, fx32 b, fx32 t, fx32 n, fx32 f)
 {
     fx_glm_identity(m);
     if (n <= 0 || f <= 0 || l == r || b == t || n == f)
         return -1;
-    /* Bound: as fx_glm_ortho, every sum and difference saturates (2n,
-     * f + n and r - l of +-2^31-unit planes pass INT64_MAX); the quotients
-     * are fx_muldiv64's, saturating. A far plane of 2e9 is exact. */
-    fx32 rl = fx32_sub(r, l), tb = fx32_sub(t, b), fn = fx32_sub(f, n), n2 = fx32_add(n, n);
-    m->m[0] = fx_muldiv64(n2, FX32_ONE, rl);
-    m->m[5] = fx_muldiv64(n2, FX32_ONE, tb);
-    m->m[8] = fx_muldiv64(fx32_add(r, l), FX32_ONE, rl);
-    m->m[9] = fx_muldiv64(fx32_add(t, b), FX32_ONE, tb);
-    m->m[10] = fx_muldiv64(fx32_neg(fx32_add(f, n)), FX32_ONE, fn);
+    fx32 rl, rs, tb, ts, fn, fs;
+    int hx, hy, hz;
+    span(l, r, &rl, &rs, &hx), span(b, t, &tb, &ts, &hy), span(n, f, &fn, &fs, &hz);
+    /* 2n fits when n < 2^62; otherwise halve the extent instead */
+    int n2ok = n <= INT64_MAX / 2;
+    m->m[0] = hx || !n2ok ? fx_muldiv64(n, FX32_ONE, hx ? rl : rl / 2) : fx_muldiv64(2 * n, FX32_ONE, rl);
+    m->m[5] = hy || !n2ok ? fx_muldiv64(n, FX32_ONE, hy ? tb : tb / 2) : fx_muldiv64(2 * n, FX32_ONE, tb);
+    m->m[8] = fx_muldiv64(rs, FX32_ONE, rl);
+    m->m[9] = fx_muldiv64(ts, FX32_ONE, tb);
+    m->m[10] = fx_muldiv64(fx32_neg(fs), FX32_ONE, fn);
     m->m[11] = -FX32_ONE;
-    m->m[14] = fx_muldiv64(fx32_neg(fx32_add(f, f)), n, fn);
+    m->m[14] = hz ? fx_muldiv64(-f, n, fn) : fx_muldiv64(f <= INT64_MAX / 2 ? -2 * f : -f, n, f <= INT64_MAX / 2 ? fn : fn / 2);
     m->m[15] = 0;
     return 0;
 }
 
+/* Bound: as fx_glm_frustum for the depth entries (n and f any int64: the
+ * sign of f - n is that of the exact halves, -f n / ((f - n) / 2) with
+ * fx32_neg for f = INT64_MIN). */
 int fx_glm_perspective(fx_glm *m, fx_angle fovy, fx32 aspect, fx32 n, fx32 f)
 {
     fx_glm_identity(m);
     fx32 s = fx32_sin(fovy / 2), c = fx32_cos(fovy / 2);
     if (s == 0 || aspect == 0 || n == f)
         return -1;
-    /* Bound: as fx_glm_frustum (saturating sums, saturating quotients). */
-    fx32 cot = fx_muldiv64(c, FX32_ONE, s), fn = fx32_sub(f, n);
+    fx32 cot = fx_muldiv64(c, FX32_ONE, s), fn, fs;
+    int hz;
+    span(n, f, &fn, &fs, &hz);
     m->m[0] = fx_muldiv64(cot, FX32_ONE, aspect);
     m->m[5] = cot;
-    m->m[10] = fx_muldiv64(fx32_neg(fx32_add(f, n)), FX32_ONE, fn);
+    m->m[10] = fx_muldiv64(fx32_neg(fs), FX32_ONE, fn);
     m->m[11] = -FX32_ONE;
-    m->m[14] = fx_muldiv64(fx32_neg(fx32_add(f, f)), n, fn);
+    int f2ok = f <= INT64_MAX / 2 && f >= INT64_MIN / 2;
+    m->m[14] = hz || !f2ok ? fx_muldiv64(fx32_neg(f), n, hz ? fn : fn / 2) : fx_muldiv64(-2 * f, n, fn);
     m->m[15] = 0;
     return 0;
 }

@@ -85,6 +85,11 @@ FX_TEST(glut_hostile_ortho_1_1e9)
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     glOrtho(-1.1e9, 1.1e9, -1.1e9, 1.1e9, -1, 1);
+    GLdouble m[16];
+    glGetDoublev(GL_PROJECTION_MATRIX, m);
+    /* 2 / 2.2e9 is 3.9 units of 2^-32: the nearest is 4; r - l wrapped to
+     * a negative extent before */
+    FX_CHECK(m[0] == 4 / 4294967296.0 && m[5] == m[0] && m[12] == 0 && m[13] == 0);
     glMatrixMode(GL_MODELVIEW);
     glRectd(-5.5e8, -5.5e8, 5.5e8, 5.5e8); /* the middle half: window [10, 30) */
     FX_CHECK(lit(20, 20));
@@ -99,6 +104,9 @@ FX_TEST(glut_hostile_translate_twice_2e9)
     setup();
     glTranslated(2e9, 0, 0);
     glTranslated(2e9, 0, 0);
+    GLdouble m[16];
+    glGetDoublev(GL_MODELVIEW_MATRIX, m);
+    FX_CHECK(m[12] >= 2147483647.0); /* pinned at the top, not wrapped below zero */
     glPointSize(3);
     glBegin(GL_POINTS);
     glVertex2d(20, 20);
