@@ -23,6 +23,7 @@ $(BUILD)/tests/gl-corners: $(GL_CORNERS_DEPS) $(GLUT_A) $(LIB_A)
 GL_SAN_SRC := $(BOARD_SRC) $(GLUT_SRC)
 GL_SAN_OBJ := $(GL_SAN_SRC:%.c=$(FUZZ_BUILD)/obj/%.o)
 $(GL_SAN_OBJ): FUZZ_CFLAGS += $(BOARD_DEFS) $(PKG_CFLAGS) -Iboards/glut/include
+-include $(GL_SAN_OBJ:.o=.d)
 $(FUZZ_BUILD)/libglut-san.a: $(GL_SAN_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
