@@ -131,12 +131,12 @@ static void emit(const vbuf *b, int i)
 }
 
 /* The GLUT solids' counts: slices, stacks, sides and rings are clamped to
- * FXG_MAX_SHAPE_SEG (512, past what a frame can show: a 512 x 512 sphere
- * is 262,000 vertices, 6 MB of floats), and every vertex count
+ * FXG_MAX_SHAPE_SEG (256, gluSphere's FX_MESH_MAX_SEG: past what a frame
+ * can show, a 256 x 256 sphere is 65,000 vertices), and every vertex count
  * is computed in 64 bits from the clamped values before it is allocated.
  * glutSolidSphere(1, 65536, 65537) had 65536 * 65536 + 2 wrap to 2 in an
  * int and wrote past a two-vertex buffer. */
-#define FXG_MAX_SHAPE_SEG 512
+#define FXG_MAX_SHAPE_SEG FX_MESH_MAX_SEG
 static int seg_clamp(int v) { return v > FXG_MAX_SHAPE_SEG ? FXG_MAX_SHAPE_SEG : v; }
 /* A radius or size as a float: doubles past FLT_MAX are +-FLT_MAX (the
  * conversion of an out-of-range double to float is undefined in C), NaN
@@ -154,7 +154,7 @@ static void sphere(float r, int slices, int stacks, int wire)
     float *s1 = malloc((size_t)(slices + 1) * 2 * sizeof(float)), *c1 = s1 + slices + 1;
     float *s2 = malloc((size_t)(stacks + 1) * 2 * sizeof(float)), *c2 = s2 + stacks + 1;
     vbuf b;
-    int nv = (int)((int64_t)slices * (stacks - 1) + 2); /* <= 512 * 511 + 2 */
+    int nv = (int)((int64_t)slices * (stacks - 1) + 2); /* <= 256 * 255 + 2 */
     if (!s1 || !s2 || vbuf_alloc(&b, nv) < 0) {
         free(s1), free(s2);
         return;
@@ -218,7 +218,7 @@ static void cone_cyl(float base, float height, int slices, int stacks, int wire,
     slices = seg_clamp(slices), stacks = seg_clamp(stacks);
     float *s = malloc((size_t)(slices + 1) * 2 * sizeof(float)), *c = s + slices + 1;
     vbuf b;
-    int nv = (int)(cyl ? (int64_t)slices * (stacks + 3) + 2 : (int64_t)slices * (stacks + 2) + 1); /* < 2^19 */
+    int nv = (int)(cyl ? (int64_t)slices * (stacks + 3) + 2 : (int64_t)slices * (stacks + 2) + 1); /* < 2^17 */
     if (!s || vbuf_alloc(&b, nv) < 0) {
         free(s);
         return;
@@ -294,7 +294,7 @@ static void torus(float ir, float or_, int sides, int rings, int wire)
     float *sp = malloc((size_t)(rings + 1) * 2 * sizeof(float)), *cp = sp + rings + 1;
     float *sh = malloc((size_t)(sides + 1) * 2 * sizeof(float)), *ch = sh + sides + 1;
     vbuf b;
-    if (!sp || !sh || vbuf_alloc(&b, (int)((int64_t)sides * rings)) < 0) { /* <= 2^18 */
+    if (!sp || !sh || vbuf_alloc(&b, (int)((int64_t)sides * rings)) < 0) { /* <= 2^16 */
         free(sp), free(sh);
         return;
     }

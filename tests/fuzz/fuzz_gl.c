@@ -59,8 +59,8 @@ static void param_name(const fxgl_entry *e, int k, char *out, size_t n)
 
 /* Ints: sizes and strides that index the caller's buffers stay within
  * them (a program's own contract); counts of the solids take their
- * corners up to 40 (the cap of 512 and INT32_MAX are the unit test's:
- * test_glut_hostile.c, a 512x512 sphere is slow under ASan). */
+ * corners up to 40 (the cap of 256 and INT32_MAX are the unit test's:
+ * test_glut_hostile.c, a 256x256 sphere is slow under ASan). */
 static int any_int(in *s, const char *name)
 {
     if (!strcmp(name, "w") || !strcmp(name, "h") || strstr(name, "stride") || strstr(name, "order") ||
