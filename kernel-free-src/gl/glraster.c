@@ -674,6 +674,10 @@ static int hidden_by_depth(const fx_gl_target *t, const fx_gl_wvert *const v[3],
     return 1;
 }
 
+/* Bound: vertices come from fx_gl_to_window, within +-FX_GL_WIN_MAX =
+ * 2^29 (1/256 pixel), so x - 128 fits the fx8 (int32) the span walker
+ * takes, whose edge setup is exact for any int32 vertex (fill.c's
+ * triangles); the GL layer clips to its guard band (+-2^28) before. */
 void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
                     const fx_gl_wvert *c, const fx16 *flat)
 {
