@@ -64,8 +64,38 @@ fx16 fxg_d2c(double d)
         v++;
     return v;
 }
+/* A double to int32 for the integer parameters GL takes as floats
+ * (glTexParameterf, glPixelStoref, glBitmap's origin): rounded to nearest,
+ * saturating, NaN as 0 -- a float-to-int conversion out of range is
+ * undefined behaviour in C, llrint's result unspecified. */
+int32_t fxg_d2i(double d)
+{
+    if (d != d)
+        return 0;
+    if (d >= 2147483647.0)
+        return INT32_MAX;
+    if (d <= -2147483648.0)
+        return INT32_MIN;
+    return (int32_t)lrint(d);
+}
+/* A window coordinate in 1/256 pixel (glWindowPos, glBitmap's moves):
+ * clamped to +-FX_GL_WIN_MAX, the range the rasterizers are proved for. */
+int64_t fxg_d2win(double d)
+{
+    double w = (double)FX_GL_WIN_MAX;
+    if (d != d)
+        return 0;
+    d *= 256.0;
+    return d >= w ? FX_GL_WIN_MAX : d <= -w ? -FX_GL_WIN_MAX : (int64_t)llrint(d);
+}
+static int64_t clamp_win(int64_t v)
+{
+    return v < -FX_GL_WIN_MAX ? -FX_GL_WIN_MAX : v > FX_GL_WIN_MAX ? FX_GL_WIN_MAX : v;
+}
 fx_angle fxg_deg2angle(double deg)
 {
+    if (!isfinite(deg)) /* fmod(inf, 360) is NaN: no angle; GL leaves it undefined */
+        return 0;
     double t = fmod(deg, 360.0) / 360.0; /* (-1, 1) */
     return (fx_angle)(uint32_t)(int64_t)llrint(t * 4294967296.0);
 }
@@ -158,16 +188,23 @@ static void record(int op, int n, const double *a)
     } while (0)
 
 /* ---- initialisation ---- */
+/* The scissor box as a rectangle: x + w of GL's int32 box can pass
+ * INT32_MAX, so the corners are summed in 64 bits and clamped. */
+fx_rect fxg_scissor_rect(void)
+{
+    int64_t x1 = (int64_t)fxg.scissor[0] + fxg.scissor[2], y1 = (int64_t)fxg.scissor[1] + fxg.scissor[3];
+    return (fx_rect){fxg.scissor[0], fxg.scissor[1], x1 > INT32_MAX ? INT32_MAX : (int32_t)x1,
+                     y1 > INT32_MAX ? INT32_MAX : (int32_t)y1};
+}
 static void update_clip(void)
 {
+    /* the viewport is clamped where it is set (glViewport), so its sums
+     * fit; the scissor box is GL's any x, y and size: fxg_scissor_rect */
     fx_rect r = {fxg.vp[0], fxg.vp[1], fxg.vp[0] + fxg.vp[2], fxg.vp[1] + fxg.vp[3]};
     fx_rect win = {0, 0, fxg.w, fxg.h};
     r = fx_rect_intersect(r, win);
-    if (fxg.scissor_on) {
-        fx_rect s = {fxg.scissor[0], fxg.scissor[1], fxg.scissor[0] + fxg.scissor[2],
-                     fxg.scissor[1] + fxg.scissor[3]};
-        r = fx_rect_intersect(r, s);
-    }
+    if (fxg.scissor_on)
+        r = fx_rect_intersect(r, fxg_scissor_rect());
     if (fx_rect_empty(r))
         r = (fx_rect){0, 0, 0, 0};
     fxg.tgt.clip = r;
@@ -452,12 +489,20 @@ void gluLookAt(GLdouble ex, GLdouble ey, GLdouble ez, GLdouble cx, GLdouble cy, 
         d[i] = fxg_x2d(m.m[i]);
     glMultMatrixd(d);
 }
+/* GL clamps the size to GL_MAX_VIEWPORT_DIMS (16384 here); x and y are
+ * clamped to +-FXG_VIEWPORT_BOUND (2^20, GL 4.1's VIEWPORT_BOUNDS_RANGE
+ * idea) so that x + w and the window coordinates x * 256 + w * 128 * ndc
+ * stay inside the rasterizers' range (fixel/glcore.h, FX_GL_WIN_MAX). */
 void glViewport(GLint x, GLint y, GLsizei w, GLsizei h)
 {
     if (w < 0 || h < 0) {
         fxg_set_error(GL_INVALID_VALUE);
         return;
     }
+    if (w > FXG_MAX_VIEWPORT) w = FXG_MAX_VIEWPORT;
+    if (h > FXG_MAX_VIEWPORT) h = FXG_MAX_VIEWPORT;
+    x = x < -FXG_VIEWPORT_BOUND ? -FXG_VIEWPORT_BOUND : x > FXG_VIEWPORT_BOUND ? FXG_VIEWPORT_BOUND : x;
+    y = y < -FXG_VIEWPORT_BOUND ? -FXG_VIEWPORT_BOUND : y > FXG_VIEWPORT_BOUND ? FXG_VIEWPORT_BOUND : y;
     fxg.vp[0] = x, fxg.vp[1] = y, fxg.vp[2] = w, fxg.vp[3] = h;
     update_clip();
 }
@@ -569,7 +614,7 @@ void glShadeModel(GLenum m)
 void glPointSize(GLfloat s)
 {
     REC(OP_POINTSIZE, s);
-    if (s <= 0) {
+    if (!(s > 0)) { /* NaN too */
         fxg_set_error(GL_INVALID_VALUE);
         return;
     }
@@ -578,7 +623,7 @@ void glPointSize(GLfloat s)
 void glLineWidth(GLfloat w)
 {
     REC(OP_LINEWIDTH, w);
-    if (w <= 0) {
+    if (!(w > 0)) { /* NaN too */
         fxg_set_error(GL_INVALID_VALUE);
         return;
     }
@@ -678,7 +723,7 @@ void glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a)
 }
 void glClearDepth(GLclampd d)
 {
-    d = d < 0 ? 0 : d > 1 ? 1 : d;
+    d = !(d > 0) ? 0 : d > 1 ? 1 : d; /* NaN as 0 */
     int64_t z = llrint(d * 16777216.0);
     fxg.clear_depth = z > 0xFFFFFF ? 0xFFFFFF : (uint32_t)z;
 }
@@ -1097,8 +1142,9 @@ static void sync_target(void)
 
 static int32_t isize(float s)
 {
-    int32_t v = (int32_t)lrintf(s);
-    return v < 1 ? 1 : v > 256 ? 256 : v;
+    if (!(s >= 1.0f)) /* NaN too (glPointSize refuses it; a display list may not) */
+        return 1;
+    return s >= 256.0f ? 256 : (int32_t)lrintf(s);
 }
 
 /* A vertex through modelview, lighting and projection. */
@@ -1131,8 +1177,9 @@ static void process_vertex(fx32 x, fx32 y, fx32 z, fx32 w, fx_gl_cvert *o)
         fx_glv4 e = fx_glm_apply(&fxg.mv[fxg.mv_top], v);
         fx32 n[3];
         for (int r = 0; r < 3; r++)
-            n[r] = fx32_mul(fxg.nmat[r], fxg.normal[0]) + fx32_mul(fxg.nmat[3 + r], fxg.normal[1]) +
-                   fx32_mul(fxg.nmat[6 + r], fxg.normal[2]);
+            n[r] = fx32_add(fx32_add(fx32_mul(fxg.nmat[r], fxg.normal[0]),
+                                     fx32_mul(fxg.nmat[3 + r], fxg.normal[1])),
+                            fx32_mul(fxg.nmat[6 + r], fxg.normal[2]));
         if (fxg.normalize || fxg.rescale)
             fx_glv3_normalize(n);
         fx32 p[4] = {e.x, e.y, e.z, e.w};
@@ -1143,7 +1190,7 @@ static void process_vertex(fx32 x, fx32 y, fx32 z, fx32 w, fx_gl_cvert *o)
             /* GL 1.x: a back face is lit with the back material and the
              * normal reversed; which colour a polygon takes is decided by
              * its facing in window coordinates (raster_poly) */
-            fx32 bn[3] = {-n[0], -n[1], -n[2]};
+            fx32 bn[3] = {fx32_neg(n[0]), fx32_neg(n[1]), fx32_neg(n[2])};
             fx_gl_shade_cached(&fxg.L, &shade_cache, &fxg.mat[1], p, bn, o->bc);
         } else {
             memcpy(o->bc, o->c, sizeof o->bc);
@@ -1580,7 +1627,7 @@ void glRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { raster_pos(
 void glRasterPos4dv(const GLdouble *v) { raster_pos(v[0], v[1], v[2], v[3]); }
 void glWindowPos2i(GLint x, GLint y)
 {
-    fxg.rx = (int64_t)x * 256, fxg.ry = (int64_t)y * 256;
+    fxg.rx = clamp_win((int64_t)x * 256), fxg.ry = clamp_win((int64_t)y * 256);
     fxg.raster_valid = 1;
     for (int k = 0; k < 4; k++)
         fxg.raster_color[k] = fxg.color[k];
@@ -1588,7 +1635,7 @@ void glWindowPos2i(GLint x, GLint y)
 void glWindowPos2f(GLfloat x, GLfloat y)
 {
     glWindowPos2i(0, 0);
-    fxg.rx = llrint(x * 256.0), fxg.ry = llrint(y * 256.0);
+    fxg.rx = fxg_d2win(x), fxg.ry = fxg_d2win(y);
 }
 
 /* Bitmap at the raster position: rows given top first; window rows go up. */
@@ -1606,9 +1653,7 @@ void fxg_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmov
                  ((fx_color)lvl(fxg.raster_color[1]) << 8) | (fx_color)lvl(fxg.raster_color[2]);
     fx_rect clip = {0, 0, fxg.w, fxg.h};
     if (fxg.scissor_on)
-        clip = fx_rect_intersect(clip, (fx_rect){fxg.scissor[0], fxg.scissor[1],
-                                                 fxg.scissor[0] + fxg.scissor[2],
-                                                 fxg.scissor[1] + fxg.scissor[3]});
+        clip = fx_rect_intersect(clip, fxg_scissor_rect());
     uint32_t native = fx_pack(fxg.fb.surf.format, c);
     for (int32_t r = 0; r < h; r++)
         for (int32_t col = 0; col < w; col++) {
@@ -1623,28 +1668,39 @@ void fxg_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmov
                     fx_surface_put_native(&fxg.fb.surf, (int32_t)X, fxg.h - 1 - (int32_t)Y, native);
                 }
         }
-    fxg.rx += (int64_t)xmove * 256;
+    fxg.rx = clamp_win(fxg.rx + (int64_t)xmove * 256);
 }
 
 void glBitmap(GLsizei w, GLsizei h, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
               const GLubyte *bitmap)
 {
-    /* GL bitmaps are stored bottom row first, rows aligned to the unpack alignment */
-    int32_t rb = (w + 7) / 8;
-    int32_t al = fxg.unpack_align;
+    if (w < 0 || h < 0) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
+    /* GL bitmaps are stored bottom row first, rows aligned to the unpack
+     * alignment; (w + 7) / 8 in 64 bits: w + 7 passes INT32_MAX */
+    int64_t al = fxg.unpack_align, rb = ((int64_t)w + 7) / 8;
     rb = (rb + al - 1) / al * al;
     if (bitmap && w > 0 && h > 0) {
         uint8_t *flip = malloc((size_t)rb * (size_t)h);
         if (flip) {
             for (int32_t r = 0; r < h; r++)
-                memcpy(flip + (size_t)r * rb, bitmap + (size_t)(h - 1 - r) * rb, (size_t)rb);
-            fxg_bitmap(w, h, (int32_t)lrintf(xorig), (int32_t)lrintf(yorig), 0, flip, rb, 1);
+                memcpy(flip + (size_t)r * (size_t)rb, bitmap + (size_t)(h - 1 - r) * (size_t)rb, (size_t)rb);
+            /* the origin clamped to the raster range: beyond it the bitmap
+             * is off the surface either way */
+            int32_t xo = fxg_d2i(xorig), yo = fxg_d2i(yorig);
+            xo = xo > FXG_VIEWPORT_BOUND * 4 ? FXG_VIEWPORT_BOUND * 4 : xo < -FXG_VIEWPORT_BOUND * 4 ? -FXG_VIEWPORT_BOUND * 4 : xo;
+            yo = yo > FXG_VIEWPORT_BOUND * 4 ? FXG_VIEWPORT_BOUND * 4 : yo < -FXG_VIEWPORT_BOUND * 4 ? -FXG_VIEWPORT_BOUND * 4 : yo;
+            fxg_bitmap(w, h, xo, yo, 0, flip, (int32_t)(rb > INT32_MAX ? INT32_MAX : rb), 1);
             free(flip);
         }
     }
+    /* the raster position moves by any float: the sum saturates at the
+     * rasterizers' range (+-2^21 pixels) instead of overflowing */
     if (fxg.raster_valid) {
-        fxg.rx += llrint(xmove * 256.0);
-        fxg.ry += llrint(ymove * 256.0);
+        fxg.rx = clamp_win(fxg.rx + fxg_d2win(xmove));
+        fxg.ry = clamp_win(fxg.ry + fxg_d2win(ymove));
     }
 }
 
@@ -1657,7 +1713,7 @@ void glPixelStorei(GLenum pname, GLint param)
     else if (pname == GL_UNPACK_ALIGNMENT || pname == GL_PACK_ALIGNMENT)
         fxg_set_error(GL_INVALID_VALUE);
 }
-void glPixelStoref(GLenum pname, GLfloat param) { glPixelStorei(pname, (GLint)param); }
+void glPixelStoref(GLenum pname, GLfloat param) { glPixelStorei(pname, fxg_d2i(param)); }
 void glPixelZoom(GLfloat xf, GLfloat yf) { fxg.zoom_x = xf, fxg.zoom_y = yf; }
 
 static int comps(GLenum format)
@@ -1675,15 +1731,21 @@ void glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum 
                   GLvoid *pixels)
 {
     int nc = comps(format);
+    if (w < 0 || h < 0) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
+    /* x + c and y + r are taken in 64 bits below: x near INT32_MAX plus
+     * the width overflows an int */
     if (format == GL_DEPTH_COMPONENT && (type == GL_FLOAT || type == GL_UNSIGNED_INT)) {
         size_t stride = (size_t)w * 4;
         for (GLsizei r = 0; r < h; r++)
             for (GLsizei c = 0; c < w; c++) {
-                int32_t X = x + c, Y = y + r;
+                int64_t X = (int64_t)x + c, Y = (int64_t)y + r;
                 uint32_t d = 0xFFFFFF;
                 if (X >= 0 && Y >= 0 && X < fxg.w && Y < fxg.h)
-                    d = fxg.depth[(size_t)(fxg.h - 1 - Y) * fxg.w + X];
-                uint8_t *p = (uint8_t *)pixels + r * stride + (size_t)c * 4;
+                    d = fxg.depth[(size_t)(fxg.h - 1 - Y) * (size_t)fxg.w + (size_t)X];
+                uint8_t *p = (uint8_t *)pixels + (size_t)r * stride + (size_t)c * 4;
                 if (type == GL_FLOAT) {
                     float f = (float)(d / 16777215.0);
                     memcpy(p, &f, 4);
@@ -1704,10 +1766,10 @@ void glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum 
     rowb = (rowb + al - 1) / al * al;
     for (GLsizei r = 0; r < h; r++)
         for (GLsizei c = 0; c < w; c++) {
-            int32_t X = x + c, Y = y + r;
+            int64_t X = (int64_t)x + c, Y = (int64_t)y + r;
             fx_color px = 0;
             if (X >= 0 && Y >= 0 && X < fxg.w && Y < fxg.h)
-                px = fx_surface_get(&fxg.fb.surf, X, fxg.h - 1 - Y);
+                px = fx_surface_get(&fxg.fb.surf, (int32_t)X, fxg.h - 1 - (int32_t)Y);
             int ch[4] = {(int)(px >> 16) & 255, (int)(px >> 8) & 255, (int)px & 255, 255};
             int out[4], k = 0;
             switch (format) {
@@ -1722,7 +1784,7 @@ void glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum 
             case GL_LUMINANCE: out[0] = ch[0] + ch[1] + ch[2] > 765 ? 255 : (ch[0] + ch[1] + ch[2]) / 3; break;
             default: out[0] = ch[0], out[1] = 255; break;
             }
-            uint8_t *p = (uint8_t *)pixels + r * rowb + (size_t)c * nc * bpc;
+            uint8_t *p = (uint8_t *)pixels + (size_t)r * rowb + (size_t)c * nc * bpc;
             for (k = 0; k < nc; k++) {
                 if (bpc == 1)
                     p[k] = (uint8_t)out[k];
@@ -1743,19 +1805,33 @@ void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid
     }
     if (!fxg.raster_valid)
         return;
+    if (w < 0 || h < 0) {
+        fxg_set_error(GL_INVALID_VALUE);
+        return;
+    }
     int bpc = type == GL_FLOAT ? 4 : 1;
     size_t rowb = (size_t)w * nc * bpc, al = (size_t)fxg.unpack_align;
     rowb = (rowb + al - 1) / al * al;
     int64_t x0 = fxg.rx >> 8, y0 = fxg.ry >> 8;
-    int zx = (int)lrintf(fxg.zoom_x), zy = (int)lrintf(fxg.zoom_y);
-    if (zx < 1)
-        zx = 1;
-    if (zy < 1)
-        zy = 1;
+    /* Zoom factors are any float (glPixelZoom stores them as given): here
+     * they are whole pixels in [1, 2^24] (NaN as 1), and each source pixel
+     * fills only the part of its zx-by-zy block inside the clip rectangle,
+     * so the work is the source size plus at most the surface, whatever
+     * the zoom (glPixelZoom(1e5, 1e5) was a 10^10-iteration loop). */
+    int64_t zx = fxg_d2i(fxg.zoom_x), zy = fxg_d2i(fxg.zoom_y);
+    zx = zx < 1 ? 1 : zx > (1 << 24) ? (1 << 24) : zx;
+    zy = zy < 1 ? 1 : zy > (1 << 24) ? (1 << 24) : zy;
     sync_target();
-    for (GLsizei r = 0; r < h; r++)
+    fx_rect cl = fxg.tgt.clip;
+    for (GLsizei r = 0; r < h; r++) {
+        int64_t by0 = y0 + (int64_t)r * zy, by1 = by0 + zy;
+        if (by1 <= cl.y0 || by0 >= cl.y1)
+            continue; /* the row's blocks are all outside */
         for (GLsizei c = 0; c < w; c++) {
-            const uint8_t *p = (const uint8_t *)pixels + r * rowb + (size_t)c * nc * bpc;
+            int64_t bx0 = x0 + (int64_t)c * zx, bx1 = bx0 + zx;
+            if (bx1 <= cl.x0 || bx0 >= cl.x1)
+                continue;
+            const uint8_t *p = (const uint8_t *)pixels + (size_t)r * rowb + (size_t)c * nc * bpc;
             int v[4];
             for (int k = 0; k < nc; k++) {
                 if (bpc == 1)
@@ -1781,16 +1857,14 @@ void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid
             }
             fx_color col = ((fx_color)rgba[3] << 24) | ((fx_color)rgba[0] << 16) |
                            ((fx_color)rgba[1] << 8) | (fx_color)rgba[2];
-            for (int sy = 0; sy < zy; sy++)
-                for (int sx = 0; sx < zx; sx++) {
-                    int64_t X = x0 + (int64_t)c * zx + sx, Y = y0 + (int64_t)r * zy + sy;
-                    if (X < fxg.tgt.clip.x0 || X >= fxg.tgt.clip.x1 || Y < fxg.tgt.clip.y0 ||
-                        Y >= fxg.tgt.clip.y1)
-                        continue;
-                    fx_surface_put_native(&fxg.fb.surf, (int32_t)X, fxg.h - 1 - (int32_t)Y,
-                                          fx_pack(fxg.fb.surf.format, col));
-                }
+            int64_t X0 = bx0 < cl.x0 ? cl.x0 : bx0, X1 = bx1 > cl.x1 ? cl.x1 : bx1;
+            int64_t Y0 = by0 < cl.y0 ? cl.y0 : by0, Y1 = by1 > cl.y1 ? cl.y1 : by1;
+            uint32_t native = fx_pack(fxg.fb.surf.format, col);
+            for (int64_t Y = Y0; Y < Y1; Y++)
+                for (int64_t X = X0; X < X1; X++)
+                    fx_surface_put_native(&fxg.fb.surf, (int32_t)X, fxg.h - 1 - (int32_t)Y, native);
         }
+    }
 }
 
 /* ---- textures ---- */
@@ -1920,19 +1994,19 @@ void glTexParameteri(GLenum target, GLenum pname, GLint param)
     }
     tex_params(tx);
 }
-void glTexParameterf(GLenum target, GLenum pname, GLfloat param) { glTexParameteri(target, pname, (GLint)param); }
+void glTexParameterf(GLenum target, GLenum pname, GLfloat param) { glTexParameteri(target, pname, fxg_d2i(param)); }
 void glTexParameteriv(GLenum target, GLenum pname, const GLint *p) { glTexParameteri(target, pname, p[0]); }
 void glTexParameterfv(GLenum target, GLenum pname, const GLfloat *p)
 {
     if (pname != GL_TEXTURE_BORDER_COLOR)
-        glTexParameteri(target, pname, (GLint)p[0]);
+        glTexParameteri(target, pname, fxg_d2i(p[0]));
 }
 void glTexEnvi(GLenum target, GLenum pname, GLint param)
 {
     if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE)
         fxg.tex_env = (GLenum)param;
 }
-void glTexEnvf(GLenum target, GLenum pname, GLfloat param) { glTexEnvi(target, pname, (GLint)param); }
+void glTexEnvf(GLenum target, GLenum pname, GLfloat param) { glTexEnvi(target, pname, fxg_d2i(param)); }
 void glTexEnviv(GLenum target, GLenum pname, const GLint *p) { glTexEnvi(target, pname, p[0]); }
 void glTexEnvfv(GLenum target, GLenum pname, const GLfloat *p)
 {
@@ -1940,7 +2014,7 @@ void glTexEnvfv(GLenum target, GLenum pname, const GLfloat *p)
         for (int k = 0; k < 4; k++)
             fxg.tgt.tex_env_color[k] = fxg_d2c(p[k]);
     else
-        glTexEnvi(target, pname, (GLint)p[0]);
+        glTexEnvi(target, pname, fxg_d2i(p[0]));
 }
 
 /* ---- display lists ---- */
@@ -2109,7 +2183,7 @@ static int get_values(GLenum pname, double *v)
     case GL_MAX_PROJECTION_STACK_DEPTH: v[0] = FXG_PROJ_STACK; return 1;
     case GL_MAX_LIGHTS: v[0] = FX_GL_MAX_LIGHTS; return 1;
     case GL_MAX_TEXTURE_SIZE: v[0] = 4096; return 1;
-    case GL_MAX_VIEWPORT_DIMS: v[0] = v[1] = 16384; return 2;
+    case GL_MAX_VIEWPORT_DIMS: v[0] = v[1] = FXG_MAX_VIEWPORT; return 2;
     case GL_POINT_SIZE: v[0] = fxg.point_size; return 1;
     case GL_LINE_WIDTH: v[0] = fxg.line_width; return 1;
     case GL_POINT_SIZE_RANGE: case GL_LINE_WIDTH_RANGE: v[0] = 1, v[1] = 256; return 2;
@@ -2172,7 +2246,7 @@ void glGetIntegerv(GLenum pname, GLint *p)
     int colorish = pname == GL_CURRENT_COLOR || pname == GL_COLOR_CLEAR_VALUE ||
                    pname == GL_LIGHT_MODEL_AMBIENT;
     for (int i = 0; i < n; i++)
-        p[i] = colorish ? (GLint)lrint(v[i] * 2147483647.0) : (GLint)lrint(v[i]);
+        p[i] = colorish ? fxg_d2i(v[i] * 2147483647.0) : fxg_d2i(v[i]);
 }
 void glGetBooleanv(GLenum pname, GLboolean *p)
 {

@@ -13,7 +13,9 @@
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
+#include <errno.h>
 #include <stdarg.h>
+#include <sys/stat.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,6 +29,8 @@
 #include "fixel/input.h"
 #include "glut_int.h"
 #include "glut_replay.h"
+
+static void out_check(const char *path);
 
 #define MAX_TIMERS 64
 #define MAX_MENUS 64
@@ -133,6 +137,8 @@ void glutInit(int *pargc, char **argv)
         return;
     G.inited = 1;
     fxg_env_read(&G.env);
+    if (G.env.out)
+        out_check(G.env.out); /* a FIFO or directory fails now, not at the last frame */
     if (G.env.replay)
         fxg_replay_load(&G.rp, G.env.replay); /* a bad line exits 5 now */
     G.t0_us = now_us();
@@ -691,14 +697,34 @@ static void present(void)
     fx_app_present(G.app, &r, 1);
 }
 
+/* FIXEL_GLUT_OUT must be a regular file or not exist: a FIFO would block
+ * the write until some reader came (and a device or directory is not an
+ * image). Checked at glutInit, so a scripted run fails before it draws,
+ * and again before the write. Exit 6 with the variable and the path. */
+static void out_check(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        fprintf(stderr, "fixel-glut: FIXEL_GLUT_OUT=%s: not a regular file (%s)\n", path,
+                S_ISDIR(st.st_mode) ? "a directory" : S_ISFIFO(st.st_mode) ? "a FIFO" : "a device or socket");
+        exit(6);
+    }
+}
+
 static void write_out(void)
 {
     if (!G.env.out)
         return;
+    out_check(G.env.out);
     /* the window's pixels, as glReadPixels sees them: the layer's popup
-     * menus are not in them (freeglut's are windows of their own) */
-    if (fx_write_image(G.env.out, &fxg.fb.surf) < 0)
-        fxg_log("cannot write %s", G.env.out);
+     * menus are not in them (freeglut's are windows of their own); a frame
+     * that was asked for and not written fails the run */
+    errno = 0;
+    if (fx_write_image(G.env.out, &fxg.fb.surf) < 0) {
+        fprintf(stderr, "fixel-glut: FIXEL_GLUT_OUT=%s: cannot write the frame%s%s\n", G.env.out,
+                errno ? ": " : "", errno ? strerror(errno) : "");
+        exit(6);
+    }
 }
 
 void fxg_frame_done(int swap)

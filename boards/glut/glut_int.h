@@ -134,6 +134,12 @@ void fxg_env_read(fxg_env *v);
 /* Float/double to fixed point at the API boundary (round to nearest even,
  * saturating): Q32.32 for geometry, Q16.16 for colours and parameters. */
 fx32 fxg_d2x(double d);
+int32_t fxg_d2i(double d);
+int64_t fxg_d2win(double d);
+fx_rect fxg_scissor_rect(void);
+/* glViewport's clamps (gl.c): GL_MAX_VIEWPORT_DIMS and the bound on x, y */
+#define FXG_MAX_VIEWPORT 16384
+#define FXG_VIEWPORT_BOUND (1 << 20)
 fx16 fxg_d2c(double d); /* clamped to [0, 1] */
 fx16 fxg_d2q16(double d);
 fx_angle fxg_deg2angle(double deg);

@@ -20,6 +20,9 @@
  * a raw evdev event (numbers of linux/input-event-codes.h) fed through
  * fixel's input layer (US keymap, shift/ctrl/caps state). */
 #include <errno.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -231,7 +234,22 @@ void fxg_replay_load(fxg_replay *r, const char *path)
 {
     memset(r, 0, sizeof *r);
     r->path = path;
-    FILE *f = fopen(path, "r");
+    /* O_NONBLOCK: opening a FIFO with no writer would wait for one
+     * forever; the file must then be a regular one (a directory opens
+     * fine and reads as an error or nothing, a FIFO or a device never ends) */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) < 0) {
+        fprintf(stderr, "fixel-glut: FIXEL_GLUT_REPLAY=%s: %s\n", path, strerror(errno));
+        exit(5);
+    }
+    if (!S_ISREG(st.st_mode)) {
+        fprintf(stderr, "fixel-glut: FIXEL_GLUT_REPLAY=%s: not a regular file (%s)\n", path,
+                S_ISDIR(st.st_mode) ? "a directory" : S_ISFIFO(st.st_mode) ? "a FIFO" : "a device or socket");
+        exit(5);
+    }
+    int fl = fcntl(fd, F_GETFL);
+    FILE *f = fl < 0 || fcntl(fd, F_SETFL, fl & ~O_NONBLOCK) < 0 ? NULL : fdopen(fd, "r");
     if (!f) {
         fprintf(stderr, "fixel-glut: FIXEL_GLUT_REPLAY=%s: %s\n", path, strerror(errno));
         exit(5);

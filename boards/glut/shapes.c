@@ -130,14 +130,31 @@ static void emit(const vbuf *b, int i)
     glVertex3f(b->v[3 * i], b->v[3 * i + 1], b->v[3 * i + 2]);
 }
 
+/* The GLUT solids' counts: slices, stacks, sides and rings are clamped to
+ * FXG_MAX_SHAPE_SEG (256, gluSphere's FX_MESH_MAX_SEG: past what a frame
+ * can show, a 256 x 256 sphere is 65,000 vertices), and every vertex count
+ * is computed in 64 bits from the clamped values before it is allocated.
+ * glutSolidSphere(1, 65536, 65537) had 65536 * 65536 + 2 wrap to 2 in an
+ * int and wrote past a two-vertex buffer. */
+#define FXG_MAX_SHAPE_SEG FX_MESH_MAX_SEG
+static int seg_clamp(int v) { return v > FXG_MAX_SHAPE_SEG ? FXG_MAX_SHAPE_SEG : v; }
+/* A radius or size as a float: doubles past FLT_MAX are +-FLT_MAX (the
+ * conversion of an out-of-range double to float is undefined in C), NaN
+ * stays NaN (fxg_d2x takes it as 0). */
+static float d2f(double d)
+{
+    return d > 3.4e38 ? 3.4e38f : d < -3.4e38 ? -3.4e38f : (float)d;
+}
+
 static void sphere(float r, int slices, int stacks, int wire)
 {
     if (slices <= 0 || stacks < 2)
         return;
+    slices = seg_clamp(slices), stacks = seg_clamp(stacks);
     float *s1 = malloc((size_t)(slices + 1) * 2 * sizeof(float)), *c1 = s1 + slices + 1;
     float *s2 = malloc((size_t)(stacks + 1) * 2 * sizeof(float)), *c2 = s2 + stacks + 1;
     vbuf b;
-    int nv = slices * (stacks - 1) + 2;
+    int nv = (int)((int64_t)slices * (stacks - 1) + 2); /* <= 256 * 255 + 2 */
     if (!s1 || !s2 || vbuf_alloc(&b, nv) < 0) {
         free(s1), free(s2);
         return;
@@ -198,9 +215,10 @@ static void cone_cyl(float base, float height, int slices, int stacks, int wire,
 {
     if (slices <= 0 || stacks < 1)
         return;
+    slices = seg_clamp(slices), stacks = seg_clamp(stacks);
     float *s = malloc((size_t)(slices + 1) * 2 * sizeof(float)), *c = s + slices + 1;
     vbuf b;
-    int nv = cyl ? slices * (stacks + 3) + 2 : slices * (stacks + 2) + 1;
+    int nv = (int)(cyl ? (int64_t)slices * (stacks + 3) + 2 : (int64_t)slices * (stacks + 2) + 1); /* < 2^17 */
     if (!s || vbuf_alloc(&b, nv) < 0) {
         free(s);
         return;
@@ -272,10 +290,11 @@ static void torus(float ir, float or_, int sides, int rings, int wire)
 {
     if (sides < 2 || rings < 2)
         return;
+    sides = seg_clamp(sides), rings = seg_clamp(rings);
     float *sp = malloc((size_t)(rings + 1) * 2 * sizeof(float)), *cp = sp + rings + 1;
     float *sh = malloc((size_t)(sides + 1) * 2 * sizeof(float)), *ch = sh + sides + 1;
     vbuf b;
-    if (!sp || !sh || vbuf_alloc(&b, sides * rings) < 0) {
+    if (!sp || !sh || vbuf_alloc(&b, (int)((int64_t)sides * rings)) < 0) { /* <= 2^16 */
         free(sp), free(sh);
         return;
     }
@@ -312,14 +331,14 @@ static void torus(float ir, float or_, int sides, int rings, int wire)
     free(sp), free(sh);
 }
 
-void glutSolidSphere(double r, GLint sl, GLint st) { sphere((float)r, sl, st, 0); }
-void glutWireSphere(double r, GLint sl, GLint st) { sphere((float)r, sl, st, 1); }
-void glutSolidCone(double b, double h, GLint sl, GLint st) { cone_cyl((float)b, (float)h, sl, st, 0, 0); }
-void glutWireCone(double b, double h, GLint sl, GLint st) { cone_cyl((float)b, (float)h, sl, st, 1, 0); }
-void glutSolidCylinder(double r, double h, GLint sl, GLint st) { cone_cyl((float)r, (float)h, sl, st, 0, 1); }
-void glutWireCylinder(double r, double h, GLint sl, GLint st) { cone_cyl((float)r, (float)h, sl, st, 1, 1); }
-void glutSolidTorus(double in, double out, GLint sides, GLint rings) { torus((float)in, (float)out, sides, rings, 0); }
-void glutWireTorus(double in, double out, GLint sides, GLint rings) { torus((float)in, (float)out, sides, rings, 1); }
+void glutSolidSphere(double r, GLint sl, GLint st) { sphere(d2f(r), sl, st, 0); }
+void glutWireSphere(double r, GLint sl, GLint st) { sphere(d2f(r), sl, st, 1); }
+void glutSolidCone(double b, double h, GLint sl, GLint st) { cone_cyl(d2f(b), d2f(h), sl, st, 0, 0); }
+void glutWireCone(double b, double h, GLint sl, GLint st) { cone_cyl(d2f(b), d2f(h), sl, st, 1, 0); }
+void glutSolidCylinder(double r, double h, GLint sl, GLint st) { cone_cyl(d2f(r), d2f(h), sl, st, 0, 1); }
+void glutWireCylinder(double r, double h, GLint sl, GLint st) { cone_cyl(d2f(r), d2f(h), sl, st, 1, 1); }
+void glutSolidTorus(double in, double out, GLint sides, GLint rings) { torus(d2f(in), d2f(out), sides, rings, 0); }
+void glutWireTorus(double in, double out, GLint sides, GLint rings) { torus(d2f(in), d2f(out), sides, rings, 1); }
 
 /* ---- the Platonic solids ---- */
 /* Faces list their vertices counter-clockwise seen from outside; a face of
@@ -425,8 +444,8 @@ static void dodecahedron(int wire)
     polyhedron(v, f, 12, 5, 1.0f, wire);
 }
 
-void glutSolidCube(double s) { cube((float)s, 0); }
-void glutWireCube(double s) { cube((float)s, 1); }
+void glutSolidCube(double s) { cube(d2f(s), 0); }
+void glutWireCube(double s) { cube(d2f(s), 1); }
 void glutSolidTetrahedron(void) { tetrahedron(0); }
 void glutWireTetrahedron(void) { tetrahedron(1); }
 void glutSolidOctahedron(void) { octahedron(0); }

@@ -93,12 +93,22 @@ fx32 fx32_sin(fx_angle a)
 fx32 fx32_cos(fx_angle a) { return fx32_sin(a + 0x40000000u); }
 
 /* ---- matrices ---- */
+/* a + b + c + d with every partial sum saturating: the plain sum while it
+ * stays in int64, else pinned at INT64_MIN or INT64_MAX (the sign of the
+ * partial sum that left the range), never an overflow. */
+static inline fx32 sum4(fx32 a, fx32 b, fx32 c, fx32 d)
+{
+    return fx32_add(fx32_add(fx32_add(a, b), c), d);
+}
+static inline fx32 sum3(fx32 a, fx32 b, fx32 c) { return fx32_add(fx32_add(a, b), c); }
 void fx_glm_identity(fx_glm *m)
 {
     for (int i = 0; i < 16; i++)
         m->m[i] = (i % 5 == 0) ? FX32_ONE : 0;
 }
 
+/* Bound: each product saturates (fx32_mul) and the four-term sums go
+ * through fx32_add, so any two int64 matrices give a result in int64. */
 void fx_glm_mul(fx_glm *r, const fx_glm *a, const fx_glm *b)
 {
     fx_glm t;
@@ -108,7 +118,7 @@ void fx_glm_mul(fx_glm *r, const fx_glm *a, const fx_glm *b)
             for (int k = 0; k < 4; k++) {
                 fx32 x = a->m[k * 4 + rr], y = b->m[c * 4 + k];
                 if (x && y)
-                    s += (x == FX32_ONE) ? y : (y == FX32_ONE) ? x : fx32_mul(x, y);
+                    s = fx32_add(s, (x == FX32_ONE) ? y : (y == FX32_ONE) ? x : fx32_mul(x, y));
             }
             t.m[c * 4 + rr] = s;
         }
@@ -117,7 +127,9 @@ void fx_glm_mul(fx_glm *r, const fx_glm *a, const fx_glm *b)
 
 /* Every vertex passes here (twice when lit): straight products, without
  * fx_glm_mul's shortcuts for 0 and 1, which fx32_mul gives exactly anyway
- * (round(0 * y) = 0, round(2^32 * y / 2^32) = y). */
+ * (round(0 * y) = 0, round(2^32 * y / 2^32) = y). Bound: products
+ * saturate and the sums are fx32_add's, so any matrix and vector give
+ * each coordinate in int64 (pinned at its ends), never an overflow. */
 fx_glv4 fx_glm_apply(const fx_glm *m, fx_glv4 v)
 {
     const fx32 *a = m->m;
@@ -125,16 +137,16 @@ fx_glv4 fx_glm_apply(const fx_glm *m, fx_glv4 v)
     if (v.w == FX32_ONE) {
         /* a point (nearly every vertex): the last column's products are
          * the column itself, exactly */
-        o.x = fx32_mul(a[0], v.x) + fx32_mul(a[4], v.y) + fx32_mul(a[8], v.z) + a[12];
-        o.y = fx32_mul(a[1], v.x) + fx32_mul(a[5], v.y) + fx32_mul(a[9], v.z) + a[13];
-        o.z = fx32_mul(a[2], v.x) + fx32_mul(a[6], v.y) + fx32_mul(a[10], v.z) + a[14];
-        o.w = fx32_mul(a[3], v.x) + fx32_mul(a[7], v.y) + fx32_mul(a[11], v.z) + a[15];
+        o.x = sum4(fx32_mul(a[0], v.x), fx32_mul(a[4], v.y), fx32_mul(a[8], v.z), a[12]);
+        o.y = sum4(fx32_mul(a[1], v.x), fx32_mul(a[5], v.y), fx32_mul(a[9], v.z), a[13]);
+        o.z = sum4(fx32_mul(a[2], v.x), fx32_mul(a[6], v.y), fx32_mul(a[10], v.z), a[14]);
+        o.w = sum4(fx32_mul(a[3], v.x), fx32_mul(a[7], v.y), fx32_mul(a[11], v.z), a[15]);
         return o;
     }
-    o.x = fx32_mul(a[0], v.x) + fx32_mul(a[4], v.y) + fx32_mul(a[8], v.z) + fx32_mul(a[12], v.w);
-    o.y = fx32_mul(a[1], v.x) + fx32_mul(a[5], v.y) + fx32_mul(a[9], v.z) + fx32_mul(a[13], v.w);
-    o.z = fx32_mul(a[2], v.x) + fx32_mul(a[6], v.y) + fx32_mul(a[10], v.z) + fx32_mul(a[14], v.w);
-    o.w = fx32_mul(a[3], v.x) + fx32_mul(a[7], v.y) + fx32_mul(a[11], v.z) + fx32_mul(a[15], v.w);
+    o.x = sum4(fx32_mul(a[0], v.x), fx32_mul(a[4], v.y), fx32_mul(a[8], v.z), fx32_mul(a[12], v.w));
+    o.y = sum4(fx32_mul(a[1], v.x), fx32_mul(a[5], v.y), fx32_mul(a[9], v.z), fx32_mul(a[13], v.w));
+    o.z = sum4(fx32_mul(a[2], v.x), fx32_mul(a[6], v.y), fx32_mul(a[10], v.z), fx32_mul(a[14], v.w));
+    o.w = sum4(fx32_mul(a[3], v.x), fx32_mul(a[7], v.y), fx32_mul(a[11], v.z), fx32_mul(a[15], v.w));
     return o;
 }
 
@@ -174,7 +186,12 @@ static fx32 v3_len(const fx32 v[3])
         int64_t c = sh ? (v[i] >> sh) : (int64_t)((uint64_t)v[i] << up);
         s += (uint64_t)(c * c);
     }
-    uint64_t l = fx_isqrt64(s);
+    uint64_t l = fx_isqrt64(s); /* < 2^30 * sqrt(3) < 2^31 */
+    /* the length of a vector of int64 coordinates can pass INT64_MAX
+     * (sqrt(3) * 2^63): it saturates, and normalising by it then gives a
+     * vector a little short of unit length instead of a negative length */
+    if (sh && l > ((uint64_t)INT64_MAX >> sh))
+        return INT64_MAX;
     return sh ? (fx32)(l << sh) : (fx32)(l >> up);
 }
 
@@ -211,64 +228,108 @@ int fx_glm_rotate(fx_glm *m, fx_angle a, fx32 x, fx32 y, fx32 z)
     return 0;
 }
 
+/* The extent hi - lo and the sum hi + lo of a pair of planes, exactly:
+ * both fit int64 (*sh = 0, the common case, the bits of the plain
+ * arithmetic) or both are taken of the halves (*sh = 1): |hi/2 - lo/2| and
+ * |hi/2 + lo/2| are below 2^63 for any int64 hi and lo, and the matrix
+ * entries are ratios of the two or a product over the extent, so halving
+ * costs one bit of 2^-32 units. With the boundary's +-2^31 units the
+ * extent reaches 2^32 units (2^64 in Q32.32): glOrtho(-1.1e9, 1.1e9) and
+ * a far plane of 2e9 take the halved path and stay right to 2^-31 units. */
+static void span(fx32 lo, fx32 hi, fx32 *ext, fx32 *sum, int *sh)
+{
+    if (!__builtin_sub_overflow(hi, lo, ext) && !__builtin_add_overflow(hi, lo, sum)) {
+        *sh = 0;
+        return;
+    }
+    *ext = (hi >> 1) - (lo >> 1);
+    *sum = (hi >> 1) + (lo >> 1);
+    *sh = 1;
+}
+
+/* Bound: every entry is a quotient of span()'s exact extents and sums
+ * (fx_muldiv64: 128-bit product, saturating), so any int64 planes give a
+ * matrix with no overflow; 2 / ext with ext halved is 1 / (ext / 2). */
 int fx_glm_ortho(fx_glm *m, fx32 l, fx32 r, fx32 b, fx32 t, fx32 n, fx32 f)
 {
     fx_glm_identity(m);
     if (l == r || b == t || n == f)
         return -1;
-    m->m[0] = fx_muldiv64(2 * FX32_ONE, FX32_ONE, r - l);
-    m->m[5] = fx_muldiv64(2 * FX32_ONE, FX32_ONE, t - b);
-    m->m[10] = fx_muldiv64(-2 * FX32_ONE, FX32_ONE, f - n);
-    m->m[12] = fx_muldiv64(-(r + l), FX32_ONE, r - l);
-    m->m[13] = fx_muldiv64(-(t + b), FX32_ONE, t - b);
-    m->m[14] = fx_muldiv64(-(f + n), FX32_ONE, f - n);
+    fx32 rl, rs, tb, ts, fn, fs;
+    int hx, hy, hz;
+    span(l, r, &rl, &rs, &hx), span(b, t, &tb, &ts, &hy), span(n, f, &fn, &fs, &hz);
+    m->m[0] = fx_muldiv64(hx ? FX32_ONE : 2 * FX32_ONE, FX32_ONE, rl);
+    m->m[5] = fx_muldiv64(hy ? FX32_ONE : 2 * FX32_ONE, FX32_ONE, tb);
+    m->m[10] = fx_muldiv64(hz ? -FX32_ONE : -2 * FX32_ONE, FX32_ONE, fn);
+    m->m[12] = fx_muldiv64(fx32_neg(rs), FX32_ONE, rl);
+    m->m[13] = fx_muldiv64(fx32_neg(ts), FX32_ONE, tb);
+    m->m[14] = fx_muldiv64(fx32_neg(fs), FX32_ONE, fn);
     return 0;
 }
 
+/* Bound: as fx_glm_ortho. 2n / (r - l) is n / ((r - l) / 2) on the halved
+ * path and -2fn / (f - n) is -fn / ((f - n) / 2): the product f n is
+ * fx_muldiv64's 128-bit one; n > 0 and f > 0, so -f does not overflow. */
 int fx_glm_frustum(fx_glm *m, fx32 l, fx32 r, fx32 b, fx32 t, fx32 n, fx32 f)
 {
     fx_glm_identity(m);
     if (n <= 0 || f <= 0 || l == r || b == t || n == f)
         return -1;
-    m->m[0] = fx_muldiv64(2 * n, FX32_ONE, r - l);
-    m->m[5] = fx_muldiv64(2 * n, FX32_ONE, t - b);
-    m->m[8] = fx_muldiv64(r + l, FX32_ONE, r - l);
-    m->m[9] = fx_muldiv64(t + b, FX32_ONE, t - b);
-    m->m[10] = fx_muldiv64(-(f + n), FX32_ONE, f - n);
+    fx32 rl, rs, tb, ts, fn, fs;
+    int hx, hy, hz;
+    span(l, r, &rl, &rs, &hx), span(b, t, &tb, &ts, &hy), span(n, f, &fn, &fs, &hz);
+    /* 2n fits when n < 2^62; otherwise halve the extent instead */
+    int n2ok = n <= INT64_MAX / 2;
+    m->m[0] = hx || !n2ok ? fx_muldiv64(n, FX32_ONE, hx ? rl : rl / 2) : fx_muldiv64(2 * n, FX32_ONE, rl);
+    m->m[5] = hy || !n2ok ? fx_muldiv64(n, FX32_ONE, hy ? tb : tb / 2) : fx_muldiv64(2 * n, FX32_ONE, tb);
+    m->m[8] = fx_muldiv64(rs, FX32_ONE, rl);
+    m->m[9] = fx_muldiv64(ts, FX32_ONE, tb);
+    m->m[10] = fx_muldiv64(fx32_neg(fs), FX32_ONE, fn);
     m->m[11] = -FX32_ONE;
-    m->m[14] = fx_muldiv64(-2 * f, n, f - n);
+    m->m[14] = hz ? fx_muldiv64(-f, n, fn) : fx_muldiv64(f <= INT64_MAX / 2 ? -2 * f : -f, n, f <= INT64_MAX / 2 ? fn : fn / 2);
     m->m[15] = 0;
     return 0;
 }
 
+/* Bound: as fx_glm_frustum for the depth entries (n and f any int64: the
+ * sign of f - n is that of the exact halves, -f n / ((f - n) / 2) with
+ * fx32_neg for f = INT64_MIN). */
 int fx_glm_perspective(fx_glm *m, fx_angle fovy, fx32 aspect, fx32 n, fx32 f)
 {
     fx_glm_identity(m);
     fx32 s = fx32_sin(fovy / 2), c = fx32_cos(fovy / 2);
     if (s == 0 || aspect == 0 || n == f)
         return -1;
-    fx32 cot = fx_muldiv64(c, FX32_ONE, s);
+    fx32 cot = fx_muldiv64(c, FX32_ONE, s), fn, fs;
+    int hz;
+    span(n, f, &fn, &fs, &hz);
     m->m[0] = fx_muldiv64(cot, FX32_ONE, aspect);
     m->m[5] = cot;
-    m->m[10] = fx_muldiv64(-(f + n), FX32_ONE, f - n);
+    m->m[10] = fx_muldiv64(fx32_neg(fs), FX32_ONE, fn);
     m->m[11] = -FX32_ONE;
-    m->m[14] = fx_muldiv64(-2 * f, n, f - n);
+    int f2ok = f <= INT64_MAX / 2 && f >= INT64_MIN / 2;
+    m->m[14] = hz || !f2ok ? fx_muldiv64(fx32_neg(f), n, hz ? fn : fn / 2) : fx_muldiv64(-2 * f, n, fn);
     m->m[15] = 0;
     return 0;
 }
 
+/* Bound: saturating products and differences (the callers pass unit
+ * vectors, |r| <= 1, but nothing here relies on it). */
 static void cross3(const fx32 a[3], const fx32 b[3], fx32 r[3])
 {
-    fx32 t[3] = {fx32_mul(a[1], b[2]) - fx32_mul(a[2], b[1]),
-                 fx32_mul(a[2], b[0]) - fx32_mul(a[0], b[2]),
-                 fx32_mul(a[0], b[1]) - fx32_mul(a[1], b[0])};
+    fx32 t[3] = {fx32_sub(fx32_mul(a[1], b[2]), fx32_mul(a[2], b[1])),
+                 fx32_sub(fx32_mul(a[2], b[0]), fx32_mul(a[0], b[2])),
+                 fx32_sub(fx32_mul(a[0], b[1]), fx32_mul(a[1], b[0]))};
     r[0] = t[0], r[1] = t[1], r[2] = t[2];
 }
 
 int fx_glm_lookat(fx_glm *m, const fx32 eye[3], const fx32 at[3], const fx32 up[3])
 {
     fx_glm_identity(m);
-    fx32 f[3] = {at[0] - eye[0], at[1] - eye[1], at[2] - eye[2]};
+    /* Bound: at - eye saturates (eye and at anywhere in int64); the
+     * direction of a saturated difference is off only for points more than
+     * 2^31 units apart on an axis, which the boundary cannot produce. */
+    fx32 f[3] = {fx32_sub(at[0], eye[0]), fx32_sub(at[1], eye[1]), fx32_sub(at[2], eye[2])};
     fx32 u[3] = {up[0], up[1], up[2]};
     if (fx_glv3_normalize(f) < 0)
         return -1;
@@ -285,7 +346,7 @@ int fx_glm_lookat(fx_glm *m, const fx32 eye[3], const fx32 at[3], const fx32 up[
         m->m[i * 4 + 2] = -f[i];
     }
     fx_glm tr, r = *m;
-    fx_glm_translate(&tr, -eye[0], -eye[1], -eye[2]);
+    fx_glm_translate(&tr, fx32_neg(eye[0]), fx32_neg(eye[1]), fx32_neg(eye[2]));
     fx_glm_mul(m, &r, &tr);
     return 0;
 }
@@ -298,10 +359,13 @@ int fx_glm_normal_matrix(const fx_glm *m, fx32 n[9])
     for (int r = 0; r < 3; r++)
         for (int c = 0; c < 3; c++) {
             int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-            cof[r][c] = fx32_mul(A(r1, c1), A(r2, c2)) - fx32_mul(A(r1, c2), A(r2, c1));
+            cof[r][c] = fx32_sub(fx32_mul(A(r1, c1), A(r2, c2)), fx32_mul(A(r1, c2), A(r2, c1)));
         }
-    fx32 det = fx32_mul(A(0, 0), cof[0][0]) + fx32_mul(A(0, 1), cof[0][1]) +
-               fx32_mul(A(0, 2), cof[0][2]);
+    /* Bound: products and sums saturate; a matrix whose 2x2 minors pass
+     * 2^31 (scales beyond 46341) gets a normal matrix off in length only,
+     * and the lighting uses normals as given anyway. */
+    fx32 det = sum3(fx32_mul(A(0, 0), cof[0][0]), fx32_mul(A(0, 1), cof[0][1]),
+                    fx32_mul(A(0, 2), cof[0][2]));
 #undef A
     if (det == 0) {
         for (int i = 0; i < 9; i++)
@@ -433,7 +497,7 @@ void fx_gl_shade_cached(const fx_gl_lighting *L, fx_gl_shade_cache *cache,
      * vertex at the origin keeps (0, 0, 1), fx_glv3_normalize's -1 case) */
     fx32 E[3] = {0, 0, FX32_ONE};
     if (L->local_viewer) {
-        fx32 t[3] = {-P[0], -P[1], -P[2]};
+        fx32 t[3] = {fx32_neg(P[0]), fx32_neg(P[1]), fx32_neg(P[2])};
         if (fx_glv3_normalize(t) == 0)
             E[0] = t[0], E[1] = t[1], E[2] = t[2];
     }
@@ -452,19 +516,29 @@ void fx_gl_shade_cached(const fx_gl_lighting *L, fx_gl_shade_cache *cache,
             if (li->pos[3] != FX32_ONE)
                 for (int k = 0; k < 3; k++)
                     lp[k] = fx_muldiv64(lp[k], FX32_ONE, li->pos[3]);
+            /* Bound: light and vertex anywhere in int64 (a light at 1e30
+             * is at 2^31 units): the difference saturates, its direction
+             * stays that of the light for any vertex within 2^31 units */
             for (int k = 0; k < 3; k++)
-                VP[k] = lp[k] - P[k];
+                VP[k] = fx32_sub(lp[k], P[k]);
             fx32 d = v3_len(VP);
             fx_glv3_normalize(VP);
             if (li->att[0] != FX32_ONE || li->att[1] || li->att[2]) {
-                fx32 den = li->att[0] + fx32_mul(li->att[1], d) +
-                           fx32_mul(li->att[2], fx32_mul(d, d));
+                fx32 den = sum3(li->att[0], fx32_mul(li->att[1], d),
+                                fx32_mul(li->att[2], fx32_mul(d, d)));
                 att = den > 0 ? fx_muldiv64(FX32_ONE, FX32_ONE, den) : FX32_ONE;
+                /* Bound: a denominator near 0 makes att up to 2^63; the
+                 * factor is clamped to 2^14 so that term * a16 below stays
+                 * below 3 * 2^31 * 2^30 < 2^63. Any att above 1 already
+                 * saturates a lit colour unless its terms are below
+                 * 2^-14, so the clamp changes no colour in [0, 1]. */
+                if (att > ((fx32)1 << 46))
+                    att = (fx32)1 << 46;
             }
             if (li->spot_cut) {
                 const fx32 *sd = cl->sd;
-                fx32 c = -(fx32_mul(VP[0], sd[0]) + fx32_mul(VP[1], sd[1]) +
-                           fx32_mul(VP[2], sd[2]));
+                fx32 c = fx32_neg(sum3(fx32_mul(VP[0], sd[0]), fx32_mul(VP[1], sd[1]),
+                                       fx32_mul(VP[2], sd[2])));
                 if (c < li->spot_cos)
                     att = 0;
                 else if (li->spot_exp > 0)
@@ -473,8 +547,11 @@ void fx_gl_shade_cached(const fx_gl_lighting *L, fx_gl_shade_cache *cache,
         }
         if (att == 0)
             continue;
-        fx32 ndl = fx32_mul(n[0], VP[0]) + fx32_mul(n[1], VP[1]) + fx32_mul(n[2], VP[2]);
-        fx16 dif = ndl > 0 ? (fx16)(ndl >> 16) : 0;
+        /* Bound: the normal is the caller's, anywhere in int64 (glNormal3d
+         * of 1e30), so the dot products saturate; dif and b are clamped to
+         * what an fx16 holds before the narrowing */
+        fx32 ndl = sum3(fx32_mul(n[0], VP[0]), fx32_mul(n[1], VP[1]), fx32_mul(n[2], VP[2]));
+        fx16 dif = ndl <= 0 ? 0 : ndl >= (fx32)INT32_MAX << 16 ? INT32_MAX : (fx16)(ndl >> 16);
         fx16 spec = 0;
         if (ndl > 0) {
             fx32 H[3] = {VP[0] + E[0], VP[1] + E[1], VP[2] + E[2]};
@@ -482,7 +559,7 @@ void fx_gl_shade_cached(const fx_gl_lighting *L, fx_gl_shade_cache *cache,
                 H[0] = cl->h[0], H[1] = cl->h[1], H[2] = cl->h[2];
             else
                 fx_glv3_normalize(H);
-            fx32 ndh = fx32_mul(n[0], H[0]) + fx32_mul(n[1], H[1]) + fx32_mul(n[2], H[2]);
+            fx32 ndh = sum3(fx32_mul(n[0], H[0]), fx32_mul(n[1], H[1]), fx32_mul(n[2], H[2]));
             if (ndh > 0) {
                 fx16 b = ndh >= FX32_ONE ? FX16_ONE : (fx16)(ndh >> 16);
                 spec = m->shininess > 0 ? fx_gl_pow(b, m->shininess) : FX16_ONE;

@@ -24,19 +24,41 @@ static inline int32_t level(fx16 c) /* [0, 1] -> 0..255, round(c * 255) */
     return (int32_t)(((int64_t)c * 255 + 0x8000) >> 16);
 }
 
+/* round((c + w) * k / w) for any c and w > 0: c + w overflows only for
+ * c beyond 2^63 - w, and then (c + w) k / w = c k / w + k is taken apart
+ * (k an integer, so the rounding is the same but for an exact tie). */
+static int64_t ndc_scale(fx32 c, fx32 w, int64_t k)
+{
+    fx32 s;
+    if (!__builtin_add_overflow(c, w, &s))
+        return fx_muldiv64(s, k, w);
+    int64_t q = fx_muldiv64(c, k, w);
+    return q > INT64_MAX - k ? INT64_MAX : q + k;
+}
+static inline int64_t clamp_win(int64_t v)
+{
+    return v < -FX_GL_WIN_MAX ? -FX_GL_WIN_MAX : v > FX_GL_WIN_MAX ? FX_GL_WIN_MAX : v;
+}
+
+/* Bound: vx, vy, vw, vh are int32 (vw * 128 < 2^38); the quotient is
+ * saturating and the window coordinates are clamped to +-FX_GL_WIN_MAX
+ * (2^29 in 1/256 pixel: 2^21 pixels, twice the guard band), the range the
+ * rasterizers below are proved for. */
 int fx_gl_to_window(const fx_glv4 *p, int32_t vx, int32_t vy, int32_t vw, int32_t vh,
                     fx_gl_wvert *o)
 {
     if (p->w <= 0)
         return -1;
-    o->x = (int64_t)vx * 256 + fx_muldiv64(p->x + p->w, (int64_t)vw * 128, p->w);
-    o->y = (int64_t)vy * 256 + fx_muldiv64(p->y + p->w, (int64_t)vh * 128, p->w);
-    int64_t z = fx_muldiv64(p->z + p->w, (int64_t)1 << 23, p->w);
+    o->x = clamp_win(clamp_win((int64_t)vx * 256) + clamp_win(ndc_scale(p->x, p->w, (int64_t)vw * 128)));
+    o->y = clamp_win(clamp_win((int64_t)vy * 256) + clamp_win(ndc_scale(p->y, p->w, (int64_t)vh * 128)));
+    int64_t z = ndc_scale(p->z, p->w, (int64_t)1 << 23);
     o->z = z < 0 ? 0 : z > 0xFFFFFF ? 0xFFFFFF : (int32_t)z;
     o->w = p->w;
     return 0;
 }
 
+/* Bound: window coordinates within +-2^29 (fx_gl_to_window's clamp):
+ * differences < 2^30, products < 2^60, the difference of two < 2^61. */
 int64_t fx_gl_area2(const fx_gl_wvert *a, const fx_gl_wvert *b, const fx_gl_wvert *c)
 {
     return (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y);
@@ -189,10 +211,14 @@ static inline int in_clip(const fx_gl_target *t, int64_t X, int64_t Y)
 }
 
 /* ---- points ---- */
+/* Bound: size clamped to [1, FX_GL_MAX_SIZE], so h < 2^23 and v +- h
+ * stays in int64 for any v; the loops run over the clip rectangle only. */
 void fx_gl_point(fx_gl_target *t, const fx_gl_wvert *v, int32_t size)
 {
     if (size < 1)
         size = 1;
+    if (size > FX_GL_MAX_SIZE)
+        size = FX_GL_MAX_SIZE;
     int64_t h = (int64_t)size * 128;
     int64_t x0 = floordiv(v->x - h - 128, 256) + 1, x1 = floordiv(v->x + h - 128, 256);
     int64_t y0 = floordiv(v->y - h - 128, 256) + 1, y1 = floordiv(v->y + h - 128, 256);
@@ -212,14 +238,25 @@ void fx_gl_point(fx_gl_target *t, const fx_gl_wvert *v, int32_t size)
 /* ---- lines ---- */
 static inline int64_t iabs64(int64_t v) { return v < 0 ? -v : v; }
 
-void fx_gl_line(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b, int32_t width,
+/* Bound: end points within +-2^29 (fx_gl_to_window's clamp; others are
+ * clamped here too) and width <= FX_GL_MAX_SIZE: adu < 2^30, so
+ * v0 * adu < 2^59, (uc - u0) * dv < 2^61 and (hw + 128) * adu < 2^54.
+ * The walk visits only the columns inside the clip rectangle (the
+ * stipple counter is advanced over the others), so its work is bounded
+ * by the surface, not by the line's length. */
+void fx_gl_line(fx_gl_target *t, const fx_gl_wvert *a_in, const fx_gl_wvert *b_in, int32_t width,
                 const fx16 *flat)
 {
+    fx_gl_wvert ac = *a_in, bc = *b_in;
+    ac.x = clamp_win(ac.x), ac.y = clamp_win(ac.y), bc.x = clamp_win(bc.x), bc.y = clamp_win(bc.y);
+    const fx_gl_wvert *a = &ac, *b = &bc;
     int64_t dx = b->x - a->x, dy = b->y - a->y;
     if (dx == 0 && dy == 0)
         return;
     if (width < 1)
         width = 1;
+    if (width > FX_GL_MAX_SIZE)
+        width = FX_GL_MAX_SIZE;
     int xmajor = iabs64(dx) >= iabs64(dy);
     /* u: major axis, v: minor axis */
     int64_t u0 = xmajor ? a->x : a->y, v0 = xmajor ? a->y : a->x;
@@ -262,7 +299,28 @@ void fx_gl_line(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b, int
     if (flat)
         for (int k = 0; k < 4; k++)
             cflat[k] = level(flat[k]);
-    for (int64_t i = 0; i < n; i++) {
+    /* the columns inside [ulo, uhi): i in [ifirst, ilast] */
+    int64_t ifirst = 0, ilast = n - 1;
+    if (dir > 0) {
+        if (ulo - cfirst > ifirst)
+            ifirst = ulo - cfirst;
+        if (uhi - 1 - cfirst < ilast)
+            ilast = uhi - 1 - cfirst;
+    } else {
+        if (cfirst - (uhi - 1) > ifirst)
+            ifirst = cfirst - (uhi - 1);
+        if (cfirst - ulo < ilast)
+            ilast = cfirst - ulo;
+    }
+    if (ifirst > ilast) {
+        if (t->stipple_on)
+            t->stipple_count += (uint32_t)n;
+        return;
+    }
+    /* the stipple pattern counts every pixel of the line, seen or not */
+    if (t->stipple_on)
+        t->stipple_count += (uint32_t)ifirst;
+    for (int64_t i = ifirst; i <= ilast; i++) {
         int64_t col = cfirst + i * dir;
         if (t->stipple_on) {
             uint32_t f = t->stipple_factor > 0 ? (uint32_t)t->stipple_factor : 1u;
@@ -315,6 +373,8 @@ void fx_gl_line(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b, int
                 frag(t, (int32_t)r, (int32_t)col, z, cc, s, tt);
         }
     }
+    if (t->stipple_on)
+        t->stipple_count += (uint32_t)(n - 1 - ilast);
 }
 
 /* ---- triangles ---- */
@@ -614,6 +674,10 @@ static int hidden_by_depth(const fx_gl_target *t, const fx_gl_wvert *const v[3],
     return 1;
 }
 
+/* Bound: vertices come from fx_gl_to_window, within +-FX_GL_WIN_MAX =
+ * 2^29 (1/256 pixel), so x - 128 fits the fx8 (int32) the span walker
+ * takes, whose edge setup is exact for any int32 vertex (fill.c's
+ * triangles); the GL layer clips to its guard band (+-2^28) before. */
 void fx_gl_triangle(fx_gl_target *t, const fx_gl_wvert *a, const fx_gl_wvert *b,
                     const fx_gl_wvert *c, const fx16 *flat)
 {
@@ -723,26 +787,31 @@ void fx_gl_clear(fx_gl_target *t, fx_rect r, fx_color c, int color, uint32_t dep
 }
 
 /* ---- clipping ---- */
+/* Bound: clip coordinates anywhere in int64; the distances saturate (a
+ * saturated distance keeps its sign, which is all the clipper tests, and
+ * the interpolation parameter da / (da - db) stays in [0, 1]). */
 static fx32 plane_dist(const fx_glv4 *p, int i, fx32 g)
 {
     fx32 gw = g == FX32_ONE ? p->w : fx32_mul(g, p->w);
     switch (i) {
-    case 0: return gw - p->x;
-    case 1: return gw + p->x;
-    case 2: return gw - p->y;
-    case 3: return gw + p->y;
-    case 4: return p->w - p->z;
-    default: return p->w + p->z;
+    case 0: return fx32_sub(gw, p->x);
+    case 1: return fx32_add(gw, p->x);
+    case 2: return fx32_sub(gw, p->y);
+    case 3: return fx32_add(gw, p->y);
+    case 4: return fx32_sub(p->w, p->z);
+    default: return fx32_add(p->w, p->z);
     }
 }
 
 static void lerp_cvert(const fx_gl_cvert *a, const fx_gl_cvert *b, fx32 num, fx32 den,
                        fx_gl_cvert *o)
 {
-    o->p.x = a->p.x + fx_muldiv64(b->p.x - a->p.x, num, den);
-    o->p.y = a->p.y + fx_muldiv64(b->p.y - a->p.y, num, den);
-    o->p.z = a->p.z + fx_muldiv64(b->p.z - a->p.z, num, den);
-    o->p.w = a->p.w + fx_muldiv64(b->p.w - a->p.w, num, den);
+    /* 0 <= num <= den: a + (b - a) num / den lies between a and b when
+     * b - a fits; when it saturates the sum is saturating too */
+    o->p.x = fx32_add(a->p.x, fx_muldiv64(fx32_sub(b->p.x, a->p.x), num, den));
+    o->p.y = fx32_add(a->p.y, fx_muldiv64(fx32_sub(b->p.y, a->p.y), num, den));
+    o->p.z = fx32_add(a->p.z, fx_muldiv64(fx32_sub(b->p.z, a->p.z), num, den));
+    o->p.w = fx32_add(a->p.w, fx_muldiv64(fx32_sub(b->p.w, a->p.w), num, den));
     for (int k = 0; k < 4; k++) {
         o->c[k] = (fx16)(a->c[k] + fx_muldiv64(b->c[k] - a->c[k], num, den));
         o->bc[k] = (fx16)(a->bc[k] + fx_muldiv64(b->bc[k] - a->bc[k], num, den));
@@ -760,7 +829,7 @@ int fx_gl_clip_line(fx_gl_cvert *a, fx_gl_cvert *b, fx32 g)
         if (da >= 0 && db >= 0)
             continue;
         fx_gl_cvert n;
-        lerp_cvert(a, b, da, da - db, &n);
+        lerp_cvert(a, b, da, fx32_sub(da, db), &n);
         if (da < 0)
             *a = n;
         else
@@ -798,7 +867,7 @@ int fx_gl_clip_poly(const fx_gl_cvert *in, int n, fx_gl_cvert *out, fx_gl_cvert 
             if (dp >= 0)
                 dst[k++] = *p;
             if ((dp >= 0) != (dq >= 0))
-                lerp_cvert(p, q, dp, dp - dq, &dst[k++]);
+                lerp_cvert(p, q, dp, fx32_sub(dp, dq), &dst[k++]);
         }
         m = k;
         src = dst;

@@ -55,6 +55,23 @@ st=$?; [ $st -eq 5 ] && pass "decreasing frame numbers exit 5" || fail "decreasi
 printf 'frame 9: key a\n' > "$out/late.txt"
 FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=10 FIXEL_GLUT_REPLAY="$out/late.txt" "$bin" >/dev/null 2>&1
 st=$?; [ $st -eq 3 ] && pass "a replay waiting for a frame that never comes exits 3" || fail "stall (exit $st)"
+# user-named paths that are not regular files (issue #40): a FIFO named by
+# FIXEL_GLUT_REPLAY used to block in open() for ever, a directory was taken
+# as an empty replay; a FIXEL_GLUT_OUT that cannot be written exited 0
+rm -f "$out/fifo"; mkfifo "$out/fifo"; mkdir -p "$out/adir"
+msg=$(FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=1 FIXEL_GLUT_REPLAY="$out/fifo" timeout 10 "$bin" 2>&1); st=$?
+[ $st -eq 5 ] && echo "$msg" | grep -q "FIXEL_GLUT_REPLAY=$out/fifo: not a regular file (a FIFO)" &&
+    pass "FIXEL_GLUT_REPLAY naming a FIFO exits 5 at once, naming it" || fail "FIXEL_GLUT_REPLAY FIFO (exit $st: $msg)"
+msg=$(FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=1 FIXEL_GLUT_REPLAY="$out/adir" timeout 10 "$bin" 2>&1); st=$?
+[ $st -eq 5 ] && echo "$msg" | grep -q "FIXEL_GLUT_REPLAY=$out/adir: not a regular file (a directory)" &&
+    pass "FIXEL_GLUT_REPLAY naming a directory exits 5 naming it" || fail "FIXEL_GLUT_REPLAY directory (exit $st: $msg)"
+msg=$(FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=1 FIXEL_GLUT_OUT="$out/fifo" timeout 10 "$bin" 2>&1); st=$?
+[ $st -eq 6 ] && echo "$msg" | grep -q "FIXEL_GLUT_OUT=$out/fifo: not a regular file (a FIFO)" &&
+    pass "FIXEL_GLUT_OUT naming a FIFO exits 6 naming it" || fail "FIXEL_GLUT_OUT FIFO (exit $st: $msg)"
+msg=$(FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=1 FIXEL_GLUT_OUT="$out/no/such/dir/x.png" timeout 10 "$bin" 2>&1); st=$?
+[ $st -eq 6 ] && echo "$msg" | grep -q "FIXEL_GLUT_OUT=$out/no/such/dir/x.png: cannot write" &&
+    pass "a FIXEL_GLUT_OUT that cannot be written exits 6 naming it" || fail "unwritable FIXEL_GLUT_OUT (exit $st: $msg)"
+rm -f "$out/fifo"
 # a display asked for by name that cannot open ends the program (issue #20);
 # only the automatic choice falls back to a memory window
 if [ ! -e /dev/dri ] && [ ! -e /dev/fb0 ]; then

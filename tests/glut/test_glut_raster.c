@@ -13,7 +13,8 @@ static void setup(void)
 {
     static int done;
     if (!done) {
-        fxg_gl_init(40, 40);
+        if (!fxg.depth) /* one 40x40 window for every test file of the binary */
+            fxg_gl_init(40, 40);
         done = 1;
     }
     glDisable(GL_DEPTH_TEST);

@@ -84,6 +84,25 @@ static inline fx32 fx32_mul(fx32 a, fx32 b)
     return fx_mul64_shift(a, b, 32);
 #endif
 }
+/* Saturating sums: every fx32 the GL layer stores can be anywhere in
+ * int64_t (the boundary saturates doubles at +-2^31 units, products
+ * saturate), so a sum that is stored goes through these and pins at
+ * INT64_MIN / INT64_MAX instead of overflowing. */
+static inline fx32 fx32_add(fx32 a, fx32 b)
+{
+    fx32 r;
+    if (__builtin_add_overflow(a, b, &r))
+        return a < 0 ? INT64_MIN : INT64_MAX;
+    return r;
+}
+static inline fx32 fx32_sub(fx32 a, fx32 b)
+{
+    fx32 r;
+    if (__builtin_sub_overflow(a, b, &r))
+        return a < 0 ? INT64_MIN : INT64_MAX;
+    return r;
+}
+static inline fx32 fx32_neg(fx32 a) { return a == INT64_MIN ? INT64_MAX : -a; }
 /* round(a * b / c) with a 128-bit intermediate, saturating; c == 0 gives
  * INT64_MAX or INT64_MIN by the sign of a*b (0 for a*b == 0). */
 int64_t fx_muldiv64(int64_t a, int64_t b, int64_t c);
@@ -228,6 +247,12 @@ typedef struct fx_gl_wvert {
     fx32 w;         /* clip w (> 0), for perspective-correct interpolation; 0: affine */
 } fx_gl_wvert;
 
+/* Ranges the rasterizers are proved for (the Bound comments in
+ * glraster.c): window x and y within +-FX_GL_WIN_MAX (1/256 pixel, i.e.
+ * +-2^21 pixels; fx_gl_to_window clamps to it), point sizes and line
+ * widths up to FX_GL_MAX_SIZE pixels (clamped). */
+#define FX_GL_WIN_MAX ((int64_t)1 << 29)
+#define FX_GL_MAX_SIZE 32768
 /* Clip coordinates -> window vertex for viewport (vx, vy, vw, vh).
  * Returns -1 when w <= 0 (the caller clips first). */
 int fx_gl_to_window(const fx_glv4 *clip, int32_t vx, int32_t vy, int32_t vw, int32_t vh,
