@@ -8,6 +8,7 @@
 #include "fixel/error.h"
 #include "fixel/rt.h"
 #include "fixel/scene.h"
+#include "fixel/sdl.h"
 #include "../base/fx_internal.h"
 #include "scene_mesh.h"
 
@@ -363,6 +364,38 @@ static int cmd_csg(fx_scene *sc)
     return e < 0 ? fx_scene_error(sc, "rtcsg: the tree would be deeper than %d", FX_RT_MAX_DEPTH) : 0;
 }
 
+static void *sdl_alloc(void *user, size_t n) { return fx_scene_alloc(user, n); }
+
+static int sdl_load(void *user, const char *path, const uint8_t **data, size_t *len)
+{
+    fx_scene *sc = user;
+    return sc->host.load_file(sc->host.user, path, data, len);
+}
+
+/* The textbook's SDL file: its lights, settings and objects join the
+ * scene; its camera is fx_sdl_default_camera's (SDL has none), which a
+ * later rtcamera replaces. */
+static int cmd_sdl(fx_scene *sc)
+{
+    GET(r);
+    char path[256];
+    TRY(fx_scene_arg_string(sc, path, sizeof path));
+    TRY(fx_scene_end(sc));
+    if (!sc->host.load_file)
+        return fx_scene_error(sc, "files not available");
+    const uint8_t *data;
+    size_t len;
+    int e = sc->host.load_file(sc->host.user, path, &data, &len);
+    if (e < 0)
+        return fx_scene_error(sc, "sdl: cannot read '%s': %s", path, fx_strerror(e));
+    fx_sdl_env env = {sc, sdl_alloc, sdl_load};
+    fx_sdl_error err;
+    if (fx_sdl_read(&r->s, (const char *)data, len, path, &env, &err) < 0)
+        return fx_scene_error(sc, "sdl: %s", err.msg);
+    fx_sdl_default_camera(&r->s, 45 * FX16_ONE);
+    return 0;
+}
+
 static int cmd_raytrace(fx_scene *sc)
 {
     GET(r);
@@ -437,6 +470,7 @@ const fx_scene_cmd fx_scene_cmds_rt[] = {
     {"rtshape", cmd_shape, "rtshape sphere|cube|square|plane|cylinder|cone | rtshape taper S | rtshape torus r", D},
     {"rtmesh", cmd_mesh, "rtmesh teapot N | rtmesh torus R r SIDES RINGS | rtmesh obj \"FILE\"", D},
     {"rtcsg", cmd_csg, "rtcsg union|intersection|difference", D},
+    {"sdl", cmd_sdl, "sdl \"FILE\" (the textbook's scene description language; docs/RAYTRACE.md)", D},
     {"raytrace", cmd_raytrace, "raytrace [X Y W H]", D},
     {"rttrace", cmd_trace, "rttrace X Y", D},
     {0, 0, 0, 0},
