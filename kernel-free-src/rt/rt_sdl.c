@@ -901,5 +901,14 @@ int fx_sdl_default_camera(fx_rt_scene *s, fx16 fovy_deg)
             break;
     }
     fx_vec3 eye = fx_vec3_add(c, fx_vec3_scale(dir, (fx16)d));
-    return fx_rt_set_camera(s, eye, c, fx_vec3_make(0, FX16_ONE, 0), fovy_deg);
+    fx16 *e = &eye.x;
+    for (int k = 0; k < 3; k++) /* a scene pressed against the limit */
+        e[k] = e[k] > (FX_RT_WORLD - 1) * FX16_ONE    ? (FX_RT_WORLD - 1) * FX16_ONE
+               : e[k] < -(FX_RT_WORLD - 1) * FX16_ONE ? -(FX_RT_WORLD - 1) * FX16_ONE
+                                                      : e[k];
+    if (fx_rt_set_camera(s, eye, c, fx_vec3_make(0, FX16_ONE, 0), fovy_deg) == 0)
+        return 0;
+    /* the eye fell on the centre: the empty scene's camera */
+    return fx_rt_set_camera(s, fx_vec3_make(0, 0, 5 * FX16_ONE), fx_vec3_make(0, 0, 0), fx_vec3_make(0, FX16_ONE, 0),
+                            fovy_deg);
 }
