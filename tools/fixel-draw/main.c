@@ -26,7 +26,7 @@ static const char usage[] =
     "usage: fixel-draw [-o OUT.png|OUT.ppm] [-s WxH] [-f FORMAT] [--trace] [SCRIPT|-]\n"
     "       fixel-draw --frames N [--fps F] -o OUT-%04d.png [SCRIPT|-]\n"
     "       fixel-draw --display [--hold] [SCRIPT|-]\n"
-    "       fixel-draw [-o OUT.png] [-s WxH] [--camera EX,EY,EZ LX,LY,LZ UX,UY,UZ FOVY] SCENE.sdl\n"
+    "       fixel-draw [-o OUT.png] [-s WxH] [--camera EX,EY,EZ LX,LY,LZ UX,UY,UZ FOVY] [--preview] SCENE.sdl\n"
     "Render a fixel scene script headless into a PNG or PPM file, or onto the display.\n"
     "  -o FILE      output image (default out.png; .ppm writes binary PPM)\n"
     "  -s WxH       surface size, overriding the script's 'size'\n"
@@ -46,6 +46,8 @@ static const char usage[] =
     "               ray traced, 640x480 unless -s): eye, look-at point and up vector as\n"
     "               X,Y,Z and the vertical field of view in degrees, instead of the\n"
     "               default camera (docs/RAYTRACE.md)\n"
+    "  --preview    with a .sdl scene: draw it with the z-buffer rasterizer (Phong; no CSG\n"
+    "               but unions, no reflection, refraction or shadows) instead of tracing it\n"
     "  --display    show the result on the display (DRM, fbdev) instead of writing a file;\n"
     "               with the script on stdin ('-') lines run as they arrive and a line\n"
     "               'present' shows the frame so far (streaming)\n"
@@ -547,6 +549,7 @@ int main(int argc, char **argv)
 {
     const char *out = "out.png", *script = "-";
     const char *camera[4] = {0};
+    int preview = 0;
     int trace = 0, w = 0, h = 0, display = 0, hold = 0, threads = 0, frames = 0, fps = 25;
     fx_format fmt = FX_FMT_COUNT;
     for (int i = 1; i < argc; i++) {
@@ -601,6 +604,8 @@ int main(int argc, char **argv)
                 fprintf(stderr, "fixel-draw: unknown pixel format '%s'\n", argv[i]);
                 return 2;
             }
+        } else if (!strcmp(a, "--preview")) {
+            preview = 1;
         } else if (!strcmp(a, "--camera") && i + 4 < argc) {
             for (int k = 0; k < 4; k++)
                 camera[k] = argv[++i];
@@ -621,8 +626,8 @@ int main(int argc, char **argv)
     size_t sl = strlen(script), sdl_len = 0;
     uint8_t *sdl_text = NULL;
     int sdl = sl > 4 && !strcasecmp(script + sl - 4, ".sdl");
-    if (camera[0] && !sdl) {
-        fprintf(stderr, "fixel-draw: --camera goes with a .sdl scene (a script sets its own with rtcamera)\n");
+    if ((camera[0] || preview) && !sdl) {
+        fprintf(stderr, "fixel-draw: --camera and --preview go with a .sdl scene (a script uses rtcamera, rtpreview)\n");
         return 2;
     }
     if (sdl) {
@@ -649,7 +654,8 @@ int main(int argc, char **argv)
             fprintf(stderr, "fixel-draw: out of memory\n");
             return 1;
         }
-        int n = snprintf(gen, cap, "size 640 480\nsdl \"%s\"\n%sraytrace\n", script, cam);
+        int n = snprintf(gen, cap, "size 640 480\nsdl \"%s\"\n%s%s\n", script, cam,
+                         preview ? "rtpreview" : "raytrace");
         sdl_text = (uint8_t *)gen;
         sdl_len = (size_t)n;
     }
