@@ -381,7 +381,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"rtrotate", a_rtrotate, 0, 0}, {"rtshape", a_rtshape, 0, 0},
     {"rtmesh", a_rtmesh, 0, "at most 262144 triangles (FX_SCENE_MAX_TRIANGLES), the BVH 2 nodes a triangle"},
     {"rtcsg", a_rtcsg, "rtshape sphere\nrttranslate 0.5 0 0\nrtshape cube", 0},
-    {"sdl", a_sdl, 0, "an SDL file: at most 256 objects, 4 lights, FX_SDL_MAX_EXPANSION macro tokens (fixel/sdl.h)"},
+    {"sdl", a_sdl, 0, "an SDL file: at most 256 objects, 4 lights, 200000 tokens read from macros, meshes of 20000 triangles (fixel/sdl.h)"},
     {"rtpreview", a_rtpreview, 0, 0},
     {"raytrace", a_raytrace, 0, RTWORK}, {"rttrace", a_rttrace, 0, RTWORK},
     {"vsdscene", a_vsdscene, 0, 0}, {"vsdpoly", a_vsdpoly, 0, 0}, {"vsdclear", a_none, 0, 0},

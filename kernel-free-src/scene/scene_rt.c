@@ -645,7 +645,7 @@ const fx_scene_cmd fx_scene_cmds_rt[] = {
     {"rtmesh", cmd_mesh, "rtmesh teapot N | rtmesh torus R r SIDES RINGS | rtmesh obj \"FILE\"", D},
     {"rtcsg", cmd_csg, "rtcsg union|intersection|difference", D},
     {"sdl", cmd_sdl, "sdl \"FILE\" (the textbook's scene description language; docs/RAYTRACE.md)", D},
-    {"rtpreview", cmd_preview, "rtpreview [flat|gouraud|phong] (the scene rasterized, no CSG, reflections or shadows)", D},
+    {"rtpreview", cmd_preview, "rtpreview [flat|gouraud|phong] (the scene rasterized: unions whole, other CSG its left side; no reflection or shadows)", D},
     {"raytrace", cmd_raytrace, "raytrace [X Y W H]", D},
     {"rttrace", cmd_trace, "rttrace X Y", D},
     {0, 0, 0, 0},
