@@ -376,3 +376,20 @@ FX_TEST(sdl_mesh_file_errors)
     }
     file_name = NULL;
 }
+
+FX_TEST(sdl_emissive_glows_without_light)
+{
+    /* no lights, no ambient: only the emission is left (Iamb = emissive + ambient light . ka) */
+    FX_CHECK_EQ(rd("globalAmbient 0 0 0 emissive 0.5 0.25 0 sphere"), 1);
+    FX_CHECK_EQ(fx_sdl_default_camera(&scene, 45 * ONE), 0);
+    fx_vec3 S, c;
+    fx_rt_primary(&scene, 64, 64, 32, 32, &S, &c);
+    fx3d_rgb I = fx_rt_trace_ray(&scene, S, c, NULL, NULL);
+    FX_CHECK_EQ(I.r, ONE / 2);
+    FX_CHECK_EQ(I.g, ONE / 4);
+    FX_CHECK_EQ(I.b, 0);
+    /* and the background where the ray misses */
+    FX_CHECK_EQ(rd("background 0 0 1 globalAmbient 0 0 0 emissive 0.5 0.25 0 translate 50 0 0 sphere"), 1);
+    I = fx_rt_trace_ray(&scene, fx_vec3_make(0, 0, 5 * ONE), fx_vec3_make(0, 0, -ONE), NULL, NULL);
+    FX_CHECK_EQ(I.b, ONE);
+}
