@@ -238,7 +238,7 @@ static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 we
         }
     }
     fx3d_rgb diff = texture(mat, P);
-    fx3d_rgb Iamb = rgb_mul(s->ambient, mat->ambient), Idiff = rgb(0, 0, 0), Ispec = rgb(0, 0, 0);
+    fx3d_rgb Iamb = rgb_add(mat->emissive, rgb_mul(s->ambient, mat->ambient)), Idiff = rgb(0, 0, 0), Ispec = rgb(0, 0, 0);
     for (int li = 0; li < s->nlights; li++) {
         const fx_rt_light *L = &s->light[li];
         fx_vec3 Ld = fx_vec3_make(rt_sat((int64_t)L->pos.x - P.x), rt_sat((int64_t)L->pos.y - P.y),

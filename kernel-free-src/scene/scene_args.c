@@ -278,6 +278,8 @@ A(rtshape, FORM("taper"), F("S", 0, 2), FORM("torus"), FR("r", 4096, 65536), FOR
 A(rtcsg, W("union|intersection|difference"));
 A(rtmesh, FORM("teapot"), IW("N", 1, 16), FORM("torus"), F("R", 0, 16), F("r", 0, 8), IW("SIDES", 3, 256),
   IW("RINGS", 3, 256), FORM("obj"), S("FILE"));
+A(sdl, S("FILE"));
+A(rtpreview, OPT, W("flat|gouraud|phong"));
 A(raytrace, OPT, XY("X"), XY("Y"), I("W", 0, 16384), I("H", 0, 16384));
 A(rttrace, I("X", 0, 16383), I("Y", 0, 16383));
 
@@ -379,6 +381,8 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"rtrotate", a_rtrotate, 0, 0}, {"rtshape", a_rtshape, 0, 0},
     {"rtmesh", a_rtmesh, 0, "at most 262144 triangles (FX_SCENE_MAX_TRIANGLES), the BVH 2 nodes a triangle"},
     {"rtcsg", a_rtcsg, "rtshape sphere\nrttranslate 0.5 0 0\nrtshape cube", 0},
+    {"sdl", a_sdl, 0, "an SDL file: at most 256 objects, 4 lights, 200000 tokens read from macros, meshes of 20000 triangles (fixel/sdl.h)"},
+    {"rtpreview", a_rtpreview, 0, 0},
     {"raytrace", a_raytrace, 0, RTWORK}, {"rttrace", a_rttrace, 0, RTWORK},
     {"vsdscene", a_vsdscene, 0, 0}, {"vsdpoly", a_vsdpoly, 0, 0}, {"vsdclear", a_none, 0, 0},
     {"vsdcull", a_vsdcull, 0, 0}, {"vsdoctree", a_vsdoctree, 0, 0}, {"vsd", a_vsd, "vsdscene 0", VSDW},

@@ -8,6 +8,8 @@
 #include "fixel/error.h"
 #include "fixel/rt.h"
 #include "fixel/scene.h"
+#include "fixel/sdl.h"
+#include "fixel/render3d.h"
 #include "../base/fx_internal.h"
 #include "scene_mesh.h"
 
@@ -363,6 +365,211 @@ static int cmd_csg(fx_scene *sc)
     return e < 0 ? fx_scene_error(sc, "rtcsg: the tree would be deeper than %d", FX_RT_MAX_DEPTH) : 0;
 }
 
+static void *sdl_alloc(void *user, size_t n) { return fx_scene_alloc(user, n); }
+
+static int sdl_load(void *user, const char *path, const uint8_t **data, size_t *len)
+{
+    fx_scene *sc = user;
+    return sc->host.load_file(sc->host.user, path, data, len);
+}
+
+/* The textbook's SDL file: its lights, settings and objects join the
+ * scene; its camera is fx_sdl_default_camera's (SDL has none), which a
+ * later rtcamera replaces. */
+static int cmd_sdl(fx_scene *sc)
+{
+    GET(r);
+    char path[256];
+    TRY(fx_scene_arg_string(sc, path, sizeof path));
+    TRY(fx_scene_end(sc));
+    if (!sc->host.load_file)
+        return fx_scene_error(sc, "files not available");
+    const uint8_t *data;
+    size_t len;
+    int e = sc->host.load_file(sc->host.user, path, &data, &len);
+    if (e < 0)
+        return fx_scene_error(sc, "sdl: cannot read '%s': %s", path, fx_strerror(e));
+    fx_sdl_env env = {sc, sdl_alloc, sdl_load};
+    fx_sdl_error err;
+    if (fx_sdl_read(&r->s, (const char *)data, len, path, &env, &err) < 0)
+        return fx_scene_error(sc, "sdl: %s", err.msg);
+    fx_sdl_default_camera(&r->s, 45 * FX16_ONE);
+    return 0;
+}
+
+/* ---- rtpreview: the ray tracer's scene drawn by the z-buffer rasterizer,
+ * a quick look before the trace. Each leaf is tessellated in its own
+ * object space and placed by its object-to-world matrix; a union draws
+ * both sides, an intersection or difference only its left side (the
+ * rasterizer has no CSG); reflection, refraction and shadows are absent. */
+#define PV_SEG 24
+#define PV_RINGS 12
+#define PV_VERTS 1200
+#define PV_TRIS 1200
+
+typedef struct preview {
+    fx3d r;
+    fx_mat4 mstack[2], pstack[2];
+    fx_mesh m;
+} preview;
+
+static void pv_vert(fx_mesh *m, fx16 x, fx16 y, fx16 z, fx16 nx, fx16 ny, fx16 nz)
+{
+    fx_vec3 n = fx_vec3_make(nx, ny, nz);
+    fx_vec3_normalize(&n);
+    m->pos[m->nverts] = fx_vec3_make(x, y, z);
+    m->nrm[m->nverts++] = n;
+}
+
+static void pv_tri(fx_mesh *m, int32_t a, int32_t b, int32_t c)
+{
+    uint32_t *t = m->tri + m->ntris++ * 3;
+    t[0] = (uint32_t)a, t[1] = (uint32_t)b, t[2] = (uint32_t)c;
+}
+
+/* x^2 + y^2 <= (1 + (s - 1) z)^2, 0 <= z <= 1, with its caps */
+static void pv_taper(fx_mesh *m, fx16 s)
+{
+    for (int i = 0; i <= PV_SEG; i++) {
+        fx_angle a = (fx_angle)((uint64_t)i * 0x100000000ull / PV_SEG);
+        fx16 c = fx_cos(a), sn = fx_sin(a);
+        pv_vert(m, c, sn, 0, c, sn, FX16_ONE - s);
+        pv_vert(m, fx16_mul(c, s), fx16_mul(sn, s), FX16_ONE, c, sn, FX16_ONE - s);
+    }
+    for (int i = 0; i < PV_SEG; i++)
+        pv_tri(m, 2 * i, 2 * i + 2, 2 * i + 3), pv_tri(m, 2 * i, 2 * i + 3, 2 * i + 1);
+    for (int cap = 0; cap < 2; cap++) {
+        fx16 z = cap ? FX16_ONE : 0, rr = cap ? s : FX16_ONE, nz = cap ? FX16_ONE : -FX16_ONE;
+        int32_t c0 = m->nverts;
+        pv_vert(m, 0, 0, z, 0, 0, nz);
+        for (int i = 0; i <= PV_SEG; i++) {
+            fx_angle a = (fx_angle)((uint64_t)i * 0x100000000ull / PV_SEG);
+            pv_vert(m, fx16_mul(fx_cos(a), rr), fx16_mul(fx_sin(a), rr), z, 0, 0, nz);
+        }
+        for (int i = 0; i < PV_SEG; i++)
+            pv_tri(m, c0, c0 + 1 + i, c0 + 2 + i);
+    }
+}
+
+/* ring radius 1 about z, tube r */
+static void pv_torus(fx_mesh *m, fx16 r)
+{
+    for (int i = 0; i <= PV_SEG; i++)
+        for (int j = 0; j <= PV_RINGS; j++) {
+            fx_angle u = (fx_angle)((uint64_t)i * 0x100000000ull / PV_SEG);
+            fx_angle v = (fx_angle)((uint64_t)j * 0x100000000ull / PV_RINGS);
+            fx16 cu = fx_cos(u), su = fx_sin(u), cv = fx_cos(v), sv = fx_sin(v);
+            fx16 rad = FX16_ONE + fx16_mul(r, cv);
+            pv_vert(m, fx16_mul(rad, cu), fx16_mul(rad, su), fx16_mul(r, sv), fx16_mul(cv, cu), fx16_mul(cv, su),
+                    sv);
+        }
+    for (int i = 0; i < PV_SEG; i++)
+        for (int j = 0; j < PV_RINGS; j++) {
+            int32_t a = i * (PV_RINGS + 1) + j, b = a + PV_RINGS + 1;
+            pv_tri(m, a, b, b + 1), pv_tri(m, a, b + 1, a + 1);
+        }
+}
+
+/* z = 0, |x|, |y| <= h, in n x n cells */
+static void pv_sheet(fx_mesh *m, fx16 h, int n)
+{
+    for (int i = 0; i <= n; i++)
+        for (int j = 0; j <= n; j++)
+            pv_vert(m, (fx16)(-h + (int64_t)2 * h * i / n), (fx16)(-h + (int64_t)2 * h * j / n), 0, 0, 0, FX16_ONE);
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++) {
+            int32_t a = i * (n + 1) + j, b = a + n + 1;
+            pv_tri(m, a, b, b + 1), pv_tri(m, a, b + 1, a + 1);
+        }
+}
+
+static void pv_draw(preview *p, const fx_rt_scene *s, int i)
+{
+    const fx_rt_object *o = &s->obj[i];
+    if (o->kind >= FX_RT_UNION) {
+        pv_draw(p, s, o->left);
+        if (o->kind == FX_RT_UNION)
+            pv_draw(p, s, o->right);
+        return;
+    }
+    fx_mat4 M;
+    if (fx_mat4_invert(&M, &o->inv) < 0)
+        return;
+    fx_mat_stack_load(&p->r.model, &M);
+    const fx_rt_material *mt = &o->mat;
+    p->r.mat = (fx3d_material){mt->ambient, mt->diffuse, mt->specular, mt->emissive,
+                               mt->shininess > 128 ? 128 : mt->shininess};
+    fx_mesh *m = &p->m;
+    m->nverts = m->ntris = 0;
+    const fx_mesh *draw = m;
+    switch (o->kind) {
+    case FX_RT_SPHERE:
+    case FX_RT_CUBE: {
+        fx_mesh_params mp = {o->kind == FX_RT_SPHERE ? FX_MESH_SPHERE : FX_MESH_CUBE,
+                             o->kind == FX_RT_SPHERE ? FX16_ONE : 2 * FX16_ONE, 0, 0, PV_SEG, PV_RINGS};
+        if (fx_mesh_make(m, &mp) < 0)
+            return;
+        break;
+    }
+    case FX_RT_SQUARE: pv_sheet(m, FX16_ONE, 4); break;
+    case FX_RT_PLANE: pv_sheet(m, 120 * FX16_ONE, 24); break;
+    case FX_RT_CYLINDER: pv_taper(m, o->taper); break;
+    case FX_RT_TORUS: pv_torus(m, o->taper); break;
+    case FX_RT_MESH: draw = o->mesh->mesh; break;
+    default: return;
+    }
+    fx3d_draw(&p->r, draw);
+}
+
+static int cmd_preview(fx_scene *sc)
+{
+    GET(r);
+    static const char *const ch[] = {"flat", "gouraud", "phong", NULL};
+    int shading = FX3D_PHONG;
+    if (fx_scene_more(sc))
+        TRY(shading = fx_scene_arg_choice(sc, ch));
+    TRY(fx_scene_end(sc));
+    TRY(fx_scene_surface(sc));
+    preview *p = fx_scene_alloc(sc, sizeof *p);
+    fx_vec3 *mem = fx_scene_alloc(sc, (size_t)PV_VERTS * 2 * sizeof(fx_vec3) + (size_t)PV_TRIS * 3 * sizeof(uint32_t));
+    void *depth = fx_scene_alloc_raw(sc, fx3d_depth_bytes(&sc->ctx.surf, 32));
+    if (!p || !mem || !depth)
+        return fx_scene_error(sc, "out of scene memory for rtpreview");
+    p->m = (fx_mesh){mem, mem + PV_VERTS, (uint32_t *)(mem + 2 * PV_VERTS), 0, 0, PV_VERTS, PV_TRIS, NULL, NULL};
+    fx_surface scr = fx_scene_screen_surf(&sc->ctx);
+    fx3d_init(&p->r, &scr, p->mstack, 2, p->pstack, 2);
+    fx_scene_band_clip(sc, &p->r.ctx.clip);
+    if (sc->banded)
+        fx3d_depth_rows(&p->r, sc->band.y0, sc->band.y1);
+    fx3d_set_depth(&p->r, depth, 32);
+    p->r.visibility = FX3D_VIS_DEPTH;
+    p->r.cull = FX3D_CULL_NONE; /* sheets are seen from both sides */
+    p->r.shading = (fx3d_shading)shading;
+    fx_camera_view(&r->s.cam, &p->r.view);
+    fx_mat4 proj;
+    fx_angle fovy = fx_atan2(r->s.tan_half, FX16_ONE) * 2;
+    fx_mat4_perspective(&proj, fovy, fx16_from_ratio(sc->ctx.surf.w, sc->ctx.surf.h), FX16_ONE / 10,
+                        512 * FX16_ONE);
+    fx_mat_stack_load(&p->r.proj, &proj);
+    p->r.ambient = r->s.ambient;
+    for (int i = 0; i < FX3D_MAX_LIGHTS; i++)
+        p->r.light[i].type = FX3D_LIGHT_OFF;
+    for (int i = 0; i < r->s.nlights; i++) {
+        fx3d_light *L = &p->r.light[i];
+        L->type = FX3D_LIGHT_POINT;
+        L->pos = r->s.light[i].pos;
+        L->ambient = (fx3d_rgb){0, 0, 0};
+        L->diffuse = L->specular = r->s.light[i].color;
+    }
+    fx_ctx c = p->r.ctx;
+    c.color = fx3d_rgb_to_color(r->s.background);
+    fx_clear(&c);
+    for (int i = 0; i < r->s.n; i++)
+        if (r->obj[i].top)
+            pv_draw(p, &r->s, i);
+    return 0;
+}
+
 static int cmd_raytrace(fx_scene *sc)
 {
     GET(r);
@@ -437,6 +644,8 @@ const fx_scene_cmd fx_scene_cmds_rt[] = {
     {"rtshape", cmd_shape, "rtshape sphere|cube|square|plane|cylinder|cone | rtshape taper S | rtshape torus r", D},
     {"rtmesh", cmd_mesh, "rtmesh teapot N | rtmesh torus R r SIDES RINGS | rtmesh obj \"FILE\"", D},
     {"rtcsg", cmd_csg, "rtcsg union|intersection|difference", D},
+    {"sdl", cmd_sdl, "sdl \"FILE\" (the textbook's scene description language; docs/RAYTRACE.md)", D},
+    {"rtpreview", cmd_preview, "rtpreview [flat|gouraud|phong] (the scene rasterized: unions whole, other CSG its left side; no reflection or shadows)", D},
     {"raytrace", cmd_raytrace, "raytrace [X Y W H]", D},
     {"rttrace", cmd_trace, "rttrace X Y", D},
     {0, 0, 0, 0},

@@ -27,6 +27,7 @@ static const char usage[] =
     "usage: fixel-draw [-o OUT.png|OUT.ppm] [-s WxH] [-f FORMAT] [--trace] [SCRIPT|-]\n"
     "       fixel-draw --frames N [--fps F] -o OUT-%04d.png [SCRIPT|-]\n"
     "       fixel-draw --display [--hold] [SCRIPT|-]\n"
+    "       fixel-draw [-o OUT.png] [-s WxH] [--camera EX,EY,EZ LX,LY,LZ UX,UY,UZ FOVY] [--preview] SCENE.sdl\n"
     "Render a fixel scene script headless into a PNG or PPM file, or onto the display.\n"
     "  -o FILE      output image (default out.png; .ppm writes binary PPM)\n"
     "  -s WxH       surface size, overriding the script's 'size'\n"
@@ -42,6 +43,12 @@ static const char usage[] =
     "               (e.g. %04d: out/frame-0000.png ...)\n"
     "  --fps F      frames a second for --frames (1..1000, default 25)\n"
     "  --commands   list every script command and exit\n"
+    "  --camera E L U FOVY  with a .sdl scene (the textbook's Scene Description Language,\n"
+    "               ray traced, 640x480 unless -s): eye, look-at point and up vector as\n"
+    "               X,Y,Z and the vertical field of view in degrees, instead of the\n"
+    "               default camera (docs/RAYTRACE.md)\n"
+    "  --preview    with a .sdl scene: draw it with the z-buffer rasterizer (Phong; no CSG\n"
+    "               but unions, no reflection, refraction or shadows) instead of tracing it\n"
     "  --display    show the result on the display (DRM, fbdev) instead of writing a file;\n"
     "               with the script on stdin ('-') lines run as they arrive and a line\n"
     "               'present' shows the frame so far (streaming)\n"
@@ -544,6 +551,8 @@ static void list_commands(void)
 int main(int argc, char **argv)
 {
     const char *out = "out.png", *script = "-";
+    const char *camera[4] = {0};
+    int preview = 0;
     int trace = 0, w = 0, h = 0, display = 0, hold = 0, threads = 0, frames = 0, fps = 25;
     fx_format fmt = FX_FMT_COUNT;
     for (int i = 1; i < argc; i++) {
@@ -598,6 +607,11 @@ int main(int argc, char **argv)
                 fprintf(stderr, "fixel-draw: unknown pixel format '%s'\n", argv[i]);
                 return 2;
             }
+        } else if (!strcmp(a, "--preview")) {
+            preview = 1;
+        } else if (!strcmp(a, "--camera") && i + 4 < argc) {
+            for (int k = 0; k < 4; k++)
+                camera[k] = argv[++i];
         } else if (a[0] == '-' && a[1]) {
             fprintf(stderr, "fixel-draw: unknown or incomplete option '%s'\n%s", a, usage);
             return 2;
@@ -612,9 +626,45 @@ int main(int argc, char **argv)
                         : "needs -o with one %d, %4d or %04d for the frame number (e.g. -o frame-%04d.png)");
         return 2;
     }
-    int streaming = display && !strcmp(script, "-");
-    FILE *in = streaming ? NULL : strcmp(script, "-") ? open_input(script, 1) : stdin;
-    if (!in && !streaming) {
+    size_t sl = strlen(script), sdl_len = 0;
+    uint8_t *sdl_text = NULL;
+    int sdl = sl > 4 && !strcasecmp(script + sl - 4, ".sdl");
+    if ((camera[0] || preview) && !sdl) {
+        fprintf(stderr, "fixel-draw: --camera and --preview go with a .sdl scene (a script uses rtcamera, rtpreview)\n");
+        return 2;
+    }
+    if (sdl) {
+        /* the scene file is read by the script command 'sdl' of a script
+         * made here, so -j, -s, -f, --display and --trace work as for any script */
+        if (strpbrk(script, "\"\n\\")) {
+            fprintf(stderr, "fixel-draw: %s: a scene name may not hold '\"', '\\' or a newline\n", script);
+            return 2;
+        }
+        char cam[512] = "";
+        if (camera[0]) {
+            int n = snprintf(cam, sizeof cam, "rtcamera %s %s %s %s\n", camera[0], camera[1], camera[2], camera[3]);
+            for (int k = 0; k < n; k++)
+                if (cam[k] == ',')
+                    cam[k] = ' ';
+            if (n >= (int)sizeof cam || strchr(cam, '#') || strcspn(cam, "\n") != (size_t)n - 1) {
+                fprintf(stderr, "fixel-draw: --camera: expected EX,EY,EZ LX,LY,LZ UX,UY,UZ FOVY\n");
+                return 2;
+            }
+        }
+        size_t cap = sl + sizeof cam + 64;
+        char *gen = malloc(cap);
+        if (!gen) {
+            fprintf(stderr, "fixel-draw: out of memory\n");
+            return 1;
+        }
+        int n = snprintf(gen, cap, "size 640 480\nsdl \"%s\"\n%s%s\n", script, cam,
+                         preview ? "rtpreview" : "raytrace");
+        sdl_text = (uint8_t *)gen;
+        sdl_len = (size_t)n;
+    }
+    int streaming = !sdl && display && !strcmp(script, "-");
+    FILE *in = streaming || sdl ? NULL : strcmp(script, "-") ? open_input(script, 1) : stdin;
+    if (!in && !streaming && !sdl) {
         if (errno == EISDIR)
             fprintf(stderr, "fixel-draw: cannot read %s: it is a directory\n", script);
         else
@@ -623,7 +673,9 @@ int main(int argc, char **argv)
     }
     uint8_t *text = NULL;
     size_t len = 0;
-    int r = streaming ? 0 : read_all(in, SCRIPT_MAX, &text, &len);
+    int r = streaming || sdl ? 0 : read_all(in, SCRIPT_MAX, &text, &len);
+    if (sdl)
+        text = sdl_text, len = sdl_len;
     if (in && in != stdin)
         fclose(in);
     if (r < 0) {
@@ -692,7 +744,12 @@ int main(int argc, char **argv)
         r = fx_scene_run_mt(&sc, (const char *)text, len, H.threads, NULL);
     else
         r = streaming ? run_stream(&sc, &H) : run_lines(&sc, (const char *)text, len, &H, display);
-    if (r < 0) {
+    if (r < 0 && sdl) {
+        /* the SDL reader's message names its own FILE:LINE:COL */
+        fprintf(stderr, "fixel-draw: %s%s\n", strncmp(sc.err, "sdl: ", 5) ? "--camera: " : "",
+                strncmp(sc.err, "sdl: ", 5) ? sc.err : sc.err + 5);
+        status = 1;
+    } else if (r < 0) {
         fprintf(stderr, "%s:%d:%d: %s\n", strcmp(script, "-") ? script : "<stdin>", sc.err_line,
                 sc.err_col, sc.err);
         status = 1;

@@ -76,6 +76,7 @@ typedef struct fx_rt_material {
     fx16 tex_scale;     /* world units per texture unit */
     fx16 bump;          /* bump height, world units 0..1 (0: smooth; fx_rt_bump_normal) */
     fx16 bump_scale;    /* world units per noise cell of the bumps, 1/16..64 */
+    fx3d_rgb emissive;  /* light the surface gives off itself, added to Iamb (0..1; the SDL's emissive) */
 } fx_rt_material;
 
 /* A material with no texture and no bumps: ambient, diffuse and specular
