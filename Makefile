@@ -271,6 +271,7 @@ test-nodeps:
 	  $(call build_suites,$(ASAN_BUILD)) \
 	  "sh tests/check-freestanding.sh '$(CC)' '$(NM)' build/freestanding $(CORE_SRC)" \
 	  "sh tests/check-layers.sh" \
+	  "sh tests/check-docs.sh" \
 	  $(TEST_SUITES)
 
 # The edit-compile-test loop: the build set only (unit, golden, course
@@ -287,7 +288,7 @@ check-nodeps:
 	@$(MAKE) --no-print-directory test-bins
 	@$(MAKE) --no-print-directory SAN=1 test-bins
 	@bash tests/run-suites.sh --total -j $(TEST_JOBS) \
-	  $(call check_suites,$(PLAIN_BUILD)) $(call check_suites,$(ASAN_BUILD)) "sh tests/check-layers.sh"
+	  $(call check_suites,$(PLAIN_BUILD)) $(call check_suites,$(ASAN_BUILD)) "sh tests/check-layers.sh" "sh tests/check-docs.sh"
 .PHONY: check check-nodeps
 
 # Every golden set, in one go (`git status` then shows what changed; look at
