@@ -35,6 +35,7 @@ typedef struct sdlp {
     defn def[FX_SDL_MAX_DEFS];
     int ndefs;
     int32_t expanded;
+    uint64_t scanned; /* bytes of macro bodies read, blanks and comments too */
     size_t tok, tlen; /* the current token */
     fx_mat4 stack[FX_SDL_STACK];
     int top;
@@ -143,7 +144,19 @@ static int next(sdlp *P)
 {
     for (;;) {
         frame *f = &P->fr[P->nfr - 1];
-        if (scan(P->text, &f->pos, f->end, &P->tok, &P->tlen)) {
+        size_t from = f->pos;
+        int got = scan(P->text, &f->pos, f->end, &P->tok, &P->tlen);
+        /* The work of an expansion is the bytes it reads: a body of blanks
+         * used many times would cost no tokens and still take minutes. A
+         * frame's pos only grows within its body, and the sum is checked
+         * after every step, so it stays below the limit plus one file. */
+        if (P->nfr > 1) {
+            P->scanned += (uint64_t)(f->pos - from);
+            if (P->scanned > FX_SDL_MAX_SCAN)
+                return fail(P, got ? P->tok : f->pos, "macro expansion reads more than %d bytes (the limit of one file)",
+                            FX_SDL_MAX_SCAN);
+        }
+        if (got) {
             if (P->nfr > 1 && ++P->expanded > FX_SDL_MAX_EXPANSION)
                 return fail(P, P->tok, "macro expansion longer than %d tokens (the limit of one file)",
                             FX_SDL_MAX_EXPANSION);

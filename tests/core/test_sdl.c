@@ -346,6 +346,27 @@ FX_TEST(sdl_errors_name_the_place)
         FX_CHECK_MSG(strstr(err.msg, cases[i].msg) != NULL, "case %zu: got '%s', want '%s'", i, err.msg,
                      cases[i].msg);
     }
+    /* A body of blanks costs no token but is read again at every use: the
+     * reader counts its bytes (review: 60,000 uses of 2 MB of blanks ran
+     * for minutes under the token limit alone). 64 KiB of blanks used 200
+     * times is 13 MB to read, over FX_SDL_MAX_SCAN, in 200 tokens. */
+    {
+        size_t blank = 65536, uses = 200, n = 0;
+        char *big = malloc(blank + 32 + uses * 6 + 1);
+        FX_CHECK(big != NULL);
+        if (big) {
+            n += (size_t)sprintf(big, "def b { ");
+            memset(big + n, ' ', blank);
+            n += blank;
+            n += (size_t)sprintf(big + n, " }\n");
+            for (size_t u = 0; u < uses; u++)
+                n += (size_t)sprintf(big + n, "use b ");
+            int r = rd(big);
+            FX_CHECK_MSG(r < 0, "200 uses of 64 KiB of blanks were accepted");
+            FX_CHECK_MSG(strstr(err.msg, "macro expansion reads more than") != NULL, "%s", err.msg);
+            free(big);
+        }
+    }
     /* the object limit is the scene's */
     FX_CHECK(read_cap("sphere sphere sphere", 2) < 0);
     FX_CHECK_MSG(strstr(err.msg, "t.sdl:1:15: sphere: more than 2 objects") != NULL, "%s", err.msg);

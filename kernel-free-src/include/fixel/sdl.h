@@ -34,6 +34,8 @@ extern "C" {
 #define FX_SDL_MAX_DEFS 64          /* def names in one file */
 #define FX_SDL_MAX_NESTING 16       /* use inside use inside ... */
 #define FX_SDL_MAX_EXPANSION 200000 /* tokens read out of macros in one file */
+#define FX_SDL_MAX_SCAN 8000000     /* bytes read out of macros in one file: blanks and
+                                     * comments cost no token, but each use reads them again */
 #define FX_SDL_STACK 32             /* push depth */
 #define FX_SDL_MESH_MAX 20000       /* vertices, normals, faces and triangles of one mesh file */
 #define FX_SDL_FACE_MAX 64          /* corners of one mesh face */
