@@ -745,9 +745,15 @@ int main(int argc, char **argv)
     else
         r = streaming ? run_stream(&sc, &H) : run_lines(&sc, (const char *)text, len, &H, display);
     if (r < 0 && sdl) {
-        /* the SDL reader's message names its own FILE:LINE:COL */
-        fprintf(stderr, "fixel-draw: %s%s\n", strncmp(sc.err, "sdl: ", 5) ? "--camera: " : "",
-                strncmp(sc.err, "sdl: ", 5) ? sc.err : sc.err + 5);
+        /* the SDL reader's message names its own FILE:LINE:COL; line 3 of
+         * the generated script is --camera's rtcamera; anything else (the
+         * surface, the tracer) is the scene's */
+        if (!strncmp(sc.err, "sdl: ", 5))
+            fprintf(stderr, "fixel-draw: %s\n", sc.err + 5);
+        else if (camera[0] && sc.err_line == 3)
+            fprintf(stderr, "fixel-draw: --camera: %s\n", sc.err);
+        else
+            fprintf(stderr, "fixel-draw: %s: %s\n", script, sc.err);
         status = 1;
     } else if (r < 0) {
         fprintf(stderr, "%s:%d:%d: %s\n", strcmp(script, "-") ? script : "<stdin>", sc.err_line,
