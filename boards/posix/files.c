@@ -106,9 +106,17 @@ FILE *fx_fopen_regular_write(const char *path, int append, char *why, size_t why
         fail(why, whylen);
         return NULL;
     }
-    /* no O_TRUNC: it would act on a device before the check; O_NONBLOCK:
-     * a FIFO with no reader fails with ENXIO instead of blocking, one with
-     * a reader opens and is refused below */
+    /* Look before opening: opening a FIFO that has a reader hands it an
+     * EOF, and opening a device can act on it (a watchdog arms). What is
+     * swapped in between the stat and the open is still refused below,
+     * after the open. No O_TRUNC: it would act on a device before the
+     * check; O_NONBLOCK: a FIFO with no reader fails with ENXIO instead of
+     * blocking. */
+    struct stat pre;
+    if (stat(path, &pre) == 0 && !S_ISREG(pre.st_mode)) {
+        not_regular(pre.st_mode, why, whylen);
+        return NULL;
+    }
     int fd = open(path, O_WRONLY | O_CREAT | O_NONBLOCK | O_NOCTTY | O_CLOEXEC | (append ? O_APPEND : 0), 0644);
     if (fd < 0) {
         struct stat st;

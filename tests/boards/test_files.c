@@ -8,6 +8,7 @@
 #endif
 #include <errno.h>
 #include <fcntl.h>
+#include <poll.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -80,6 +81,12 @@ FX_TEST(files_outputs_never_open_or_replace_special_files)
     int rd = open(fifo, O_RDONLY | O_NONBLOCK);
     FX_CHECK(fx_fopen_regular_write(fifo, 1, why, sizeof why) == NULL);
     FX_CHECK_MSG(!strcmp(why, "is a FIFO, not a regular file"), "%s", why);
+    /* and was not even opened: a writer that came and went would have
+     * handed the reader a hang-up (Linux reports POLLHUP only once a
+     * writer has connected since the reader opened) */
+    struct pollfd pfd = {rd, POLLIN, 0};
+    FX_CHECK(poll(&pfd, 1, 0) >= 0);
+    FX_CHECK_MSG(!(pfd.revents & POLLHUP), "the FIFO's reader saw a writer come and go (revents %#x)", pfd.revents);
     close(rd);
     FX_CHECK(fx_fopen_regular_write(dir, 0, why, sizeof why) == NULL);
     FX_CHECK_EQ(errno, EISDIR);

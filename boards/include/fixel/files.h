@@ -6,9 +6,12 @@
  * one rule every tool and the boards side follow:
  *   inputs   opened with O_NONBLOCK, then fstat: only a regular file is
  *            accepted (reads block again afterwards, as on any file)
- *   outputs  an existing target that is not a regular file is refused,
- *            never opened for writing (a FIFO with no reader blocks) nor
- *            replaced by a rename
+ *   outputs  an existing target that is not a regular file is refused
+ *            before it is opened (a FIFO with no reader blocks; a device
+ *            may act on an open) and checked again before a rename; one
+ *            swapped in after the check (a race no path-based call can
+ *            close) is still refused once opened, but a rename made
+ *            right after fx_check_replaceable can replace it
  * Symbolic links are followed (their target is what is checked). Errors
  * set errno: EISDIR for a directory, EOPNOTSUPP for a FIFO, socket or
  * device where a file is needed, else open()'s; and fill why (when not
