@@ -24,6 +24,25 @@ else
     cat "$O/compile.log"; echo "FAIL the public headers do not compile as C++"
     echo "cxx: $P passed, 1 failed"; exit 1
 fi
+# The umbrella: fixel/fixel.h says it pulls in every core public header,
+# and a program that includes only it must reach every core function
+# (issue #42 found 11 left out, fx_version's among them).
+missing=""
+for h in kernel-free-src/include/fixel/*.h; do
+    b=${h##*/}; [ "$b" = fixel.h ] && continue
+    grep -q "^#include \"fixel/$b\"" kernel-free-src/include/fixel/fixel.h || missing="$missing $b"
+done
+if [ -z "$missing" ]; then
+    echo "PASS fixel/fixel.h includes every core public header"; P=$((P + 1))
+else
+    echo "FAIL fixel/fixel.h leaves out:$missing"; F=$((F + 1))
+fi
+printf '#include <fixel/fixel.h>\nint main() { return fx_version()[0] == 0 && fx_version_number() < 0; }\n' > "$O/umbrella.cpp"
+if $CXX $FLAGS -o "$O/umbrella" "$O/umbrella.cpp" "$B/libfixel.a" $LIBS 2> "$O/umbrella.log" && "$O/umbrella"; then
+    echo "PASS a C++ program including only fixel/fixel.h calls fx_version()"; P=$((P + 1))
+else
+    cat "$O/umbrella.log"; echo "FAIL a C++ program including only fixel/fixel.h cannot call fx_version()"; F=$((F + 1))
+fi
 run() { # kind, binary
     out=$("$2" "$1" 2>&1); rc=$?
     echo "$out"
