@@ -24,6 +24,7 @@
 
 #include "fixel/app.h"
 #include "fixel/env.h"
+#include "fixel/files.h"
 #include "fixel/draw.h"
 #include "fixel/font.h"
 #include "fixel/input.h"
@@ -703,10 +704,9 @@ static void present(void)
  * and again before the write. Exit 6 with the variable and the path. */
 static void out_check(const char *path)
 {
-    struct stat st;
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        fprintf(stderr, "fixel-glut: FIXEL_GLUT_OUT=%s: not a regular file (%s)\n", path,
-                S_ISDIR(st.st_mode) ? "a directory" : S_ISFIFO(st.st_mode) ? "a FIFO" : "a device or socket");
+    char why[128];
+    if (fx_check_replaceable(path, why, sizeof why) < 0 && errno != ENOENT) {
+        fprintf(stderr, "fixel-glut: FIXEL_GLUT_OUT=%s: %s\n", path, why);
         exit(6);
     }
 }

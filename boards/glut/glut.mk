@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # The GLUT + OpenGL 1.x layer (boards/glut, issue #21): libfixel-glut.a, its
 # shared library and fixel-glut.pc. Programs build with
-#   cc lab.c -Iboards/glut/include $(BUILD)/libfixel-glut.a $(BUILD)/libfixel.a $(PKG_LIBS) -lm
+#   cc lab.c -Iboards/glut/include $(BUILD)/libfixel-glut.a $(BUILD)/libfixel.a $(PKG_LIBS) -lm -ldl
 # or, installed, $(pkg-config --cflags --libs fixel-glut).
 # Its integer core (kernel-free-src/gl) is part of libfixel: the top
 # Makefile's CORE_SRC takes every kernel-free-src/*/*.c.
@@ -11,7 +11,9 @@ GLUT_OBJ    := $(GLUT_SRC:%.c=$(BUILD)/obj/%.o)
 GLUT_A      := $(BUILD)/libfixel-glut.a
 GLUT_SO     := $(BUILD)/libfixel-glut.so.$(VERSION)
 GLUT_PC     := $(BUILD)/fixel-glut.pc
-GLUT_LIBS   := $(GLUT_A) $(LIB_A) $(LDLIBS) -lm
+# -ldl: text.c dlopens FreeType; glibc before 2.34 keeps dlopen in libdl
+# (harmless on later ones, where libdl is an empty stub)
+GLUT_LIBS   := $(GLUT_A) $(LIB_A) $(LDLIBS) -lm -ldl
 
 $(GLUT_OBJ): BASEFLAGS += -Iboards/glut/include
 # The X11 bitmap fonts are read with FreeType, opened at run time (text.c):
@@ -25,13 +27,13 @@ $(GLUT_A): $(GLUT_OBJ)
 	$(AR) rcs $@ $^
 
 $(GLUT_SO): $(GLUT_OBJ) $(LIB_SO)
-	$(CC) -shared -Wl,-soname,libfixel-glut.so.$(SOMAJOR) $(SANFLAGS) $(LDFLAGS) -o $@ $(GLUT_OBJ) -L$(BUILD) -lfixel $(LDLIBS) -lm
+	$(CC) -shared -Wl,-soname,libfixel-glut.so.$(SOMAJOR) $(SANFLAGS) $(LDFLAGS) -o $@ $(GLUT_OBJ) -L$(BUILD) -lfixel $(LDLIBS) -lm -ldl
 	ln -sf libfixel-glut.so.$(VERSION) $(BUILD)/libfixel-glut.so.$(SOMAJOR)
 	ln -sf libfixel-glut.so.$(VERSION) $(BUILD)/libfixel-glut.so
 
 $(GLUT_PC): boards/glut/glut.mk
 	@mkdir -p $(dir $@)
-	printf 'prefix=%s\nlibdir=$${prefix}/lib\nincludedir=$${prefix}/include\n\nName: fixel-glut\nDescription: GLUT and OpenGL 1.x immediate mode on fixel framebuffers\nVersion: %s\nRequires.private: fixel\nLibs: -L$${libdir} -lfixel-glut -lfixel\nLibs.private: -lm -lpthread\nCflags: -I$${includedir}/fixel-glut\n' \
+	printf 'prefix=%s\nlibdir=$${prefix}/lib\nincludedir=$${prefix}/include\n\nName: fixel-glut\nDescription: GLUT and OpenGL 1.x immediate mode on fixel framebuffers\nVersion: %s\nRequires.private: fixel\nLibs: -L$${libdir} -lfixel-glut -lfixel\nLibs.private: -lm -lpthread -ldl\nCflags: -I$${includedir}/fixel-glut\n' \
 	  '$(PREFIX)' '$(VERSION)' > $@
 
 .PHONY: glut install-glut uninstall-glut
@@ -49,7 +51,7 @@ install-glut: glut
 	$(if $(filter 1,$(STATIC)),,install -m 755 $(GLUT_SO) $(DESTDIR)$(LIBDIR)/ && \
 	  ln -sf libfixel-glut.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libfixel-glut.so.$(SOMAJOR) && \
 	  ln -sf libfixel-glut.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libfixel-glut.so)
-	printf 'libdir=%s\nincludedir=%s\n\nName: fixel-glut\nDescription: GLUT and OpenGL 1.x immediate mode on fixel framebuffers\nVersion: %s\nRequires.private: fixel\nLibs: -L$${libdir} -lfixel-glut -lfixel\nLibs.private: -lm -lpthread\nCflags: -I$${includedir}/fixel-glut\n' \
+	printf 'libdir=%s\nincludedir=%s\n\nName: fixel-glut\nDescription: GLUT and OpenGL 1.x immediate mode on fixel framebuffers\nVersion: %s\nRequires.private: fixel\nLibs: -L$${libdir} -lfixel-glut -lfixel\nLibs.private: -lm -lpthread -ldl\nCflags: -I$${includedir}/fixel-glut\n' \
 	  '$(LIBDIR)' '$(INCLUDEDIR)' '$(VERSION)' > $(DESTDIR)$(PKGCONFIGDIR)/fixel-glut.pc
 install: install-glut
 

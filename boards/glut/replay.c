@@ -27,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fixel/files.h"
 #include "glut_replay.h"
 
 __attribute__((noreturn)) static void die(const char *path, int line, const char *why)
@@ -234,24 +235,13 @@ void fxg_replay_load(fxg_replay *r, const char *path)
 {
     memset(r, 0, sizeof *r);
     r->path = path;
-    /* O_NONBLOCK: opening a FIFO with no writer would wait for one
-     * forever; the file must then be a regular one (a directory opens
-     * fine and reads as an error or nothing, a FIFO or a device never ends) */
-    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    struct stat st;
-    if (fd < 0 || fstat(fd, &st) < 0) {
-        fprintf(stderr, "fixel-glut: FIXEL_GLUT_REPLAY=%s: %s\n", path, strerror(errno));
-        exit(5);
-    }
-    if (!S_ISREG(st.st_mode)) {
-        fprintf(stderr, "fixel-glut: FIXEL_GLUT_REPLAY=%s: not a regular file (%s)\n", path,
-                S_ISDIR(st.st_mode) ? "a directory" : S_ISFIFO(st.st_mode) ? "a FIFO" : "a device or socket");
-        exit(5);
-    }
-    int fl = fcntl(fd, F_GETFL);
-    FILE *f = fl < 0 || fcntl(fd, F_SETFL, fl & ~O_NONBLOCK) < 0 ? NULL : fdopen(fd, "r");
+    /* the one rule for user-named files (fixel/files.h): a FIFO with no
+     * writer would block open() for ever, a directory or a device is no
+     * replay file */
+    char not_file[128];
+    FILE *f = fx_fopen_regular(path, NULL, not_file, sizeof not_file);
     if (!f) {
-        fprintf(stderr, "fixel-glut: FIXEL_GLUT_REPLAY=%s: %s\n", path, strerror(errno));
+        fprintf(stderr, "fixel-glut: FIXEL_GLUT_REPLAY=%s: %s\n", path, not_file);
         exit(5);
     }
     char buf[512];

@@ -60,13 +60,13 @@ st=$?; [ $st -eq 3 ] && pass "a replay waiting for a frame that never comes exit
 # as an empty replay; a FIXEL_GLUT_OUT that cannot be written exited 0
 rm -f "$out/fifo"; mkfifo "$out/fifo"; mkdir -p "$out/adir"
 msg=$(FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=1 FIXEL_GLUT_REPLAY="$out/fifo" timeout 10 "$bin" 2>&1); st=$?
-[ $st -eq 5 ] && echo "$msg" | grep -q "FIXEL_GLUT_REPLAY=$out/fifo: not a regular file (a FIFO)" &&
+[ $st -eq 5 ] && echo "$msg" | grep -q "FIXEL_GLUT_REPLAY=$out/fifo: is a FIFO, not a regular file" &&
     pass "FIXEL_GLUT_REPLAY naming a FIFO exits 5 at once, naming it" || fail "FIXEL_GLUT_REPLAY FIFO (exit $st: $msg)"
 msg=$(FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=1 FIXEL_GLUT_REPLAY="$out/adir" timeout 10 "$bin" 2>&1); st=$?
-[ $st -eq 5 ] && echo "$msg" | grep -q "FIXEL_GLUT_REPLAY=$out/adir: not a regular file (a directory)" &&
+[ $st -eq 5 ] && echo "$msg" | grep -q "FIXEL_GLUT_REPLAY=$out/adir: is a directory, not a regular file" &&
     pass "FIXEL_GLUT_REPLAY naming a directory exits 5 naming it" || fail "FIXEL_GLUT_REPLAY directory (exit $st: $msg)"
 msg=$(FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=1 FIXEL_GLUT_OUT="$out/fifo" timeout 10 "$bin" 2>&1); st=$?
-[ $st -eq 6 ] && echo "$msg" | grep -q "FIXEL_GLUT_OUT=$out/fifo: not a regular file (a FIFO)" &&
+[ $st -eq 6 ] && echo "$msg" | grep -q "FIXEL_GLUT_OUT=$out/fifo: is a FIFO, not a regular file" &&
     pass "FIXEL_GLUT_OUT naming a FIFO exits 6 naming it" || fail "FIXEL_GLUT_OUT FIFO (exit $st: $msg)"
 msg=$(FIXEL_BACKEND=memory FIXEL_GLUT_FRAMES=1 FIXEL_GLUT_OUT="$out/no/such/dir/x.png" timeout 10 "$bin" 2>&1); st=$?
 [ $st -eq 6 ] && echo "$msg" | grep -q "FIXEL_GLUT_OUT=$out/no/such/dir/x.png: cannot write" &&
