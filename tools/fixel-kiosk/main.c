@@ -1653,6 +1653,13 @@ int main(int argc, char **argv)
     fx_app_options o;
     fx_app_options_init(&o);
     if (k->headless) {
+        /* a scripted run: said once, as a new user took the silence for a
+         * kiosk that could not connect (issue #41's trial of the guide) */
+        if (k->cfg.mqtt.enabled)
+            fprintf(stderr, "fixel-kiosk: %s: --headless draws the data lines of stdin (or --data) only; "
+                            "the mqtt lines are not used. A live MQTT kiosk without a display: "
+                            "FIXEL_BACKEND=memory fixel-kiosk --out DIR %s (DIR/live.ppm, each frame)\n",
+                    cfgpath, cfgpath);
         o.display.backend = FX_BACKEND_MEMORY;
         o.display.memory_w = sw ? sw : k->cfg.width ? k->cfg.width : 480;
         o.display.memory_h = sh ? sh : k->cfg.height ? k->cfg.height : 320;
