@@ -80,6 +80,7 @@
 #include "fixel/input.h"
 #include "fixel/koch.h"
 #include "fixel/line.h"
+#include "fixel/mask.h"
 #include "fixel/mat3d.h"
 #include "fixel/mesh.h"
 #include "fixel/render3d.h"
