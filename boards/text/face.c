@@ -359,6 +359,8 @@ int fx_face_set_size(fx_face *f, int32_t px)
     return 0;
 }
 
+void fx_face_shutdown(void) { FcFini(); }
+
 int32_t fx_face_size(const fx_face *f) { return f ? f->px : 0; }
 const char *fx_face_error(const fx_face *f) { return f ? f->err : "no face"; }
 const char *fx_face_file(const fx_face *f, int i) { return f && i >= 0 && i < f->nfonts ? f->fonts[i].file : NULL; }

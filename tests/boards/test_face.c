@@ -487,6 +487,7 @@ FX_TEST(face_bad_input_gives_clear_errors_and_replacement_glyphs)
     FX_CHECK(fx_face_shape(f, "x", FX_FACE_MAX_TEXT + 1u, &g) == -FX_E2BIG);
     FX_CHECK(fx_face_draw(f, NULL, 0, 0, "x", 1, 0) == -FX_EINVAL);
     fx_face_close(f);
+    fx_face_shutdown(); /* fontconfig's configuration, for the leak checker */
 }
 
 FX_TEST(face_fontconfig_family_and_fallback_chain)
@@ -504,4 +505,5 @@ FX_TEST(face_fontconfig_family_and_fallback_chain)
     int n = fx_face_shape(f, "a\xe0\xa4\xa8", 4, &g);
     FX_CHECK(n == 2 && g[0].font == 0 && g[1].font > 0 && g[1].id != 0);
     fx_face_close(f);
+    fx_face_shutdown();
 }

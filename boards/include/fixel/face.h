@@ -28,6 +28,7 @@
 #include "fixel/draw.h"
 #include "fixel/fixed.h"
 #include "fixel/mask.h"
+#include "fixel/scene.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -67,6 +68,11 @@ int fx_face_available(void);
  * (bad features), -FX_ENOMEM, -FX_ENOTSUP (built without the libraries). */
 int fx_face_open(const char *name, int32_t px, const fx_face_opts *opts, fx_face **out, char *err, size_t errsz);
 void fx_face_close(fx_face *f);
+/* Release fontconfig's process-wide configuration (FcFini) so that leak
+ * checkers see a clean exit. Only after every face is closed, and only when
+ * nothing else in the process still uses fontconfig; a later fx_face_open
+ * loads it again. */
+void fx_face_shutdown(void);
 
 /* Change the size (1..FX_FACE_MAX_PX, else -FX_ERANGE, size unchanged).
  * Cached glyphs of other sizes stay until the LRU evicts them. */
@@ -157,6 +163,19 @@ int fx_face_draw_box(fx_face *f, const fx_ctx *c, const fx_textbox *b, const cha
  * as monotonic in the size); the face is left at that size. Returns it, or
  * -FX_ERANGE when even min_px does not fit (size left at min_px). */
 int32_t fx_face_fit(fx_face *f, const fx_textbox *b, const char *s, size_t len, int32_t min_px, int32_t max_px);
+
+/* ---- scene scripts ----
+ * The fx_scene_text_host behind 'font FAMILY|FILE SIZE ...', 'text' and
+ * 'textbox' (fixel/scene.h): set sc->text_host = fx_face_scene_host(fs)
+ * after fx_scene_init. Faces are opened once per name, size, weight and
+ * features and shared by every scene using fs (and the bands of a banded
+ * one, under a lock) until fx_face_scene_free. fx_face_scene_new returns
+ * NULL when out of memory; built without the libraries it returns a host
+ * whose 'font' fails naming the packages. */
+typedef struct fx_face_scene fx_face_scene;
+fx_face_scene *fx_face_scene_new(void);
+const fx_scene_text_host *fx_face_scene_host(const fx_face_scene *fs);
+void fx_face_scene_free(fx_face_scene *fs);
 
 #ifdef __cplusplus
 }  /* extern "C" */

@@ -24,6 +24,7 @@ int fx_face_open(const char *name, int32_t px, const fx_face_opts *opts, fx_face
 }
 
 void fx_face_close(fx_face *f) { (void)f; }
+void fx_face_shutdown(void) {}
 int fx_face_set_size(fx_face *f, int32_t px) { (void)f, (void)px; return -FX_ENOTSUP; }
 int32_t fx_face_size(const fx_face *f) { (void)f; return 0; }
 int fx_face_set_features(fx_face *f, const char *list) { (void)f, (void)list; return -FX_ENOTSUP; }
@@ -67,3 +68,27 @@ int32_t fx_face_fit(fx_face *f, const fx_textbox *b, const char *s, size_t len, 
     (void)f, (void)b, (void)s, (void)len, (void)min_px, (void)max_px;
     return -FX_ENOTSUP;
 }
+
+/* Scripts still get a host: its 'font NAME SIZE' says what is missing. */
+struct fx_face_scene {
+    fx_scene_text_host host;
+};
+static int absent_open(void *user, const char *name, int32_t px, int32_t weight, const char *feats, void **face,
+                       char *err, size_t errsz)
+{
+    (void)user, (void)px, (void)weight, (void)feats, (void)face;
+    snprintf(err, errsz, "%s: %s", name, WHY);
+    return -FX_ENOTSUP;
+}
+static int absent_draw(void *user, void *face, const fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h, int align,
+                       int ellipsis, const char *s, size_t len, char *err, size_t errsz)
+{
+    (void)user, (void)face, (void)c, (void)x, (void)y, (void)w, (void)h, (void)align, (void)ellipsis, (void)s;
+    (void)len;
+    snprintf(err, errsz, "%s", WHY);
+    return -FX_ENOTSUP;
+}
+static fx_face_scene absent_scene = {{NULL, absent_open, absent_draw}};
+fx_face_scene *fx_face_scene_new(void) { return &absent_scene; }
+const fx_scene_text_host *fx_face_scene_host(const fx_face_scene *fs) { return fs ? &fs->host : NULL; }
+void fx_face_scene_free(fx_face_scene *fs) { (void)fs; }
