@@ -68,24 +68,34 @@ static double ref_srgb_lin(int v)
 }
 
 static uint32_t L[256]; /* Q16 linear light; 255 -> exactly 1.0 */
+static void ref_encode_table(void);
 
 static void ref_tables(void)
 {
     for (int i = 0; i < 256; i++)
         L[i] = i == 255 ? 65536 : (uint32_t)lround(ref_srgb_lin(i) * 65536.0);
+    ref_encode_table();
 }
 
-/* The nearest code to linear value l (ties to the lower code). */
-static uint32_t ref_encode(uint32_t l)
+/* The nearest code to linear value l (ties to the lower code): a full
+ * search over the 256 codes, done once for every l into a table (the
+ * exhaustive test asks for it millions of times). */
+static uint8_t enc[65537];
+
+static void ref_encode_table(void)
 {
-    uint32_t best = 0;
-    for (uint32_t k = 1; k < 256; k++) {
-        int64_t dk = (int64_t)L[k] - l, db = (int64_t)L[best] - l;
-        if (llabs(dk) < llabs(db))
-            best = k;
+    for (uint32_t l = 0; l <= 65536; l++) {
+        uint32_t best = 0;
+        for (uint32_t k = 1; k < 256; k++) {
+            int64_t dk = (int64_t)L[k] - l, db = (int64_t)L[best] - l;
+            if (llabs(dk) < llabs(db))
+                best = k;
+        }
+        enc[l] = (uint8_t)best;
     }
-    return best;
 }
+
+static uint32_t ref_encode(uint32_t l) { return enc[l]; }
 
 static uint32_t ref_chan(uint32_t s, uint32_t d, uint32_t a, int gamma)
 {
