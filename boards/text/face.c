@@ -510,7 +510,7 @@ static int grow(fx_face *f, size_t n)
 
 /* UTF-8 to code points; each byte of an invalid sequence becomes U+FFFD.
  * Overlong forms, surrogates and values past U+10FFFF are invalid. */
-static size_t decode(const uint8_t *s, size_t len, uint32_t *cp, uint32_t *at)
+static size_t decode(const uint8_t *s, size_t len, uint32_t *cp, uint32_t *at, int keep_breaks)
 {
     size_t n = 0;
     for (size_t i = 0; i < len;) {
@@ -534,7 +534,7 @@ static size_t decode(const uint8_t *s, size_t len, uint32_t *cp, uint32_t *at)
             continue;
         }
         /* Line breaks in a single line shape as spaces. */
-        cp[n++] = (v == '\n' || v == '\r') ? ' ' : v;
+        cp[n++] = (!keep_breaks && (v == '\n' || v == '\r')) ? ' ' : v;
         i += k;
     }
     return n;
@@ -617,7 +617,7 @@ int fx_face_shape(fx_face *f, const char *s, size_t len, const fx_glyph **out)
         set_err(f, "text of %zu bytes: out of memory", len);
         return -FX_ENOMEM;
     }
-    size_t n = decode((const uint8_t *)s, len, f->cps, f->cpbyte);
+    size_t n = decode((const uint8_t *)s, len, f->cps, f->cpbyte, 0);
     f->cpbyte[n] = (uint32_t)len;
     if (!n) {
         *out = f->glyphs;
@@ -904,10 +904,27 @@ int fx_face_draw_box(fx_face *f, const fx_ctx *c, const fx_textbox *b, const cha
     int64_t step = ((int64_t)fm.line_height * (b->line_spacing ? b->line_spacing : FX16_ONE) + 0x8000) >> 16;
     if (step < 1)
         step = 1;
-    char *brk = malloc(len ? len : 1);
-    if (!brk)
+    /* Break opportunities per byte (after it). libunibreak's own UTF-8
+     * reader asserts on some invalid input (1.1: a truncated sequence at the
+     * end, found by fuzz_face), so it gets the code points decoded here
+     * (each invalid byte U+FFFD), and each code point's answer goes to its
+     * last byte. */
+    char *brk = malloc(len ? len : 1), *b32 = malloc(len ? len : 1);
+    uint32_t *cp = malloc((len ? len : 1) * sizeof *cp), *at = malloc((len + 1) * sizeof *at);
+    if (!brk || !b32 || !cp || !at) {
+        free(brk), free(b32), free(cp), free(at);
+        set_err(f, "text of %zu bytes: out of memory", len);
         return -FX_ENOMEM;
-    set_linebreaks_utf8((const utf8_t *)s, len, NULL, brk);
+    }
+    size_t ncp = decode((const uint8_t *)s, len, cp, at, 1);
+    at[ncp] = (uint32_t)len;
+    memset(brk, LINEBREAK_INSIDEACHAR, len);
+    if (ncp) {
+        set_linebreaks_utf32((const utf32_t *)cp, ncp, NULL, b32);
+        for (size_t i = 0; i < ncp; i++)
+            brk[at[i + 1] - 1] = b32[i];
+    }
+    free(b32), free(cp), free(at);
     /* A line of more than this many bytes would need glyphs narrower than a
      * quarter pixel on average: not measured, taken as too wide (bounds the
      * work of one enormous word). */

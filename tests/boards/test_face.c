@@ -461,6 +461,15 @@ FX_TEST(face_bad_input_gives_clear_errors_and_replacement_glyphs)
         FX_CHECK_EQ(g[1].cluster, 1);
         FX_CHECK_EQ(g[7].cluster, 7);
     }
+    /* Invalid UTF-8 in a box: libunibreak 1.1's own UTF-8 reader asserts
+     * on this (fuzz_face found it); fixel hands it decoded code points. */
+    {
+        static const char bad[] = "Hello,pppppppppppppppppppp\xd5\x01pppp pp\xff\xff\xef\xff\xff\xe2\x80";
+        fx_textbox bb = {{0, 0, 60, 200}, FX_ALIGN_LEFT, 1, 0, 0};
+        int32_t nl;
+        int ovf;
+        FX_CHECK(fx_face_draw_box(f, NULL, &bb, bad, sizeof bad - 1, &nl, &ovf) == 0 && nl >= 2);
+    }
     /* A code point no font of the chain has: the .notdef box, not nothing. */
     n = fx_face_shape(f, "\xe4\xb8\xad", 3, &g);
     FX_CHECK(n == 1 && g[0].id == 0);
