@@ -71,7 +71,15 @@ SYS_PKGS := libpng zlib
 OPT_PKGS := libdrm libevdev libgpiod
 HAVE_PNG := $(shell $(PKG_CONFIG) --exists $(SYS_PKGS) 2>/dev/null && echo 1)
 HAVE_OPT := $(shell $(PKG_CONFIG) --exists $(OPT_PKGS) 2>/dev/null && echo 1)
-PKGS     := $(if $(HAVE_PNG),$(SYS_PKGS)) $(if $(HAVE_OPT),$(OPT_PKGS))
+# Smooth text from real fonts (boards/text, fixel/face.h; issue #37). Without
+# them boards/text/absent answers every call with -FX_ENOTSUP and a message
+# naming the packages; `make` says so once.
+TEXT_PKGS := freetype2 harfbuzz fribidi fontconfig libunibreak
+HAVE_TEXT := $(shell $(PKG_CONFIG) --exists $(TEXT_PKGS) 2>/dev/null && echo 1)
+ifneq ($(HAVE_TEXT),1)
+  $(info fixel: no smooth text (pkg-config finds no $(TEXT_PKGS)): fx_face_* report -FX_ENOTSUP)
+endif
+PKGS     := $(if $(HAVE_PNG),$(SYS_PKGS)) $(if $(HAVE_OPT),$(OPT_PKGS)) $(if $(HAVE_TEXT),$(TEXT_PKGS))
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null) $(if $(HAVE_PNG),,-DFX_NO_PNG -DFX_NO_ZLIB)
 PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS) 2>/dev/null)
 LDFLAGS  ?=
@@ -104,7 +112,8 @@ CORE_SRC   := $(sort $(wildcard kernel-free-src/*/*.c))
 # them otherwise, so the memory backend and fx_app still link).
 BOARD_DIRS     := posix memory display app env linux/display linux/console
 BOARD_LIB_DIRS := linux/drm linux/input
-BOARD_SRC  := $(sort $(foreach d,$(BOARD_DIRS) $(if $(HAVE_OPT),$(BOARD_LIB_DIRS),linux/absent),\
+BOARD_SRC  := $(sort $(foreach d,$(BOARD_DIRS) $(if $(HAVE_OPT),$(BOARD_LIB_DIRS),linux/absent) \
+                                 $(if $(HAVE_TEXT),text,text/absent),\
                                  $(wildcard boards/$(d)/*.c)))
 LIB_SRC    := $(CORE_SRC) $(BOARD_SRC)
 LIB_OBJ    := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
@@ -126,7 +135,8 @@ TOOL_BINS  := $(TOOLS:%=$(BUILD)/bin/%)
 # test_display and test_pointer exercise boards/linux's backends, which need
 # the board libraries.
 TEST_DIRS  := tests/core tests/boards tests/tools
-TEST_SRC   := $(sort $(filter-out $(if $(HAVE_OPT),,tests/boards/test_display.c tests/boards/test_pointer.c),\
+TEST_SRC   := $(sort $(filter-out $(if $(HAVE_OPT),,tests/boards/test_display.c tests/boards/test_pointer.c) \
+                  $(if $(HAVE_TEXT),,tests/boards/test_face.c),\
                 $(foreach d,$(TEST_DIRS),$(wildcard $(d)/test_*.c))))
 TEST_LIB_SRC := $(sort $(wildcard tests/lib/*.c))
 # 32-bit targets have no __int128: test files whose reference arithmetic
@@ -359,7 +369,8 @@ endif
 # runs `make run`; TEST_DEB_PKGS (added to by the tests/*/*.mk fragments) is
 # what `make test` needs on top; BENCH_DEB_PKGS the peers of `make bench-peers`.
 # PACKAGE:ARCH entries are multiarch libraries of the cross tests.
-DEB_PKGS := gcc libc6-dev make pkg-config libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev
+DEB_PKGS := gcc libc6-dev make pkg-config libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev \
+            libfreetype-dev libharfbuzz-dev libfribidi-dev libfontconfig-dev libunibreak-dev
 # `make deps`: every set; `make deps-check`: the same, named "make deps".
 deps deps-check:
 	@sh tests/deps.sh --for "make deps" $(sort $(DEB_PKGS) $(TEST_DEB_PKGS) $(BENCH_DEB_PKGS))

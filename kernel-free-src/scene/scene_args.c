@@ -78,7 +78,8 @@ A(circle, XY("CX"), XY("CY"), LEN("R"));
 A(arc, XY("CX"), XY("CY"), LEN("R"), DEG("START"), DEG("END"));
 A(ellipse, XY("CX"), XY("CY"), LEN("RX"), LEN("RY"));
 /* ---- text ---- */
-A(font, FORM("builtin"), FORM(0), S("PATH"));
+A(font, FORM("builtin"), FORM(0), S("PATH|FAMILY"), OPT, I("SIZE", 1, 1024), W("regular|thin|light|medium|semibold|bold|black|100..1000"), W("tnum|-liga|kern=0|...")); /* features: any number of words */
+A(textbox, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), S("STRING"));
 A(text, XY("X"), XY("Y"), S("STRING"));
 A(textclip, W("pixel|char|string"));
 A(textscale, I("N", 1, 256));
@@ -323,7 +324,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"curvetol", a_curvetol, 0, 0},
     {"circle", a_circle, 0, 0}, {"disc", a_circle, 0, 0}, {"arc", a_arc, 0, 0}, {"pie", a_arc, 0, 0},
     {"aacircle", a_circle, 0, 0}, {"ellipse", a_ellipse, 0, 0}, {"fillellipse", a_ellipse, 0, 0},
-    {"font", a_font, 0, 0}, {"text", a_text, 0, 0}, {"textclip", a_textclip, 0, 0}, {"textscale", a_textscale, 0, 0},
+    {"font", a_font, 0, 0}, {"text", a_text, 0, 0}, {"textbox", a_textbox, 0, 0}, {"textclip", a_textclip, 0, 0}, {"textscale", a_textscale, 0, 0},
     {"textbg", a_textbg, 0, 0},
     {"clip", a_clip, 0, 0}, {"cliplines", a_cliplines, 0, 0}, {"exterior", a_exterior, 0, 0},
     {"clippoly", a_clippoly, 0, 0}, {"xpoly", a_xpoly, 0, 0}, {"push", a_none, 0, 0}, {"pop", a_none, "push", 0},

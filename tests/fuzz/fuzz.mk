@@ -45,6 +45,13 @@ TEST_SUITES += "sh tests/fuzz/run-short.sh $(FUZZ_RUNS)"
 .PHONY: fuzz fuzz-build
 FUZZ_EXTRA_fuzz_gkiosk := tools/fixel-kiosk/kiosk_parse.c
 FUZZ_EXTRA_fuzz_png := boards/memory/memfb.c -lpng -lz
+# fuzz_face: hostile fonts and any text through boards/text/face.c and the
+# system's FreeType, HarfBuzz, FriBiDi, fontconfig and libunibreak (only
+# when the build has them: HAVE_TEXT in the top Makefile).
+FUZZ_EXTRA_fuzz_face := boards/text/face.c $(shell $(PKG_CONFIG) --cflags --libs $(TEXT_PKGS) 2>/dev/null) -lpthread
+ifneq ($(HAVE_TEXT),1)
+  FUZZ_TARGETS := $(filter-out fuzz_face,$(FUZZ_TARGETS))
+endif
 
 # The long campaign (docs/RELIABILITY.md records its results): one core,
 # nice 15, each target for its share of FUZZ_CAMPAIGN (TARGET:SECONDS ...).

@@ -13,9 +13,13 @@
 #include <sys/stat.h>
 
 #include "fixel/error.h"
+#include "fixel/face.h"
 #include "fixel/memfb.h"
 #include "fixel/scene.h"
 #include "fixel/par.h"
+
+/* Smooth fonts ('font FAMILY SIZE'), shared by every script and band. */
+static fx_face_scene *g_faces;
 
 typedef struct host {
     fx_memfb fb;
@@ -133,6 +137,7 @@ static int check_bands(const char *text, size_t len, fx_format f, const fx_surfa
         fx_scene_host hs = {&B, make_surface, load_file, NULL, NULL, load_image};
         static fx_scene sc;
         fx_scene_init(&sc, &hs, arena, arena_size);
+        sc.text_host = fx_face_scene_host(g_faces);
         fx_scene_fix_format(&sc, f);
         fx_rect band = {0, (int32_t)((int64_t)want->h * k / n), want->w, (int32_t)((int64_t)want->h * (k + 1) / n)};
         fx_scene_set_band(&sc, band);
@@ -289,6 +294,7 @@ int main(int argc, char **argv)
         printf("golden: 0 passed, 1 failed\n");
         return 1;
     }
+    g_faces = fx_face_scene_new();
     char *names[4096];
     int n = 0;
     struct dirent *e;
@@ -316,6 +322,7 @@ int main(int argc, char **argv)
             fx_scene_host hs = {&H, make_surface, load_file, NULL, NULL, load_image};
             static fx_scene sc;
             fx_scene_init(&sc, &hs, arena, arena_size);
+            sc.text_host = fx_face_scene_host(g_faces);
             fx_scene_fix_format(&sc, (fx_format)f);
             uint8_t *ppm = NULL;
             int32_t pw = 0, ph = 0;
@@ -440,6 +447,8 @@ int main(int argc, char **argv)
         free(names[i]);
     }
     free(arena);
+    fx_face_scene_free(g_faces);
+    fx_face_shutdown();
     if (threads || band_check)
         printf("golden: %d of %d renders drawn in bands (%s %d)\n", banded, renders,
                threads ? "threads" : "band-check", threads ? threads : band_check);

@@ -18,6 +18,7 @@
 #include "fixel/env.h"
 #include "fixel/error.h"
 #include "fixel/files.h"
+#include "fixel/face.h"
 #include "fixel/memfb.h"
 #include "fixel/par.h"
 #include "fixel/rt_mt.h"
@@ -435,6 +436,9 @@ static void free_files(host *H)
     }
 }
 
+/* Smooth fonts for the scripts (fixel/face.h), shared by every frame. */
+static fx_face_scene *g_faces;
+
 static int run_lines(fx_scene *sc, const char *text, size_t len, const host *H, int display)
 {
     int tty = isatty(2), lines = 0, lineno = 1, shown = 0;
@@ -696,11 +700,13 @@ int main(int argc, char **argv)
     }
     static fx_scene sc;
     int status = 0;
+    g_faces = fx_face_scene_new();
     /* --frames: the whole script once per frame, from a fresh scene, with
      * the clock at k / fps; each picture to its own file */
     for (int k = 0; k < frames && !status; k++) {
         fx_scene_init(&sc, &hs, arena, arena_size);
         sc.raytrace = host_raytrace;
+        sc.text_host = fx_face_scene_host(g_faces);
         if (w)
             fx_scene_fix_size(&sc, w, h);
         if (fmt != FX_FMT_COUNT)
@@ -731,6 +737,7 @@ int main(int argc, char **argv)
         goto done;
     fx_scene_init(&sc, &hs, arena, arena_size);
     sc.raytrace = host_raytrace;
+    sc.text_host = fx_face_scene_host(g_faces);
     if (w)
         fx_scene_fix_size(&sc, w, h);
     if (fmt != FX_FMT_COUNT)
@@ -782,6 +789,8 @@ done:
     if (H.have_fb)
         fx_memfb_destroy(&H.fb);
     free_files(&H);
+    fx_face_scene_free(g_faces);
+    fx_face_shutdown();
     free(arena);
     free(text);
     return status;

@@ -44,6 +44,25 @@ alike: clockwise on the screen by default, counter\-clockwise after
 3D, ray\-tracing and visible\-surface commands have y\-up cameras of their
 own and draw the same picture in both.
 .PP
+Text: PSF console fonts and the built\-in 6x10 font draw whole pixels
+.RB ( "font builtin" ", " "font PATH" ).
+.B font FAMILY|FILE SIZE
+instead loads a TrueType/OpenType font (by file, or by fontconfig family such as
+.B \(dqDejaVu Sans\(dq
+with a fallback chain for code points it lacks) at SIZE pixels,
+optionally a weight
+.RB ( bold ", " 700 )
+and OpenType features
+.RB ( tnum ", " \-liga );
+.B text
+and
+.B textbox
+then draw anti\-aliased, shaped (HarfBuzz) and bidi\-ordered (FriBiDi) text,
+.B textbox
+wrapping it at Unicode line\-break opportunities.
+This needs fixel built with FreeType, HarfBuzz, FriBiDi, fontconfig and
+libunibreak; without them the command says so.
+.PP
 The first error stops the script with a message naming its line.
 .PP
 .B size

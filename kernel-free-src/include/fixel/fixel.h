@@ -85,6 +85,7 @@
 #include "fixel/julia.h"
 #include "fixel/koch.h"
 #include "fixel/line.h"
+#include "fixel/mask.h"
 #include "fixel/mat3d.h"
 #include "fixel/mesh.h"
 #include "fixel/objects.h"

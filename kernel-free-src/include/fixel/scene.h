@@ -54,6 +54,30 @@ typedef struct fx_scene_host {
 typedef int (*fx_scene_raytrace_fn)(void *user, const struct fx_rt_scene *s, const fx_surface *surf, int32_t x,
                                     int32_t y, int32_t w, int32_t h);
 
+/* Smooth text from real fonts (fixel/face.h) lives on the boards side, so
+ * the host lends it to the scene ('font FAMILY|FILE SIZE ...', and 'text' /
+ * 'textbox' while such a font is current). Set sc->text_host after
+ * fx_scene_init; NULL: those forms fail with "smooth fonts are not
+ * available". Banded scenes (fx_scene_run_mt) call it from several
+ * threads at once: the host serialises what needs it. */
+typedef struct fx_scene_text_host {
+    void *user;
+    /* Open (or find) the font: name a file or fontconfig family, px its size,
+     * weight 0 (regular) or 1..1000, features HarfBuzz feature strings
+     * separated by commas or spaces ("" for none). *face is the host's
+     * handle, valid until the scene ends. 0, or a negative error with a
+     * message in err. */
+    int (*open)(void *user, const char *name, int32_t px, int32_t weight, const char *features, void **face,
+                char *err, size_t errsz);
+    /* Draw s[0, len) (UTF-8) through c: w <= 0 draws one unwrapped line per
+     * '\n' paragraph from the top-left corner (x, y) (the first baseline at
+     * y + the font's ascent); w > 0 wraps it into the box (x, y, w, h),
+     * aligned 0 left, 1 centre, 2 right, ending in an ellipsis when cut
+     * and ellipsis is set. 0, or a negative error with a message in err. */
+    int (*draw)(void *user, void *face, const fx_ctx *c, int32_t x, int32_t y, int32_t w, int32_t h, int align,
+                int ellipsis, const char *s, size_t len, char *err, size_t errsz);
+} fx_scene_text_host;
+
 /* Per-module state lives in the arena, found through these slots. */
 enum {
     FX_SCENE_MOD_RASTER,
@@ -99,6 +123,8 @@ struct fx_scene {
      * through is intersected with band; set by a parallel player */
     int banded;
     fx_rect band;
+    /* smooth text, the host's (fx_scene_text_host); NULL: not available */
+    const fx_scene_text_host *text_host;
 };
 
 typedef struct fx_scene_cmd {
