@@ -729,7 +729,7 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
     {"insidecolor", cmd_insidecolor, "insidecolor #RRGGBB", 0},
     {"mandelbrot", cmd_mandelbrot, "mandelbrot CRE CIM WIDTH MAXITER", FX_SCENE_DRAWS},
     {"julia", cmd_julia, "julia CRE CIM CX CY WIDTH MAXITER", FX_SCENE_DRAWS},
-    {"koch", cmd_koch, "koch X0 Y0 X1 Y1 ORDER", FX_SCENE_DRAWS},
+    {"koch", cmd_koch, "koch X0 Y0 X1 Y1 ORDER   (bumps towards +y, turning as 'rotate' does: above the base line after 'coords course')", FX_SCENE_DRAWS},
     {"snowflake", cmd_snowflake, "snowflake CX CY R ORDER", FX_SCENE_DRAWS},
     {"fractline", cmd_fractline, "fractline X0 Y0 X1 Y1 BETA SD SEED", FX_SCENE_DRAWS},
     {"coastline", cmd_coastline, "coastline BETA SD SEED X0 Y0 X1 Y1 X2 Y2 ...", FX_SCENE_DRAWS},
@@ -748,7 +748,8 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
     {"boxdim", cmd_boxdim, "boxdim X Y W H BG SMIN SMAX [KNOWN]", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {"turtle", cmd_turtle,
      "turtle home X Y DEG | moveto X Y | lineto X Y | moverel DX DY | linerel DX DY | turn DEG | turnto DEG | "
-     "forward D | jump D | koch LEN ORDER | hilbert STEP ORDER [PARITY] | where",
+     "forward D | jump D | koch LEN ORDER | hilbert STEP ORDER [PARITY] | where   "
+     "(DEG from +x towards +y, as 'rotate': counter-clockwise after 'coords course')",
      0},
     {"grass", cmd_grass, "grass X Y W H NBLADES SEED", FX_SCENE_DRAWS},
     {"fire", cmd_fire, "fire X Y W H ROUGH SEED", FX_SCENE_DRAWS},

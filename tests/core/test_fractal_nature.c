@@ -55,10 +55,10 @@ FX_TEST(turtle_moves_and_lines)
     FX_CHECK_EQ(lit(&k), 11); /* moves draw nothing */
     fx_turtle_turn(&t, 90 << 16);
     FX_CHECK_EQ(fx_turtle_heading(&t), 90 << 16);
-    fx_turtle_forward(&t, 10 << 16, 1); /* heading 90: up the screen */
+    fx_turtle_forward(&t, 5 << 16, 1); /* heading 90: towards +y, down the screen (issue #44) */
     fx_turtle_pos(&t, &x, &y);
-    FX_CHECK(abs(x - (20 << 16)) <= 2 && abs(y - (10 << 16)) <= 2);
-    FX_CHECK(k.px[10 * 40 + 20] && k.px[20 * 40 + 20] && k.px[15 * 40 + 20]);
+    FX_CHECK(abs(x - (20 << 16)) <= 2 && abs(y - (25 << 16)) <= 2);
+    FX_CHECK(k.px[25 * 40 + 20] && k.px[20 * 40 + 20] && k.px[22 * 40 + 20] && !k.px[15 * 40 + 20]);
     FX_CHECK_EQ(t.segs, 2);
     fx_turtle_forward(&t, 5 << 16, 0);
     FX_CHECK_EQ(t.segs, 2);
@@ -74,32 +74,34 @@ FX_TEST(turtle_koch_and_hilbert)
     canvas_new(&k, 760, 300);
     fx_turtle t;
     for (uint32_t n = 0; n <= 6; n++) {
-        fx_turtle_init(&t, &k.c, 15 << 16, 280 << 16, 0);
+        fx_turtle_init(&t, &k.c, 15 << 16, 20 << 16, 0);
         FX_CHECK_EQ(fx_turtle_koch(&t, 729 << 16, n), 1ull << (2 * n));
         /* the turtle ends one length along its heading, heading unchanged */
-        FX_CHECK_MSG(abs(t.x - (744 << 16)) < 256 && abs(t.y - (280 << 16)) < 256, "order %u ends at %d,%d", n,
+        FX_CHECK_MSG(abs(t.x - (744 << 16)) < 256 && abs(t.y - (20 << 16)) < 256, "order %u ends at %d,%d", n,
                      t.x, t.y);
         FX_CHECK_EQ(fx_turtle_heading(&t), 0);
     }
-    /* the order-1 peak stands 729 sqrt(3)/6 = 210.4 px above the base */
+    /* the order-1 peak stands 729 sqrt(3)/6 = 210.4 px from the base, towards
+     * +y: below it on the y-down screen (issue #44; above it in course mode) */
     memset(k.px, 0, 760 * 300);
-    fx_turtle_init(&t, &k.c, 15 << 16, 280 << 16, 0);
+    fx_turtle_init(&t, &k.c, 15 << 16, 20 << 16, 0);
     fx_turtle_koch(&t, 729 << 16, 1);
-    FX_CHECK(k.px[(280 - 210) * 760 + 15 + 364] != 0);
-    for (int y = 0; y < 280 - 211; y++)
+    FX_CHECK(k.px[(20 + 210) * 760 + 15 + 364] != 0);
+    for (int y = 20 + 211; y < 300; y++)
         for (int x = 0; x < 760; x++)
             FX_CHECK(k.px[y * 760 + x] == 0);
     FX_CHECK_EQ(fx_turtle_koch(&t, 1 << 16, FX_TURTLE_MAX_ORDER + 1), 0);
     free(k.px);
 
-    /* Hilbert order 4, step 4: 255 segments through all 16 x 16 cell centres */
+    /* Hilbert order 4, step 4: 255 segments through all 16 x 16 cell
+     * centres; parity +1 turns towards +y first, down the screen */
     canvas_new(&k, 70, 70);
-    fx_turtle_init(&t, &k.c, 2 << 16, 66 << 16, 0);
+    fx_turtle_init(&t, &k.c, 2 << 16, 4 << 16, 0);
     FX_CHECK_EQ(fx_turtle_hilbert(&t, 4 << 16, 4, 1), 255);
     for (int j = 0; j < 16; j++)
         for (int i = 0; i < 16; i++)
-            FX_CHECK_MSG(k.px[(66 - 4 * j) * 70 + 2 + 4 * i], "cell %d,%d", i, j);
-    FX_CHECK(abs(t.x - (62 << 16)) < 64 && abs(t.y - (66 << 16)) < 64); /* ends at the other bottom corner */
+            FX_CHECK_MSG(k.px[(4 + 4 * j) * 70 + 2 + 4 * i], "cell %d,%d", i, j);
+    FX_CHECK(abs(t.x - (62 << 16)) < 64 && abs(t.y - (4 << 16)) < 64); /* ends at the other top corner */
     free(k.px);
 }
 
@@ -605,7 +607,7 @@ FX_TEST(scene_boxdim_and_turtle_report)
     traced t;
     fx_scene sc;
     FX_CHECK_EQ(run_traced(&t,
-                           "size 760 300\nclear #000000\ncolor #FFFFFF\nkoch 15 280 744 280 6\n"
+                           "size 760 300\nclear #000000\ncolor #FFFFFF\nkoch 15 20 744 20 6\n"
                            "boxdim 0 0 760 300 #000000 2 64 1.2619\n",
                            &sc),
                 0);
@@ -628,7 +630,7 @@ FX_TEST(scene_boxdim_and_turtle_report)
                            "turtle forward 10\nturtle linerel -5 0\nturtle where\n",
                            &sc),
                 0);
-    FX_CHECK_MSG(strstr(t.log, "turtle: CP (25.0000, 40.0000) heading 90.0000, 3 segments") != NULL, "%s", t.log);
+    FX_CHECK_MSG(strstr(t.log, "turtle: CP (25.0000, 60.0000) heading 90.0000, 3 segments") != NULL, "%s", t.log);
     FX_CHECK_EQ(run_traced(&t, "turtle koch 10 11\n", &sc), -FX_EINVAL);
     FX_CHECK_MSG(strstr(sc.err, "0..10") != NULL, "%s", sc.err);
 
