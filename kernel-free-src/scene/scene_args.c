@@ -129,7 +129,10 @@ A(pattern, FORM("off"), FORM("bg"), C("COLOR|none"), FORM("anchor"), XY("X"), XY
 A(colormap, W("grey|hot|viridis|hsv|w9"), OPT, I("PERIOD", 1, 1048576));
 A(mandelbrot, Q("CRE", -16, 16), Q("CIM", -16, 16), {FX_ARG_FX56, FX_ARG_OPEN_MIN, "WIDTH", 0, 16 * FX56_ONE},
   IW("MAXITER", 1, FX_FRACTAL_MAX_ITER));
-A(julia, Q("CRE", -16, 16), Q("CIM", -16, 16), Q("CX", -16, 16), Q("CY", -16, 16),
+/* the Julia commands: the view's centre, then c (issue #44: the names say
+ * which is which); the c=C_RE,C_IM form the commands also take (c first)
+ * is checked by them, since its first token is no number */
+A(julia, Q("CENTRE_RE", -16, 16), Q("CENTRE_IM", -16, 16), Q("C_RE", -16, 16), Q("C_IM", -16, 16),
   {FX_ARG_FX56, FX_ARG_OPEN_MIN, "WIDTH", 0, 16 * FX56_ONE}, IW("MAXITER", 1, FX_FRACTAL_MAX_ITER));
 A(koch, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), IW("ORDER", 0, 1000));
 A(snowflake, XY("CX"), XY("CY"), I("R", 0, CO), IW("ORDER", 0, 1000));
@@ -147,7 +150,7 @@ A(ifs, W("sierpinski|fern|user"), FORM("chaos"), XY("X"), XY("Y"), I("W", 1, CO)
 A(fern, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("NPOINTS", 0, 4000000),
   I("SEED", INT32_MIN, INT32_MAX));
 #define QW {FX_ARG_FX56, FX_ARG_OPEN_MIN, "WIDTH", 0, 16 * FX56_ONE}
-#define JV Q("CRE", -16, 16), Q("CIM", -16, 16), Q("CX", -2, 2), Q("CY", -2, 2), QW
+#define JV Q("CENTRE_RE", -16, 16), Q("CENTRE_IM", -16, 16), Q("C_RE", -2, 2), Q("C_IM", -2, 2), QW
 A(juliaset, FORM("random"), JV, IW("NPOINTS", 0, FX_JULIA_SCENE_POINTS), I("SEED", INT32_MIN, INT32_MAX),
   FORM("tree"), JV, IW("DEPTH", 0, FX_JULIA_SCENE_DEPTH));
 A(juliafixed, JV);

@@ -103,17 +103,66 @@ static void dwell_pal(fx_scene *sc, fx_dwell_pal *pal, uint32_t lut[256], uint32
     pal->inside = fx_pack(s->format, st->inside);
 }
 
+/* One part of c=RE,IM within +-lim. */
+static int c_part(fx_scene *sc, const char *t, int l, const char *name, int lim, fx56 *v)
+{
+    int n = fx56_parse(t, l, v);
+    if (n == -FX_ERANGE || (n == l && (*v < -(fx56)lim * FX56_ONE || *v > (fx56)lim * FX56_ONE)))
+        return fx_scene_error(sc, "c=RE,IM: %s %.*s out of range, expected -%d..%d", name, l > 40 ? 40 : l, t, lim,
+                              lim);
+    if (n != l || l == 0)
+        return fx_scene_error(sc, "c=RE,IM: %s: expected a decimal number, got '%.*s'", name, l > 40 ? 40 : l, t);
+    return 0;
+}
+
+/* The Julia commands' arguments (issue #44): CENTRE_RE CENTRE_IM C_RE C_IM
+ * WIDTH, the view centre first as in 'mandelbrot'; or c first, in the form
+ * c=C_RE,C_IM CENTRE_RE CENTRE_IM WIDTH, which cannot be taken for a centre
+ * (typing c in the centre's place used to draw c = 0's set without a word).
+ * a[] = the centre, c, the width; lim bounds the parts of c. */
+static int julia_args(fx_scene *sc, fx56 a[5], int lim)
+{
+    char w[96];
+    int save = sc->pos, have_c = 0;
+    if (fx_scene_more(sc) && fx_scene_arg_word(sc, w, sizeof w) == 0 && w[0] == 'c' && w[1] == '=') {
+        int n = 0, comma = -1;
+        while (w[n]) {
+            if (w[n] == ',' && comma < 0)
+                comma = n;
+            n++;
+        }
+        if (comma < 0)
+            return fx_scene_error(sc, "expected c=RE,IM (c's real and imaginary parts), got '%s'", w);
+        TRY(c_part(sc, w + 2, comma - 2, "RE", lim, &a[2]));
+        TRY(c_part(sc, w + comma + 1, n - comma - 1, "IM", lim, &a[3]));
+        have_c = 1;
+        TRY(fx_scene_arg_fx56(sc, &a[0]));
+    } else {
+        sc->err[0] = 0; /* a bare word read as one is not an error here */
+        sc->pos = save;
+        TRY(fx_scene_arg_fx56(sc, &a[0]));
+    }
+    TRY(fx_scene_arg_fx56(sc, &a[1]));
+    if (!have_c) {
+        TRY(fx_scene_arg_fx56(sc, &a[2]));
+        TRY(fx_scene_arg_fx56(sc, &a[3]));
+    }
+    return fx_scene_arg_fx56(sc, &a[4]);
+}
+
 static int escape_time(fx_scene *sc, int julia)
 {
     fx56 cre, cim, jre = 0, jim = 0, width;
     int32_t maxiter;
-    TRY(fx_scene_arg_fx56(sc, &cre));
-    TRY(fx_scene_arg_fx56(sc, &cim));
     if (julia) {
-        TRY(fx_scene_arg_fx56(sc, &jre));
-        TRY(fx_scene_arg_fx56(sc, &jim));
+        fx56 a[5];
+        TRY(julia_args(sc, a, 16));
+        cre = a[0], cim = a[1], jre = a[2], jim = a[3], width = a[4];
+    } else {
+        TRY(fx_scene_arg_fx56(sc, &cre));
+        TRY(fx_scene_arg_fx56(sc, &cim));
+        TRY(fx_scene_arg_fx56(sc, &width));
     }
-    TRY(fx_scene_arg_fx56(sc, &width));
     TRY(fx_scene_arg_int(sc, &maxiter));
     TRY(fx_scene_end(sc));
     if (maxiter < 1 || (uint32_t)maxiter > FX_FRACTAL_MAX_ITER)
@@ -337,12 +386,12 @@ static const char *dec4(char *buf, size_t n, int64_t v16)
     return buf;
 }
 
-/* CRE CIM CX CY WIDTH: a Julia view of the whole surface (|c| parts <= 2) */
+/* CENTRE_RE CENTRE_IM C_RE C_IM WIDTH or c=C_RE,C_IM CENTRE_RE CENTRE_IM
+ * WIDTH: a Julia view of the whole surface (|c| parts <= 2) */
 static int julia_view_args(fx_scene *sc, fx_fractal_view *v, uint32_t maxiter)
 {
     fx56 a[5];
-    for (int i = 0; i < 5; i++)
-        TRY(fx_scene_arg_fx56(sc, &a[i]));
+    TRY(julia_args(sc, a, 2));
     const fx_surface *s = &sc->ctx.surf;
     *v = fx_julia_view(a[0], a[1], a[2], a[3], a[4], s->w, s->h, maxiter);
     return 0;
@@ -728,7 +777,8 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
     {"colormap", cmd_colormap, "colormap grey|hot|viridis|hsv|w9 [PERIOD]", 0},
     {"insidecolor", cmd_insidecolor, "insidecolor #RRGGBB", 0},
     {"mandelbrot", cmd_mandelbrot, "mandelbrot CRE CIM WIDTH MAXITER", FX_SCENE_DRAWS},
-    {"julia", cmd_julia, "julia CRE CIM CX CY WIDTH MAXITER", FX_SCENE_DRAWS},
+    {"julia", cmd_julia, "julia CENTRE_RE CENTRE_IM C_RE C_IM WIDTH MAXITER | julia c=C_RE,C_IM CENTRE_RE CENTRE_IM WIDTH MAXITER   "
+     "(the view's centre, then c; or c first, named)", FX_SCENE_DRAWS},
     {"koch", cmd_koch, "koch X0 Y0 X1 Y1 ORDER   (bumps towards +y, turning as 'rotate' does: above the base line after 'coords course')", FX_SCENE_DRAWS},
     {"snowflake", cmd_snowflake, "snowflake CX CY R ORDER", FX_SCENE_DRAWS},
     {"fractline", cmd_fractline, "fractline X0 Y0 X1 Y1 BETA SD SEED", FX_SCENE_DRAWS},
@@ -740,10 +790,11 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
     {"ifs", cmd_ifs, "ifs sierpinski|fern|user chaos X Y W H NPOINTS SEED | ... copier X Y W H DEPTH",
      FX_SCENE_DRAWS},
     {"fern", cmd_fern, "fern X Y W H NPOINTS SEED", FX_SCENE_DRAWS},
-    {"juliaset", cmd_juliaset, "juliaset random CRE CIM CX CY WIDTH NPOINTS SEED | juliaset tree CRE CIM CX CY WIDTH DEPTH",
+    {"juliaset", cmd_juliaset, "juliaset random CENTRE_RE CENTRE_IM C_RE C_IM WIDTH NPOINTS SEED | juliaset tree CENTRE_RE CENTRE_IM C_RE C_IM WIDTH DEPTH   "
+     "(or c=C_RE,C_IM CENTRE_RE CENTRE_IM WIDTH in place of the five)",
      FX_SCENE_DRAWS},
-    {"juliafixed", cmd_juliafixed, "juliafixed CRE CIM CX CY WIDTH", FX_SCENE_DRAWS},
-    {"juliabasins", cmd_juliabasins, "juliabasins CRE CIM CX CY WIDTH MAXITER", FX_SCENE_DRAWS},
+    {"juliafixed", cmd_juliafixed, "juliafixed CENTRE_RE CENTRE_IM C_RE C_IM WIDTH | juliafixed c=C_RE,C_IM CENTRE_RE CENTRE_IM WIDTH", FX_SCENE_DRAWS},
+    {"juliabasins", cmd_juliabasins, "juliabasins CENTRE_RE CENTRE_IM C_RE C_IM WIDTH MAXITER | juliabasins c=C_RE,C_IM CENTRE_RE CENTRE_IM WIDTH MAXITER", FX_SCENE_DRAWS},
     /* these read the picture drawn so far, which a band has only part of */
     {"boxdim", cmd_boxdim, "boxdim X Y W H BG SMIN SMAX [KNOWN]", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {"turtle", cmd_turtle,

@@ -653,3 +653,52 @@ FX_TEST(scene_boxdim_and_turtle_report)
     FX_CHECK_EQ(run_traced(&t, "size 64 64\nfractcompress 0 0 72 0 0 8\n", &sc), -FX_EINVAL);
     FX_CHECK_MSG(strstr(sc.err, "not inside") != NULL, "%s", sc.err);
 }
+
+/* Issue #44: c may come first as c=RE,IM, which cannot be taken for the
+ * view's centre; it draws and reports exactly what the positional form does
+ * with the same centre and c. */
+FX_TEST(julia_c_first_form)
+{
+    static const char *const pairs[][2] = {
+        {"julia 0 0 -0.123 0.745 3 40\n", "julia c=-0.123,0.745 0 0 3 40\n"},
+        {"juliaset random 0.1 0 -1 0 3 4000 7\n", "juliaset random c=-1,0 0.1 0 3 4000 7\n"},
+        {"juliaset tree 0 0 -0.123 0.745 3 9\n", "juliaset tree c=-0.123,0.745 0 0 3 9\n"},
+        {"juliafixed 0 0 -0.75 0.1 3\n", "juliafixed c=-0.75,0.1 0 0 3\n"},
+        {"juliabasins 0 0 -0.123 0.745 3 60\n", "juliabasins c=-0.123,0.745 0 0 3 60\n"},
+    };
+    static uint32_t first[120 * 80];
+    static char log0[8192];
+    for (unsigned i = 0; i < sizeof pairs / sizeof pairs[0]; i++) {
+        traced t;
+        fx_scene sc;
+        char s[200];
+        snprintf(s, sizeof s, "size 120 80\nclear #000000\ncolor #FFFFFF\n%s", pairs[i][0]);
+        FX_CHECK_EQ(run_traced(&t, s, &sc), 0);
+        memcpy(first, t.b.mem, sizeof first);
+        snprintf(log0, sizeof log0, "%s", t.log);
+        int lit = 0;
+        for (int k = 0; k < 120 * 80; k++)
+            lit += first[k] != 0xFF000000u && first[k] != 0;
+        snprintf(s, sizeof s, "size 120 80\nclear #000000\ncolor #FFFFFF\n%s", pairs[i][1]);
+        FX_CHECK_EQ(run_traced(&t, s, &sc), 0);
+        FX_CHECK_MSG(memcmp(first, t.b.mem, sizeof first) == 0 && lit > 20, "%s: differs (%d lit)", pairs[i][1], lit);
+        FX_CHECK_MSG(strcmp(log0, t.log) == 0, "%s\n%s", log0, t.log);
+    }
+    /* the worked numbers: c = -0.75 + 0.1i has fixed points z = 1/2 +- sqrt(1/4 - c) */
+    traced t;
+    fx_scene sc;
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njuliafixed c=-0.75,0 0 0 3\n", &sc), 0);
+    FX_CHECK_MSG(strstr(t.log, "z1 = 1.5000 0.0000 i, |2z| = 3.0000, repelling") != NULL, "%s", t.log);
+    FX_CHECK_MSG(strstr(t.log, "z2 = -0.5000 0.0000 i, |2z| = 1.0000, neutral") != NULL, "%s", t.log);
+    /* bad c= forms name the form and the part */
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njulia c=0.5 0 0 3 40\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "c=RE,IM") != NULL, "%s", sc.err);
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njuliafixed c=0,2.5 0 0 3\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "IM 2.5 out of range, expected -2..2") != NULL, "%s", sc.err);
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njuliabasins c=x,0 0 0 3 10\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "RE: expected a decimal number, got 'x'") != NULL, "%s", sc.err);
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njulia c=0,0 0 0 3\n", &sc), -FX_EINVAL); /* MAXITER missing */
+    /* the positional form's names say which pair is c */
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njulia 0 0 -20 0 3 40\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "C_RE -20 out of range") != NULL, "%s", sc.err);
+}
