@@ -242,7 +242,7 @@ A(attenuation, I("LIGHT", 0, FX3D_MAX_LIGHTS - 1), F("KC", 0, 1024), F("KL", 0, 
 A(texture3d, W("modulate|replace|decal|off"));
 A(shadowmap, FORM("end"), FORM("off"), FORM("begin"), IW("SIZE", 16, 4096), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1),
   P3("TX"), P3("TY"), P3("TZ"), F("FOV", -32768, 32767), P3("NEAR"), P3("FAR"));
-A(pass3d, FORM("off"), FORM("ambient"), FORM("light"), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1));
+A(pass3d, FORM("off"), FORM("ambient"), OPT, F("DIM", 0, 1), FORM("light"), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1));
 
 /* ---- objects (scene_objects.c): sizes within the 3D bound, exponents in Barr's range ---- */
 #define SEG(n, lo) IW(n, lo, FX_MESH_MAX_SEG)
