@@ -14,6 +14,7 @@
  * +-1024 units, fractal views within the Q8.56 limits the iteration needs. */
 #include "fixel/scene.h"
 #include "fixel/fixed.h"
+#include "fixel/fill.h"
 #include "fixel/fractal.h"
 #include "fixel/ifs.h"
 #include "fixel/line.h"
@@ -122,6 +123,9 @@ A(polygon, REP("vertex", 2, 1024), XY("X"), XY("Y"));
 A(filltri, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), XY("X2"), XY("Y2"));
 A(gouraudtri, XY("X0"), XY("Y0"), C("C0"), XY("X1"), XY("Y1"), C("C1"), XY("X2"), XY("Y2"), C("C2"));
 A(gouraudpoly, REP("vertex", 3, 1024), XY("X"), XY("Y"), C("C"));
+/* issue #44: the notes' scan-line Gouraud */
+A(gouraudscan, REP("vertex", 3, FX_GOURAUD_SCAN_MAX), I("X", -FX_GOURAUD_SCAN_COORD, FX_GOURAUD_SCAN_COORD),
+  I("Y", -FX_GOURAUD_SCAN_COORD, FX_GOURAUD_SCAN_COORD), C("C"));
 A(blend, W("src|over"));
 A(pattern, FORM("off"), FORM("bg"), C("COLOR|none"), FORM("anchor"), XY("X"), XY("Y"), FORM(0), I("W", 1, 32),
   I("H", 1, 32), REP("row", 1, 32), W("HEXROW"));
@@ -396,6 +400,8 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"ease", a_ease, 0, 0}, {"tween", a_tween, KEYS2, 0}, {"path", a_path, KEYS2, 0}, {"shape", a_shape, 0, 0},
     {"morph", a_morph, "shape a 0 0 10 0 0 10\nshape b 0 0 10 0 10 10 0 10", 0}, {"bounce", a_bounce, 0, BALLW},
     {"blur", a_blur, 0, BLURW}, {"endblur", a_none, "blur 2 0.1", BLURW},
+    /* issue #44 (the course's remaining methods) */
+    {"gouraudscan", a_gouraudscan, 0, 0},
     {0, 0, 0, 0},
 };
 
