@@ -123,6 +123,9 @@ A(polygon, REP("vertex", 2, 1024), XY("X"), XY("Y"));
 A(filltri, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), XY("X2"), XY("Y2"));
 A(gouraudtri, XY("X0"), XY("Y0"), C("C0"), XY("X1"), XY("Y1"), C("C1"), XY("X2"), XY("Y2"), C("C2"));
 A(gouraudpoly, REP("vertex", 3, 1024), XY("X"), XY("Y"), C("C"));
+/* issue #44: the orbit of 0 */
+A(orbit, Q("C_RE", -16, 16), Q("C_IM", -16, 16), IW("N", 1, 1024), OPT, Q("CENTRE_RE", -16, 16),
+  Q("CENTRE_IM", -16, 16), {FX_ARG_FX56, FX_ARG_OPEN_MIN, "WIDTH", 0, 16 * FX56_ONE});
 /* issue #44: the notes' scan-line Gouraud */
 A(gouraudscan, REP("vertex", 3, FX_GOURAUD_SCAN_MAX), I("X", -FX_GOURAUD_SCAN_COORD, FX_GOURAUD_SCAN_COORD),
   I("Y", -FX_GOURAUD_SCAN_COORD, FX_GOURAUD_SCAN_COORD), C("C"));
@@ -401,7 +404,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"morph", a_morph, "shape a 0 0 10 0 0 10\nshape b 0 0 10 0 10 10 0 10", 0}, {"bounce", a_bounce, 0, BALLW},
     {"blur", a_blur, 0, BLURW}, {"endblur", a_none, "blur 2 0.1", BLURW},
     /* issue #44 (the course's remaining methods) */
-    {"gouraudscan", a_gouraudscan, 0, 0},
+    {"gouraudscan", a_gouraudscan, 0, 0}, {"orbit", a_orbit, 0, 0},
     {0, 0, 0, 0},
 };
 

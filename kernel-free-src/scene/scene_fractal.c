@@ -12,6 +12,7 @@
 #include "fixel/circle.h"
 #include "fixel/collage.h"
 #include "fixel/julia.h"
+#include "fixel/line.h"
 #include "fixel/randfract.h"
 #include "fixel/turtle.h"
 #include "scene_mesh.h"
@@ -628,6 +629,70 @@ static void *scratch(fx_scene *sc, size_t need)
     return st->buf;
 }
 
+/* ---- issue #44: the orbit of 0 ---- */
+
+#define ORBIT_CMD_MAX 1024
+
+static const char *const orbit_kind[] = {"explodes", "fixed point", "spiral into a fixed point", "cycle",
+                                         "bounded, no cycle found"};
+
+/* orbit C_RE C_IM N [CENTRE_RE CENTRE_IM WIDTH]: prints the first values
+ * and the classification, and draws the orbit in the current colour over a
+ * Mandelbrot view of the surface (centre -0.5 0, width 4 by default). */
+static int cmd_orbit(fx_scene *sc)
+{
+    fx56 cre, cim, vre = -FX56_ONE / 2, vim = 0, width = 4 * FX56_ONE;
+    int32_t n;
+    TRY(fx_scene_arg_fx56(sc, &cre));
+    TRY(fx_scene_arg_fx56(sc, &cim));
+    TRY(fx_scene_arg_int(sc, &n));
+    if (fx_scene_more(sc)) {
+        TRY(fx_scene_arg_fx56(sc, &vre));
+        TRY(fx_scene_arg_fx56(sc, &vim));
+        TRY(fx_scene_arg_fx56(sc, &width));
+    }
+    TRY(fx_scene_end(sc));
+    if (n < 1 || n > ORBIT_CMD_MAX)
+        return fx_scene_error(sc, "N %d out of range (1..%d)", n, ORBIT_CMD_MAX);
+    fx56 *z = scratch(sc, 2 * ORBIT_CMD_MAX * sizeof(fx56));
+    if (!z)
+        return fx_scene_error(sc, "out of scene memory for the orbit");
+    fx_orbit0_info info;
+    if (fx_orbit0(cre, cim, (uint32_t)n, z, z + ORBIT_CMD_MAX, &info) < 0)
+        return fx_scene_error(sc, "c out of range (|C_RE|, |C_IM| <= 16)");
+    const fx_surface *s = &sc->ctx.surf;
+    fx_fractal_view v = fx_mandel_view(vre, vim, width, s->w, s->h, 1);
+    if (fx_fractal_check(&v) < 0)
+        return fx_scene_error(sc, "view out of range (|centre| <= 16, 0 < width <= 16)");
+    char a[24], b[24];
+    uint32_t last = info.steps;
+    for (uint32_t k = 0; k <= last && k < 12; k++)
+        fx_trace(&sc->ctx, "orbit: z%u = %s %s i", k, dec4(a, sizeof a, z[k] >> 40),
+                 dec4(b, sizeof b, z[ORBIT_CMD_MAX + k] >> 40));
+    if (info.kind == FX_ORBIT0_CYCLE)
+        fx_trace(&sc->ctx, "orbit: c = %s %s i: cycle of period %d (checked at step %u)", dec4(a, sizeof a, cre >> 40),
+                 dec4(b, sizeof b, cim >> 40), info.period, info.steps);
+    else if (info.kind == FX_ORBIT0_ESCAPES)
+        fx_trace(&sc->ctx, "orbit: c = %s %s i: explodes, |z%u| > 2", dec4(a, sizeof a, cre >> 40),
+                 dec4(b, sizeof b, cim >> 40), info.steps);
+    else {
+        char p[24], q[24];
+        fx_trace(&sc->ctx, "orbit: c = %s %s i: %s, z%u = %s %s i", dec4(a, sizeof a, cre >> 40),
+                 dec4(b, sizeof b, cim >> 40), orbit_kind[info.kind], info.steps, dec4(p, sizeof p, info.re >> 40),
+                 dec4(q, sizeof q, info.im >> 40));
+    }
+    int32_t px = 0, py = 0;
+    for (uint32_t k = 0; k <= last; k++) {
+        int32_t x, y;
+        fx_julia_to_pixel(&v, z[k], z[ORBIT_CMD_MAX + k], &x, &y);
+        if (k)
+            fx_line(&sc->ctx, px, py, x, y);
+        fx_circle(&sc->ctx, x, y, 2);
+        px = x, py = y;
+    }
+    return 0;
+}
+
 static int cmd_mountain(fx_scene *sc)
 {
     fx16 size, height, rough = 45875 /* 0.7 */, sea = 13107 /* 0.2 */;
@@ -807,5 +872,10 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
     {"collage", cmd_collage, "collage X Y SIZE BG MAXMAPS DX DY NPOINTS SEED", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {"fractcompress", cmd_fractcompress, "fractcompress X Y SIZE DX DY ROUNDS", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {"mountain", cmd_mountain, "mountain SIZE HEIGHT K SEED [ROUGH [SEA]]", FX_SCENE_DRAWS},
+    /* issue #44 */
+    {"orbit", cmd_orbit,
+     "orbit C_RE C_IM N [CENTRE_RE CENTRE_IM WIDTH]   (the orbit of 0 under z^2 + c: its first values, "
+     "explodes / fixed point / spiral / cycle of period p, drawn over the Mandelbrot view)",
+     FX_SCENE_DRAWS},
     {0, 0, 0, 0},
 };

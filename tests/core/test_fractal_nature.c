@@ -578,7 +578,7 @@ static void keep_line(void *user, const char *line)
 {
     traced *t = user;
     /* only the commands' reports: the line drawing traces its every step */
-    static const char *const keep[] = {"boxdim:", "turtle:", "julia", "collage:", "fractcompress:"};
+    static const char *const keep[] = {"boxdim:", "turtle:", "julia", "collage:", "fractcompress:", "orbit:"};
     int want = 0;
     for (unsigned i = 0; i < sizeof keep / sizeof keep[0]; i++)
         want |= strncmp(line, keep[i], strlen(keep[i])) == 0;
@@ -701,4 +701,51 @@ FX_TEST(julia_c_first_form)
     /* the positional form's names say which pair is c */
     FX_CHECK_EQ(run_traced(&t, "size 120 80\njulia 0 0 -20 0 3 40\n", &sc), -FX_EINVAL);
     FX_CHECK_MSG(strstr(sc.err, "C_RE -20 out of range") != NULL, "%s", sc.err);
+}
+
+/* Issue #44: the orbit of 0, the notes' way into M, with their cases. */
+FX_TEST(orbit0_classifies_the_notes_cases)
+{
+    fx56 zr[300], zi[300];
+    fx_orbit0_info o;
+    /* c = -1: 0, -1, 0, -1, ...: a cycle of period 2 */
+    FX_CHECK_EQ(fx_orbit0(-FX56_ONE, 0, 64, zr, zi, &o), FX_ORBIT0_CYCLE);
+    FX_CHECK(o.period == 2 && zr[1] == -FX56_ONE && zr[2] == 0 && zi[3] == 0);
+    /* c = 1: 0, 1, 2, 5: explodes at step 3 */
+    FX_CHECK_EQ(fx_orbit0(FX56_ONE, 0, 64, zr, zi, &o), FX_ORBIT0_ESCAPES);
+    FX_CHECK(o.steps == 3 && o.re == 5 * FX56_ONE && zr[2] == 2 * FX56_ONE);
+    /* c = -2: 0, -2, 2, 2: lands on the fixed point 2 */
+    FX_CHECK_EQ(fx_orbit0(-2 * FX56_ONE, 0, 64, zr, zi, &o), FX_ORBIT0_FIXED);
+    FX_CHECK(o.re == 2 * FX56_ONE && o.period == 1);
+    /* c = 0.1 + 0.3i: z* = (1 - sqrt(1 - 4c)) / 2 = 0.0073489 + 0.3044751i,
+     * multiplier 2 z* of modulus 0.609 at 88.6 degrees: a spiral */
+    FX_CHECK_EQ(fx_orbit0(d56(0.1), d56(0.3), 200, zr, zi, &o), FX_ORBIT0_SPIRAL);
+    FX_CHECK_MSG(fabs(o.re / 72057594037927936.0 - 0.007348908) < 1e-5 &&
+                     fabs(o.im / 72057594037927936.0 - 0.304475119) < 1e-5,
+                 "z* %f %f", o.re / 72057594037927936.0, o.im / 72057594037927936.0);
+    /* Douady's rabbit: a 3-cycle */
+    FX_CHECK_EQ(fx_orbit0(d56(-0.12), d56(0.74), 200, zr, zi, &o), FX_ORBIT0_CYCLE);
+    FX_CHECK_EQ(o.period, 3);
+    /* c = 1/4, the cusp: creeps towards 1/2, no cycle within 200 values */
+    FX_CHECK_EQ(fx_orbit0(FX56_ONE / 4, 0, 200, NULL, NULL, &o), FX_ORBIT0_BOUNDED);
+    FX_CHECK(o.re > FX56_ONE / 2 - FX56_ONE / 100 && o.re < FX56_ONE / 2);
+    FX_CHECK_EQ(fx_orbit0(0, 0, 0, NULL, NULL, &o), -FX_EINVAL);
+    FX_CHECK_EQ(fx_orbit0(17 * FX56_ONE, 0, 5, NULL, NULL, &o), -FX_EINVAL);
+    /* the script command prints the values and the class */
+    traced t;
+    fx_scene sc;
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\norbit -1 0 50\norbit 1 0 50\norbit 0.1 0.3 200 0 0 2\n", &sc), 0);
+    FX_CHECK_MSG(strstr(t.log, "orbit: z1 = -1.0000 0.0000 i\norbit: z2 = 0.0000 0.0000 i") != NULL, "%s", t.log);
+    FX_CHECK_MSG(strstr(t.log, "orbit: c = -1.0000 0.0000 i: cycle of period 2") != NULL, "%s", t.log);
+    FX_CHECK_MSG(strstr(t.log, "orbit: z3 = 5.0000 0.0000 i\norbit: c = 1.0000 0.0000 i: explodes, |z3| > 2") != NULL,
+                 "%s", t.log);
+    FX_CHECK_MSG(strstr(t.log, "spiral into a fixed point, z199 = 0.0073 0.3044 i") != NULL ||
+                     strstr(t.log, "spiral into a fixed point, z199 = 0.0073 0.3045 i") != NULL,
+                 "%s", t.log);
+    int lit = 0;
+    for (int i = 0; i < 120 * 80; i++)
+        lit += t.b.mem[i] != 0 && t.b.mem[i] != 0xFF000000u;
+    FX_CHECK(lit > 30);
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\norbit 0 0 2000\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "1..1024") != NULL, "%s", sc.err);
 }
