@@ -123,6 +123,8 @@ A(polygon, REP("vertex", 2, 1024), XY("X"), XY("Y"));
 A(filltri, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), XY("X2"), XY("Y2"));
 A(gouraudtri, XY("X0"), XY("Y0"), C("C0"), XY("X1"), XY("Y1"), C("C1"), XY("X2"), XY("Y2"), C("C2"));
 A(gouraudpoly, REP("vertex", 3, 1024), XY("X"), XY("Y"), C("C"));
+/* issue #44: the copier from any picture */
+A(ifscopy, W("sierpinski|fern|user"), XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("DEPTH", 0, 24), C("BG"));
 /* issue #44: the orbit of 0 */
 A(orbit, Q("C_RE", -16, 16), Q("C_IM", -16, 16), IW("N", 1, 1024), OPT, Q("CENTRE_RE", -16, 16),
   Q("CENTRE_IM", -16, 16), {FX_ARG_FX56, FX_ARG_OPEN_MIN, "WIDTH", 0, 16 * FX56_ONE});
@@ -405,6 +407,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"blur", a_blur, 0, BLURW}, {"endblur", a_none, "blur 2 0.1", BLURW},
     /* issue #44 (the course's remaining methods) */
     {"gouraudscan", a_gouraudscan, 0, 0}, {"orbit", a_orbit, 0, 0},
+    {"ifscopy", a_ifscopy, 0, "pixels x maps^DEPTH at most 2^24"},
     {0, 0, 0, 0},
 };
 

@@ -368,6 +368,52 @@ static int cmd_ifs(fx_scene *sc)
     return run_ifs(sc, s, mode == 0);
 }
 
+/* issue #44: ifscopy sierpinski|fern|user X Y W H DEPTH BG: the copier
+ * from whatever the script drew in the rectangle (fx_ifs_copier_picture) */
+static int cmd_ifscopy(fx_scene *sc)
+{
+    static const char *const systems[] = {"sierpinski", "fern", "user", 0};
+    int k = fx_scene_arg_choice(sc, systems);
+    TRY(k);
+    int32_t v[4], depth;
+    fx_color bg;
+    TRY(ints(sc, v, 4));
+    TRY(fx_scene_arg_int(sc, &depth));
+    TRY(fx_scene_arg_color(sc, &bg));
+    TRY(fx_scene_end(sc));
+    fx_ifs user;
+    const fx_ifs *s = k == 0 ? &fx_ifs_sierpinski : &fx_ifs_fern;
+    if (k == 2) {
+        const fx_scene_fractal *st = fx_scene_fractal_state(sc);
+        user.maps = st->maps;
+        user.n = st->nmaps;
+        user.wx0 = st->win[0];
+        user.wy0 = st->win[1];
+        user.wx1 = st->win[2];
+        user.wy1 = st->win[3];
+        s = &user;
+    }
+    if (fx_ifs_check(s) < 0)
+        return fx_scene_error(sc, "bad IFS: 1..16 maps with probabilities summing to 1, and a window");
+    if (v[2] < 1 || v[3] < 1 || depth < 0)
+        return fx_scene_error(sc, "empty destination rectangle or negative depth");
+    int64_t x1 = (int64_t)v[0] + v[2], y1 = (int64_t)v[1] + v[3];
+    fx_rect d = {v[0], v[1], x1 > INT32_MAX ? INT32_MAX : (int32_t)x1, y1 > INT32_MAX ? INT32_MAX : (int32_t)y1};
+    fx_rect in = fx_rect_intersect(d, sc->ctx.clip);
+    uint32_t cap = fx_rect_empty(in) ? 0 : (uint32_t)((int64_t)(in.x1 - in.x0) * (in.y1 - in.y0));
+    fx_ifs_pixel *work = cap ? fx_scene_alloc(sc, (size_t)cap * sizeof *work) : 0;
+    if (cap && !work)
+        return fx_scene_error(sc, "out of scene memory for the picture (%u pixels)", cap);
+    int32_t n = fx_ifs_copier_picture(&sc->ctx, d, s, (uint32_t)depth, bg, work, cap);
+    if (n == -FX_E2BIG)
+        return fx_scene_error(sc, "picture pixels x maps^DEPTH over %u: a smaller picture or DEPTH",
+                              FX_IFS_PICTURE_WORK);
+    if (n < 0)
+        return fx_scene_error(sc, "bad copier picture");
+    fx_trace(&sc->ctx, "ifscopy: a picture of %d pixels through %d maps, depth %d", n, s->n, depth);
+    return 0;
+}
+
 static int cmd_fern(fx_scene *sc) { return run_ifs(sc, &fx_ifs_fern, 1); }
 static int cmd_julia(fx_scene *sc) { return escape_time(sc, 1); }
 
@@ -873,6 +919,10 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
     {"fractcompress", cmd_fractcompress, "fractcompress X Y SIZE DX DY ROUNDS", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {"mountain", cmd_mountain, "mountain SIZE HEIGHT K SEED [ROUGH [SEA]]", FX_SCENE_DRAWS},
     /* issue #44 */
+    {"ifscopy", cmd_ifscopy,
+     "ifscopy sierpinski|fern|user X Y W H DEPTH BG   (the copier from any picture: what is drawn in the "
+     "rectangle, every pixel not BG, goes through DEPTH rounds of the machine)",
+     FX_SCENE_DRAWS | FX_SCENE_SERIAL}, /* it reads the picture, which a band has only part of */
     {"orbit", cmd_orbit,
      "orbit C_RE C_IM N [CENTRE_RE CENTRE_IM WIDTH]   (the orbit of 0 under z^2 + c: its first values, "
      "explodes / fixed point / spiral / cycle of period p, drawn over the Mandelbrot view)",
