@@ -98,6 +98,8 @@ typedef struct pctx { /* per-draw state */
     int nsm;
     uint32_t dmask; /* lights whose diffuse and specular this pass adds */
     int amb;        /* whether it adds the ambient terms and emission */
+    fx16 kd_in;     /* the share of their diffuse it adds (1 - dim in a light pass after a dim ambient one) */
+    fx16 kd_out;    /* the share of the other lights' diffuse (the ambient pass's dim diffuse) */
 } pctx;
 
 typedef struct ptri { /* a triangle kept for the painter's sort */
@@ -187,7 +189,7 @@ static void prepare_lights(const fx3d *r, elight *el, int *nl)
  * for the material's ambient and diffuse reflectance (glColorMaterial's
  * GL_AMBIENT_AND_DIFFUSE). */
 static fx3d_rgb shade_m(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec3 N, uint32_t dmask, int amb,
-                        const fx3d_rgb *vcol)
+                        const fx3d_rgb *vcol, fx16 kd_in, fx16 kd_out)
 {
     fx3d_material mc;
     const fx3d_material *m = &r->mat;
@@ -236,8 +238,10 @@ static fx3d_rgb shade_m(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_v
         if (amb)
             c = rgb_mul(e->amb, m->ambient);
         fx16 ndl = fx_vec3_dot(N, L);
+        if (ndl > 0 && !(dmask >> i & 1) && kd_out > 0) /* the notes' dim diffuse in the ambient pass */
+            rgb_madd(&c, rgb_mul(e->diff, m->diffuse), fx16_mul(ndl, kd_out));
         if (ndl > 0 && (dmask >> i & 1)) {
-            rgb_madd(&c, rgb_mul(e->diff, m->diffuse), ndl);
+            rgb_madd(&c, rgb_mul(e->diff, m->diffuse), kd_in == FX16_ONE ? ndl : fx16_mul(ndl, kd_in));
             if (m->specular.r | m->specular.g | m->specular.b) {
                 if (!have_v) {
                     V = fx_vec3_make(fx_sat32(-(int64_t)P.x), fx_sat32(-(int64_t)P.y),
@@ -264,7 +268,7 @@ static fx3d_rgb shade_m(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_v
  * specular of the lights in `skip` (a mask). */
 static fx3d_rgb pshade(const pctx *pc, fx_vec3 P, fx_vec3 N, uint32_t skip, const fx3d_rgb *vcol)
 {
-    return shade_m(pc->r, pc->el, pc->nl, P, N, pc->dmask & ~skip, pc->amb, vcol);
+    return shade_m(pc->r, pc->el, pc->nl, P, N, pc->dmask & ~skip, pc->amb, vcol, pc->kd_in, pc->kd_out);
 }
 
 fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal)
@@ -272,7 +276,7 @@ fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal)
     elight el[FX3D_MAX_LIGHTS];
     int nl;
     prepare_lights(r, el, &nl);
-    return shade_m(r, el, nl, eye_pos, eye_normal, ~0u, 1, NULL);
+    return shade_m(r, el, nl, eye_pos, eye_normal, ~0u, 1, NULL, FX16_ONE, 0);
 }
 
 /* ------------------------------------------------------------------ */
@@ -621,6 +625,19 @@ int fx3d_pass(fx3d *r, int kind, int light)
         return -FX_ENOTSUP;
     r->pass = kind;
     r->pass_light = kind == FX3D_PASS_LIGHT ? light : 0;
+    if (kind != FX3D_PASS_LIGHT)
+        r->pass_dim = 0; /* a light pass keeps the dim share of the ambient pass before it */
+    return 0;
+}
+
+int fx3d_pass_ambient_dim(fx3d *r, fx16 dim)
+{
+    if (dim < 0 || dim > FX16_ONE)
+        return -FX_EINVAL;
+    int e = fx3d_pass(r, FX3D_PASS_AMBIENT, 0);
+    if (e < 0)
+        return e;
+    r->pass_dim = dim;
     return 0;
 }
 
@@ -1201,6 +1218,8 @@ static void pctx_init(pctx *pc, fx3d *r)
     pc->nsm = 0;
     pc->dmask = ~0u;
     pc->amb = 1;
+    pc->kd_in = FX16_ONE;
+    pc->kd_out = 0;
     if (r->sm_phase == 2 && r->sm) {
         if (r->sm_n > 1) {
             for (int k = 0; k < r->sm_n; k++)
@@ -1213,6 +1232,7 @@ static void pctx_init(pctx *pc, fx3d *r)
     }
     if (r->pass == FX3D_PASS_AMBIENT) {
         pc->dmask = 0;
+        pc->kd_out = r->pass_dim;
         pc->nsm = 0; /* nothing a shadow could remove */
     } else if (r->pass == FX3D_PASS_LIGHT) {
         /* the light's own map only, as map 0 */
@@ -1226,6 +1246,7 @@ static void pctx_init(pctx *pc, fx3d *r)
             pc->nsm = 0;
         }
         pc->dmask = 1u << r->pass_light;
+        pc->kd_in = FX16_ONE - r->pass_dim; /* the ambient pass gave the rest */
         pc->amb = 0;
     }
     pc->sm = pc->nsm ? pc->smv[0] : NULL;

@@ -129,6 +129,21 @@ unsigned fx_clip_region_code(fx_rect w, int32_t x, int32_t y)
            (y < w.y0 ? FX_CODE_BELOW : 0) | (y >= w.y1 ? FX_CODE_ABOVE : 0);
 }
 
+/* The notes' other way to the same code: the sign bits of the four
+ * differences, bit 1 (L) of x - xwmin, bit 2 (R) of xwmax - x, bit 3 (B) of
+ * y - ywmin and bit 4 (T) of ywmax - y, a negative difference meaning
+ * outside on that side. int64 differences: no int32 coordinate overflows. */
+static unsigned sign_bit(int64_t d) { return (unsigned)((uint64_t)d >> 63); }
+
+unsigned fx_clip_region_code_signs(fx_rect w, int32_t x, int32_t y, int64_t diff[4])
+{
+    int64_t d[4] = {(int64_t)w.y1 - 1 - y, (int64_t)y - w.y0, (int64_t)w.x1 - 1 - x, (int64_t)x - w.x0};
+    if (diff)
+        for (int i = 0; i < 4; i++)
+            diff[i] = d[i];
+    return sign_bit(d[0]) << 3 | sign_bit(d[1]) << 2 | sign_bit(d[2]) << 1 | sign_bit(d[3]);
+}
+
 int fx_clip_trivial(unsigned c0, unsigned c1)
 {
     if (!(c0 | c1))
@@ -573,6 +588,16 @@ void fx_clip_draw_line(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int3
         fx_trace(c, "%s (%d,%d)->(%d,%d) window x %d..%d y %d..%d: codes %s %s",
                  algo_name(algo), x0, y0, x1, y1, c->clip.x0, c->clip.x1 - 1, c->clip.y0,
                  c->clip.y1 - 1, b0, b1);
+        if (algo == FX_CLIP_COHEN) {
+            /* the codes again as the notes compute them: sign bits, no comparisons */
+            for (int e = 0; e < 2; e++) {
+                int64_t d[4];
+                char b[5];
+                bits4(b, fx_clip_region_code_signs(c->clip, e ? x1 : x0, e ? y1 : y0, d));
+                fx_trace(c, "  P%d sign bits of ywmax-y=%lld y-ywmin=%lld xwmax-x=%lld x-xwmin=%lld: %s", e + 1,
+                         (long long)d[0], (long long)d[1], (long long)d[2], (long long)d[3], b);
+            }
+        }
     }
     uint32_t k0, k1, e0, e1;
     if (!fx_clip_line_steps(c, algo, c->clip, x0, y0, x1, y1, &k0, &k1))

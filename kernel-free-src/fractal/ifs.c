@@ -159,3 +159,83 @@ int32_t fx_ifs_copier(const fx_ctx *c, fx_rect dest, const fx_ifs *s, uint32_t d
     aff id = {65536, 0, 0, 65536, 0, 0};
     return copier_rec(&cc, dest, s, id, depth);
 }
+
+/* ---- the copier from any picture (issue #44) ---- */
+
+typedef struct pic_job {
+    const fx_ctx *c;
+    fx_rect dest;
+    const fx_ifs *s;
+    const fx_ifs_pixel *px;
+    uint32_t n;
+} pic_job;
+
+static int32_t picture_rec(const pic_job *j, aff m, uint32_t depth)
+{
+    if (depth == 0) {
+        fx_ctx cc = *j->c;
+        for (uint32_t i = 0; i < j->n; i++) {
+            int64_t x = m.a * j->px[i].x + m.b * j->px[i].y + m.e; /* Q32.32 */
+            int64_t y = m.c * j->px[i].x + m.d * j->px[i].y + m.f;
+            int32_t px, py;
+            to_pixel(j->s, j->dest, x, y, &px, &py);
+            fx_ctx_set_color(&cc, j->px[i].color);
+            fx_plot(&cc, px, py);
+        }
+        return 1;
+    }
+    int32_t n = 0;
+    for (int i = 0; i < j->s->n; i++) {
+        const fx_ifs_map *q = &j->s->maps[i];
+        aff r;
+        r.a = (m.a * q->a + m.b * q->c + 0x8000) >> 16;
+        r.b = (m.a * q->b + m.b * q->d + 0x8000) >> 16;
+        r.c = (m.c * q->a + m.d * q->c + 0x8000) >> 16;
+        r.d = (m.c * q->b + m.d * q->d + 0x8000) >> 16;
+        r.e = m.a * q->e + m.b * q->f + m.e;
+        r.f = m.c * q->e + m.d * q->f + m.f;
+        n += picture_rec(j, r, depth - 1);
+    }
+    return n;
+}
+
+int32_t fx_ifs_copier_picture(const fx_ctx *c, fx_rect dest, const fx_ifs *s, uint32_t depth, fx_color bg,
+                              fx_ifs_pixel *work, uint32_t cap)
+{
+    if (!c || fx_ifs_check(s) < 0 || fx_rect_empty(dest) || (!work && cap))
+        return -FX_EINVAL;
+    fx_rect r = fx_rect_intersect(dest, fx_rect_intersect(c->clip, fx_surface_rect(&c->surf)));
+    /* the picture: every pixel of dest not in bg, as the world point at its
+     * centre (the inverse of to_pixel) */
+    int64_t ww = (int64_t)s->wx1 - s->wx0, wh = (int64_t)s->wy1 - s->wy0;
+    int64_t dw = (int64_t)dest.x1 - dest.x0, dh = (int64_t)dest.y1 - dest.y0;
+    uint32_t n = 0;
+    fx_color key = fx_unpack(c->surf.format, fx_pack(c->surf.format, bg));
+    for (int32_t y = r.y0; y < r.y1; y++)
+        for (int32_t x = r.x0; x < r.x1; x++) {
+            fx_color p = fx_surface_get(&c->surf, x, y);
+            if ((p & 0xFFFFFFu) == (key & 0xFFFFFFu))
+                continue;
+            if (n == cap)
+                return -FX_ENOSPC;
+            work[n].x = fx_sat32(s->wx0 + ((2 * ((int64_t)x - dest.x0) + 1) * ww) / (2 * dw));
+            work[n].y = fx_sat32(s->wy0 + ((2 * ((int64_t)dest.y1 - 1 - y) + 1) * wh) / (2 * dh));
+            work[n].color = p | 0xFF000000u;
+            n++;
+        }
+    uint64_t total = n;
+    for (uint32_t i = 0; i < depth; i++) {
+        total *= (uint64_t)s->n;
+        if (total > FX_IFS_PICTURE_WORK)
+            return -FX_E2BIG;
+    }
+    /* the machine's output replaces its input */
+    fx_ctx cc = *c;
+    cc.clip = r;
+    fx_ctx_set_color(&cc, bg | 0xFF000000u);
+    fx_fill_rect(&cc, r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
+    pic_job j = {&cc, dest, s, work, n};
+    aff id = {65536, 0, 0, 65536, 0, 0};
+    picture_rec(&j, id, depth);
+    return (int32_t)n;
+}

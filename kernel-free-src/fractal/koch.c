@@ -32,13 +32,15 @@ static void seg(const fx_ctx *c, pt a, pt b)
     fx_line(c, to_px(a.x), to_px(a.y), to_px(b.x), to_px(b.y));
 }
 
-/* Rotate t by h counter-clockwise as seen on the screen (y grows downward,
- * the convention of fx_atan2), so K_n from left to right bulges upward. */
+/* Rotate t by h from +x towards +y of the frame, the one angle rule of
+ * fx_rotate, fx_arc and the turtle (CONVENTIONS.md "Angles"), so K_n from
+ * left to right bulges towards +y: above the base line after 'coords
+ * course', as in the notes, below it on the y-down screen (issue #44). */
 static pt turn(pt t, fx_angle h)
 {
     int32_t co = fx_cos30(h), si = fx_sin30(h);
-    pt r = {fx_mul64_shift(t.x, co, 30) + fx_mul64_shift(t.y, si, 30),
-            -fx_mul64_shift(t.x, si, 30) + fx_mul64_shift(t.y, co, 30)};
+    pt r = {fx_mul64_shift(t.x, co, 30) - fx_mul64_shift(t.y, si, 30),
+            fx_mul64_shift(t.x, si, 30) + fx_mul64_shift(t.y, co, 30)};
     return r;
 }
 
@@ -84,10 +86,12 @@ uint64_t fx_koch_snowflake(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r, u
         v[i].y = (int64_t)cy * ONE - fx_mul64_shift((int64_t)r * ONE, fx_sin30(a), 30);
     }
     uint64_t n = 0;
-    /* clockwise on screen (top, lower right, lower left): the turtle's
-     * left, where its first turn goes, is then the outside */
+    /* top, lower left, lower right (on the y-down screen): from each side's
+     * start, +60 turns towards the outside. The vertices stay where they
+     * were before issue #44 turned the bumps over; the flake is the same
+     * in both frames by its six-fold symmetry. */
     for (int i = 0; i < 3; i++)
-        n += koch_rec(c, v[i], v[(i + 1) % 3], order);
+        n += koch_rec(c, v[(3 - i) % 3], v[(5 - i) % 3], order);
     return n;
 }
 

@@ -12,6 +12,7 @@ static uint32_t below(uint32_t *st, uint32_t n) { return (uint32_t)(((uint64_t)f
 typedef struct blade_job {
     fx_turtle t;
     uint32_t *st;
+    fx16 up; /* +1 in the course frame, -1 on the y-down screen: see fx_grass */
 } blade_job;
 
 /* A blade of `len` px from the turtle's position along its heading, in
@@ -20,13 +21,13 @@ static void blade(blade_job *j, fx16 len, fx16 curl, int depth)
 {
     fx16 step = len / 8;
     for (int i = 0; i < 8; i++) {
-        fx_turtle_turn(&j->t, curl + fx16_mul(fx_gauss16(j->st), 3 << 16));
+        fx_turtle_turn(&j->t, j->up * (curl + fx16_mul(fx_gauss16(j->st), 3 << 16)));
         fx_turtle_forward(&j->t, step, 1);
         if (depth < 2 && i >= 2 && i < 7 && below(j->st, 8) == 0) {
             /* a side shoot: F -> F[+F]F, the bracket saving the turtle */
             fx_turtle save = j->t;
             fx16 ang = (fx16)((20 + below(j->st, 21)) << 16);
-            fx_turtle_turn(&j->t, below(j->st, 2) ? ang : -ang);
+            fx_turtle_turn(&j->t, j->up * (below(j->st, 2) ? ang : -ang));
             blade(j, fx16_mul(step, (8 - i) * 39322 /* 0.6 */), curl, depth + 1);
             save.segs = j->t.segs;
             j->t = save;
@@ -50,8 +51,13 @@ int32_t fx_grass(const fx_ctx *c, fx_rect r, uint32_t nblades, uint32_t seed)
                  bb = FX_MIN(255u, (col & 255) * k / 256);
         fx_ctx_set_color(&cc, (col & 0xFF000000u) | rr << 16 | gg << 8 | bb);
         blade_job j;
-        fx16 x = (fx16)((r.x0 + (int32_t)below(&st, (uint32_t)w)) * 65536), y = (fx16)((r.y1 - 1) * 65536);
-        fx_turtle_init(&j.t, &cc, x, y, (90 << 16) + fx16_mul(fx_gauss16(&st), 10 << 16));
+        int32_t root = c->coords == FX_COORDS_COURSE ? r.y0 : r.y1 - 1; /* the picture's bottom row */
+        fx16 x = (fx16)((r.x0 + (int32_t)below(&st, (uint32_t)w)) * 65536), y = (fx16)(root * 65536);
+        /* Blades grow up the picture in both frames: the turtle turns from
+         * +x towards +y of the frame (issue #44), so on the y-down screen
+         * every angle is mirrored, which draws the blades of before. */
+        j.up = c->coords == FX_COORDS_COURSE ? 1 : -1;
+        fx_turtle_init(&j.t, &cc, x, y, j.up * ((90 << 16) + fx16_mul(fx_gauss16(&st), 10 << 16)));
         j.st = &st;
         fx16 len = (fx16)(((int64_t)h << 16) * (128 + below(&st, 129)) / 256);
         fx16 curl = fx16_mul(fx_gauss16(&st), 3 << 16);

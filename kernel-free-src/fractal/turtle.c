@@ -67,7 +67,9 @@ void fx_turtle_forward(fx_turtle *t, fx16 dist, int visible)
     /* 30-bit sine and cosine: the step's rounding stays under 2^-16 px */
     fx_angle a = fx_angle_from_deg16(t->heading);
     int64_t dx = fx_mul64_shift(dist, fx_cos30(a), 30);
-    int64_t dy = -fx_mul64_shift(dist, fx_sin30(a), 30);
+    /* from +x towards +y of the frame, as fx_rotate and fx_arc turn
+     * (CONVENTIONS.md "Angles"): left, as in the notes, after 'coords course' */
+    int64_t dy = fx_mul64_shift(dist, fx_sin30(a), 30);
     if (visible)
         fx_turtle_line_rel(t, (fx16)dx, (fx16)dy);
     else

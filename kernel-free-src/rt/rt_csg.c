@@ -333,3 +333,36 @@ int fx_rt_first_hit(const fx_rt_scene *s, fx_vec3 S, fx_vec3 c, fx16 tmin, fx_rt
         *n = world_normal(s, hit);
     return found;
 }
+
+fx16 rt_feeler_transmit(const fx_rt_scene *s, fx_vec3 S, fx_vec3 c, fx16 tmin, fx16 tmax, int *blocker)
+{
+    fx16 T = FX16_ONE;
+    int first = -1;
+    fx16 tfirst = 0;
+    for (int i = 0; i < s->n && T > 0; i++) {
+        if (!s->obj[i].top)
+            continue;
+        fx_rt_hitlist l;
+        hits_rec(s, i, S, c, tmin, &l);
+        for (int k = 0; k < l.n; k++) {
+            const fx_rt_hit *h = &l.h[k];
+            if (h->t <= tmin)
+                continue;
+            if (h->t >= tmax)
+                break;
+            fx_vec3 p = fx_vec3_make(rt_sat(S.x + rt_mul(c.x, h->t)), rt_sat(S.y + rt_mul(c.y, h->t)),
+                                     rt_sat(S.z + rt_mul(c.z, h->t)));
+            if (!in_world(p))
+                break;
+            fx16 kt = s->obj[h->obj].mat.transparency;
+            kt = kt < 0 ? 0 : kt > FX16_ONE ? FX16_ONE : kt;
+            if (kt == 0 && (first < 0 || h->t < tfirst))
+                first = h->obj, tfirst = h->t;
+            T = fx16_mul(T, kt);
+            if (T <= 0)
+                break;
+        }
+    }
+    *blocker = first;
+    return T < 0 ? 0 : T;
+}

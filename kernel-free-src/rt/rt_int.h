@@ -46,4 +46,12 @@ void rt_leaf_hits(const fx_rt_object *o, int idx, fx_vec3 S, fx_vec3 c24, fx_rt_
  * appended as an entering and a leaving hit at that t. */
 void rt_mesh_hits(const fx_rt_mesh *rm, int idx, fx_vec3 S, fx_vec3 c24, int64_t tmin, fx_rt_hitlist *out);
 
+/* What a shadow feeler from S along c lets through to t = tmax (issue #44):
+ * the product of the transparency kt of every surface it crosses with
+ * tmin < t < tmax (so a glass ball of kt passes kt^2, an opaque one 0). The
+ * documented approximation: the feeler goes straight (no refraction, no
+ * caustics) and is dimmed, not tinted. *blocker = the first opaque leaf hit,
+ * or -1. Q16.16, 0..1. */
+fx16 rt_feeler_transmit(const fx_rt_scene *s, fx_vec3 S, fx_vec3 c, fx16 tmin, fx16 tmax, int *blocker);
+
 #endif

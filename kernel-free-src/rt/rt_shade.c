@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* fixel — the ray tracer's lighting: the course's equation
  *     I = Iamb + Idiff + Ispec + Irefl + Itran
- * at the nearest hit, with shadow feelers toward each light, Blinn-Phong
+ * at the nearest hit, with shadow feelers toward each light (dimmed by
+ * the transparency of the surfaces they cross, an approximation: no
+ * refraction or caustics on the way to the light), Blinn-Phong
  * highlights, light attenuation 1 / (1 + k d^2), a reflected ray
  * r = d - 2 (d.m) m and a refracted one by Snell's law (total internal
  * reflection sends the transmitted share along r), up to a recursion limit
@@ -250,12 +252,24 @@ static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 we
         fx16 lam = dot(m, l);
         if (lam <= 0)
             continue;
-        fx_rt_hit sh;
-        if (fx_rt_first_hit(s, P, l, FX_RT_EPS, &sh, 0) && sh.t < dist) { /* the shadow feeler */
+        /* the shadow feeler, dimmed by the transparency of what it passes
+         * (issue #44: glass cast a black shadow); see rt_feeler_transmit */
+        int blocker;
+        fx16 T = rt_feeler_transmit(s, P, l, FX_RT_EPS, dist, &blocker);
+        if (T <= 0) {
             if (tr->trace) {
+                fx_rt_hit sh;
                 char what[64];
-                fx_fmt(what, sizeof what, "  light %d: shadow feeler blocked by object %d at t", li, sh.obj);
-                say(tr, depth, what, 0, 1, &sh.t);
+                if (blocker >= 0 && fx_rt_first_hit(s, P, l, FX_RT_EPS, &sh, 0) && sh.obj == blocker) {
+                    fx_fmt(what, sizeof what, "  light %d: shadow feeler blocked by object %d at t", li, sh.obj);
+                    say(tr, depth, what, 0, 1, &sh.t);
+                } else if (blocker >= 0) {
+                    fx_fmt(what, sizeof what, "  light %d: shadow feeler blocked by object %d", li, blocker);
+                    say(tr, depth, what, 0, 0, 0);
+                } else {
+                    fx_fmt(what, sizeof what, "  light %d: shadow feeler dimmed to 0 by transparent objects", li);
+                    say(tr, depth, what, 0, 0, 0);
+                }
             }
             continue;
         }
@@ -272,7 +286,12 @@ static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 we
             fx_fmt(what, sizeof what, "  light %d: visible; distance, m.l, attenuation", li);
             fx16 v[3] = {dist, lam, att};
             say(tr, depth, what, 0, 3, v);
+            if (T < FX16_ONE) {
+                fx_fmt(what, sizeof what, "  light %d: through transparent objects, transmitted", li);
+                say(tr, depth, what, 0, 1, &T);
+            }
         }
+        att = fx16_mul(att, T);
         fx3d_rgb Il = rgb_scale(L->color, att);
         Idiff = rgb_add(Idiff, rgb_scale(rgb_mul(Il, diff), lam));
         if (mat->shininess > 0) {

@@ -964,11 +964,16 @@ static int cmd_pass3d(fx_scene *sc)
     int c;
     TRY(c = fx_scene_arg_choice(sc, ch));
     int32_t li = 0;
+    fx16 dim = 0;
     if (c == 2)
         TRY(fx_scene_arg_int(sc, &li));
+    if (c == 1 && fx_scene_more(sc)) /* the notes' dim diffuse, issue #44 */
+        TRY(fx_scene_arg_fx16(sc, &dim));
     TRY(fx_scene_end(sc));
     if (c == 2 && (li < 0 || li >= FX3D_MAX_LIGHTS))
         return fx_scene_error(sc, "light number %d out of range (0..%d)", li, FX3D_MAX_LIGHTS - 1);
+    if (c == 1 && dim)
+        return fx3d_pass_ambient_dim(&s->r, dim) < 0 ? fx_scene_error(sc, "DIM out of range (0..1)") : 0;
     if (fx3d_pass(&s->r, c == 0 ? FX3D_PASS_ALL : c == 1 ? FX3D_PASS_AMBIENT : FX3D_PASS_LIGHT, li) < 0)
         return fx_scene_error(sc, "pass3d light needs the depth buffer ('depth 16|32'), not the painter's sort");
     return 0;
@@ -1032,6 +1037,9 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
     {"attenuation", cmd_attenuation, "attenuation LIGHT KC KL KQ", D},
     {"texture3d", cmd_texture3d, "texture3d modulate|replace|decal | texture3d off", D},
     {"shadowmap", cmd_shadowmap, "shadowmap begin SIZE LIGHT TX TY TZ FOV NEAR FAR | shadowmap end | shadowmap off", D},
-    {"pass3d", cmd_pass3d, "pass3d ambient | pass3d light LIGHT | pass3d off", D},
+    {"pass3d", cmd_pass3d,
+     "pass3d ambient [DIM] | pass3d light LIGHT | pass3d off   (DIM: the share of each light's diffuse the ambient "
+     "pass adds, the notes' dim diffuse in shadow; the light passes add the rest)",
+     D},
     {0, 0, 0, 0},
 };

@@ -14,6 +14,7 @@
  * +-1024 units, fractal views within the Q8.56 limits the iteration needs. */
 #include "fixel/scene.h"
 #include "fixel/fixed.h"
+#include "fixel/fill.h"
 #include "fixel/fractal.h"
 #include "fixel/ifs.h"
 #include "fixel/line.h"
@@ -123,6 +124,14 @@ A(polygon, REP("vertex", 2, 1024), XY("X"), XY("Y"));
 A(filltri, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), XY("X2"), XY("Y2"));
 A(gouraudtri, XY("X0"), XY("Y0"), C("C0"), XY("X1"), XY("Y1"), C("C1"), XY("X2"), XY("Y2"), C("C2"));
 A(gouraudpoly, REP("vertex", 3, 1024), XY("X"), XY("Y"), C("C"));
+/* issue #44: the copier from any picture */
+A(ifscopy, W("sierpinski|fern|user"), XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("DEPTH", 0, 24), C("BG"));
+/* issue #44: the orbit of 0 */
+A(orbit, Q("C_RE", -16, 16), Q("C_IM", -16, 16), IW("N", 1, 1024), OPT, Q("CENTRE_RE", -16, 16),
+  Q("CENTRE_IM", -16, 16), {FX_ARG_FX56, FX_ARG_OPEN_MIN, "WIDTH", 0, 16 * FX56_ONE});
+/* issue #44: the notes' scan-line Gouraud */
+A(gouraudscan, REP("vertex", 3, FX_GOURAUD_SCAN_MAX), I("X", -FX_GOURAUD_SCAN_COORD, FX_GOURAUD_SCAN_COORD),
+  I("Y", -FX_GOURAUD_SCAN_COORD, FX_GOURAUD_SCAN_COORD), C("C"));
 A(blend, W("src|over"));
 A(pattern, FORM("off"), FORM("bg"), C("COLOR|none"), FORM("anchor"), XY("X"), XY("Y"), FORM(0), I("W", 1, 32),
   I("H", 1, 32), REP("row", 1, 32), W("HEXROW"));
@@ -130,7 +139,10 @@ A(pattern, FORM("off"), FORM("bg"), C("COLOR|none"), FORM("anchor"), XY("X"), XY
 A(colormap, W("grey|hot|viridis|hsv|w9"), OPT, I("PERIOD", 1, 1048576));
 A(mandelbrot, Q("CRE", -16, 16), Q("CIM", -16, 16), {FX_ARG_FX56, FX_ARG_OPEN_MIN, "WIDTH", 0, 16 * FX56_ONE},
   IW("MAXITER", 1, FX_FRACTAL_MAX_ITER));
-A(julia, Q("CRE", -16, 16), Q("CIM", -16, 16), Q("CX", -16, 16), Q("CY", -16, 16),
+/* the Julia commands: the view's centre, then c (issue #44: the names say
+ * which is which); the c=C_RE,C_IM form the commands also take (c first)
+ * is checked by them, since its first token is no number */
+A(julia, Q("CENTRE_RE", -16, 16), Q("CENTRE_IM", -16, 16), Q("C_RE", -16, 16), Q("C_IM", -16, 16),
   {FX_ARG_FX56, FX_ARG_OPEN_MIN, "WIDTH", 0, 16 * FX56_ONE}, IW("MAXITER", 1, FX_FRACTAL_MAX_ITER));
 A(koch, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), IW("ORDER", 0, 1000));
 A(snowflake, XY("CX"), XY("CY"), I("R", 0, CO), IW("ORDER", 0, 1000));
@@ -148,7 +160,7 @@ A(ifs, W("sierpinski|fern|user"), FORM("chaos"), XY("X"), XY("Y"), I("W", 1, CO)
 A(fern, XY("X"), XY("Y"), I("W", 1, CO), I("H", 1, CO), IW("NPOINTS", 0, 4000000),
   I("SEED", INT32_MIN, INT32_MAX));
 #define QW {FX_ARG_FX56, FX_ARG_OPEN_MIN, "WIDTH", 0, 16 * FX56_ONE}
-#define JV Q("CRE", -16, 16), Q("CIM", -16, 16), Q("CX", -2, 2), Q("CY", -2, 2), QW
+#define JV Q("CENTRE_RE", -16, 16), Q("CENTRE_IM", -16, 16), Q("C_RE", -2, 2), Q("C_IM", -2, 2), QW
 A(juliaset, FORM("random"), JV, IW("NPOINTS", 0, FX_JULIA_SCENE_POINTS), I("SEED", INT32_MIN, INT32_MAX),
   FORM("tree"), JV, IW("DEPTH", 0, FX_JULIA_SCENE_DEPTH));
 A(juliafixed, JV);
@@ -240,7 +252,7 @@ A(attenuation, I("LIGHT", 0, FX3D_MAX_LIGHTS - 1), F("KC", 0, 1024), F("KL", 0, 
 A(texture3d, W("modulate|replace|decal|off"));
 A(shadowmap, FORM("end"), FORM("off"), FORM("begin"), IW("SIZE", 16, 4096), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1),
   P3("TX"), P3("TY"), P3("TZ"), F("FOV", -32768, 32767), P3("NEAR"), P3("FAR"));
-A(pass3d, FORM("off"), FORM("ambient"), FORM("light"), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1));
+A(pass3d, FORM("off"), FORM("ambient"), OPT, F("DIM", 0, 1), FORM("light"), I("LIGHT", 0, FX3D_MAX_LIGHTS - 1));
 
 /* ---- objects (scene_objects.c): sizes within the 3D bound, exponents in Barr's range ---- */
 #define SEG(n, lo) IW(n, lo, FX_MESH_MAX_SEG)
@@ -398,6 +410,9 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"ease", a_ease, 0, 0}, {"tween", a_tween, KEYS2, 0}, {"path", a_path, KEYS2, 0}, {"shape", a_shape, 0, 0},
     {"morph", a_morph, "shape a 0 0 10 0 0 10\nshape b 0 0 10 0 10 10 0 10", 0}, {"bounce", a_bounce, 0, BALLW},
     {"blur", a_blur, 0, BLURW}, {"endblur", a_none, "blur 2 0.1", BLURW},
+    /* issue #44 (the course's remaining methods) */
+    {"gouraudscan", a_gouraudscan, 0, 0}, {"orbit", a_orbit, 0, 0},
+    {"ifscopy", a_ifscopy, 0, "pixels x maps^DEPTH at most 2^24"},
     {0, 0, 0, 0},
 };
 

@@ -197,13 +197,26 @@ static int arg_poly(fx_scene *sc, clip_state *st, fx_pt16 *p, int *n)
     return 0;
 }
 
-static void outline(const fx_ctx *c, const fx_pt16 *p, const int *starts, int npieces, int closed)
+static int32_t clamp32(int32_t v, int32_t lo, int32_t hi) { return v < lo ? lo : v > hi ? hi : v; }
+
+/* Vertices round to pixel centres. A clipped polygon (in, non-NULL) lies in
+ * the pixel squares of the window, [x0 - 1/2, x1 - 1/2]: its left and top
+ * borders round half a pixel in to the first column and row, and the right
+ * and bottom ones must come half a pixel in too, to the last column and
+ * row, or their lines fall just outside the clip and vanish (issue #44:
+ * 40 pixels in the left column, 1 in the right one). */
+static void outline(const fx_ctx *c, const fx_pt16 *p, const int *starts, int npieces, int closed, const fx_rect *in)
 {
     for (int pc = 0; pc < npieces; pc++) {
         int a = starts[pc], n = starts[pc + 1] - a;
         for (int i = 0; i + (closed ? 0 : 1) < n; i++) {
             fx_pt16 u = p[a + i], v = p[a + (i + 1) % n];
-            fx_line(c, fx16_round(u.x), fx16_round(u.y), fx16_round(v.x), fx16_round(v.y));
+            int32_t x0 = fx16_round(u.x), y0 = fx16_round(u.y), x1 = fx16_round(v.x), y1 = fx16_round(v.y);
+            if (in) {
+                x0 = clamp32(x0, in->x0, in->x1 - 1), x1 = clamp32(x1, in->x0, in->x1 - 1);
+                y0 = clamp32(y0, in->y0, in->y1 - 1), y1 = clamp32(y1, in->y0, in->y1 - 1);
+            }
+            fx_line(c, x0, y0, x1, y1);
         }
     }
 }
@@ -238,7 +251,7 @@ static int cmd_clippoly(fx_scene *sc)
              np == 1 ? "" : "s", np ? starts[np] : 0);
     if (mode == 0)
         return fx_poly_fill16(&sc->ctx, out, starts, np);
-    outline(&sc->ctx, out, starts, np, 1);
+    outline(&sc->ctx, out, starts, np, 1, &sc->ctx.clip);
     return 0;
 }
 
@@ -254,7 +267,7 @@ static int cmd_xpoly(fx_scene *sc)
     int starts[2] = {0, n};
     if (mode == 0)
         return fx_poly_fill16(&sc->ctx, p, starts, 1);
-    outline(&sc->ctx, p, starts, 1, mode == 1);
+    outline(&sc->ctx, p, starts, 1, mode == 1, NULL);
     return 0;
 }
 

@@ -140,6 +140,21 @@ static int cmd_gouraudpoly(fx_scene *sc)
     return 0;
 }
 
+/* issue #44: the notes' scan-line Gouraud (fx_fill_poly_gouraud_scan) */
+static int cmd_gouraudscan(fx_scene *sc)
+{
+    fill_state *st = state(sc);
+    if (!st)
+        return -FX_ENOMEM;
+    int32_t n;
+    TRY(read_verts(sc, st, 1, 0, &n));
+    if (n < 3)
+        return fx_scene_error(sc, "a polygon needs at least 3 vertices");
+    if (fx_fill_poly_gouraud_scan(&sc->ctx, st->xy, st->col, n) < 0)
+        return fx_scene_error(sc, "vertex out of range (|X|, |Y| <= %d)", FX_GOURAUD_SCAN_COORD);
+    return 0;
+}
+
 static int cmd_blend(fx_scene *sc)
 {
     static const char *const modes[] = {"src", "over", 0};
@@ -554,6 +569,11 @@ const fx_scene_cmd fx_scene_cmds_fill[] = {
     {"filltri", cmd_filltri, "filltri X0 Y0 X1 Y1 X2 Y2", FX_SCENE_DRAWS},
     {"gouraudtri", cmd_gouraudtri, "gouraudtri X0 Y0 #C0 X1 Y1 #C1 X2 Y2 #C2", FX_SCENE_DRAWS},
     {"gouraudpoly", cmd_gouraudpoly, "gouraudpoly X0 Y0 #C0 X1 Y1 #C1 ... (convex)", FX_SCENE_DRAWS},
+    /* issue #44 */
+    {"gouraudscan", cmd_gouraudscan,
+     "gouraudscan X0 Y0 #C0 X1 Y1 #C1 ... (convex; the notes' scan-line Gouraud: along the edges, then across "
+     "each span, where gouraudpoly splits into a fan of triangles)",
+     FX_SCENE_DRAWS},
     {"blend", cmd_blend, "blend src|over", FX_SCENE_DRAWS},
     {"pattern", cmd_pattern, "pattern off | W H HEXROW... | bg #C|none | anchor X Y", FX_SCENE_DRAWS},
     /* DRAWS: a style set before the surface exists would be lost when it is made */

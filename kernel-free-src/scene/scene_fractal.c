@@ -12,6 +12,7 @@
 #include "fixel/circle.h"
 #include "fixel/collage.h"
 #include "fixel/julia.h"
+#include "fixel/line.h"
 #include "fixel/randfract.h"
 #include "fixel/turtle.h"
 #include "scene_mesh.h"
@@ -103,17 +104,66 @@ static void dwell_pal(fx_scene *sc, fx_dwell_pal *pal, uint32_t lut[256], uint32
     pal->inside = fx_pack(s->format, st->inside);
 }
 
+/* One part of c=RE,IM within +-lim. */
+static int c_part(fx_scene *sc, const char *t, int l, const char *name, int lim, fx56 *v)
+{
+    int n = fx56_parse(t, l, v);
+    if (n == -FX_ERANGE || (n == l && (*v < -(fx56)lim * FX56_ONE || *v > (fx56)lim * FX56_ONE)))
+        return fx_scene_error(sc, "c=RE,IM: %s %.*s out of range, expected -%d..%d", name, l > 40 ? 40 : l, t, lim,
+                              lim);
+    if (n != l || l == 0)
+        return fx_scene_error(sc, "c=RE,IM: %s: expected a decimal number, got '%.*s'", name, l > 40 ? 40 : l, t);
+    return 0;
+}
+
+/* The Julia commands' arguments (issue #44): CENTRE_RE CENTRE_IM C_RE C_IM
+ * WIDTH, the view centre first as in 'mandelbrot'; or c first, in the form
+ * c=C_RE,C_IM CENTRE_RE CENTRE_IM WIDTH, which cannot be taken for a centre
+ * (typing c in the centre's place used to draw c = 0's set without a word).
+ * a[] = the centre, c, the width; lim bounds the parts of c. */
+static int julia_args(fx_scene *sc, fx56 a[5], int lim)
+{
+    char w[96];
+    int save = sc->pos, have_c = 0;
+    if (fx_scene_more(sc) && fx_scene_arg_word(sc, w, sizeof w) == 0 && w[0] == 'c' && w[1] == '=') {
+        int n = 0, comma = -1;
+        while (w[n]) {
+            if (w[n] == ',' && comma < 0)
+                comma = n;
+            n++;
+        }
+        if (comma < 0)
+            return fx_scene_error(sc, "expected c=RE,IM (c's real and imaginary parts), got '%s'", w);
+        TRY(c_part(sc, w + 2, comma - 2, "RE", lim, &a[2]));
+        TRY(c_part(sc, w + comma + 1, n - comma - 1, "IM", lim, &a[3]));
+        have_c = 1;
+        TRY(fx_scene_arg_fx56(sc, &a[0]));
+    } else {
+        sc->err[0] = 0; /* a bare word read as one is not an error here */
+        sc->pos = save;
+        TRY(fx_scene_arg_fx56(sc, &a[0]));
+    }
+    TRY(fx_scene_arg_fx56(sc, &a[1]));
+    if (!have_c) {
+        TRY(fx_scene_arg_fx56(sc, &a[2]));
+        TRY(fx_scene_arg_fx56(sc, &a[3]));
+    }
+    return fx_scene_arg_fx56(sc, &a[4]);
+}
+
 static int escape_time(fx_scene *sc, int julia)
 {
     fx56 cre, cim, jre = 0, jim = 0, width;
     int32_t maxiter;
-    TRY(fx_scene_arg_fx56(sc, &cre));
-    TRY(fx_scene_arg_fx56(sc, &cim));
     if (julia) {
-        TRY(fx_scene_arg_fx56(sc, &jre));
-        TRY(fx_scene_arg_fx56(sc, &jim));
+        fx56 a[5];
+        TRY(julia_args(sc, a, 16));
+        cre = a[0], cim = a[1], jre = a[2], jim = a[3], width = a[4];
+    } else {
+        TRY(fx_scene_arg_fx56(sc, &cre));
+        TRY(fx_scene_arg_fx56(sc, &cim));
+        TRY(fx_scene_arg_fx56(sc, &width));
     }
-    TRY(fx_scene_arg_fx56(sc, &width));
     TRY(fx_scene_arg_int(sc, &maxiter));
     TRY(fx_scene_end(sc));
     if (maxiter < 1 || (uint32_t)maxiter > FX_FRACTAL_MAX_ITER)
@@ -318,6 +368,52 @@ static int cmd_ifs(fx_scene *sc)
     return run_ifs(sc, s, mode == 0);
 }
 
+/* issue #44: ifscopy sierpinski|fern|user X Y W H DEPTH BG: the copier
+ * from whatever the script drew in the rectangle (fx_ifs_copier_picture) */
+static int cmd_ifscopy(fx_scene *sc)
+{
+    static const char *const systems[] = {"sierpinski", "fern", "user", 0};
+    int k = fx_scene_arg_choice(sc, systems);
+    TRY(k);
+    int32_t v[4], depth;
+    fx_color bg;
+    TRY(ints(sc, v, 4));
+    TRY(fx_scene_arg_int(sc, &depth));
+    TRY(fx_scene_arg_color(sc, &bg));
+    TRY(fx_scene_end(sc));
+    fx_ifs user;
+    const fx_ifs *s = k == 0 ? &fx_ifs_sierpinski : &fx_ifs_fern;
+    if (k == 2) {
+        const fx_scene_fractal *st = fx_scene_fractal_state(sc);
+        user.maps = st->maps;
+        user.n = st->nmaps;
+        user.wx0 = st->win[0];
+        user.wy0 = st->win[1];
+        user.wx1 = st->win[2];
+        user.wy1 = st->win[3];
+        s = &user;
+    }
+    if (fx_ifs_check(s) < 0)
+        return fx_scene_error(sc, "bad IFS: 1..16 maps with probabilities summing to 1, and a window");
+    if (v[2] < 1 || v[3] < 1 || depth < 0)
+        return fx_scene_error(sc, "empty destination rectangle or negative depth");
+    int64_t x1 = (int64_t)v[0] + v[2], y1 = (int64_t)v[1] + v[3];
+    fx_rect d = {v[0], v[1], x1 > INT32_MAX ? INT32_MAX : (int32_t)x1, y1 > INT32_MAX ? INT32_MAX : (int32_t)y1};
+    fx_rect in = fx_rect_intersect(d, sc->ctx.clip);
+    uint32_t cap = fx_rect_empty(in) ? 0 : (uint32_t)((int64_t)(in.x1 - in.x0) * (in.y1 - in.y0));
+    fx_ifs_pixel *work = cap ? fx_scene_alloc(sc, (size_t)cap * sizeof *work) : 0;
+    if (cap && !work)
+        return fx_scene_error(sc, "out of scene memory for the picture (%u pixels)", cap);
+    int32_t n = fx_ifs_copier_picture(&sc->ctx, d, s, (uint32_t)depth, bg, work, cap);
+    if (n == -FX_E2BIG)
+        return fx_scene_error(sc, "picture pixels x maps^DEPTH over %u: a smaller picture or DEPTH",
+                              FX_IFS_PICTURE_WORK);
+    if (n < 0)
+        return fx_scene_error(sc, "bad copier picture");
+    fx_trace(&sc->ctx, "ifscopy: a picture of %d pixels through %d maps, depth %d", n, s->n, depth);
+    return 0;
+}
+
 static int cmd_fern(fx_scene *sc) { return run_ifs(sc, &fx_ifs_fern, 1); }
 static int cmd_julia(fx_scene *sc) { return escape_time(sc, 1); }
 
@@ -337,12 +433,12 @@ static const char *dec4(char *buf, size_t n, int64_t v16)
     return buf;
 }
 
-/* CRE CIM CX CY WIDTH: a Julia view of the whole surface (|c| parts <= 2) */
+/* CENTRE_RE CENTRE_IM C_RE C_IM WIDTH or c=C_RE,C_IM CENTRE_RE CENTRE_IM
+ * WIDTH: a Julia view of the whole surface (|c| parts <= 2) */
 static int julia_view_args(fx_scene *sc, fx_fractal_view *v, uint32_t maxiter)
 {
     fx56 a[5];
-    for (int i = 0; i < 5; i++)
-        TRY(fx_scene_arg_fx56(sc, &a[i]));
+    TRY(julia_args(sc, a, 2));
     const fx_surface *s = &sc->ctx.surf;
     *v = fx_julia_view(a[0], a[1], a[2], a[3], a[4], s->w, s->h, maxiter);
     return 0;
@@ -579,6 +675,70 @@ static void *scratch(fx_scene *sc, size_t need)
     return st->buf;
 }
 
+/* ---- issue #44: the orbit of 0 ---- */
+
+#define ORBIT_CMD_MAX 1024
+
+static const char *const orbit_kind[] = {"explodes", "fixed point", "spiral into a fixed point", "cycle",
+                                         "bounded, no cycle found"};
+
+/* orbit C_RE C_IM N [CENTRE_RE CENTRE_IM WIDTH]: prints the first values
+ * and the classification, and draws the orbit in the current colour over a
+ * Mandelbrot view of the surface (centre -0.5 0, width 4 by default). */
+static int cmd_orbit(fx_scene *sc)
+{
+    fx56 cre, cim, vre = -FX56_ONE / 2, vim = 0, width = 4 * FX56_ONE;
+    int32_t n;
+    TRY(fx_scene_arg_fx56(sc, &cre));
+    TRY(fx_scene_arg_fx56(sc, &cim));
+    TRY(fx_scene_arg_int(sc, &n));
+    if (fx_scene_more(sc)) {
+        TRY(fx_scene_arg_fx56(sc, &vre));
+        TRY(fx_scene_arg_fx56(sc, &vim));
+        TRY(fx_scene_arg_fx56(sc, &width));
+    }
+    TRY(fx_scene_end(sc));
+    if (n < 1 || n > ORBIT_CMD_MAX)
+        return fx_scene_error(sc, "N %d out of range (1..%d)", n, ORBIT_CMD_MAX);
+    fx56 *z = scratch(sc, 2 * ORBIT_CMD_MAX * sizeof(fx56));
+    if (!z)
+        return fx_scene_error(sc, "out of scene memory for the orbit");
+    fx_orbit0_info info;
+    if (fx_orbit0(cre, cim, (uint32_t)n, z, z + ORBIT_CMD_MAX, &info) < 0)
+        return fx_scene_error(sc, "c out of range (|C_RE|, |C_IM| <= 16)");
+    const fx_surface *s = &sc->ctx.surf;
+    fx_fractal_view v = fx_mandel_view(vre, vim, width, s->w, s->h, 1);
+    if (fx_fractal_check(&v) < 0)
+        return fx_scene_error(sc, "view out of range (|centre| <= 16, 0 < width <= 16)");
+    char a[24], b[24];
+    uint32_t last = info.steps;
+    for (uint32_t k = 0; k <= last && k < 12; k++)
+        fx_trace(&sc->ctx, "orbit: z%u = %s %s i", k, dec4(a, sizeof a, z[k] >> 40),
+                 dec4(b, sizeof b, z[ORBIT_CMD_MAX + k] >> 40));
+    if (info.kind == FX_ORBIT0_CYCLE)
+        fx_trace(&sc->ctx, "orbit: c = %s %s i: cycle of period %d (checked at step %u)", dec4(a, sizeof a, cre >> 40),
+                 dec4(b, sizeof b, cim >> 40), info.period, info.steps);
+    else if (info.kind == FX_ORBIT0_ESCAPES)
+        fx_trace(&sc->ctx, "orbit: c = %s %s i: explodes, |z%u| > 2", dec4(a, sizeof a, cre >> 40),
+                 dec4(b, sizeof b, cim >> 40), info.steps);
+    else {
+        char p[24], q[24];
+        fx_trace(&sc->ctx, "orbit: c = %s %s i: %s, z%u = %s %s i", dec4(a, sizeof a, cre >> 40),
+                 dec4(b, sizeof b, cim >> 40), orbit_kind[info.kind], info.steps, dec4(p, sizeof p, info.re >> 40),
+                 dec4(q, sizeof q, info.im >> 40));
+    }
+    int32_t px = 0, py = 0;
+    for (uint32_t k = 0; k <= last; k++) {
+        int32_t x, y;
+        fx_julia_to_pixel(&v, z[k], z[ORBIT_CMD_MAX + k], &x, &y);
+        if (k)
+            fx_line(&sc->ctx, px, py, x, y);
+        fx_circle(&sc->ctx, x, y, 2);
+        px = x, py = y;
+    }
+    return 0;
+}
+
 static int cmd_mountain(fx_scene *sc)
 {
     fx16 size, height, rough = 45875 /* 0.7 */, sea = 13107 /* 0.2 */;
@@ -728,8 +888,9 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
     {"colormap", cmd_colormap, "colormap grey|hot|viridis|hsv|w9 [PERIOD]", 0},
     {"insidecolor", cmd_insidecolor, "insidecolor #RRGGBB", 0},
     {"mandelbrot", cmd_mandelbrot, "mandelbrot CRE CIM WIDTH MAXITER", FX_SCENE_DRAWS},
-    {"julia", cmd_julia, "julia CRE CIM CX CY WIDTH MAXITER", FX_SCENE_DRAWS},
-    {"koch", cmd_koch, "koch X0 Y0 X1 Y1 ORDER", FX_SCENE_DRAWS},
+    {"julia", cmd_julia, "julia CENTRE_RE CENTRE_IM C_RE C_IM WIDTH MAXITER | julia c=C_RE,C_IM CENTRE_RE CENTRE_IM WIDTH MAXITER   "
+     "(the view's centre, then c; or c first, named)", FX_SCENE_DRAWS},
+    {"koch", cmd_koch, "koch X0 Y0 X1 Y1 ORDER   (bumps towards +y, turning as 'rotate' does: above the base line after 'coords course')", FX_SCENE_DRAWS},
     {"snowflake", cmd_snowflake, "snowflake CX CY R ORDER", FX_SCENE_DRAWS},
     {"fractline", cmd_fractline, "fractline X0 Y0 X1 Y1 BETA SD SEED", FX_SCENE_DRAWS},
     {"coastline", cmd_coastline, "coastline BETA SD SEED X0 Y0 X1 Y1 X2 Y2 ...", FX_SCENE_DRAWS},
@@ -740,20 +901,31 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
     {"ifs", cmd_ifs, "ifs sierpinski|fern|user chaos X Y W H NPOINTS SEED | ... copier X Y W H DEPTH",
      FX_SCENE_DRAWS},
     {"fern", cmd_fern, "fern X Y W H NPOINTS SEED", FX_SCENE_DRAWS},
-    {"juliaset", cmd_juliaset, "juliaset random CRE CIM CX CY WIDTH NPOINTS SEED | juliaset tree CRE CIM CX CY WIDTH DEPTH",
+    {"juliaset", cmd_juliaset, "juliaset random CENTRE_RE CENTRE_IM C_RE C_IM WIDTH NPOINTS SEED | juliaset tree CENTRE_RE CENTRE_IM C_RE C_IM WIDTH DEPTH   "
+     "(or c=C_RE,C_IM CENTRE_RE CENTRE_IM WIDTH in place of the five)",
      FX_SCENE_DRAWS},
-    {"juliafixed", cmd_juliafixed, "juliafixed CRE CIM CX CY WIDTH", FX_SCENE_DRAWS},
-    {"juliabasins", cmd_juliabasins, "juliabasins CRE CIM CX CY WIDTH MAXITER", FX_SCENE_DRAWS},
+    {"juliafixed", cmd_juliafixed, "juliafixed CENTRE_RE CENTRE_IM C_RE C_IM WIDTH | juliafixed c=C_RE,C_IM CENTRE_RE CENTRE_IM WIDTH", FX_SCENE_DRAWS},
+    {"juliabasins", cmd_juliabasins, "juliabasins CENTRE_RE CENTRE_IM C_RE C_IM WIDTH MAXITER | juliabasins c=C_RE,C_IM CENTRE_RE CENTRE_IM WIDTH MAXITER", FX_SCENE_DRAWS},
     /* these read the picture drawn so far, which a band has only part of */
     {"boxdim", cmd_boxdim, "boxdim X Y W H BG SMIN SMAX [KNOWN]", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {"turtle", cmd_turtle,
      "turtle home X Y DEG | moveto X Y | lineto X Y | moverel DX DY | linerel DX DY | turn DEG | turnto DEG | "
-     "forward D | jump D | koch LEN ORDER | hilbert STEP ORDER [PARITY] | where",
+     "forward D | jump D | koch LEN ORDER | hilbert STEP ORDER [PARITY] | where   "
+     "(DEG from +x towards +y, as 'rotate': counter-clockwise after 'coords course')",
      0},
     {"grass", cmd_grass, "grass X Y W H NBLADES SEED", FX_SCENE_DRAWS},
     {"fire", cmd_fire, "fire X Y W H ROUGH SEED", FX_SCENE_DRAWS},
     {"collage", cmd_collage, "collage X Y SIZE BG MAXMAPS DX DY NPOINTS SEED", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {"fractcompress", cmd_fractcompress, "fractcompress X Y SIZE DX DY ROUNDS", FX_SCENE_DRAWS | FX_SCENE_SERIAL},
     {"mountain", cmd_mountain, "mountain SIZE HEIGHT K SEED [ROUGH [SEA]]", FX_SCENE_DRAWS},
+    /* issue #44 */
+    {"ifscopy", cmd_ifscopy,
+     "ifscopy sierpinski|fern|user X Y W H DEPTH BG   (the copier from any picture: what is drawn in the "
+     "rectangle, every pixel not BG, goes through DEPTH rounds of the machine)",
+     FX_SCENE_DRAWS | FX_SCENE_SERIAL}, /* it reads the picture, which a band has only part of */
+    {"orbit", cmd_orbit,
+     "orbit C_RE C_IM N [CENTRE_RE CENTRE_IM WIDTH]   (the orbit of 0 under z^2 + c: its first values, "
+     "explodes / fixed point / spiral / cycle of period p, drawn over the Mandelbrot view)",
+     FX_SCENE_DRAWS},
     {0, 0, 0, 0},
 };

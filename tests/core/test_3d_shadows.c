@@ -393,3 +393,61 @@ FX_TEST(shadow3d_painter_flush_uses_only_maps_still_in_use)
     fx3d_shadow_off(&g->r);
     free(g);
 }
+
+/* Issue #44: the notes' dim diffuse in the ambient pass ("to prevent curved
+ * surfaces from appearing flat in shadow"). Light A is red and alone in the
+ * red channel, without specular: with dim 1/4 a floor pixel in A's shadow
+ * keeps a quarter of the red A gives it unshadowed, and a lit one keeps
+ * all of it (the light pass adds the other 3/4), to rounding. */
+static void passes_dim(srig *g, fx16 dim, uint32_t *out)
+{
+    fx3d_shadow_off(&g->r);
+    fill_maps(g);
+    fx3d_shadowmap *both[2] = {&g->sm[0], &g->sm[1]};
+    FX_CHECK_EQ(fx3d_shadow_use(&g->r, both, 2), 0);
+    clear(g);
+    FX_CHECK_EQ(fx3d_pass_ambient_dim(&g->r, dim), 0);
+    draw_scene(g);
+    for (int k = 0; k < 2; k++) {
+        FX_CHECK_EQ(fx3d_pass(&g->r, FX3D_PASS_LIGHT, k), 0);
+        FX_CHECK_EQ(g->r.pass_dim, dim); /* kept by the light passes */
+        draw_scene(g);
+    }
+    FX_CHECK_EQ(fx3d_pass(&g->r, FX3D_PASS_ALL, 0), 0);
+    FX_CHECK_EQ(g->r.pass_dim, 0);
+    fx3d_shadow_off(&g->r);
+    memcpy(out, g->px, sizeof g->px);
+}
+
+FX_TEST(shadow3d_ambient_pass_dim_diffuse)
+{
+    srig *g = srig_new(0xFF0000, 0x0000FF, 0x00FF00, FX_FMT_XRGB8888);
+    g->r.mat.specular = fx3d_rgb_from_color(0);
+    g->r.shading = FX3D_PHONG;
+    static uint32_t unshadowed[W * H], plain[W * H], dimmed[W * H];
+    fx3d_shadow_off(&g->r);
+    clear(g);
+    draw_scene(g);
+    memcpy(unshadowed, g->px, sizeof g->px);
+    passes_dim(g, 0, plain);
+    passes_dim(g, ONE / 4, dimmed);
+    int shadowed = 0, lit = 0;
+    for (int i = 0; i < W * H; i++) {
+        int full = CH(unshadowed[i], 16), p = CH(plain[i], 16), d = CH(dimmed[i], 16);
+        if (full < 40)
+            continue;
+        if (p == 0) { /* in A's shadow: a quarter of A's red */
+            shadowed++;
+            FX_CHECK_MSG(abs(d - (full + 2) / 4) <= 1, "pixel %d: %d in shadow, unshadowed %d", i, d, full);
+        } else if (abs(p - full) <= 1) { /* lit: as bright as without the option */
+            lit++;
+            FX_CHECK_MSG(abs(d - p) <= 1, "pixel %d: lit %d, plain %d", i, d, p);
+        }
+        /* the green ambient is the same in both (blue, light B, follows A's rule) */
+        FX_CHECK(abs((int)CH(dimmed[i], 8) - (int)CH(plain[i], 8)) <= 1);
+    }
+    FX_CHECK_MSG(shadowed > 50 && lit > 500, "%d shadowed, %d lit pixels", shadowed, lit);
+    FX_CHECK_EQ(fx3d_pass_ambient_dim(&g->r, ONE + 1), -FX_EINVAL);
+    FX_CHECK_EQ(fx3d_pass_ambient_dim(&g->r, -1), -FX_EINVAL);
+    free(g);
+}

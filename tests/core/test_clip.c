@@ -257,6 +257,14 @@ FX_TEST(traces_name_codes_parameters_and_regions)
     fx_line(&ctx, 0, 15, 40, 15);
     FX_CHECK(trace_has("codes 0001 0010") && trace_has("clip at left boundary"));
     FX_CHECK(trace_has("steps k=10..30 of 40"));
+    /* issue #44: the same codes from the sign bits of the four differences
+     * (x 10..30, y 10..20): (0,15) has x - xwmin = -10, (40,15) xwmax - x = -10 */
+    FX_CHECK(trace_has("P1 sign bits of ywmax-y=5 y-ywmin=5 xwmax-x=30 x-xwmin=-10: 0001"));
+    FX_CHECK(trace_has("P2 sign bits of ywmax-y=5 y-ywmin=5 xwmax-x=-10 x-xwmin=30: 0010"));
+    trace_clear();
+    fx_line(&ctx, 0, 40, 5, 0);
+    FX_CHECK(trace_has("P1 sign bits of ywmax-y=-20 y-ywmin=30 xwmax-x=30 x-xwmin=-10: 1001"));
+    FX_CHECK(trace_has("P2 sign bits of ywmax-y=20 y-ywmin=-10 xwmax-x=25 x-xwmin=-5: 0101"));
     /* Liang-Barsky: u1 = (2*10-1 - 0) / 80 = 19/80, u2 = (2*30+1)/80 = 61/80 */
     ctx.line_clipper = FX_CLIP_LIANG;
     trace_clear();
@@ -312,4 +320,28 @@ FX_TEST(clip_stack_nests_and_intersects)
         lit += c.mem[i] != 0;
     FX_CHECK_EQ(lit, 0);
     free(c.mem);
+}
+
+/* Issue #44: the sign-bit codes equal the comparison codes everywhere,
+ * including the int32 extremes, where an int32 difference would overflow. */
+FX_TEST(clip_region_code_from_sign_bits)
+{
+    uint32_t st = 4404;
+    const int32_t edge[] = {INT32_MIN, INT32_MIN + 1, -1, 0, 1, 9, 10, 11, 29, 30, 31, INT32_MAX - 1, INT32_MAX};
+    fx_rect w = {10, 10, 31, 21};
+    int n = 0;
+    for (unsigned i = 0; i < sizeof edge / sizeof edge[0]; i++)
+        for (unsigned j = 0; j < sizeof edge / sizeof edge[0]; j++, n++)
+            FX_CHECK_EQ(fx_clip_region_code_signs(w, edge[i], edge[j], NULL), fx_clip_region_code(w, edge[i], edge[j]));
+    for (int k = 0; k < 100000; k++, n++) {
+        fx_rect r = {(int32_t)fx_test_rand(&st) % 64 - 32, (int32_t)fx_test_rand(&st) % 64 - 32, 0, 0};
+        r.x1 = r.x0 + 1 + (int32_t)(fx_test_rand(&st) % 40);
+        r.y1 = r.y0 + 1 + (int32_t)(fx_test_rand(&st) % 40);
+        int32_t x = (int32_t)(fx_test_rand(&st) % 160) - 80, y = (int32_t)(fx_test_rand(&st) % 160) - 80;
+        FX_CHECK_EQ(fx_clip_region_code_signs(r, x, y, NULL), fx_clip_region_code(r, x, y));
+    }
+    int64_t d[4];
+    FX_CHECK_EQ(fx_clip_region_code_signs(w, INT32_MIN, INT32_MAX, d), FX_CODE_ABOVE | FX_CODE_LEFT);
+    FX_CHECK(d[0] == 20 - (int64_t)INT32_MAX && d[3] == (int64_t)INT32_MIN - 10);
+    FX_CHECK(n > 100000);
 }

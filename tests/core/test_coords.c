@@ -18,6 +18,7 @@
 #include "fixel/line.h"
 #include "fixel/mat3d.h"
 #include "fixel/render3d.h"
+#include "fixel/turtle.h"
 #include "fixel/scene.h"
 #include "fixel/xform.h"
 #include "canvas.h"
@@ -637,4 +638,68 @@ FX_TEST(review_light_pass_needs_the_depth_buffer)
     FX_CHECK_EQ(run_big(0, "size 64 48\npainter 64\npass3d light 0\n", err, sizeof err), -FX_EINVAL);
     FX_CHECK(strstr(err, "depth") != NULL);
     FX_CHECK_MSG(run_big(0, "size 64 48\ndepth 32\npass3d light 0\n", err, sizeof err) == 0, "%s", err);
+}
+
+/* Issue #44: the turtle and the Koch curves turn as 'rotate' does, from +x
+ * towards +y of the frame, so in course mode turn(+60) is a left turn and the
+ * bumps stand above the base line, as in the notes. */
+static int rows_lit(int i, int y0, int y1) /* lit pixels in screen rows y0..y1 */
+{
+    int n = 0;
+    for (int y = y0; y <= y1; y++)
+        for (int x = 0; x < 48; x++)
+            n += smem[i][y * 48 + x] != 0;
+    return n;
+}
+
+FX_TEST(coords_turtle_turns_as_rotate)
+{
+    /* the issue's numbers: home (100, 100) heading 0, turn 60, forward 50 */
+    fx_turtle t;
+    fx_turtle_init(&t, NULL, 100 << 16, 100 << 16, 0);
+    fx_turtle_turn(&t, 60 << 16);
+    fx_turtle_forward(&t, 50 << 16, 1);
+    fx16 x, y;
+    fx_turtle_pos(&t, &x, &y);
+    FX_CHECK(abs(x - 125 * 65536) <= 2);
+    FX_CHECK(abs(y - 9391392) <= 2); /* 143.30127 = 100 + 25 sqrt 3 */
+    /* 'turtle forward' at heading 90 ends where 'rotate 90' takes +x */
+    fx_xform2 rot;
+    fx_xform2_rotation(&rot, FX_ANGLE_90, 0, 0);
+    int32_t rx, ry;
+    fx_xform2_apply_int(&rot, 10, 0, &rx, &ry);
+    fx_turtle_init(&t, NULL, 0, 0, 90 << 16);
+    fx_turtle_forward(&t, 10 << 16, 0);
+    fx_turtle_pos(&t, &x, &y);
+    FX_CHECK(abs(x - rx * 65536) <= 2 && abs(y - ry * 65536) <= 2);
+
+    /* the base line is frame row 10: screen row 29 in course mode, 10 on the screen */
+    const char *koch[] = {"koch 4 10 44 10 2\n", "turtle home 4 10 0\nturtle koch 40 2\n"};
+    for (int k = 0; k < 2; k++) {
+        char a[256], b[256], err[256];
+        snprintf(a, sizeof a, "size 48 40\n%s", koch[k]);
+        snprintf(b, sizeof b, "size 48 40\ncoords course\n%s", koch[k]);
+        FX_CHECK_EQ(run_into(0, a, err, sizeof err), 0);
+        FX_CHECK_EQ(run_into(1, b, err, sizeof err), 0);
+        /* course: nothing below the base line on the screen, the bump (11.5 px
+         * at order 2's middle third) above it */
+        FX_CHECK_MSG(rows_lit(1, 30, 39) == 0 && rows_lit(1, 18, 21) > 0, "%s: %d below, %d at the tip", koch[k],
+                     rows_lit(1, 30, 39), rows_lit(1, 18, 21));
+        /* screen: the same frame picture, so the same pixels mirrored */
+        int same = 1;
+        for (int yy = 0; yy < 40; yy++)
+            for (int xx = 0; xx < 48; xx++)
+                same &= smem[0][yy * 48 + xx] == smem[1][(39 - yy) * 48 + xx];
+        FX_CHECK_MSG(same, "%s: screen mode is not course mode mirrored", koch[k]);
+    }
+    /* a snowflake's bumps still point outward: its order-1 star reaches r
+     * from the centre along six directions, the triangle alone only three */
+    FX_CHECK_EQ(run_into(0, "size 48 40\nsnowflake 24 20 15 1\n", NULL, 0), 0);
+    FX_CHECK(rows_lit(0, 5, 5) > 0 && rows_lit(0, 35, 35) > 0 && smem[0][20 * 48 + 24] == 0);
+    /* grass grows up the picture in both modes, rooted on its bottom row */
+    FX_CHECK_EQ(run_into(0, "size 48 40\ngrass 0 0 48 40 12 7\n", NULL, 0), 0);
+    FX_CHECK_EQ(run_into(1, "size 48 40\ncoords course\ngrass 0 0 48 40 12 7\n", NULL, 0), 0);
+    FX_CHECK_MSG(rows_lit(0, 39, 39) >= 6 && rows_lit(1, 39, 39) >= 6 && rows_lit(1, 20, 30) > 12,
+                 "grass roots %d / %d, course stems %d", rows_lit(0, 39, 39), rows_lit(1, 39, 39),
+                 rows_lit(1, 20, 30));
 }

@@ -661,3 +661,55 @@ FX_TEST(fill_small_path_spans_at_every_alignment_and_length)
         FX_CHECK_MSG(bad == 0, "format %d: %d spans differ", (int)f, bad);
     }
 }
+
+/* Issue #44: the notes' scan-line Gouraud. Their quad with red, green, blue
+ * and white corners: along the left edge the middle is (R + W) / 2, along
+ * the right (G + B) / 2, so across the middle row the centre is
+ * (127.5, 127.5, 127.5) -> (128, 128, 128); the fan cuts along the red-blue
+ * diagonal, where it is (R + B) / 2 -> (128, 0, 128). */
+FX_TEST(gouraud_scan_is_the_notes_scan_line_rule)
+{
+    static uint32_t a[32 * 32], b[32 * 32];
+    fx_surface sa, sb;
+    fx_surface_init(&sa, a, 32, 32, 32 * 4, FX_FMT_XRGB8888);
+    fx_surface_init(&sb, b, 32, 32, 32 * 4, FX_FMT_XRGB8888);
+    fx_ctx ca, cb;
+    fx_ctx_init(&ca, &sa);
+    fx_ctx_init(&cb, &sb);
+    const int32_t quad[8] = {2, 2, 18, 2, 18, 18, 2, 18};
+    const fx_color col[4] = {0xFFFF0000u, 0xFF00FF00u, 0xFF0000FFu, 0xFFFFFFFFu};
+    memset(a, 0, sizeof a), memset(b, 0, sizeof b);
+    FX_CHECK_EQ(fx_fill_poly_gouraud_scan(&ca, quad, col, 4), 0);
+    fx_fill_poly_gouraud(&cb, quad, col, 4);
+    FX_CHECK_EQ(a[10 * 32 + 10] & 0xFFFFFF, 0x808080u);
+    FX_CHECK_EQ(b[10 * 32 + 10] & 0xFFFFFF, 0x800080u);
+    /* corners exactly, edges interpolated along: (2,10) is halfway red-white */
+    FX_CHECK_EQ(a[2 * 32 + 2] & 0xFFFFFF, 0xFF0000u);
+    FX_CHECK_EQ(a[10 * 32 + 2] & 0xFFFFFF, 0xFF8080u);
+    FX_CHECK_EQ(a[2 * 32 + 10] & 0xFFFFFF, 0x808000u); /* halfway red-green */
+    /* the same pixels as the fan and as fx_fill_poly (top-left rule: 16 x 16) */
+    int na = 0, nb = 0, same = 1;
+    for (int i = 0; i < 32 * 32; i++) {
+        na += a[i] != 0, nb += b[i] != 0;
+        same &= (a[i] != 0) == (b[i] != 0);
+    }
+    FX_CHECK(same && na == 16 * 16 && nb == na);
+    /* a triangle is linear either way: the same colours to one level */
+    memset(a, 0, sizeof a), memset(b, 0, sizeof b);
+    const int32_t tri[6] = {1, 3, 29, 9, 7, 30};
+    FX_CHECK_EQ(fx_fill_poly_gouraud_scan(&ca, tri, col + 1, 3), 0);
+    fx_fill_tri_gouraud(&cb, tri, col + 1);
+    int worst = 0;
+    for (int i = 0; i < 32 * 32; i++) {
+        FX_CHECK((a[i] != 0) == (b[i] != 0));
+        for (int s = 0; s < 24; s += 8) {
+            int d = abs((int)((a[i] >> s) & 255) - (int)((b[i] >> s) & 255));
+            worst = d > worst ? d : worst;
+        }
+    }
+    FX_CHECK_MSG(worst <= 1, "triangle: worst %d", worst);
+    /* bounds */
+    FX_CHECK_EQ(fx_fill_poly_gouraud_scan(&ca, quad, col, 2), -FX_EINVAL);
+    const int32_t far[6] = {0, 0, FX_GOURAUD_SCAN_COORD + 1, 0, 0, 5};
+    FX_CHECK_EQ(fx_fill_poly_gouraud_scan(&ca, far, col, 3), -FX_EINVAL);
+}

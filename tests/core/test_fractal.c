@@ -11,6 +11,9 @@
 #include "fixel/colormap.h"
 #include "fixel/error.h"
 #include "fixel/fractal.h"
+#include "fixel/ifs.h"
+#include "fixel/circle.h"
+#include "fixel/fill.h"
 #include "fixel/scene.h"
 #include "fx_test.h"
 #include "scenebuf.h"
@@ -517,4 +520,52 @@ FX_TEST(fractal_julia_agrees_with_double)
     FX_CHECK_MSG(a >= 99900, "Julia, 64-bit path: %lld/100000", (long long)a);
     a = julia_agree("-0.123", "0.745", -0.123, 0.745, 400, 64);
     FX_CHECK_MSG(a >= 99900, "rabbit, 64-bit path: %lld/100000", (long long)a);
+}
+
+/* Issue #44: the copier started from any picture tends to the same
+ * attractor: a disc and a square, five rounds of the Sierpinski machine,
+ * light nearly the same pixels; depth 0 gives the picture back. */
+FX_TEST(ifs_copier_from_any_picture)
+{
+    static uint32_t a[64 * 64], b[64 * 64];
+    static fx_ifs_pixel work[64 * 64];
+    fx_surface sa, sb;
+    fx_surface_init(&sa, a, 64, 64, 64 * 4, FX_FMT_XRGB8888);
+    fx_surface_init(&sb, b, 64, 64, 64 * 4, FX_FMT_XRGB8888);
+    fx_ctx ca, cb;
+    fx_ctx_init(&ca, &sa);
+    fx_ctx_init(&cb, &sb);
+    fx_rect d = {0, 0, 64, 64};
+    memset(a, 0, sizeof a), memset(b, 0, sizeof b);
+    fx_disc(&ca, 32, 32, 20);
+    fx_fill_rect(&cb, 4, 4, 20, 50);
+    /* depth 0: the same picture back, pixel for pixel */
+    static uint32_t keep[64 * 64];
+    memcpy(keep, a, sizeof a);
+    int32_t n = fx_ifs_copier_picture(&ca, d, &fx_ifs_sierpinski, 0, 0xFF000000u, work, 64 * 64);
+    FX_CHECK(n > 1200 && memcmp(keep, a, sizeof a) == 0);
+    FX_CHECK_EQ(fx_ifs_copier_picture(&ca, d, &fx_ifs_sierpinski, 5, 0xFF000000u, work, 64 * 64), n);
+    FX_CHECK_EQ(fx_ifs_copier_picture(&cb, d, &fx_ifs_sierpinski, 5, 0xFF000000u, work, 64 * 64), 20 * 50);
+    /* 3^5 copies at 1/32 scale: both lie within 64 / 32 = 2 pixels of the
+     * attractor, so within 2 + 2 of each other (Hausdorff, in pixels) */
+    int lit[2] = {0, 0}, far = 0;
+    for (int k = 0; k < 2; k++) {
+        const uint32_t *p = k ? b : a, *q = k ? a : b;
+        for (int y = 0; y < 64; y++)
+            for (int x = 0; x < 64; x++) {
+                if (!(p[y * 64 + x] & 0xFFFFFF))
+                    continue;
+                lit[k]++;
+                int near = 0;
+                for (int dy = -4; dy <= 4; dy++)
+                    for (int dx = -4; dx <= 4; dx++)
+                        if (x + dx >= 0 && x + dx < 64 && y + dy >= 0 && y + dy < 64)
+                            near |= (q[(y + dy) * 64 + x + dx] & 0xFFFFFF) != 0;
+                far += !near;
+            }
+    }
+    FX_CHECK_MSG(lit[0] > 300 && lit[1] > 150 && far == 0, "%d and %d lit, %d far", lit[0], lit[1], far);
+    /* the limits */
+    FX_CHECK_EQ(fx_ifs_copier_picture(&ca, d, &fx_ifs_sierpinski, 1, 0xFF000000u, work, 10), -FX_ENOSPC);
+    FX_CHECK_EQ(fx_ifs_copier_picture(&ca, d, &fx_ifs_sierpinski, 20, 0xFF000000u, work, 64 * 64), -FX_E2BIG);
 }

@@ -52,16 +52,18 @@ FX_TEST(koch_segment_counts)
     canvas_new(&k, 760, 420);
     uint64_t want = 1;
     for (uint32_t n = 0; n <= 6; n++, want *= 4) {
-        FX_CHECK_EQ(fx_koch(&k.c, 15, 400, 15 + 729, 400, n), want);
+        FX_CHECK_EQ(fx_koch(&k.c, 15, 20, 15 + 729, 20, n), want); /* bumps towards +y, down */
         FX_CHECK_EQ(fx_koch_snowflake(&k.c, 380, 220, 190, n), 3 * want);
     }
     free(k.px);
-    /* endpoints are lit, and the order-1 peak sits sqrt(3)/6 of the chord up */
+    /* endpoints are lit, and the order-1 peak sits sqrt(3)/6 of the chord
+     * towards +y: down the y-down screen (issue #44) */
     canvas_new(&k, 100, 60);
-    fx_koch(&k.c, 5, 50, 95, 50, 1);
-    FX_CHECK(k.px[50 * 100 + 5] && k.px[50 * 100 + 95]);
-    FX_CHECK(k.px[(50 - 26) * 100 + 50] != 0); /* 90 * 0.2887 = 25.98 */
-    FX_CHECK_EQ(lit(&k, (fx_rect){0, 0, 100, 50 - 26}), 0);
+    fx_koch(&k.c, 5, 9, 95, 9, 1);
+    FX_CHECK(k.px[9 * 100 + 5] && k.px[9 * 100 + 95]);
+    FX_CHECK(k.px[(9 + 26) * 100 + 50] != 0); /* 90 * 0.2887 = 25.98 */
+    FX_CHECK_EQ(lit(&k, (fx_rect){0, 9 + 27, 100, 60}), 0);
+    FX_CHECK_EQ(lit(&k, (fx_rect){0, 0, 100, 9}), 0);
     free(k.px);
 }
 

@@ -55,10 +55,10 @@ FX_TEST(turtle_moves_and_lines)
     FX_CHECK_EQ(lit(&k), 11); /* moves draw nothing */
     fx_turtle_turn(&t, 90 << 16);
     FX_CHECK_EQ(fx_turtle_heading(&t), 90 << 16);
-    fx_turtle_forward(&t, 10 << 16, 1); /* heading 90: up the screen */
+    fx_turtle_forward(&t, 5 << 16, 1); /* heading 90: towards +y, down the screen (issue #44) */
     fx_turtle_pos(&t, &x, &y);
-    FX_CHECK(abs(x - (20 << 16)) <= 2 && abs(y - (10 << 16)) <= 2);
-    FX_CHECK(k.px[10 * 40 + 20] && k.px[20 * 40 + 20] && k.px[15 * 40 + 20]);
+    FX_CHECK(abs(x - (20 << 16)) <= 2 && abs(y - (25 << 16)) <= 2);
+    FX_CHECK(k.px[25 * 40 + 20] && k.px[20 * 40 + 20] && k.px[22 * 40 + 20] && !k.px[15 * 40 + 20]);
     FX_CHECK_EQ(t.segs, 2);
     fx_turtle_forward(&t, 5 << 16, 0);
     FX_CHECK_EQ(t.segs, 2);
@@ -74,32 +74,34 @@ FX_TEST(turtle_koch_and_hilbert)
     canvas_new(&k, 760, 300);
     fx_turtle t;
     for (uint32_t n = 0; n <= 6; n++) {
-        fx_turtle_init(&t, &k.c, 15 << 16, 280 << 16, 0);
+        fx_turtle_init(&t, &k.c, 15 << 16, 20 << 16, 0);
         FX_CHECK_EQ(fx_turtle_koch(&t, 729 << 16, n), 1ull << (2 * n));
         /* the turtle ends one length along its heading, heading unchanged */
-        FX_CHECK_MSG(abs(t.x - (744 << 16)) < 256 && abs(t.y - (280 << 16)) < 256, "order %u ends at %d,%d", n,
+        FX_CHECK_MSG(abs(t.x - (744 << 16)) < 256 && abs(t.y - (20 << 16)) < 256, "order %u ends at %d,%d", n,
                      t.x, t.y);
         FX_CHECK_EQ(fx_turtle_heading(&t), 0);
     }
-    /* the order-1 peak stands 729 sqrt(3)/6 = 210.4 px above the base */
+    /* the order-1 peak stands 729 sqrt(3)/6 = 210.4 px from the base, towards
+     * +y: below it on the y-down screen (issue #44; above it in course mode) */
     memset(k.px, 0, 760 * 300);
-    fx_turtle_init(&t, &k.c, 15 << 16, 280 << 16, 0);
+    fx_turtle_init(&t, &k.c, 15 << 16, 20 << 16, 0);
     fx_turtle_koch(&t, 729 << 16, 1);
-    FX_CHECK(k.px[(280 - 210) * 760 + 15 + 364] != 0);
-    for (int y = 0; y < 280 - 211; y++)
+    FX_CHECK(k.px[(20 + 210) * 760 + 15 + 364] != 0);
+    for (int y = 20 + 211; y < 300; y++)
         for (int x = 0; x < 760; x++)
             FX_CHECK(k.px[y * 760 + x] == 0);
     FX_CHECK_EQ(fx_turtle_koch(&t, 1 << 16, FX_TURTLE_MAX_ORDER + 1), 0);
     free(k.px);
 
-    /* Hilbert order 4, step 4: 255 segments through all 16 x 16 cell centres */
+    /* Hilbert order 4, step 4: 255 segments through all 16 x 16 cell
+     * centres; parity +1 turns towards +y first, down the screen */
     canvas_new(&k, 70, 70);
-    fx_turtle_init(&t, &k.c, 2 << 16, 66 << 16, 0);
+    fx_turtle_init(&t, &k.c, 2 << 16, 4 << 16, 0);
     FX_CHECK_EQ(fx_turtle_hilbert(&t, 4 << 16, 4, 1), 255);
     for (int j = 0; j < 16; j++)
         for (int i = 0; i < 16; i++)
-            FX_CHECK_MSG(k.px[(66 - 4 * j) * 70 + 2 + 4 * i], "cell %d,%d", i, j);
-    FX_CHECK(abs(t.x - (62 << 16)) < 64 && abs(t.y - (66 << 16)) < 64); /* ends at the other bottom corner */
+            FX_CHECK_MSG(k.px[(4 + 4 * j) * 70 + 2 + 4 * i], "cell %d,%d", i, j);
+    FX_CHECK(abs(t.x - (62 << 16)) < 64 && abs(t.y - (4 << 16)) < 64); /* ends at the other top corner */
     free(k.px);
 }
 
@@ -576,7 +578,7 @@ static void keep_line(void *user, const char *line)
 {
     traced *t = user;
     /* only the commands' reports: the line drawing traces its every step */
-    static const char *const keep[] = {"boxdim:", "turtle:", "julia", "collage:", "fractcompress:"};
+    static const char *const keep[] = {"boxdim:", "turtle:", "julia", "collage:", "fractcompress:", "orbit:"};
     int want = 0;
     for (unsigned i = 0; i < sizeof keep / sizeof keep[0]; i++)
         want |= strncmp(line, keep[i], strlen(keep[i])) == 0;
@@ -605,7 +607,7 @@ FX_TEST(scene_boxdim_and_turtle_report)
     traced t;
     fx_scene sc;
     FX_CHECK_EQ(run_traced(&t,
-                           "size 760 300\nclear #000000\ncolor #FFFFFF\nkoch 15 280 744 280 6\n"
+                           "size 760 300\nclear #000000\ncolor #FFFFFF\nkoch 15 20 744 20 6\n"
                            "boxdim 0 0 760 300 #000000 2 64 1.2619\n",
                            &sc),
                 0);
@@ -628,7 +630,7 @@ FX_TEST(scene_boxdim_and_turtle_report)
                            "turtle forward 10\nturtle linerel -5 0\nturtle where\n",
                            &sc),
                 0);
-    FX_CHECK_MSG(strstr(t.log, "turtle: CP (25.0000, 40.0000) heading 90.0000, 3 segments") != NULL, "%s", t.log);
+    FX_CHECK_MSG(strstr(t.log, "turtle: CP (25.0000, 60.0000) heading 90.0000, 3 segments") != NULL, "%s", t.log);
     FX_CHECK_EQ(run_traced(&t, "turtle koch 10 11\n", &sc), -FX_EINVAL);
     FX_CHECK_MSG(strstr(sc.err, "0..10") != NULL, "%s", sc.err);
 
@@ -682,4 +684,100 @@ FX_TEST(julia_int64_corners)
     FX_CHECK(x == 32 - 2048 && y == 32 - 2048);
     fx_julia_to_pixel(&v, 0, 0, &x, &y); /* the centre */
     FX_CHECK(x == 32 && y == 32);
+}
+
+/* Issue #44: c may come first as c=RE,IM, which cannot be taken for the
+ * view's centre; it draws and reports exactly what the positional form does
+ * with the same centre and c. */
+FX_TEST(julia_c_first_form)
+{
+    static const char *const pairs[][2] = {
+        {"julia 0 0 -0.123 0.745 3 40\n", "julia c=-0.123,0.745 0 0 3 40\n"},
+        {"juliaset random 0.1 0 -1 0 3 4000 7\n", "juliaset random c=-1,0 0.1 0 3 4000 7\n"},
+        {"juliaset tree 0 0 -0.123 0.745 3 9\n", "juliaset tree c=-0.123,0.745 0 0 3 9\n"},
+        {"juliafixed 0 0 -0.75 0.1 3\n", "juliafixed c=-0.75,0.1 0 0 3\n"},
+        {"juliabasins 0 0 -0.123 0.745 3 60\n", "juliabasins c=-0.123,0.745 0 0 3 60\n"},
+    };
+    static uint32_t first[120 * 80];
+    static char log0[8192];
+    for (unsigned i = 0; i < sizeof pairs / sizeof pairs[0]; i++) {
+        traced t;
+        fx_scene sc;
+        char s[200];
+        snprintf(s, sizeof s, "size 120 80\nclear #000000\ncolor #FFFFFF\n%s", pairs[i][0]);
+        FX_CHECK_EQ(run_traced(&t, s, &sc), 0);
+        memcpy(first, t.b.mem, sizeof first);
+        snprintf(log0, sizeof log0, "%s", t.log);
+        int lit = 0;
+        for (int k = 0; k < 120 * 80; k++)
+            lit += first[k] != 0xFF000000u && first[k] != 0;
+        snprintf(s, sizeof s, "size 120 80\nclear #000000\ncolor #FFFFFF\n%s", pairs[i][1]);
+        FX_CHECK_EQ(run_traced(&t, s, &sc), 0);
+        FX_CHECK_MSG(memcmp(first, t.b.mem, sizeof first) == 0 && lit > 20, "%s: differs (%d lit)", pairs[i][1], lit);
+        FX_CHECK_MSG(strcmp(log0, t.log) == 0, "%s\n%s", log0, t.log);
+    }
+    /* the worked numbers: c = -0.75 + 0.1i has fixed points z = 1/2 +- sqrt(1/4 - c) */
+    traced t;
+    fx_scene sc;
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njuliafixed c=-0.75,0 0 0 3\n", &sc), 0);
+    FX_CHECK_MSG(strstr(t.log, "z1 = 1.5000 0.0000 i, |2z| = 3.0000, repelling") != NULL, "%s", t.log);
+    FX_CHECK_MSG(strstr(t.log, "z2 = -0.5000 0.0000 i, |2z| = 1.0000, neutral") != NULL, "%s", t.log);
+    /* bad c= forms name the form and the part */
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njulia c=0.5 0 0 3 40\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "c=RE,IM") != NULL, "%s", sc.err);
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njuliafixed c=0,2.5 0 0 3\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "IM 2.5 out of range, expected -2..2") != NULL, "%s", sc.err);
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njuliabasins c=x,0 0 0 3 10\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "RE: expected a decimal number, got 'x'") != NULL, "%s", sc.err);
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njulia c=0,0 0 0 3\n", &sc), -FX_EINVAL); /* MAXITER missing */
+    /* the positional form's names say which pair is c */
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\njulia 0 0 -20 0 3 40\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "C_RE -20 out of range") != NULL, "%s", sc.err);
+}
+
+/* Issue #44: the orbit of 0, the notes' way into M, with their cases. */
+FX_TEST(orbit0_classifies_the_notes_cases)
+{
+    fx56 zr[300], zi[300];
+    fx_orbit0_info o;
+    /* c = -1: 0, -1, 0, -1, ...: a cycle of period 2 */
+    FX_CHECK_EQ(fx_orbit0(-FX56_ONE, 0, 64, zr, zi, &o), FX_ORBIT0_CYCLE);
+    FX_CHECK(o.period == 2 && zr[1] == -FX56_ONE && zr[2] == 0 && zi[3] == 0);
+    /* c = 1: 0, 1, 2, 5: explodes at step 3 */
+    FX_CHECK_EQ(fx_orbit0(FX56_ONE, 0, 64, zr, zi, &o), FX_ORBIT0_ESCAPES);
+    FX_CHECK(o.steps == 3 && o.re == 5 * FX56_ONE && zr[2] == 2 * FX56_ONE);
+    /* c = -2: 0, -2, 2, 2: lands on the fixed point 2 */
+    FX_CHECK_EQ(fx_orbit0(-2 * FX56_ONE, 0, 64, zr, zi, &o), FX_ORBIT0_FIXED);
+    FX_CHECK(o.re == 2 * FX56_ONE && o.period == 1);
+    /* c = 0.1 + 0.3i: z* = (1 - sqrt(1 - 4c)) / 2 = 0.0073489 + 0.3044751i,
+     * multiplier 2 z* of modulus 0.609 at 88.6 degrees: a spiral */
+    FX_CHECK_EQ(fx_orbit0(d56(0.1), d56(0.3), 200, zr, zi, &o), FX_ORBIT0_SPIRAL);
+    FX_CHECK_MSG(fabs(o.re / 72057594037927936.0 - 0.007348908) < 1e-5 &&
+                     fabs(o.im / 72057594037927936.0 - 0.304475119) < 1e-5,
+                 "z* %f %f", o.re / 72057594037927936.0, o.im / 72057594037927936.0);
+    /* Douady's rabbit: a 3-cycle */
+    FX_CHECK_EQ(fx_orbit0(d56(-0.12), d56(0.74), 200, zr, zi, &o), FX_ORBIT0_CYCLE);
+    FX_CHECK_EQ(o.period, 3);
+    /* c = 1/4, the cusp: creeps towards 1/2, no cycle within 200 values */
+    FX_CHECK_EQ(fx_orbit0(FX56_ONE / 4, 0, 200, NULL, NULL, &o), FX_ORBIT0_BOUNDED);
+    FX_CHECK(o.re > FX56_ONE / 2 - FX56_ONE / 100 && o.re < FX56_ONE / 2);
+    FX_CHECK_EQ(fx_orbit0(0, 0, 0, NULL, NULL, &o), -FX_EINVAL);
+    FX_CHECK_EQ(fx_orbit0(17 * FX56_ONE, 0, 5, NULL, NULL, &o), -FX_EINVAL);
+    /* the script command prints the values and the class */
+    traced t;
+    fx_scene sc;
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\norbit -1 0 50\norbit 1 0 50\norbit 0.1 0.3 200 0 0 2\n", &sc), 0);
+    FX_CHECK_MSG(strstr(t.log, "orbit: z1 = -1.0000 0.0000 i\norbit: z2 = 0.0000 0.0000 i") != NULL, "%s", t.log);
+    FX_CHECK_MSG(strstr(t.log, "orbit: c = -1.0000 0.0000 i: cycle of period 2") != NULL, "%s", t.log);
+    FX_CHECK_MSG(strstr(t.log, "orbit: z3 = 5.0000 0.0000 i\norbit: c = 1.0000 0.0000 i: explodes, |z3| > 2") != NULL,
+                 "%s", t.log);
+    FX_CHECK_MSG(strstr(t.log, "spiral into a fixed point, z199 = 0.0073 0.3044 i") != NULL ||
+                     strstr(t.log, "spiral into a fixed point, z199 = 0.0073 0.3045 i") != NULL,
+                 "%s", t.log);
+    int lit = 0;
+    for (int i = 0; i < 120 * 80; i++)
+        lit += t.b.mem[i] != 0 && t.b.mem[i] != 0xFF000000u;
+    FX_CHECK(lit > 30);
+    FX_CHECK_EQ(run_traced(&t, "size 120 80\norbit 0 0 2000\n", &sc), -FX_EINVAL);
+    FX_CHECK_MSG(strstr(sc.err, "1..1024") != NULL, "%s", sc.err);
 }

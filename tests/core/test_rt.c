@@ -536,6 +536,57 @@ FX_TEST(rt_shadow_feelers_darken_what_the_light_cannot_see)
     FX_CHECK(far.r >= 0 && far.r < 2);
 }
 
+/* Issue #44: glass casts no black shadow. A shadow feeler passes a surface
+ * of transparency kt with kt of the light (the documented approximation:
+ * straight, dimmed, no refraction), so an invisible lens (index 1, kt = 1)
+ * leaves the floor as lit as without it, a ball of kt = 1/2 passes
+ * 1/2 x 1/2 = 1/4 of it through its two surfaces, and an opaque ball
+ * behind the glass still blocks everything. */
+FX_TEST(rt_shadow_feelers_pass_through_glass)
+{
+    fx_rt_object mem[4];
+    fx_rt_scene s;
+    fx_vec3 down = fx_vec3_make(0, -FX16_ONE, 0), below = fx_vec3_make(FX16_ONE / 100, -FX16_ONE / 2 - 100, 0);
+    fx3d_rgb lit = {0, 0, 0};
+    for (int k = 0; k < 4; k++) {
+        fx_rt_scene_init(&s, mem, 4);
+        fx_mat4 fl = floor_matrix(), sp;
+        fx_rt_material white = matte(0xFFFFFF), glass = matte(0xFFFFFF);
+        glass.transparency = k == 1 ? FX16_ONE : FX16_HALF;
+        glass.ior = FX16_ONE;
+        fx_rt_add_shape(&s, FX_RT_PLANE, 0, &fl, &white);
+        fx_mat4_scale(&sp, FX16_HALF, FX16_HALF, FX16_HALF);
+        if (k > 0)
+            fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &sp, &glass);
+        if (k == 3) { /* an opaque ball above the glass one */
+            fx_mat4 t, sc2;
+            fx_mat4_translate(&t, 0, 3 * FX16_ONE, 0);
+            fx_mat4_scale(&sc2, FX16_HALF, FX16_HALF, FX16_HALF);
+            fx_mat4_mul(&sp, &t, &sc2);
+            fx_rt_add_shape(&s, FX_RT_SPHERE, 0, &sp, &white);
+        }
+        fx_rt_add_light(&s, fx_vec3_make(0, 10 * FX16_ONE, 0), fx3d_rgb_from_color(0xFFFFFF), 0);
+        /* the floor point straight under the ball, seen from just above it */
+        fx3d_rgb under = fx_rt_trace_ray(&s, below, down, 0, 0);
+        if (k == 0)
+            lit = under;
+        else if (k == 1)
+            FX_CHECK_MSG(under.r == lit.r, "invisible lens: %d, no lens %d", under.r, lit.r);
+        else if (k == 2)
+            FX_CHECK_MSG(abs(under.r - lit.r / 4) <= 2, "kt 1/2: %d, want %d", under.r, lit.r / 4);
+        else
+            FX_CHECK_EQ(under.r, 0);
+    }
+    FX_CHECK(lit.r > FX16_ONE / 2);
+    /* the feeler's own numbers */
+    int blocker;
+    FX_CHECK_EQ(rt_feeler_transmit(&s, below, fx_vec3_make(0, FX16_ONE, 0), FX_RT_EPS, 10 * FX16_ONE, &blocker), 0);
+    FX_CHECK_EQ(blocker, 2);
+    FX_CHECK_EQ(rt_feeler_transmit(&s, below, fx_vec3_make(0, FX16_ONE, 0), FX_RT_EPS, 2 * FX16_ONE, &blocker),
+                FX16_ONE / 4);
+    FX_CHECK_EQ(blocker, -1);
+}
+
 typedef struct lines {
     char text[1 << 16];
     size_t len;

@@ -144,3 +144,49 @@ FX_TEST(scene_clippoly_pieces)
     FX_CHECK_EQ(run("size 32 32\nclippoly wa fill 0 0 3 0\n"), -FX_EINVAL);
     FX_CHECK(strstr(sc.err, "at least 3 vertices") != NULL);
 }
+
+/* Issue #44: a clipped outline keeps its border lines on all four window
+ * edges, the right and bottom ones as well as the left and top (they lie
+ * half a pixel out, on the pixel squares' border, and used to round out of
+ * the clip: 40 pixels in the left column, 1 in the right one). */
+static int col_lit(int x, int y0, int y1)
+{
+    int n = 0;
+    for (int y = y0; y <= y1; y++)
+        n += lit(x, y);
+    return n;
+}
+static int row_lit(int y, int x0, int x1)
+{
+    int n = 0;
+    for (int x = x0; x <= x1; x++)
+        n += lit(x, y);
+    return n;
+}
+
+FX_TEST(scene_clippoly_outline_keeps_every_window_edge)
+{
+    const char *algo[] = {"sh", "wa"};
+    for (int a = 0; a < 2; a++) {
+        char s[200];
+        /* the window's frame: a polygon covering it draws exactly its border */
+        snprintf(s, sizeof s, "size 32 32\nclip 5 6 26 20\nclippoly %s outline -10 -10 50 -10 50 50 -10 50\n", algo[a]);
+        FX_CHECK_EQ(run(s), 0);
+        FX_CHECK_MSG(col_lit(5, 6, 20) == 15 && col_lit(26, 6, 20) == 15, "%s: left %d right %d", algo[a],
+                     col_lit(5, 6, 20), col_lit(26, 6, 20));
+        FX_CHECK_MSG(row_lit(6, 5, 26) == 22 && row_lit(20, 5, 26) == 22, "%s: top %d bottom %d", algo[a],
+                     row_lit(6, 5, 26), row_lit(20, 5, 26));
+        FX_CHECK_EQ(count(), 2 * 15 + 2 * 22 - 4);
+        /* crossing the right edge only: the cut side is column 26, rows 8..18 */
+        snprintf(s, sizeof s, "size 32 32\nclip 5 6 26 20\nclippoly %s outline 10 8 40 8 40 18 10 18\n", algo[a]);
+        FX_CHECK_EQ(run(s), 0);
+        FX_CHECK_MSG(col_lit(26, 8, 18) == 11 && col_lit(10, 8, 18) == 11, "%s: cut side %d", algo[a],
+                     col_lit(26, 8, 18));
+        FX_CHECK_EQ(count(), 2 * 11 + 2 * 17 - 4);
+        /* and the bottom edge only */
+        snprintf(s, sizeof s, "size 32 32\nclip 5 6 26 20\nclippoly %s outline 8 10 20 10 20 40 8 40\n", algo[a]);
+        FX_CHECK_EQ(run(s), 0);
+        FX_CHECK_MSG(row_lit(20, 8, 20) == 13, "%s: cut side %d", algo[a], row_lit(20, 8, 20));
+        FX_CHECK_EQ(count(), 2 * 13 + 2 * 11 - 4);
+    }
+}

@@ -351,6 +351,34 @@ static rgb texture(const fx_rt_material *m, const double P[3])
     return o;
 }
 
+/* The product of kt over the surfaces the line S + c t crosses with
+ * tmin < t < tmax inside the world. */
+static double transmit(const fx_rt_scene *s, const double S[3], const double c[3], double tmin, double tmax)
+{
+    double T = 1;
+    for (int i = 0; i < s->n; i++) {
+        if (!s->obj[i].top)
+            continue;
+        rtref_list l;
+        rtref_hits(s, i, S, c, &l);
+        for (int k = 0; k < l.n; k++) {
+            double t = l.h[k].t, W = FX_RT_WORLD;
+            if (t <= tmin)
+                continue;
+            if (t >= tmax)
+                break;
+            int out = 0;
+            for (int j = 0; j < 3; j++)
+                out |= fabs(S[j] + c[j] * t) > W;
+            if (out)
+                break;
+            double kt = s->obj[l.h[k].obj].mat.transparency * Q;
+            T *= kt < 0 ? 0 : kt > 1 ? 1 : kt;
+        }
+    }
+    return T;
+}
+
 static rgb shade(const fx_rt_scene *s, const double S[3], const double c[3], int depth, double weight, long *rays)
 {
     ++*rays;
@@ -377,9 +405,12 @@ static rgb shade(const fx_rt_scene *s, const double S[3], const double c[3], int
         int so;
         ++*rays; /* the shadow feeler */
         double st = rtref_first_hit(s, P, l, FX_RT_EPS * Q, &so, sn);
+        double T = 1; /* dimmed by the transparency of each surface it crosses (issue #44) */
         if (st >= 0 && st < dist)
+            T = transmit(s, P, l, FX_RT_EPS * Q, dist);
+        if (T <= 0)
             continue;
-        double att = 1 / (1 + L->atten * Q * dist * dist);
+        double att = T / (1 + L->atten * Q * dist * dist);
         rgb Il = mk(L->color);
         I.r += Il.r * att * diff.r * lam, I.g += Il.g * att * diff.g * lam, I.b += Il.b * att * diff.b * lam;
         if (mat->shininess > 0) {

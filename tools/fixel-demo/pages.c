@@ -1000,7 +1000,11 @@ static void page_fractals(fx_ctx *c, demo_state *st)
     demo_text(c, 14, by + 5, ACCENT, "Koch (turtle), n=%d", st->koch_order);
     color(c, 0xFF5CE1E6u);
     fx_turtle t;
-    fx_turtle_init(&t, c, 22 << 16, (by + 118) << 16, 60 << 16);
+    /* The turtle turns from +x towards +y (clockwise on this y-down page),
+     * so the flake is walked counter-clockwise on the triangle pointing
+     * down: top side right to left, then -120 twice. By its six-fold
+     * symmetry it is the flake on the triangle pointing up, same centre. */
+    fx_turtle_init(&t, c, 146 << 16, (by + 118 - 72) << 16, 180 << 16);
     for (int i = 0; i < 3; i++) {
         fx_turtle_koch(&t, 124 << 16, (uint32_t)st->koch_order);
         fx_turtle_turn(&t, -120 * 65536);

@@ -36,11 +36,18 @@ course notes and GLUT do (the same drawing mirrored top to bottom; text
 stays upright).
 A positive angle turns from +x towards +y for
 .BR rotate ,
-.B arc
-and
-.BR pie
+.BR arc ,
+.B pie
+and the
+.B turtle
 alike: clockwise on the screen by default, counter\-clockwise after
-.BR "coords course" .
+.BR "coords course" ;
+so
+.B koch
+and
+.B turtle koch
+from left to right bulge above the base line in the course frame (as in
+the notes) and below it on the screen.
 3D, ray\-tracing and visible\-surface commands have y\-up cameras of their
 own and draw the same picture in both.
 .PP

@@ -56,6 +56,13 @@ static inline int fx_clip_point(fx_rect w, int32_t x, int32_t y)
 
 /* The course's 4-bit region code of pixel (x, y) against window w. */
 unsigned fx_clip_region_code(fx_rect w, int32_t x, int32_t y);
+/* The same code as the notes also compute it, from the sign bits of the
+ * four differences ywmax - y, y - ywmin, xwmax - x, x - xwmin (bits T, B, R,
+ * L; a negative difference sets its bit), with xwmax = w.x1 - 1 and ywmax =
+ * w.y1 - 1. The differences go to diff[4] in that order when diff is not
+ * NULL. Equal to fx_clip_region_code for every point and window (tested);
+ * the Cohen-Sutherland trace prints it, the comparisons stay the fast path. */
+unsigned fx_clip_region_code_signs(fx_rect w, int32_t x, int32_t y, int64_t diff[4]);
 /* Cohen-Sutherland's trivial tests on two codes: 1 accept (both 0000),
  * -1 reject (AND != 0, e.g. 1001 & 0101), 0 undecided. */
 int fx_clip_trivial(unsigned code0, unsigned code1);

@@ -156,6 +156,20 @@ void fx_fill_tri_gouraud8(const fx_ctx *c, const fx8 *xy, const fx_color *col);
  * triangles share edges, so every pixel is covered once. c, xy or col NULL,
  * or n > INT32_MAX / 2: nothing is drawn. */
 void fx_fill_poly_gouraud(const fx_ctx *c, const int32_t *xy, const fx_color *col, int32_t n);
+/* The notes' scan-line Gouraud (gouraud_scan.c): on each row the colours
+ * are interpolated along the two edges the row crosses, then across the
+ * span between them, for any convex polygon at once. It differs from the
+ * fan above for four or more vertices: the notes' quad with red, green,
+ * blue and white corners has centre (128,128,128) here and (128,0,128) in
+ * the fan, whose first triangle cuts along the red-blue diagonal. Same
+ * coverage (fill.h's rule; pixel for pixel fx_fill_poly's for a convex
+ * polygon), rounding to nearest per channel (alpha too), blending
+ * honoured, fill style ignored. n 3..FX_GOURAUD_SCAN_MAX, coordinates within
+ * +-FX_GOURAUD_SCAN_COORD (the products stay in int64); else -FX_EINVAL and
+ * nothing drawn. Work bounded by the visible rows and columns. */
+#define FX_GOURAUD_SCAN_MAX 1024
+#define FX_GOURAUD_SCAN_COORD (1 << 20)
+int fx_fill_poly_gouraud_scan(const fx_ctx *c, const int32_t *xy, const fx_color *col, int32_t n);
 
 /* ---- seed fills (seedfill.c) ----
  *

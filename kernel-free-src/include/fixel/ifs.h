@@ -54,6 +54,23 @@ int32_t fx_ifs_chaos(const fx_ctx *c, fx_rect dest, const fx_ifs *s, uint32_t np
  * drawn or a negative error. */
 int32_t fx_ifs_copier(const fx_ctx *c, fx_rect dest, const fx_ifs *s, uint32_t depth);
 
+/* The copier started from any picture (issue #44): what is drawn in dest
+ * (every pixel not of colour bg, a script-drawn shape or an image) is the
+ * machine's input; its images under every composition of `depth` maps
+ * replace it, each pixel's centre mapped as a world point (the window
+ * spread over dest) and plotted in its colour. Whatever the picture, the
+ * output tends to the same attractor: that is the notes' point. work holds
+ * cap pixels (-FX_ENOSPC for a bigger picture); the plots, pixels x n^depth,
+ * are at most FX_IFS_PICTURE_WORK (-FX_E2BIG). Returns the picture's
+ * pixel count, or -FX_EINVAL. */
+#define FX_IFS_PICTURE_WORK (1u << 24)
+typedef struct fx_ifs_pixel {
+    fx16 x, y; /* world point, Q16.16 */
+    fx_color color;
+} fx_ifs_pixel;
+int32_t fx_ifs_copier_picture(const fx_ctx *c, fx_rect dest, const fx_ifs *s, uint32_t depth, fx_color bg,
+                              fx_ifs_pixel *work, uint32_t cap);
+
 /* The pixel of world point (x, y) (Q16.16) in dest, for callers and tests. */
 void fx_ifs_to_pixel(const fx_ifs *s, fx_rect dest, int64_t x, int64_t y, int32_t *px,
                      int32_t *py);

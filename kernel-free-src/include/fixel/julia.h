@@ -73,6 +73,36 @@ typedef struct fx_julia_cycle {
 } fx_julia_cycle;
 int fx_julia_attractor(fx56 cre, fx56 cim, fx_julia_cycle *out);
 
+/* The orbit of 0 (orbit.c), the notes' way into the Mandelbrot set:
+ * z_0 = 0, z_(k+1) = z_k^2 + c, in Q8.56, for up to n values (zre / zim, if
+ * not NULL, get z_0 .. z_steps: n entries at most), classified as
+ *   ESCAPES  |z_k| > 2 at k = steps: it explodes, c is outside M;
+ *   FIXED    z_(n-1) = z_(n-2) to within 2^-20 and z* real (c real: the
+ *            orbit settles along the real line, or lands on it exactly);
+ *   SPIRAL   the same with z* not real: 2 z*, the multiplier, turns each
+ *            step, so the orbit spirals in;
+ *   CYCLE    the smallest p in 2..FX_JULIA_MAX_PERIOD with z_(n-1) =
+ *            z_(n-1-p) to within 2^-20;
+ *   BOUNDED  none of these within n values (a slow or chaotic orbit).
+ * re / im: the last value (the escaping one, or the point reached).
+ * Returns the kind, or -FX_EINVAL (n outside 1..FX_ORBIT0_MAX, |c| parts
+ * above 16, out NULL). */
+#define FX_ORBIT0_MAX 65536
+typedef enum fx_orbit0_kind {
+    FX_ORBIT0_ESCAPES,
+    FX_ORBIT0_FIXED,
+    FX_ORBIT0_SPIRAL,
+    FX_ORBIT0_CYCLE,
+    FX_ORBIT0_BOUNDED
+} fx_orbit0_kind;
+typedef struct fx_orbit0_info {
+    fx_orbit0_kind kind;
+    uint32_t steps; /* the escape step, or the last step followed */
+    int period;     /* FIXED / SPIRAL: 1; CYCLE: p; else 0 */
+    fx56 re, im;
+} fx_orbit0_info;
+int fx_orbit0(fx56 cre, fx56 cim, uint32_t n, fx56 *zre, fx56 *zim, fx_orbit0_info *out);
+
 /* Basins of attraction over frame pixels r (clipped to the frame and s):
  * points that escape take esc's colour for their dwell (the basin of
  * infinity, exactly as fx_fractal_render colours them); points whose orbit

@@ -5,7 +5,9 @@
  *
  * Koch: an integer turtle on 40.24 fixed-point positions. Each segment from
  * S to E of order m > 0 becomes four of order m - 1: forward a third, turn
- * +60 degrees, forward, turn -120, forward, turn +60, forward to E (turns are
+ * +60 degrees, forward, turn -120, forward, turn +60, forward to E (turning
+ * from +x towards +y of the frame, as every angle does: K_n from left to
+ * right bulges upward after 'coords course', downward on the screen; turns are
  * binary angles; the last piece always ends exactly at E, so the vertices of
  * a sub-curve depend only on its own S and E). A sub-curve whose bounding
  * box (its chord's box grown by 0.3 of |dx| + |dy| and a pixel) misses the
@@ -41,8 +43,8 @@ extern "C" {
 uint64_t fx_koch(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
                  uint32_t order);
 /* The Koch snowflake: K_n on the three sides of the equilateral triangle
- * inscribed in the circle of radius r about (cx, cy), first vertex straight
- * up, bumps pointing outward. Returns the segments drawn (3 * 4^n). */
+ * inscribed in the circle of radius r about (cx, cy), first vertex towards
+ * -y of the frame (straight up on the screen), bumps pointing outward. Returns the segments drawn (3 * 4^n). */
 uint64_t fx_koch_snowflake(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r, uint32_t order);
 
 /* fx_rand32, fx_gauss16 and fx16_exp2, which the random fractals use, are

@@ -33,7 +33,8 @@
 extern "C" {
 #endif
 
-/* nblades blades rooted on the bottom row of r and reaching up to its
+/* nblades blades rooted on the bottom row of r as the picture shows it
+ * (r.y1 - 1 on the screen, r.y0 after 'coords course') and reaching up to its
  * height (at most FX_GRASS_MAX_BLADES; r within +-32767, the turtle's
  * range). Returns the segments drawn or -FX_EINVAL. */
 #define FX_GRASS_MAX_BLADES 65536

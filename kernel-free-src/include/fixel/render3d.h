@@ -171,6 +171,7 @@ typedef struct fx3d {
     /* Multi-pass lighting (fx3d_pass) */
     int pass;             /* fx3d_pass_kind */
     int pass_light;
+    fx16 pass_dim;        /* fx3d_pass_ambient_dim's share, kept by the light passes */
     /* statistics of the last fx3d_draw (for tests and benches) */
     int32_t stat_culled, stat_drawn, stat_clipped;
     /* Texture (fx3d_texture): meshes with uv are drawn with it in FX3D_FILL. */
@@ -405,6 +406,14 @@ int fx3d_shadow_use(fx3d *r, fx3d_shadowmap *const *maps, int n);
  * a bad kind or light; -FX_ENOTSUP for a light pass under the painter's
  * visibility, which has no depth buffer to compare with. */
 int fx3d_pass(fx3d *r, int kind, int light);
+/* The ambient pass with the notes' dim diffuse light, "to prevent curved
+ * surfaces from appearing flat in shadow": it adds dim (0..1) of every
+ * light's diffuse term (no specular, no shadow test), and the light passes
+ * after it add 1 - dim of their light's diffuse (and all of its specular),
+ * so a lit point ends as bright as without the option (up to rounding) and
+ * a shadowed one keeps dim of its shading. fx3d_pass(AMBIENT or ALL)
+ * resets dim to 0. -FX_EINVAL for dim outside 0..1. */
+int fx3d_pass_ambient_dim(fx3d *r, fx16 dim);
 
 /* Lighting of one point (eye-space position and unit normal) with the
  * current lights and material; what the renderer evaluates per vertex

@@ -4,13 +4,17 @@
  * lineRel, turn and forward, plus the Koch curve and the Hilbert curve
  * written with them.
  *
- * Positions are Q16.16 pixels (pixel centres at integers, y grows downward)
- * and are kept exactly as given: a segment is drawn with fx_line between
+ * Positions are Q16.16 pixels of the context's frame (pixel centres at
+ * integers; y grows downward on the screen, upward after
+ * fx_ctx_set_coords(FX_COORDS_COURSE)) and are kept exactly as given: a segment is drawn with fx_line between
  * the endpoints rounded to nearest (ties up), so lineTo(p) after moveTo(p)
  * lights p. The heading is in degrees (Q16.16, kept in [0, 360) so the
- * notes' turns add up exactly), 0 pointing along +x and growing
- * counter-clockwise as seen on the screen (the notes' turn(+60) turns
- * left), so forward(d) moves by (d cos h, -d sin h) with fx_sin30/fx_cos30. Moves that would leave
+ * notes' turns add up exactly), 0 pointing along +x and growing from +x
+ * towards +y of the frame, the one angle rule of fx_rotate and fx_arc
+ * (CONVENTIONS.md "Angles"): counter-clockwise in the course frame, where
+ * the notes' turn(+60) turns left, clockwise on the y-down screen. So
+ * forward(d) moves by (d cos h, d sin h) with fx_sin30/fx_cos30.
+ * (Until issue #44 the turtle alone turned the other way.) Moves that would leave
  * the Q16.16 range saturate at +-32767.99998 px; lines out there are
  * clipped like any fx_line.
  */
@@ -32,7 +36,7 @@ typedef struct fx_turtle {
     uint64_t segs;     /* segments drawn so far */
 } fx_turtle;
 
-/* A turtle at (x, y) heading `deg` degrees (Q16.16) counter-clockwise from +x. */
+/* A turtle at (x, y) heading `deg` degrees (Q16.16) from +x towards +y. */
 void fx_turtle_init(fx_turtle *t, const fx_ctx *c, fx16 x, fx16 y, fx16 deg);
 /* The current position (CP) and the heading in degrees (0 .. 360). */
 void fx_turtle_pos(const fx_turtle *t, fx16 *x, fx16 *y);
