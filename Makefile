@@ -377,8 +377,15 @@ INSTALL_ENV = DESTDIR='$(DESTDIR)' PREFIX='$(PREFIX)' BINDIR='$(BINDIR)' LIBDIR=
   SYSCONFDIR='$(SYSCONFDIR)' SYSTEMDUNITDIR='$(SYSTEMDUNITDIR)' VERSION='$(VERSION)' SOMAJOR='$(SOMAJOR)' \
   BUILD='$(BUILD)' TOOLS='$(INSTALL_TOOLS)' LIBS_PRIVATE='$(strip $(PKG_LIBS) -lpthread -lm)'
 
+# The API reference as section-3 man pages (man fx_line, man 3 fixel), from
+# the public headers' comments (tools/gen/apiref.sh; docs/api/ is its HTML).
+API_MAN := $(BUILD)/man/man3/fixel.3
+$(API_MAN): $(PUBLIC_HEADERS) tools/gen/apiref.sh
+	@$(if $(Q),echo "  GEN     $(@D) (API reference)")
+	$(Q)sh tools/gen/apiref.sh --man $(BUILD)/man
+
 # What install installs, built (debian/rules builds this, not fixel-bench).
-install-build: lib $(INSTALL_TOOLS:%=$(BUILD)/bin/%)
+install-build: lib $(INSTALL_TOOLS:%=$(BUILD)/bin/%) $(API_MAN)
 
 install: install-build
 	@$(INSTALL_ENV) sh tools/install.sh install
