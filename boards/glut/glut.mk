@@ -17,21 +17,25 @@ $(GLUT_OBJ): BASEFLAGS += -Iboards/glut/include
 
 $(GLUT_A): $(GLUT_OBJ)
 	@mkdir -p $(dir $@)
-	rm -f $@
-	$(AR) rcs $@ $^
+	$(Q)rm -f $@
+	@$(if $(Q),echo "  AR      $@")
+	$(Q)$(AR) rcs $@ $^
 
 $(GLUT_SO): $(GLUT_OBJ) $(LIB_SO)
-	$(CC) -shared -Wl,-soname,libfixel-glut.so.$(SOMAJOR) $(SANFLAGS) $(LDFLAGS) -o $@ $(GLUT_OBJ) -L$(BUILD) -lfixel $(LDLIBS) -lm
-	ln -sf libfixel-glut.so.$(VERSION) $(BUILD)/libfixel-glut.so.$(SOMAJOR)
-	ln -sf libfixel-glut.so.$(VERSION) $(BUILD)/libfixel-glut.so
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) -shared -Wl,-soname,libfixel-glut.so.$(SOMAJOR) $(SANFLAGS) $(LDFLAGS) -o $@ $(GLUT_OBJ) -L$(BUILD) -lfixel $(LDLIBS) -lm
+	$(Q)ln -sf libfixel-glut.so.$(VERSION) $(BUILD)/libfixel-glut.so.$(SOMAJOR)
+	$(Q)ln -sf libfixel-glut.so.$(VERSION) $(BUILD)/libfixel-glut.so
 
 $(GLUT_PC): boards/glut/glut.mk
 	@mkdir -p $(dir $@)
-	printf 'prefix=%s\nlibdir=$${prefix}/lib\nincludedir=$${prefix}/include\n\nName: fixel-glut\nDescription: GLUT and OpenGL 1.x immediate mode on fixel framebuffers\nVersion: %s\nRequires.private: fixel\nLibs: -L$${libdir} -lfixel-glut -lfixel\nLibs.private: -lm -lpthread\nCflags: -I$${includedir}/fixel-glut\n' \
+	@$(if $(Q),echo "  GEN     $@")
+	$(Q)printf 'prefix=%s\nlibdir=$${prefix}/lib\nincludedir=$${prefix}/include\n\nName: fixel-glut\nDescription: GLUT and OpenGL 1.x immediate mode on fixel framebuffers\nVersion: %s\nRequires.private: fixel\nLibs: -L$${libdir} -lfixel-glut -lfixel\nLibs.private: -lm -lpthread\nCflags: -I$${includedir}/fixel-glut\n' \
 	  '$(PREFIX)' '$(VERSION)' > $@
 
 .PHONY: glut install-glut uninstall-glut
 glut: $(GLUT_A) $(if $(filter 1,$(STATIC)),,$(GLUT_SO)) $(GLUT_PC)
+	$(if $(filter glut,$(MAKECMDGOALS)),$(built_without_summary))
 all: glut
 lib: glut
 
@@ -45,7 +49,8 @@ install-glut: glut
 	$(if $(filter 1,$(STATIC)),,install -m 755 $(GLUT_SO) $(DESTDIR)$(LIBDIR)/ && \
 	  ln -sf libfixel-glut.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libfixel-glut.so.$(SOMAJOR) && \
 	  ln -sf libfixel-glut.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libfixel-glut.so)
-	printf 'libdir=%s\nincludedir=%s\n\nName: fixel-glut\nDescription: GLUT and OpenGL 1.x immediate mode on fixel framebuffers\nVersion: %s\nRequires.private: fixel\nLibs: -L$${libdir} -lfixel-glut -lfixel\nLibs.private: -lm -lpthread\nCflags: -I$${includedir}/fixel-glut\n' \
+	@$(if $(Q),echo "  GEN     $@")
+	$(Q)printf 'libdir=%s\nincludedir=%s\n\nName: fixel-glut\nDescription: GLUT and OpenGL 1.x immediate mode on fixel framebuffers\nVersion: %s\nRequires.private: fixel\nLibs: -L$${libdir} -lfixel-glut -lfixel\nLibs.private: -lm -lpthread\nCflags: -I$${includedir}/fixel-glut\n' \
 	  '$(LIBDIR)' '$(INCLUDEDIR)' '$(VERSION)' > $(DESTDIR)$(PKGCONFIGDIR)/fixel-glut.pc
 install: install-glut
 
