@@ -250,7 +250,7 @@ static int headless(const char *out, int only)
         snprintf(path, sizeof path, "%s/%s.png", out, demo_pages[i].name);
         int e = fx_write_image(path, &fb.surf);
         if (e < 0) {
-            fprintf(stderr, "fixel-demo: cannot write %s: %s\n", path, strerror(-e));
+            fprintf(stderr, "fixel-demo: cannot write %s: %s%s\n", path, strerror(-e), fx_built_without_hint(e));
             rc = 1;
             continue;
         }
