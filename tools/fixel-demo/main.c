@@ -479,9 +479,8 @@ static void on_special(void *user, int key, int x, int y)
 static void pointer(demo_app *d, int x, int y, int down)
 {
     if (down == 1 && y < DEMO_TAB_H) {
-        int tw = d->st.w / demo_ntabs;
-        int p = tw ? x / tw : 0;
-        if (p >= 0 && p < demo_ntabs)
+        int p = demo_tab_at(d->st.w, x);
+        if (p >= 0)
             d->st.page = p;
     } else {
         demo_pointer(&d->st, x, y, down);
