@@ -10,7 +10,8 @@
 #   MANDIR        man1/<tool>.1 and man5/fixel-script.5 from docs/man;
 #                 man3/*.3, the API reference ($BUILD/man/man3, make install-build)
 #   SYSTEMDUNITDIR fixel-kiosk.service (ExecStart in BINDIR, config in SYSCONFDIR)
-#   DATADIR       fixel/examples/* (kiosk configs and their picture);
+#   DATADIR       fixel/examples/* (the example programs with a Makefile
+#                 for them, kiosk configs and their picture);
 #                 doc/fixel/api/*.html (the API reference, docs/api)
 # ldconfig runs after installing or removing into the live system as root
 # (DESTDIR empty). Directories: fixel's own are removed by uninstall; the
@@ -47,7 +48,15 @@ files() {
     for h in docs/api/*.html; do echo "$DATADIR/doc/fixel/api/${h##*/} $h 644"; done
     case " $TOOLS " in *" fixel-kiosk "*)
         echo "$SYSTEMDUNITDIR/fixel-kiosk.service - 644" ;; esac
-    for e in $EXAMPLES; do echo "$EXDIR/${e##*/} $e 644"; done
+    # examples.mk is the tree's own fragment; Makefile.installed is the
+    # Makefile a user runs in a copy of the installed folder
+    for e in $EXAMPLES; do
+        case $e in
+        examples/examples.mk) ;;
+        examples/Makefile.installed) echo "$EXDIR/Makefile $e 644" ;;
+        *) echo "$EXDIR/${e##*/} $e 644" ;;
+        esac
+    done
 }
 
 pc() {
