@@ -386,7 +386,8 @@ endef
 # runs `make run`; TEST_DEB_PKGS (added to by the tests/*/*.mk fragments) is
 # what `make test` needs on top; BENCH_DEB_PKGS the peers of `make bench-peers`.
 # PACKAGE:ARCH entries are multiarch libraries of the cross tests.
-DEB_PKGS := gcc libc6-dev make pkg-config libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev
+# man-db: make install installs man pages (tools, fixel-script(5), the API).
+DEB_PKGS := gcc libc6-dev make pkg-config libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev man-db
 # `make deps`: every set; `make deps-check`: the same, named "make deps".
 deps deps-check:
 	@sh tests/deps.sh --for "make deps" $(sort $(DEB_PKGS) $(TEST_DEB_PKGS) $(BENCH_DEB_PKGS))
