@@ -19,6 +19,13 @@
 BOARD    ?= pc
 -include boards/$(BOARD).mk
 
+# Build on every core unless the user chose (-j, -jN, --jobs, or MAKEFLAGS
+# from the environment). GNU make 4.3 shows -j to a makefile only through
+# its own command line, hence /proc; sub-makes inherit the jobserver.
+ifeq ($(filter -j% --jobs%,$(MAKEFLAGS) $(shell echo "$$MAKEFLAGS") $(shell tr '\0' ' ' < /proc/$$PPID/cmdline 2>/dev/null)),)
+  MAKEFLAGS += -j$(shell nproc 2>/dev/null || echo 1)
+endif
+
 CROSS_COMPILE ?=
 # make's built-in defaults (cc, ar) give way to the board's toolchain; a CC,
 # AR or NM the user sets (environment or command line) wins over both.
@@ -80,7 +87,8 @@ ifneq ($(HAVE_TEXT),1)
   $(info fixel: no smooth text (pkg-config finds no $(TEXT_PKGS)): fx_face_* report -FX_ENOTSUP)
 endif
 PKGS     := $(if $(HAVE_PNG),$(SYS_PKGS)) $(if $(HAVE_OPT),$(OPT_PKGS)) $(if $(HAVE_TEXT),$(TEXT_PKGS))
-PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null) $(if $(HAVE_PNG),,-DFX_NO_PNG -DFX_NO_ZLIB)
+PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null) $(if $(HAVE_PNG),,-DFX_NO_PNG -DFX_NO_ZLIB) \
+              $(if $(HAVE_OPT),,-DFX_NO_BOARD_LIBS)
 PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS) 2>/dev/null)
 LDFLAGS  ?=
 # STATIC=1: single static binaries to copy to a board (no shared library),
@@ -156,6 +164,7 @@ BENCH_DEB_PKGS :=
 .PHONY: all lib tools run run-nodeps test test-nodeps test-bins test-plain test-asan check-freestanding check-layers deps deps-check cross-deps-check test-setup test-setup-run install-build install uninstall \
         golden-update clean help
 all: lib tools $(BUILD)/fixel.pc
+	$(built_without_summary)
 
 # Fragments from modules (kernel rig, bench, fuzz, board layers...) add
 # targets and suites. boards/<name>.mk at the top of boards/ are the board
@@ -188,21 +197,24 @@ $(LIBS_STAMP):
 
 $(LIB_A): $(LIB_OBJ)
 	@mkdir -p $(dir $@)
-	rm -f $@
-	$(AR) rcs $@ $^
+	@$(if $(Q),echo "  AR      $@")
+	$(Q)rm -f $@
+	$(Q)$(AR) rcs $@ $^
 
 # Only the public API leaves libfixel.so: a version script naming every
 # function and object the public headers declare (docs/ABI.md).
 PUBLIC_HEADERS := $(sort $(wildcard kernel-free-src/include/fixel/*.h boards/include/fixel/*.h))
 $(BUILD)/libfixel.map: $(PUBLIC_HEADERS) tools/gen/exports.sh
 	@mkdir -p $(dir $@)
-	SOMAJOR=$(SOMAJOR) sh tools/gen/exports.sh --map "$(CC)" > $@.tmp && mv $@.tmp $@
+	@$(if $(Q),echo "  GEN     $@")
+	$(Q)SOMAJOR=$(SOMAJOR) sh tools/gen/exports.sh --map "$(CC)" > $@.tmp && mv $@.tmp $@
 
 $(LIB_SO): $(LIB_OBJ) $(BUILD)/libfixel.map
-	$(CC) -shared -Wl,-soname,libfixel.so.$(SOMAJOR) -Wl,--version-script=$(BUILD)/libfixel.map \
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) -shared -Wl,-soname,libfixel.so.$(SOMAJOR) -Wl,--version-script=$(BUILD)/libfixel.map \
 	  $(SANFLAGS) $(LDFLAGS) -o $@ $(LIB_OBJ) $(LDLIBS)
-	ln -sf libfixel.so.$(VERSION) $(BUILD)/libfixel.so.$(SOMAJOR)
-	ln -sf libfixel.so.$(VERSION) $(BUILD)/libfixel.so
+	$(Q)ln -sf libfixel.so.$(VERSION) $(BUILD)/libfixel.so.$(SOMAJOR)
+	$(Q)ln -sf libfixel.so.$(VERSION) $(BUILD)/libfixel.so
 
 # Each tools/<name>/ with a main.c becomes $(BUILD)/bin/<name>; a fragment may
 # add TOOL_LIBS_<name> (extra libraries) and TOOL_SRC_<name> (extra sources).
@@ -210,7 +222,8 @@ $(LIB_SO): $(LIB_OBJ) $(BUILD)/libfixel.map
 tool_objs = $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/$1/*.c) $(TOOL_SRC_$1))
 $(BUILD)/bin/%: $$(call tool_objs,$$*) $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(filter %.o,$^) $(LIB_A) $(TOOL_LIBS_$*) $(LDLIBS)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(filter %.o,$^) $(LIB_A) $(TOOL_LIBS_$*) $(LDLIBS)
 # A tool's objects are reached only through that chained pattern rule, so
 # make would delete them as intermediates and relink every tool on the next
 # run: keep them.
@@ -220,25 +233,30 @@ $(BUILD)/bin/%: $$(call tool_objs,$$*) $(LIB_A)
 # fixel (PKG_CONFIG_PATH=$(BUILD)); make install writes the installed one.
 $(BUILD)/fixel.pc: Makefile
 	@mkdir -p $(dir $@)
-	printf 'libdir=%s\n\nName: fixel\nDescription: integer-only fixed-point graphics on Linux framebuffers (build tree)\nVersion: %s\nLibs: -L$${libdir} -lfixel\nLibs.private: %s\nCflags: -I%s -I%s\n' \
+	@$(if $(Q),echo "  GEN     $@")
+	$(Q)printf 'libdir=%s\n\nName: fixel\nDescription: integer-only fixed-point graphics on Linux framebuffers (build tree)\nVersion: %s\nLibs: -L$${libdir} -lfixel\nLibs.private: %s\nCflags: -I%s -I%s\n' \
 	  '$(abspath $(BUILD))' '$(VERSION)' '$(strip $(PKG_LIBS) -lpthread -lm)' '$(abspath kernel-free-src/include)' '$(abspath boards/include)' > $@
 
 # ---- tests ----
 $(BUILD)/tests/registry.c: $(TEST_SRC) tests/lib/gen-registry.sh $(LIBS_STAMP)
 	@mkdir -p $(dir $@)
-	sh tests/lib/gen-registry.sh $(TEST_SRC) > $@
+	@$(if $(Q),echo "  GEN     $@")
+	$(Q)sh tests/lib/gen-registry.sh $(TEST_SRC) > $@
 
 $(BUILD)/obj/tests/registry.o: $(BUILD)/tests/registry.c
 	@mkdir -p $(dir $@)
-	$(CC) $(BASEFLAGS) -Itests/lib $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+	@$(if $(Q),echo "  CC      $<")
+	$(Q)$(CC) $(BASEFLAGS) -Itests/lib $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
 $(TEST_BIN): $(TEST_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(TEST_OBJ) $(LIB_A) $(LDLIBS) -lm
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(TEST_OBJ) $(LIB_A) $(LDLIBS) -lm
 
 $(GOLDEN_BIN): $(BUILD)/obj/tests/golden/golden.o $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $< $(LIB_A) $(LDLIBS)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $< $(LIB_A) $(LDLIBS)
 
 # The suites of one build directory (plain or sanitized); each prints its
 # own total.
@@ -365,11 +383,46 @@ endif
 endif
 endif
 
+# ---- a build never fails or half-builds silently ----
+# Without the compiler (a bare system) a make that would compile stops
+# before anything starts, with the package line `make run` gives, instead
+# of make's "gcc: No such file or directory" from whichever job ran first.
+# The goals that install the packages themselves (run, test, deps, deb...)
+# go on: their own step names or installs the compiler.
+NO_CC_GOALS := run test deps deps-check clean help uninstall test-setup test-setup-run deb bench-peers glut-deps deps-glut print-%
+ifeq ($(shell command -v $(firstword $(CC)) 2>/dev/null),)
+ifneq ($(if $(MAKECMDGOALS),$(filter-out $(NO_CC_GOALS),$(MAKECMDGOALS)),all),)
+  $(shell sh tests/deps.sh --no-install --for "make" $(if $(CROSS_COMPILE),$(CROSS_DEB_PKGS),$(sort $(DEB_PKGS))) >&2)
+  $(error the compiler $(firstword $(CC)) is not installed (the line above installs it; or set CC=...))
+endif
+endif
+
+# Without libdrm/libevdev/libgpiod or libpng the build still succeeds, with
+# stand-ins (boards/linux/absent: no DRM/KMS, no input devices, no GPIO) and
+# PPM-only images; every build entry (all, install, examples, glut) ends by
+# saying so and naming the packages that bring them (tests/deps.sh).
+BUILT_WITHOUT := $(subst $(eval) ,/,$(strip $(if $(HAVE_OPT),,libdrm/libevdev/libgpiod) $(if $(HAVE_PNG),,libpng) \
+                   $(if $(HAVE_TEXT),,FreeType/HarfBuzz/FriBiDi/fontconfig/libunibreak)))
+BUILT_WITHOUT_PKGS := $(if $(HAVE_OPT),,libdrm-dev libevdev-dev libgpiod-dev) $(if $(HAVE_PNG),,libpng-dev zlib1g-dev) \
+                      $(if $(HAVE_TEXT),,libfreetype-dev libharfbuzz-dev libfribidi-dev libfontconfig-dev libunibreak-dev) pkg-config
+define built_without_summary
+@$(if $(BUILT_WITHOUT),\
+  echo; echo "*** fixel: built WITHOUT $(BUILT_WITHOUT) ($(PKG_CONFIG) did not find them) ***"; \
+  $(if $(HAVE_OPT),,echo "  no libdrm/libevdev/libgpiod: no DRM/KMS display (fbdev and the memory display only),"; \
+    echo "    no input devices (touch, keyboard, mouse) and no GPIO buttons";) \
+  $(if $(HAVE_PNG),,echo "  no libpng: pictures are PPM only (writing or reading .png fails)";) \
+  $(if $(HAVE_TEXT),,echo "  no FreeType/HarfBuzz/FriBiDi/fontconfig/libunibreak: no smooth text (PSF fonts only)";) \
+  if sh tests/deps.sh --no-install --for "a full fixel build" $(BUILT_WITHOUT_PKGS); then \
+    echo "  (the packages are installed, but $(PKG_CONFIG) does not find them: PKG_CONFIG_PATH?)"; \
+  else echo "  then run make again (what changed is rebuilt)"; fi; echo,:)
+endef
+
 # By purpose (README, "Packages"): DEB_PKGS builds the library and tools and
 # runs `make run`; TEST_DEB_PKGS (added to by the tests/*/*.mk fragments) is
 # what `make test` needs on top; BENCH_DEB_PKGS the peers of `make bench-peers`.
 # PACKAGE:ARCH entries are multiarch libraries of the cross tests.
-DEB_PKGS := gcc libc6-dev make pkg-config libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev \
+# man-db: make install installs man pages (tools, fixel-script(5), the API).
+DEB_PKGS := gcc libc6-dev make pkg-config libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev man-db \
             libfreetype-dev libharfbuzz-dev libfribidi-dev libfontconfig-dev libunibreak-dev
 # `make deps`: every set; `make deps-check`: the same, named "make deps".
 deps deps-check:
@@ -414,11 +467,19 @@ INSTALL_ENV = DESTDIR='$(DESTDIR)' PREFIX='$(PREFIX)' BINDIR='$(BINDIR)' LIBDIR=
   SYSCONFDIR='$(SYSCONFDIR)' SYSTEMDUNITDIR='$(SYSTEMDUNITDIR)' VERSION='$(VERSION)' SOMAJOR='$(SOMAJOR)' \
   BUILD='$(BUILD)' TOOLS='$(INSTALL_TOOLS)' LIBS_PRIVATE='$(strip $(PKG_LIBS) -lpthread -lm)'
 
+# The API reference as section-3 man pages (man fx_line, man 3 fixel), from
+# the public headers' comments (tools/gen/apiref.sh; docs/api/ is its HTML).
+API_MAN := $(BUILD)/man/man3/fixel.3
+$(API_MAN): $(PUBLIC_HEADERS) tools/gen/apiref.sh
+	@$(if $(Q),echo "  GEN     $(@D) (API reference)")
+	$(Q)sh tools/gen/apiref.sh --man $(BUILD)/man
+
 # What install installs, built (debian/rules builds this, not fixel-bench).
-install-build: lib $(INSTALL_TOOLS:%=$(BUILD)/bin/%)
+install-build: lib $(INSTALL_TOOLS:%=$(BUILD)/bin/%) $(API_MAN)
 
 install: install-build
 	@$(INSTALL_ENV) sh tools/install.sh install
+	$(built_without_summary)
 
 uninstall:
 	@$(INSTALL_ENV) sh tools/install.sh uninstall
@@ -443,6 +504,9 @@ help:
 	@echo '  test-bounded         instruction budgets of the huge primitives (valgrind)'
 	@echo '  check-freestanding   the core compiled freestanding and integer-only'
 	@echo '  check-layers         the include/getenv rules of docs/ARCHITECTURE.md'
+	@echo '  test-api             the API reference is complete and docs/api current (api-html rewrites it)'
+	@echo '  test-readme          every README.md code block as pasted'
+	@echo '  test-deb-control     make deb'"'"'s packages and libfixel-dev'"'"'s Depends, without building'
 	@echo '  valgrind             unit, golden and tool suites under memcheck (slow)'
 	@echo '  fuzz                 each libFuzzer target for FUZZ_SECONDS'
 	@echo '  bench, bench-peers   the benchmark table (docs/BENCHMARK.md)'

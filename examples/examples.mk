@@ -6,10 +6,12 @@ EXAMPLE_BINS := $(EXAMPLES:%=$(BUILD)/examples/%)
 
 .PHONY: examples
 examples: $(EXAMPLE_BINS)
+	$(built_without_summary)
 
 $(BUILD)/examples/%: $(BUILD)/obj/examples/%.o $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $< $(LIB_A) $(LDLIBS)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $< $(LIB_A) $(LDLIBS)
 
 # The interactive example driven headless by a replay file, its last frame
 # compared with a golden PNG, hello under valgrind (tests/boards/examples.sh).

@@ -54,7 +54,10 @@ if [ "$(id -u)" -eq 0 ] && [ $noinstall = 0 ]; then
     done
 else
     sudo="sudo "; [ "$(id -u)" -eq 0 ] && sudo=""
-    echo "$what needs Debian packages that are missing; run:"
+    how="run"
+    # a root without sudo (a fresh Debian, a container): say who runs it
+    if [ -n "$sudo" ] && ! command -v sudo >/dev/null 2>&1; then sudo=""; how="run as root"; fi
+    echo "$what needs Debian packages that are missing; $how:"
     for a in $arches; do echo "  ${sudo}dpkg --add-architecture $a"; done
     # the same two steps as above: native packages, then each architecture's
     native=$(for p in $missing; do case $p in *:*) ;; *) printf ' %s' "$p" ;; esac; done)

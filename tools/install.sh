@@ -7,9 +7,12 @@
 #   INCLUDEDIR    fixel/*.h (the public headers)
 #   PKGCONFIGDIR  fixel.pc, written here for this PREFIX/LIBDIR/INCLUDEDIR
 #   BINDIR        the tools (TOOLS; fixel-bench is not among them)
-#   MANDIR        man1/<tool>.1 and man5/fixel-script.5 from docs/man
+#   MANDIR        man1/<tool>.1 and man5/fixel-script.5 from docs/man;
+#                 man3/*.3, the API reference ($BUILD/man/man3, make install-build)
 #   SYSTEMDUNITDIR fixel-kiosk.service (ExecStart in BINDIR, config in SYSCONFDIR)
-#   DATADIR       fixel/examples/* (kiosk configs and their picture)
+#   DATADIR       fixel/examples/* (the example programs with a Makefile
+#                 for them, kiosk configs and their picture);
+#                 doc/fixel/api/*.html (the API reference, docs/api)
 # ldconfig runs after installing or removing into the live system as root
 # (DESTDIR empty). Directories: fixel's own are removed by uninstall; the
 # shared ones (bin, lib, share/man/man1...) only inside a DESTDIR, and only
@@ -39,9 +42,21 @@ files() {
         [ -f "docs/man/$t.1" ] && echo "$MANDIR/man1/$t.1 docs/man/$t.1 644"
     done
     echo "$MANDIR/man5/fixel-script.5 docs/man/fixel-script.5 644"
+    for m in "$BUILD"/man/man3/*.3; do
+        [ -f "$m" ] && echo "$MANDIR/man3/${m##*/} $m 644"
+    done
+    for h in docs/api/*.html; do echo "$DATADIR/doc/fixel/api/${h##*/} $h 644"; done
     case " $TOOLS " in *" fixel-kiosk "*)
         echo "$SYSTEMDUNITDIR/fixel-kiosk.service - 644" ;; esac
-    for e in $EXAMPLES; do echo "$EXDIR/${e##*/} $e 644"; done
+    # examples.mk is the tree's own fragment; Makefile.installed is the
+    # Makefile a user runs in a copy of the installed folder
+    for e in $EXAMPLES; do
+        case $e in
+        examples/examples.mk) ;;
+        examples/Makefile.installed) echo "$EXDIR/Makefile $e 644" ;;
+        *) echo "$EXDIR/${e##*/} $e 644" ;;
+        esac
+    done
 }
 
 pc() {
@@ -88,7 +103,7 @@ uninstall)
     files | while read -r dst src m; do
         if [ -e "$D$dst" ] || [ -L "$D$dst" ]; then rm -f "$D$dst"; echo "  RM      $D$dst"; fi
     done
-    for d in "$INCLUDEDIR/fixel" "$EXDIR" "$DATADIR/fixel"; do
+    for d in "$INCLUDEDIR/fixel" "$EXDIR" "$DATADIR/fixel" "$DATADIR/doc/fixel/api" "$DATADIR/doc/fixel"; do
         [ -d "$D$d" ] && rmdir "$D$d" 2>/dev/null && echo "  RMDIR   $D$d"
     done
     if [ -n "$D" ]; then

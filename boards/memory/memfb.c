@@ -97,6 +97,11 @@ static FILE *open_tmp(const char *path, char *tmp, size_t n, char *final, size_t
             close(fd);
         return f;
     }
+    /* An existing file this process may not write is refused with its own
+     * error (EACCES, EROFS), as a shell's > would: the temporary file's
+     * error (or rename's EPERM in a sticky directory) would name neither. */
+    if (stat(final, &st) == 0 && access(final, W_OK) != 0)
+        return NULL;
     if ((size_t)snprintf(tmp, n, "%s.tmp%ld", final, (long)getpid()) >= n) {
         tmp[0] = 0;
         errno = ENAMETOOLONG;
@@ -390,3 +395,29 @@ int fx_write_image(const char *path, const fx_surface *s)
     return fx_write_png(path, s);
 }
 
+/* The Makefile compiles every object with FX_NO_PNG when pkg-config found no
+ * libpng, and with FX_NO_BOARD_LIBS when it found no libdrm/libevdev/libgpiod
+ * (boards/linux/absent then stands in for the DRM and input backends). */
+const char *fx_built_without(void)
+{
+#if defined(FX_NO_BOARD_LIBS) && defined(FX_NO_PNG)
+    return "libdrm/libevdev/libgpiod/libpng";
+#elif defined(FX_NO_BOARD_LIBS)
+    return "libdrm/libevdev/libgpiod";
+#elif defined(FX_NO_PNG)
+    return "libpng";
+#else
+    return "";
+#endif
+}
+
+const char *fx_built_without_hint(int err)
+{
+#ifdef FX_NO_PNG
+    if (err == -FX_ENOTSUP)
+        return " (this fixel was built without libpng: install libpng-dev and zlib1g-dev and run make"
+               " again, or write .ppm)";
+#endif
+    (void)err;
+    return "";
+}

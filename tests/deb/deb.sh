@@ -7,6 +7,23 @@
 # the native renders pixel for pixel. The .debs stay in OUT/<arch>/ (the
 # fresh-root test installs the native ones: make test-setup).
 # usage: deb.sh OUT_DIR [ARCH...]       "deb: N passed, N failed"
+#        deb.sh --source-only DIR        only the source copy into DIR (tests/deb/control.sh)
+
+# The source to build: the tracked files of a git work tree (what a clone
+# has), or, in a tree without .git (a release tarball, a ZIP), every file
+# but the build output. (git ls-files there printed nothing, and
+# dpkg-buildpackage then failed with "cannot open debian/changelog".)
+copy_source() {
+    if git rev-parse --is-inside-work-tree >/dev/null 2>&1 && [ -n "$(git ls-files debian/changelog)" ]; then
+        git ls-files -z | tar --null -T - -c | tar -x -C "$1"
+    else
+        tar -c --exclude=./build --exclude=./out --exclude=./.git . | tar -x -C "$1"
+    fi
+    [ -f "$1/debian/changelog" ] || { echo "deb: the source copy in $1 has no debian/changelog"; return 1; }
+}
+if [ "$1" = "--source-only" ]; then
+    mkdir -p "$2" && copy_source "$2"; exit
+fi
 OUT=${1:-build/deb}; shift
 ARCHES=${*:-amd64 arm64 armhf}
 SRC=$(pwd)
@@ -22,8 +39,8 @@ GOLDEN="core-lines conic-circles fill-polygons fill-textures 3d-teapot-gouraud f
 for arch in $ARCHES; do
     t0=$(now)
     W=$OUT/$arch; rm -rf "$W"; mkdir -p "$W/src"
-    # the work tree's tracked files (what a clone has), built out of tree
-    git ls-files -z | tar --null -T - -c | tar -x -C "$W/src"
+    # built out of tree, from a copy of the source
+    copy_source "$W/src" || { no "$arch: source copy"; continue; }
     a=""; [ "$arch" != "$NATIVE" ] && a="-a$arch"
     if (cd "$W/src" && DEB_BUILD_OPTIONS="parallel=${DEB_JOBS:-2} ${DEB_BUILD_OPTIONS:-}" dpkg-buildpackage -us -uc -b $a) > "$W/build.log" 2>&1; then
         ok "dpkg-buildpackage $arch ($(( $(now) - t0 )) s): $(cd "$W" && ls *.deb | tr '\n' ' ')"

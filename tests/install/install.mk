@@ -10,7 +10,10 @@ test-install: all
 # `make deb`: Debian packages for amd64, arm64 and armhf (tests/deb/deb.sh);
 # DEB_ARCHES= to choose. Installs what it needs first (root) or names it.
 DEB_ARCHES ?= amd64 arm64 armhf
-DEB_BUILD_DEB_PKGS := dpkg-dev debhelper lintian fakeroot crossbuild-essential-arm64 crossbuild-essential-armhf \
+# build-essential: dpkg-checkbuilddeps requires it of every package build
+# (its absence stopped a fresh machine's make deb after the installs);
+# tests/deb/control.sh checks this set covers debian/control's Build-Depends.
+DEB_BUILD_DEB_PKGS := build-essential dpkg-dev debhelper lintian fakeroot crossbuild-essential-arm64 crossbuild-essential-armhf \
   qemu-user-static $(foreach a,arm64 armhf,$(foreach p,libdrm-dev libevdev-dev libgpiod-dev libpng-dev zlib1g-dev,$(p):$(a)))
 .PHONY: deb
 deb:

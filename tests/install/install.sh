@@ -55,6 +55,16 @@ else
     cat "$O/hello.log"; no "README example against the install"
 fi
 
+# the installed examples build with their own Makefile in a copy (not the
+# tree's examples.mk fragment) and hello runs
+EXI=$S/usr/share/fixel/examples
+if [ -f "$EXI/Makefile" ] && [ ! -e "$EXI/examples.mk" ] && rm -rf "$O/ex" && cp -r "$EXI" "$O/ex" &&
+   (cd "$O/ex" && make PKG_CONFIG="$PC" > make.log 2>&1 && LD_LIBRARY_PATH="$S/usr/lib/$ARCH" ./hello) && [ -s "$O/ex/hello.png" ]; then
+    ok "the installed examples build with their Makefile and hello runs"
+else
+    cat "$O/ex/make.log" 2>/dev/null; no "the installed examples' Makefile"
+fi
+
 # another PREFIX: its own fixel.pc
 S2=$O/stage2
 $MK install DESTDIR="$S2" PREFIX=/opt/fixel > "$O/install2.log" 2>&1 &&

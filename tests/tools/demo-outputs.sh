@@ -34,9 +34,9 @@ run 0 two FIXEL_REPLAY="$W/one.txt" FIXEL_OUT="$W/two.png" "$D" --display =lines
       same_pic "output 1 shows colour" "$W/two.d1.png" "$W/want/colour.png"; }
 
 # Device 0 is bound to output 1 and taps its Textures tab; device 1 is not
-# bound and taps the Circles tab of output 0 (fourteen tabs of 800/14 = 57
-# px: Textures is x 228..284; the range is the screen's, so raw units are
-# pixels).
+# bound and taps the Circles tab of output 0 (at 800 px, Circles spans x
+# 50..111 and Textures 230..297: demo_tab_span; the range is the screen's,
+# so raw units are pixels).
 cat > "$W/taps.txt" <<'X'
 device 0 touch abs 0 799 0 479 name Panel Touch
 device 1 touch abs 0 799 0 479

@@ -34,10 +34,12 @@ TOOL_SRC_fixel-bench := tools/fixel-bench/ref/ref.c tools/fixel-bench/ref/ref_na
 BENCH_REF_FLAGS := $(CSTD) $(WARN) -g -fPIC -MMD -MP $(INCLUDES)
 $(BUILD)/obj/tools/fixel-bench/ref/ref.o: tools/fixel-bench/ref/ref.c
 	@mkdir -p $(dir $@)
-	$(CC) $(BENCH_REF_FLAGS) $(CPPFLAGS) $(CFLAGS) -O2 -fno-tree-vectorize -c $< -o $@
+	@$(if $(Q),echo "  CC      $<")
+	$(Q)$(CC) $(BENCH_REF_FLAGS) $(CPPFLAGS) $(CFLAGS) -O2 -fno-tree-vectorize -c $< -o $@
 $(BUILD)/obj/tools/fixel-bench/ref/ref_native.o: tools/fixel-bench/ref/ref_native.c
 	@mkdir -p $(dir $@)
-	$(CC) $(BENCH_REF_FLAGS) $(CPPFLAGS) $(CFLAGS) -O3 $(if $(CROSS_COMPILE),$(CPU_FLAGS),-march=native) -c $< -o $@
+	@$(if $(Q),echo "  CC      $<")
+	$(Q)$(CC) $(BENCH_REF_FLAGS) $(CPPFLAGS) $(CFLAGS) -O3 $(if $(CROSS_COMPILE),$(CPU_FLAGS),-march=native) -c $< -o $@
 
 bench: $(BUILD)/bin/fixel-bench $(BUILD)/bin/fixel-kiosk $(BUILD)/bin/fixel-demo
 	$(BUILD)/bin/fixel-bench -o $(BUILD)/bench.txt
@@ -73,12 +75,14 @@ BENCH_API_INC := $(BUILD)/api-include
 BENCH_API_HDRS := $(wildcard kernel-free-src/include/fixel/*.h boards/include/fixel/*.h)
 $(BENCH_API_INC)/.stamp: $(BENCH_API_HDRS)
 	@rm -rf $(BENCH_API_INC) && mkdir -p $(BENCH_API_INC)/fixel
-	cp $(BENCH_API_HDRS) $(BENCH_API_INC)/fixel/
+	@$(if $(Q),echo "  CP      $(BENCH_API_INC)/fixel/")
+	$(Q)cp $(BENCH_API_HDRS) $(BENCH_API_INC)/fixel/
 	@touch $@
 TOOL_SRC_fixel-bench += tools/fixel-bench/api/peer_fixel_api.c
 $(BUILD)/obj/tools/fixel-bench/api/peer_fixel_api.o: tools/fixel-bench/api/peer_fixel_api.c tools/fixel-bench/bench.h $(BENCH_API_INC)/.stamp
 	@mkdir -p $(dir $@)
-	$(CC) -std=c11 -O2 -I$(BENCH_API_INC) -c $< -o $@
+	@$(if $(Q),echo "  CC      $<")
+	$(Q)$(CC) -std=c11 -O2 -I$(BENCH_API_INC) -c $< -o $@
 
 # The same program linked to libfixel.so instead of libfixel.a (calls
 # through the PLT into -fPIC code, only the exported API), as a program
@@ -88,6 +92,7 @@ $(BUILD)/obj/tools/fixel-bench/api/peer_fixel_api.o: tools/fixel-bench/api/peer_
 bench-shared: $(BUILD)/bin/fixel-bench-shared
 $(BUILD)/bin/fixel-bench-shared: $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tools/fixel-bench/*.c) $(TOOL_SRC_fixel-bench)) $(LIB_SO)
 	@mkdir -p $(dir $@)
-	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(filter %.o,$^) -L$(BUILD) -Wl,-rpath,$(abspath $(BUILD)) -lfixel \
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(filter %.o,$^) -L$(BUILD) -Wl,-rpath,$(abspath $(BUILD)) -lfixel \
 	  $(TOOL_LIBS_fixel-bench) $(LDLIBS)
 TEST_SUITES += "$(MAKE) --no-print-directory -s $(BUILD)/bin/fixel-bench-shared && $(BUILD)/bin/fixel-bench-shared --check"

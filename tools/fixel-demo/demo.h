@@ -68,6 +68,10 @@ typedef struct demo_page {
 extern const demo_page demo_pages[];
 extern const int demo_npages;
 extern const int demo_ntabs; /* the first demo_ntabs pages have a tab */
+/* Tab i's columns [x0, x1) on a surface w pixels wide; the tab at column x
+ * (-1: none). */
+void demo_tab_span(int32_t w, int i, int32_t *x0, int32_t *x1);
+int demo_tab_at(int32_t w, int32_t x);
 /* The GLUT page (glutpage.c): a course program through boards/glut. */
 void demo_page_glut(fx_ctx *c, demo_state *st);
 

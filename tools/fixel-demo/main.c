@@ -251,7 +251,7 @@ static int headless(const char *out, int only)
         snprintf(path, sizeof path, "%s/%s.png", out, demo_pages[i].name);
         int e = fx_write_image(path, &fb.surf);
         if (e < 0) {
-            fprintf(stderr, "fixel-demo: cannot write %s: %s\n", path, strerror(-e));
+            fprintf(stderr, "fixel-demo: cannot write %s: %s%s\n", path, strerror(-e), fx_built_without_hint(e));
             rc = 1;
             continue;
         }
@@ -480,9 +480,8 @@ static void on_special(void *user, int key, int x, int y)
 static void pointer(demo_app *d, int x, int y, int down)
 {
     if (down == 1 && y < DEMO_TAB_H) {
-        int tw = d->st.w / demo_ntabs;
-        int p = tw ? x / tw : 0;
-        if (p >= 0 && p < demo_ntabs)
+        int p = demo_tab_at(d->st.w, x);
+        if (p >= 0)
             d->st.page = p;
     } else {
         demo_pointer(&d->st, x, y, down);

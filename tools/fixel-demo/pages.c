@@ -1164,11 +1164,48 @@ const demo_page demo_pages[] = {
     {"anim", "Animation", page_anim, 0, 0},            /* the camera flight keeps state between frames */
 };
 const int demo_npages = (int)(sizeof demo_pages / sizeof demo_pages[0]);
-/* Fourteen 57-pixel tabs still hold the longest label ("Transform",
- * "Ray trace": 54 px) at 800 px; a fifteenth would not, so the pages
- * after the fourteenth (Animation) are reached with n/p and --page,
- * without a tab. */
+/* Fourteen tabs hold their labels (522 px of text) at 800 px with room to
+ * spare; a fifteenth would leave too little, so the pages after the
+ * fourteenth (Animation) are reached with n/p and --page, without a tab. */
 const int demo_ntabs = 14;
+
+/* Tab i spans [*x0, *x1): its label's width plus an equal share of the
+ * room left. Equal 57-pixel tabs left 1.5 px either side of "Textures" and
+ * "Transform", which ran together; a surface too narrow for the labels gets
+ * equal tabs. */
+void demo_tab_span(int32_t w, int i, int32_t *x0, int32_t *x1)
+{
+    int64_t text = 0, ww, hh, mine = 0, before = 0;
+    for (int k = 0; k < demo_ntabs; k++) {
+        fx_text_extent(NULL, demo_pages[k].title, &ww, &hh);
+        if (k < i)
+            before += ww;
+        if (k == i)
+            mine = ww;
+        text += ww;
+    }
+    int64_t spare = w - text;
+    if (spare < 2 * demo_ntabs) {
+        *x0 = (int32_t)(w / demo_ntabs * i);
+        *x1 = (int32_t)(w / demo_ntabs * (i + 1));
+        return;
+    }
+    /* the first spare % ntabs tabs get one pixel more */
+    int64_t share = spare / demo_ntabs, extra = spare % demo_ntabs;
+    *x0 = (int32_t)(before + share * i + (i < extra ? i : extra));
+    *x1 = (int32_t)(*x0 + mine + share + (i < extra));
+}
+
+int demo_tab_at(int32_t w, int32_t x)
+{
+    for (int i = 0; i < demo_ntabs; i++) {
+        int32_t x0, x1;
+        demo_tab_span(w, i, &x0, &x1);
+        if (x >= x0 && x < x1)
+            return i;
+    }
+    return -1;
+}
 
 void demo_state_init(demo_state *st, int32_t w, int32_t h)
 {
@@ -1212,13 +1249,15 @@ void demo_draw(fx_ctx *c, demo_state *st)
     color(c, BG);
     fx_clear(c);
     /* the tab bar */
-    int32_t tw = st->w / demo_ntabs;
     for (int i = 0; i < demo_ntabs; i++) {
+        int32_t x0, x1;
+        demo_tab_span(st->w, i, &x0, &x1);
+        int32_t tw = x1 - x0;
         color(c, i == st->page ? 0xFF2E4A6Bu : 0xFF16202Eu);
-        fx_fill_rect(c, i * tw, 0, tw - 1, DEMO_TAB_H);
+        fx_fill_rect(c, x0, 0, tw - 1, DEMO_TAB_H);
         int64_t ww, hh;
         fx_text_extent(NULL, demo_pages[i].title, &ww, &hh);
-        demo_text(c, i * tw + (tw - (int32_t)ww) / 2, (DEMO_TAB_H - (int32_t)hh) / 2,
+        demo_text(c, x0 + (tw - (int32_t)ww) / 2, (DEMO_TAB_H - (int32_t)hh) / 2,
                   i == st->page ? ACCENT : DIM, "%s", demo_pages[i].title);
     }
     demo_pages[st->page].draw(c, st);

@@ -724,7 +724,7 @@ int main(int argc, char **argv)
                 fprintf(stderr, "fixel-draw: output name too long\n");
                 status = 2;
             } else if ((r = fx_write_image(name, &H.fb.surf)) < 0) {
-                fprintf(stderr, "fixel-draw: cannot write %s: %s\n", name, strerror(-r));
+                fprintf(stderr, "fixel-draw: cannot write %s: %s%s\n", name, strerror(-r), fx_built_without_hint(r));
                 status = 3;
             }
         }
@@ -779,7 +779,7 @@ int main(int argc, char **argv)
         fflush(stdout);
         r = fx_write_image(out, &H.fb.surf);
         if (r < 0) {
-            fprintf(stderr, "fixel-draw: cannot write %s: %s\n", out, strerror(-r));
+            fprintf(stderr, "fixel-draw: cannot write %s: %s%s\n", out, strerror(-r), fx_built_without_hint(r));
             status = 3;
         }
     }

@@ -18,6 +18,7 @@
 #include "fixel/display.h"
 #include "fixel/env.h"
 #include "fixel/input.h"
+#include "fixel/memfb.h"
 #include "fixel/scanout.h"
 
 #ifndef FX_BOARD_BACKEND
@@ -452,6 +453,13 @@ int main(int argc, char **argv)
         fprintf(stderr, "fixel-info: unknown argument %s (try --help)\n", argv[i]);
         return 2;
     }
+    /* first, before sections that would only say "none found" */
+    const char *without = fx_built_without();
+    if (*without)
+        printf("fixel-info: this fixel was built without %s\n"
+               "  (install %s%s and run make again)\n", without,
+               strstr(without, "libdrm") ? "libdrm-dev libevdev-dev libgpiod-dev" : "",
+               strstr(without, "libpng") ? (strstr(without, "libdrm") ? " libpng-dev zlib1g-dev" : "libpng-dev zlib1g-dev") : "");
     drm_section();
     fbdev_section();
     input_section();

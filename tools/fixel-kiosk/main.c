@@ -1783,8 +1783,9 @@ int main(int argc, char **argv)
                 if (last_only) snprintf(path, sizeof path, "%s/last%s.png", out, sfx);
                 else snprintf(path, sizeof path, "%s/frame-%04d%s.png", out, f, sfx);
                 fx_surface sf = k->scr[s].d ? fx_display_surface(k->scr[s].d) : fx_app_surface(k->app);
-                if (fx_write_image(path, &sf) < 0) {
-                    fprintf(stderr, "fixel-kiosk: cannot write %s\n", path);
+                int we = fx_write_image(path, &sf);
+                if (we < 0) {
+                    fprintf(stderr, "fixel-kiosk: cannot write %s: %s%s\n", path, strerror(-we), fx_built_without_hint(we));
                     rc = 1;
                 }
             }

@@ -31,7 +31,7 @@ static int save(const char *out, void *pixels, int32_t w, int32_t h, int32_t str
     }
     int r = fx_write_image(out, &s);
     if (r < 0) {
-        fprintf(stderr, "fixel-shot: cannot write %s: %s\n", out, strerror(-r));
+        fprintf(stderr, "fixel-shot: cannot write %s: %s%s\n", out, strerror(-r), fx_built_without_hint(r));
         return 1;
     }
     printf("fixel-shot: %s %dx%d %s -> %s\n", what, w, h, fx_format_get(f)->name, out);

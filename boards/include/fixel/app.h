@@ -132,10 +132,15 @@ typedef struct fx_app_options {
     const char *frame_out;  /* [env FIXEL_OUT] write each frame to this file ("f-%03d.png") */
 } fx_app_options;
 
+/* Options with every default (then set fields, or fx_app_options_from_env),
+ * opening the app (display, input, buttons: 0 or a negative error, the reason
+ * logged) and closing it (console and CRTC restored). */
 void fx_app_options_init(fx_app_options *o);
 int fx_app_open(fx_app **out, const fx_app_options *o);
 void fx_app_close(fx_app *a);
 
+/* The GLUT-style callbacks of the app's own display and input (fixel/event.h),
+ * each called with user. */
 void fx_app_set_callbacks(fx_app *a, const fx_callbacks *cb, void *user);
 /* Ask for a display callback (several calls before it runs count once). */
 void fx_app_post_redisplay(fx_app *a);
@@ -159,6 +164,7 @@ int fx_app_watch_fd(fx_app *a, int fd, void (*fn)(void *user, int fd), void *use
 int fx_app_main_loop(fx_app *a);
 void fx_app_quit(fx_app *a);
 
+/* The app's own display (for fx_display_* calls such as power or info). */
 fx_display *fx_app_display(fx_app *a);
 
 /* Several displays (docs/displays.md): the app's own display (opened from

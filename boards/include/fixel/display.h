@@ -202,6 +202,7 @@ typedef struct fx_display_info {
     uint32_t pointer_updates; /* pointer moves shown without a frame (old + new rectangles only) */
 } fx_display_info;
 
+/* Fill info with the display's backend, mode and counters (above). */
 void fx_display_get_info(const fx_display *d, fx_display_info *info);
 
 /* A software pointer drawn over the picture (fx_app drives it from the mouse;

@@ -24,11 +24,23 @@ void fx_memfb_destroy(fx_memfb *fb);
 
 /* Write a surface as 8-bit RGB (every format goes through fx_unpack). In a
  * build without libpng (FX_NO_PNG) the PNG functions return -FX_ENOTSUP.
- * Return 0 or a negative errno; on failure no partial file is left behind. */
+ * Return 0 or a negative errno; on failure no partial file is left behind.
+ * An existing file the caller may not write fails with its own error
+ * (-EACCES, -EROFS) and is left as it was. */
 int fx_write_png(const char *path, const fx_surface *s);
 int fx_write_ppm(const char *path, const fx_surface *s);
 /* By extension: ".ppm" writes PPM, anything else PNG. */
 int fx_write_image(const char *path, const fx_surface *s);
+/* What this build of the library left out, for a program to say: "" when
+ * nothing, else the libraries it was built without, as
+ * "libdrm/libevdev/libgpiod/libpng" (no DRM/KMS, no input devices, no GPIO
+ * buttons, PPM pictures only). */
+const char *fx_built_without(void);
+/* After a failed picture or display call: when err (a negative fixel error)
+ * failed because this build lacks a library (-FX_ENOTSUP from a PNG
+ * function without libpng), a note naming it and its packages, starting
+ * with a space, to append to the message; "" otherwise. */
+const char *fx_built_without_hint(int err);
 
 /* Read a PNG of any colour type and bit depth (palette, grey 1..16 bits,
  * grey+alpha, RGB and RGBA 8/16, tRNS, interlaced) as 8-bit RGB: palettes

@@ -8,7 +8,9 @@
 
 int fx_drm_open(fx_display *d)
 {
-    fx_log(&d->log, FX_LOG_DEBUG, "drm: this build has no libdrm");
+    /* asked for by name (FIXEL_BACKEND=drm): an error that names the library */
+    fx_log(&d->log, d->opt.backend == FX_BACKEND_DRM ? FX_LOG_ERROR : FX_LOG_DEBUG,
+           "drm: this build has no libdrm (install libdrm-dev and rebuild fixel)");
     return -FX_ENOTSUP;
 }
 

@@ -8,7 +8,7 @@
 
 void fx_evdev_scan(fx_evdev_set *s)
 {
-    fx_log(&s->log, FX_LOG_INFO, "input: this build has no libevdev; no input devices");
+    fx_log(&s->log, FX_LOG_INFO, "input: this build has no libevdev; no input devices (install libevdev-dev and rebuild fixel)");
 }
 int fx_evdev_open(fx_evdev_set *s, const char *path, int quiet) { (void)s, (void)path, (void)quiet; return -FX_ENOTSUP; }
 void fx_evdev_read(fx_evdev_set *s, int index) { (void)s, (void)index; }
@@ -19,7 +19,7 @@ int fx_gpio_open_buttons(fx_gpio_set *s, const fx_gpio_button *b, int n)
 {
     (void)b;
     if (n > 0)
-        fx_log(&s->log, FX_LOG_ERROR, "gpio: this build has no libgpiod; buttons ignored");
+        fx_log(&s->log, FX_LOG_ERROR, "gpio: this build has no libgpiod; buttons ignored (install libgpiod-dev and rebuild fixel)");
     return 0;
 }
 void fx_gpio_read(fx_gpio_set *s, int index) { (void)s, (void)index; }

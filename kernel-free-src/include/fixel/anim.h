@@ -161,6 +161,7 @@ typedef struct fx_accum {
     uint32_t n;    /* frames added */
 } fx_accum;
 
+/* Bytes of memory an accumulator of a w x h picture needs (0 for a bad size). */
 size_t fx_accum_size(int32_t w, int32_t h);
 /* -FX_EINVAL for a bad size, -FX_ENOSPC when bytes < fx_accum_size. */
 int fx_accum_init(fx_accum *a, void *mem, size_t bytes, int32_t w, int32_t h);

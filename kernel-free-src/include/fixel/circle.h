@@ -48,6 +48,12 @@ extern "C" {
 void fx_circle(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r);
 /* Filled disc: (x-cx)^2 + (y-cy)^2 <= r^2. */
 void fx_disc(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r);
+/* Alias of fx_disc, the name a user guesses from fx_fill_rect and
+ * fx_fill_ellipse (fixel names the filled circle a disc). */
+static inline void fx_fill_circle(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r)
+{
+    fx_disc(c, cx, cy, r);
+}
 /* The pixels of fx_circle whose direction lies in the sector a0 -> a1. */
 void fx_arc(const fx_ctx *c, int32_t cx, int32_t cy, int32_t r, fx_angle a0, fx_angle a1);
 /* The pixels of fx_disc in the sector a0 -> a1 (the centre pixel included). */

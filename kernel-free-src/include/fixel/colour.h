@@ -51,15 +51,19 @@ typedef struct fx_xyz { fx16 x, y, z; } fx_xyz;
 fx_cmy fx_rgb_to_cmy(fx_color c);
 fx_color fx_cmy_to_rgb(fx_cmy c);
 
+/* HSV (hexcone): hue in degrees, saturation and value in [0, 1]. */
 fx_hsv fx_rgb_to_hsv(fx_color c);
 fx_color fx_hsv_to_rgb(fx_hsv c);
 
+/* HLS (double hexcone): hue in degrees, lightness and saturation in [0, 1]. */
 fx_hls fx_rgb_to_hls(fx_color c);
 fx_color fx_hls_to_rgb(fx_hls c);
 
+/* YIQ, the NTSC matrix above: luma in [0, 1], I and Q signed. */
 fx_yiq fx_rgb_to_yiq(fx_color c);
 fx_color fx_yiq_to_rgb(fx_yiq c);
 
+/* CIE XYZ of an sRGB colour (D65 white has Y = 1), and back (out of gamut clamps). */
 fx_xyz fx_rgb_to_xyz(fx_color c);
 fx_color fx_xyz_to_rgb(fx_xyz c);
 
@@ -96,6 +100,11 @@ uint8_t fx_linear_to_srgb(fx16 l);
 #define FX_CIE_N 81
 extern const int32_t fx_cie1931_cmf[FX_CIE_N][3];
 
+/* The spectrum (CIE 1931 2-degree observer, fx_cie1931_cmf every 5 nm from
+ * 380 nm): the XYZ of a pure wavelength in nm (Q16.16, interpolated), its
+ * chromaticity (x, y) (0, or -FX_EDOM for black), its display colour (out of
+ * gamut: white added until no channel is negative, then scaled so the
+ * brightest channel is full), and that colour of a wavelength. */
 fx_xyz fx_wavelength_to_xyz(fx16 nm);
 int fx_xyz_to_xy(fx_xyz c, fx16 *x, fx16 *y);
 fx_color fx_xyz_to_rgb_display(fx_xyz c);

@@ -91,6 +91,8 @@ void fx_ctx_reset_clip(fx_ctx *c);
  * primitives that have no faster path of their own. */
 void fx_plot(const fx_ctx *c, int32_t x, int32_t y);
 void fx_hspan(const fx_ctx *c, int32_t y, int32_t x0, int32_t x1);
+/* Alias of fx_plot, the name other libraries give it. */
+static inline void fx_put_pixel(const fx_ctx *c, int32_t x, int32_t y) { fx_plot(c, x, y); }
 
 /* Rectangles with the top-left corner (x, y) and size w x h in pixels.
  * fx_fill_rect covers [x, x+w) x [y, y+h); fx_rect_outline draws its

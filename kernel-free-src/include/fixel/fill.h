@@ -107,6 +107,11 @@ typedef struct fx_fill_edge {
  * FX_FILL_STACK_EDGES non-horizontal edges: use fx_fill_path). */
 int fx_fill_poly(const fx_ctx *c, const int32_t *xy, int32_t n, fx_fill_rule rule);
 int fx_fill_poly8(const fx_ctx *c, const fx8 *xy, int32_t n, fx_fill_rule rule);
+/* Alias of fx_fill_poly under its long name. */
+static inline int fx_fill_polygon(const fx_ctx *c, const int32_t *xy, int32_t n, fx_fill_rule rule)
+{
+    return fx_fill_poly(c, xy, n, rule);
+}
 
 /* Fill pieces (npieces polygons, piece i = pts[starts[i] .. starts[i+1]-1])
  * as one even-odd region: the pixels whose centres are inside, top-left rule
@@ -142,6 +147,12 @@ void fx_polygon(const fx_ctx *c, const int32_t *xy, int32_t n);
  * polygon path; nearer ones the two-edge fast path. */
 void fx_fill_tri(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2,
                  int32_t y2);
+/* Alias of fx_fill_tri under its long name. */
+static inline void fx_fill_triangle(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
+                                    int32_t x2, int32_t y2)
+{
+    fx_fill_tri(c, x0, y0, x1, y1, x2, y2);
+}
 /* The same with fx8 vertices xy[0..5], |coordinate| < 2^30. */
 void fx_fill_tri8(const fx_ctx *c, const fx8 *xy);
 
@@ -236,6 +247,7 @@ int fx_tri_begin(fx_tri *t, fx_rect clip, const fx8 *xy, const int32_t *attr, in
 /* Next non-empty span; returns 0 when the triangle is done. */
 int fx_tri_next_span(fx_tri *t, fx_tri_span *s);
 
+/* Attribute k at pixel (x, y) of the triangle's plane, Q32.32 (above). */
 static inline uint64_t fx_tri_attr_at(const fx_tri *t, int k, int32_t x, int32_t y)
 {
     return t->c[k] + t->gx[k] * (uint64_t)(int64_t)x + t->gy[k] * (uint64_t)(int64_t)y;

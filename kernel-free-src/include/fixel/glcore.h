@@ -123,6 +123,7 @@ typedef struct fx_glv4 {
     fx32 x, y, z, w;
 } fx_glv4;
 
+/* m = the identity matrix. */
 void fx_glm_identity(fx_glm *m);
 /* r = a * b (r may alias a or b). */
 void fx_glm_mul(fx_glm *r, const fx_glm *a, const fx_glm *b);

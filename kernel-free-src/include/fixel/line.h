@@ -35,6 +35,8 @@ typedef struct fx_bres {
     int64_t p; /* decision p_k (decides pixel k+1) */
 } fx_bres;
 
+/* Bresenham's walk from (x0, y0) to (x1, y1), both end points included,
+ * ready at step 0. */
 void fx_bres_init(fx_bres *b, int32_t x0, int32_t y0, int32_t x1, int32_t y1);
 /* Jump to step k (0 <= k <= major). */
 void fx_bres_seek(fx_bres *b, uint32_t k);
@@ -102,6 +104,7 @@ typedef struct fx_dda_iter {
     uint64_t bias; /* 2^31 or 2^31 - 1: the half for the rounding above */
 } fx_dda_iter;
 
+/* The DDA from (x0, y0) to (x1, y1), rounding as described above. */
 void fx_dda_init(fx_dda_iter *d, int32_t x0, int32_t y0, int32_t x1, int32_t y1);
 /* The pixel of step k (0 <= k <= major), in O(1). */
 void fx_dda_point(const fx_dda_iter *d, uint32_t k, int32_t *x, int32_t *y);
@@ -185,6 +188,8 @@ typedef struct fx_stroker {
     fx_stroke_piece piece[FX_STROKE_PIECES];
 } fx_stroker;
 
+/* Start a stroke in c's colour and line style, add its points (1/256 px),
+ * and end it (draws what is buffered). */
 void fx_stroke_begin(fx_stroker *s, const fx_ctx *c);
 void fx_stroke_point(fx_stroker *s, int64_t x256, int64_t y256);
 void fx_stroke_end(fx_stroker *s);

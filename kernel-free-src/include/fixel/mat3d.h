@@ -39,6 +39,7 @@ typedef struct fx_mat4 {
     fx16 m[4][4]; /* m[row][col] */
 } fx_mat4;
 
+/* The vector (x, y, z); sums, differences and scaling by s (Q16.16, saturating). */
 static inline fx_vec3 fx_vec3_make(fx16 x, fx16 y, fx16 z)
 {
     fx_vec3 v = {x, y, z};

@@ -105,6 +105,8 @@ typedef struct fx_obj_error {
     char msg[120];
 } fx_obj_error;
 
+/* The sizes an OBJ text needs (fx_mesh_size of them gives the bytes), then
+ * the mesh itself; both 0 or negative with err filled (above). */
 int fx_mesh_obj_size(const char *text, size_t len, int32_t *nverts, int32_t *ntris,
                      fx_obj_error *err);
 int fx_mesh_obj_parse(fx_mesh *m, const char *text, size_t len, fx_obj_error *err);

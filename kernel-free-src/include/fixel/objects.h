@@ -132,6 +132,7 @@ int fx_blobby_make(fx_mesh *m, const fx_blobby *b, void *work, size_t bytes);
  * -FX_EDOM. */
 typedef enum fx_patch_basis { FX_PATCH_BEZIER, FX_PATCH_BSPLINE } fx_patch_basis;
 
+/* The point and unit normal of the bicubic patch P at (u, v), as above. */
 int fx_patch_eval(const fx_vec3 P[16], fx_patch_basis basis, fx16 u, fx16 v, fx_vec3 *pt, fx_vec3 *nrm);
 /* (n + 1)^2 vertices and 2 n^2 triangles (n in 1..FX_MESH_MAX_SEG),
  * appended to m (its nverts / ntris grow); counter-clockwise seen from the
@@ -194,6 +195,7 @@ typedef struct fx_ptab {
     int32_t vcap, ecap, pcap, ucap;
 } fx_ptab;
 
+/* An empty polygon table in the arrays the caller gives, with their capacities. */
 void fx_ptab_init(fx_ptab *t, fx_ptab_vertex *v, int32_t vcap, fx_ptab_edge *e, int32_t ecap, fx_ptab_poly *p,
                   int32_t pcap, int32_t *use, int32_t ucap);
 /* The new vertex's index, or -FX_ENOSPC; -FX_EINVAL beyond +-1024. */

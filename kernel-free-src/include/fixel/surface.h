@@ -75,6 +75,8 @@ typedef struct fx_rect {
     int32_t x0, y0, x1, y1;
 } fx_rect;
 
+/* The description of pixel format f (name, DRM code, bits per pixel);
+ * NULL for a value that is no format. */
 const fx_format_info *fx_format_get(fx_format f);
 /* Case-insensitive lookup by name; returns FX_FMT_COUNT when unknown. */
 fx_format fx_format_from_name(const char *name);

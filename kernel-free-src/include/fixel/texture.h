@@ -89,6 +89,7 @@ enum {
     FX_PROC_MARBLE,
     FX_PROC_COUNT
 };
+/* The texture of kind FX_PROC_* at (s, t), in [0, 1] (one entry for the above). */
 fx16 fx_proc_eval(int kind, fx16 s, fx16 t, uint32_t seed);
 
 /* A procedural texture as a fill style: pixel (x, y) maps to

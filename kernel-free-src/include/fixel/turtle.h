@@ -42,6 +42,8 @@ void fx_turtle_init(fx_turtle *t, const fx_ctx *c, fx16 x, fx16 y, fx16 deg);
 void fx_turtle_pos(const fx_turtle *t, fx16 *x, fx16 *y);
 fx16 fx_turtle_heading(const fx_turtle *t);
 
+/* Move the CP to (x, y) or by (dx, dy), without drawing (move) or drawing a
+ * line from the old CP (line); the heading is unchanged. */
 void fx_turtle_move_to(fx_turtle *t, fx16 x, fx16 y);
 void fx_turtle_line_to(fx_turtle *t, fx16 x, fx16 y);
 void fx_turtle_move_rel(fx_turtle *t, fx16 dx, fx16 dy);

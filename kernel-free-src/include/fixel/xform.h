@@ -67,6 +67,7 @@ typedef enum fx_reflect {
     FX_REFLECT_ORIGIN,  /* through (0, 0): (x, y) -> (-x, -y) */
     FX_REFLECT_DIAGONAL /* about y = x: (x, y) -> (y, x) */
 } fx_reflect;
+/* The reflection about an axis, the origin or the diagonal (fx_reflect above). */
 void fx_xform2_reflection(fx_xform2 *out, fx_reflect axis);
 /* Reflection about the line through (px, py) at angle a (binary angle from
  * the +x axis): [cos 2a, sin 2a; sin 2a, -cos 2a] about that point. */
