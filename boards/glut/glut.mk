@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # The GLUT + OpenGL 1.x layer (boards/glut, issue #21): libfixel-glut.a, its
 # shared library and fixel-glut.pc. Programs build with
-#   cc lab.c -Iboards/glut/include $(BUILD)/libfixel-glut.a $(BUILD)/libfixel.a $(PKG_LIBS) -lm
+#   cc lab.c -Iboards/glut/include $(BUILD)/libfixel-glut.a $(BUILD)/libfixel.a $(PKG_LIBS) -lm -ldl
 # or, installed, $(pkg-config --cflags --libs fixel-glut).
 # Its integer core (kernel-free-src/gl) is part of libfixel: the top
 # Makefile's CORE_SRC takes every kernel-free-src/*/*.c.
@@ -11,9 +11,15 @@ GLUT_OBJ    := $(GLUT_SRC:%.c=$(BUILD)/obj/%.o)
 GLUT_A      := $(BUILD)/libfixel-glut.a
 GLUT_SO     := $(BUILD)/libfixel-glut.so.$(VERSION)
 GLUT_PC     := $(BUILD)/fixel-glut.pc
-GLUT_LIBS   := $(GLUT_A) $(LIB_A) $(LDLIBS) -lm
+# -ldl: text.c dlopens FreeType; glibc before 2.34 keeps dlopen in libdl
+# (harmless on later ones, where libdl is an empty stub)
+GLUT_LIBS   := $(GLUT_A) $(LIB_A) $(LDLIBS) -lm -ldl
 
 $(GLUT_OBJ): BASEFLAGS += -Iboards/glut/include
+# The X11 bitmap fonts are read with FreeType, opened at run time (text.c):
+# only its headers are needed here, and nothing is added to the link.
+GLUT_FT_CFLAGS := $(shell $(PKG_CONFIG) --cflags freetype2 2>/dev/null)
+$(BUILD)/obj/boards/glut/text.o: BASEFLAGS += $(if $(GLUT_FT_CFLAGS),$(GLUT_FT_CFLAGS) -DFXG_HAVE_FREETYPE)
 
 $(GLUT_A): $(GLUT_OBJ)
 	@mkdir -p $(dir $@)
