@@ -195,7 +195,7 @@ const kiosk_key kiosk_keys[] = {
     {"widget", "cmap", 'w', 0, 0, HEATW, "a colour map name (viridis, hot, ...)"},
     {"widget", "smooth", 'i', 0, 1, HEATW, "bilinear heat map"},
     {"widget", "filter", 'w', 0, 0, IMGW, "nearest|bilinear"},
-    {"widget", "path", 'f', 1, KIOSK_PATH_MAX - 1, IMGW, "image file (PNG or PPM)"},
+    {"widget", "path", 'f', 1, KIOSK_PATH_MAX - 1, IMGW, "image file (PNG, JPEG, GIF, WebP or PPM)"},
     {"widget", "topic", 't', 1, KIOSK_TOPIC_MAX - 1, BTNW, "a tap publishes to this topic (needs mqtt)"},
     {"widget", "payload", 't', 0, KIOSK_PAYLOAD_MAX - 1, BTNW, "the message published (default: empty)"},
     {"widget", "qos", 'i', 0, 2, BTNW, "quality of service of the message"},

@@ -34,6 +34,7 @@
 #include "fixel/fixed.h"
 #include "fixel/font.h"
 #include "fixel/line.h"
+#include "fixel/image.h"
 #include "fixel/memfb.h"
 #include "fixel/par.h"
 #include "fixel/texture.h"
@@ -296,6 +297,18 @@ static int load_png(FILE *f, kimg *m)
 #endif
 }
 
+/* JPEG, GIF (its first frame) and WebP: boards/image/, same limits */
+static int load_decoded(FILE *f, kimg *m)
+{
+    fx_image_limits l;
+    fx_image_limits_init(&l);
+    l.max_side = IMG_MAX_DIM;
+    l.max_pixels = IMG_MAX_PIXELS;
+    char why[200];
+    int r = fx_image_read_rgb(f, &l, &m->rgb, &m->w, &m->h, why, sizeof why);
+    return r == 0 ? IMG_OK : r == -FX_EFBIG ? IMG_HUGE : IMG_BAD;
+}
+
 static int load_image(const char *path, kimg *m)
 {
     /* never blocks on open (a FIFO named as the image), regular files only */
@@ -307,12 +320,13 @@ static int load_image(const char *path, kimg *m)
     FILE *f = fdopen(fd, "rb");
     if (!f) { close(fd); return IMG_MISSING; }
     m->file_size = st.st_size;
-    unsigned char magic[8];
+    unsigned char magic[12]; /* WebP's RIFF....WEBP */
     size_t n = fread(magic, 1, sizeof magic, f);
     int r = IMG_BAD;
     rewind(f);
-    if (n == 8 && !memcmp(magic, "\x89PNG\r\n\x1a\n", 8)) r = load_png(f, m);
+    if (n >= 8 && !memcmp(magic, "\x89PNG\r\n\x1a\n", 8)) r = load_png(f, m);
     else if (n >= 2 && magic[0] == 'P' && magic[1] == '6') r = load_ppm(f, m);
+    else if (fx_image_sniff(magic, n) != FX_IMAGE_UNKNOWN) r = load_decoded(f, m);
     fclose(f);
     if (r != IMG_OK) {
         free(m->rgb);
