@@ -41,6 +41,10 @@
 #include "fixel/version.h"
 #include "fixel/viz.h"
 
+#ifndef FX_NO_QR
+#include <qrencode.h>
+#endif
+
 #ifndef FX_NO_PNG
 #include <png.h>
 #endif
@@ -95,6 +99,16 @@ typedef struct kscreen {
     int full, status; /* at its next frame: redraw everything / the status line */
 } kscreen;
 
+/* qr widgets: the modules of the text last encoded (encoded between
+ * frames, never while bands of a frame are drawn on threads) */
+typedef struct kqr {
+    char text[KIOSK_TEXT_MAX];
+    int tried;
+    int size;       /* modules a side; 0: nothing to show */
+    uint8_t *mods;  /* size * size, 1 dark */
+    const char *why; /* when size is 0 */
+} kqr;
+
 typedef struct kiosk {
     kiosk_config cfg;
     fx_app *app;
@@ -117,6 +131,7 @@ typedef struct kiosk {
     int always_full; /* --full: redraw everything each frame (tests check damage against it) */
     int threads;     /* --threads: a frame's drawing in bands of rows on this many threads */
     kimg img[KIOSK_MAX_WIDGETS];
+    kqr qr[KIOSK_MAX_WIDGETS];
     uint32_t img_errors;  /* image loads that failed (missing, corrupt, too large) */
     /* live mode: MQTT, control and status (docs/kiosk.md, "MQTT") */
     const char *cfgpath;
@@ -134,7 +149,7 @@ typedef struct kiosk {
     int64_t identify_until;
     int identify_phase;
     uint32_t reloads;
-    char cfg_error[200];  /* why the last reload was refused ("" : it was not) */
+    char cfg_error[300];  /* why the last reload was refused ("" : it was not) */
     int ready_sent;       /* systemd: READY=1 after the first frame */
     int64_t wd_ms, wd_last; /* systemd watchdog: ping interval (0: none), last ping */
     /* pages and touch (kiosk_pages.h, docs/kiosk.md "Pages and touch") */
@@ -372,11 +387,49 @@ static void check_images(kiosk *k)
     }
 }
 
+/* Encode each qr widget's text again when it changed: the source's last
+ * value, else the configured text=. */
+static void check_qr(kiosk *k)
+{
+    for (int i = 0; i < k->cfg.nwidgets; i++) {
+        const kiosk_widget *w = &k->cfg.widgets[i];
+        if (w->type != KIOSK_QR) continue;
+        const kiosk_source *so = w->source >= 0 ? &k->cfg.sources[w->source] : NULL;
+        const char *text = so && so->updates && so->text[0] ? so->text : w->qrtext;
+        kqr *q = &k->qr[i];
+        if (q->tried && !strcmp(q->text, text)) continue;
+        q->tried = 1;
+        snprintf(q->text, sizeof q->text, "%s", text);
+        free(q->mods);
+        q->mods = NULL;
+        q->size = 0;
+        q->why = "no data";
+        k->dirty[i] = 1;
+        if (!text[0]) continue;
+#ifndef FX_NO_QR
+        static const QRecLevel levels[] = {QR_ECLEVEL_L, QR_ECLEVEL_M, QR_ECLEVEL_Q, QR_ECLEVEL_H};
+        QRcode *c = QRcode_encodeString8bit(text, 0, levels[w->qr_ecc & 3]);
+        if (!c || c->width < 21 || !(q->mods = malloc((size_t)c->width * (size_t)c->width))) {
+            q->why = "cannot encode";
+            if (c) QRcode_free(c);
+            continue;
+        }
+        for (int j = 0; j < c->width * c->width; j++) q->mods[j] = c->data[j] & 1;
+        q->size = c->width;
+        QRcode_free(c);
+#else
+        q->why = "no libqrencode";
+#endif
+    }
+}
+
 static void free_images(kiosk *k)
 {
     for (int i = 0; i < KIOSK_MAX_WIDGETS; i++) {
         free(k->img[i].rgb);
         k->img[i].rgb = NULL;
+        free(k->qr[i].mods);
+        k->qr[i].mods = NULL;
     }
 }
 
@@ -618,6 +671,29 @@ static void img_shade(const void *user, int32_t y, int32_t x, int32_t n, fx_colo
     }
 }
 
+/* Whole pixels per module (a scanner needs square, equal modules), the
+ * quiet zone white like the code's light modules, centred in the cell. */
+static void draw_qr(kiosk *k, fx_ctx *c, int i, fx_rect r)
+{
+    const kqr *q = &k->qr[i];
+    const kiosk_widget *w = &k->cfg.widgets[i];
+    fx_rect a = {r.x0 + 8, r.y0 + 18, r.x1 - 6, r.y1 - 6};
+    int32_t aw = a.x1 - a.x0, ah = a.y1 - a.y0, side = aw < ah ? aw : ah;
+    int32_t n = q->size + 2 * w->qr_quiet, px = n > 0 ? side / n : 0;
+    if (!q->mods || px < 1) {
+        const char *why = q->mods ? "too small" : q->why ? q->why : "no data";
+        fill(c, EMPTY_CELL, a.x0, a.y0, aw, ah);
+        int32_t sc = fit_scale(why, aw - 8, ah, 2);
+        text_at(c, a.x0 + (aw - text_w(why, sc)) / 2, a.y0 + (ah - 10 * sc) / 2, sc, q->mods ? BAD_RED : DIM, why);
+        return;
+    }
+    int32_t x0 = a.x0 + (aw - n * px) / 2, y0 = a.y0 + (ah - n * px) / 2, m0 = w->qr_quiet * px;
+    fill(c, 0xFFFFFFFFu, x0, y0, n * px, n * px);
+    for (int32_t y = 0; y < q->size; y++)
+        for (int32_t x = 0; x < q->size; x++)
+            if (q->mods[y * q->size + x]) fill(c, 0xFF000000u, x0 + m0 + x * px, y0 + m0 + y * px, px, px);
+}
+
 static void draw_image(kiosk *k, fx_ctx *c, int i, fx_rect r)
 {
     const kimg *m = &k->img[i];
@@ -726,6 +802,7 @@ static void draw_widget(kiosk *k, fx_ctx *base, int i)
     case KIOSK_SPARK: draw_spark(k, &c, w, r, acc, stale); break;
     case KIOSK_HEAT: draw_heat(k, &c, w, r, stale); break;
     case KIOSK_IMAGE: draw_image(k, &c, i, r); break;
+    case KIOSK_QR: draw_qr(k, &c, i, r); break;
     case KIOSK_BUTTON:
     case KIOSK_NTYPES: break;
     case KIOSK_CLOCK: {
@@ -1198,7 +1275,7 @@ static int load_config(const char *path, kiosk_config *cfg, char *err, size_t er
     fclose(cf);
     if (rerr) { snprintf(err, errsize, "%s: read error", path); return -1; }
     if (toolong) { snprintf(err, errsize, "%s: larger than %zu bytes", path, sizeof cbuf); return -1; }
-    char e[160];
+    char e[240]; /* the unknown-widget-key message lists every key */
     if (kiosk_config_parse(cfg, cbuf, clen, e, sizeof e) < 0) {
         const char *msg = e;
         /* the parser says "line N: reason"; the place goes in front as FILE:LINE:COL */
@@ -1271,7 +1348,7 @@ static void publish_status(kiosk *k)
 static void reload(kiosk *k)
 {
     static kiosk_config fresh; /* as large as the model: not on the stack */
-    char err[200];
+    char err[300];
     if (load_config(k->cfgpath, &fresh, err, sizeof err) < 0) {
         /* the old config keeps running; the status says why */
         snprintf(k->cfg_error, sizeof k->cfg_error, "%s", err);
@@ -1433,6 +1510,7 @@ static void on_tick(void *user, int value)
     feed_available(k);
     mqtt_pump(k);
     check_images(k);
+    check_qr(k);
     /* WatchdogSec=: pinged from the main loop's own timer, so a hung loop
      * (not just a dead process) gets the kiosk restarted */
     if (k->wd_ms && k->now_ms - k->wd_last >= k->wd_ms) {
@@ -1580,7 +1658,7 @@ int main(int argc, char **argv)
                 if (q->widgets == shows) printf(" (not button)");
                 else if (q->widgets && q->widgets != all) { /* the widget types it applies to */
                     static const char *const wt[KIOSK_NTYPES] = {"number", "gauge", "bar",   "spark", "text",
-                                                                 "clock",  "heat",  "image", "button"};
+                                                                 "clock",  "heat",  "image", "qr", "button"};
                     const char *sep = " (";
                     for (int j = 0; j < KIOSK_NTYPES; j++)
                         if (q->widgets >> j & 1) { printf("%s%s", sep, wt[j]); sep = ", "; }
@@ -1778,6 +1856,7 @@ int main(int argc, char **argv)
         for (int f = 0; f < frames; f++) {
             feed_frame(k);
             check_images(k);
+            check_qr(k);
             update_stale(k);
             pages_tick(k);
             for (int s = 0; s < k->nscr; s++) render(k, s);
