@@ -221,6 +221,7 @@ struct fx_anim {
     int32_t w, h;
     int frames, loops, cur;
     uint8_t *canvas;
+    uint8_t *data; /* the caller's file, copied: frames are decoded from it later */
     fx_gif *gif; /* NULL: a still image, decoded into canvas at open */
 };
 
@@ -243,7 +244,12 @@ int fx_anim_open(fx_anim **out, const uint8_t *data, size_t len, const fx_image_
             free(a);
             return -FX_EFBIG;
         }
-        r = fx_gif_open(&a->gif, data, len, l, &a->w, &a->h, &a->frames, &a->loops, why, whylen);
+        if (!(a->data = malloc(len))) {
+            free(a);
+            return -FX_ENOMEM;
+        }
+        memcpy(a->data, data, len);
+        r = fx_gif_open(&a->gif, a->data, len, l, &a->w, &a->h, &a->frames, &a->loops, why, whylen);
         if (r == 0 && !(a->canvas = malloc((size_t)a->w * (size_t)a->h * 3)))
             r = -FX_ENOMEM;
         a->cur = -1;
@@ -298,5 +304,6 @@ void fx_anim_close(fx_anim *a)
     if (a->gif)
         fx_gif_close(a->gif);
     free(a->canvas);
+    free(a->data);
     free(a);
 }

@@ -83,6 +83,10 @@ typedef struct kimg {
     ino_t ino;
     off_t size;
     struct timespec mtim;
+    /* an animated GIF: rgb holds the current frame */
+    fx_anim *anim;
+    int frame, plays;     /* plays: loops completed */
+    int64_t next_ms;      /* when the next frame is due */
 } kimg;
 
 typedef struct kline {
@@ -319,8 +323,34 @@ static int load_decoded(FILE *f, kimg *m)
     fx_image_limits_init(&l);
     l.max_side = IMG_MAX_DIM;
     l.max_pixels = IMG_MAX_PIXELS;
+    l.max_bytes = (size_t)16 << 20;
     char why[200];
-    int r = fx_image_read_rgb(f, &l, &m->rgb, &m->w, &m->h, why, sizeof why);
+    unsigned char magic[6];
+    int gif = fread(magic, 1, 6, f) == 6 && fx_image_sniff(magic, 6) == FX_IMAGE_GIF;
+    rewind(f);
+    if (!gif) {
+        int r = fx_image_read_rgb(f, &l, &m->rgb, &m->w, &m->h, why, sizeof why);
+        return r == 0 ? IMG_OK : r == -FX_EFBIG ? IMG_HUGE : IMG_BAD;
+    }
+    /* GIF: kept open to animate (bounded: the file, two canvases) */
+    if (m->file_size > (int64_t)l.max_bytes) return IMG_HUGE;
+    size_t len = (size_t)m->file_size;
+    uint8_t *data = malloc(len ? len : 1);
+    if (!data) return IMG_HUGE;
+    if (fread(data, 1, len, f) != len) { free(data); return IMG_BAD; }
+    int r = fx_anim_open(&m->anim, data, len, &l, why, sizeof why);
+    free(data);
+    const uint8_t *px;
+    if (r == 0 && (r = fx_anim_frame(m->anim, 0, &px, why, sizeof why)) == 0) {
+        m->w = fx_anim_width(m->anim), m->h = fx_anim_height(m->anim);
+        if (!(m->rgb = malloc((size_t)m->w * (size_t)m->h * 3))) r = -FX_ENOMEM;
+        else memcpy(m->rgb, px, (size_t)m->w * (size_t)m->h * 3);
+    }
+    if (r == 0 && fx_anim_frames(m->anim) < 2) { fx_anim_close(m->anim); m->anim = NULL; }
+    if (r < 0) { fx_anim_close(m->anim); m->anim = NULL; }
+    m->frame = 0;
+    m->plays = 0;
+    m->next_ms = -1; /* the clock starts when it is first shown */
     return r == 0 ? IMG_OK : r == -FX_EFBIG ? IMG_HUGE : IMG_BAD;
 }
 
@@ -346,6 +376,8 @@ static int load_image(const char *path, kimg *m)
     if (r != IMG_OK) {
         free(m->rgb);
         m->rgb = NULL;
+        fx_anim_close(m->anim);
+        m->anim = NULL;
     }
     return r;
 }
@@ -353,8 +385,11 @@ static int load_image(const char *path, kimg *m)
 /* Reload every image whose path was named again or whose file changed
  * (device, inode, size or mtime): a writer that replaces the file by
  * rename and one that rewrites it in place are both seen. */
+static void animate_images(kiosk *k);
+
 static void check_images(kiosk *k)
 {
+    animate_images(k);
     for (int i = 0; i < k->cfg.nwidgets; i++) {
         const kiosk_widget *w = &k->cfg.widgets[i];
         if (w->type != KIOSK_IMAGE) continue;
@@ -378,12 +413,46 @@ static void check_images(kiosk *k)
         }
         free(m->rgb);
         m->rgb = NULL;
+        fx_anim_close(m->anim);
+        m->anim = NULL;
         /* only regular files: opening a FIFO or a device could block the kiosk */
         m->state = !so->path[0] ? IMG_NONE : !have ? IMG_MISSING : !S_ISREG(st.st_mode) ? IMG_BAD
                  : load_image(so->path, m);
+        if (m->anim) m->next_ms = k->now_ms + fx_anim_delay_ms(m->anim, 0); /* frame 0 shows from now */
         if (m->state != IMG_OK && m->state != IMG_NONE) k->img_errors++;
         k->dirty[i] = 1;
         k->status_dirty = 1;
+    }
+}
+
+/* Animated GIFs: each frame shown for its own delay (the GIF's, 0 and 10
+ * ms as 100 ms), looping as the file says; frames late by more than one
+ * delay are skipped, not played fast. */
+static void animate_images(kiosk *k)
+{
+    for (int i = 0; i < k->cfg.nwidgets; i++) {
+        kimg *m = &k->img[i];
+        if (!m->anim || m->state != IMG_OK || !m->rgb) continue;
+        int n = fx_anim_frames(m->anim), loops = fx_anim_loops(m->anim);
+        if (m->next_ms < 0) m->next_ms = k->now_ms + fx_anim_delay_ms(m->anim, m->frame);
+        int step = 0;
+        while (k->now_ms >= m->next_ms && step < n) {
+            if (m->frame + 1 == n) {
+                if (loops && m->plays + 1 >= loops) { m->next_ms = INT64_MAX; break; }
+                m->plays++;
+            }
+            m->frame = (m->frame + 1) % n;
+            m->next_ms += fx_anim_delay_ms(m->anim, m->frame);
+            step++;
+        }
+        if (k->now_ms >= m->next_ms && m->next_ms != INT64_MAX) m->next_ms = k->now_ms + fx_anim_delay_ms(m->anim, m->frame);
+        if (!step) continue;
+        const uint8_t *px;
+        char why[200];
+        if (fx_anim_frame(m->anim, m->frame, &px, why, sizeof why) == 0)
+            memcpy(m->rgb, px, (size_t)m->w * (size_t)m->h * 3);
+        else { fx_anim_close(m->anim); m->anim = NULL; }
+        k->dirty[i] = 1;
     }
 }
 
@@ -427,6 +496,8 @@ static void free_images(kiosk *k)
 {
     for (int i = 0; i < KIOSK_MAX_WIDGETS; i++) {
         free(k->img[i].rgb);
+        fx_anim_close(k->img[i].anim);
+        k->img[i].anim = NULL;
         k->img[i].rgb = NULL;
         free(k->qr[i].mods);
         k->qr[i].mods = NULL;

@@ -59,7 +59,7 @@ int fx_image_decode_rgb(const uint8_t *data, size_t len, const fx_image_limits *
 int fx_image_read_rgb(FILE *f, const fx_image_limits *l, uint8_t **rgb, int32_t *w, int32_t *h, char *why,
                       size_t whylen);
 
-/* An animated image: frame n composited on the logical screen with the
+/* An animated image (the data is copied): frame n composited on the logical screen with the
  * GIF disposal methods (none/keep, background, previous). Memory held: the
  * file, two canvases and one frame's indices, whatever the frame count;
  * frames are decoded in order, so asking for an earlier frame restarts from
