@@ -317,7 +317,7 @@ static int load_png(FILE *f, kimg *m)
 }
 
 /* JPEG, GIF (its first frame) and WebP: boards/image/, same limits */
-static int load_decoded(FILE *f, kimg *m)
+static int load_decoded(FILE *f, kimg *m, const char *path)
 {
     fx_image_limits l;
     fx_image_limits_init(&l);
@@ -328,8 +328,11 @@ static int load_decoded(FILE *f, kimg *m)
     unsigned char magic[6];
     int gif = fread(magic, 1, 6, f) == 6 && fx_image_sniff(magic, 6) == FX_IMAGE_GIF;
     rewind(f);
+    why[0] = 0;
     if (!gif) {
         int r = fx_image_read_rgb(f, &l, &m->rgb, &m->w, &m->h, why, sizeof why);
+        /* the cell says "bad image" or "too large"; the log says which limit */
+        if (r < 0) fprintf(stderr, "fixel-kiosk: %s: %s\n", path, why[0] ? why : fx_strerror(r));
         return r == 0 ? IMG_OK : r == -FX_EFBIG ? IMG_HUGE : IMG_BAD;
     }
     /* GIF: kept open to animate (bounded: the file, two canvases) */
@@ -351,6 +354,7 @@ static int load_decoded(FILE *f, kimg *m)
     m->frame = 0;
     m->plays = 0;
     m->next_ms = -1; /* the clock starts when it is first shown */
+    if (r < 0) fprintf(stderr, "fixel-kiosk: %s: %s\n", path, why[0] ? why : fx_strerror(r));
     return r == 0 ? IMG_OK : r == -FX_EFBIG ? IMG_HUGE : IMG_BAD;
 }
 
@@ -371,7 +375,7 @@ static int load_image(const char *path, kimg *m)
     rewind(f);
     if (n >= 8 && !memcmp(magic, "\x89PNG\r\n\x1a\n", 8)) r = load_png(f, m);
     else if (n >= 2 && magic[0] == 'P' && magic[1] == '6') r = load_ppm(f, m);
-    else if (fx_image_sniff(magic, n) != FX_IMAGE_UNKNOWN) r = load_decoded(f, m);
+    else if (fx_image_sniff(magic, n) != FX_IMAGE_UNKNOWN) r = load_decoded(f, m, path);
     fclose(f);
     if (r != IMG_OK) {
         free(m->rgb);
