@@ -87,9 +87,19 @@ ifneq ($(HAVE_TEXT),1)
   $(info fixel: no smooth text (pkg-config finds no $(TEXT_PKGS)): fx_face_* report -FX_ENOTSUP)
 endif
 PKGS     := $(if $(HAVE_PNG),$(SYS_PKGS)) $(if $(HAVE_OPT),$(OPT_PKGS)) $(if $(HAVE_TEXT),$(TEXT_PKGS))
+# The image decoders (boards/image/), each optional: without its library a
+# format is refused by name (FX_NO_JPEG, FX_NO_GIF, FX_NO_WEBP). giflib has
+# no pkg-config file: its header is looked for. libqrencode (the tools' qr).
+HAVE_JPEG := $(shell $(PKG_CONFIG) --exists libjpeg 2>/dev/null && echo 1)
+HAVE_WEBP := $(shell $(PKG_CONFIG) --exists libwebp 2>/dev/null && echo 1)
+HAVE_GIF  := $(shell echo '\#include <gif_lib.h>' | $(CC) -E -x c - >/dev/null 2>&1 && echo 1)
+HAVE_QR   := $(shell $(PKG_CONFIG) --exists libqrencode 2>/dev/null && echo 1)
+PKGS     += $(if $(HAVE_JPEG),libjpeg) $(if $(HAVE_WEBP),libwebp) $(if $(HAVE_QR),libqrencode)
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null) $(if $(HAVE_PNG),,-DFX_NO_PNG -DFX_NO_ZLIB) \
-              $(if $(HAVE_OPT),,-DFX_NO_BOARD_LIBS)
-PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS) 2>/dev/null)
+              $(if $(HAVE_OPT),,-DFX_NO_BOARD_LIBS) \
+              $(if $(HAVE_JPEG),,-DFX_NO_JPEG) $(if $(HAVE_WEBP),,-DFX_NO_WEBP) $(if $(HAVE_GIF),,-DFX_NO_GIF) \
+              $(if $(HAVE_QR),,-DFX_NO_QR)
+PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS) 2>/dev/null) $(if $(HAVE_GIF),-lgif)
 LDFLAGS  ?=
 # STATIC=1: single static binaries to copy to a board (no shared library),
 # in their own directory ($(BUILD)/static): a static build never re-links the
@@ -97,7 +107,7 @@ LDFLAGS  ?=
 ifeq ($(STATIC),1)
   BUILD    := $(BUILD)/static
   LDFLAGS += -static
-  PKG_LIBS := $(shell $(PKG_CONFIG) --static --libs $(PKGS) 2>/dev/null)
+  PKG_LIBS := $(shell $(PKG_CONFIG) --static --libs $(PKGS) 2>/dev/null) $(if $(HAVE_GIF),-lgif)
 endif
 LDLIBS   := $(PKG_LIBS) -lpthread -lm
 # The libraries are chosen when make reads this file, so objects compiled
@@ -118,7 +128,7 @@ CORE_SRC   := $(sort $(wildcard kernel-free-src/*/*.c))
 # boards/: every .c of these folders; the folders that need libdrm, libevdev
 # and libgpiod only when they are there (boards/linux/absent/ stands in for
 # them otherwise, so the memory backend and fx_app still link).
-BOARD_DIRS     := posix memory display app env linux/display linux/console
+BOARD_DIRS     := posix memory image display app env linux/display linux/console
 BOARD_LIB_DIRS := linux/drm linux/input
 BOARD_SRC  := $(sort $(foreach d,$(BOARD_DIRS) $(if $(HAVE_OPT),$(BOARD_LIB_DIRS),linux/absent) \
                                  $(if $(HAVE_TEXT),text,text/absent),\
@@ -423,7 +433,8 @@ endef
 # PACKAGE:ARCH entries are multiarch libraries of the cross tests.
 # man-db: make install installs man pages (tools, fixel-script(5), the API).
 DEB_PKGS := gcc libc6-dev make pkg-config libpng-dev zlib1g-dev libdrm-dev libevdev-dev libgpiod-dev man-db \
-            libfreetype-dev libharfbuzz-dev libfribidi-dev libfontconfig-dev libunibreak-dev
+            libfreetype-dev libharfbuzz-dev libfribidi-dev libfontconfig-dev libunibreak-dev \
+            libjpeg62-turbo-dev libgif-dev libwebp-dev libqrencode-dev
 # `make deps`: every set; `make deps-check`: the same, named "make deps".
 deps deps-check:
 	@sh tests/deps.sh --for "make deps" $(sort $(DEB_PKGS) $(TEST_DEB_PKGS) $(BENCH_DEB_PKGS))

@@ -12,7 +12,8 @@
 #   boards  boards/           any system header, the core's public headers
 #                             (kernel-free-src/include), its own headers; never
 #                             a core private header (kernel-free-src/<sub>/),
-#                             never tools/; boards/memory/ never boards/linux/
+#                             never tools/; boards/memory/ and boards/image/
+#                             never boards/linux/
 #   tools   tools/<name>/     any system header, the public headers of both
 #                             layers, the tool's own files; never a private
 #                             header of the core or of boards/
@@ -84,7 +85,7 @@ check_file() { # FILE LAYER
             kernel-free-src/include/*) pass ;;
             kernel-free-src/*) fail "$where: boards/ may not include the core's private $r (public headers only)" ;;
             boards/linux/*)
-                case $f in boards/memory/*) fail "$where: boards/memory/ may not include $r (memory never depends on linux/)" ;;
+                case $f in boards/memory/* | boards/image/*) fail "$where: ${f%/*}/ may not include $r (memory and image never depend on linux/)" ;;
                 *) pass ;; esac ;;
             boards/*) pass ;;
             *) fail "$where: boards/ may not include $r" ;;

@@ -112,7 +112,7 @@ widget number a col=0 row=0";;
 widget number a col=0 row=0";;
         widget)
             ty="number a"; pre=""
-            case "$key" in cells) ty="heat a";; smooth) ty="heat a cells=2x2";;
+            case "$key" in cells) ty="heat a";; smooth) ty="heat a cells=2x2";; quiet) ty="qr a";;
             qos|retain) ty="button b topic=t/x"; pre="mqtt host=127.0.0.1";; esac
             cfg="grid 16x16
 size 64x64

@@ -52,10 +52,16 @@ FUZZ_EXTRA_fuzz_face := boards/text/face.c $(shell $(PKG_CONFIG) --cflags --libs
 ifneq ($(HAVE_TEXT),1)
   FUZZ_TARGETS := $(filter-out fuzz_face,$(FUZZ_TARGETS))
 endif
+# boards/image/ (issue #41): each decoder's target links the whole folder
+FUZZ_IMAGE := boards/image/image.c boards/image/jpeg.c boards/image/gif.c boards/image/webp.c boards/memory/memfb.c \
+              -ljpeg -lgif -lwebp -lpng -lz
+FUZZ_EXTRA_fuzz_jpeg := $(FUZZ_IMAGE)
+FUZZ_EXTRA_fuzz_gif := $(FUZZ_IMAGE)
+FUZZ_EXTRA_fuzz_webp := $(FUZZ_IMAGE)
 
 # The long campaign (docs/RELIABILITY.md records its results): one core,
 # nice 15, each target for its share of FUZZ_CAMPAIGN (TARGET:SECONDS ...).
-FUZZ_CAMPAIGN ?= fuzz_grammar:900 fuzz_gkiosk:900 fuzz_gobj:900 fuzz_gpsf:600 fuzz_png:600
+FUZZ_CAMPAIGN ?= fuzz_grammar:900 fuzz_gkiosk:900 fuzz_gobj:900 fuzz_gpsf:600 fuzz_png:600 fuzz_jpeg:300 fuzz_gif:300 fuzz_webp:300
 fuzz-campaign: fuzz-build
 	sh tests/fuzz/campaign.sh $(FUZZ_CAMPAIGN)
 .PHONY: fuzz-campaign

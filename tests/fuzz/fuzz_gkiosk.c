@@ -16,7 +16,7 @@ static int64_t clock_of[64];
 #include "fuzz_kiosk.c"
 #undef LLVMFuzzerTestOneInput
 
-static const char *const types[] = {"number", "gauge", "bar", "spark", "text", "clock", "heat", "image"};
+static const char *const types[] = {"number", "gauge", "bar", "spark", "text", "clock", "heat", "image", "qr"};
 static const char *const names[] = {"a", "b", "c", "h"};
 
 static void put_value(in *s, out *o, const kiosk_key *q)

@@ -14,6 +14,7 @@
 
 #include "fixel/error.h"
 #include "fixel/face.h"
+#include "fixel/image.h"
 #include "fixel/memfb.h"
 #include "fixel/scene.h"
 #include "fixel/par.h"
@@ -88,7 +89,15 @@ static int load_image(void *u, const char *path, fx_surface *out)
         return -FX_ENOMEM;
     uint8_t *rgb;
     int32_t w, h;
-    int r = fx_read_png_rgb(path, &rgb, &w, &h);
+    /* PNG, JPEG, GIF (frame 0), WebP: boards/image/ by the first bytes */
+    int r;
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        r = -FX_ENOENT;
+    } else {
+        r = fx_image_read_rgb(f, NULL, &rgb, &w, &h, NULL, 0);
+        fclose(f);
+    }
     if (r < 0 && textures_ppm) {
         const char *base = strrchr(path, '/');
         char alt[1024];

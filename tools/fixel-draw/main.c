@@ -19,6 +19,7 @@
 #include "fixel/error.h"
 #include "fixel/files.h"
 #include "fixel/face.h"
+#include "fixel/image.h"
 #include "fixel/memfb.h"
 #include "fixel/par.h"
 #include "fixel/rt_mt.h"
@@ -282,20 +283,61 @@ static int load_file(void *u, const char *path, const uint8_t **data, size_t *le
     return 0;
 }
 
-/* 'texture image PATH': a PNG decoded into ARGB8888 (opaque), kept on
- * the same list as loaded files; at most 4096 pixels a side, 4 Mpixels. */
+/* 'texture image PATH': PNG, JPEG, GIF, WebP or PPM (boards/image/, by
+ * the first bytes) decoded into ARGB8888 (opaque), kept on the same list as
+ * loaded files; at most 4096 pixels a side, 4 Mpixels. A GIF gives frame 0,
+ * or frame N of "PATH#N" when PATH itself is not a file. The reason for a
+ * refusal (the limit, the truncation) goes to stderr with the file name;
+ * the script's error names the line. */
 static int load_image(void *u, const char *path, fx_surface *out)
 {
     host *H = u;
-    FILE *f = open_input(path, 0);
+    char file[4096];
+    long frame = 0;
+    const char *hash = strrchr(path, '#');
+    snprintf(file, sizeof file, "%s", path);
+    if (hash && access(path, F_OK) != 0) {
+        char *end;
+        errno = 0;
+        frame = strtol(hash + 1, &end, 10);
+        if (hash[1] < '0' || hash[1] > '9' || *end || errno || frame > 100000) {
+            fprintf(stderr, "fixel-draw: %s: '%s' is not a frame number\n", path, hash + 1);
+            return -FX_EINVAL;
+        }
+        file[hash - path] = 0;
+    }
+    FILE *f = open_input(file, 0);
     if (!f)
         return fx_code(errno);
-    uint8_t *rgb;
-    int32_t w, h;
-    int r = fx_read_png_rgb_stream(f, 4096, (size_t)4 << 20, &rgb, &w, &h);
+    uint8_t *rgb = NULL, *data = NULL;
+    int32_t w = 0, h = 0;
+    size_t len = 0;
+    char why[256] = "";
+    fx_image_limits lim;
+    fx_image_limits_init(&lim);
+    lim.max_side = 4096;
+    lim.max_pixels = (size_t)4 << 20;
+    int r = read_all(f, lim.max_bytes, &data, &len);
     fclose(f);
-    if (r < 0)
+    if (r == 0) {
+        fx_anim *a = NULL;
+        const uint8_t *px = NULL;
+        r = fx_anim_open(&a, data, len, &lim, why, sizeof why);
+        if (r == 0 && (r = fx_anim_frame(a, (int)frame, &px, why, sizeof why)) == 0) {
+            w = fx_anim_width(a), h = fx_anim_height(a);
+            if (!(rgb = malloc((size_t)w * (size_t)h * 3)))
+                r = -FX_ENOMEM;
+            else
+                memcpy(rgb, px, (size_t)w * (size_t)h * 3);
+        }
+        fx_anim_close(a);
+        free(data);
+    }
+    if (r < 0) {
+        if (why[0])
+            fprintf(stderr, "fixel-draw: %s: %s\n", path, why);
         return r;
+    }
     uint32_t *px = malloc((size_t)w * (size_t)h * 4);
     struct loaded *l = malloc(sizeof *l);
     if (!px || !l) {

@@ -23,6 +23,7 @@
 
 typedef enum kiosk_type {
     KIOSK_NUMBER, KIOSK_GAUGE, KIOSK_BAR, KIOSK_SPARK, KIOSK_TEXT, KIOSK_CLOCK, KIOSK_HEAT, KIOSK_IMAGE,
+    KIOSK_QR,     /* a QR code of the source's text (or text=) */
     KIOSK_BUTTON, /* kiosk_pages.h: no source; a tap publishes and/or turns the page */
     KIOSK_NTYPES
 } kiosk_type;
@@ -50,6 +51,9 @@ typedef struct kiosk_widget {
     int line;                  /* where it was declared (the grid is checked after the whole file) */
     int page;                  /* the page it is on (kiosk_pages.h) */
     int button;                /* button widgets: index into pg.buttons; else -1 */
+    char qrtext[KIOSK_TEXT_MAX]; /* qr: shown until the source sends a value */
+    int qr_ecc;                /* qr: 0..3 for L M Q H */
+    int qr_quiet;              /* qr: modules of quiet zone around the code */
 } kiosk_widget;
 
 typedef struct kiosk_source {

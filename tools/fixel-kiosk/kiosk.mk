@@ -1,6 +1,9 @@
 # SPDX-License-Identifier: MIT
 # fixel-kiosk: the scripted end-to-end suite (golden frames in tests/golden/kiosk).
 TEST_SUITES += "sh tests/kiosk/run.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk"
+# the qr widget decoded by zbarimg, an animated GIF's timing (issue #41)
+TEST_SUITES += "sh tests/kiosk/media.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-media"
+TEST_DEB_PKGS += zbar-tools
 # constant memory over a run (issue #14): a short soak and valgrind pass in
 # make test; make kiosk-soak is the long one whose numbers docs/kiosk.md quotes
 TEST_SUITES += "solo: sh tests/kiosk/soak.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-soak 20000 1000"
@@ -10,6 +13,7 @@ KIOSK_SOAK_VG    ?= 5000
 kiosk-golden-update: $(BUILD)/bin/fixel-kiosk
 	mkdir -p tests/golden/kiosk
 	sh tests/kiosk/run.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk --update
+	sh tests/kiosk/media.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-media --update
 kiosk-soak: $(BUILD)/bin/fixel-kiosk
 	nice -n 5 sh tests/kiosk/soak.sh $(BUILD)/bin/fixel-kiosk $(BUILD)/kiosk-soak $(KIOSK_SOAK_LINES) $(KIOSK_SOAK_VG)
 # The fuzz target tests/fuzz/fuzz_kiosk.c needs the pure parser file.

@@ -170,11 +170,12 @@ static int find_source(const kiosk_config *k, const char *s, size_t n)
 #define UNKNOWN_DIRECTIVE \
     "unknown directive (title grid size stale history bg panel fg columns widget mqtt mqtt_tls subscribe screen schedule " \
     "page carousel touch output)"
-#define ALLW 0xFFu /* the widgets that show a source */
+#define ALLW 0x1FFu /* the widgets that show a source */
 #define BTNW (1u << KIOSK_BUTTON)
 #define LAYW (ALLW | BTNW)
 #define HEATW (1u << KIOSK_HEAT)
 #define IMGW (1u << KIOSK_IMAGE)
+#define QRW (1u << KIOSK_QR)
 #define VMAX (KIOSK_VALUE_MAX * 1000)
 const kiosk_key kiosk_keys[] = {
     {"directive", "title", 't', 0, KIOSK_TEXT_MAX - 1, 0, "the rest of the line"},
@@ -205,7 +206,10 @@ const kiosk_key kiosk_keys[] = {
     {"widget", "cmap", 'w', 0, 0, HEATW, "a colour map name (viridis, hot, ...)"},
     {"widget", "smooth", 'i', 0, 1, HEATW, "bilinear heat map"},
     {"widget", "filter", 'w', 0, 0, IMGW, "nearest|bilinear"},
-    {"widget", "path", 'f', 1, KIOSK_PATH_MAX - 1, IMGW, "image file (PNG or PPM)"},
+    {"widget", "path", 'f', 1, KIOSK_PATH_MAX - 1, IMGW, "image file (PNG, JPEG, GIF, WebP or PPM)"},
+    {"widget", "text", 't', 0, KIOSK_TEXT_MAX - 1, QRW, "the string encoded until the source sends one"},
+    {"widget", "ecc", 'w', 0, 0, QRW, "L|M|Q|H: error correction (7, 15, 25, 30 % of the code; default M)"},
+    {"widget", "quiet", 'i', 0, 16, QRW, "modules of white around the code (default 4, the standard's)"},
     {"widget", "topic", 't', 1, KIOSK_TOPIC_MAX - 1, BTNW, "a tap publishes to this topic (needs mqtt)"},
     {"widget", "payload", 't', 0, KIOSK_PAYLOAD_MAX - 1, BTNW, "the message published (default: empty)"},
     {"widget", "qos", 'i', 0, 2, BTNW, "quality of service of the message"},
@@ -298,7 +302,7 @@ static const char *range_msg(kiosk_config *k, const kiosk_key *q, tok val)
 }
 
 static const char *const type_names[KIOSK_NTYPES] = {"number", "gauge", "bar", "spark", "text",
-                                                      "clock",  "heat",  "image", "button"};
+                                                      "clock",  "heat",  "image", "qr", "button"};
 
 /* A path: printable, no quotes (one pair around it is stripped). */
 static int parse_path(tok t, char *dst)
@@ -341,7 +345,7 @@ static const char *parse_widget(kiosk_config *k, const char *line, const char *p
     int ty = -1;
     for (int i = 0; i < KIOSK_NTYPES; i++)
         if (tok_is(t, type_names[i])) ty = i;
-    if (ty < 0) return "unknown widget type (number gauge bar spark text clock heat image button)";
+    if (ty < 0) return "unknown widget type (number gauge bar spark text clock heat image qr button)";
     if (!cur_page(k, line, t.s, lineno)) return "too many pages (16)";
     w->type = (kiosk_type)ty;
     w->page = k->pg.npages - 1;
@@ -353,6 +357,7 @@ static const char *parse_widget(kiosk_config *k, const char *line, const char *p
     if (w->type == KIOSK_SPARK) w->max = 0; /* automatic range */
     if (w->type == KIOSK_IMAGE) w->smooth = 1;
     if (w->type == KIOSK_HEAT) w->cmap = FX_CMAP_VIRIDIS;
+    if (w->type == KIOSK_QR) w->qr_ecc = 1, w->qr_quiet = 4;
     int cw = 0, ch = 0;
     kiosk_button *btn = NULL;
     if (w->type == KIOSK_BUTTON) {
@@ -396,7 +401,7 @@ static const char *parse_widget(kiosk_config *k, const char *line, const char *p
         const kiosk_key *q = kiosk_key_find("widget", key.s, key.n);
         if (!q || !(q->widgets & (1u << w->type)))
             return "unknown widget key (col row w h decimals min max color label unit; heat: cells cmap smooth; "
-                   "image: path filter; button: topic payload qos retain page)";
+                   "image: path filter; qr: text ecc quiet; button: topic payload qos retain page)";
         int64_t m = 0;
         int iv = 0;
         /* numbers: the type from the table, then the table's range */
@@ -428,6 +433,11 @@ static const char *parse_widget(kiosk_config *k, const char *line, const char *p
             bad = 0;
         } else if (tok_is(key, "cmap")) bad = parse_cmap(val, &w->cmap);
         else if (tok_is(key, "smooth")) bad = (w->smooth = iv, 0);
+        else if (tok_is(key, "text")) bad = parse_text(val, w->qrtext);
+        else if (tok_is(key, "quiet")) bad = (w->qr_quiet = iv, 0);
+        else if (tok_is(key, "ecc"))
+            bad = tok_is(val, "L") ? (w->qr_ecc = 0, 0) : tok_is(val, "M") ? (w->qr_ecc = 1, 0)
+                : tok_is(val, "Q") ? (w->qr_ecc = 2, 0) : tok_is(val, "H") ? (w->qr_ecc = 3, 0) : -1;
         else if (tok_is(key, "filter"))
             bad = tok_is(val, "nearest") ? (w->smooth = 0, 0) : tok_is(val, "bilinear") ? (w->smooth = 1, 0) : -1;
         else bad = parse_path(val, k->sources[w->source].path);
@@ -439,7 +449,8 @@ static const char *parse_widget(kiosk_config *k, const char *line, const char *p
         return "button needs topic= (a message to publish) or page= (a page to show)";
     }
     if (w->min > w->max || (w->min == w->max && w->type != KIOSK_SPARK && w->type != KIOSK_NUMBER &&
-                            w->type != KIOSK_TEXT && w->type != KIOSK_CLOCK && w->type != KIOSK_IMAGE))
+                            w->type != KIOSK_TEXT && w->type != KIOSK_CLOCK && w->type != KIOSK_IMAGE &&
+                            w->type != KIOSK_QR))
         return "min must be below max";
     if (w->max - w->min > INT64_MAX / 4096) return "range too large";
     if (w->type == KIOSK_HEAT && (w->min < -2000000000 || w->max > 2000000000))
@@ -447,7 +458,7 @@ static const char *parse_widget(kiosk_config *k, const char *line, const char *p
     if (w->source >= 0) {
         kiosk_source *so = &k->sources[w->source];
         kiosk_kind want = w->type == KIOSK_HEAT ? KIOSK_KIND_HEAT : w->type == KIOSK_IMAGE ? KIOSK_KIND_IMAGE
-                        : w->type == KIOSK_TEXT ? KIOSK_KIND_TEXT : KIOSK_KIND_NUMBER;
+                        : w->type == KIOSK_TEXT || w->type == KIOSK_QR ? KIOSK_KIND_TEXT : KIOSK_KIND_NUMBER;
         int shown = 0;
         for (int i = 0; i < k->nwidgets; i++) shown |= k->widgets[i].source == w->source;
         kiosk_kind have = shown ? so->kind : want;

@@ -35,11 +35,16 @@
 #include "fixel/fixed.h"
 #include "fixel/font.h"
 #include "fixel/line.h"
+#include "fixel/image.h"
 #include "fixel/memfb.h"
 #include "fixel/par.h"
 #include "fixel/texture.h"
 #include "fixel/version.h"
 #include "fixel/viz.h"
+
+#ifndef FX_NO_QR
+#include <qrencode.h>
+#endif
 
 #ifndef FX_NO_PNG
 #include <png.h>
@@ -79,6 +84,10 @@ typedef struct kimg {
     ino_t ino;
     off_t size;
     struct timespec mtim;
+    /* an animated GIF: rgb holds the current frame */
+    fx_anim *anim;
+    int frame, plays;     /* plays: loops completed */
+    int64_t next_ms;      /* when the next frame is due */
 } kimg;
 
 typedef struct kline {
@@ -94,6 +103,16 @@ typedef struct kscreen {
     int32_t W, H;
     int full, status; /* at its next frame: redraw everything / the status line */
 } kscreen;
+
+/* qr widgets: the modules of the text last encoded (encoded between
+ * frames, never while bands of a frame are drawn on threads) */
+typedef struct kqr {
+    char text[KIOSK_TEXT_MAX];
+    int tried;
+    int size;       /* modules a side; 0: nothing to show */
+    uint8_t *mods;  /* size * size, 1 dark */
+    const char *why; /* when size is 0 */
+} kqr;
 
 typedef struct kiosk {
     kiosk_config cfg;
@@ -117,6 +136,7 @@ typedef struct kiosk {
     int always_full; /* --full: redraw everything each frame (tests check damage against it) */
     int threads;     /* --threads: a frame's drawing in bands of rows on this many threads */
     kimg img[KIOSK_MAX_WIDGETS];
+    kqr qr[KIOSK_MAX_WIDGETS];
     uint32_t img_errors;  /* image loads that failed (missing, corrupt, too large) */
     /* live mode: MQTT, control and status (docs/kiosk.md, "MQTT") */
     const char *cfgpath;
@@ -134,7 +154,7 @@ typedef struct kiosk {
     int64_t identify_until;
     int identify_phase;
     uint32_t reloads;
-    char cfg_error[200];  /* why the last reload was refused ("" : it was not) */
+    char cfg_error[300];  /* why the last reload was refused ("" : it was not) */
     int ready_sent;       /* systemd: READY=1 after the first frame */
     int64_t wd_ms, wd_last; /* systemd watchdog: ping interval (0: none), last ping */
     /* pages and touch (kiosk_pages.h, docs/kiosk.md "Pages and touch") */
@@ -297,6 +317,48 @@ static int load_png(FILE *f, kimg *m)
 #endif
 }
 
+/* JPEG, GIF (its first frame) and WebP: boards/image/, same limits */
+static int load_decoded(FILE *f, kimg *m, const char *path)
+{
+    fx_image_limits l;
+    fx_image_limits_init(&l);
+    l.max_side = IMG_MAX_DIM;
+    l.max_pixels = IMG_MAX_PIXELS;
+    l.max_bytes = (size_t)16 << 20;
+    char why[200];
+    unsigned char magic[6];
+    int gif = fread(magic, 1, 6, f) == 6 && fx_image_sniff(magic, 6) == FX_IMAGE_GIF;
+    rewind(f);
+    why[0] = 0;
+    if (!gif) {
+        int r = fx_image_read_rgb(f, &l, &m->rgb, &m->w, &m->h, why, sizeof why);
+        /* the cell says "bad image" or "too large"; the log says which limit */
+        if (r < 0) fprintf(stderr, "fixel-kiosk: %s: %s\n", path, why[0] ? why : fx_strerror(r));
+        return r == 0 ? IMG_OK : r == -FX_EFBIG ? IMG_HUGE : IMG_BAD;
+    }
+    /* GIF: kept open to animate (bounded: the file, two canvases) */
+    if (m->file_size > (int64_t)l.max_bytes) return IMG_HUGE;
+    size_t len = (size_t)m->file_size;
+    uint8_t *data = malloc(len ? len : 1);
+    if (!data) return IMG_HUGE;
+    if (fread(data, 1, len, f) != len) { free(data); return IMG_BAD; }
+    int r = fx_anim_open(&m->anim, data, len, &l, why, sizeof why);
+    free(data);
+    const uint8_t *px;
+    if (r == 0 && (r = fx_anim_frame(m->anim, 0, &px, why, sizeof why)) == 0) {
+        m->w = fx_anim_width(m->anim), m->h = fx_anim_height(m->anim);
+        if (!(m->rgb = malloc((size_t)m->w * (size_t)m->h * 3))) r = -FX_ENOMEM;
+        else memcpy(m->rgb, px, (size_t)m->w * (size_t)m->h * 3);
+    }
+    if (r == 0 && fx_anim_frames(m->anim) < 2) { fx_anim_close(m->anim); m->anim = NULL; }
+    if (r < 0) { fx_anim_close(m->anim); m->anim = NULL; }
+    m->frame = 0;
+    m->plays = 0;
+    m->next_ms = -1; /* the clock starts when it is first shown */
+    if (r < 0) fprintf(stderr, "fixel-kiosk: %s: %s\n", path, why[0] ? why : fx_strerror(r));
+    return r == 0 ? IMG_OK : r == -FX_EFBIG ? IMG_HUGE : IMG_BAD;
+}
+
 static int load_image(const char *path, kimg *m)
 {
     /* never blocks on open (a FIFO named as the image), regular files only */
@@ -304,16 +366,19 @@ static int load_image(const char *path, kimg *m)
     FILE *f = fx_fopen_regular(path, &size, NULL, 0);
     if (!f) return errno == EISDIR || errno == EOPNOTSUPP ? IMG_BAD : IMG_MISSING;
     m->file_size = (off_t)size;
-    unsigned char magic[8];
+    unsigned char magic[12]; /* WebP's RIFF....WEBP */
     size_t n = fread(magic, 1, sizeof magic, f);
     int r = IMG_BAD;
     rewind(f);
-    if (n == 8 && !memcmp(magic, "\x89PNG\r\n\x1a\n", 8)) r = load_png(f, m);
+    if (n >= 8 && !memcmp(magic, "\x89PNG\r\n\x1a\n", 8)) r = load_png(f, m);
     else if (n >= 2 && magic[0] == 'P' && magic[1] == '6') r = load_ppm(f, m);
+    else if (fx_image_sniff(magic, n) != FX_IMAGE_UNKNOWN) r = load_decoded(f, m, path);
     fclose(f);
     if (r != IMG_OK) {
         free(m->rgb);
         m->rgb = NULL;
+        fx_anim_close(m->anim);
+        m->anim = NULL;
     }
     return r;
 }
@@ -321,8 +386,11 @@ static int load_image(const char *path, kimg *m)
 /* Reload every image whose path was named again or whose file changed
  * (device, inode, size or mtime): a writer that replaces the file by
  * rename and one that rewrites it in place are both seen. */
+static void animate_images(kiosk *k);
+
 static void check_images(kiosk *k)
 {
+    animate_images(k);
     for (int i = 0; i < k->cfg.nwidgets; i++) {
         const kiosk_widget *w = &k->cfg.widgets[i];
         if (w->type != KIOSK_IMAGE) continue;
@@ -346,12 +414,82 @@ static void check_images(kiosk *k)
         }
         free(m->rgb);
         m->rgb = NULL;
+        fx_anim_close(m->anim);
+        m->anim = NULL;
         /* only regular files: opening a FIFO or a device could block the kiosk */
         m->state = !so->path[0] ? IMG_NONE : !have ? IMG_MISSING : !S_ISREG(st.st_mode) ? IMG_BAD
                  : load_image(so->path, m);
+        if (m->anim) m->next_ms = k->now_ms + fx_anim_delay_ms(m->anim, 0); /* frame 0 shows from now */
         if (m->state != IMG_OK && m->state != IMG_NONE) k->img_errors++;
         k->dirty[i] = 1;
         k->status_dirty = 1;
+    }
+}
+
+/* Animated GIFs: each frame shown for its own delay (the GIF's, 0 and 10
+ * ms as 100 ms), looping as the file says; frames late by more than one
+ * delay are skipped, not played fast. */
+static void animate_images(kiosk *k)
+{
+    for (int i = 0; i < k->cfg.nwidgets; i++) {
+        kimg *m = &k->img[i];
+        if (!m->anim || m->state != IMG_OK || !m->rgb) continue;
+        int n = fx_anim_frames(m->anim), loops = fx_anim_loops(m->anim);
+        if (m->next_ms < 0) m->next_ms = k->now_ms + fx_anim_delay_ms(m->anim, m->frame);
+        int step = 0;
+        while (k->now_ms >= m->next_ms && step < n) {
+            if (m->frame + 1 == n) {
+                if (loops && m->plays + 1 >= loops) { m->next_ms = INT64_MAX; break; }
+                m->plays++;
+            }
+            m->frame = (m->frame + 1) % n;
+            m->next_ms += fx_anim_delay_ms(m->anim, m->frame);
+            step++;
+        }
+        if (k->now_ms >= m->next_ms && m->next_ms != INT64_MAX) m->next_ms = k->now_ms + fx_anim_delay_ms(m->anim, m->frame);
+        if (!step) continue;
+        const uint8_t *px;
+        char why[200];
+        if (fx_anim_frame(m->anim, m->frame, &px, why, sizeof why) == 0)
+            memcpy(m->rgb, px, (size_t)m->w * (size_t)m->h * 3);
+        else { fx_anim_close(m->anim); m->anim = NULL; }
+        k->dirty[i] = 1;
+    }
+}
+
+/* Encode each qr widget's text again when it changed: the source's last
+ * value, else the configured text=. */
+static void check_qr(kiosk *k)
+{
+    for (int i = 0; i < k->cfg.nwidgets; i++) {
+        const kiosk_widget *w = &k->cfg.widgets[i];
+        if (w->type != KIOSK_QR) continue;
+        const kiosk_source *so = w->source >= 0 ? &k->cfg.sources[w->source] : NULL;
+        const char *text = so && so->updates && so->text[0] ? so->text : w->qrtext;
+        kqr *q = &k->qr[i];
+        if (q->tried && !strcmp(q->text, text)) continue;
+        q->tried = 1;
+        snprintf(q->text, sizeof q->text, "%s", text);
+        free(q->mods);
+        q->mods = NULL;
+        q->size = 0;
+        q->why = "no data";
+        k->dirty[i] = 1;
+        if (!text[0]) continue;
+#ifndef FX_NO_QR
+        static const QRecLevel levels[] = {QR_ECLEVEL_L, QR_ECLEVEL_M, QR_ECLEVEL_Q, QR_ECLEVEL_H};
+        QRcode *c = QRcode_encodeString8bit(text, 0, levels[w->qr_ecc & 3]);
+        if (!c || c->width < 21 || !(q->mods = malloc((size_t)c->width * (size_t)c->width))) {
+            q->why = "cannot encode";
+            if (c) QRcode_free(c);
+            continue;
+        }
+        for (int j = 0; j < c->width * c->width; j++) q->mods[j] = c->data[j] & 1;
+        q->size = c->width;
+        QRcode_free(c);
+#else
+        q->why = "no libqrencode";
+#endif
     }
 }
 
@@ -359,7 +497,11 @@ static void free_images(kiosk *k)
 {
     for (int i = 0; i < KIOSK_MAX_WIDGETS; i++) {
         free(k->img[i].rgb);
+        fx_anim_close(k->img[i].anim);
+        k->img[i].anim = NULL;
         k->img[i].rgb = NULL;
+        free(k->qr[i].mods);
+        k->qr[i].mods = NULL;
     }
 }
 
@@ -601,6 +743,29 @@ static void img_shade(const void *user, int32_t y, int32_t x, int32_t n, fx_colo
     }
 }
 
+/* Whole pixels per module (a scanner needs square, equal modules), the
+ * quiet zone white like the code's light modules, centred in the cell. */
+static void draw_qr(kiosk *k, fx_ctx *c, int i, fx_rect r)
+{
+    const kqr *q = &k->qr[i];
+    const kiosk_widget *w = &k->cfg.widgets[i];
+    fx_rect a = {r.x0 + 8, r.y0 + 18, r.x1 - 6, r.y1 - 6};
+    int32_t aw = a.x1 - a.x0, ah = a.y1 - a.y0, side = aw < ah ? aw : ah;
+    int32_t n = q->size + 2 * w->qr_quiet, px = n > 0 ? side / n : 0;
+    if (!q->mods || px < 1) {
+        const char *why = q->mods ? "too small" : q->why ? q->why : "no data";
+        fill(c, EMPTY_CELL, a.x0, a.y0, aw, ah);
+        int32_t sc = fit_scale(why, aw - 8, ah, 2);
+        text_at(c, a.x0 + (aw - text_w(why, sc)) / 2, a.y0 + (ah - 10 * sc) / 2, sc, q->mods ? BAD_RED : DIM, why);
+        return;
+    }
+    int32_t x0 = a.x0 + (aw - n * px) / 2, y0 = a.y0 + (ah - n * px) / 2, m0 = w->qr_quiet * px;
+    fill(c, 0xFFFFFFFFu, x0, y0, n * px, n * px);
+    for (int32_t y = 0; y < q->size; y++)
+        for (int32_t x = 0; x < q->size; x++)
+            if (q->mods[y * q->size + x]) fill(c, 0xFF000000u, x0 + m0 + x * px, y0 + m0 + y * px, px, px);
+}
+
 static void draw_image(kiosk *k, fx_ctx *c, int i, fx_rect r)
 {
     const kimg *m = &k->img[i];
@@ -709,6 +874,7 @@ static void draw_widget(kiosk *k, fx_ctx *base, int i)
     case KIOSK_SPARK: draw_spark(k, &c, w, r, acc, stale); break;
     case KIOSK_HEAT: draw_heat(k, &c, w, r, stale); break;
     case KIOSK_IMAGE: draw_image(k, &c, i, r); break;
+    case KIOSK_QR: draw_qr(k, &c, i, r); break;
     case KIOSK_BUTTON:
     case KIOSK_NTYPES: break;
     case KIOSK_CLOCK: {
@@ -1184,7 +1350,7 @@ static int load_config(const char *path, kiosk_config *cfg, char *err, size_t er
     fclose(cf);
     if (rerr) { snprintf(err, errsize, "%s: read error", path); return -1; }
     if (toolong) { snprintf(err, errsize, "%s: larger than %zu bytes", path, sizeof cbuf); return -1; }
-    char e[160];
+    char e[240]; /* the unknown-widget-key message lists every key */
     if (kiosk_config_parse(cfg, cbuf, clen, e, sizeof e) < 0) {
         const char *msg = e;
         /* the parser says "line N: reason"; the place goes in front as FILE:LINE:COL */
@@ -1257,7 +1423,7 @@ static void publish_status(kiosk *k)
 static void reload(kiosk *k)
 {
     static kiosk_config fresh; /* as large as the model: not on the stack */
-    char err[200];
+    char err[300];
     if (load_config(k->cfgpath, &fresh, err, sizeof err) < 0) {
         /* the old config keeps running; the status says why */
         snprintf(k->cfg_error, sizeof k->cfg_error, "%s", err);
@@ -1420,6 +1586,7 @@ static void on_tick(void *user, int value)
     feed_available(k);
     mqtt_pump(k);
     check_images(k);
+    check_qr(k);
     /* WatchdogSec=: pinged from the main loop's own timer, so a hung loop
      * (not just a dead process) gets the kiosk restarted */
     if (k->wd_ms && k->now_ms - k->wd_last >= k->wd_ms) {
@@ -1567,7 +1734,7 @@ int main(int argc, char **argv)
                 if (q->widgets == shows) printf(" (not button)");
                 else if (q->widgets && q->widgets != all) { /* the widget types it applies to */
                     static const char *const wt[KIOSK_NTYPES] = {"number", "gauge", "bar",   "spark", "text",
-                                                                 "clock",  "heat",  "image", "button"};
+                                                                 "clock",  "heat",  "image", "qr", "button"};
                     const char *sep = " (";
                     for (int j = 0; j < KIOSK_NTYPES; j++)
                         if (q->widgets >> j & 1) { printf("%s%s", sep, wt[j]); sep = ", "; }
@@ -1772,6 +1939,7 @@ int main(int argc, char **argv)
         for (int f = 0; f < frames; f++) {
             feed_frame(k);
             check_images(k);
+            check_qr(k);
             update_stale(k);
             pages_tick(k);
             for (int s = 0; s < k->nscr; s++) render(k, s);
