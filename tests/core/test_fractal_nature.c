@@ -278,7 +278,9 @@ FX_TEST(boxdim_known_figures)
 {
     canvas k;
     canvas_new(&k, 760, 300);
-    fx_koch(&k.c, 15, 280, 15 + 729, 280, 6);
+    /* bumps turn from +x towards +y (issue #44's one angle rule): below
+     * the base line on the y-down canvas, so the base is near the top */
+    fx_koch(&k.c, 15, 20, 15 + 729, 20, 6);
     double dk = measure(&k, 2, 64);
     FX_CHECK_MSG(fabs(dk - log(4) / log(3)) < 0.05, "Koch %.4f", dk);
     free(k.px);

@@ -259,6 +259,18 @@ static int wants_format(const char *script, fx_format f)
  * In --compare-ppm mode the target rendered the PPMs: a missing one of such
  * a script means the target skipped it. */
 static int needs_text(const char *script) { return strstr(script, "# needs: smooth-text") != NULL; }
+/* "# needs: image-decoders": JPEG, GIF and WebP textures (boards/image),
+ * which a build without libjpeg, giflib or libwebp refuses. */
+static int lacks_needed(const char *script)
+{
+    if (needs_text(script) && !fx_face_available())
+        return 1;
+#if defined(FX_NO_JPEG) || defined(FX_NO_GIF) || defined(FX_NO_WEBP)
+    if (strstr(script, "# needs: image-decoders"))
+        return 1;
+#endif
+    return 0;
+}
 
 int main(int argc, char **argv)
 {
@@ -333,8 +345,8 @@ int main(int argc, char **argv)
             if (!wants_format(text, (fx_format)f))
                 continue;
             const char *fname = fx_format_get((fx_format)f)->name;
-            if (needs_text(text)) {
-                int skip = !fx_face_available();
+            if (needs_text(text) || strstr(text, "# needs: image-decoders")) {
+                int skip = lacks_needed(text);
                 if (!skip && compare_ppm) {
                     char pp[2200];
                     struct stat pst;
@@ -342,8 +354,9 @@ int main(int argc, char **argv)
                     skip = stat(pp, &pst) != 0;
                 }
                 if (skip) {
-                    printf("skip %s [%s]: smooth text, and this build has no FreeType/HarfBuzz/FriBiDi/fontconfig/libunibreak\n",
-                           names[i], fname);
+                    printf("skip %s [%s]: it needs %s, which this build has not\n", names[i], fname,
+                           needs_text(text) ? "FreeType/HarfBuzz/FriBiDi/fontconfig/libunibreak"
+                                            : "libjpeg, giflib and libwebp");
                     skipped++;
                     continue;
                 }

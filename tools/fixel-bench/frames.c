@@ -170,7 +170,7 @@ static cell time_script(fx_memfb *fb, const char *text, size_t len, int nthreads
     *ok = 1;
     for (int k = -1; k < REPS; k++) {
         shost H = {fb};
-        fx_scene_host hs = {&H, make_surface, NULL, NULL, NULL, NULL, NULL};
+        fx_scene_host hs = {&H, make_surface, NULL, NULL, NULL, NULL};
         static fx_scene sc;
         fx_scene_init(&sc, &hs, arena, arena_size);
         fx_scene_fix_size(&sc, fb->surf.w, fb->surf.h);
