@@ -92,7 +92,13 @@ PKGS     := $(if $(HAVE_PNG),$(SYS_PKGS)) $(if $(HAVE_OPT),$(OPT_PKGS)) $(if $(H
 # no pkg-config file: its header is looked for. libqrencode (the tools' qr).
 HAVE_JPEG := $(shell $(PKG_CONFIG) --exists libjpeg 2>/dev/null && echo 1)
 HAVE_WEBP := $(shell $(PKG_CONFIG) --exists libwebp 2>/dev/null && echo 1)
-HAVE_GIF  := $(shell echo '\#include <gif_lib.h>' | $(CC) -E -x c - >/dev/null 2>&1 && echo 1)
+# (linked, not only preprocessed: a cross compiler may see the host's header
+# and have no target library)
+# ('#' through a variable: inside $(shell) a \# stays "\#", which the
+# preprocessor alone let through as a stray character)
+HASH      := \#
+HAVE_GIF  := $(shell printf '$(HASH)include <gif_lib.h>\nint main(void) { return GifErrorString(0) == 0; }\n' | \
+               $(CC) -x c - -lgif -o /dev/null >/dev/null 2>&1 && echo 1)
 HAVE_QR   := $(shell $(PKG_CONFIG) --exists libqrencode 2>/dev/null && echo 1)
 PKGS     += $(if $(HAVE_JPEG),libjpeg) $(if $(HAVE_WEBP),libwebp) $(if $(HAVE_QR),libqrencode)
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null) $(if $(HAVE_PNG),,-DFX_NO_PNG -DFX_NO_ZLIB) \
