@@ -5,6 +5,9 @@
  * frame table (delays, disposal, rectangles; at most max_frames entries);
  * for a frame, the decoder continues from where it is (or restarts from
  * frame 0) and composites each frame on the canvas, one row at a time. */
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE /* clock_gettime under -std=c11, whoever compiles it */
+#endif
 #include <stdlib.h>
 #include <string.h>
 

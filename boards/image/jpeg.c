@@ -3,6 +3,9 @@
  * can hold thousands of scans each redoing the whole image (a decompression
  * bomb of a few kilobytes), so scans are capped and the clock is checked
  * from the progress monitor; libjpeg's own memory manager is capped too. */
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE /* clock_gettime under -std=c11, whoever compiles it */
+#endif
 #include <stdlib.h>
 #include <string.h>
 

@@ -1,6 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* WebP (lossy and lossless, still) through libwebp: the header is read
  * first so the size limits apply before any pixel memory. */
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE /* clock_gettime under -std=c11, whoever compiles it */
+#endif
 #include <stdlib.h>
 
 #include "fixel/error.h"

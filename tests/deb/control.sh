@@ -36,6 +36,16 @@ done
 # libfixel-dev's Depends against the static link line
 deps=$(awk '/^Package: libfixel-dev/{p=1} p && /^Depends:/{d=1} p && d{print} p && d && !/,$/{exit}' debian/control |
        sed 's/^Depends://' | tr ',' '\n' | sed -E 's/\(.*\)//; s/^[[:space:]]+//; s/[[:space:]]+$//' | grep -v '^\$' | grep -v '^$')
+# ${fixel:TextDev} (debian/rules): the text libraries' -dev packages,
+# where the build has them, as this host's does when make print-HAVE_TEXT says 1
+if grep -q '\${fixel:TextDev}' debian/control && [ -n "$($MK print-HAVE_TEXT 2>/dev/null | tail -n 1)" ]; then
+    deps="$deps
+libfreetype-dev
+libharfbuzz-dev
+libfribidi-dev
+libfontconfig-dev
+libunibreak-dev"
+fi
 [ -f "$B/fixel.pc" ] || $MK "$B/fixel.pc" BUILD="$B" >/dev/null
 libs=$(PKG_CONFIG_PATH="$B" pkg-config --static --libs fixel) || no "pkg-config --static --libs fixel"
 miss=""; seen=""

@@ -14,7 +14,8 @@ DEB_ARCHES ?= amd64 arm64 armhf
 # (its absence stopped a fresh machine's make deb after the installs);
 # tests/deb/control.sh checks this set covers debian/control's Build-Depends.
 DEB_BUILD_DEB_PKGS := build-essential dpkg-dev debhelper lintian fakeroot crossbuild-essential-arm64 crossbuild-essential-armhf \
-  qemu-user-static $(foreach a,arm64 armhf,$(foreach p,libdrm-dev libevdev-dev libgpiod-dev libpng-dev zlib1g-dev,$(p):$(a)))
+  qemu-user-static $(foreach a,arm64 armhf,$(foreach p,libdrm-dev libevdev-dev libgpiod-dev libpng-dev zlib1g-dev \
+                                                       libjpeg62-turbo-dev libgif-dev libwebp-dev libqrencode-dev,$(p):$(a)))
 .PHONY: deb
 deb:
 	@sh tests/deps.sh --for "make deb" $(sort $(DEB_PKGS) $(DEB_BUILD_DEB_PKGS))

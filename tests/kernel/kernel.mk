@@ -21,7 +21,9 @@ KT_LIBSRC := $(CORE_SRC) $(sort $(foreach d,$(BOARD_DIRS) $(BOARD_LIB_DIRS),$(wi
 KT_GUESTSRC := $(wildcard $(KT_DIR)/guest/*.c)
 # No -Werror here: the main build enforces it, and a cross compiler's extra
 # warning must not stop the rig.
-KT_CFLAGS := -std=c11 -O2 -g0 -Wall -Wextra \
+# (the guests decode no JPEG, GIF or WebP and draw no QR code: boards/image
+# builds without those libraries, which the targets' sysroots lack)
+KT_CFLAGS := -std=c11 -O2 -g0 -Wall -Wextra -DFX_NO_JPEG -DFX_NO_GIF -DFX_NO_WEBP -DFX_NO_QR \
 	-Ikernel-free-src/include -Iboards/include -Ikernel-free-src -I$(KT_DIR)/guest \
 	-I/usr/include/libdrm -I/usr/include/libevdev-1.0
 KT_LDLIBS := -static -ldrm -levdev -lgpiod -lpng16 -lz -lm
