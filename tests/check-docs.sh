@@ -33,6 +33,8 @@ for doc in "$@"; do
         esac
         # a placeholder in capitals (tests/golden/FORMAT/) names no one file
         echo "$t" | grep -q '[A-Z][A-Z][A-Z]' && ! [ -e "$t" ] && continue
+        # what a build writes (build/man/man3 ...) is not in the tree
+        case $t in build/*|out/*) continue ;; esac
         p=${t%/}; p=${p#./}
         found=""
         for base in "" kernel-free-src/ kernel-free-src/include/ boards/ boards/include/ tools/ tests/ tests/core/ tests/boards/ tests/tools/ docs/ "$(dirname "$doc")/"; do

@@ -24,10 +24,13 @@ int fx_orbit0(fx56 cre, fx56 cim, uint32_t n, fx56 *zre, fx56 *zim, fx_orbit0_in
             zre[k] = x;
         if (zim)
             zim[k] = y;
-        /* |z|^2 > 4 in Q8.56: |z| <= 2 before this step, so x, y, and z^2 + c
-         * (|c| parts <= 16) stay far below 128 */
-        fx56 x2 = fx56_mul(x, x), y2 = fx56_mul(y, y);
-        if (x2 + y2 > 4 * FX56_ONE) {
+        /* |z|^2 > 4 in Q8.56. z_1 = c may be 16 a part, whose square leaves
+         * Q8.56 (the corner suite found the overflow): a part over 2 escapes
+         * before anything is squared. Past that test |x|, |y| <= 2, so
+         * x^2 + y^2 <= 8 and z^2 + c (|c| parts <= 16) stays below 28. */
+        int far = abs64(x) > 2 * FX56_ONE || abs64(y) > 2 * FX56_ONE;
+        fx56 x2 = far ? 0 : fx56_mul(x, x), y2 = far ? 0 : fx56_mul(y, y);
+        if (far || x2 + y2 > 4 * FX56_ONE) {
             out->kind = FX_ORBIT0_ESCAPES;
             out->steps = k;
             out->re = x, out->im = y;

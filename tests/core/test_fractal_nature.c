@@ -738,6 +738,21 @@ FX_TEST(julia_c_first_form)
 }
 
 /* Issue #44: the orbit of 0, the notes' way into M, with their cases. */
+/* c at the ends of its range: z_1 = c already escapes, and squaring a part
+ * of 16 left Q8.56 (the sanitized corner suite found the overflow) */
+FX_TEST(orbit0_at_the_range_ends)
+{
+    const fx56 v[] = {-16 * FX56_ONE, 16 * FX56_ONE, 2 * FX56_ONE + 1, 0};
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            if (!v[i] && !v[j])
+                continue;
+            fx_orbit0_info o;
+            FX_CHECK_EQ(fx_orbit0(v[i], v[j], 8, NULL, NULL, &o), (int)FX_ORBIT0_ESCAPES);
+            FX_CHECK_EQ(o.steps, 1u);
+        }
+}
+
 FX_TEST(orbit0_classifies_the_notes_cases)
 {
     fx56 zr[300], zi[300];

@@ -44,7 +44,7 @@ TEST_SUITES += "sh tests/fuzz/run-short.sh $(FUZZ_RUNS)"
 
 .PHONY: fuzz fuzz-build
 FUZZ_EXTRA_fuzz_gkiosk := tools/fixel-kiosk/kiosk_parse.c
-FUZZ_EXTRA_fuzz_png := boards/memory/memfb.c -lpng -lz
+FUZZ_EXTRA_fuzz_png := boards/memory/memfb.c boards/posix/files.c -lpng -lz
 # fuzz_face: hostile fonts and any text through boards/text/face.c and the
 # system's FreeType, HarfBuzz, FriBiDi, fontconfig and libunibreak (only
 # when the build has them: HAVE_TEXT in the top Makefile).
@@ -53,7 +53,7 @@ ifneq ($(HAVE_TEXT),1)
   FUZZ_TARGETS := $(filter-out fuzz_face,$(FUZZ_TARGETS))
 endif
 # boards/image/ (issue #41): each decoder's target links the whole folder
-FUZZ_IMAGE := boards/image/image.c boards/image/jpeg.c boards/image/gif.c boards/image/webp.c boards/memory/memfb.c \
+FUZZ_IMAGE := boards/image/image.c boards/image/jpeg.c boards/image/gif.c boards/image/webp.c boards/memory/memfb.c boards/posix/files.c \
               -ljpeg -lgif -lwebp -lpng -lz
 FUZZ_EXTRA_fuzz_jpeg := $(FUZZ_IMAGE)
 FUZZ_EXTRA_fuzz_gif := $(FUZZ_IMAGE)

@@ -32,6 +32,7 @@ typedef struct fx_image_limits {
     uint32_t max_ms;     /* wall time of one decode, checked per row / scan */
 } fx_image_limits;
 
+/* Fills l with the FX_IMAGE_DEFAULT_* limits; change a field after it. */
 void fx_image_limits_init(fx_image_limits *l);
 
 typedef enum fx_image_kind {
