@@ -36,7 +36,12 @@ static int64_t floor_div(int64_t a, int64_t b)
  * |re - cre| < 2^5 and fw <= 2^15 keep the products under 2^49. */
 static void pix28(const fx_fractal_view *v, int64_t re, int64_t im, int32_t *x, int32_t *y)
 {
+    /* a width under 2^-28 (which fx_fractal_check lets through, and
+     * fx_julia_check does not) has no Q4.28 size: take the smallest one,
+     * so a point maps far out (saturated) instead of dividing by zero */
     int64_t w = v->width >> 28;
+    if (w < 1)
+        w = 1;
     int64_t dx = re - to28(v->cre), dy = im - to28(v->cim);
     *x = fx_sat32(floor_div(2 * dx * v->fw + (int64_t)v->fw * w, 2 * w));
     *y = fx_sat32(floor_div((int64_t)v->fh * w - 2 * dy * v->fw, 2 * w));

@@ -812,12 +812,15 @@ static void lerp_cvert(const fx_gl_cvert *a, const fx_gl_cvert *b, fx32 num, fx3
     o->p.y = fx32_add(a->p.y, fx_muldiv64(fx32_sub(b->p.y, a->p.y), num, den));
     o->p.z = fx32_add(a->p.z, fx_muldiv64(fx32_sub(b->p.z, a->p.z), num, den));
     o->p.w = fx32_add(a->p.w, fx_muldiv64(fx32_sub(b->p.w, a->p.w), num, den));
+    /* colours and texture coordinates take any fx16 (a texture coordinate
+     * of -2^31 units came from the fuzzer): the difference in 64 bits, the
+     * result between a and b, so it fits again */
     for (int k = 0; k < 4; k++) {
-        o->c[k] = (fx16)(a->c[k] + fx_muldiv64(b->c[k] - a->c[k], num, den));
-        o->bc[k] = (fx16)(a->bc[k] + fx_muldiv64(b->bc[k] - a->bc[k], num, den));
+        o->c[k] = (fx16)(a->c[k] + fx_muldiv64((int64_t)b->c[k] - a->c[k], num, den));
+        o->bc[k] = (fx16)(a->bc[k] + fx_muldiv64((int64_t)b->bc[k] - a->bc[k], num, den));
     }
-    o->s = (fx16)(a->s + fx_muldiv64(b->s - a->s, num, den));
-    o->t = (fx16)(a->t + fx_muldiv64(b->t - a->t, num, den));
+    o->s = (fx16)(a->s + fx_muldiv64((int64_t)b->s - a->s, num, den));
+    o->t = (fx16)(a->t + fx_muldiv64((int64_t)b->t - a->t, num, den));
 }
 
 int fx_gl_clip_line(fx_gl_cvert *a, fx_gl_cvert *b, fx32 g)

@@ -169,12 +169,15 @@ root_runs() { # log, the lines printed for the user, label: root runs them, in o
     fi
 }
 sp() { case " $1 " in *" $2 "*) return 0 ;; esac; return 1; } # word $2 in list $1
-APTLINE='^  sudo apt-get update && sudo apt-get install -y --no-install-recommends( [a-z0-9.+-]+)+$'
+# (a root without sudo, as these are, is told to run the lines "as root",
+# without the sudo in front)
+CMD='^  (sudo )?(apt-get|dpkg) '
+APTLINE='^  (sudo )?apt-get update && (sudo )?apt-get install -y --no-install-recommends( [a-z0-9.+-]+)+$'
 as_user $MK run > "$W/user-run-1.log" 2>&1; rc=$?
 line=$(grep -E "$APTLINE" "$W/user-run-1.log")
 pk=$(echo "$line" | sed 's/.*--no-install-recommends//')
 if [ $rc -ne 0 ] && [ "$(echo "$line" | wc -l)" = 1 ] && [ -n "$line" ] &&
-   [ "$(grep -c '^  sudo ' "$W/user-run-1.log")" = 1 ] && [ ! -e "$U/home/fx/fixel/build" ] &&
+   [ "$(grep -cE "$CMD" "$W/user-run-1.log")" = 1 ] && [ ! -e "$U/home/fx/fixel/build" ] &&
    sp "$pk" gcc && sp "$pk" libpng-dev && sp "$pk" pkg-config && ! sp "$pk" clang && ! sp "$pk" valgrind && ! sp "$pk" libcairo2-dev; then
     pass "user make run stops (exit $rc, nothing built) with:$(echo "$line" | sed 's/^ */ /')"
 else
@@ -183,7 +186,7 @@ fi
 root_runs user-run-apt.log "$line" "root ran that line"
 as_user $MK run > "$W/user-run-2.log" 2>&1; rc=$?
 n=$(ls "$U"/home/fx/fixel/out/*.png 2>/dev/null | wc -l)
-if [ $rc -eq 0 ] && [ "$n" -gt 0 ] && ! grep -q '^  sudo ' "$W/user-run-2.log"; then
+if [ $rc -eq 0 ] && [ "$n" -gt 0 ] && ! grep -qE "$CMD" "$W/user-run-2.log"; then
     pass "user make run after it: $n pictures in out/ ($(( $(now) - t0 )) s for the user's make run)"
 else
     tail -n 30 "$W/user-run-2.log"; fail "user make run after the install: exit $rc, $n pictures"
@@ -191,9 +194,9 @@ fi
 # A cross build without the target's toolchain and libraries stops before
 # compiling anything, naming them and the commands that install them.
 as_user $MK BOARD=rpi4 > "$W/user-cross.log" 2>&1; rc=$?
-if [ $rc -ne 0 ] && grep -qx '  sudo dpkg --add-architecture arm64' "$W/user-cross.log" &&
+if [ $rc -ne 0 ] && grep -qxE '  (sudo )?dpkg --add-architecture arm64' "$W/user-cross.log" &&
    grep -E "$APTLINE" "$W/user-cross.log" | grep -q ' gcc-aarch64-linux-gnu' &&
-   grep -E '^  sudo apt-get install -y --no-install-recommends ' "$W/user-cross.log" | grep -q ' libpng-dev:arm64' &&
+   grep -E '^  (sudo )?apt-get install -y --no-install-recommends ' "$W/user-cross.log" | grep -q ' libpng-dev:arm64' &&
    [ -z "$(find "$U/home/fx/fixel/build/rpi4" -name '*.o' 2>/dev/null)" ]; then
     pass "user make BOARD=rpi4 stops before compiling (exit $rc, no object) with the arm64 packages and their commands"
 else
@@ -203,13 +206,13 @@ fi
 if [ $do_test = 1 ]; then
     t0=$(now)
     as_user $MK test > "$W/user-test-1.log" 2>&1; rc=$?
-    lines=$(grep '^  sudo ' "$W/user-test-1.log")
-    bad=$(echo "$lines" | grep -vE "$APTLINE" | grep -vE '^  sudo dpkg --add-architecture [a-z0-9]+$' |
-          grep -vE '^  sudo apt-get install -y --no-install-recommends( [a-z0-9.+-]+:[a-z0-9]+)+$')
+    lines=$(grep -E "$CMD" "$W/user-test-1.log")
+    bad=$(echo "$lines" | grep -vE "$APTLINE" | grep -vE '^  (sudo )?dpkg --add-architecture [a-z0-9]+$' |
+          grep -vE '^  (sudo )?apt-get install -y --no-install-recommends( [a-z0-9.+-]+:[a-z0-9]+)+$')
     native=$(echo "$lines" | grep -E "$APTLINE" | sed 's/.*--no-install-recommends//')
     allp=$(echo "$lines" | sed -n 's/.*--no-install-recommends//p' | tr '\n' ' ')
     if [ $rc -ne 0 ] && [ -n "$lines" ] && [ -z "$bad" ] && [ ! -e "$U/home/fx/fixel/build/asan" ] &&
-       echo "$lines" | grep -qx '  sudo dpkg --add-architecture arm64' && echo "$lines" | grep -qx '  sudo dpkg --add-architecture armhf' &&
+       echo "$lines" | grep -qxE '  (sudo )?dpkg --add-architecture arm64' && echo "$lines" | grep -qxE '  (sudo )?dpkg --add-architecture armhf' &&
        sp "$native" clang && sp "$native" valgrind && sp "$native" xvfb && sp "$native" libcairo2-dev && sp "$allp" libpng-dev:arm64 &&
        ! sp "$native" gcc && ! sp "$native" libpng-dev; then
         pass "user make test stops (exit $rc, nothing built) with the test set only: $(echo "$lines" | wc -l) lines, $(echo "$allp" | wc -w) packages"
@@ -219,7 +222,7 @@ if [ $do_test = 1 ]; then
     root_runs user-test-apt.log "$lines" "root ran those lines"
     t0=$(now)
     as_user $MK test $USER_TEST_ARGS > "$W/user-test-2.log" 2>&1; rc=$?
-    grep -q '^  sudo ' "$W/user-test-2.log" && { grep -B2 '^  sudo ' "$W/user-test-2.log"; fail "user make test asked for packages again"; }
+    grep -qE "$CMD" "$W/user-test-2.log" && { grep -B2 -E "$CMD" "$W/user-test-2.log"; fail "user make test asked for packages again"; }
     suite_total "$W/user-test-2.log" $rc "user make test $USER_TEST_ARGS after it"
 fi
 umount_all
