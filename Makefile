@@ -80,12 +80,10 @@ HAVE_PNG := $(shell $(PKG_CONFIG) --exists $(SYS_PKGS) 2>/dev/null && echo 1)
 HAVE_OPT := $(shell $(PKG_CONFIG) --exists $(OPT_PKGS) 2>/dev/null && echo 1)
 # Smooth text from real fonts (boards/text, fixel/face.h; issue #37). Without
 # them boards/text/absent answers every call with -FX_ENOTSUP and a message
-# naming the packages; `make` says so once.
+# naming the packages; a build says so in its summary (BUILT_WITHOUT), not
+# on stdout at every read of this file, where make -s print-VAR is parsed.
 TEXT_PKGS := freetype2 harfbuzz fribidi fontconfig libunibreak
 HAVE_TEXT := $(shell $(PKG_CONFIG) --exists $(TEXT_PKGS) 2>/dev/null && echo 1)
-ifneq ($(HAVE_TEXT),1)
-  $(info fixel: no smooth text (pkg-config finds no $(TEXT_PKGS)): fx_face_* report -FX_ENOTSUP)
-endif
 PKGS     := $(if $(HAVE_PNG),$(SYS_PKGS)) $(if $(HAVE_OPT),$(OPT_PKGS)) $(if $(HAVE_TEXT),$(TEXT_PKGS))
 # The image decoders (boards/image/), each optional: without its library a
 # format is refused by name (FX_NO_JPEG, FX_NO_GIF, FX_NO_WEBP). giflib has
