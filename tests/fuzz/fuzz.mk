@@ -25,7 +25,7 @@ $(FUZZ_BUILD)/libcore.a: $(FUZZ_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
-$(FUZZ_BUILD)/%: tests/fuzz/%.c $(FUZZ_BUILD)/libcore.a tests/fuzz/guard.h tests/fuzz/scenehost.h tests/fuzz/choice.h \
+$(FUZZ_BUILD)/%: tests/fuzz/%.c $(FUZZ_BUILD)/libcore.a tests/fuzz/guard.h tests/fuzz/scenehost.h tests/fuzz/choice.h tests/fuzz/fuzz_image.h \
                  tests/fuzz/fuzz_kiosk.c tests/fuzz/fuzz_obj.c tests/fuzz/fuzz_psf.c $(wildcard kernel-free-src/include/fixel/*.h)
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(FUZZ_EXTRA_$*) $(FUZZ_BUILD)/libcore.a -o $@

@@ -1,50 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* libFuzzer target (issue #41): the jpeg decoder of boards/image/ through the
- * magic-byte entry point and, for every input, the animation API (frame 0
- * and the last frame, as fixel-draw's PATH#N and the kiosk ask). Small
- * limits keep each input fast; whatever is accepted must have a size
- * within them. The input is prefixed with the format's magic bytes so the
- * fuzzer spends its time inside this decoder. */
-#include <stdlib.h>
-#include <string.h>
-
-#include "fixel/image.h"
+/* libFuzzer target (issue #41): the jpeg decoder of boards/image/ (the body
+ * is fuzz_image.h's, shared by the three image targets). */
+#include "fuzz_image.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    static uint8_t buf[1 << 16];
     static const char magic[] = "\xff\xd8\xff";
-    size_t m = sizeof magic - 1;
-    if (size > sizeof buf - m)
-        size = sizeof buf - m;
-    memcpy(buf, magic, m);
-    memcpy(buf + m, data, size);
-    fx_image_limits l;
-    fx_image_limits_init(&l);
-    l.max_side = 1024;
-    l.max_pixels = 1 << 18;
-    l.max_frames = 64;
-    l.max_ms = 2000;
-    uint8_t *rgb = NULL;
-    int32_t w = 0, h = 0;
-    char why[256];
-    if (fx_image_decode_rgb(buf, size + m, &l, &rgb, &w, &h, why, sizeof why) == 0) {
-        if (w < 1 || h < 1 || w > 1024 || h > 1024 || (size_t)w * (size_t)h > l.max_pixels)
-            abort();
-        volatile uint8_t sink = rgb[(size_t)w * (size_t)h * 3 - 1];
-        (void)sink;
-        free(rgb);
-    }
-    fx_anim *a;
-    if (fx_anim_open(&a, buf, size + m, &l, why, sizeof why) == 0) {
-        const uint8_t *px;
-        int n = fx_anim_frames(a);
-        if (n < 1 || n > 64)
-            abort();
-        fx_anim_frame(a, n - 1, &px, why, sizeof why);
-        fx_anim_frame(a, 0, &px, why, sizeof why);
-        fx_anim_close(a);
-    }
-    return 0;
+    return fuzz_image(magic, sizeof magic - 1, data, size);
 }
