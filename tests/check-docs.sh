@@ -35,6 +35,8 @@ for doc in "$@"; do
         echo "$t" | grep -q '[A-Z][A-Z][A-Z]' && ! [ -e "$t" ] && continue
         # what a build writes (build/man/man3 ...) is not in the tree
         case $t in build/*|out/*) continue ;; esac
+        # a path of the system (/etc/hosts, /dev/dri), not of the tree
+        case $t in /*) continue ;; esac
         p=${t%/}; p=${p#./}
         found=""
         for base in "" kernel-free-src/ kernel-free-src/include/ boards/ boards/include/ tools/ tests/ tests/core/ tests/boards/ tests/tools/ docs/ "$(dirname "$doc")/"; do
