@@ -138,7 +138,7 @@ waitfor 10 is rv/c2 lines 2 && ok || bad "c: lines on rv/c2 $(field rv/c2 lines)
 is rv/c2 brightness 40 && ok || bad "c: the old prefix still controls the kiosk: $(retained rv/c2/status)"
 # the last will moved too: a kiosk killed outright is offline under rv/c2
 kill -9 $K_c; wait $K_c 2>/dev/null
-waitfor 10 sh -c "[ \"\$(mosquitto_sub -p $PA -t rv/c2/online -C 1 -W 1 2>/dev/null)\" = offline ]" && ok || bad "c: the last will did not move to rv/c2 (rv/c2/online is $(retained rv/c2/online))"
+waitfor 10 sh -c "[ \"\$(mosquitto_sub -h 127.0.0.1 -p $PA -t rv/c2/online -C 1 -W 1 2>/dev/null)\" = offline ]" && ok || bad "c: the last will did not move to rv/c2 (rv/c2/online is $(retained rv/c2/online))"
 
 # 4. a backlight found off (a kiosk that crashed with its screen dark)
 mkdir -p "$out/bl/panel"

@@ -225,7 +225,7 @@ red() { img count "$out/$1/live.ppm" 240 306 480 320 ef5350; }
 step 2
 want=$(sed -n 's/^#define FX_VERSION_STRING "\(.*\)"/\1/p' "$here/../../kernel-free-src/include/fixel/version.h")
 v=$(field k1 version); [ -n "$want" ] && [ "$v" = "$want" ] && ok || bad "k1 status version '$v', fixel is '$want'"
-waitfor 30 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | sed -n 's/.*\"lines\":\([0-9]*\).*/\1/p')\" = 5 ]" && ok || bad "k1 status lines != 5: $(retained fleet/k1/status)"
+waitfor 30 sh -c "[ \"\$(mosquitto_sub -h 127.0.0.1 -p $PA -t fleet/k1/status -C 1 -W 2 | sed -n 's/.*\"lines\":\([0-9]*\).*/\1/p')\" = 5 ]" && ok || bad "k1 status lines != 5: $(retained fleet/k1/status)"
 [ "$(field k1 bad)" = 0 ] && ok || bad "k1 status bad != 0"
 [ "$(field k1 screen)" = on ] && [ "$(field k1 brightness)" = 100 ] && ok || bad "k1 screen state at start"
 [ "$(field k1 screen_hw)" = backlight ] && ok || bad "k1 screen_hw '$(field k1 screen_hw)', wanted backlight (memory backend + fake sysfs)"
@@ -240,14 +240,14 @@ pub -t fleet/k1/set/brightness -m 40
 pub -t fleet/k1/set/brightness -m 101
 pub -t fleet/k1/set/brightness -m abc
 pub -t fleet/k1/set/frobnicate -m 1
-waitfor 30 sh -c "mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | grep -q '\"screen\":\"off\",\"brightness\":40'" && ok || bad "screen off / brightness 40 not in the status: $(retained fleet/k1/status)"
-waitfor 30 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | sed -n 's/.*\"bad\":\([0-9]*\).*/\1/p')\" = 3 ]" && ok || bad "brightness 101, abc and an unknown command should be 3 bad lines: $(retained fleet/k1/status)"
+waitfor 30 sh -c "mosquitto_sub -h 127.0.0.1 -p $PA -t fleet/k1/status -C 1 -W 2 | grep -q '\"screen\":\"off\",\"brightness\":40'" && ok || bad "screen off / brightness 40 not in the status: $(retained fleet/k1/status)"
+waitfor 30 sh -c "[ \"\$(mosquitto_sub -h 127.0.0.1 -p $PA -t fleet/k1/status -C 1 -W 2 | sed -n 's/.*\"bad\":\([0-9]*\).*/\1/p')\" = 3 ]" && ok || bad "brightness 101, abc and an unknown command should be 3 bad lines: $(retained fleet/k1/status)"
 [ "$(bl bl1/panel brightness)" = 400 ] && [ "$(bl bl1/panel bl_power)" = 4 ] && ok ||
     bad "set/screen off, brightness 40: fake backlight has brightness $(bl bl1/panel brightness) bl_power $(bl bl1/panel bl_power), wanted 400 and 4"
 # a NUL inside the payload: not "on" (issue #40), the screen stays off
 printf 'on\000garbage' > "$out/onnul"
 pub -t fleet/k1/set/screen -f "$out/onnul"
-waitfor 30 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | sed -n 's/.*\"bad\":\([0-9]*\).*/\1/p')\" = 4 ]" && ok || bad "set/screen 'on\\0garbage' is not a bad line: $(retained fleet/k1/status)"
+waitfor 30 sh -c "[ \"\$(mosquitto_sub -h 127.0.0.1 -p $PA -t fleet/k1/status -C 1 -W 2 | sed -n 's/.*\"bad\":\([0-9]*\).*/\1/p')\" = 4 ]" && ok || bad "set/screen 'on\\0garbage' is not a bad line: $(retained fleet/k1/status)"
 [ "$(bl bl1/panel bl_power)" = 4 ] && ok || bad "set/screen 'on\\0garbage' switched the screen on: bl_power $(bl bl1/panel bl_power)"
 pub -t fleet/k1/set/screen -m on
 waitfor 30 sh -c "[ \"\$(cat $out/bl1/panel/bl_power)\" = 0 ]" && ok || bad "set/screen on left bl_power at $(bl bl1/panel bl_power)"
@@ -260,14 +260,14 @@ waitfor 100 sh -c "[ \$(python3 $here/img.py count $out/k1/live.ppm 0 0 480 6 ff
 cp "$out/k1.conf" "$out/k1.good"
 printf 'widget number extra col=0 row=0 decimals=9\n' >> "$out/k1.conf"
 pub -t fleet/k1/set/reload -m 1
-waitfor 30 sh -c "mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | grep -q 'k1.conf:13:33: decimals=9: expected 0..3'" && ok || bad "bad reload not reported as FILE:LINE:COL: $(retained fleet/k1/status)"
+waitfor 30 sh -c "mosquitto_sub -h 127.0.0.1 -p $PA -t fleet/k1/status -C 1 -W 2 | grep -q 'k1.conf:13:33: decimals=9: expected 0..3'" && ok || bad "bad reload not reported as FILE:LINE:COL: $(retained fleet/k1/status)"
 pub -q 1 -t home/temp -m 21.5
 waitfor 50 shows k1 t215 $R00 && ok || bad "the old config stopped working after a refused reload"
 sed 's/unit=C/unit=F/' "$out/k1.good" > "$out/k1.conf"
 expect away "$out/k1.conf" temp=24.5 'map=9,8,7,6,5,4'
 expect t235 "$out/k1.conf" temp=23.5
 pub -t fleet/k1/set/reload -m 1
-waitfor 30 sh -c "mosquitto_sub -p $PA -t fleet/k1/status -C 1 -W 2 | grep -q '\"reloads\":1,\"config_error\":\"\"'" && ok || bad "good reload not applied: $(retained fleet/k1/status)"
+waitfor 30 sh -c "mosquitto_sub -h 127.0.0.1 -p $PA -t fleet/k1/status -C 1 -W 2 | grep -q '\"reloads\":1,\"config_error\":\"\"'" && ok || bad "good reload not applied: $(retained fleet/k1/status)"
 pub -q 1 -t home/temp -m 21.5
 expect t215f "$out/k1.conf" temp=21.5
 waitfor 50 shows k1 t215f $R00 && ok || bad "after the reload k1 does not show the new unit"
@@ -306,7 +306,7 @@ i=0; while [ $i -lt 3000 ]; do echo $((i % 120)); i=$((i + 1)); done | pub -t fl
 settled() { a=$(field k2 lines); sleep 1; [ "$a" = "$(field k2 lines)" ]; }
 waitfor 20 settled || bad "k2 still busy with the flood after 20 s"
 pub -q 1 -t fleet/k2/set/brightness -m 33
-waitfor 80 sh -c "mosquitto_sub -p $PA -t fleet/k2/status -C 1 -W 2 | grep -q '\"brightness\":33'" && ok || bad "k2 lost the last brightness after the flood: $(retained fleet/k2/status)"
+waitfor 80 sh -c "mosquitto_sub -h 127.0.0.1 -p $PA -t fleet/k2/status -C 1 -W 2 | grep -q '\"brightness\":33'" && ok || bad "k2 lost the last brightness after the flood: $(retained fleet/k2/status)"
 [ "$(bl bl2/rpi_backlight brightness)" = 84 ] && ok || bad "k2 brightness 33 is $(bl bl2/rpi_backlight brightness) of 255 on the fake backlight, wanted 84"
 bad1=$(field k2 bad)
 # 256 KiB + binary file + junk + nesting = 4, and the 3000 flood values above 100: 19 per 120
@@ -333,7 +333,7 @@ waitfor 50 pub -t probe -m x 2>/dev/null || bad "broker A did not come back"
 pub -q 1 -t home/temp -m 23.5             # QoS 1, for k1's persistent session
 for k in k1 k2; do
     # backoff_max=2: back within 2 s of the broker, plus the connect itself
-    waitfor 40 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/$k/status -C 1 -W 2 | sed -n 's/.*\"connects\":\([0-9]*\).*/\1/p')\" = 2 ]" && ok || bad "$k did not reconnect within the backoff bound: $(tail -2 "$out/$k.log")"
+    waitfor 40 sh -c "[ \"\$(mosquitto_sub -h 127.0.0.1 -p $PA -t fleet/$k/status -C 1 -W 2 | sed -n 's/.*\"connects\":\([0-9]*\).*/\1/p')\" = 2 ]" && ok || bad "$k did not reconnect within the backoff bound: $(tail -2 "$out/$k.log")"
     dt=$(( $(ms) - back0 ))
     echo "mqtt: $k back $dt ms after the broker was started again (backoff_max 2 s; includes this poll)"
     # the backoff's 2 s, plus 3 s for the connect and this poll on a loaded machine
@@ -360,7 +360,7 @@ echo "mqtt: k2 heap in use $heap0 -> $heap1 bytes, rss $rss0 -> $rss1 KiB"
 step 6
 # published while it is away arrive when it comes back with the same id
 kill -9 $K1; wait $K1 2>/dev/null
-waitfor 100 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k1/online -C 1 -W 2)\" = offline ]" && ok || bad "k1's last will did not say offline"
+waitfor 100 sh -c "[ \"\$(mosquitto_sub -h 127.0.0.1 -p $PA -t fleet/k1/online -C 1 -W 2)\" = offline ]" && ok || bad "k1's last will did not say offline"
 pub -q 1 -t home/temp -m 24.5
 pub -q 1 -t home/lines -m 'map=9,8,7,6,5,4'
 start 1
@@ -394,10 +394,10 @@ FIXEL_BACKEND=memory FIXEL_REPLAY="$out/k8.replay" "$bin" --out "$out/k8" "$out/
 K8=$!; pids="$pids $K8"; t8=$(date +%s)
 waitfor 80 online k8 || bad "k8 never said online: $(cat "$out/k8.log")"
 pub -q 1 -t fleet/k8/set/screen -m off
-waitfor 50 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k8/status -C 1 -W 2 | sed -n 's/.*\"screen\":\"\([a-z]*\)\".*/\1/p')\" = off ]" && ok || bad "k8 did not go dark"
+waitfor 50 sh -c "[ \"\$(mosquitto_sub -h 127.0.0.1 -p $PA -t fleet/k8/status -C 1 -W 2 | sed -n 's/.*\"screen\":\"\([a-z]*\)\".*/\1/p')\" = off ]" && ok || bad "k8 did not go dark"
 [ $(( $(date +%s) - t8 )) -lt $(bound 11) ] || bad "k8 went dark too late for the test's timing (loaded machine?)"
 # after the first q (at 12 s): alive, and lit
-waitfor 150 sh -c "[ \"\$(mosquitto_sub -p $PA -t fleet/k8/status -C 1 -W 2 | sed -n 's/.*\"screen\":\"\([a-z]*\)\".*/\1/p')\" = on ]" && ok || bad "the key on a dark screen did not wake it: $(retained fleet/k8/status)"
+waitfor 150 sh -c "[ \"\$(mosquitto_sub -h 127.0.0.1 -p $PA -t fleet/k8/status -C 1 -W 2 | sed -n 's/.*\"screen\":\"\([a-z]*\)\".*/\1/p')\" = on ]" && ok || bad "the key on a dark screen did not wake it: $(retained fleet/k8/status)"
 [ $(( $(date +%s) - t8 )) -lt $(bound 16) ] && kill -0 $K8 2>/dev/null && ok || bad "the waking q was not swallowed: k8 quit (or the wake came too late)"
 # the second q (at 16 s) reaches the kiosk: it quits
 i=0; while [ $i -lt 150 ] && kill -0 $K8 2>/dev/null; do sleep 0.1; i=$((i + 1)); done
