@@ -98,6 +98,20 @@ HASH      := \#
 HAVE_GIF  := $(shell printf '$(HASH)include <gif_lib.h>\nint main(void) { return GifErrorString(0) == 0; }\n' | \
                $(CC) -x c - -lgif -o /dev/null >/dev/null 2>&1 && echo 1)
 HAVE_QR   := $(shell $(PKG_CONFIG) --exists libqrencode 2>/dev/null && echo 1)
+# STATIC=1 needs each library's archive, which a -dev package may not ship
+# (Debian's libqrencode-dev has only the .so): a library whose .pc is there
+# but whose static link fails is left out, by name in the build summary,
+# instead of failing the link of every tool (CI, stop 45: -lqrencode on rpi4).
+ifeq ($(STATIC),1)
+  static_links = $(shell echo 'int main(void) { return 0; }' | $(CC) -x c - -static -o /dev/null \
+                   $$($(PKG_CONFIG) --static --libs $(1) 2>/dev/null) >/dev/null 2>&1 && echo 1)
+  HAVE_TEXT := $(if $(HAVE_TEXT),$(call static_links,$(TEXT_PKGS)))
+  HAVE_JPEG := $(if $(HAVE_JPEG),$(call static_links,libjpeg))
+  HAVE_WEBP := $(if $(HAVE_WEBP),$(call static_links,libwebp))
+  HAVE_QR   := $(if $(HAVE_QR),$(call static_links,libqrencode))
+  HAVE_GIF  := $(if $(HAVE_GIF),$(shell echo 'int main(void) { return 0; }' | $(CC) -x c - -static -lgif -o /dev/null >/dev/null 2>&1 && echo 1))
+  PKGS      := $(if $(HAVE_PNG),$(SYS_PKGS)) $(if $(HAVE_OPT),$(OPT_PKGS)) $(if $(HAVE_TEXT),$(TEXT_PKGS))
+endif
 PKGS     += $(if $(HAVE_JPEG),libjpeg) $(if $(HAVE_WEBP),libwebp) $(if $(HAVE_QR),libqrencode)
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null) $(if $(HAVE_PNG),,-DFX_NO_PNG -DFX_NO_ZLIB) \
               $(if $(HAVE_OPT),,-DFX_NO_BOARD_LIBS) \
