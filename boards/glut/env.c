@@ -29,19 +29,19 @@ static long sw(const char *name)
     long v = 0;
     char msg[256];
     if (fx_env_get(name, &v, msg, sizeof msg) < 0) {
-        fxg_log("%s", msg);
+        fx_glut_log("%s", msg);
         v = 0;
     }
     return v;
 }
 
-void fxg_env_read(fxg_env *v)
+void fx_glut_env_read(fx_glut_env *v)
 {
     char msg[256];
     long n = 0;
     /* a frame count that is not one must not run a scripted test forever */
     if (fx_env_get("FIXEL_GLUT_FRAMES", &n, msg, sizeof msg) < 0) {
-        fxg_log("%s", msg);
+        fx_glut_log("%s", msg);
         exit(2);
     }
     v->frames = n;

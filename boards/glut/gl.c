@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* fixel GLUT layer — OpenGL 1.x state, immediate mode and the boundary
  * conversions. Floats and doubles are converted to fixed point here
- * (fxg_d2x & co: round to nearest, ties to even, saturating) and
+ * (fx_glut_d2x & co: round to nearest, ties to even, saturating) and
  * everything after that runs in kernel-free-src/gl (fixel/glcore.h). */
 #include <math.h>
 #include <stdio.h>
@@ -10,10 +10,10 @@
 
 #include "glut_int.h"
 
-fxg_gl fxg;
+fx_glut_gl fx_gl;
 
 /* ---- boundary conversions ---- */
-fx32 fxg_d2x(double d)
+fx32 fx_glut_d2x(double d)
 {
     if (d != d)
         return 0;
@@ -23,7 +23,7 @@ fx32 fxg_d2x(double d)
         return INT64_MIN;
     return (fx32)llrint(d * 4294967296.0);
 }
-fx16 fxg_d2q16(double d)
+fx16 fx_glut_d2q16(double d)
 {
     if (d != d)
         return 0;
@@ -49,10 +49,10 @@ static int mesa_level(float f)
 /* A colour as Q16.16 in [0, 1]: the nearest value to (float)d, moved by
  * 1/65536 where needed so that the core's round(c * 255) gives the level
  * llvmpipe gives (they differ only at ties, e.g. 0.3f: 76.5 -> 76). */
-fx16 fxg_d2c(double d)
+fx16 fx_glut_d2c(double d)
 {
     float f = (float)d;
-    fx16 v = fxg_d2q16(f);
+    fx16 v = fx_glut_d2q16(f);
     if (v <= 0)
         return 0;
     if (v >= FX16_ONE)
@@ -68,7 +68,7 @@ fx16 fxg_d2c(double d)
  * (glTexParameterf, glPixelStoref, glBitmap's origin): rounded to nearest,
  * saturating, NaN as 0 -- a float-to-int conversion out of range is
  * undefined behaviour in C, llrint's result unspecified. */
-int32_t fxg_d2i(double d)
+int32_t fx_glut_d2i(double d)
 {
     if (d != d)
         return 0;
@@ -80,7 +80,7 @@ int32_t fxg_d2i(double d)
 }
 /* A window coordinate in 1/256 pixel (glWindowPos, glBitmap's moves):
  * clamped to +-FX_GL_WIN_MAX, the range the rasterizers are proved for. */
-int64_t fxg_d2win(double d)
+int64_t fx_glut_d2win(double d)
 {
     double w = (double)FX_GL_WIN_MAX;
     if (d != d)
@@ -92,38 +92,38 @@ static int64_t clamp_win(int64_t v)
 {
     return v < -FX_GL_WIN_MAX ? -FX_GL_WIN_MAX : v > FX_GL_WIN_MAX ? FX_GL_WIN_MAX : v;
 }
-fx_angle fxg_deg2angle(double deg)
+fx_angle fx_glut_deg2angle(double deg)
 {
     if (!isfinite(deg)) /* fmod(inf, 360) is NaN: no angle; GL leaves it undefined */
         return 0;
     double t = fmod(deg, 360.0) / 360.0; /* (-1, 1) */
     return (fx_angle)(uint32_t)(int64_t)llrint(t * 4294967296.0);
 }
-double fxg_x2d(fx32 v) { return (double)v / 4294967296.0; }
+double fx_glut_x2d(fx32 v) { return (double)v / 4294967296.0; }
 
-void fxg_set_error(GLenum e)
+void fx_glut_set_error(GLenum e)
 {
-    if (fxg.error == GL_NO_ERROR)
-        fxg.error = e;
+    if (fx_gl.error == GL_NO_ERROR)
+        fx_gl.error = e;
 }
 
-void fxg_unimplemented(const char *name, GLenum err)
+void fx_glut_unimplemented(const char *name, GLenum err)
 {
-    fxg_set_error(err);
+    fx_glut_set_error(err);
     unsigned h = 5381;
     for (const char *p = name; *p; p++)
         h = h * 33 + (unsigned char)*p;
-    h %= sizeof fxg.logged * 8;
-    if (!(fxg.logged[h / 8] & (1 << (h % 8)))) {
-        fxg.logged[h / 8] |= (char)(1 << (h % 8));
-        fxg_log("%s is not implemented by fixel's GL layer (ignored)", name);
+    h %= sizeof fx_gl.logged * 8;
+    if (!(fx_gl.logged[h / 8] & (1 << (h % 8)))) {
+        fx_gl.logged[h / 8] |= (char)(1 << (h % 8));
+        fx_glut_log("%s is not implemented by fixel's GL layer (ignored)", name);
     }
 }
 
 GLenum glGetError(void)
 {
-    GLenum e = fxg.error;
-    fxg.error = GL_NO_ERROR;
+    GLenum e = fx_gl.error;
+    fx_gl.error = GL_NO_ERROR;
     return e;
 }
 
@@ -137,16 +137,16 @@ enum {
     OP_CULLFACE, OP_FRONTFACE, OP_CLEAR, OP_CLEARCOLOR
 };
 
-static int recording(void) { return fxg.cur_list != 0 && !fxg.replaying; }
+static int recording(void) { return fx_gl.cur_list != 0 && !fx_gl.replaying; }
 
 static void record(int op, int n, const double *a)
 {
-    fxg_list *l = &fxg.lists[fxg.cur_list];
+    fx_glut_list *l = &fx_gl.lists[fx_gl.cur_list];
     if (l->nrec == l->caprec) {
         int nc = l->caprec ? l->caprec * 2 : 64;
-        fxg_rec *r = realloc(l->rec, (size_t)nc * sizeof *r);
+        fx_glut_rec *r = realloc(l->rec, (size_t)nc * sizeof *r);
         if (!r) {
-            fxg_set_error(GL_OUT_OF_MEMORY);
+            fx_glut_set_error(GL_OUT_OF_MEMORY);
             return;
         }
         l->rec = r, l->caprec = nc;
@@ -157,12 +157,12 @@ static void record(int op, int n, const double *a)
             nc *= 2;
         double *p = realloc(l->pool, (size_t)nc * sizeof *p);
         if (!p) {
-            fxg_set_error(GL_OUT_OF_MEMORY);
+            fx_glut_set_error(GL_OUT_OF_MEMORY);
             return;
         }
         l->pool = p, l->cappool = nc;
     }
-    l->rec[l->nrec++] = (fxg_rec){(uint16_t)op, (uint16_t)n, (uint32_t)l->npool};
+    l->rec[l->nrec++] = (fx_glut_rec){(uint16_t)op, (uint16_t)n, (uint32_t)l->npool};
     if (n) /* a call of no arguments before the pool exists: memcpy(NULL, ...) is undefined */
         memcpy(l->pool + l->npool, a, (size_t)n * sizeof *a);
     l->npool += n;
@@ -174,7 +174,7 @@ static void record(int op, int n, const double *a)
         if (recording()) {                                       \
             double a_[] = {__VA_ARGS__};                         \
             record(op, (int)(sizeof a_ / sizeof a_[0]), a_);     \
-            if (!fxg.list_exec)                                  \
+            if (!fx_gl.list_exec)                                  \
                 return;                                          \
         }                                                        \
     } while (0)
@@ -182,7 +182,7 @@ static void record(int op, int n, const double *a)
     do {                                   \
         if (recording()) {                 \
             record(op, 0, NULL);           \
-            if (!fxg.list_exec)            \
+            if (!fx_gl.list_exec)            \
                 return;                    \
         }                                  \
     } while (0)
@@ -190,30 +190,30 @@ static void record(int op, int n, const double *a)
 /* ---- initialisation ---- */
 /* The scissor box as a rectangle: x + w of GL's int32 box can pass
  * INT32_MAX, so the corners are summed in 64 bits and clamped. */
-fx_rect fxg_scissor_rect(void)
+fx_rect fx_glut_scissor_rect(void)
 {
-    int64_t x1 = (int64_t)fxg.scissor[0] + fxg.scissor[2], y1 = (int64_t)fxg.scissor[1] + fxg.scissor[3];
-    return (fx_rect){fxg.scissor[0], fxg.scissor[1], x1 > INT32_MAX ? INT32_MAX : (int32_t)x1,
+    int64_t x1 = (int64_t)fx_gl.scissor[0] + fx_gl.scissor[2], y1 = (int64_t)fx_gl.scissor[1] + fx_gl.scissor[3];
+    return (fx_rect){fx_gl.scissor[0], fx_gl.scissor[1], x1 > INT32_MAX ? INT32_MAX : (int32_t)x1,
                      y1 > INT32_MAX ? INT32_MAX : (int32_t)y1};
 }
 static void update_clip(void)
 {
     /* the viewport is clamped where it is set (glViewport), so its sums
-     * fit; the scissor box is GL's any x, y and size: fxg_scissor_rect */
-    fx_rect r = {fxg.vp[0], fxg.vp[1], fxg.vp[0] + fxg.vp[2], fxg.vp[1] + fxg.vp[3]};
-    fx_rect win = {0, 0, fxg.w, fxg.h};
+     * fit; the scissor box is GL's any x, y and size: fx_glut_scissor_rect */
+    fx_rect r = {fx_gl.vp[0], fx_gl.vp[1], fx_gl.vp[0] + fx_gl.vp[2], fx_gl.vp[1] + fx_gl.vp[3]};
+    fx_rect win = {0, 0, fx_gl.w, fx_gl.h};
     r = fx_rect_intersect(r, win);
-    if (fxg.scissor_on)
-        r = fx_rect_intersect(r, fxg_scissor_rect());
+    if (fx_gl.scissor_on)
+        r = fx_rect_intersect(r, fx_glut_scissor_rect());
     if (fx_rect_empty(r))
         r = (fx_rect){0, 0, 0, 0};
-    fxg.tgt.clip = r;
-    int32_t m = fxg.vp[2] > fxg.vp[3] ? fxg.vp[2] : fxg.vp[3];
+    fx_gl.tgt.clip = r;
+    int32_t m = fx_gl.vp[2] > fx_gl.vp[3] ? fx_gl.vp[2] : fx_gl.vp[3];
     if (m < 1)
         m = 1;
-    fxg.guard = fx_muldiv64((int64_t)1 << 21, FX32_ONE, m);
-    if (fxg.guard < FX32_ONE)
-        fxg.guard = FX32_ONE;
+    fx_gl.guard = fx_muldiv64((int64_t)1 << 21, FX32_ONE, m);
+    if (fx_gl.guard < FX32_ONE)
+        fx_gl.guard = FX32_ONE;
 }
 
 static void default_light(fx_gl_light *l, int i)
@@ -235,62 +235,62 @@ static void default_material(fx_gl_material *m)
 {
     memset(m, 0, sizeof *m);
     for (int k = 0; k < 3; k++) {
-        m->ambient[k] = fxg_d2c(0.2);
-        m->diffuse[k] = fxg_d2c(0.8);
+        m->ambient[k] = fx_glut_d2c(0.2);
+        m->diffuse[k] = fx_glut_d2c(0.8);
     }
     m->ambient[3] = m->diffuse[3] = m->specular[3] = m->emission[3] = FX16_ONE;
 }
 
-int fxg_gl_init(int32_t w, int32_t h)
+int fx_glut_gl_init(int32_t w, int32_t h)
 {
-    if (fx_memfb_create(&fxg.fb, w, h, FX_FMT_XRGB8888) < 0)
+    if (fx_memfb_create(&fx_gl.fb, w, h, FX_FMT_XRGB8888) < 0)
         return -1;
-    fxg.depth = calloc((size_t)w * (size_t)h, sizeof *fxg.depth);
-    if (!fxg.depth)
+    fx_gl.depth = calloc((size_t)w * (size_t)h, sizeof *fx_gl.depth);
+    if (!fx_gl.depth)
         return -1;
-    fxg.w = w, fxg.h = h;
-    memset(&fxg.tgt, 0, sizeof fxg.tgt);
-    fxg.tgt.surf = fxg.fb.surf;
-    fxg.tgt.depth = fxg.depth;
-    fxg.tgt.depth_write = 1;
-    fxg.tgt.depth_func = FX_GL_DEPTH_LESS;
-    fx_glm_identity(&fxg.mv[0]);
-    fx_glm_identity(&fxg.proj[0]);
-    fx_glm_identity(&fxg.texm[0]);
-    fxg.matrix_mode = GL_MODELVIEW;
-    fxg.mvp_dirty = fxg.nmat_dirty = 1;
-    fxg.vp[0] = fxg.vp[1] = 0, fxg.vp[2] = w, fxg.vp[3] = h;
-    fxg.scissor[0] = fxg.scissor[1] = 0, fxg.scissor[2] = w, fxg.scissor[3] = h;
-    fxg.cull_face = GL_BACK, fxg.front_face = GL_CCW;
-    fxg.poly_front = fxg.poly_back = GL_FILL;
-    fxg.shade = GL_SMOOTH, fxg.depth_func = GL_LESS, fxg.depth_mask = 1;
-    fxg.cm_face = GL_FRONT_AND_BACK, fxg.cm_mode = GL_AMBIENT_AND_DIFFUSE;
-    fxg.bsrc = GL_ONE, fxg.bdst = GL_ZERO;
-    fxg.clear_depth = 0xFFFFFF;
-    fxg.point_size = fxg.line_width = 1.0f;
-    fxg.stipple_factor = 1, fxg.stipple_pattern = 0xFFFF;
-    fxg.color_mask = 0xF;
+    fx_gl.w = w, fx_gl.h = h;
+    memset(&fx_gl.tgt, 0, sizeof fx_gl.tgt);
+    fx_gl.tgt.surf = fx_gl.fb.surf;
+    fx_gl.tgt.depth = fx_gl.depth;
+    fx_gl.tgt.depth_write = 1;
+    fx_gl.tgt.depth_func = FX_GL_DEPTH_LESS;
+    fx_glm_identity(&fx_gl.mv[0]);
+    fx_glm_identity(&fx_gl.proj[0]);
+    fx_glm_identity(&fx_gl.texm[0]);
+    fx_gl.matrix_mode = GL_MODELVIEW;
+    fx_gl.mvp_dirty = fx_gl.nmat_dirty = 1;
+    fx_gl.vp[0] = fx_gl.vp[1] = 0, fx_gl.vp[2] = w, fx_gl.vp[3] = h;
+    fx_gl.scissor[0] = fx_gl.scissor[1] = 0, fx_gl.scissor[2] = w, fx_gl.scissor[3] = h;
+    fx_gl.cull_face = GL_BACK, fx_gl.front_face = GL_CCW;
+    fx_gl.poly_front = fx_gl.poly_back = GL_FILL;
+    fx_gl.shade = GL_SMOOTH, fx_gl.depth_func = GL_LESS, fx_gl.depth_mask = 1;
+    fx_gl.cm_face = GL_FRONT_AND_BACK, fx_gl.cm_mode = GL_AMBIENT_AND_DIFFUSE;
+    fx_gl.bsrc = GL_ONE, fx_gl.bdst = GL_ZERO;
+    fx_gl.clear_depth = 0xFFFFFF;
+    fx_gl.point_size = fx_gl.line_width = 1.0f;
+    fx_gl.stipple_factor = 1, fx_gl.stipple_pattern = 0xFFFF;
+    fx_gl.color_mask = 0xF;
     for (int k = 0; k < 4; k++)
-        fxg.color[k] = FX16_ONE;
-    fxg.normal[2] = FX32_ONE;
+        fx_gl.color[k] = FX16_ONE;
+    fx_gl.normal[2] = FX32_ONE;
     for (int i = 0; i < FX_GL_MAX_LIGHTS; i++)
-        default_light(&fxg.L.light[i], i);
+        default_light(&fx_gl.L.light[i], i);
     for (int k = 0; k < 3; k++)
-        fxg.L.model_ambient[k] = fxg_d2c(0.2);
-    fxg.L.model_ambient[3] = FX16_ONE;
-    default_material(&fxg.mat[0]);
-    default_material(&fxg.mat[1]);
-    fxg.tex_env = GL_MODULATE;
-    fxg.unpack_align = fxg.pack_align = 4;
-    fxg.zoom_x = fxg.zoom_y = 1.0f;
+        fx_gl.L.model_ambient[k] = fx_glut_d2c(0.2);
+    fx_gl.L.model_ambient[3] = FX16_ONE;
+    default_material(&fx_gl.mat[0]);
+    default_material(&fx_gl.mat[1]);
+    fx_gl.tex_env = GL_MODULATE;
+    fx_gl.unpack_align = fx_gl.pack_align = 4;
+    fx_gl.zoom_x = fx_gl.zoom_y = 1.0f;
     update_clip();
-    fx_gl_clear(&fxg.tgt, (fx_rect){0, 0, w, h}, 0xFF000000u, 1, 0xFFFFFF, 1);
+    fx_gl_clear(&fx_gl.tgt, (fx_rect){0, 0, w, h}, 0xFF000000u, 1, 0xFFFFFF, 1);
     return 0;
 }
 
-void fxg_gl_resize(int32_t w, int32_t h)
+void fx_glut_gl_resize(int32_t w, int32_t h)
 {
-    if (w == fxg.w && h == fxg.h)
+    if (w == fx_gl.w && h == fx_gl.h)
         return;
     fx_memfb nfb;
     uint32_t *nd = calloc((size_t)w * (size_t)h, sizeof *nd);
@@ -298,29 +298,29 @@ void fxg_gl_resize(int32_t w, int32_t h)
         free(nd);
         return;
     }
-    fx_memfb_destroy(&fxg.fb);
-    free(fxg.depth);
-    fxg.fb = nfb, fxg.depth = nd;
-    fxg.w = w, fxg.h = h;
-    fxg.tgt.surf = fxg.fb.surf;
-    fxg.tgt.depth = nd;
+    fx_memfb_destroy(&fx_gl.fb);
+    free(fx_gl.depth);
+    fx_gl.fb = nfb, fx_gl.depth = nd;
+    fx_gl.w = w, fx_gl.h = h;
+    fx_gl.tgt.surf = fx_gl.fb.surf;
+    fx_gl.tgt.depth = nd;
     update_clip();
 }
 
 /* ---- matrices ---- */
 static fx_glm *cur_matrix(void)
 {
-    switch (fxg.matrix_mode) {
-    case GL_PROJECTION: return &fxg.proj[fxg.proj_top];
-    case GL_TEXTURE: return &fxg.texm[fxg.tex_top];
-    default: return &fxg.mv[fxg.mv_top];
+    switch (fx_gl.matrix_mode) {
+    case GL_PROJECTION: return &fx_gl.proj[fx_gl.proj_top];
+    case GL_TEXTURE: return &fx_gl.texm[fx_gl.tex_top];
+    default: return &fx_gl.mv[fx_gl.mv_top];
     }
 }
 static void matrix_changed(void)
 {
-    fxg.mvp_dirty = 1;
-    if (fxg.matrix_mode == GL_MODELVIEW)
-        fxg.nmat_dirty = 1;
+    fx_gl.mvp_dirty = 1;
+    if (fx_gl.matrix_mode == GL_MODELVIEW)
+        fx_gl.nmat_dirty = 1;
 }
 static void mult_cur(const fx_glm *m)
 {
@@ -333,10 +333,10 @@ void glMatrixMode(GLenum mode)
 {
     REC(OP_MATRIXMODE, (double)mode);
     if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return;
     }
-    fxg.matrix_mode = mode;
+    fx_gl.matrix_mode = mode;
 }
 void glLoadIdentity(void)
 {
@@ -347,14 +347,14 @@ void glLoadIdentity(void)
 void glPushMatrix(void)
 {
     REC0(OP_PUSH);
-    int *top = fxg.matrix_mode == GL_PROJECTION ? &fxg.proj_top
-               : fxg.matrix_mode == GL_TEXTURE  ? &fxg.tex_top
-                                                : &fxg.mv_top;
-    int cap = fxg.matrix_mode == GL_PROJECTION ? FXG_PROJ_STACK
-              : fxg.matrix_mode == GL_TEXTURE  ? 4
+    int *top = fx_gl.matrix_mode == GL_PROJECTION ? &fx_gl.proj_top
+               : fx_gl.matrix_mode == GL_TEXTURE  ? &fx_gl.tex_top
+                                                : &fx_gl.mv_top;
+    int cap = fx_gl.matrix_mode == GL_PROJECTION ? FXG_PROJ_STACK
+              : fx_gl.matrix_mode == GL_TEXTURE  ? 4
                                                : FXG_STACK;
     if (*top + 1 >= cap) {
-        fxg_set_error(GL_STACK_OVERFLOW);
+        fx_glut_set_error(GL_STACK_OVERFLOW);
         return;
     }
     fx_glm *c = cur_matrix();
@@ -364,11 +364,11 @@ void glPushMatrix(void)
 void glPopMatrix(void)
 {
     REC0(OP_POP);
-    int *top = fxg.matrix_mode == GL_PROJECTION ? &fxg.proj_top
-               : fxg.matrix_mode == GL_TEXTURE  ? &fxg.tex_top
-                                                : &fxg.mv_top;
+    int *top = fx_gl.matrix_mode == GL_PROJECTION ? &fx_gl.proj_top
+               : fx_gl.matrix_mode == GL_TEXTURE  ? &fx_gl.tex_top
+                                                : &fx_gl.mv_top;
     if (*top == 0) {
-        fxg_set_error(GL_STACK_UNDERFLOW);
+        fx_glut_set_error(GL_STACK_UNDERFLOW);
         return;
     }
     (*top)--;
@@ -378,7 +378,7 @@ static void load_d(const double *m, int mult)
 {
     fx_glm t;
     for (int i = 0; i < 16; i++)
-        t.m[i] = fxg_d2x(m[i]);
+        t.m[i] = fx_glut_d2x(m[i]);
     if (mult)
         mult_cur(&t);
     else {
@@ -390,7 +390,7 @@ void glLoadMatrixd(const GLdouble *m)
 {
     if (recording()) {
         record(OP_LOAD, 16, m);
-        if (!fxg.list_exec)
+        if (!fx_gl.list_exec)
             return;
     }
     load_d(m, 0);
@@ -406,7 +406,7 @@ void glMultMatrixd(const GLdouble *m)
 {
     if (recording()) {
         record(OP_MULT, 16, m);
-        if (!fxg.list_exec)
+        if (!fx_gl.list_exec)
             return;
     }
     load_d(m, 1);
@@ -422,7 +422,7 @@ void glTranslated(GLdouble x, GLdouble y, GLdouble z)
 {
     REC(OP_TRANSLATE, x, y, z);
     fx_glm t;
-    fx_glm_translate(&t, fxg_d2x(x), fxg_d2x(y), fxg_d2x(z));
+    fx_glm_translate(&t, fx_glut_d2x(x), fx_glut_d2x(y), fx_glut_d2x(z));
     mult_cur(&t);
 }
 void glTranslatef(GLfloat x, GLfloat y, GLfloat z) { glTranslated(x, y, z); }
@@ -430,7 +430,7 @@ void glScaled(GLdouble x, GLdouble y, GLdouble z)
 {
     REC(OP_SCALE, x, y, z);
     fx_glm t;
-    fx_glm_scale(&t, fxg_d2x(x), fxg_d2x(y), fxg_d2x(z));
+    fx_glm_scale(&t, fx_glut_d2x(x), fx_glut_d2x(y), fx_glut_d2x(z));
     mult_cur(&t);
 }
 void glScalef(GLfloat x, GLfloat y, GLfloat z) { glScaled(x, y, z); }
@@ -438,7 +438,7 @@ void glRotated(GLdouble a, GLdouble x, GLdouble y, GLdouble z)
 {
     REC(OP_ROTATE, a, x, y, z);
     fx_glm t;
-    fx_glm_rotate(&t, fxg_deg2angle(a), fxg_d2x(x), fxg_d2x(y), fxg_d2x(z));
+    fx_glm_rotate(&t, fx_glut_deg2angle(a), fx_glut_d2x(x), fx_glut_d2x(y), fx_glut_d2x(z));
     mult_cur(&t);
 }
 void glRotatef(GLfloat a, GLfloat x, GLfloat y, GLfloat z) { glRotated(a, x, y, z); }
@@ -446,9 +446,9 @@ void glOrtho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdoubl
 {
     REC(OP_ORTHO, l, r, b, t, n, f);
     fx_glm m;
-    if (fx_glm_ortho(&m, fxg_d2x(l), fxg_d2x(r), fxg_d2x(b), fxg_d2x(t), fxg_d2x(n),
-                     fxg_d2x(f)) < 0) {
-        fxg_set_error(GL_INVALID_VALUE);
+    if (fx_glm_ortho(&m, fx_glut_d2x(l), fx_glut_d2x(r), fx_glut_d2x(b), fx_glut_d2x(t), fx_glut_d2x(n),
+                     fx_glut_d2x(f)) < 0) {
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
     mult_cur(&m);
@@ -457,9 +457,9 @@ void glFrustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdou
 {
     REC(OP_FRUSTUM, l, r, b, t, n, f);
     fx_glm m;
-    if (fx_glm_frustum(&m, fxg_d2x(l), fxg_d2x(r), fxg_d2x(b), fxg_d2x(t), fxg_d2x(n),
-                       fxg_d2x(f)) < 0) {
-        fxg_set_error(GL_INVALID_VALUE);
+    if (fx_glm_frustum(&m, fx_glut_d2x(l), fx_glut_d2x(r), fx_glut_d2x(b), fx_glut_d2x(t), fx_glut_d2x(n),
+                       fx_glut_d2x(f)) < 0) {
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
     mult_cur(&m);
@@ -468,25 +468,25 @@ void gluOrtho2D(GLdouble l, GLdouble r, GLdouble b, GLdouble t) { glOrtho(l, r, 
 void gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble n, GLdouble f)
 {
     fx_glm m;
-    if (fx_glm_perspective(&m, fxg_deg2angle(fovy), fxg_d2x(aspect), fxg_d2x(n), fxg_d2x(f)) < 0)
+    if (fx_glm_perspective(&m, fx_glut_deg2angle(fovy), fx_glut_d2x(aspect), fx_glut_d2x(n), fx_glut_d2x(f)) < 0)
         return;
     double d[16];
     for (int i = 0; i < 16; i++)
-        d[i] = fxg_x2d(m.m[i]);
+        d[i] = fx_glut_x2d(m.m[i]);
     glMultMatrixd(d);
 }
 void gluLookAt(GLdouble ex, GLdouble ey, GLdouble ez, GLdouble cx, GLdouble cy, GLdouble cz,
                GLdouble ux, GLdouble uy, GLdouble uz)
 {
-    fx32 e[3] = {fxg_d2x(ex), fxg_d2x(ey), fxg_d2x(ez)};
-    fx32 c[3] = {fxg_d2x(cx), fxg_d2x(cy), fxg_d2x(cz)};
-    fx32 u[3] = {fxg_d2x(ux), fxg_d2x(uy), fxg_d2x(uz)};
+    fx32 e[3] = {fx_glut_d2x(ex), fx_glut_d2x(ey), fx_glut_d2x(ez)};
+    fx32 c[3] = {fx_glut_d2x(cx), fx_glut_d2x(cy), fx_glut_d2x(cz)};
+    fx32 u[3] = {fx_glut_d2x(ux), fx_glut_d2x(uy), fx_glut_d2x(uz)};
     fx_glm m;
     if (fx_glm_lookat(&m, e, c, u) < 0)
         return;
     double d[16];
     for (int i = 0; i < 16; i++)
-        d[i] = fxg_x2d(m.m[i]);
+        d[i] = fx_glut_x2d(m.m[i]);
     glMultMatrixd(d);
 }
 /* GL clamps the size to GL_MAX_VIEWPORT_DIMS (16384 here); x and y are
@@ -496,35 +496,35 @@ void gluLookAt(GLdouble ex, GLdouble ey, GLdouble ez, GLdouble cx, GLdouble cy, 
 void glViewport(GLint x, GLint y, GLsizei w, GLsizei h)
 {
     if (w < 0 || h < 0) {
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
     if (w > FXG_MAX_VIEWPORT) w = FXG_MAX_VIEWPORT;
     if (h > FXG_MAX_VIEWPORT) h = FXG_MAX_VIEWPORT;
     x = x < -FXG_VIEWPORT_BOUND ? -FXG_VIEWPORT_BOUND : x > FXG_VIEWPORT_BOUND ? FXG_VIEWPORT_BOUND : x;
     y = y < -FXG_VIEWPORT_BOUND ? -FXG_VIEWPORT_BOUND : y > FXG_VIEWPORT_BOUND ? FXG_VIEWPORT_BOUND : y;
-    fxg.vp[0] = x, fxg.vp[1] = y, fxg.vp[2] = w, fxg.vp[3] = h;
+    fx_gl.vp[0] = x, fx_gl.vp[1] = y, fx_gl.vp[2] = w, fx_gl.vp[3] = h;
     update_clip();
 }
 void glScissor(GLint x, GLint y, GLsizei w, GLsizei h)
 {
     if (w < 0 || h < 0) {
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
-    fxg.scissor[0] = x, fxg.scissor[1] = y, fxg.scissor[2] = w, fxg.scissor[3] = h;
+    fx_gl.scissor[0] = x, fx_gl.scissor[1] = y, fx_gl.scissor[2] = w, fx_gl.scissor[3] = h;
     update_clip();
 }
 
 static void ensure_mvp(void)
 {
-    if (fxg.mvp_dirty) {
-        fx_glm_mul(&fxg.mvp, &fxg.proj[fxg.proj_top], &fxg.mv[fxg.mv_top]);
-        fxg.mvp_dirty = 0;
+    if (fx_gl.mvp_dirty) {
+        fx_glm_mul(&fx_gl.mvp, &fx_gl.proj[fx_gl.proj_top], &fx_gl.mv[fx_gl.mv_top]);
+        fx_gl.mvp_dirty = 0;
     }
-    if (fxg.nmat_dirty && fxg.lighting) {
-        fx_glm_normal_matrix(&fxg.mv[fxg.mv_top], fxg.nmat);
-        fxg.nmat_dirty = 0;
+    if (fx_gl.nmat_dirty && fx_gl.lighting) {
+        fx_glm_normal_matrix(&fx_gl.mv[fx_gl.mv_top], fx_gl.nmat);
+        fx_gl.nmat_dirty = 0;
     }
 }
 
@@ -532,16 +532,16 @@ static void ensure_mvp(void)
 static int *cap_flag(GLenum cap)
 {
     switch (cap) {
-    case GL_DEPTH_TEST: return &fxg.depth_test;
-    case GL_LIGHTING: return &fxg.lighting;
-    case GL_COLOR_MATERIAL: return &fxg.color_material;
-    case GL_NORMALIZE: return &fxg.normalize;
-    case GL_RESCALE_NORMAL: return &fxg.rescale;
-    case GL_CULL_FACE: return &fxg.cull;
-    case GL_BLEND: return &fxg.blend;
-    case GL_LINE_STIPPLE: return &fxg.stipple;
-    case GL_SCISSOR_TEST: return &fxg.scissor_on;
-    case GL_TEXTURE_2D: return &fxg.tex2d;
+    case GL_DEPTH_TEST: return &fx_gl.depth_test;
+    case GL_LIGHTING: return &fx_gl.lighting;
+    case GL_COLOR_MATERIAL: return &fx_gl.color_material;
+    case GL_NORMALIZE: return &fx_gl.normalize;
+    case GL_RESCALE_NORMAL: return &fx_gl.rescale;
+    case GL_CULL_FACE: return &fx_gl.cull;
+    case GL_BLEND: return &fx_gl.blend;
+    case GL_LINE_STIPPLE: return &fx_gl.stipple;
+    case GL_SCISSOR_TEST: return &fx_gl.scissor_on;
+    case GL_TEXTURE_2D: return &fx_gl.tex2d;
     default: return NULL;
     }
 }
@@ -549,7 +549,7 @@ static void apply_color_material(void);
 static void set_cap(GLenum cap, int on)
 {
     if (cap >= GL_LIGHT0 && cap <= GL_LIGHT7) {
-        fxg.L.light[cap - GL_LIGHT0].enabled = on;
+        fx_gl.L.light[cap - GL_LIGHT0].enabled = on;
         return;
     }
     int *f = cap_flag(cap);
@@ -558,7 +558,7 @@ static void set_cap(GLenum cap, int on)
         if (cap == GL_SCISSOR_TEST)
             update_clip();
         if (cap == GL_LIGHTING)
-            fxg.nmat_dirty = 1;
+            fx_gl.nmat_dirty = 1;
         if (cap == GL_COLOR_MATERIAL && on)
             apply_color_material(); /* the current colour is taken at once, as in Mesa */
         return;
@@ -573,7 +573,7 @@ static void set_cap(GLenum cap, int on)
     case GL_CLIP_PLANE1: case GL_CLIP_PLANE2: case GL_CLIP_PLANE3: case GL_TEXTURE_GEN_S:
     case GL_TEXTURE_GEN_T: case GL_MAP2_VERTEX_3: case GL_MAP1_VERTEX_3:
         if (on)
-            fxg_unimplemented(cap == GL_FOG ? "glEnable(GL_FOG)"
+            fx_glut_unimplemented(cap == GL_FOG ? "glEnable(GL_FOG)"
                               : cap == GL_ALPHA_TEST ? "glEnable(GL_ALPHA_TEST)"
                               : cap == GL_COLOR_LOGIC_OP ? "glEnable(GL_COLOR_LOGIC_OP)"
                               : cap == GL_POLYGON_OFFSET_FILL ? "glEnable(GL_POLYGON_OFFSET_FILL)"
@@ -581,7 +581,7 @@ static void set_cap(GLenum cap, int on)
                               GL_INVALID_ENUM);
         return;
     default:
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
     }
 }
 void glEnable(GLenum cap)
@@ -597,7 +597,7 @@ void glDisable(GLenum cap)
 GLboolean glIsEnabled(GLenum cap)
 {
     if (cap >= GL_LIGHT0 && cap <= GL_LIGHT7)
-        return (GLboolean)fxg.L.light[cap - GL_LIGHT0].enabled;
+        return (GLboolean)fx_gl.L.light[cap - GL_LIGHT0].enabled;
     int *f = cap_flag(cap);
     return f ? (GLboolean)(*f != 0) : GL_FALSE;
 }
@@ -606,79 +606,79 @@ void glShadeModel(GLenum m)
 {
     REC(OP_SHADE, (double)m);
     if (m != GL_FLAT && m != GL_SMOOTH) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return;
     }
-    fxg.shade = m;
+    fx_gl.shade = m;
 }
 void glPointSize(GLfloat s)
 {
     REC(OP_POINTSIZE, s);
     if (!(s > 0)) { /* NaN too */
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
-    fxg.point_size = s;
+    fx_gl.point_size = s;
 }
 void glLineWidth(GLfloat w)
 {
     REC(OP_LINEWIDTH, w);
     if (!(w > 0)) { /* NaN too */
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
-    fxg.line_width = w;
+    fx_gl.line_width = w;
 }
 void glLineStipple(GLint factor, GLushort pattern)
 {
     REC(OP_STIPPLE, factor, pattern);
-    fxg.stipple_factor = factor < 1 ? 1 : factor > 256 ? 256 : factor;
-    fxg.stipple_pattern = pattern;
+    fx_gl.stipple_factor = factor < 1 ? 1 : factor > 256 ? 256 : factor;
+    fx_gl.stipple_pattern = pattern;
 }
 void glPolygonMode(GLenum face, GLenum mode)
 {
     REC(OP_POLYMODE, (double)face, (double)mode);
     if (mode != GL_POINT && mode != GL_LINE && mode != GL_FILL) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return;
     }
     if (face == GL_FRONT || face == GL_FRONT_AND_BACK)
-        fxg.poly_front = mode;
+        fx_gl.poly_front = mode;
     if (face == GL_BACK || face == GL_FRONT_AND_BACK)
-        fxg.poly_back = mode;
+        fx_gl.poly_back = mode;
 }
 void glDepthFunc(GLenum f)
 {
     REC(OP_DEPTHFUNC, (double)f);
     if (f < GL_NEVER || f > GL_ALWAYS) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return;
     }
-    fxg.depth_func = f;
+    fx_gl.depth_func = f;
 }
-void glDepthMask(GLboolean flag) { fxg.depth_mask = flag != 0; }
+void glDepthMask(GLboolean flag) { fx_gl.depth_mask = flag != 0; }
 void glDepthRange(GLclampd n, GLclampd f)
 {
     if (n != 0.0 || f != 1.0)
-        fxg_unimplemented("glDepthRange (other than 0, 1)", GL_INVALID_OPERATION);
+        fx_glut_unimplemented("glDepthRange (other than 0, 1)", GL_INVALID_OPERATION);
 }
 void glCullFace(GLenum m)
 {
     REC(OP_CULLFACE, (double)m);
     if (m != GL_FRONT && m != GL_BACK && m != GL_FRONT_AND_BACK) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return;
     }
-    fxg.cull_face = m;
+    fx_gl.cull_face = m;
 }
 void glFrontFace(GLenum m)
 {
     REC(OP_FRONTFACE, (double)m);
     if (m != GL_CW && m != GL_CCW) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return;
     }
-    fxg.front_face = m;
+    fx_gl.front_face = m;
 }
 static int blend_factor(GLenum f)
 {
@@ -701,16 +701,16 @@ void glBlendFunc(GLenum s, GLenum d)
 {
     REC(OP_BLENDFUNC, (double)s, (double)d);
     if (blend_factor(s) < 0 || blend_factor(d) < 0) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return;
     }
-    fxg.bsrc = s, fxg.bdst = d;
+    fx_gl.bsrc = s, fx_gl.bdst = d;
 }
 void glColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a)
 {
-    fxg.color_mask = (uint8_t)((r ? 1 : 0) | (g ? 2 : 0) | (b ? 4 : 0) | (a ? 8 : 0));
-    if (!fxg.color_mask)
-        fxg.color_mask = 0x10; /* nothing written */
+    fx_gl.color_mask = (uint8_t)((r ? 1 : 0) | (g ? 2 : 0) | (b ? 4 : 0) | (a ? 8 : 0));
+    if (!fx_gl.color_mask)
+        fx_gl.color_mask = 0x10; /* nothing written */
 }
 void glHint(GLenum target, GLenum mode) { (void)target, (void)mode; }
 
@@ -718,52 +718,52 @@ void glHint(GLenum target, GLenum mode) { (void)target, (void)mode; }
 void glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a)
 {
     REC(OP_CLEARCOLOR, r, g, b, a);
-    fxg.clear_color[0] = fxg_d2c(r), fxg.clear_color[1] = fxg_d2c(g);
-    fxg.clear_color[2] = fxg_d2c(b), fxg.clear_color[3] = fxg_d2c(a);
+    fx_gl.clear_color[0] = fx_glut_d2c(r), fx_gl.clear_color[1] = fx_glut_d2c(g);
+    fx_gl.clear_color[2] = fx_glut_d2c(b), fx_gl.clear_color[3] = fx_glut_d2c(a);
 }
 void glClearDepth(GLclampd d)
 {
     d = !(d > 0) ? 0 : d > 1 ? 1 : d; /* NaN as 0 */
     int64_t z = llrint(d * 16777216.0);
-    fxg.clear_depth = z > 0xFFFFFF ? 0xFFFFFF : (uint32_t)z;
+    fx_gl.clear_depth = z > 0xFFFFFF ? 0xFFFFFF : (uint32_t)z;
 }
 static int lvl(fx16 c) { return (int)(((int64_t)c * 255 + 0x8000) >> 16); }
 void glClear(GLbitfield mask)
 {
     REC(OP_CLEAR, (double)mask);
-    if (fxg.in_begin) {
-        fxg_set_error(GL_INVALID_OPERATION);
+    if (fx_gl.in_begin) {
+        fx_glut_set_error(GL_INVALID_OPERATION);
         return;
     }
-    fx_rect r = {0, 0, fxg.w, fxg.h};
-    if (fxg.scissor_on)
-        r = (fx_rect){fxg.scissor[0], fxg.scissor[1], fxg.scissor[0] + fxg.scissor[2],
-                      fxg.scissor[1] + fxg.scissor[3]};
-    fx_color c = ((fx_color)lvl(fxg.clear_color[3]) << 24) | ((fx_color)lvl(fxg.clear_color[0]) << 16) |
-                 ((fx_color)lvl(fxg.clear_color[1]) << 8) | (fx_color)lvl(fxg.clear_color[2]);
-    fx_gl_clear(&fxg.tgt, r, c, (mask & GL_COLOR_BUFFER_BIT) != 0, fxg.clear_depth,
+    fx_rect r = {0, 0, fx_gl.w, fx_gl.h};
+    if (fx_gl.scissor_on)
+        r = (fx_rect){fx_gl.scissor[0], fx_gl.scissor[1], fx_gl.scissor[0] + fx_gl.scissor[2],
+                      fx_gl.scissor[1] + fx_gl.scissor[3]};
+    fx_color c = ((fx_color)lvl(fx_gl.clear_color[3]) << 24) | ((fx_color)lvl(fx_gl.clear_color[0]) << 16) |
+                 ((fx_color)lvl(fx_gl.clear_color[1]) << 8) | (fx_color)lvl(fx_gl.clear_color[2]);
+    fx_gl_clear(&fx_gl.tgt, r, c, (mask & GL_COLOR_BUFFER_BIT) != 0, fx_gl.clear_depth,
                 (mask & GL_DEPTH_BUFFER_BIT) != 0);
 }
 
-void glFlush(void) { fxg_frame_done(0); }
-void glFinish(void) { fxg_frame_done(0); }
+void glFlush(void) { fx_glut_frame_done(0); }
+void glFinish(void) { fx_glut_frame_done(0); }
 
 /* ---- current attributes ---- */
 static void apply_color_material(void)
 {
-    if (!fxg.color_material)
+    if (!fx_gl.color_material)
         return;
     for (int f = 0; f < 2; f++) {
-        if ((f == 0 && fxg.cm_face == GL_BACK) || (f == 1 && fxg.cm_face == GL_FRONT))
+        if ((f == 0 && fx_gl.cm_face == GL_BACK) || (f == 1 && fx_gl.cm_face == GL_FRONT))
             continue;
-        fx_gl_material *m = &fxg.mat[f];
+        fx_gl_material *m = &fx_gl.mat[f];
         for (int k = 0; k < 4; k++) {
-            switch (fxg.cm_mode) {
-            case GL_AMBIENT: m->ambient[k] = fxg.color[k]; break;
-            case GL_DIFFUSE: m->diffuse[k] = fxg.color[k]; break;
-            case GL_SPECULAR: m->specular[k] = fxg.color[k]; break;
-            case GL_EMISSION: m->emission[k] = fxg.color[k]; break;
-            default: m->ambient[k] = m->diffuse[k] = fxg.color[k]; break;
+            switch (fx_gl.cm_mode) {
+            case GL_AMBIENT: m->ambient[k] = fx_gl.color[k]; break;
+            case GL_DIFFUSE: m->diffuse[k] = fx_gl.color[k]; break;
+            case GL_SPECULAR: m->specular[k] = fx_gl.color[k]; break;
+            case GL_EMISSION: m->emission[k] = fx_gl.color[k]; break;
+            default: m->ambient[k] = m->diffuse[k] = fx_gl.color[k]; break;
             }
         }
     }
@@ -771,8 +771,8 @@ static void apply_color_material(void)
 static void set_color(double r, double g, double b, double a)
 {
     REC(OP_COLOR, r, g, b, a);
-    fxg.color[0] = fxg_d2c(r), fxg.color[1] = fxg_d2c(g), fxg.color[2] = fxg_d2c(b),
-    fxg.color[3] = fxg_d2c(a);
+    fx_gl.color[0] = fx_glut_d2c(r), fx_gl.color[1] = fx_glut_d2c(g), fx_gl.color[2] = fx_glut_d2c(b),
+    fx_gl.color[3] = fx_glut_d2c(a);
     apply_color_material();
 }
 #define B(v) ((2.0 * (v) + 1.0) / 255.0)
@@ -814,7 +814,7 @@ void glColor4usv(const GLushort *v) { glColor4us(v[0], v[1], v[2], v[3]); }
 static void set_normal(double x, double y, double z)
 {
     REC(OP_NORMAL, x, y, z);
-    fxg.normal[0] = fxg_d2x(x), fxg.normal[1] = fxg_d2x(y), fxg.normal[2] = fxg_d2x(z);
+    fx_gl.normal[0] = fx_glut_d2x(x), fx_gl.normal[1] = fx_glut_d2x(y), fx_gl.normal[2] = fx_glut_d2x(z);
 }
 void glNormal3b(GLbyte x, GLbyte y, GLbyte z) { set_normal(B(x), B(y), B(z)); }
 void glNormal3d(GLdouble x, GLdouble y, GLdouble z) { set_normal(x, y, z); }
@@ -833,7 +833,7 @@ void glNormal3sv(const GLshort *v) { glNormal3s(v[0], v[1], v[2]); }
 static void set_tc(double s, double t)
 {
     REC(OP_TEXCOORD, s, t);
-    fxg.texc[0] = fxg_d2q16(s), fxg.texc[1] = fxg_d2q16(t);
+    fx_gl.texc[0] = fx_glut_d2q16(s), fx_gl.texc[1] = fx_glut_d2q16(t);
 }
 void glTexCoord1f(GLfloat s) { set_tc(s, 0); }
 void glTexCoord1d(GLdouble s) { set_tc(s, 0); }
@@ -852,10 +852,10 @@ void glTexCoord4f(GLfloat s, GLfloat t, GLfloat r, GLfloat q) { (void)r, (void)q
 static fx_gl_light *light_of(GLenum l)
 {
     if (l < GL_LIGHT0 || l > GL_LIGHT7) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return NULL;
     }
-    return &fxg.L.light[l - GL_LIGHT0];
+    return &fx_gl.L.light[l - GL_LIGHT0];
 }
 static void light_v(GLenum light, GLenum pname, const double *p)
 {
@@ -866,7 +866,7 @@ static void light_v(GLenum light, GLenum pname, const double *p)
         for (int i = 1; i < n; i++)
             a[2 + i] = p[i];
         record(OP_LIGHT, 6, a);
-        if (!fxg.list_exec)
+        if (!fx_gl.list_exec)
             return;
     }
     fx_gl_light *l = light_of(light);
@@ -877,36 +877,36 @@ static void light_v(GLenum light, GLenum pname, const double *p)
         (pname == GL_SPOT_CUTOFF && !(p[0] >= 0 && p[0] <= 90) && p[0] != 180.0) ||
         ((pname == GL_CONSTANT_ATTENUATION || pname == GL_LINEAR_ATTENUATION ||
           pname == GL_QUADRATIC_ATTENUATION) && !(p[0] >= 0))) {
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
     switch (pname) {
-    case GL_AMBIENT: for (int k = 0; k < 4; k++) l->ambient[k] = fxg_d2q16(p[k]); break;
-    case GL_DIFFUSE: for (int k = 0; k < 4; k++) l->diffuse[k] = fxg_d2q16(p[k]); break;
-    case GL_SPECULAR: for (int k = 0; k < 4; k++) l->specular[k] = fxg_d2q16(p[k]); break;
+    case GL_AMBIENT: for (int k = 0; k < 4; k++) l->ambient[k] = fx_glut_d2q16(p[k]); break;
+    case GL_DIFFUSE: for (int k = 0; k < 4; k++) l->diffuse[k] = fx_glut_d2q16(p[k]); break;
+    case GL_SPECULAR: for (int k = 0; k < 4; k++) l->specular[k] = fx_glut_d2q16(p[k]); break;
     case GL_POSITION: {
-        fx_glv4 v = {fxg_d2x(p[0]), fxg_d2x(p[1]), fxg_d2x(p[2]), fxg_d2x(p[3])};
-        v = fx_glm_apply(&fxg.mv[fxg.mv_top], v);
+        fx_glv4 v = {fx_glut_d2x(p[0]), fx_glut_d2x(p[1]), fx_glut_d2x(p[2]), fx_glut_d2x(p[3])};
+        v = fx_glm_apply(&fx_gl.mv[fx_gl.mv_top], v);
         l->pos[0] = v.x, l->pos[1] = v.y, l->pos[2] = v.z, l->pos[3] = v.w;
         break;
     }
     case GL_SPOT_DIRECTION: {
-        const fx_glm *m = &fxg.mv[fxg.mv_top];
-        fx32 d[3] = {fxg_d2x(p[0]), fxg_d2x(p[1]), fxg_d2x(p[2])};
+        const fx_glm *m = &fx_gl.mv[fx_gl.mv_top];
+        fx32 d[3] = {fx_glut_d2x(p[0]), fx_glut_d2x(p[1]), fx_glut_d2x(p[2])};
         for (int r = 0; r < 3; r++)
             l->spot_dir[r] = fx32_mul(m->m[r], d[0]) + fx32_mul(m->m[4 + r], d[1]) +
                              fx32_mul(m->m[8 + r], d[2]);
         break;
     }
-    case GL_SPOT_EXPONENT: l->spot_exp = fxg_d2q16(p[0]); break;
+    case GL_SPOT_EXPONENT: l->spot_exp = fx_glut_d2q16(p[0]); break;
     case GL_SPOT_CUTOFF:
         l->spot_cut = p[0] != 180.0;
-        l->spot_cos = fx32_cos(fxg_deg2angle(p[0]));
+        l->spot_cos = fx32_cos(fx_glut_deg2angle(p[0]));
         break;
-    case GL_CONSTANT_ATTENUATION: l->att[0] = fxg_d2x(p[0]); break;
-    case GL_LINEAR_ATTENUATION: l->att[1] = fxg_d2x(p[0]); break;
-    case GL_QUADRATIC_ATTENUATION: l->att[2] = fxg_d2x(p[0]); break;
-    default: fxg_set_error(GL_INVALID_ENUM);
+    case GL_CONSTANT_ATTENUATION: l->att[0] = fx_glut_d2x(p[0]); break;
+    case GL_LINEAR_ATTENUATION: l->att[1] = fx_glut_d2x(p[0]); break;
+    case GL_QUADRATIC_ATTENUATION: l->att[2] = fx_glut_d2x(p[0]); break;
+    default: fx_glut_set_error(GL_INVALID_ENUM);
     }
 }
 void glLightfv(GLenum l, GLenum pname, const GLfloat *p)
@@ -948,9 +948,9 @@ void glGetLightfv(GLenum light, GLenum pname, GLfloat *p)
             p[k] = (GLfloat)(c[k] / 65536.0);
     else if (pname == GL_POSITION)
         for (int k = 0; k < 4; k++)
-            p[k] = (GLfloat)fxg_x2d(l->pos[k]);
+            p[k] = (GLfloat)fx_glut_x2d(l->pos[k]);
     else
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
 }
 static void light_model(GLenum pname, const double *p)
 {
@@ -959,30 +959,30 @@ static void light_model(GLenum pname, const double *p)
                        pname == GL_LIGHT_MODEL_AMBIENT ? p[2] : 0,
                        pname == GL_LIGHT_MODEL_AMBIENT ? p[3] : 0};
         record(OP_LIGHTMODEL, 5, a);
-        if (!fxg.list_exec)
+        if (!fx_gl.list_exec)
             return;
     }
     switch (pname) {
     case GL_LIGHT_MODEL_AMBIENT:
         for (int k = 0; k < 4; k++)
-            fxg.L.model_ambient[k] = fxg_d2q16(p[k]);
+            fx_gl.L.model_ambient[k] = fx_glut_d2q16(p[k]);
         break;
-    case GL_LIGHT_MODEL_TWO_SIDE: fxg.L.two_side = p[0] != 0; break;
-    case GL_LIGHT_MODEL_LOCAL_VIEWER: fxg.L.local_viewer = p[0] != 0; break;
+    case GL_LIGHT_MODEL_TWO_SIDE: fx_gl.L.two_side = p[0] != 0; break;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: fx_gl.L.local_viewer = p[0] != 0; break;
     case GL_LIGHT_MODEL_COLOR_CONTROL:
         /* GL 1.2's separate specular colour only differs from the single
          * colour where a texture is applied between the two sums (or a
          * negative light colour meets a clamp); without texturing the
          * layer's single sum is the same picture */
         if (p[0] == GL_SEPARATE_SPECULAR_COLOR) {
-            fxg.separate_specular = 1;
+            fx_gl.separate_specular = 1;
         } else if (p[0] == GL_SINGLE_COLOR) {
-            fxg.separate_specular = 0;
+            fx_gl.separate_specular = 0;
         } else {
-            fxg_set_error(GL_INVALID_ENUM);
+            fx_glut_set_error(GL_INVALID_ENUM);
         }
         break;
-    default: fxg_set_error(GL_INVALID_ENUM);
+    default: fx_glut_set_error(GL_INVALID_ENUM);
     }
 }
 void glLightModelfv(GLenum pname, const GLfloat *p)
@@ -1015,15 +1015,15 @@ static void material_v(GLenum face, GLenum pname, const double *p)
         if (pname != GL_SHININESS)
             a[3] = p[1], a[4] = p[2], a[5] = p[3];
         record(OP_MATERIAL, 6, a);
-        if (!fxg.list_exec)
+        if (!fx_gl.list_exec)
             return;
     }
     if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return;
     }
     if (pname == GL_SHININESS && !(p[0] >= 0 && p[0] <= 128)) {
-        fxg_set_error(GL_INVALID_VALUE); /* GL 1.x: [0, 128]; Mesa changes nothing */
+        fx_glut_set_error(GL_INVALID_VALUE); /* GL 1.x: [0, 128]; Mesa changes nothing */
         return;
     }
     for (int f = 0; f < 2; f++) {
@@ -1031,27 +1031,27 @@ static void material_v(GLenum face, GLenum pname, const double *p)
             continue;
         /* while GL_COLOR_MATERIAL tracks the current colour into this face's
          * pname, glMaterial leaves it alone (Mesa's rule: the colour wins) */
-        if (fxg.color_material && fxg.cm_face != (f == 0 ? GL_BACK : GL_FRONT) &&
-            (pname == fxg.cm_mode ||
-             (fxg.cm_mode == GL_AMBIENT_AND_DIFFUSE && (pname == GL_AMBIENT || pname == GL_DIFFUSE))))
+        if (fx_gl.color_material && fx_gl.cm_face != (f == 0 ? GL_BACK : GL_FRONT) &&
+            (pname == fx_gl.cm_mode ||
+             (fx_gl.cm_mode == GL_AMBIENT_AND_DIFFUSE && (pname == GL_AMBIENT || pname == GL_DIFFUSE))))
             continue;
-        fx_gl_material *m = &fxg.mat[f];
+        fx_gl_material *m = &fx_gl.mat[f];
         switch (pname) {
-        case GL_AMBIENT: for (int k = 0; k < 4; k++) m->ambient[k] = fxg_d2q16(p[k]); break;
-        case GL_DIFFUSE: for (int k = 0; k < 4; k++) m->diffuse[k] = fxg_d2q16(p[k]); break;
-        case GL_SPECULAR: for (int k = 0; k < 4; k++) m->specular[k] = fxg_d2q16(p[k]); break;
-        case GL_EMISSION: for (int k = 0; k < 4; k++) m->emission[k] = fxg_d2q16(p[k]); break;
+        case GL_AMBIENT: for (int k = 0; k < 4; k++) m->ambient[k] = fx_glut_d2q16(p[k]); break;
+        case GL_DIFFUSE: for (int k = 0; k < 4; k++) m->diffuse[k] = fx_glut_d2q16(p[k]); break;
+        case GL_SPECULAR: for (int k = 0; k < 4; k++) m->specular[k] = fx_glut_d2q16(p[k]); break;
+        case GL_EMISSION: for (int k = 0; k < 4; k++) m->emission[k] = fx_glut_d2q16(p[k]); break;
         case GL_AMBIENT_AND_DIFFUSE:
             for (int k = 0; k < 4; k++) {
-                int tracked = fxg.color_material && fxg.cm_face != (f == 0 ? GL_BACK : GL_FRONT);
-                if (!tracked || fxg.cm_mode == GL_DIFFUSE)
-                    m->ambient[k] = fxg_d2q16(p[k]);
-                if (!tracked || fxg.cm_mode == GL_AMBIENT)
-                    m->diffuse[k] = fxg_d2q16(p[k]);
+                int tracked = fx_gl.color_material && fx_gl.cm_face != (f == 0 ? GL_BACK : GL_FRONT);
+                if (!tracked || fx_gl.cm_mode == GL_DIFFUSE)
+                    m->ambient[k] = fx_glut_d2q16(p[k]);
+                if (!tracked || fx_gl.cm_mode == GL_AMBIENT)
+                    m->diffuse[k] = fx_glut_d2q16(p[k]);
             }
             break;
-        case GL_SHININESS: m->shininess = fxg_d2q16(p[0]); break;
-        default: fxg_set_error(GL_INVALID_ENUM); return;
+        case GL_SHININESS: m->shininess = fx_glut_d2q16(p[0]); break;
+        default: fx_glut_set_error(GL_INVALID_ENUM); return;
         }
     }
 }
@@ -1080,10 +1080,10 @@ void glMateriali(GLenum face, GLenum pname, GLint p) { glMaterialf(face, pname, 
 void glGetMaterialfv(GLenum face, GLenum pname, GLfloat *p)
 {
     if (face != GL_FRONT && face != GL_BACK) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return;
     }
-    fx_gl_material *m = &fxg.mat[face == GL_BACK];
+    fx_gl_material *m = &fx_gl.mat[face == GL_BACK];
     const fx16 *c = pname == GL_AMBIENT ? m->ambient : pname == GL_DIFFUSE ? m->diffuse
                     : pname == GL_SPECULAR ? m->specular : pname == GL_EMISSION ? m->emission
                                                                                : NULL;
@@ -1093,7 +1093,7 @@ void glGetMaterialfv(GLenum face, GLenum pname, GLfloat *p)
     else if (pname == GL_SHININESS)
         p[0] = (GLfloat)(m->shininess / 65536.0);
     else
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
 }
 void glColorMaterial(GLenum face, GLenum mode)
 {
@@ -1101,41 +1101,41 @@ void glColorMaterial(GLenum face, GLenum mode)
     if ((face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) ||
         (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
          mode != GL_AMBIENT_AND_DIFFUSE)) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return;
     }
-    fxg.cm_face = face, fxg.cm_mode = mode;
+    fx_gl.cm_face = face, fx_gl.cm_mode = mode;
     apply_color_material();
 }
 
 /* ---- the pipeline ---- */
 static void sync_target(void)
 {
-    fx_gl_target *t = &fxg.tgt;
-    t->depth_test = (uint8_t)fxg.depth_test;
-    t->depth_write = (uint8_t)fxg.depth_mask;
-    t->depth_func = (uint8_t)(fxg.depth_func - GL_NEVER);
-    t->blend = (uint8_t)(fxg.blend && !(fxg.bsrc == GL_ONE && fxg.bdst == GL_ZERO));
-    t->bf_src = (uint8_t)blend_factor(fxg.bsrc);
-    t->bf_dst = (uint8_t)blend_factor(fxg.bdst);
-    t->stipple_on = (uint8_t)fxg.stipple;
-    t->stipple_pattern = fxg.stipple_pattern;
-    t->stipple_factor = fxg.stipple_factor;
-    t->color_mask = fxg.color_mask == 0x10 ? 0 : fxg.color_mask;
+    fx_gl_target *t = &fx_gl.tgt;
+    t->depth_test = (uint8_t)fx_gl.depth_test;
+    t->depth_write = (uint8_t)fx_gl.depth_mask;
+    t->depth_func = (uint8_t)(fx_gl.depth_func - GL_NEVER);
+    t->blend = (uint8_t)(fx_gl.blend && !(fx_gl.bsrc == GL_ONE && fx_gl.bdst == GL_ZERO));
+    t->bf_src = (uint8_t)blend_factor(fx_gl.bsrc);
+    t->bf_dst = (uint8_t)blend_factor(fx_gl.bdst);
+    t->stipple_on = (uint8_t)fx_gl.stipple;
+    t->stipple_pattern = fx_gl.stipple_pattern;
+    t->stipple_factor = fx_gl.stipple_factor;
+    t->color_mask = fx_gl.color_mask == 0x10 ? 0 : fx_gl.color_mask;
     t->tex = NULL;
-    if (fxg.tex2d && fxg.bound_tex < FXG_MAX_TEX && fxg.tex[fxg.bound_tex].used &&
-        fxg.tex[fxg.bound_tex].mem) {
+    if (fx_gl.tex2d && fx_gl.bound_tex < FXG_MAX_TEX && fx_gl.tex[fx_gl.bound_tex].used &&
+        fx_gl.tex[fx_gl.bound_tex].mem) {
         static int told;
-        if (fxg.lighting && fxg.separate_specular && !told) {
+        if (fx_gl.lighting && fx_gl.separate_specular && !told) {
             told = 1; /* the one case where GL's separate specular colour shows */
-            fxg_log("GL_SEPARATE_SPECULAR_COLOR: fixel's layer adds the specular term before "
+            fx_glut_log("GL_SEPARATE_SPECULAR_COLOR: fixel's layer adds the specular term before "
                     "texturing, not after (ignored)");
         }
-        t->tex = &fxg.tex[fxg.bound_tex].t;
-        t->tex_env = fxg.tex_env == GL_REPLACE ? FX_GL_TEX_REPLACE
-                     : fxg.tex_env == GL_DECAL ? FX_GL_TEX_DECAL
-                     : fxg.tex_env == GL_BLEND ? FX_GL_TEX_BLEND
-                     : fxg.tex_env == GL_ADD   ? FX_GL_TEX_ADD
+        t->tex = &fx_gl.tex[fx_gl.bound_tex].t;
+        t->tex_env = fx_gl.tex_env == GL_REPLACE ? FX_GL_TEX_REPLACE
+                     : fx_gl.tex_env == GL_DECAL ? FX_GL_TEX_DECAL
+                     : fx_gl.tex_env == GL_BLEND ? FX_GL_TEX_BLEND
+                     : fx_gl.tex_env == GL_ADD   ? FX_GL_TEX_ADD
                                                : FX_GL_TEX_MODULATE;
     }
 }
@@ -1162,7 +1162,7 @@ static fx16 q32_to_q16(fx32 v)
 static void tex_matrix(fx_gl_cvert *o)
 {
     fx_glv4 v = {(fx32)o->s * 65536, (fx32)o->t * 65536, 0, FX32_ONE};
-    v = fx_glm_apply(&fxg.texm[fxg.tex_top], v);
+    v = fx_glm_apply(&fx_gl.texm[fx_gl.tex_top], v);
     if (v.w > 0 && v.w != FX32_ONE)
         v.x = fx32_div(v.x, v.w), v.y = fx32_div(v.y, v.w);
     o->s = q32_to_q16(v.x), o->t = q32_to_q16(v.y);
@@ -1172,41 +1172,41 @@ static void process_vertex(fx32 x, fx32 y, fx32 z, fx32 w, fx_gl_cvert *o)
 {
     ensure_mvp();
     fx_glv4 v = {x, y, z, w};
-    o->p = fx_glm_apply(&fxg.mvp, v);
-    if (fxg.lighting) {
-        fx_glv4 e = fx_glm_apply(&fxg.mv[fxg.mv_top], v);
+    o->p = fx_glm_apply(&fx_gl.mvp, v);
+    if (fx_gl.lighting) {
+        fx_glv4 e = fx_glm_apply(&fx_gl.mv[fx_gl.mv_top], v);
         fx32 n[3];
         for (int r = 0; r < 3; r++)
-            n[r] = fx32_add(fx32_add(fx32_mul(fxg.nmat[r], fxg.normal[0]),
-                                     fx32_mul(fxg.nmat[3 + r], fxg.normal[1])),
-                            fx32_mul(fxg.nmat[6 + r], fxg.normal[2]));
-        if (fxg.normalize || fxg.rescale)
+            n[r] = fx32_add(fx32_add(fx32_mul(fx_gl.nmat[r], fx_gl.normal[0]),
+                                     fx32_mul(fx_gl.nmat[3 + r], fx_gl.normal[1])),
+                            fx32_mul(fx_gl.nmat[6 + r], fx_gl.normal[2]));
+        if (fx_gl.normalize || fx_gl.rescale)
             fx_glv3_normalize(n);
         fx32 p[4] = {e.x, e.y, e.z, e.w};
         /* directional lights' vectors once, not per vertex (same bits) */
         static fx_gl_shade_cache shade_cache;
-        fx_gl_shade_cached(&fxg.L, &shade_cache, &fxg.mat[0], p, n, o->c);
-        if (fxg.L.two_side) {
+        fx_gl_shade_cached(&fx_gl.L, &shade_cache, &fx_gl.mat[0], p, n, o->c);
+        if (fx_gl.L.two_side) {
             /* GL 1.x: a back face is lit with the back material and the
              * normal reversed; which colour a polygon takes is decided by
              * its facing in window coordinates (raster_poly) */
             fx32 bn[3] = {fx32_neg(n[0]), fx32_neg(n[1]), fx32_neg(n[2])};
-            fx_gl_shade_cached(&fxg.L, &shade_cache, &fxg.mat[1], p, bn, o->bc);
+            fx_gl_shade_cached(&fx_gl.L, &shade_cache, &fx_gl.mat[1], p, bn, o->bc);
         } else {
             memcpy(o->bc, o->c, sizeof o->bc);
         }
     } else {
         for (int k = 0; k < 4; k++)
-            o->c[k] = o->bc[k] = fxg.color[k];
+            o->c[k] = o->bc[k] = fx_gl.color[k];
     }
-    o->s = fxg.texc[0], o->t = fxg.texc[1];
-    if (fxg.tex2d)
+    o->s = fx_gl.texc[0], o->t = fx_gl.texc[1];
+    if (fx_gl.tex2d)
         tex_matrix(o);
 }
 
 static int to_win(const fx_gl_cvert *c, fx_gl_wvert *w)
 {
-    if (fx_gl_to_window(&c->p, fxg.vp[0], fxg.vp[1], fxg.vp[2], fxg.vp[3], w) < 0)
+    if (fx_gl_to_window(&c->p, fx_gl.vp[0], fx_gl.vp[1], fx_gl.vp[2], fx_gl.vp[3], w) < 0)
         return -1;
     for (int k = 0; k < 4; k++)
         w->c[k] = c->c[k];
@@ -1219,24 +1219,24 @@ static void draw_point(const fx_gl_cvert *c)
     if (!fx_gl_point_visible(&c->p))
         return;
     /* beyond the guard band nothing can be seen and the arithmetic would overflow */
-    fx32 gw = fx32_mul(fxg.guard, c->p.w);
+    fx32 gw = fx32_mul(fx_gl.guard, c->p.w);
     if (c->p.x > gw || c->p.x < -gw || c->p.y > gw || c->p.y < -gw)
         return;
     fx_gl_wvert w;
     if (to_win(c, &w) == 0)
-        fx_gl_point(&fxg.tgt, &w, isize(fxg.point_size));
+        fx_gl_point(&fx_gl.tgt, &w, isize(fx_gl.point_size));
 }
 
 static void draw_line(const fx_gl_cvert *a, const fx_gl_cvert *b, const fx16 *provoking)
 {
     fx_gl_cvert ca = *a, cb = *b;
-    if (!fx_gl_clip_line(&ca, &cb, fxg.guard))
+    if (!fx_gl_clip_line(&ca, &cb, fx_gl.guard))
         return;
     fx_gl_wvert wa, wb;
     if (to_win(&ca, &wa) < 0 || to_win(&cb, &wb) < 0)
         return;
-    fx_gl_line(&fxg.tgt, &wa, &wb, isize(fxg.line_width),
-               fxg.shade == GL_FLAT ? provoking : NULL);
+    fx_gl_line(&fx_gl.tgt, &wa, &wb, isize(fx_gl.line_width),
+               fx_gl.shade == GL_FLAT ? provoking : NULL);
 }
 
 /* One polygon of n (3 or 4) clip-space vertices, convex, with GL edge
@@ -1249,7 +1249,7 @@ static void draw_poly(const fx_gl_cvert *const *v, int n, const fx_gl_cvert *pro
     fx_gl_cvert in[4], out[16], tmp[16];
     for (int i = 0; i < n; i++)
         in[i] = *v[i];
-    int m = fx_gl_clip_poly(in, n, out, tmp, fxg.guard);
+    int m = fx_gl_clip_poly(in, n, out, tmp, fx_gl.guard);
     if (m < 3)
         return;
     fx_gl_wvert w[16];
@@ -1257,7 +1257,7 @@ static void draw_poly(const fx_gl_cvert *const *v, int n, const fx_gl_cvert *pro
         if (to_win(&out[i], &w[i]) < 0)
             return;
     const fx_gl_cvert *src[16];
-    if (fxg.lighting && fxg.L.two_side)
+    if (fx_gl.lighting && fx_gl.L.two_side)
         for (int i = 0; i < m; i++)
             src[i] = &out[i];
     raster_poly(w, m, n, provoking, edges, src);
@@ -1274,33 +1274,33 @@ static void raster_poly(fx_gl_wvert *w, int m, int n, const fx_gl_cvert *provoki
         area = fx_gl_area2(&w[0], &w[i], &w[i + 1]);
     if (area == 0)
         return;
-    int front = (area > 0) == (fxg.front_face == GL_CCW);
-    if (fxg.cull && (fxg.cull_face == GL_FRONT_AND_BACK || (front && fxg.cull_face == GL_FRONT) ||
-                     (!front && fxg.cull_face == GL_BACK)))
+    int front = (area > 0) == (fx_gl.front_face == GL_CCW);
+    if (fx_gl.cull && (fx_gl.cull_face == GL_FRONT_AND_BACK || (front && fx_gl.cull_face == GL_FRONT) ||
+                     (!front && fx_gl.cull_face == GL_BACK)))
         return;
-    const fx16 *flat = fxg.shade == GL_FLAT ? provoking->c : NULL;
-    if (fxg.lighting && fxg.L.two_side && !front) {
+    const fx16 *flat = fx_gl.shade == GL_FLAT ? provoking->c : NULL;
+    if (fx_gl.lighting && fx_gl.L.two_side && !front) {
         /* the whole polygon, in every polygon mode, takes the back colours */
         for (int i = 0; i < m; i++)
             memcpy(w[i].c, src[i]->bc, sizeof w[i].c);
         if (flat)
             flat = provoking->bc;
     }
-    GLenum mode = front ? fxg.poly_front : fxg.poly_back;
+    GLenum mode = front ? fx_gl.poly_front : fx_gl.poly_back;
     if (mode == GL_FILL) {
         for (int i = 1; i + 1 < m; i++)
-            fx_gl_triangle(&fxg.tgt, &w[0], &w[i], &w[i + 1], flat);
+            fx_gl_triangle(&fx_gl.tgt, &w[0], &w[i], &w[i + 1], flat);
     } else if (mode == GL_LINE) {
         int clipped = m != n;
         for (int i = 0; i < m; i++)
             if (clipped || (edges >> i) & 1) {
-                fxg.tgt.stipple_count = 0;
-                fx_gl_line(&fxg.tgt, &w[i], &w[(i + 1) % m], isize(fxg.line_width), flat);
+                fx_gl.tgt.stipple_count = 0;
+                fx_gl_line(&fx_gl.tgt, &w[i], &w[(i + 1) % m], isize(fx_gl.line_width), flat);
             }
     } else {
         for (int i = 0; i < m; i++)
             if (m != n || (edges >> i) & 1)
-                fx_gl_point(&fxg.tgt, &w[i], isize(fxg.point_size));
+                fx_gl_point(&fx_gl.tgt, &w[i], isize(fx_gl.point_size));
     }
 }
 
@@ -1315,16 +1315,16 @@ static void draw_tri(const fx_gl_cvert *a, const fx_gl_cvert *b, const fx_gl_cve
 static void assemble(int final)
 {
     sync_target();
-    fxg_vert *vb = fxg.vb;
-    int n = fxg.nv, used = n;
-    switch (fxg.prim) {
+    fx_glut_vert *vb = fx_gl.vb;
+    int n = fx_gl.nv, used = n;
+    switch (fx_gl.prim) {
     case GL_POINTS:
         for (int i = 0; i < n; i++)
             draw_point(&vb[i].cv);
         break;
     case GL_LINES:
         for (int i = 0; i + 1 < n; i += 2) {
-            fxg.tgt.stipple_count = 0;
+            fx_gl.tgt.stipple_count = 0;
             draw_line(&vb[i].cv, &vb[i + 1].cv, vb[i + 1].cv.c);
         }
         used = n & ~1;
@@ -1333,10 +1333,10 @@ static void assemble(int final)
     case GL_LINE_LOOP:
         if (!final)
             return;
-        fxg.tgt.stipple_count = 0;
+        fx_gl.tgt.stipple_count = 0;
         for (int i = 0; i + 1 < n; i++)
             draw_line(&vb[i].cv, &vb[i + 1].cv, vb[i + 1].cv.c);
-        if (fxg.prim == GL_LINE_LOOP && n >= 2)
+        if (fx_gl.prim == GL_LINE_LOOP && n >= 2)
             draw_line(&vb[n - 1].cv, &vb[0].cv, vb[0].cv.c);
         break;
     case GL_TRIANGLES:
@@ -1357,17 +1357,17 @@ static void assemble(int final)
     case GL_POLYGON:
         if (!final)
             return;
-        if (fxg.prim == GL_TRIANGLE_STRIP) {
+        if (fx_gl.prim == GL_TRIANGLE_STRIP) {
             for (int i = 0; i + 2 < n; i++) {
                 if (i & 1)
                     draw_tri(&vb[i + 1].cv, &vb[i].cv, &vb[i + 2].cv, &vb[i + 2].cv, 7);
                 else
                     draw_tri(&vb[i].cv, &vb[i + 1].cv, &vb[i + 2].cv, &vb[i + 2].cv, 7);
             }
-        } else if (fxg.prim == GL_TRIANGLE_FAN) {
+        } else if (fx_gl.prim == GL_TRIANGLE_FAN) {
             for (int i = 1; i + 1 < n; i++)
                 draw_tri(&vb[0].cv, &vb[i].cv, &vb[i + 1].cv, &vb[i + 1].cv, 7);
-        } else if (fxg.prim == GL_QUAD_STRIP) {
+        } else if (fx_gl.prim == GL_QUAD_STRIP) {
             for (int i = 0; i + 3 < n; i += 2) {
                 const fx_gl_cvert *v[4] = {&vb[i].cv, &vb[i + 1].cv, &vb[i + 3].cv, &vb[i + 2].cv};
                 draw_poly(v, 4, &vb[i + 3].cv, 15);
@@ -1376,7 +1376,7 @@ static void assemble(int final)
             /* a polygon: a fan from vertex 0, flat colour from vertex 0; in line
              * mode only its own edges */
             const fx_gl_cvert *v0 = &vb[0].cv;
-            GLenum pm = fxg.poly_front == fxg.poly_back ? fxg.poly_front : GL_FILL;
+            GLenum pm = fx_gl.poly_front == fx_gl.poly_back ? fx_gl.poly_front : GL_FILL;
             if (pm == GL_FILL) {
                 for (int i = 1; i + 1 < n; i++)
                     draw_tri(v0, &vb[i].cv, &vb[i + 1].cv, v0, 7);
@@ -1397,59 +1397,59 @@ static void assemble(int final)
     }
     if (used < n)
         memmove(vb, vb + used, (size_t)(n - used) * sizeof *vb);
-    fxg.nv = n - used;
+    fx_gl.nv = n - used;
 }
 
 void glBegin(GLenum mode)
 {
     REC(OP_BEGIN, (double)mode);
-    if (fxg.in_begin) {
-        fxg_set_error(GL_INVALID_OPERATION);
+    if (fx_gl.in_begin) {
+        fx_glut_set_error(GL_INVALID_OPERATION);
         return;
     }
     if (mode > GL_POLYGON) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return;
     }
-    fxg.in_begin = 1;
-    fxg.prim = mode;
-    fxg.nv = 0;
+    fx_gl.in_begin = 1;
+    fx_gl.prim = mode;
+    fx_gl.nv = 0;
 }
 
 void glEnd(void)
 {
     REC0(OP_END);
-    if (!fxg.in_begin) {
-        fxg_set_error(GL_INVALID_OPERATION);
+    if (!fx_gl.in_begin) {
+        fx_glut_set_error(GL_INVALID_OPERATION);
         return;
     }
     assemble(1);
-    fxg.in_begin = 0;
-    fxg.nv = 0;
+    fx_gl.in_begin = 0;
+    fx_gl.nv = 0;
 }
 
 static void vertex(double x, double y, double z, double w)
 {
     REC(OP_VERTEX, x, y, z, w);
-    if (!fxg.in_begin) /* GL: undefined; Mesa ignores it */
+    if (!fx_gl.in_begin) /* GL: undefined; Mesa ignores it */
         return;
-    if (fxg.nv == fxg.capv) {
-        int open = fxg.prim == GL_LINE_STRIP || fxg.prim == GL_LINE_LOOP || fxg.prim >= GL_TRIANGLE_STRIP;
-        if (!open || fxg.prim == GL_QUADS) {
+    if (fx_gl.nv == fx_gl.capv) {
+        int open = fx_gl.prim == GL_LINE_STRIP || fx_gl.prim == GL_LINE_LOOP || fx_gl.prim >= GL_TRIANGLE_STRIP;
+        if (!open || fx_gl.prim == GL_QUADS) {
             assemble(0);
         }
-        if (fxg.nv == fxg.capv) {
-            int nc = fxg.capv ? fxg.capv * 2 : 4096;
-            fxg_vert *nb = realloc(fxg.vb, (size_t)nc * sizeof *nb);
+        if (fx_gl.nv == fx_gl.capv) {
+            int nc = fx_gl.capv ? fx_gl.capv * 2 : 4096;
+            fx_glut_vert *nb = realloc(fx_gl.vb, (size_t)nc * sizeof *nb);
             if (!nb) {
-                fxg_set_error(GL_OUT_OF_MEMORY);
+                fx_glut_set_error(GL_OUT_OF_MEMORY);
                 return;
             }
-            fxg.vb = nb, fxg.capv = nc;
+            fx_gl.vb = nb, fx_gl.capv = nc;
         }
     }
-    process_vertex(fxg_d2x(x), fxg_d2x(y), fxg_d2x(z), fxg_d2x(w), &fxg.vb[fxg.nv].cv);
-    fxg.nv++;
+    process_vertex(fx_glut_d2x(x), fx_glut_d2x(y), fx_glut_d2x(z), fx_glut_d2x(w), &fx_gl.vb[fx_gl.nv].cv);
+    fx_gl.nv++;
 }
 
 void glVertex2d(GLdouble x, GLdouble y) { vertex(x, y, 0, 1); }
@@ -1481,15 +1481,15 @@ void glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2)
 {
     REC(OP_RECT, x1, y1, x2, y2);
     /* GL: the polygon (x1,y1) (x2,y1) (x2,y2) (x1,y2) */
-    int rec = fxg.cur_list;
-    fxg.cur_list = 0;
+    int rec = fx_gl.cur_list;
+    fx_gl.cur_list = 0;
     glBegin(GL_POLYGON);
     glVertex2d(x1, y1);
     glVertex2d(x2, y1);
     glVertex2d(x2, y2);
     glVertex2d(x1, y2);
     glEnd();
-    fxg.cur_list = (GLuint)rec;
+    fx_gl.cur_list = (GLuint)rec;
 }
 void glRectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2) { glRectd(x1, y1, x2, y2); }
 void glRecti(GLint x1, GLint y1, GLint x2, GLint y2) { glRectd(x1, y1, x2, y2); }
@@ -1508,7 +1508,7 @@ static int draw_indexed(const int32_t *pos, const int32_t *nrm, int32_t nverts, 
 {
     static fx_gl_cvert *cv;
     static int32_t cap;
-    if (recording() || fxg.in_begin || fxg.poly_front != GL_FILL || fxg.poly_back != GL_FILL)
+    if (recording() || fx_gl.in_begin || fx_gl.poly_front != GL_FILL || fx_gl.poly_back != GL_FILL)
         return -1;
     if (nverts > cap) {
         fx_gl_cvert *n = realloc(cv, (size_t)nverts * sizeof *n);
@@ -1520,7 +1520,7 @@ static int draw_indexed(const int32_t *pos, const int32_t *nrm, int32_t nverts, 
     for (int32_t k = 0; k < nverts; k++) {
         if (nrm)
             for (int i = 0; i < 3; i++)
-                fxg.normal[i] = (fx32)nrm[3 * k + i] * 65536;
+                fx_gl.normal[i] = (fx32)nrm[3 * k + i] * 65536;
         process_vertex((fx32)pos[3 * k] * 65536, (fx32)pos[3 * k + 1] * 65536,
                        (fx32)pos[3 * k + 2] * 65536, FX32_ONE, &cv[k]);
     }
@@ -1541,7 +1541,7 @@ static int draw_indexed(const int32_t *pos, const int32_t *nrm, int32_t nverts, 
     }
     for (int32_t k = 0; k < nverts; k++) {
         const fx_glv4 *p = &cv[k].p;
-        fx32 gw = fx32_mul(fxg.guard, p->w);
+        fx32 gw = fx32_mul(fx_gl.guard, p->w);
         inside[k] = p->w > 0 && p->x <= gw && p->x >= -gw && p->y <= gw && p->y >= -gw &&
                     p->z <= p->w && p->z >= -p->w && to_win(&cv[k], &wv[k]) == 0;
     }
@@ -1558,7 +1558,7 @@ static int draw_indexed(const int32_t *pos, const int32_t *nrm, int32_t nverts, 
     return 0;
 }
 
-void fxg_draw_tris_q16(const int32_t *pos, const int32_t *nrm, const uint32_t *tri, int32_t ntris,
+void fx_glut_draw_tris_q16(const int32_t *pos, const int32_t *nrm, const uint32_t *tri, int32_t ntris,
                        int wire)
 {
     if (!wire) {
@@ -1569,9 +1569,9 @@ void fxg_draw_tris_q16(const int32_t *pos, const int32_t *nrm, const uint32_t *t
         if (ntris > 0 && draw_indexed(pos, nrm, (int32_t)maxv + 1, tri, ntris) == 0)
             return;
     }
-    GLenum save_f = fxg.poly_front, save_b = fxg.poly_back;
+    GLenum save_f = fx_gl.poly_front, save_b = fx_gl.poly_back;
     if (wire)
-        fxg.poly_front = fxg.poly_back = GL_LINE;
+        fx_gl.poly_front = fx_gl.poly_back = GL_LINE;
     glBegin(GL_TRIANGLES);
     for (int32_t i = 0; i < ntris * 3; i++) {
         uint32_t k = tri[i];
@@ -1580,7 +1580,7 @@ void fxg_draw_tris_q16(const int32_t *pos, const int32_t *nrm, const uint32_t *t
         glVertex3d(pos[3 * k] / 65536.0, pos[3 * k + 1] / 65536.0, pos[3 * k + 2] / 65536.0);
     }
     glEnd();
-    fxg.poly_front = save_f, fxg.poly_back = save_b;
+    fx_gl.poly_front = save_f, fx_gl.poly_back = save_b;
 }
 
 /* ---- raster position, bitmaps, pixels ---- */
@@ -1588,16 +1588,16 @@ static void raster_pos(double x, double y, double z, double w)
 {
     REC(OP_RASTERPOS, x, y, z, w);
     fx_gl_cvert c;
-    process_vertex(fxg_d2x(x), fxg_d2x(y), fxg_d2x(z), fxg_d2x(w), &c);
-    fxg.raster_valid = fx_gl_point_visible(&c.p) && c.p.x <= c.p.w && c.p.x >= -c.p.w &&
+    process_vertex(fx_glut_d2x(x), fx_glut_d2x(y), fx_glut_d2x(z), fx_glut_d2x(w), &c);
+    fx_gl.raster_valid = fx_gl_point_visible(&c.p) && c.p.x <= c.p.w && c.p.x >= -c.p.w &&
                        c.p.y <= c.p.w && c.p.y >= -c.p.w;
     fx_gl_wvert wv;
-    if (fxg.raster_valid && to_win(&c, &wv) == 0) {
-        fxg.rx = wv.x, fxg.ry = wv.y;
+    if (fx_gl.raster_valid && to_win(&c, &wv) == 0) {
+        fx_gl.rx = wv.x, fx_gl.ry = wv.y;
         for (int k = 0; k < 4; k++)
-            fxg.raster_color[k] = c.c[k];
+            fx_gl.raster_color[k] = c.c[k];
     } else {
-        fxg.raster_valid = 0;
+        fx_gl.raster_valid = 0;
     }
 }
 void glRasterPos2d(GLdouble x, GLdouble y) { raster_pos(x, y, 0, 1); }
@@ -1627,34 +1627,34 @@ void glRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { raster_pos(
 void glRasterPos4dv(const GLdouble *v) { raster_pos(v[0], v[1], v[2], v[3]); }
 void glWindowPos2i(GLint x, GLint y)
 {
-    fxg.rx = clamp_win((int64_t)x * 256), fxg.ry = clamp_win((int64_t)y * 256);
-    fxg.raster_valid = 1;
+    fx_gl.rx = clamp_win((int64_t)x * 256), fx_gl.ry = clamp_win((int64_t)y * 256);
+    fx_gl.raster_valid = 1;
     for (int k = 0; k < 4; k++)
-        fxg.raster_color[k] = fxg.color[k];
+        fx_gl.raster_color[k] = fx_gl.color[k];
 }
 void glWindowPos2f(GLfloat x, GLfloat y)
 {
     glWindowPos2i(0, 0);
-    fxg.rx = fxg_d2win(x), fxg.ry = fxg_d2win(y);
+    fx_gl.rx = fx_glut_d2win(x), fx_gl.ry = fx_glut_d2win(y);
 }
 
 /* Bitmap at the raster position: rows given top first; window rows go up. */
-void fxg_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmove,
+void fx_glut_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmove,
                 const uint8_t *rows, int32_t row_bytes, int32_t scale)
 {
-    if (!fxg.raster_valid)
+    if (!fx_gl.raster_valid)
         return;
     /* GL: the bitmap's lower-left corner is at floor(raster - orig) */
-    int64_t x0 = ((fxg.rx - 128) >> 8) - xorig, y0 = ((fxg.ry - 128) >> 8) - yorig;
+    int64_t x0 = ((fx_gl.rx - 128) >> 8) - xorig, y0 = ((fx_gl.ry - 128) >> 8) - yorig;
     /* llvmpipe puts the raster position's pixel at floor(x) for integer-centred text */
-    x0 = (fxg.rx >> 8) - xorig;
-    y0 = (fxg.ry >> 8) - yorig;
-    fx_color c = 0xFF000000u | ((fx_color)lvl(fxg.raster_color[0]) << 16) |
-                 ((fx_color)lvl(fxg.raster_color[1]) << 8) | (fx_color)lvl(fxg.raster_color[2]);
-    fx_rect clip = {0, 0, fxg.w, fxg.h};
-    if (fxg.scissor_on)
-        clip = fx_rect_intersect(clip, fxg_scissor_rect());
-    uint32_t native = fx_pack(fxg.fb.surf.format, c);
+    x0 = (fx_gl.rx >> 8) - xorig;
+    y0 = (fx_gl.ry >> 8) - yorig;
+    fx_color c = 0xFF000000u | ((fx_color)lvl(fx_gl.raster_color[0]) << 16) |
+                 ((fx_color)lvl(fx_gl.raster_color[1]) << 8) | (fx_color)lvl(fx_gl.raster_color[2]);
+    fx_rect clip = {0, 0, fx_gl.w, fx_gl.h};
+    if (fx_gl.scissor_on)
+        clip = fx_rect_intersect(clip, fx_glut_scissor_rect());
+    uint32_t native = fx_pack(fx_gl.fb.surf.format, c);
     for (int32_t r = 0; r < h; r++)
         for (int32_t col = 0; col < w; col++) {
             if (!((rows[r * row_bytes + col / 8] >> (7 - col % 8)) & 1))
@@ -1665,22 +1665,22 @@ void fxg_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmov
                     int64_t Y = y0 + (int64_t)(h - 1 - r) * scale + sy;
                     if (X < clip.x0 || X >= clip.x1 || Y < clip.y0 || Y >= clip.y1)
                         continue;
-                    fx_surface_put_native(&fxg.fb.surf, (int32_t)X, fxg.h - 1 - (int32_t)Y, native);
+                    fx_surface_put_native(&fx_gl.fb.surf, (int32_t)X, fx_gl.h - 1 - (int32_t)Y, native);
                 }
         }
-    fxg.rx = clamp_win(fxg.rx + (int64_t)xmove * 256);
+    fx_gl.rx = clamp_win(fx_gl.rx + (int64_t)xmove * 256);
 }
 
 void glBitmap(GLsizei w, GLsizei h, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
               const GLubyte *bitmap)
 {
     if (w < 0 || h < 0) {
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
     /* GL bitmaps are stored bottom row first, rows aligned to the unpack
      * alignment; (w + 7) / 8 in 64 bits: w + 7 passes INT32_MAX */
-    int64_t al = fxg.unpack_align, rb = ((int64_t)w + 7) / 8;
+    int64_t al = fx_gl.unpack_align, rb = ((int64_t)w + 7) / 8;
     rb = (rb + al - 1) / al * al;
     if (bitmap && w > 0 && h > 0) {
         uint8_t *flip = malloc((size_t)rb * (size_t)h);
@@ -1689,32 +1689,32 @@ void glBitmap(GLsizei w, GLsizei h, GLfloat xorig, GLfloat yorig, GLfloat xmove,
                 memcpy(flip + (size_t)r * (size_t)rb, bitmap + (size_t)(h - 1 - r) * (size_t)rb, (size_t)rb);
             /* the origin clamped to the raster range: beyond it the bitmap
              * is off the surface either way */
-            int32_t xo = fxg_d2i(xorig), yo = fxg_d2i(yorig);
+            int32_t xo = fx_glut_d2i(xorig), yo = fx_glut_d2i(yorig);
             xo = xo > FXG_VIEWPORT_BOUND * 4 ? FXG_VIEWPORT_BOUND * 4 : xo < -FXG_VIEWPORT_BOUND * 4 ? -FXG_VIEWPORT_BOUND * 4 : xo;
             yo = yo > FXG_VIEWPORT_BOUND * 4 ? FXG_VIEWPORT_BOUND * 4 : yo < -FXG_VIEWPORT_BOUND * 4 ? -FXG_VIEWPORT_BOUND * 4 : yo;
-            fxg_bitmap(w, h, xo, yo, 0, flip, (int32_t)(rb > INT32_MAX ? INT32_MAX : rb), 1);
+            fx_glut_bitmap(w, h, xo, yo, 0, flip, (int32_t)(rb > INT32_MAX ? INT32_MAX : rb), 1);
             free(flip);
         }
     }
     /* the raster position moves by any float: the sum saturates at the
      * rasterizers' range (+-2^21 pixels) instead of overflowing */
-    if (fxg.raster_valid) {
-        fxg.rx = clamp_win(fxg.rx + fxg_d2win(xmove));
-        fxg.ry = clamp_win(fxg.ry + fxg_d2win(ymove));
+    if (fx_gl.raster_valid) {
+        fx_gl.rx = clamp_win(fx_gl.rx + fx_glut_d2win(xmove));
+        fx_gl.ry = clamp_win(fx_gl.ry + fx_glut_d2win(ymove));
     }
 }
 
 void glPixelStorei(GLenum pname, GLint param)
 {
     if (pname == GL_UNPACK_ALIGNMENT && (param == 1 || param == 2 || param == 4 || param == 8))
-        fxg.unpack_align = param;
+        fx_gl.unpack_align = param;
     else if (pname == GL_PACK_ALIGNMENT && (param == 1 || param == 2 || param == 4 || param == 8))
-        fxg.pack_align = param;
+        fx_gl.pack_align = param;
     else if (pname == GL_UNPACK_ALIGNMENT || pname == GL_PACK_ALIGNMENT)
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
 }
-void glPixelStoref(GLenum pname, GLfloat param) { glPixelStorei(pname, fxg_d2i(param)); }
-void glPixelZoom(GLfloat xf, GLfloat yf) { fxg.zoom_x = xf, fxg.zoom_y = yf; }
+void glPixelStoref(GLenum pname, GLfloat param) { glPixelStorei(pname, fx_glut_d2i(param)); }
+void glPixelZoom(GLfloat xf, GLfloat yf) { fx_gl.zoom_x = xf, fx_gl.zoom_y = yf; }
 
 static int comps(GLenum format)
 {
@@ -1732,7 +1732,7 @@ void glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum 
 {
     int nc = comps(format);
     if (w < 0 || h < 0) {
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
     /* x + c and y + r are taken in 64 bits below: x near INT32_MAX plus
@@ -1743,8 +1743,8 @@ void glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum 
             for (GLsizei c = 0; c < w; c++) {
                 int64_t X = (int64_t)x + c, Y = (int64_t)y + r;
                 uint32_t d = 0xFFFFFF;
-                if (X >= 0 && Y >= 0 && X < fxg.w && Y < fxg.h)
-                    d = fxg.depth[(size_t)(fxg.h - 1 - Y) * (size_t)fxg.w + (size_t)X];
+                if (X >= 0 && Y >= 0 && X < fx_gl.w && Y < fx_gl.h)
+                    d = fx_gl.depth[(size_t)(fx_gl.h - 1 - Y) * (size_t)fx_gl.w + (size_t)X];
                 uint8_t *p = (uint8_t *)pixels + (size_t)r * stride + (size_t)c * 4;
                 if (type == GL_FLOAT) {
                     float f = (float)(d / 16777215.0);
@@ -1757,19 +1757,19 @@ void glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum 
         return;
     }
     if (!nc || (type != GL_UNSIGNED_BYTE && type != GL_FLOAT)) {
-        fxg_unimplemented("glReadPixels (this format/type)", GL_INVALID_ENUM);
+        fx_glut_unimplemented("glReadPixels (this format/type)", GL_INVALID_ENUM);
         return;
     }
     int bpc = type == GL_FLOAT ? 4 : 1;
     size_t rowb = (size_t)w * nc * bpc;
-    size_t al = (size_t)fxg.pack_align;
+    size_t al = (size_t)fx_gl.pack_align;
     rowb = (rowb + al - 1) / al * al;
     for (GLsizei r = 0; r < h; r++)
         for (GLsizei c = 0; c < w; c++) {
             int64_t X = (int64_t)x + c, Y = (int64_t)y + r;
             fx_color px = 0;
-            if (X >= 0 && Y >= 0 && X < fxg.w && Y < fxg.h)
-                px = fx_surface_get(&fxg.fb.surf, (int32_t)X, fxg.h - 1 - (int32_t)Y);
+            if (X >= 0 && Y >= 0 && X < fx_gl.w && Y < fx_gl.h)
+                px = fx_surface_get(&fx_gl.fb.surf, (int32_t)X, fx_gl.h - 1 - (int32_t)Y);
             int ch[4] = {(int)(px >> 16) & 255, (int)(px >> 8) & 255, (int)px & 255, 255};
             int out[4], k = 0;
             switch (format) {
@@ -1800,29 +1800,29 @@ void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid
 {
     int nc = comps(format);
     if (!nc || (type != GL_UNSIGNED_BYTE && type != GL_FLOAT)) {
-        fxg_unimplemented("glDrawPixels (this format/type)", GL_INVALID_ENUM);
+        fx_glut_unimplemented("glDrawPixels (this format/type)", GL_INVALID_ENUM);
         return;
     }
-    if (!fxg.raster_valid)
+    if (!fx_gl.raster_valid)
         return;
     if (w < 0 || h < 0) {
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
     int bpc = type == GL_FLOAT ? 4 : 1;
-    size_t rowb = (size_t)w * nc * bpc, al = (size_t)fxg.unpack_align;
+    size_t rowb = (size_t)w * nc * bpc, al = (size_t)fx_gl.unpack_align;
     rowb = (rowb + al - 1) / al * al;
-    int64_t x0 = fxg.rx >> 8, y0 = fxg.ry >> 8;
+    int64_t x0 = fx_gl.rx >> 8, y0 = fx_gl.ry >> 8;
     /* Zoom factors are any float (glPixelZoom stores them as given): here
      * they are whole pixels in [1, 2^24] (NaN as 1), and each source pixel
      * fills only the part of its zx-by-zy block inside the clip rectangle,
      * so the work is the source size plus at most the surface, whatever
      * the zoom (glPixelZoom(1e5, 1e5) was a 10^10-iteration loop). */
-    int64_t zx = fxg_d2i(fxg.zoom_x), zy = fxg_d2i(fxg.zoom_y);
+    int64_t zx = fx_glut_d2i(fx_gl.zoom_x), zy = fx_glut_d2i(fx_gl.zoom_y);
     zx = zx < 1 ? 1 : zx > (1 << 24) ? (1 << 24) : zx;
     zy = zy < 1 ? 1 : zy > (1 << 24) ? (1 << 24) : zy;
     sync_target();
-    fx_rect cl = fxg.tgt.clip;
+    fx_rect cl = fx_gl.tgt.clip;
     for (GLsizei r = 0; r < h; r++) {
         int64_t by0 = y0 + (int64_t)r * zy, by1 = by0 + zy;
         if (by1 <= cl.y0 || by0 >= cl.y1)
@@ -1859,10 +1859,10 @@ void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid
                            ((fx_color)rgba[1] << 8) | (fx_color)rgba[2];
             int64_t X0 = bx0 < cl.x0 ? cl.x0 : bx0, X1 = bx1 > cl.x1 ? cl.x1 : bx1;
             int64_t Y0 = by0 < cl.y0 ? cl.y0 : by0, Y1 = by1 > cl.y1 ? cl.y1 : by1;
-            uint32_t native = fx_pack(fxg.fb.surf.format, col);
+            uint32_t native = fx_pack(fx_gl.fb.surf.format, col);
             for (int64_t Y = Y0; Y < Y1; Y++)
                 for (int64_t X = X0; X < X1; X++)
-                    fx_surface_put_native(&fxg.fb.surf, (int32_t)X, fxg.h - 1 - (int32_t)Y, native);
+                    fx_surface_put_native(&fx_gl.fb.surf, (int32_t)X, fx_gl.h - 1 - (int32_t)Y, native);
         }
     }
 }
@@ -1873,49 +1873,49 @@ void glGenTextures(GLsizei n, GLuint *t)
     for (GLsizei i = 0; i < n; i++) {
         t[i] = 0;
         for (GLuint k = 1; k < FXG_MAX_TEX; k++)
-            if (!fxg.tex[k].used) {
-                fxg.tex[k].used = 1;
-                fxg.tex[k].min_filter = GL_NEAREST_MIPMAP_LINEAR;
-                fxg.tex[k].mag_filter = GL_LINEAR;
-                fxg.tex[k].wrap_s = fxg.tex[k].wrap_t = GL_REPEAT;
+            if (!fx_gl.tex[k].used) {
+                fx_gl.tex[k].used = 1;
+                fx_gl.tex[k].min_filter = GL_NEAREST_MIPMAP_LINEAR;
+                fx_gl.tex[k].mag_filter = GL_LINEAR;
+                fx_gl.tex[k].wrap_s = fx_gl.tex[k].wrap_t = GL_REPEAT;
                 t[i] = k;
                 break;
             }
         if (!t[i])
-            fxg_set_error(GL_OUT_OF_MEMORY);
+            fx_glut_set_error(GL_OUT_OF_MEMORY);
     }
 }
 void glDeleteTextures(GLsizei n, const GLuint *t)
 {
     for (GLsizei i = 0; i < n; i++)
         if (t[i] && t[i] < FXG_MAX_TEX) {
-            free(fxg.tex[t[i]].mem);
-            memset(&fxg.tex[t[i]], 0, sizeof fxg.tex[t[i]]);
-            if (fxg.bound_tex == t[i])
-                fxg.bound_tex = 0;
+            free(fx_gl.tex[t[i]].mem);
+            memset(&fx_gl.tex[t[i]], 0, sizeof fx_gl.tex[t[i]]);
+            if (fx_gl.bound_tex == t[i])
+                fx_gl.bound_tex = 0;
         }
 }
 void glBindTexture(GLenum target, GLuint t)
 {
     REC(OP_BINDTEX, (double)target, (double)t);
     if (target != GL_TEXTURE_2D) {
-        fxg_unimplemented("glBindTexture (other than GL_TEXTURE_2D)", GL_INVALID_ENUM);
+        fx_glut_unimplemented("glBindTexture (other than GL_TEXTURE_2D)", GL_INVALID_ENUM);
         return;
     }
     if (t >= FXG_MAX_TEX) {
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
-    if (t && !fxg.tex[t].used) {
-        fxg.tex[t].used = 1;
-        fxg.tex[t].min_filter = GL_NEAREST_MIPMAP_LINEAR;
-        fxg.tex[t].mag_filter = GL_LINEAR;
-        fxg.tex[t].wrap_s = fxg.tex[t].wrap_t = GL_REPEAT;
+    if (t && !fx_gl.tex[t].used) {
+        fx_gl.tex[t].used = 1;
+        fx_gl.tex[t].min_filter = GL_NEAREST_MIPMAP_LINEAR;
+        fx_gl.tex[t].mag_filter = GL_LINEAR;
+        fx_gl.tex[t].wrap_s = fx_gl.tex[t].wrap_t = GL_REPEAT;
     }
-    fxg.bound_tex = t;
+    fx_gl.bound_tex = t;
 }
-GLboolean glIsTexture(GLuint t) { return t && t < FXG_MAX_TEX && fxg.tex[t].used; }
-static void tex_params(fxg_tex *tx)
+GLboolean glIsTexture(GLuint t) { return t && t < FXG_MAX_TEX && fx_gl.tex[t].used; }
+static void tex_params(fx_glut_tex *tx)
 {
     tx->t.linear = tx->mag_filter == GL_LINEAR;
     tx->t.clamp_s = tx->wrap_s != GL_REPEAT;
@@ -1928,30 +1928,30 @@ void glTexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei w, G
     if (target != GL_TEXTURE_2D || level > 0) {
         if (level > 0)
             return; /* mipmap levels: only level 0 is used */
-        fxg_unimplemented("glTexImage2D (this target)", GL_INVALID_ENUM);
+        fx_glut_unimplemented("glTexImage2D (this target)", GL_INVALID_ENUM);
         return;
     }
     int nc = comps(format);
     if (!nc || type != GL_UNSIGNED_BYTE) {
-        fxg_unimplemented("glTexImage2D (format/type other than bytes)", GL_INVALID_ENUM);
+        fx_glut_unimplemented("glTexImage2D (format/type other than bytes)", GL_INVALID_ENUM);
         return;
     }
     if (w <= 0 || h <= 0 || w > 4096 || h > 4096) {
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
-    fxg_tex *tx = &fxg.tex[fxg.bound_tex];
-    if (!fxg.tex[fxg.bound_tex].used) {
+    fx_glut_tex *tx = &fx_gl.tex[fx_gl.bound_tex];
+    if (!fx_gl.tex[fx_gl.bound_tex].used) {
         tx->used = 1;
         tx->min_filter = GL_NEAREST_MIPMAP_LINEAR, tx->mag_filter = GL_LINEAR;
         tx->wrap_s = tx->wrap_t = GL_REPEAT;
     }
     uint8_t *mem = malloc((size_t)w * h * 4);
     if (!mem) {
-        fxg_set_error(GL_OUT_OF_MEMORY);
+        fx_glut_set_error(GL_OUT_OF_MEMORY);
         return;
     }
-    size_t rowb = (size_t)w * nc, al = (size_t)fxg.unpack_align;
+    size_t rowb = (size_t)w * nc, al = (size_t)fx_gl.unpack_align;
     rowb = (rowb + al - 1) / al * al;
     for (GLsizei r = 0; r < h; r++)
         for (GLsizei c = 0; c < w; c++) {
@@ -1981,10 +1981,10 @@ void glTexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei w, G
 void glTexParameteri(GLenum target, GLenum pname, GLint param)
 {
     if (target != GL_TEXTURE_2D) {
-        fxg_set_error(GL_INVALID_ENUM);
+        fx_glut_set_error(GL_INVALID_ENUM);
         return;
     }
-    fxg_tex *tx = &fxg.tex[fxg.bound_tex];
+    fx_glut_tex *tx = &fx_gl.tex[fx_gl.bound_tex];
     switch (pname) {
     case GL_TEXTURE_MIN_FILTER: tx->min_filter = (GLenum)param; break;
     case GL_TEXTURE_MAG_FILTER: tx->mag_filter = (GLenum)param; break;
@@ -1994,93 +1994,93 @@ void glTexParameteri(GLenum target, GLenum pname, GLint param)
     }
     tex_params(tx);
 }
-void glTexParameterf(GLenum target, GLenum pname, GLfloat param) { glTexParameteri(target, pname, fxg_d2i(param)); }
+void glTexParameterf(GLenum target, GLenum pname, GLfloat param) { glTexParameteri(target, pname, fx_glut_d2i(param)); }
 void glTexParameteriv(GLenum target, GLenum pname, const GLint *p) { glTexParameteri(target, pname, p[0]); }
 void glTexParameterfv(GLenum target, GLenum pname, const GLfloat *p)
 {
     if (pname != GL_TEXTURE_BORDER_COLOR)
-        glTexParameteri(target, pname, fxg_d2i(p[0]));
+        glTexParameteri(target, pname, fx_glut_d2i(p[0]));
 }
 void glTexEnvi(GLenum target, GLenum pname, GLint param)
 {
     if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE)
-        fxg.tex_env = (GLenum)param;
+        fx_gl.tex_env = (GLenum)param;
 }
-void glTexEnvf(GLenum target, GLenum pname, GLfloat param) { glTexEnvi(target, pname, fxg_d2i(param)); }
+void glTexEnvf(GLenum target, GLenum pname, GLfloat param) { glTexEnvi(target, pname, fx_glut_d2i(param)); }
 void glTexEnviv(GLenum target, GLenum pname, const GLint *p) { glTexEnvi(target, pname, p[0]); }
 void glTexEnvfv(GLenum target, GLenum pname, const GLfloat *p)
 {
     if (pname == GL_TEXTURE_ENV_COLOR)
         for (int k = 0; k < 4; k++)
-            fxg.tgt.tex_env_color[k] = fxg_d2c(p[k]);
+            fx_gl.tgt.tex_env_color[k] = fx_glut_d2c(p[k]);
     else
-        glTexEnvi(target, pname, fxg_d2i(p[0]));
+        glTexEnvi(target, pname, fx_glut_d2i(p[0]));
 }
 
 /* ---- display lists ---- */
 GLuint glGenLists(GLsizei range)
 {
     if (range <= 0) {
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
         return 0;
     }
     for (GLuint s = 1; s + (GLuint)range <= FXG_MAX_LISTS; s++) {
         GLsizei k = 0;
-        while (k < range && !fxg.lists[s + k].used)
+        while (k < range && !fx_gl.lists[s + k].used)
             k++;
         if (k == range) {
             for (k = 0; k < range; k++)
-                fxg.lists[s + k].used = 1;
+                fx_gl.lists[s + k].used = 1;
             return s;
         }
         s += (GLuint)k;
     }
-    fxg_set_error(GL_OUT_OF_MEMORY);
+    fx_glut_set_error(GL_OUT_OF_MEMORY);
     return 0;
 }
 void glNewList(GLuint list, GLenum mode)
 {
     if (list == 0 || list >= FXG_MAX_LISTS) {
-        fxg_set_error(GL_INVALID_VALUE);
+        fx_glut_set_error(GL_INVALID_VALUE);
         return;
     }
-    if (fxg.cur_list) {
-        fxg_set_error(GL_INVALID_OPERATION);
+    if (fx_gl.cur_list) {
+        fx_glut_set_error(GL_INVALID_OPERATION);
         return;
     }
-    fxg_list *l = &fxg.lists[list];
+    fx_glut_list *l = &fx_gl.lists[list];
     l->used = 1;
     l->nrec = l->npool = 0;
-    fxg.cur_list = list;
-    fxg.list_exec = mode == GL_COMPILE_AND_EXECUTE;
+    fx_gl.cur_list = list;
+    fx_gl.list_exec = mode == GL_COMPILE_AND_EXECUTE;
 }
 void glEndList(void)
 {
-    if (!fxg.cur_list) {
-        fxg_set_error(GL_INVALID_OPERATION);
+    if (!fx_gl.cur_list) {
+        fx_glut_set_error(GL_INVALID_OPERATION);
         return;
     }
-    fxg.cur_list = 0;
+    fx_gl.cur_list = 0;
 }
-GLboolean glIsList(GLuint list) { return list && list < FXG_MAX_LISTS && fxg.lists[list].used; }
+GLboolean glIsList(GLuint list) { return list && list < FXG_MAX_LISTS && fx_gl.lists[list].used; }
 void glDeleteLists(GLuint list, GLsizei range)
 {
     for (GLsizei i = 0; i < range; i++) {
         GLuint k = list + (GLuint)i;
         if (k && k < FXG_MAX_LISTS) {
-            free(fxg.lists[k].rec);
-            free(fxg.lists[k].pool);
-            memset(&fxg.lists[k], 0, sizeof fxg.lists[k]);
+            free(fx_gl.lists[k].rec);
+            free(fx_gl.lists[k].pool);
+            memset(&fx_gl.lists[k], 0, sizeof fx_gl.lists[k]);
         }
     }
 }
-void glListBase(GLuint base) { fxg.list_base = base; }
+void glListBase(GLuint base) { fx_gl.list_base = base; }
 
 static void replay(GLuint id, int depth)
 {
     if (!id || id >= FXG_MAX_LISTS || depth > 64)
         return;
-    fxg_list *l = &fxg.lists[id];
+    fx_glut_list *l = &fx_gl.lists[id];
     for (int i = 0; i < l->nrec; i++) {
         const double *a = l->pool + l->rec[i].off;
         switch (l->rec[i].op) {
@@ -2130,10 +2130,10 @@ static void replay(GLuint id, int depth)
 void glCallList(GLuint list)
 {
     REC(OP_CALLLIST, (double)list);
-    int was = fxg.replaying;
-    fxg.replaying = 1;
+    int was = fx_gl.replaying;
+    fx_gl.replaying = 1;
     replay(list, 0);
-    fxg.replaying = was;
+    fx_gl.replaying = was;
 }
 void glCallLists(GLsizei n, GLenum type, const GLvoid *lists)
 {
@@ -2147,9 +2147,9 @@ void glCallLists(GLsizei n, GLenum type, const GLvoid *lists)
         case GL_INT: id = (GLuint)((const GLint *)lists)[i]; break;
         case GL_UNSIGNED_INT: id = ((const GLuint *)lists)[i]; break;
         case GL_FLOAT: id = (GLuint)((const GLfloat *)lists)[i]; break;
-        default: fxg_set_error(GL_INVALID_ENUM); return;
+        default: fx_glut_set_error(GL_INVALID_ENUM); return;
         }
-        glCallList(fxg.list_base + id);
+        glCallList(fx_gl.list_base + id);
     }
 }
 
@@ -2158,63 +2158,63 @@ static int get_values(GLenum pname, double *v)
 {
     const fx_glm *m = NULL;
     switch (pname) {
-    case GL_MODELVIEW_MATRIX: m = &fxg.mv[fxg.mv_top]; break;
-    case GL_PROJECTION_MATRIX: m = &fxg.proj[fxg.proj_top]; break;
-    case GL_TEXTURE_MATRIX: m = &fxg.texm[fxg.tex_top]; break;
+    case GL_MODELVIEW_MATRIX: m = &fx_gl.mv[fx_gl.mv_top]; break;
+    case GL_PROJECTION_MATRIX: m = &fx_gl.proj[fx_gl.proj_top]; break;
+    case GL_TEXTURE_MATRIX: m = &fx_gl.texm[fx_gl.tex_top]; break;
     default: break;
     }
     if (m) {
         for (int i = 0; i < 16; i++)
-            v[i] = fxg_x2d(m->m[i]);
+            v[i] = fx_glut_x2d(m->m[i]);
         return 16;
     }
     switch (pname) {
-    case GL_VIEWPORT: for (int i = 0; i < 4; i++) v[i] = fxg.vp[i]; return 4;
-    case GL_SCISSOR_BOX: for (int i = 0; i < 4; i++) v[i] = fxg.scissor[i]; return 4;
-    case GL_CURRENT_COLOR: for (int i = 0; i < 4; i++) v[i] = fxg.color[i] / 65536.0; return 4;
-    case GL_COLOR_CLEAR_VALUE: for (int i = 0; i < 4; i++) v[i] = fxg.clear_color[i] / 65536.0; return 4;
-    case GL_CURRENT_NORMAL: for (int i = 0; i < 3; i++) v[i] = fxg_x2d(fxg.normal[i]); return 3;
-    case GL_CURRENT_RASTER_POSITION: v[0] = fxg.rx / 256.0, v[1] = fxg.ry / 256.0, v[2] = 0, v[3] = 1; return 4;
-    case GL_CURRENT_RASTER_POSITION_VALID: v[0] = fxg.raster_valid; return 1;
-    case GL_MATRIX_MODE: v[0] = fxg.matrix_mode; return 1;
-    case GL_MODELVIEW_STACK_DEPTH: v[0] = fxg.mv_top + 1; return 1;
-    case GL_PROJECTION_STACK_DEPTH: v[0] = fxg.proj_top + 1; return 1;
+    case GL_VIEWPORT: for (int i = 0; i < 4; i++) v[i] = fx_gl.vp[i]; return 4;
+    case GL_SCISSOR_BOX: for (int i = 0; i < 4; i++) v[i] = fx_gl.scissor[i]; return 4;
+    case GL_CURRENT_COLOR: for (int i = 0; i < 4; i++) v[i] = fx_gl.color[i] / 65536.0; return 4;
+    case GL_COLOR_CLEAR_VALUE: for (int i = 0; i < 4; i++) v[i] = fx_gl.clear_color[i] / 65536.0; return 4;
+    case GL_CURRENT_NORMAL: for (int i = 0; i < 3; i++) v[i] = fx_glut_x2d(fx_gl.normal[i]); return 3;
+    case GL_CURRENT_RASTER_POSITION: v[0] = fx_gl.rx / 256.0, v[1] = fx_gl.ry / 256.0, v[2] = 0, v[3] = 1; return 4;
+    case GL_CURRENT_RASTER_POSITION_VALID: v[0] = fx_gl.raster_valid; return 1;
+    case GL_MATRIX_MODE: v[0] = fx_gl.matrix_mode; return 1;
+    case GL_MODELVIEW_STACK_DEPTH: v[0] = fx_gl.mv_top + 1; return 1;
+    case GL_PROJECTION_STACK_DEPTH: v[0] = fx_gl.proj_top + 1; return 1;
     case GL_MAX_MODELVIEW_STACK_DEPTH: v[0] = FXG_STACK; return 1;
     case GL_MAX_PROJECTION_STACK_DEPTH: v[0] = FXG_PROJ_STACK; return 1;
     case GL_MAX_LIGHTS: v[0] = FX_GL_MAX_LIGHTS; return 1;
     case GL_MAX_TEXTURE_SIZE: v[0] = 4096; return 1;
     case GL_MAX_VIEWPORT_DIMS: v[0] = v[1] = FXG_MAX_VIEWPORT; return 2;
-    case GL_POINT_SIZE: v[0] = fxg.point_size; return 1;
-    case GL_LINE_WIDTH: v[0] = fxg.line_width; return 1;
+    case GL_POINT_SIZE: v[0] = fx_gl.point_size; return 1;
+    case GL_LINE_WIDTH: v[0] = fx_gl.line_width; return 1;
     case GL_POINT_SIZE_RANGE: case GL_LINE_WIDTH_RANGE: v[0] = 1, v[1] = 256; return 2;
-    case GL_SHADE_MODEL: v[0] = fxg.shade; return 1;
-    case GL_DEPTH_FUNC: v[0] = fxg.depth_func; return 1;
-    case GL_DEPTH_WRITEMASK: v[0] = fxg.depth_mask; return 1;
-    case GL_DEPTH_CLEAR_VALUE: v[0] = fxg.clear_depth / 16777215.0; return 1;
-    case GL_CULL_FACE_MODE: v[0] = fxg.cull_face; return 1;
-    case GL_FRONT_FACE: v[0] = fxg.front_face; return 1;
-    case GL_BLEND_SRC: v[0] = fxg.bsrc; return 1;
-    case GL_BLEND_DST: v[0] = fxg.bdst; return 1;
-    case GL_LINE_STIPPLE_PATTERN: v[0] = fxg.stipple_pattern; return 1;
-    case GL_LINE_STIPPLE_REPEAT: v[0] = fxg.stipple_factor; return 1;
+    case GL_SHADE_MODEL: v[0] = fx_gl.shade; return 1;
+    case GL_DEPTH_FUNC: v[0] = fx_gl.depth_func; return 1;
+    case GL_DEPTH_WRITEMASK: v[0] = fx_gl.depth_mask; return 1;
+    case GL_DEPTH_CLEAR_VALUE: v[0] = fx_gl.clear_depth / 16777215.0; return 1;
+    case GL_CULL_FACE_MODE: v[0] = fx_gl.cull_face; return 1;
+    case GL_FRONT_FACE: v[0] = fx_gl.front_face; return 1;
+    case GL_BLEND_SRC: v[0] = fx_gl.bsrc; return 1;
+    case GL_BLEND_DST: v[0] = fx_gl.bdst; return 1;
+    case GL_LINE_STIPPLE_PATTERN: v[0] = fx_gl.stipple_pattern; return 1;
+    case GL_LINE_STIPPLE_REPEAT: v[0] = fx_gl.stipple_factor; return 1;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: v[0] = 8; return 1;
     case GL_ALPHA_BITS: case GL_STENCIL_BITS: v[0] = 0; return 1;
     case GL_DEPTH_BITS: v[0] = 24; return 1;
     case GL_SUBPIXEL_BITS: v[0] = 8; return 1;
     case GL_DOUBLEBUFFER: v[0] = glutGet(GLUT_WINDOW_DOUBLEBUFFER); return 1;
     case GL_RGBA_MODE: v[0] = 1; return 1;
-    case GL_TEXTURE_BINDING_2D: v[0] = fxg.bound_tex; return 1;
-    case GL_LIST_BASE: v[0] = fxg.list_base; return 1;
-    case GL_LIST_INDEX: v[0] = fxg.cur_list; return 1;
-    case GL_UNPACK_ALIGNMENT: v[0] = fxg.unpack_align; return 1;
-    case GL_PACK_ALIGNMENT: v[0] = fxg.pack_align; return 1;
-    case GL_LIGHT_MODEL_AMBIENT: for (int i = 0; i < 4; i++) v[i] = fxg.L.model_ambient[i] / 65536.0; return 4;
-    case GL_LIGHT_MODEL_TWO_SIDE: v[0] = fxg.L.two_side; return 1;
-    case GL_LIGHT_MODEL_LOCAL_VIEWER: v[0] = fxg.L.local_viewer; return 1;
-    case GL_LIGHT_MODEL_COLOR_CONTROL: v[0] = fxg.separate_specular ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR; return 1;
-    case GL_COLOR_MATERIAL_FACE: v[0] = fxg.cm_face; return 1;
-    case GL_COLOR_MATERIAL_PARAMETER: v[0] = fxg.cm_mode; return 1;
-    case GL_COLOR_WRITEMASK: for (int i = 0; i < 4; i++) v[i] = (fxg.color_mask >> i) & 1; return 4;
+    case GL_TEXTURE_BINDING_2D: v[0] = fx_gl.bound_tex; return 1;
+    case GL_LIST_BASE: v[0] = fx_gl.list_base; return 1;
+    case GL_LIST_INDEX: v[0] = fx_gl.cur_list; return 1;
+    case GL_UNPACK_ALIGNMENT: v[0] = fx_gl.unpack_align; return 1;
+    case GL_PACK_ALIGNMENT: v[0] = fx_gl.pack_align; return 1;
+    case GL_LIGHT_MODEL_AMBIENT: for (int i = 0; i < 4; i++) v[i] = fx_gl.L.model_ambient[i] / 65536.0; return 4;
+    case GL_LIGHT_MODEL_TWO_SIDE: v[0] = fx_gl.L.two_side; return 1;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: v[0] = fx_gl.L.local_viewer; return 1;
+    case GL_LIGHT_MODEL_COLOR_CONTROL: v[0] = fx_gl.separate_specular ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR; return 1;
+    case GL_COLOR_MATERIAL_FACE: v[0] = fx_gl.cm_face; return 1;
+    case GL_COLOR_MATERIAL_PARAMETER: v[0] = fx_gl.cm_mode; return 1;
+    case GL_COLOR_WRITEMASK: for (int i = 0; i < 4; i++) v[i] = (fx_gl.color_mask >> i) & 1; return 4;
     case GL_DEPTH_RANGE: v[0] = 0, v[1] = 1; return 2;
     default: break;
     }
@@ -2222,7 +2222,7 @@ static int get_values(GLenum pname, double *v)
         v[0] = glIsEnabled(pname);
         return 1;
     }
-    fxg_set_error(GL_INVALID_ENUM);
+    fx_glut_set_error(GL_INVALID_ENUM);
     return 0;
 }
 void glGetDoublev(GLenum pname, GLdouble *p)
@@ -2246,7 +2246,7 @@ void glGetIntegerv(GLenum pname, GLint *p)
     int colorish = pname == GL_CURRENT_COLOR || pname == GL_COLOR_CLEAR_VALUE ||
                    pname == GL_LIGHT_MODEL_AMBIENT;
     for (int i = 0; i < n; i++)
-        p[i] = colorish ? fxg_d2i(v[i] * 2147483647.0) : fxg_d2i(v[i]);
+        p[i] = colorish ? fx_glut_d2i(v[i] * 2147483647.0) : fx_glut_d2i(v[i]);
 }
 void glGetBooleanv(GLenum pname, GLboolean *p)
 {
@@ -2262,7 +2262,7 @@ const GLubyte *glGetString(GLenum name)
     case GL_RENDERER: return (const GLubyte *)"fixel integer rasterizer (llvmpipe rules)";
     case GL_VERSION: return (const GLubyte *)"1.1 fixel";
     case GL_EXTENSIONS: return (const GLubyte *)"";
-    default: fxg_set_error(GL_INVALID_ENUM); return NULL;
+    default: fx_glut_set_error(GL_INVALID_ENUM); return NULL;
     }
 }
 
@@ -2272,5 +2272,5 @@ void glReadBuffer(GLenum mode) { (void)mode; }
 void glPolygonOffset(GLfloat factor, GLfloat units)
 {
     (void)factor, (void)units;
-    fxg_unimplemented("glPolygonOffset", GL_INVALID_OPERATION);
+    fx_glut_unimplemented("glPolygonOffset", GL_INVALID_OPERATION);
 }

@@ -9,7 +9,7 @@
  * no fx_app: the loop runs the callbacks itself on a virtual clock, takes
  * input from FIXEL_GLUT_REPLAY (replay.c; the format is tests/glut/README.md's)
  * and FIXEL_GLUT_FRAMES / FIXEL_GLUT_OUT end it and write the frame.
- * The environment is read in one place, fxg_env_read (env.c, at glutInit). */
+ * The environment is read in one place, fx_glut_env_read (env.c, at glutInit). */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE
 #endif
@@ -53,7 +53,7 @@ static struct {
     int inited, created;
     unsigned mode;
     int init_x, init_y, init_w, init_h;
-    fxg_env env; /* read once at glutInit (env.c) */
+    fx_glut_env env; /* read once at glutInit (env.c) */
     uint64_t bench_t1; /* FIXEL_GLUT_BENCH: wall clock at the end of frame 1 */
     /* runtime */
     fx_app *app;
@@ -100,7 +100,7 @@ static struct {
     int open_x[4], open_y[4], sel[4];
     int menu_button;
     /* replay */
-    fxg_replay rp;
+    fx_glut_replay rp;
     fx_input in;
     fx_input_dev kbd, mouse_dev;
     int32_t px, py; /* last pointer, window coords */
@@ -110,7 +110,7 @@ static struct {
     .init_x = -1, .init_y = -1, .init_w = 300, .init_h = 300,
 };
 
-void fxg_log(const char *fmt, ...)
+void fx_glut_log(const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
@@ -137,11 +137,11 @@ void glutInit(int *pargc, char **argv)
     if (G.inited)
         return;
     G.inited = 1;
-    fxg_env_read(&G.env);
+    fx_glut_env_read(&G.env);
     if (G.env.out)
         out_check(G.env.out); /* a FIFO or directory fails now, not at the last frame */
     if (G.env.replay)
-        fxg_replay_load(&G.rp, G.env.replay); /* a bad line exits 5 now */
+        fx_glut_replay_load(&G.rp, G.env.replay); /* a bad line exits 5 now */
     G.t0_us = now_us();
 }
 void glutInitWindowPosition(int x, int y) { G.init_x = x, G.init_y = y; }
@@ -217,7 +217,7 @@ int glutCreateWindow(const char *title)
     if (!G.inited)
         glutInit(NULL, NULL);
     if (G.created) {
-        fxg_unimplemented("glutCreateWindow (a second window)", GL_INVALID_OPERATION);
+        fx_glut_unimplemented("glutCreateWindow (a second window)", GL_INVALID_OPERATION);
         return 1;
     }
     snprintf(G.title, sizeof G.title, "%s", title ? title : "");
@@ -236,7 +236,7 @@ int glutCreateWindow(const char *title)
             if (o.display.backend != FX_BACKEND_AUTO) {
                 /* a display asked for by name that cannot open is an error,
                  * not a silent headless run (issue #20) */
-                fxg_log("cannot open the display asked for (reason above)");
+                fx_glut_log("cannot open the display asked for (reason above)");
                 exit(1);
             }
             G.headless = 1;
@@ -262,9 +262,9 @@ int glutCreateWindow(const char *title)
         /* a window after glutDestroyWindow: a new GL context and buffers,
          * and none of the old window's callbacks or attached menus (idle,
          * timers and menus themselves are global in freeglut) */
-        fx_memfb_destroy(&fxg.fb);
-        free(fxg.depth);
-        fxg.depth = NULL;
+        fx_memfb_destroy(&fx_gl.fb);
+        free(fx_gl.depth);
+        fx_gl.depth = NULL;
         G.display = NULL, G.reshape = NULL, G.keyboard = NULL, G.keyboard_up = NULL;
         G.special = NULL, G.special_up = NULL, G.mouse = NULL, G.motion = NULL;
         G.passive = NULL, G.wheel = NULL, G.visibility = NULL, G.close = NULL, G.entry = NULL;
@@ -273,18 +273,18 @@ int glutCreateWindow(const char *title)
     if (G.headless && !G.env.out)
         /* a run with no display and no output file otherwise ends in silence
          * with status 0, looking as if it worked (issue #39) */
-        fxg_log("%s: the %dx%d window runs headless and nothing is shown or written; "
+        fx_glut_log("%s: the %dx%d window runs headless and nothing is shown or written; "
                 "FIXEL_GLUT_OUT=FILE.png writes a frame (FIXEL_GLUT_FRAMES=N: the N-th, then exit)",
                 G.env.headless ? "FIXEL_BACKEND=memory" : "no display", G.init_w, G.init_h);
-    if (fxg_gl_init(G.init_w, G.init_h) < 0) {
-        fxg_log("out of memory for a %dx%d window", G.init_w, G.init_h);
+    if (fx_glut_gl_init(G.init_w, G.init_h) < 0) {
+        fx_glut_log("out of memory for a %dx%d window", G.init_w, G.init_h);
         exit(1);
     }
     fx_input_init(&G.in, G.init_w, G.init_h, 0);
     fx_input_dev_init(&G.kbd, FX_DEV_KEYBOARD);
     fx_input_dev_init(&G.mouse_dev, FX_DEV_MOUSE);
     if (G.rp.n && !G.headless)
-        fxg_log("FIXEL_GLUT_REPLAY drives headless runs only; ignored on a display");
+        fx_glut_log("FIXEL_GLUT_REPLAY drives headless runs only; ignored on a display");
     if (G.app)
         install_app_callbacks();
     G.created = 1;
@@ -310,7 +310,7 @@ int fx_glut_offscreen_window(int w, int h)
 int glutCreateSubWindow(int win, int x, int y, int w, int h)
 {
     (void)win, (void)x, (void)y, (void)w, (void)h;
-    fxg_unimplemented("glutCreateSubWindow", GL_INVALID_OPERATION);
+    fx_glut_unimplemented("glutCreateSubWindow", GL_INVALID_OPERATION);
     return 0;
 }
 /* freeglut calls a destroyed window's close callback later, where it
@@ -333,7 +333,7 @@ static void run_pending_close(void)
 void glutDestroyWindow(int win)
 {
     if (!G.created || win != 1) {
-        fxg_log("glutDestroyWindow(%d): no such window", win);
+        fx_glut_log("glutDestroyWindow(%d): no such window", win);
         return;
     }
     G.created = 0;
@@ -358,7 +358,7 @@ void glutSetWindowTitle(const char *t) { snprintf(G.title, sizeof G.title, "%s",
 void glutSetIconTitle(const char *t) { (void)t; }
 static void resize_to(int32_t w, int32_t h)
 {
-    fxg_gl_resize(w, h);
+    fx_glut_gl_resize(w, h);
     if (G.reshape)
         G.reshape(w, h);
     else
@@ -439,7 +439,7 @@ void glutTimerFunc(unsigned int ms, void (*f)(int), int value)
                 fx_app_timer(G.app, ms, timer_bridge, i);
             return;
         }
-    fxg_log("glutTimerFunc: more than %d timers pending; dropped", MAX_TIMERS);
+    fx_glut_log("glutTimerFunc: more than %d timers pending; dropped", MAX_TIMERS);
 }
 
 int glutGetModifiers(void) { return (int)(G.mods & 7u); }
@@ -449,8 +449,8 @@ int glutGet(GLenum q)
     switch (q) {
     case GLUT_WINDOW_X: return G.win_x;
     case GLUT_WINDOW_Y: return G.win_y;
-    case GLUT_WINDOW_WIDTH: return fxg.w;
-    case GLUT_WINDOW_HEIGHT: return fxg.h;
+    case GLUT_WINDOW_WIDTH: return fx_gl.w;
+    case GLUT_WINDOW_HEIGHT: return fx_gl.h;
     case GLUT_SCREEN_WIDTH: return G.created ? G.scr_w : 0;
     case GLUT_SCREEN_HEIGHT: return G.created ? G.scr_h : 0;
     case GLUT_WINDOW_DOUBLEBUFFER: return (G.mode & GLUT_DOUBLE) != 0;
@@ -466,7 +466,7 @@ int glutGet(GLenum q)
     case GLUT_INIT_DISPLAY_MODE: return (int)G.mode;
     case GLUT_DISPLAY_MODE_POSSIBLE: return 1;
     case GLUT_INIT_STATE: return G.inited;
-    case GLUT_FULL_SCREEN: return G.created && fxg.w == G.scr_w && fxg.h == G.scr_h;
+    case GLUT_FULL_SCREEN: return G.created && fx_gl.w == G.scr_w && fx_gl.h == G.scr_h;
     case GLUT_MENU_NUM_ITEMS: return G.cur_menu ? G.menus[G.cur_menu].n : 0;
     case GLUT_WINDOW_BORDER_WIDTH: case GLUT_WINDOW_HEADER_HEIGHT: return 0;
     case GLUT_VERSION: return 30400;
@@ -503,7 +503,7 @@ void glutReportErrors(void)
 {
     GLenum e;
     while ((e = glGetError()) != GL_NO_ERROR)
-        fxg_log("GL error 0x%04x", e);
+        fx_glut_log("GL error 0x%04x", e);
 }
 
 /* ---- menus ---- */
@@ -605,10 +605,10 @@ static void open_menu(int id, int x, int y)
     int l = G.open_depth++;
     G.open_menu[l] = id;
     int w = menu_width(id), h = G.menus[id].n * MENU_ITEM_H + 4;
-    if (x + w > fxg.w)
-        x = fxg.w - w;
-    if (y + h > fxg.h)
-        y = fxg.h - h;
+    if (x + w > fx_gl.w)
+        x = fx_gl.w - w;
+    if (y + h > fx_gl.h)
+        y = fx_gl.h - h;
     G.open_x[l] = x < 0 ? 0 : x, G.open_y[l] = y < 0 ? 0 : y;
     G.sel[l] = -1;
     if (l == 0 && G.menu_state)
@@ -690,9 +690,9 @@ static void present(void)
     if (G.headless)
         return; /* nothing to show: FIXEL_GLUT_OUT writes the window's pixels */
     fx_surface s = fx_app_surface(G.app);
-    fx_rect r = {G.win_x, G.win_y, G.win_x + fxg.w, G.win_y + fxg.h};
+    fx_rect r = {G.win_x, G.win_y, G.win_x + fx_gl.w, G.win_y + fx_gl.h};
     fx_surface sub = fx_surface_sub(s, r);
-    fx_blit(&sub, 0, 0, &fxg.fb.surf);
+    fx_blit(&sub, 0, 0, &fx_gl.fb.surf);
     if (G.open_depth)
         draw_menus(&sub);
     fx_app_present(G.app, &r, 1);
@@ -720,14 +720,14 @@ static void write_out(void)
      * menus are not in them (freeglut's are windows of their own); a frame
      * that was asked for and not written fails the run */
     errno = 0;
-    if (fx_write_image(G.env.out, &fxg.fb.surf) < 0) {
+    if (fx_write_image(G.env.out, &fx_gl.fb.surf) < 0) {
         fprintf(stderr, "fixel-glut: FIXEL_GLUT_OUT=%s: cannot write the frame%s%s\n", G.env.out,
                 errno ? ": " : "", errno ? strerror(errno) : "");
         exit(6);
     }
 }
 
-void fxg_frame_done(int swap)
+void fx_glut_frame_done(int swap)
 {
     if (!G.created)
         return;
@@ -753,7 +753,7 @@ void fxg_frame_done(int swap)
     }
 }
 
-void glutSwapBuffers(void) { fxg_frame_done(1); }
+void glutSwapBuffers(void) { fx_glut_frame_done(1); }
 
 /* ---- input (window coordinates, y down) ---- */
 static void do_key(unsigned char k, int x, int y, int up)
@@ -888,9 +888,9 @@ static void app_reshape(void *u, int w, int h)
 {
     (void)u, (void)w, (void)h;
     if (G.reshape)
-        G.reshape(fxg.w, fxg.h);
+        G.reshape(fx_gl.w, fx_gl.h);
     else
-        glViewport(0, 0, fxg.w, fxg.h);
+        glViewport(0, 0, fx_gl.w, fx_gl.h);
     if (G.visibility)
         G.visibility(GLUT_VISIBLE);
 }
@@ -1001,11 +1001,11 @@ static void replay_emit(void *u, const fx_event *e)
 }
 /* menu BUTTON PATH: the callback of the menu holding the last entry, with
  * that menu current; nothing is opened or drawn. */
-static void replay_menu(const fxg_replay_event *e)
+static void replay_menu(const fx_glut_replay_event *e)
 {
     int id = G.attached[e->a];
     if (!id || !G.menus[id].used)
-        fxg_replay_fail(&G.rp, e, "no menu attached to that button");
+        fx_glut_replay_fail(&G.rp, e, "no menu attached to that button");
     char path[sizeof e->path];
     snprintf(path, sizeof path, "%s", e->path);
     char *save = NULL;
@@ -1016,15 +1016,15 @@ static void replay_menu(const fxg_replay_event *e)
             if (!strcmp(m->items[i].label, lab))
                 hit = &m->items[i];
         if (!hit)
-            fxg_replay_fail(&G.rp, e, "no such menu entry");
+            fx_glut_replay_fail(&G.rp, e, "no such menu entry");
         if (hit->submenu) {
             id = hit->submenu;
             if (id <= 0 || id >= MAX_MENUS || !G.menus[id].used)
-                fxg_replay_fail(&G.rp, e, "submenu vanished");
+                fx_glut_replay_fail(&G.rp, e, "submenu vanished");
             continue;
         }
         if (save && *save)
-            fxg_replay_fail(&G.rp, e, "entry is not a submenu");
+            fx_glut_replay_fail(&G.rp, e, "entry is not a submenu");
         int saved = G.cur_menu;
         G.cur_menu = id;
         if (m->cb)
@@ -1032,9 +1032,9 @@ static void replay_menu(const fxg_replay_event *e)
         G.cur_menu = saved;
         return;
     }
-    fxg_replay_fail(&G.rp, e, "menu path ends at a submenu");
+    fx_glut_replay_fail(&G.rp, e, "menu path ends at a submenu");
 }
-static void replay_deliver(const fxg_replay_event *e)
+static void replay_deliver(const fx_glut_replay_event *e)
 {
     if (e->has_xy)
         G.px = e->x, G.py = e->y;
@@ -1103,10 +1103,10 @@ static uint64_t wall_us(void)
 __attribute__((noreturn)) static void stalled(void)
 {
     if (G.rp.next < G.rp.n)
-        fxg_log("stalled at frame %ld of %ld (next replay event at frame %ld)", G.frames,
+        fx_glut_log("stalled at frame %ld of %ld (next replay event at frame %ld)", G.frames,
                 G.env.frames, G.rp.ev[G.rp.next].frame);
     else
-        fxg_log("stalled at frame %ld of %ld (no replay event left)", G.frames, G.env.frames);
+        fx_glut_log("stalled at frame %ld of %ld (no replay event left)", G.frames, G.env.frames);
     exit(3);
 }
 
@@ -1121,7 +1121,7 @@ static int headless_iteration(int with_idle)
         if (G.display)
             G.display();
         else
-            fxg_log("no display callback registered");
+            fx_glut_log("no display callback registered");
         did = 1;
     }
     if (!G.created)
@@ -1142,9 +1142,9 @@ static int headless_iteration(int with_idle)
 static void headless_loop(void)
 {
     if (G.reshape)
-        G.reshape(fxg.w, fxg.h);
+        G.reshape(fx_gl.w, fx_gl.h);
     else
-        glViewport(0, 0, fxg.w, fxg.h);
+        glViewport(0, 0, fx_gl.w, fx_gl.h);
     if (G.visibility)
         G.visibility(GLUT_VISIBLE);
     G.redisplay = 1;
@@ -1214,7 +1214,7 @@ static void install_app_callbacks(void)
 void glutMainLoop(void)
 {
     if (!G.created) {
-        fxg_log("glutMainLoop without a window");
+        fx_glut_log("glutMainLoop without a window");
         exit(1);
     }
     G.leave = 0;

@@ -15,31 +15,31 @@
 #define FXG_MAX_TEX 256
 #define FXG_MAX_LISTS 4096
 
-typedef struct fxg_vert {
+typedef struct fx_glut_vert {
     fx_gl_cvert cv;
-} fxg_vert;
+} fx_glut_vert;
 
-typedef struct fxg_tex {
+typedef struct fx_glut_tex {
     int used;
     fx_gl_texture t;
     uint8_t *mem;
     GLenum min_filter, mag_filter, wrap_s, wrap_t;
-} fxg_tex;
+} fx_glut_tex;
 
-typedef struct fxg_rec {
+typedef struct fx_glut_rec {
     uint16_t op, n;
     uint32_t off; /* into the list's double pool */
-} fxg_rec;
+} fx_glut_rec;
 
-typedef struct fxg_list {
+typedef struct fx_glut_list {
     int used;
-    fxg_rec *rec;
+    fx_glut_rec *rec;
     int nrec, caprec;
     double *pool;
     int npool, cappool;
-} fxg_list;
+} fx_glut_list;
 
-typedef struct fxg_gl {
+typedef struct fx_glut_gl {
     /* the window's back buffer (what GL draws into and reads back) */
     fx_memfb fb;
     uint32_t *depth;
@@ -78,7 +78,7 @@ typedef struct fxg_gl {
     /* immediate mode */
     GLenum prim;
     int in_begin;
-    fxg_vert *vb;
+    fx_glut_vert *vb;
     int nv, capv;
     int strip_started; /* points already drawn from this glBegin (for flushes) */
     /* raster position */
@@ -86,63 +86,63 @@ typedef struct fxg_gl {
     int raster_valid;
     fx16 raster_color[4];
     /* textures */
-    fxg_tex tex[FXG_MAX_TEX];
+    fx_glut_tex tex[FXG_MAX_TEX];
     GLuint bound_tex;
     GLenum tex_env;
     /* pixel store */
     int unpack_align, pack_align;
     float zoom_x, zoom_y;
     /* display lists */
-    fxg_list lists[FXG_MAX_LISTS];
+    fx_glut_list lists[FXG_MAX_LISTS];
     GLuint cur_list;
     int list_exec; /* COMPILE_AND_EXECUTE */
     int replaying;
     GLuint list_base;
     /* logged-once flags for unimplemented calls */
     char logged[512];
-} fxg_gl;
+} fx_glut_gl;
 
-extern fxg_gl fxg;
+extern fx_glut_gl fx_gl;
 
 /* gl.c */
-int fxg_gl_init(int32_t w, int32_t h);
-void fxg_gl_resize(int32_t w, int32_t h);
-void fxg_set_error(GLenum e);
+int fx_glut_gl_init(int32_t w, int32_t h);
+void fx_glut_gl_resize(int32_t w, int32_t h);
+void fx_glut_set_error(GLenum e);
 /* The unimplemented-call path: record err and log the name once. */
-void fxg_unimplemented(const char *name, GLenum err);
+void fx_glut_unimplemented(const char *name, GLenum err);
 /* Mesh drawing for the GLUT solids (shapes.c): positions and normals in
  * Q16.16 as fx_mesh makes them, drawn as GL_TRIANGLES through the pipeline. */
-void fxg_draw_tris_q16(const int32_t *pos, const int32_t *nrm, const uint32_t *tri, int32_t ntris,
+void fx_glut_draw_tris_q16(const int32_t *pos, const int32_t *nrm, const uint32_t *tri, int32_t ntris,
                        int wire);
 /* glutBitmapCharacter's raster drawing (text.c). */
-void fxg_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmove,
+void fx_glut_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmove,
                 const uint8_t *rows_top_first, int32_t row_bytes, int32_t scale);
 
 /* glut.c: called at glFlush / glFinish / glutSwapBuffers */
-void fxg_frame_done(int swap);
-void fxg_log(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+void fx_glut_frame_done(int swap);
+void fx_glut_log(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
 /* The layer's environment (env.c), read once by glutInit. */
-typedef struct fxg_env {
+typedef struct fx_glut_env {
     long frames;        /* FIXEL_GLUT_FRAMES: exit 0 when frame N ends (0: never) */
     const char *out;    /* FIXEL_GLUT_OUT: write that frame here */
     const char *replay; /* FIXEL_GLUT_REPLAY: headless input */
     int fullscreen, headless, bench;
-} fxg_env;
-void fxg_env_read(fxg_env *v);
+} fx_glut_env;
+void fx_glut_env_read(fx_glut_env *v);
 
 /* Float/double to fixed point at the API boundary (round to nearest even,
  * saturating): Q32.32 for geometry, Q16.16 for colours and parameters. */
-fx32 fxg_d2x(double d);
-int32_t fxg_d2i(double d);
-int64_t fxg_d2win(double d);
-fx_rect fxg_scissor_rect(void);
+fx32 fx_glut_d2x(double d);
+int32_t fx_glut_d2i(double d);
+int64_t fx_glut_d2win(double d);
+fx_rect fx_glut_scissor_rect(void);
 /* glViewport's clamps (gl.c): GL_MAX_VIEWPORT_DIMS and the bound on x, y */
 #define FXG_MAX_VIEWPORT 16384
 #define FXG_VIEWPORT_BOUND (1 << 20)
-fx16 fxg_d2c(double d); /* clamped to [0, 1] */
-fx16 fxg_d2q16(double d);
-fx_angle fxg_deg2angle(double deg);
-double fxg_x2d(fx32 v);
+fx16 fx_glut_d2c(double d); /* clamped to [0, 1] */
+fx16 fx_glut_d2q16(double d);
+fx_angle fx_glut_deg2angle(double deg);
+double fx_glut_x2d(fx32 v);
 
 #endif

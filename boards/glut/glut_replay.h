@@ -11,7 +11,7 @@ enum {
     FXG_EV_SPECIALUP, FXG_EV_MENU, FXG_EV_WHEEL, FXG_EV_EVDEV
 };
 
-typedef struct fxg_replay_event {
+typedef struct fx_glut_replay_event {
     long frame;
     int kind;
     int a, b;          /* button / key / wheel direction / evdev device; state / evdev value */
@@ -20,18 +20,18 @@ typedef struct fxg_replay_event {
     uint16_t type, code; /* evdev */
     char path[192];    /* menu labels, '/'-separated */
     int line;
-} fxg_replay_event;
+} fx_glut_replay_event;
 
-typedef struct fxg_replay {
+typedef struct fx_glut_replay {
     const char *path;
-    fxg_replay_event *ev;
+    fx_glut_replay_event *ev;
     int n, next;
-} fxg_replay;
+} fx_glut_replay;
 
 /* Parses the whole file; a line that does not parse exits with status 5. */
-void fxg_replay_load(fxg_replay *r, const char *path);
+void fx_glut_replay_load(fx_glut_replay *r, const char *path);
 /* Exits with status 5, naming e's line. */
-void fxg_replay_fail(const fxg_replay *r, const fxg_replay_event *e, const char *why)
+void fx_glut_replay_fail(const fx_glut_replay *r, const fx_glut_replay_event *e, const char *why)
     __attribute__((noreturn));
 
 #endif

@@ -104,7 +104,7 @@ static int parse_int(const char *t, long lo, long hi, int *ok)
 
 /* Parses one line (comment and newline already cut, not blank) into *e;
  * returns NULL or what is wrong with it. */
-static const char *parse_line(char *s, long last_frame, fxg_replay_event *e)
+static const char *parse_line(char *s, long last_frame, fx_glut_replay_event *e)
 {
     memset(e, 0, sizeof *e);
     int n = 0, ok = 1;
@@ -231,7 +231,7 @@ static const char *parse_line(char *s, long last_frame, fxg_replay_event *e)
     return NULL;
 }
 
-void fxg_replay_load(fxg_replay *r, const char *path)
+void fx_glut_replay_load(fx_glut_replay *r, const char *path)
 {
     memset(r, 0, sizeof *r);
     r->path = path;
@@ -264,7 +264,7 @@ void fxg_replay_load(fxg_replay *r, const char *path)
             s[--len] = 0;
         if (!*s)
             continue;
-        fxg_replay_event e;
+        fx_glut_replay_event e;
         const char *why = parse_line(s, last, &e);
         if (why)
             die(path, line, why);
@@ -272,7 +272,7 @@ void fxg_replay_load(fxg_replay *r, const char *path)
         last = e.frame;
         if (r->n == cap) {
             cap = cap ? cap * 2 : 64;
-            fxg_replay_event *ne = realloc(r->ev, (size_t)cap * sizeof *ne);
+            fx_glut_replay_event *ne = realloc(r->ev, (size_t)cap * sizeof *ne);
             if (!ne)
                 die(path, line, "out of memory");
             r->ev = ne;
@@ -282,7 +282,7 @@ void fxg_replay_load(fxg_replay *r, const char *path)
     fclose(f);
 }
 
-void fxg_replay_fail(const fxg_replay *r, const fxg_replay_event *e, const char *why)
+void fx_glut_replay_fail(const fx_glut_replay *r, const fx_glut_replay_event *e, const char *why)
 {
     die(r->path, e->line, why);
 }

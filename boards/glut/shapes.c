@@ -68,7 +68,7 @@ static void draw(fx_mesh_kind kind, double a, double b, int n, int k, int wire, 
     fx_mesh_params p;
     memset(&p, 0, sizeof p);
     p.kind = kind;
-    p.a = fxg_d2q16(a), p.b = fxg_d2q16(b), p.c = p.a;
+    p.a = fx_glut_d2q16(a), p.b = fx_glut_d2q16(b), p.c = p.a;
     p.n = n, p.k = k;
     const fx_mesh *m = get_mesh(&p);
     if (!m)
@@ -77,7 +77,7 @@ static void draw(fx_mesh_kind kind, double a, double b, int n, int k, int wire, 
         glPushMatrix();
         glRotated(90, 1, 0, 0);
     }
-    fxg_draw_tris_q16(&m->pos[0].x, &m->nrm[0].x, m->tri, m->ntris, wire);
+    fx_glut_draw_tris_q16(&m->pos[0].x, &m->nrm[0].x, m->tri, m->ntris, wire);
     if (y_to_z)
         glPopMatrix();
 }
@@ -140,7 +140,7 @@ static void emit(const vbuf *b, int i)
 static int seg_clamp(int v) { return v > FXG_MAX_SHAPE_SEG ? FXG_MAX_SHAPE_SEG : v; }
 /* A radius or size as a float: doubles past FLT_MAX are +-FLT_MAX (the
  * conversion of an out-of-range double to float is undefined in C), NaN
- * stays NaN (fxg_d2x takes it as 0). */
+ * stays NaN (fx_glut_d2x takes it as 0). */
 static float d2f(double d)
 {
     return d > 3.4e38 ? 3.4e38f : d < -3.4e38 ? -3.4e38f : (float)d;
@@ -462,7 +462,7 @@ static void teapot(double size, int wire)
     fx_mesh_params p;
     memset(&p, 0, sizeof p);
     p.kind = FX_MESH_TEAPOT;
-    p.a = fxg_d2q16(0.5 * size); /* into the vertices: the normals stay unit */
+    p.a = fx_glut_d2q16(0.5 * size); /* into the vertices: the normals stay unit */
     p.n = n;
     const fx_mesh *m = get_mesh(&p);
     if (!m)
@@ -486,7 +486,7 @@ static void teapot(double size, int wire)
                 r[3 * t] = m->tri[3 * t], r[3 * t + 1] = m->tri[3 * t + 2], r[3 * t + 2] = m->tri[3 * t + 1];
             rev = r, rev_n = m->ntris, rev_of = m->tri;
         }
-        fxg_draw_tris_q16(&m->pos[0].x, &m->nrm[0].x, rev, m->ntris, 0);
+        fx_glut_draw_tris_q16(&m->pos[0].x, &m->nrm[0].x, rev, m->ntris, 0);
     } else {
         const int32_t *pos = &m->pos[0].x, *nrm = &m->nrm[0].x;
         int side = n + 1, per = side * side;
@@ -543,19 +543,19 @@ void gluDisk(GLUquadric *q, GLdouble in, GLdouble out, GLint sl, GLint loops)
 {
     (void)loops;
     int n = clampn(sl, 3);
-    GLenum save_f = fxg.poly_front, save_b = fxg.poly_back;
+    GLenum save_f = fx_gl.poly_front, save_b = fx_gl.poly_back;
     if (q && q->draw != GLU_FILL)
-        fxg.poly_front = fxg.poly_back = GL_LINE;
+        fx_gl.poly_front = fx_gl.poly_back = GL_LINE;
     glNormal3d(0, 0, 1);
     glBegin(GL_QUAD_STRIP);
     for (int i = 0; i <= n; i++) {
         fx_angle a = (fx_angle)(uint32_t)(((uint64_t)i << 32) / (uint64_t)n);
-        double c = fxg_x2d(fx32_cos(a)), s = fxg_x2d(fx32_sin(a));
+        double c = fx_glut_x2d(fx32_cos(a)), s = fx_glut_x2d(fx32_sin(a));
         glVertex2d(out * c, out * s);
         glVertex2d(in * c, in * s);
     }
     glEnd();
-    fxg.poly_front = save_f, fxg.poly_back = save_b;
+    fx_gl.poly_front = save_f, fx_gl.poly_back = save_b;
 }
 void gluPartialDisk(GLUquadric *q, GLdouble in, GLdouble out, GLint sl, GLint loops, GLdouble start,
                     GLdouble sweep)

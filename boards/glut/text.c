@@ -269,7 +269,7 @@ static const cellfont *bitmap_font(int i)
         cf->state = -1;
 #endif
         if (cf->state < 0)
-            fxg_log("%s: %s; drawing fixel's built-in 6x10 glyphs instead of freeglut's", XFONTS[i].name,
+            fx_glut_log("%s: %s; drawing fixel's built-in 6x10 glyphs instead of freeglut's", XFONTS[i].name,
                     why);
     }
     return cf->state > 0 ? cf : NULL;
@@ -289,7 +289,7 @@ void glutBitmapCharacter(void *font, int ch)
         return; /* freeglut: a stroke font or a code outside 1..255 draws nothing */
     const cellfont *cf = bitmap_font(i);
     if (cf) {
-        fxg_bitmap(cf->adv[ch], cf->height, XFONTS[i].xorig, XFONTS[i].yorig, cf->adv[ch],
+        fx_glut_bitmap(cf->adv[ch], cf->height, XFONTS[i].xorig, XFONTS[i].yorig, cf->adv[ch],
                    cf->bits + (size_t)ch * (size_t)cf->height * (size_t)cf->row_bytes, cf->row_bytes, 1);
         return;
     }
@@ -297,7 +297,7 @@ void glutBitmapCharacter(void *font, int ch)
     int s = fb_scale(i);
     uint32_t g = fx_font_glyph(f, (uint32_t)ch);
     int adv = fb_advance(i);
-    fxg_bitmap((int32_t)f->width, (int32_t)f->height, -(adv - (int)f->width * s) / 2, 2 * s, adv,
+    fx_glut_bitmap((int32_t)f->width, (int32_t)f->height, -(adv - (int)f->width * s) / 2, 2 * s, adv,
                fx_font_row(f, g, 0), (int32_t)f->row_bytes, s);
 }
 /* As freeglut: a newline goes back by what this call drew and down one
@@ -311,9 +311,9 @@ void glutBitmapString(void *font, const unsigned char *s)
     int64_t x = 0;
     for (; s && *s; s++) {
         if (*s == '\n') {
-            if (fxg.raster_valid) {
-                fxg.rx -= x * 256;
-                fxg.ry -= (int64_t)glutBitmapHeight(font) * 256;
+            if (fx_gl.raster_valid) {
+                fx_gl.rx -= x * 256;
+                fx_gl.ry -= (int64_t)glutBitmapHeight(font) * 256;
             }
             x = 0;
         } else {

@@ -266,14 +266,14 @@ static void hits_rec(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, int64_t 
     out->overflow = 0;
     /* a shape's own test costs no more than its box's: boxes are for
      * subtrees and meshes */
-    if ((o->kind >= FX_RT_MESH) && !rt_box_meets(&o->box, S, c))
+    if ((o->kind >= FX_RT_MESH) && !fx_rt_box_meets(&o->box, S, c))
         return;
     if (o->kind == FX_RT_MESH) {
-        rt_mesh_hits(o->mesh, i, rt_xform(&o->inv, S, 1), rt_xform_dir24(&o->inv, c), tmin, out);
+        fx_rt_mesh_hits(o->mesh, i, fx_rt_xform(&o->inv, S, 1), fx_rt_xform_dir24(&o->inv, c), tmin, out);
         return;
     }
     if (o->kind < FX_RT_UNION) {
-        rt_leaf_hits(o, i, rt_xform(&o->inv, S, 1), rt_xform_dir24(&o->inv, c), out);
+        fx_rt_leaf_hits(o, i, fx_rt_xform(&o->inv, S, 1), fx_rt_xform_dir24(&o->inv, c), out);
         return;
     }
     fx_rt_hitlist a, b;
@@ -297,7 +297,7 @@ void fx_rt_hits(const fx_rt_scene *s, int i, fx_vec3 S, fx_vec3 c, fx_rt_hitlist
 
 static fx_vec3 world_normal(const fx_rt_scene *s, const fx_rt_hit *h)
 {
-    fx_vec3 n = rt_normal_to_world(&s->obj[h->obj].inv, h->normal);
+    fx_vec3 n = fx_rt_normal_to_world(&s->obj[h->obj].inv, h->normal);
     if (fx_vec3_normalize(&n) < 0)
         n = fx_vec3_make(0, 0, FX16_ONE);
     if (h->flip)
@@ -334,7 +334,7 @@ int fx_rt_first_hit(const fx_rt_scene *s, fx_vec3 S, fx_vec3 c, fx16 tmin, fx_rt
     return found;
 }
 
-fx16 rt_feeler_transmit(const fx_rt_scene *s, fx_vec3 S, fx_vec3 c, fx16 tmin, fx16 tmax, int *blocker)
+fx16 fx_rt_feeler_transmit(const fx_rt_scene *s, fx_vec3 S, fx_vec3 c, fx16 tmin, fx16 tmax, int *blocker)
 {
     fx16 T = FX16_ONE;
     int first = -1;

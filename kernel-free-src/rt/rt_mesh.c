@@ -248,7 +248,7 @@ static fx_vec3 mesh_normal(const fx_mesh *m, uint32_t tr, fx16 bu, fx16 bv)
     return fx_vec3_make((fx16)(n[0] >> sh), (fx16)(n[1] >> sh), (fx16)(n[2] >> sh));
 }
 
-void rt_mesh_hits(const fx_rt_mesh *rm, int idx, fx_vec3 S, fx_vec3 c, int64_t tmin, fx_rt_hitlist *out)
+void fx_rt_mesh_hits(const fx_rt_mesh *rm, int idx, fx_vec3 S, fx_vec3 c, int64_t tmin, fx_rt_hitlist *out)
 {
     int32_t stack[64];
     int sp = 0;

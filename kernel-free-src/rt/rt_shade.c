@@ -253,9 +253,9 @@ static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 we
         if (lam <= 0)
             continue;
         /* the shadow feeler, dimmed by the transparency of what it passes
-         * (issue #44: glass cast a black shadow); see rt_feeler_transmit */
+         * (issue #44: glass cast a black shadow); see fx_rt_feeler_transmit */
         int blocker;
-        fx16 T = rt_feeler_transmit(s, P, l, FX_RT_EPS, dist, &blocker);
+        fx16 T = fx_rt_feeler_transmit(s, P, l, FX_RT_EPS, dist, &blocker);
         if (T <= 0) {
             if (tr->trace) {
                 fx_rt_hit sh;

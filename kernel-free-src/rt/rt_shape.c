@@ -15,7 +15,7 @@
 
 #define ONE ((int64_t)FX16_ONE)
 
-fx_vec3 rt_xform(const fx_mat4 *m, fx_vec3 p, int w)
+fx_vec3 fx_rt_xform(const fx_mat4 *m, fx_vec3 p, int w)
 {
     fx16 r[3];
     for (int i = 0; i < 3; i++) {
@@ -27,7 +27,7 @@ fx_vec3 rt_xform(const fx_mat4 *m, fx_vec3 p, int w)
     return fx_vec3_make(r[0], r[1], r[2]);
 }
 
-fx_vec3 rt_xform_dir24(const fx_mat4 *m, fx_vec3 d)
+fx_vec3 fx_rt_xform_dir24(const fx_mat4 *m, fx_vec3 d)
 {
     fx16 r[3];
     for (int i = 0; i < 3; i++) {
@@ -37,7 +37,7 @@ fx_vec3 rt_xform_dir24(const fx_mat4 *m, fx_vec3 d)
     return fx_vec3_make(r[0], r[1], r[2]);
 }
 
-fx_vec3 rt_normal_to_world(const fx_mat4 *inv, fx_vec3 n)
+fx_vec3 fx_rt_normal_to_world(const fx_mat4 *inv, fx_vec3 n)
 {
     fx16 r[3];
     for (int i = 0; i < 3; i++) {
@@ -47,7 +47,7 @@ fx_vec3 rt_normal_to_world(const fx_mat4 *inv, fx_vec3 n)
     return fx_vec3_make(r[0], r[1], r[2]);
 }
 
-uint64_t rt_isqrt128(fx_s128 n)
+uint64_t fx_rt_isqrt128(fx_s128 n)
 {
     if (n.hi < 0)
         return 0;
@@ -72,7 +72,7 @@ uint64_t rt_isqrt128(fx_s128 n)
     return r;
 }
 
-fx16 rt_div_shift(fx_s128 n, int64_t d, unsigned shift)
+fx16 fx_rt_div_shift(fx_s128 n, int64_t d, unsigned shift)
 {
     return rt_sat(fx_w_rounddiv_away(fx_w_shl(n, shift), d));
 }
@@ -88,7 +88,7 @@ static fx16 div16(int64_t num, int64_t den)
     return rt_sat(q);
 }
 
-int rt_box_meets(const fx_rt_box *b, fx_vec3 S, fx_vec3 c)
+int fx_rt_box_meets(const fx_rt_box *b, fx_vec3 S, fx_vec3 c)
 {
     const fx16 s[3] = {S.x, S.y, S.z}, d[3] = {c.x, c.y, c.z};
     int64_t tin = INT64_MIN, tout = INT64_MAX;
@@ -119,7 +119,7 @@ static fx16 div24(int64_t num, int64_t den)
     fx_s128 n = fx_w_from(num);
     if (den < 0)
         n = fx_w_neg(n), den = -den;
-    return rt_div_shift(n, den, 24);
+    return fx_rt_div_shift(n, den, 24);
 }
 
 /* S + c t for a Q8.24 direction */
@@ -155,17 +155,17 @@ static int quadratic(int64_t A, int64_t B, int64_t C, fx16 *t0, fx16 *t1)
         int64_t d = 2 * B;
         if (d < 0)
             n = fx_w_neg(n), d = -d;
-        *t0 = *t1 = rt_div_shift(n, d, 24); /* Q32 / Q40 -> Q-8 */
+        *t0 = *t1 = fx_rt_div_shift(n, d, 24); /* Q32 / Q40 -> Q-8 */
         return 1;
     }
     fx_s128 disc = fx_w_sub(fx_w_mul(B, B), fx_w_mul(A, C));
     if (disc.hi < 0)
         return 0;
-    int64_t sq = (int64_t)rt_isqrt128(disc);
+    int64_t sq = (int64_t)fx_rt_isqrt128(disc);
     int64_t a = A, n0 = -B - sq, n1 = -B + sq;
     if (a < 0)
         a = -a, n0 = -n0, n1 = -n1;
-    fx16 r0 = rt_div_shift(fx_w_from(n0), a, 24), r1 = rt_div_shift(fx_w_from(n1), a, 24); /* Q40 / Q48 */
+    fx16 r0 = fx_rt_div_shift(fx_w_from(n0), a, 24), r1 = fx_rt_div_shift(fx_w_from(n1), a, 24); /* Q40 / Q48 */
     *t0 = r0 < r1 ? r0 : r1;
     *t1 = r0 < r1 ? r1 : r0;
     return 2;
@@ -390,7 +390,7 @@ static void torus(int idx, fx16 r, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
     R.cxy = (int64_t)c.x * c.x + (int64_t)c.y * c.y;
     /* f''' = 0 where p.c = 0: t3 = -(S.c) / (c.c) (Q40 / Q48, 24 more bits) */
     int64_t sc = (int64_t)S.x * c.x + (int64_t)S.y * c.y + (int64_t)S.z * c.z;
-    int64_t t3 = R.cc ? rt_div_shift(fx_w_from(-sc), R.cc, 24) : tin;
+    int64_t t3 = R.cc ? fx_rt_div_shift(fx_w_from(-sc), R.cc, 24) : tin;
     int64_t p0[3] = {tin, t3, tout}, p1[8], p2[16], p3[32];
     int n0 = t3 > tin && t3 < tout ? 3 : 2;
     if (n0 == 2)
@@ -415,7 +415,7 @@ static void torus(int idx, fx16 r, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
     }
 }
 
-void rt_leaf_hits(const fx_rt_object *o, int idx, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
+void fx_rt_leaf_hits(const fx_rt_object *o, int idx, fx_vec3 S, fx_vec3 c, fx_rt_hitlist *out)
 {
     switch (o->kind) {
     case FX_RT_SPHERE: sphere(idx, S, c, out); break;

@@ -44,7 +44,7 @@ static int32_t coverage(const fx_vsd_scene *s, int32_t p, int32_t x, int32_t y)
 static int insert(const fx_vsd_scene *s, abuf *a, int32_t p, int32_t m, int32_t x, int32_t y)
 {
     int32_t *link = &a->head[(size_t)y * (size_t)s->w + (size_t)x];
-    while (*link >= 0 && vsd_beats(s, a->poly[*link], p, x, y)) {
+    while (*link >= 0 && fx_vsd_beats(s, a->poly[*link], p, x, y)) {
         if (a->mask[*link] == 0xFFFF)
             return 0; /* hidden whole */
         link = &a->next[*link];

@@ -11,7 +11,7 @@
  * the eye is on the side a x + b y + c z + d < 0 of every plane. */
 #include "vsd_int.h"
 
-/* The eye at z = -infinity: its side of plane q, as vsd_frag_sides bits. */
+/* The eye at z = -infinity: its side of plane q, as fx_vsd_frag_sides bits. */
 static int eye_side(const fx_vsd_poly *q) { return q->c > 0 ? 2 : 1; }
 
 static void trace_tree(const fx_vsd_scene *s, const vsd_frag *fr, int32_t root, int32_t *stack,
@@ -39,19 +39,19 @@ static void trace_tree(const fx_vsd_scene *s, const vsd_frag *fr, int32_t root, 
     }
 }
 
-int vsd_bsp(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, const fx_ctx *c,
+int fx_vsd_bsp(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, const fx_ctx *c,
             fx_vsd_stats *st)
 {
     vsd_frag *fr;
     int32_t *stack;
-    int32_t cap = vsd_frag_work(s, work, bytes, &fr, &stack);
+    int32_t cap = fx_vsd_frag_work(s, work, bytes, &fr, &stack);
     if (cap < 0)
         return cap;
     int32_t *from = stack + cap;
     int32_t nf = 0, root = -1;
     for (int32_t p = 0; p < s->npoly; p++) {
         int32_t sp = 0;
-        vsd_frag_from_poly(s, p, &fr[nf]);
+        fx_vsd_frag_from_poly(s, p, &fr[nf]);
         stack[sp] = nf++;
         from[sp++] = root;
         while (sp) {
@@ -64,13 +64,13 @@ int vsd_bsp(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, const
             if (node < 0)
                 node = root;
             for (;;) {
-                int side = vsd_frag_sides(s, &fr[f], fr[node].poly);
+                int side = fx_vsd_frag_sides(s, &fr[f], fr[node].poly);
                 depth++;
                 if (side == 3) {
                     if (nf >= cap)
                         return -FX_ENOSPC;
                     vsd_frag a, b;
-                    int e = vsd_frag_split(s, &fr[f], fr[node].poly, &a, &b);
+                    int e = fx_vsd_frag_split(s, &fr[f], fr[node].poly, &a, &b);
                     if (e == 0) {
                         st->splits++;
                         if (c)
@@ -112,7 +112,7 @@ int vsd_bsp(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, const
         int32_t v = stack[--sp];
         if (v < 0) {
             int32_t n = -v - 1;
-            vsd_frag_paint(s, &fr[n], ids);
+            fx_vsd_frag_paint(s, &fr[n], ids);
             int32_t nearc = eye_side(&s->poly[fr[n].poly]) == 2 ? fr[n].front : fr[n].back;
             if (nearc >= 0)
                 stack[sp++] = nearc;

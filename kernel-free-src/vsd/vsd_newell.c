@@ -19,7 +19,7 @@ static int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
  * within the rounding of the vertices */
 static int all_on(const fx_vsd_scene *s, const vsd_frag *f, int32_t q, int side)
 {
-    return (vsd_frag_sides(s, f, q) & (3 & ~side)) == 0;
+    return (fx_vsd_frag_sides(s, f, q) & (3 & ~side)) == 0;
 }
 
 /* Some edge of a (as a line) has all of b strictly outside a. */
@@ -85,17 +85,17 @@ static void insert_sorted(const vsd_frag *fr, int32_t *list, int32_t from, int32
     (*n)++;
 }
 
-int vsd_newell(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, const fx_ctx *c,
+int fx_vsd_newell(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, const fx_ctx *c,
                fx_vsd_stats *st)
 {
     vsd_frag *fr;
     int32_t *list;
-    int32_t cap = vsd_frag_work(s, work, bytes, &fr, &list);
+    int32_t cap = fx_vsd_frag_work(s, work, bytes, &fr, &list);
     if (cap < 0)
         return cap;
     int32_t nf = 0, n = 0;
     for (int32_t p = 0; p < s->npoly; p++) {
-        vsd_frag_from_poly(s, p, &fr[nf]);
+        fx_vsd_frag_from_poly(s, p, &fr[nf]);
         insert_sorted(fr, list, 0, &n, nf++);
     }
     /* marks are generations: a piece is marked when moved since the last
@@ -110,7 +110,7 @@ int vsd_newell(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, co
             if (p_before_q_ok(s, P, Q, &which))
                 continue;
             int reversed = all_on(s, Q, P->poly, 1) || all_on(s, P, Q->poly, 2);
-            int straddle = vsd_frag_sides(s, P, Q->poly) == 3 || vsd_frag_sides(s, Q, P->poly) == 3;
+            int straddle = fx_vsd_frag_sides(s, P, Q->poly) == 3 || fx_vsd_frag_sides(s, Q, P->poly) == 3;
             /* A marked Q met again is the course's sign of a cycle; it is
              * broken by a split when one of the two straddles the other's
              * plane. When neither does, the cycle (if any) runs through
@@ -132,9 +132,9 @@ int vsd_newell(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, co
             }
             /* a cycle (or mutual overlap): split one by the other's plane */
             int32_t victim = -1, cutter = -1, li = -1;
-            if (vsd_frag_sides(s, P, Q->poly) == 3)
+            if (fx_vsd_frag_sides(s, P, Q->poly) == 3)
                 victim = list[pos], cutter = Q->poly, li = pos;
-            else if (vsd_frag_sides(s, Q, P->poly) == 3)
+            else if (fx_vsd_frag_sides(s, Q, P->poly) == 3)
                 victim = list[k], cutter = P->poly, li = k;
             /* Q keeps coming back ahead of P with neither straddling the
              * other: a cycle through further pieces, the ones moved ahead
@@ -150,7 +150,7 @@ int vsd_newell(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, co
                         continue;
                     if (R->x1 < U->x0 || U->x1 < R->x0 || R->y1 < U->y0 || U->y1 < R->y0)
                         continue;
-                    if (vsd_frag_sides(s, R, U->poly) == 3)
+                    if (fx_vsd_frag_sides(s, R, U->poly) == 3)
                         victim = list[r], cutter = U->poly, li = r;
                 }
             }
@@ -163,7 +163,7 @@ int vsd_newell(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, co
             if (nf >= cap)
                 return -FX_ENOSPC;
             vsd_frag a, b;
-            int e = vsd_frag_split(s, &fr[victim], cutter, &a, &b);
+            int e = fx_vsd_frag_split(s, &fr[victim], cutter, &a, &b);
             if (e == -FX_EDOM) {
                 if (c)
                     fx_trace(c, "newell: polygon %d left before %d unresolved", P->poly, Q->poly);
@@ -194,7 +194,7 @@ int vsd_newell(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, co
         }
     }
     for (int32_t i = 0; i < n; i++)
-        vsd_frag_paint(s, &fr[list[i]], ids);
+        fx_vsd_frag_paint(s, &fr[list[i]], ids);
     st->frags = nf;
     return 0;
 }

@@ -24,7 +24,7 @@ typedef struct sl_work {
     int32_t *in;    /* polygons flagged in */
 } sl_work;
 
-size_t vsd_scanline_bytes(const fx_vsd_scene *s)
+size_t fx_vsd_scanline_bytes(const fx_vsd_scene *s)
 {
     return ((size_t)s->h + 1 + 3 * (size_t)s->nedge + 3 * (size_t)s->npoly) * sizeof(int32_t) + 16;
 }
@@ -45,7 +45,7 @@ static int32_t nearest(const fx_vsd_scene *s, const int32_t *in, int32_t n, int3
 {
     int32_t best = -1;
     for (int32_t i = 0; i < n; i++)
-        if (vsd_beats(s, in[i], best, x, y))
+        if (fx_vsd_beats(s, in[i], best, x, y))
             best = in[i];
     return best;
 }
@@ -66,10 +66,10 @@ static void resolve(const fx_vsd_scene *s, const int32_t *in, int32_t n, int32_t
     }
 }
 
-int vsd_scanline(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, const fx_ctx *c,
+int fx_vsd_scanline(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, const fx_ctx *c,
                  int32_t trace_row, fx_vsd_stats *st)
 {
-    if (bytes < vsd_scanline_bytes(s) || !work)
+    if (bytes < fx_vsd_scanline_bytes(s) || !work)
         return -FX_ENOSPC;
     sl_work w;
     w.head = work;
@@ -114,7 +114,7 @@ int vsd_scanline(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, 
         for (int32_t i = 0; i < na; i++) {
             const fx_vsd_edge *e = &s->edge[w.ael[i]];
             int32_t lo = INT32_MIN / 2, hi = INT32_MAX / 2;
-            vsd_hspan(e->ea, e->eb * y + e->ec, e->incl, &lo, &hi);
+            fx_vsd_hspan(e->ea, e->eb * y + e->ec, e->incl, &lo, &hi);
             w.ax[i] = e->ea > 0 ? lo : hi;
         }
         for (int32_t i = 1; i < na; i++) {

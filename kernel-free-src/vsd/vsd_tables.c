@@ -18,7 +18,7 @@ static int64_t gcd64(int64_t a, int64_t b)
     return a;
 }
 
-int64_t vsd_floordiv(int64_t n, int64_t d)
+int64_t fx_vsd_floordiv(int64_t n, int64_t d)
 {
     int64_t q = n / d;
     if ((n % d != 0) && ((n < 0) != (d < 0)))
@@ -31,7 +31,7 @@ static int32_t clamp32(int64_t v)
     return v < INT32_MIN ? INT32_MIN : v > INT32_MAX ? INT32_MAX : (int32_t)v;
 }
 
-void vsd_hspan(int64_t a, int64_t k, int incl, int32_t *lo, int32_t *hi)
+void fx_vsd_hspan(int64_t a, int64_t k, int incl, int32_t *lo, int32_t *hi)
 {
     if (a == 0) {
         if (!(k > 0 || (incl && k == 0)))
@@ -40,12 +40,12 @@ void vsd_hspan(int64_t a, int64_t k, int incl, int32_t *lo, int32_t *hi)
     }
     if (a > 0) {
         /* x >= -k / a, or x > -k / a */
-        int64_t b = incl ? -vsd_floordiv(k, a) : vsd_floordiv(-k, a) + 1;
+        int64_t b = incl ? -fx_vsd_floordiv(k, a) : fx_vsd_floordiv(-k, a) + 1;
         if (b > *lo)
             *lo = clamp32(b);
     } else {
         /* x <= k / |a|, or x < k / |a| */
-        int64_t b = incl ? vsd_floordiv(k, -a) + 1 : -vsd_floordiv(-k, -a);
+        int64_t b = incl ? fx_vsd_floordiv(k, -a) + 1 : -fx_vsd_floordiv(-k, -a);
         if (b < *hi)
             *hi = clamp32(b);
     }
@@ -180,7 +180,7 @@ int fx_vsd_depth_cmp(const fx_vsd_scene *s, int32_t p, int32_t q, int32_t x, int
     return l < r ? -1 : l > r;
 }
 
-int vsd_beats(const fx_vsd_scene *s, int32_t p, int32_t q, int32_t x, int32_t y)
+int fx_vsd_beats(const fx_vsd_scene *s, int32_t p, int32_t q, int32_t x, int32_t y)
 {
     if (q < 0)
         return 1;
@@ -200,44 +200,44 @@ int fx_vsd_inside(const fx_vsd_scene *s, int32_t p, int32_t x, int32_t y)
     return 1;
 }
 
-void vsd_poly_rows(const fx_vsd_scene *s, int32_t p, int32_t *y0, int32_t *y1)
+void fx_vsd_poly_rows(const fx_vsd_scene *s, int32_t p, int32_t *y0, int32_t *y1)
 {
     const fx_vsd_poly *P = &s->poly[p];
     *y0 = P->ymin < 0 ? 0 : P->ymin;
     *y1 = P->ymax + 1 > s->h ? s->h : P->ymax + 1;
 }
 
-void vsd_poly_span(const fx_vsd_scene *s, int32_t p, int32_t y, int32_t *lo, int32_t *hi)
+void fx_vsd_poly_span(const fx_vsd_scene *s, int32_t p, int32_t y, int32_t *lo, int32_t *hi)
 {
     const fx_vsd_poly *P = &s->poly[p];
     *lo = 0;
     *hi = s->w;
     for (int32_t i = 0; i < P->nedges && *lo < *hi; i++) {
         const fx_vsd_edge *e = &s->edge[P->first_edge + i];
-        vsd_hspan(e->ea, e->eb * y + e->ec, e->incl, lo, hi);
+        fx_vsd_hspan(e->ea, e->eb * y + e->ec, e->incl, lo, hi);
     }
 }
 
-void vsd_frag_span(const fx_vsd_scene *s, const vsd_frag *f, int32_t y, int32_t *lo, int32_t *hi)
+void fx_vsd_frag_span(const fx_vsd_scene *s, const vsd_frag *f, int32_t y, int32_t *lo, int32_t *hi)
 {
-    vsd_poly_span(s, f->poly, y, lo, hi);
+    fx_vsd_poly_span(s, f->poly, y, lo, hi);
     for (int32_t i = 0; i < f->ncut && *lo < *hi; i++)
-        vsd_hspan(f->ca[i], f->cb[i] * y + f->cc[i], f->cincl[i], lo, hi);
+        fx_vsd_hspan(f->ca[i], f->cb[i] * y + f->cc[i], f->cincl[i], lo, hi);
 }
 
-void vsd_frag_paint(const fx_vsd_scene *s, const vsd_frag *f, int32_t *ids)
+void fx_vsd_frag_paint(const fx_vsd_scene *s, const vsd_frag *f, int32_t *ids)
 {
     int32_t y0, y1;
-    vsd_poly_rows(s, f->poly, &y0, &y1);
+    fx_vsd_poly_rows(s, f->poly, &y0, &y1);
     for (int32_t y = y0; y < y1; y++) {
         int32_t lo, hi;
-        vsd_frag_span(s, f, y, &lo, &hi);
+        fx_vsd_frag_span(s, f, y, &lo, &hi);
         for (int32_t x = lo; x < hi; x++)
             ids[(size_t)y * (size_t)s->w + (size_t)x] = f->poly;
     }
 }
 
-int32_t vsd_frag_work(const fx_vsd_scene *s, void *work, size_t bytes, vsd_frag **fr, int32_t **ints)
+int32_t fx_vsd_frag_work(const fx_vsd_scene *s, void *work, size_t bytes, vsd_frag **fr, int32_t **ints)
 {
     size_t per = sizeof(vsd_frag) + 2 * sizeof(int32_t);
     int32_t cap = (int32_t)((bytes / per) > INT32_MAX ? INT32_MAX : bytes / per);
@@ -263,7 +263,7 @@ static void frag_extents(vsd_frag *f)
     }
 }
 
-void vsd_frag_from_poly(const fx_vsd_scene *s, int32_t p, vsd_frag *f)
+void fx_vsd_frag_from_poly(const fx_vsd_scene *s, int32_t p, vsd_frag *f)
 {
     const fx_vsd_poly *P = &s->poly[p];
     f->poly = p;
@@ -280,25 +280,25 @@ void vsd_frag_from_poly(const fx_vsd_scene *s, int32_t p, vsd_frag *f)
     frag_extents(f);
 }
 
-int64_t vsd_plane_side(const fx_vsd_poly *q, int32_t x, int32_t y, int32_t z)
+int64_t fx_vsd_plane_side(const fx_vsd_poly *q, int32_t x, int32_t y, int32_t z)
 {
     return q->a * x + q->b * y + q->c * z + q->d * 256;
 }
 
-int64_t vsd_plane_eps(const fx_vsd_poly *q)
+int64_t fx_vsd_plane_eps(const fx_vsd_poly *q)
 {
     /* a vertex rounded by half a unit on each axis moves the value by at
      * most half this; twice that is the margin */
     return abs64(q->a) + abs64(q->b) + abs64(q->c);
 }
 
-int vsd_frag_sides(const fx_vsd_scene *s, const vsd_frag *f, int32_t q)
+int fx_vsd_frag_sides(const fx_vsd_scene *s, const vsd_frag *f, int32_t q)
 {
     const fx_vsd_poly *Q = &s->poly[q];
-    int64_t eps = vsd_plane_eps(Q);
+    int64_t eps = fx_vsd_plane_eps(Q);
     int r = 0;
     for (int32_t i = 0; i < f->nv; i++) {
-        int64_t v = vsd_plane_side(Q, f->x[i], f->y[i], f->z[i]);
+        int64_t v = fx_vsd_plane_side(Q, f->x[i], f->y[i], f->z[i]);
         if (v > eps)
             r |= 1;
         else if (v < -eps)
@@ -339,7 +339,7 @@ static void prune_cuts(vsd_frag *f)
     f->ncut = k;
 }
 
-int vsd_frag_split(const fx_vsd_scene *s, const vsd_frag *f, int32_t q, vsd_frag *back,
+int fx_vsd_frag_split(const fx_vsd_scene *s, const vsd_frag *f, int32_t q, vsd_frag *back,
                    vsd_frag *front)
 {
     if (f->ncut >= FX_VSD_MAX_CUTS)
@@ -376,8 +376,8 @@ int vsd_frag_split(const fx_vsd_scene *s, const vsd_frag *f, int32_t q, vsd_frag
     /* Sutherland-Hodgman on the approximate vertices, one cut shared by both */
     for (int32_t i = 0; i < f->nv; i++) {
         int32_t j = (i + 1) % f->nv;
-        int64_t si = vsd_plane_side(Q, f->x[i], f->y[i], f->z[i]);
-        int64_t sj = vsd_plane_side(Q, f->x[j], f->y[j], f->z[j]);
+        int64_t si = fx_vsd_plane_side(Q, f->x[i], f->y[i], f->z[i]);
+        int64_t sj = fx_vsd_plane_side(Q, f->x[j], f->y[j], f->z[j]);
         if (si >= 0 && b.nv < FX_VSD_FRAG_VERTS) {
             b.x[b.nv] = f->x[i], b.y[b.nv] = f->y[i], b.z[b.nv++] = f->z[i];
         }
@@ -426,13 +426,13 @@ static void zbuffer(const fx_vsd_scene *s, int32_t *ids)
 {
     for (int32_t p = 0; p < s->npoly; p++) {
         int32_t y0, y1;
-        vsd_poly_rows(s, p, &y0, &y1);
+        fx_vsd_poly_rows(s, p, &y0, &y1);
         for (int32_t y = y0; y < y1; y++) {
             int32_t lo, hi;
-            vsd_poly_span(s, p, y, &lo, &hi);
+            fx_vsd_poly_span(s, p, y, &lo, &hi);
             int32_t *row = ids + (size_t)y * (size_t)s->w;
             for (int32_t x = lo; x < hi; x++)
-                if (vsd_beats(s, p, row[x], x, y))
+                if (fx_vsd_beats(s, p, row[x], x, y))
                     row[x] = p;
         }
     }
@@ -450,7 +450,7 @@ static void raycast(const fx_vsd_scene *s, int32_t *ids)
                 const fx_vsd_poly *P = &s->poly[p];
                 if (x < P->xmin || x > P->xmax || y < P->ymin || y > P->ymax)
                     continue;
-                if (fx_vsd_inside(s, p, x, y) && vsd_beats(s, p, best, x, y))
+                if (fx_vsd_inside(s, p, x, y) && fx_vsd_beats(s, p, best, x, y))
                     best = p;
             }
             ids[(size_t)y * (size_t)s->w + (size_t)x] = best;
@@ -483,9 +483,9 @@ static int painter(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes
         int32_t p = (int32_t)(((key[i] % 1048576) + 1048576) % 1048576);
         if (c)
             fx_trace(c, "painter %d: polygon %d, mean depth %d/8", i, p,
-                     (int)-vsd_floordiv(key[i] - p, 1048576));
-        vsd_frag_from_poly(s, p, &f);
-        vsd_frag_paint(s, &f, ids);
+                     (int)-fx_vsd_floordiv(key[i] - p, 1048576));
+        fx_vsd_frag_from_poly(s, p, &f);
+        fx_vsd_frag_paint(s, &f, ids);
     }
     return 0;
 }
@@ -501,11 +501,11 @@ size_t fx_vsd_work_bytes(const fx_vsd_scene *s, fx_vsd_method m, int32_t max_fra
         return (size_t)s->npoly * 2 * sizeof(int64_t) + 8;
     case FX_VSD_NEWELL:
     case FX_VSD_BSP:
-        return (size_t)max_frags * (sizeof(vsd_frag) + 2 * sizeof(int32_t)) + 16; /* vsd_frag_work */
+        return (size_t)max_frags * (sizeof(vsd_frag) + 2 * sizeof(int32_t)) + 16; /* fx_vsd_frag_work */
     case FX_VSD_SCANLINE:
-        return vsd_scanline_bytes(s);
+        return fx_vsd_scanline_bytes(s);
     case FX_VSD_WARNOCK:
-        return vsd_warnock_bytes(s);
+        return fx_vsd_warnock_bytes(s);
     case FX_VSD_ABUFFER:
         return (size_t)s->w * (size_t)s->h * sizeof(int32_t) +
                (size_t)max_frags * 3 * sizeof(int32_t) + 16;
@@ -539,13 +539,13 @@ int fx_vsd_render(const fx_vsd_scene *s, fx_vsd_method m, int32_t *ids, void *wo
     case FX_VSD_PAINTER:
         return painter(s, ids, work, bytes, c);
     case FX_VSD_NEWELL:
-        return vsd_newell(s, ids, work, bytes, c, st);
+        return fx_vsd_newell(s, ids, work, bytes, c, st);
     case FX_VSD_BSP:
-        return vsd_bsp(s, ids, work, bytes, c, st);
+        return fx_vsd_bsp(s, ids, work, bytes, c, st);
     case FX_VSD_SCANLINE:
-        return vsd_scanline(s, ids, work, bytes, c, trace_row, st);
+        return fx_vsd_scanline(s, ids, work, bytes, c, trace_row, st);
     case FX_VSD_WARNOCK:
-        return vsd_warnock(s, ids, work, bytes, c, st);
+        return fx_vsd_warnock(s, ids, work, bytes, c, st);
     default:
         return -FX_EINVAL;
     }

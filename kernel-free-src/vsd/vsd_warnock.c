@@ -23,7 +23,7 @@ typedef struct wk {
     fx_vsd_stats *st;
 } wk;
 
-size_t vsd_warnock_bytes(const fx_vsd_scene *s)
+size_t fx_vsd_warnock_bytes(const fx_vsd_scene *s)
 {
     /* one list per level; a level at least halves the longer side */
     int32_t levels = 2;
@@ -62,7 +62,7 @@ static void fill_poly(wk *k, int32_t p, int32_t x0, int32_t y0, int32_t x1, int3
 {
     for (int32_t y = y0; y < y1; y++) {
         int32_t lo, hi;
-        vsd_poly_span(k->s, p, y, &lo, &hi);
+        fx_vsd_poly_span(k->s, p, y, &lo, &hi);
         if (lo < x0) lo = x0;
         if (hi > x1) hi = x1;
         for (int32_t x = lo; x < hi; x++)
@@ -106,7 +106,7 @@ static int region(wk *k, const int32_t *list, int32_t n, int32_t x0, int32_t y0,
             int32_t cx[4] = {x0, x1 - 1, x0, x1 - 1}, cy[4] = {y0, y0, y1 - 1, y1 - 1};
             for (int32_t j = 0; j < m && front; j++)
                 for (int q = 0; q < 4 && front; q++)
-                    if (mine[j] != p && !vsd_beats(s, p, mine[j], cx[q], cy[q]))
+                    if (mine[j] != p && !fx_vsd_beats(s, p, mine[j], cx[q], cy[q]))
                         front = 0;
             if (front) {
                 how = "surrounding in front";
@@ -117,7 +117,7 @@ static int region(wk *k, const int32_t *list, int32_t n, int32_t x0, int32_t y0,
         if (!how && x1 - x0 == 1 && y1 - y0 == 1) {
             int32_t best = -1;
             for (int32_t i = 0; i < m; i++)
-                if (fx_vsd_inside(s, mine[i], x0, y0) && vsd_beats(s, mine[i], best, x0, y0))
+                if (fx_vsd_inside(s, mine[i], x0, y0) && fx_vsd_beats(s, mine[i], best, x0, y0))
                     best = mine[i];
             k->ids[(size_t)y0 * (size_t)s->w + (size_t)x0] = best;
             how = "pixel";
@@ -143,10 +143,10 @@ static int region(wk *k, const int32_t *list, int32_t n, int32_t x0, int32_t y0,
     return 0;
 }
 
-int vsd_warnock(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, const fx_ctx *c,
+int fx_vsd_warnock(const fx_vsd_scene *s, int32_t *ids, void *work, size_t bytes, const fx_ctx *c,
                 fx_vsd_stats *st)
 {
-    if (bytes < vsd_warnock_bytes(s) || !work)
+    if (bytes < fx_vsd_warnock_bytes(s) || !work)
         return -FX_ENOSPC;
     wk k = {s, ids, work, (int32_t)((bytes - 16) / sizeof(int32_t)), c, st};
     int32_t *all = k.mem, top = s->npoly;

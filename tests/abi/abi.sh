@@ -7,6 +7,7 @@
 #   version   FX_VERSION_MAJOR/MINOR/PATCH/STRING agree with the Makefile's VERSION
 #   spdx      every source file has its SPDX-License-Identifier line
 #   guards    every public header has its extern "C" guard
+#   prefixes  every global symbol of libfixel.a / libfixel-glut.a is fx_-named
 # usage: abi.sh BUILD_DIR VERSION SOMAJOR [NM]
 B=$1; VERSION=$2; SOMAJOR=$3; NM=${4:-nm}
 P=0; F=0
@@ -27,6 +28,19 @@ missing=$(comm -23 "$tmp/declared" "$tmp/exported")
 # symbol version node
 $NM -D --defined-only "$so" | grep -q "FIXEL_$SOMAJOR" && ok "exports: versioned as FIXEL_$SOMAJOR" ||
     no "exports: no FIXEL_$SOMAJOR version node"
+
+# prefixes: a static link puts every global symbol of the archives into the
+# user's program, so internal cross-file functions are named like public ones
+# (fx_, or the fx16_/fx32_/fx56_/fx3d_ families); the GLUT layer adds the
+# GL/GLU/GLUT names it implements (issue #42: vsd_*, rt_* and fxg_* were not)
+pfx() { # ARCHIVE ALLOWED-ERE
+    [ -f "$1" ] || { no "prefixes: $1 was not built"; return; }
+    bad=$($NM -g --defined-only "$1" | awk '$2 ~ /^[A-TV-Z]$/ { print $3 }' | grep -vE "$2" | sort -u)
+    [ -z "$bad" ] && ok "prefixes: every global symbol of $1 is fx_-named$3" ||
+        no "prefixes: $1 defines global symbols outside fx_$3:" $bad
+}
+pfx "$B/libfixel.a" '^fx(_|[0-9]+[a-z]*_)'
+pfx "$B/libfixel-glut.a" '^(fx(_|[0-9]+[a-z]*_)|glu?t?[A-Z])' " (or a GL/GLU/GLUT name)"
 
 # soname
 sn=$(objdump -p "$so" 2>/dev/null | sed -n 's/^ *SONAME *//p')

@@ -335,11 +335,11 @@ FX_TEST(rt_bounding_boxes_skip_only_missed_shapes)
         fx_vec3 S, c;
         random_ray(&seed, 3, &S, &c);
         for (int o = 0; o <= root; o++) {
-            if (s.obj[o].kind >= FX_RT_UNION || rt_box_meets(&s.obj[o].box, S, c))
+            if (s.obj[o].kind >= FX_RT_UNION || fx_rt_box_meets(&s.obj[o].box, S, c))
                 continue;
             skipped++;
             fx_rt_hitlist l = {0, 0, 0, {{0}}};
-            rt_leaf_hits(&s.obj[o], o, rt_xform(&s.obj[o].inv, S, 1), rt_xform_dir24(&s.obj[o].inv, c), &l);
+            fx_rt_leaf_hits(&s.obj[o], o, fx_rt_xform(&s.obj[o].inv, S, 1), fx_rt_xform_dir24(&s.obj[o].inv, c), &l);
             FX_CHECK_MSG(l.n == 0, "ray %d: object %d skipped but hit at t %d", i, o, l.h[0].t);
         }
     }
@@ -580,9 +580,9 @@ FX_TEST(rt_shadow_feelers_pass_through_glass)
     FX_CHECK(lit.r > FX16_ONE / 2);
     /* the feeler's own numbers */
     int blocker;
-    FX_CHECK_EQ(rt_feeler_transmit(&s, below, fx_vec3_make(0, FX16_ONE, 0), FX_RT_EPS, 10 * FX16_ONE, &blocker), 0);
+    FX_CHECK_EQ(fx_rt_feeler_transmit(&s, below, fx_vec3_make(0, FX16_ONE, 0), FX_RT_EPS, 10 * FX16_ONE, &blocker), 0);
     FX_CHECK_EQ(blocker, 2);
-    FX_CHECK_EQ(rt_feeler_transmit(&s, below, fx_vec3_make(0, FX16_ONE, 0), FX_RT_EPS, 2 * FX16_ONE, &blocker),
+    FX_CHECK_EQ(fx_rt_feeler_transmit(&s, below, fx_vec3_make(0, FX16_ONE, 0), FX_RT_EPS, 2 * FX16_ONE, &blocker),
                 FX16_ONE / 4);
     FX_CHECK_EQ(blocker, -1);
 }

@@ -121,7 +121,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     static GLUquadric *q;
     static fxgl_args a;
     if (!inited) {
-        if (fxg_gl_init(40, 40) < 0)
+        if (fx_glut_gl_init(40, 40) < 0)
             abort();
         q = gluNewQuadric();
         static GLuint tex;

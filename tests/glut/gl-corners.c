@@ -68,7 +68,7 @@ static void enums_then(const fxgl_entry *e, fxgl_args *a, int k, int ne, int slo
 
 int main(void)
 {
-    if (fxg_gl_init(40, 40) < 0) {
+    if (fx_glut_gl_init(40, 40) < 0) {
         fprintf(stderr, "gl-corners: no memory for a 40x40 window\n");
         return 1;
     }

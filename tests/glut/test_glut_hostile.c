@@ -17,8 +17,8 @@ static void setup(void)
 {
     static int done;
     if (!done) {
-        if (!fxg.depth) /* one 40x40 window for every test file of the binary */
-            fxg_gl_init(40, 40);
+        if (!fx_gl.depth) /* one 40x40 window for every test file of the binary */
+            fx_glut_gl_init(40, 40);
         done = 1;
     }
     glDisable(GL_DEPTH_TEST);

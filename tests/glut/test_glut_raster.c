@@ -13,8 +13,8 @@ static void setup(void)
 {
     static int done;
     if (!done) {
-        if (!fxg.depth) /* one 40x40 window for every test file of the binary */
-            fxg_gl_init(40, 40);
+        if (!fx_gl.depth) /* one 40x40 window for every test file of the binary */
+            fx_glut_gl_init(40, 40);
         done = 1;
     }
     glDisable(GL_DEPTH_TEST);
@@ -264,13 +264,13 @@ FX_TEST(glut_colour_conversion_and_clamp)
     glBegin(GL_POINTS), glVertex2i(3, 1), glEnd();
     EXPECT_RGB(3, 1, 12, 34, 56);
     /* boundary conversion: nearest, saturating */
-    FX_CHECK_EQ(fxg_d2x(0.5), (int64_t)1 << 31);
-    FX_CHECK_EQ(fxg_d2x(-1.0), -((int64_t)1 << 32));
-    FX_CHECK_EQ(fxg_d2x(1e300), INT64_MAX);
-    FX_CHECK_EQ(fxg_d2c(2.0), 65536);
-    FX_CHECK_EQ(fxg_d2c(-0.5), 0);
-    FX_CHECK_EQ(fxg_deg2angle(90.0), 0x40000000u);
-    FX_CHECK_EQ(fxg_deg2angle(-90.0), 0xC0000000u);
+    FX_CHECK_EQ(fx_glut_d2x(0.5), (int64_t)1 << 31);
+    FX_CHECK_EQ(fx_glut_d2x(-1.0), -((int64_t)1 << 32));
+    FX_CHECK_EQ(fx_glut_d2x(1e300), INT64_MAX);
+    FX_CHECK_EQ(fx_glut_d2c(2.0), 65536);
+    FX_CHECK_EQ(fx_glut_d2c(-0.5), 0);
+    FX_CHECK_EQ(fx_glut_deg2angle(90.0), 0x40000000u);
+    FX_CHECK_EQ(fx_glut_deg2angle(-90.0), 0xC0000000u);
 }
 
 FX_TEST(glut_viewport_clips_wide_points)
@@ -326,7 +326,7 @@ FX_TEST(glut_lighting_equation)
      * ambient 0.2*0.2 (global) + 0 (light ambient) + 0.8 * cos 60 = 0.44 */
     fx_gl_lighting L;
     memset(&L, 0, sizeof L);
-    L.model_ambient[0] = L.model_ambient[1] = L.model_ambient[2] = fxg_d2c(0.2);
+    L.model_ambient[0] = L.model_ambient[1] = L.model_ambient[2] = fx_glut_d2c(0.2);
     L.light[0].enabled = 1;
     for (int k = 0; k < 4; k++)
         L.light[0].diffuse[k] = L.light[0].specular[k] = 65536;
@@ -335,19 +335,19 @@ FX_TEST(glut_lighting_equation)
     fx_gl_material m;
     memset(&m, 0, sizeof m);
     for (int k = 0; k < 3; k++)
-        m.ambient[k] = fxg_d2c(0.2), m.diffuse[k] = fxg_d2c(0.8);
+        m.ambient[k] = fx_glut_d2c(0.2), m.diffuse[k] = fx_glut_d2c(0.8);
     m.diffuse[3] = 65536;
     fx32 p[4] = {0, 0, -5 * FX32_ONE, FX32_ONE};
-    fx32 n[3] = {fxg_d2x(0.8660254037844386), 0, fxg_d2x(0.5)};
+    fx32 n[3] = {fx_glut_d2x(0.8660254037844386), 0, fx_glut_d2x(0.5)};
     fx16 out[4];
     fx_gl_shade(&L, &m, p, n, out);
-    FX_CHECK_MSG(out[0] > fxg_d2c(0.4399) && out[0] < fxg_d2c(0.4401), "got %d", out[0]);
+    FX_CHECK_MSG(out[0] > fx_glut_d2c(0.4399) && out[0] < fx_glut_d2c(0.4401), "got %d", out[0]);
     /* specular: shininess 10, H = normalize(L + z) = z, N.H = 0.5 -> 0.5^10 */
     m.specular[0] = 65536;
     m.shininess = 10 << 16;
     fx_gl_shade(&L, &m, p, n, out);
     double want = 0.44 + 1.0 / 1024;
-    FX_CHECK_MSG(out[0] > fxg_d2c(want - 0.0002) && out[0] < fxg_d2c(want + 0.0002), "got %d", out[0]);
+    FX_CHECK_MSG(out[0] > fx_glut_d2c(want - 0.0002) && out[0] < fx_glut_d2c(want + 0.0002), "got %d", out[0]);
     FX_CHECK_EQ(out[3], 65536);
     /* attenuation 1 / (1 + 0.5 d) with a point light at distance 2 along +z */
     L.light[0].pos[2] = 2 * FX32_ONE - 5 * FX32_ONE;
@@ -356,7 +356,7 @@ FX_TEST(glut_lighting_equation)
     m.specular[0] = 0;
     n[0] = 0, n[2] = FX32_ONE;
     fx_gl_shade(&L, &m, p, n, out);
-    FX_CHECK_MSG(out[0] > fxg_d2c(0.04 + 0.4 - 0.0003) && out[0] < fxg_d2c(0.44 + 0.0003), "got %d", out[0]);
+    FX_CHECK_MSG(out[0] > fx_glut_d2c(0.04 + 0.4 - 0.0003) && out[0] < fx_glut_d2c(0.44 + 0.0003), "got %d", out[0]);
     FX_CHECK_EQ(fx_gl_pow(32768, 2 << 16), 16384);
 }
 
@@ -379,13 +379,13 @@ FX_TEST(glut_lighting_local_viewer)
     m.specular[0] = 65536;
     m.shininess = 8 << 16;
     fx32 p[4] = {3 * FX32_ONE, 0, -3 * FX32_ONE, FX32_ONE};
-    fx32 n[3] = {fxg_d2x(0.7071067811865476), 0, fxg_d2x(0.7071067811865476)};
+    fx32 n[3] = {fx_glut_d2x(0.7071067811865476), 0, fx_glut_d2x(0.7071067811865476)};
     fx16 out[4];
     fx_gl_shade(&L, &m, p, n, out);
-    FX_CHECK_MSG(out[0] > fxg_d2c(0.999), "infinite viewer: got %d", out[0]);
+    FX_CHECK_MSG(out[0] > fx_glut_d2c(0.999), "infinite viewer: got %d", out[0]);
     L.local_viewer = 1;
     fx_gl_shade(&L, &m, p, n, out);
-    FX_CHECK_MSG(out[0] > fxg_d2c(0.5306 - 0.001) && out[0] < fxg_d2c(0.5306 + 0.001), "local viewer: got %d",
+    FX_CHECK_MSG(out[0] > fx_glut_d2c(0.5306 - 0.001) && out[0] < fx_glut_d2c(0.5306 + 0.001), "local viewer: got %d",
                  out[0]);
     /* the cached entry point gives the same bits with a local viewer */
     fx_gl_shade_cache c;
