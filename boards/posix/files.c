@@ -7,6 +7,7 @@
 #include "fixel/files.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <fcntl.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -158,4 +159,31 @@ int fx_check_replaceable(const char *path, char *why, size_t whylen)
     if (stat(path, &st) < 0)
         return errno == ENOENT ? 0 : fail(why, whylen);
     return S_ISREG(st.st_mode) ? 0 : not_regular(st.st_mode, why, whylen);
+}
+
+/* One copy for every tool (fixel-demo and fixel-kiosk had one each). */
+int fx_mkdir_parents(const char *path)
+{
+    char p[4096];
+    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    for (char *s = p + 1;; s++) {
+        if (*s != '/' && *s)
+            continue;
+        char c = *s;
+        *s = 0;
+        struct stat st;
+        if (mkdir(p, 0777) < 0 && (errno != EEXIST || stat(p, &st) < 0 || !S_ISDIR(st.st_mode))) {
+            if (errno == EEXIST)
+                errno = ENOTDIR;
+            return -1;
+        }
+        *s = c;
+        if (!c)
+            return 0;
+        while (s[1] == '/')
+            s++;
+    }
 }

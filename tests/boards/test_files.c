@@ -127,3 +127,37 @@ FX_TEST(files_outputs_never_open_or_replace_special_files)
     alarm(0);
     teardown();
 }
+
+/* fx_mkdir_parents: the tools' mkdir -p (fixel-demo and fixel-kiosk used
+ * copies of their own before). */
+FX_TEST(files_mkdir_parents)
+{
+    setup();
+    char deep[160], p[200];
+    snprintf(deep, sizeof deep, "%s/a//b/c/", dir);
+    FX_CHECK_EQ(fx_mkdir_parents(deep), 0);
+    snprintf(p, sizeof p, "%s/a/b/c", dir);
+    struct stat st;
+    FX_CHECK(stat(p, &st) == 0 && S_ISDIR(st.st_mode));
+    FX_CHECK_EQ(fx_mkdir_parents(deep), 0); /* already there */
+    /* a part that is a file: ENOTDIR, nothing made below it */
+    snprintf(p, sizeof p, "%s/x", reg);
+    errno = 0;
+    FX_CHECK_EQ(fx_mkdir_parents(p), -1);
+    FX_CHECK_EQ(errno, ENOTDIR);
+    /* longer than PATH_MAX */
+    char *big = malloc(5000);
+    memset(big, 'a', 4999);
+    big[4999] = 0;
+    errno = 0;
+    FX_CHECK_EQ(fx_mkdir_parents(big), -1);
+    FX_CHECK_EQ(errno, ENAMETOOLONG);
+    free(big);
+    snprintf(p, sizeof p, "%s/a/b/c", dir);
+    rmdir(p);
+    snprintf(p, sizeof p, "%s/a/b", dir);
+    rmdir(p);
+    snprintf(p, sizeof p, "%s/a", dir);
+    rmdir(p);
+    teardown();
+}

@@ -200,33 +200,6 @@ static int time_pages(const char *size, const char *format, const char *threads,
     return 0;
 }
 
-/* mkdir -p: every missing directory of path (errno set on failure). */
-static int mkdir_parents(const char *path)
-{
-    char p[4096];
-    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p) {
-        errno = ENAMETOOLONG;
-        return -1;
-    }
-    for (char *s = p + 1;; s++) {
-        if (*s != '/' && *s)
-            continue;
-        char c = *s;
-        *s = 0;
-        struct stat st;
-        if (mkdir(p, 0777) < 0 && (errno != EEXIST || stat(p, &st) < 0 || !S_ISDIR(st.st_mode))) {
-            if (errno == EEXIST)
-                errno = ENOTDIR;
-            return -1;
-        }
-        *s = c;
-        if (!c)
-            return 0;
-        while (s[1] == '/')
-            s++;
-    }
-}
-
 static int headless(const char *out, int only)
 {
     fx_memfb fb;
@@ -234,7 +207,7 @@ static int headless(const char *out, int only)
         fprintf(stderr, "fixel-demo: out of memory\n");
         return 1;
     }
-    if (mkdir_parents(out) < 0) {
+    if (fx_mkdir_parents(out) < 0) {
         fprintf(stderr, "fixel-demo: cannot create %s: %s\n", out, strerror(errno));
         fx_memfb_destroy(&fb);
         return 1;

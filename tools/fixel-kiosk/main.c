@@ -1638,33 +1638,6 @@ static void mem_report(const char *when, int frame)
     fflush(stdout);
 }
 
-/* mkdir -p: every missing directory of path (errno set on failure). */
-static int mkdir_parents(const char *path)
-{
-    char p[4096];
-    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p) {
-        errno = ENAMETOOLONG;
-        return -1;
-    }
-    for (char *s = p + 1;; s++) {
-        if (*s != '/' && *s)
-            continue;
-        char c = *s;
-        *s = 0;
-        struct stat st;
-        if (mkdir(p, 0777) < 0 && (errno != EEXIST || stat(p, &st) < 0 || !S_ISDIR(st.st_mode))) {
-            if (errno == EEXIST)
-                errno = ENOTDIR;
-            return -1;
-        }
-        *s = c;
-        if (!c)
-            return 0;
-        while (s[1] == '/')
-            s++;
-    }
-}
-
 static void usage(FILE *f)
 {
     fprintf(f,
@@ -1931,7 +1904,7 @@ int main(int argc, char **argv)
         if (k->fd > 0) close(k->fd);
         return 1;
     }
-    if (k->headless && out && mkdir_parents(out) < 0) {
+    if (k->headless && out && fx_mkdir_parents(out) < 0) {
         fprintf(stderr, "fixel-kiosk: cannot create %s: %s\n", out, strerror(errno));
         rc = 1;
     } else if (k->headless) {
@@ -1987,7 +1960,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "fixel-kiosk: screen power: %s%s\n", k->screen.name,
                     k->screen_hw.have_bl ? "" : " (no backlight: on/off only)");
         }
-        if (out && mkdir_parents(out) < 0) {
+        if (out && fx_mkdir_parents(out) < 0) {
             fprintf(stderr, "fixel-kiosk: cannot create %s: %s\n", out, strerror(errno));
             kiosk_screen_close(&k->screen_hw);
             fx_app_close(k->app);

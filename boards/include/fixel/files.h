@@ -47,6 +47,11 @@ FILE *fx_fopen_regular_write(const char *path, int append, char *why, size_t why
  * not exist or is a regular file. -1 otherwise, errno and why set. */
 int fx_check_replaceable(const char *path, char *why, size_t whylen);
 
+/* mkdir -p: creates every missing directory of path (mode 0777 less the
+ * umask). 0, or -1 with errno set: ENOTDIR when a part of it exists and is
+ * not a directory, ENAMETOOLONG past 4095 bytes, else mkdir()'s. */
+int fx_mkdir_parents(const char *path);
+
 #ifdef __cplusplus
 }  /* extern "C" */
 #endif
