@@ -114,7 +114,7 @@ ifeq ($(STATIC),1)
 endif
 PKGS     += $(if $(HAVE_JPEG),libjpeg) $(if $(HAVE_WEBP),libwebp) $(if $(HAVE_QR),libqrencode)
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null) $(if $(HAVE_PNG),,-DFX_NO_PNG -DFX_NO_ZLIB) \
-              $(if $(HAVE_OPT),,-DFX_NO_BOARD_LIBS) \
+              $(if $(HAVE_OPT),,-DFX_NO_BOARD_LIBS) $(if $(HAVE_TEXT),,-DFX_NO_TEXT) \
               $(if $(HAVE_JPEG),,-DFX_NO_JPEG) $(if $(HAVE_WEBP),,-DFX_NO_WEBP) $(if $(HAVE_GIF),,-DFX_NO_GIF) \
               $(if $(HAVE_QR),,-DFX_NO_QR)
 PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS) 2>/dev/null) $(if $(HAVE_GIF),-lgif)
@@ -189,7 +189,7 @@ TEST_DEB_PKGS :=
 BENCH_DEB_PKGS :=
 
 
-.PHONY: all lib tools run run-nodeps test test-nodeps test-bins test-plain test-asan check-freestanding check-layers deps deps-check cross-deps-check test-setup test-setup-run install-build install uninstall \
+.PHONY: all lib tools run run-nodeps test test-nodeps test-bins test-plain test-asan check-freestanding check-layers deps deps-check cross-deps-check test-setup test-setup-run test-setup-deb install-build install uninstall \
         golden-update clean help
 all: lib tools $(BUILD)/fixel.pc
 	$(built_without_summary)
@@ -417,7 +417,7 @@ endif
 # of make's "gcc: No such file or directory" from whichever job ran first.
 # The goals that install the packages themselves (run, test, deps, deb...)
 # go on: their own step names or installs the compiler.
-NO_CC_GOALS := run test deps deps-check clean help uninstall test-setup test-setup-run deb bench-peers glut-deps deps-glut print-%
+NO_CC_GOALS := run test deps deps-check clean help uninstall test-setup test-setup-run test-setup-deb deb bench-peers glut-deps deps-glut print-%
 ifeq ($(shell command -v $(firstword $(CC)) 2>/dev/null),)
 ifneq ($(if $(MAKECMDGOALS),$(filter-out $(NO_CC_GOALS),$(MAKECMDGOALS)),all),)
   $(shell sh tests/deps.sh --no-install --for "make" $(if $(CROSS_COMPILE),$(CROSS_DEB_PKGS),$(sort $(DEB_PKGS))) >&2)
@@ -430,9 +430,11 @@ endif
 # PPM-only images; every build entry (all, install, examples, glut) ends by
 # saying so and naming the packages that bring them (tests/deps.sh).
 BUILT_WITHOUT := $(subst $(eval) ,/,$(strip $(if $(HAVE_OPT),,libdrm/libevdev/libgpiod) $(if $(HAVE_PNG),,libpng) \
-                   $(if $(HAVE_TEXT),,FreeType/HarfBuzz/FriBiDi/fontconfig/libunibreak)))
+                   $(if $(HAVE_TEXT),,FreeType/HarfBuzz/FriBiDi/fontconfig/libunibreak) \
+                   $(if $(HAVE_JPEG),,libjpeg) $(if $(HAVE_GIF),,giflib) $(if $(HAVE_WEBP),,libwebp)))
 BUILT_WITHOUT_PKGS := $(if $(HAVE_OPT),,libdrm-dev libevdev-dev libgpiod-dev) $(if $(HAVE_PNG),,libpng-dev zlib1g-dev) \
-                      $(if $(HAVE_TEXT),,libfreetype-dev libharfbuzz-dev libfribidi-dev libfontconfig-dev libunibreak-dev) pkg-config
+                      $(if $(HAVE_TEXT),,libfreetype-dev libharfbuzz-dev libfribidi-dev libfontconfig-dev libunibreak-dev) \
+                      $(if $(HAVE_JPEG),,libjpeg62-turbo-dev) $(if $(HAVE_GIF),,libgif-dev) $(if $(HAVE_WEBP),,libwebp-dev) pkg-config
 define built_without_summary
 @$(if $(BUILT_WITHOUT),\
   echo; echo "*** fixel: built WITHOUT $(BUILT_WITHOUT) ($(PKG_CONFIG) did not find them) ***"; \
@@ -440,6 +442,9 @@ define built_without_summary
     echo "    no input devices (touch, keyboard, mouse) and no GPIO buttons";) \
   $(if $(HAVE_PNG),,echo "  no libpng: pictures are PPM only (writing or reading .png fails)";) \
   $(if $(HAVE_TEXT),,echo "  no FreeType/HarfBuzz/FriBiDi/fontconfig/libunibreak: no smooth text (PSF fonts only)";) \
+  $(if $(HAVE_JPEG),,echo "  no libjpeg: JPEG pictures are refused";) \
+  $(if $(HAVE_GIF),,echo "  no giflib: GIF pictures and animations are refused";) \
+  $(if $(HAVE_WEBP),,echo "  no libwebp: WebP pictures are refused";) \
   if sh tests/deps.sh --no-install --for "a full fixel build" $(BUILT_WITHOUT_PKGS); then \
     echo "  (the packages are installed, but $(PKG_CONFIG) does not find them: PKG_CONFIG_PATH?)"; \
   else echo "  then run make again (what changed is rebuilt)"; fi; echo,:)
@@ -477,6 +482,10 @@ test-setup:
 	  sh tests/setup/fresh-root.sh $(if $(DEBS),--debs $(DEBS)) build/setup
 test-setup-run:
 	@SETUP_MAKE='$(SETUP_MAKE)' sh tests/setup/fresh-root.sh --no-test $(if $(DEBS),--debs $(DEBS)) build/setup
+# make deb as a new user meets it: a fresh root, a tree without .git, root's
+# first try; then those packages installed in another fresh root.
+test-setup-deb:
+	@SETUP_MAKE='$(SETUP_MAKE)' sh tests/setup/fresh-root.sh --no-run --deb-build build/setup-deb
 
 # ---- install (tools/install.sh: one file list for install and uninstall) ----
 # Every directory can be set on the command line; LIBDIR may be multiarch
@@ -536,6 +545,10 @@ help:
 	@echo '  test-api             the API reference is complete and docs/api current (api-html rewrites it)'
 	@echo '  test-readme          every README.md code block as pasted'
 	@echo '  test-deb-control     make deb'"'"'s packages and libfixel-dev'"'"'s Depends, without building'
+	@echo '  deb                  Debian packages (DEB_ARCHES=amd64 arm64 armhf), lintian, arm renders'
+	@echo '  test-setup           fresh bookworm roots: first make run / make test, user and root (CI)'
+	@echo '  test-setup-run       the same without the make test runs'
+	@echo '  test-setup-deb       make deb from a tree without .git in a fresh root, then those packages installed'
 	@echo '  valgrind             unit, golden and tool suites under memcheck (slow)'
 	@echo '  fuzz                 each libFuzzer target for FUZZ_SECONDS'
 	@echo '  bench, bench-peers   the benchmark table (docs/BENCHMARK.md)'

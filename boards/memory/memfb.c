@@ -396,19 +396,35 @@ int fx_write_image(const char *path, const fx_surface *s)
 }
 
 /* The Makefile compiles every object with FX_NO_PNG when pkg-config found no
- * libpng, and with FX_NO_BOARD_LIBS when it found no libdrm/libevdev/libgpiod
- * (boards/linux/absent then stands in for the DRM and input backends). */
+ * libpng, with FX_NO_BOARD_LIBS when it found no libdrm/libevdev/libgpiod
+ * (boards/linux/absent then stands in for the DRM and input backends),
+ * with FX_NO_TEXT without the text libraries (boards/text/absent) and
+ * FX_NO_JPEG/GIF/WEBP per image decoder. The names are the ones the build's
+ * own summary prints (the Makefile's BUILT_WITHOUT). */
+static const char without[] = ""
+#ifdef FX_NO_BOARD_LIBS
+                              "/libdrm/libevdev/libgpiod"
+#endif
+#ifdef FX_NO_PNG
+                              "/libpng"
+#endif
+#ifdef FX_NO_TEXT
+                              "/FreeType/HarfBuzz/FriBiDi/fontconfig/libunibreak"
+#endif
+#ifdef FX_NO_JPEG
+                              "/libjpeg"
+#endif
+#ifdef FX_NO_GIF
+                              "/giflib"
+#endif
+#ifdef FX_NO_WEBP
+                              "/libwebp"
+#endif
+    ;
+
 const char *fx_built_without(void)
 {
-#if defined(FX_NO_BOARD_LIBS) && defined(FX_NO_PNG)
-    return "libdrm/libevdev/libgpiod/libpng";
-#elif defined(FX_NO_BOARD_LIBS)
-    return "libdrm/libevdev/libgpiod";
-#elif defined(FX_NO_PNG)
-    return "libpng";
-#else
-    return "";
-#endif
+    return without[0] ? without + 1 : without;
 }
 
 const char *fx_built_without_hint(int err)

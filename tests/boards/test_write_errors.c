@@ -93,5 +93,27 @@ FX_TEST(built_without_matches_the_build)
 #else
     FX_CHECK(strstr(w, "libdrm") == NULL);
 #endif
+#ifdef FX_NO_TEXT
+    FX_CHECK(strstr(w, "FreeType/HarfBuzz/FriBiDi/fontconfig/libunibreak") != NULL);
+#else
+    FX_CHECK(strstr(w, "FreeType") == NULL);
+#endif
+#ifdef FX_NO_JPEG
+    FX_CHECK(strstr(w, "libjpeg") != NULL);
+#else
+    FX_CHECK(strstr(w, "libjpeg") == NULL);
+#endif
+#ifdef FX_NO_GIF
+    FX_CHECK(strstr(w, "giflib") != NULL);
+#else
+    FX_CHECK(strstr(w, "giflib") == NULL);
+#endif
+#ifdef FX_NO_WEBP
+    FX_CHECK(strstr(w, "libwebp") != NULL);
+#else
+    FX_CHECK(strstr(w, "libwebp") == NULL);
+#endif
+    /* no separator at either end, none doubled */
+    FX_CHECK(w[0] != '/' && (!*w || w[strlen(w) - 1] != '/') && !strstr(w, "//"));
     FX_CHECK_EQ(strlen(fx_built_without_hint(-FX_EINVAL)), 0);
 }

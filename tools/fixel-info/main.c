@@ -455,11 +455,22 @@ int main(int argc, char **argv)
     }
     /* first, before sections that would only say "none found" */
     const char *without = fx_built_without();
-    if (*without)
-        printf("fixel-info: this fixel was built without %s\n"
-               "  (install %s%s and run make again)\n", without,
-               strstr(without, "libdrm") ? "libdrm-dev libevdev-dev libgpiod-dev" : "",
-               strstr(without, "libpng") ? (strstr(without, "libdrm") ? " libpng-dev zlib1g-dev" : "libpng-dev zlib1g-dev") : "");
+    if (*without) {
+        /* the library names fx_built_without gives, and their Debian packages */
+        static const char *const pkgs[][2] = {
+            {"libdrm", "libdrm-dev libevdev-dev libgpiod-dev"},
+            {"libpng", "libpng-dev zlib1g-dev"},
+            {"FreeType", "libfreetype-dev libharfbuzz-dev libfribidi-dev libfontconfig-dev libunibreak-dev"},
+            {"libjpeg", "libjpeg62-turbo-dev"},
+            {"giflib", "libgif-dev"},
+            {"libwebp", "libwebp-dev"},
+        };
+        printf("fixel-info: this fixel was built without %s\n  (install", without);
+        for (size_t i = 0; i < sizeof pkgs / sizeof pkgs[0]; i++)
+            if (strstr(without, pkgs[i][0]))
+                printf(" %s", pkgs[i][1]);
+        printf(" and run make again)\n");
+    }
     drm_section();
     fbdev_section();
     input_section();

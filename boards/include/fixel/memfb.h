@@ -32,9 +32,12 @@ int fx_write_ppm(const char *path, const fx_surface *s);
 /* By extension: ".ppm" writes PPM, anything else PNG. */
 int fx_write_image(const char *path, const fx_surface *s);
 /* What this build of the library left out, for a program to say: "" when
- * nothing, else the libraries it was built without, as
- * "libdrm/libevdev/libgpiod/libpng" (no DRM/KMS, no input devices, no GPIO
- * buttons, PPM pictures only). */
+ * nothing, else the libraries it was built without, '/'-separated, in this
+ * order: libdrm/libevdev/libgpiod (no DRM/KMS, no input devices, no GPIO
+ * buttons), libpng (PPM pictures only),
+ * FreeType/HarfBuzz/FriBiDi/fontconfig/libunibreak (no smooth text:
+ * fixel/face.h answers -FX_ENOTSUP), libjpeg, giflib, libwebp (that image
+ * format refused). */
 const char *fx_built_without(void);
 /* After a failed picture or display call: when err (a negative fixel error)
  * failed because this build lacks a library (-FX_ENOTSUP from a PNG
