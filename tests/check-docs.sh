@@ -1,15 +1,16 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # The architecture docs name real files: every `path` in backticks in
-# docs/ARCHITECTURE.md, boards/README.md and tests/README.md that looks like
-# a file or folder of this tree (has a / or a source/doc suffix) must exist,
-# read from the top of the tree or, for the short forms the docs use in
-# tables ("raster/line.c", "test_line.c"), under the folders they abbreviate.
+# docs/ARCHITECTURE.md, docs/RECIPES.md, boards/README.md and tests/README.md
+# that looks like a file or folder of this tree (has a / or a source/doc
+# suffix) must exist, read from the top of the tree or, for the short forms
+# the docs use in tables ("raster/line.c", "test_line.c"), under the folders
+# they abbreviate.
 # Names of the API in backticks (fx_..., FX_...) must be in the sources.
 # Placeholders (<name>, NAME, *, ...) and commands are skipped.
 #   sh tests/check-docs.sh [DOC...]
 cd "$(dirname "$0")/.." || exit 1
-[ $# -gt 0 ] || set -- docs/ARCHITECTURE.md boards/README.md tests/README.md
+[ $# -gt 0 ] || set -- docs/ARCHITECTURE.md docs/RECIPES.md boards/README.md tests/README.md
 P=0; F=0
 for doc in "$@"; do
     # backticked spans, one a line; a span with a space is a command or code
