@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* fixel GLUT layer — the calls declared in fixel's GL headers that the
  * layer does not implement: each records GL_INVALID_OPERATION for glGetError
- * and logs its name once (generated from the headers; regenerate when a
- * call gets a real implementation). */
+ * and logs its name once. Written by hand from the headers (no generator:
+ * docs/RECIPES.md says how a call moves out of this file); gl-corners, whose
+ * table is generated from the headers, calls every one of them. */
 #include "glut_int.h"
 
 void glEdgeFlag(GLboolean flag)

@@ -20,7 +20,7 @@
  * of window row Y is h - 1 - Y.
  *
  * Coverage, measured against llvmpipe (Mesa 22.3) and tested in
- * tests/glut/test_glcore.c:
+ * tests/glut/test_glut_raster.c (and against Mesa by tests/glut/compare.c):
  *   triangles  the pixels whose centres are inside; a centre exactly on an
  *              edge is in when that edge is a left edge (the interior lies
  *              to its right) or a bottom horizontal edge, out on right and
