@@ -93,16 +93,16 @@ typedef struct fx_fbm_params {
     uint32_t seed;
 } fx_fbm_params;
 
-/* The heights y(i / (n - 1)), i = 0..n-1, into h[0..n) in Q16.16 units of
- * the standard deviation (|h[i]| <= 2 sqrt(2 terms), so at most 182);
- * p->sd is not used. Cost n x terms sines. Returns 0, or -FX_EINVAL with
+/* The heights of a fractional Brownian curve: y(i / (n - 1)),
+ * i = 0..n-1, into h[0..n) in Q16.16 units of the standard deviation
+ * (|h[i]| <= 2 sqrt(2 terms), so at most 182); p->sd is not used. Cost n x terms sines. Returns 0, or -FX_EINVAL with
  * nothing written when h or p is NULL, n is outside 3..FX_FBM_MAX_SAMPLES,
  * beta outside 0..4, or terms outside 1..FX_FBM_MAX_TERMS or above
  * (n - 1) / 2 (a frequency above half the sampling rate would alias). */
 int fx_fbm_heights(fx16 *h, int32_t n, const fx_fbm_params *p);
 
-/* The polyline through the n points P(t) + sd * h[i] * (-(y1 - y0), x1 - x0),
- * t = i / (n - 1), where P runs from (x0, y0) to (x1, y1): heights from
+/* Draws heights along a chord: the polyline through the n points
+ * P(t) + sd * h[i] * (-(y1 - y0), x1 - x0), t = i / (n - 1), where P runs from (x0, y0) to (x1, y1): heights from
  * fx_fbm_heights, displaced at right angles to the chord (towards +y of the
  * frame for a chord along +x, so upward after 'coords course') by sd
  * chord lengths per unit. Points are computed in 48.16 and rounded to the
@@ -113,9 +113,11 @@ int fx_fbm_heights(fx16 *h, int32_t n, const fx_fbm_params *p);
 int32_t fx_fbm_draw(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1, const fx16 *h, int32_t n,
                     fx16 sd);
 
-/* Both: heights into the caller's work[0..n) (n samples, e.g. one per
- * pixel of the chord), then the curve. Returns the segments drawn or
- * -FX_EINVAL (either function's conditions; nothing drawn). */
+/* A fractional Brownian curve from (x0, y0) to (x1, y1): heights into the
+ * caller's work[0..n) by fx_fbm_heights (n samples; a few per pixel of the
+ * chord keep it rough down to the pixel), then fx_fbm_draw with p->sd.
+ * Returns the segments drawn or -FX_EINVAL (either function's
+ * conditions; nothing drawn). */
 int32_t fx_fbm_spectral(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1, const fx_fbm_params *p,
                         fx16 *work, int32_t n);
 
