@@ -148,6 +148,8 @@ A(koch, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), IW("ORDER", 0, 1000));
 A(snowflake, XY("CX"), XY("CY"), I("R", 0, CO), IW("ORDER", 0, 1000));
 A(fractline, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), F("BETA", 0, 3), F("SD", 0, 1),
   I("SEED", INT32_MIN, INT32_MAX));
+A(fbmcurve, XY("X0"), XY("Y0"), XY("X1"), XY("Y1"), F("BETA", 0, 4), F("SD", 0, 1), I("SEED", INT32_MIN, INT32_MAX),
+  OPT, IW("TERMS", 1, 2048));
 A(coastline, F("BETA", 0, 3), F("SD", 0, 1), I("SEED", INT32_MIN, INT32_MAX), REP("vertex", 3, 32), XY("X"),
   XY("Y"));
 A(spacefill, XY("X"), XY("Y"), I("SIZE", 1, CO), IW("ORDER", 0, 1000));
@@ -350,7 +352,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"gouraudtri", a_gouraudtri, 0, 0}, {"gouraudpoly", a_gouraudpoly, 0, 0}, {"blend", a_blend, 0, 0},
     {"pattern", a_pattern, 0, 0}, {"hatch", a_hatch, 0, 0},
     {"colormap", a_colormap, 0, 0}, {"insidecolor", a_color, 0, 0}, {"mandelbrot", a_mandelbrot, 0, 0},
-    {"julia", a_julia, 0, 0}, {"koch", a_koch, 0, 0}, {"snowflake", a_snowflake, 0, 0}, {"fractline", a_fractline, 0, 0},
+    {"julia", a_julia, 0, 0}, {"koch", a_koch, 0, 0}, {"snowflake", a_snowflake, 0, 0}, {"fractline", a_fractline, 0, 0}, {"fbmcurve", a_fbmcurve, 0, "4 samples per pixel of the chord (at most 65537) x TERMS sines"},
     {"coastline", a_coastline, 0, 0}, {"hilbert", a_spacefill, 0, 0}, {"peano", a_spacefill, 0, 0},
     {"ifsmap", a_ifsmap, 0, 0}, {"ifswindow", a_ifswindow, 0, 0},
     {"ifs", a_ifs, "ifsmap 0.5 0 0 0.5 0 0 0.5\nifsmap 0.5 0 0 0.5 0.5 0 0.5\nifswindow 0 0 1 1", 0},

@@ -739,6 +739,60 @@ static int cmd_orbit(fx_scene *sc)
     return 0;
 }
 
+/* ---- issue #44: fractional Brownian curves by spectral synthesis ---- */
+
+/* Four samples per pixel of the chord keep the curve rough down to the
+ * pixel (a sum stopping at half the sampling rate is smooth for a few
+ * samples below it); a chord beyond 16384 px (the largest surface) still
+ * gets 65537, so the work stays within FBM_CMD_SAMPLES x TERMS sines. */
+#define FBM_CMD_SAMPLES 65537
+#define FBM_CMD_TERMS 2048
+
+/* fbmcurve X0 Y0 X1 Y1 BETA SD SEED [TERMS]: fractline's arguments, so a
+ * script can swap one for the other and compare; TERMS defaults to the
+ * most the samples carry (capped at 1024). */
+static int cmd_fbmcurve(fx_scene *sc)
+{
+    int32_t v[4], seed, terms = 0;
+    fx16 beta, sd;
+    TRY(ints(sc, v, 4));
+    TRY(fx_scene_arg_fx16(sc, &beta));
+    TRY(fx_scene_arg_fx16(sc, &sd));
+    TRY(fx_scene_arg_int(sc, &seed));
+    if (fx_scene_more(sc)) {
+        TRY(fx_scene_arg_int(sc, &terms));
+        if (terms < 1 || terms > FBM_CMD_TERMS)
+            return fx_scene_error(sc, "TERMS %d out of range (1..%d)", terms, FBM_CMD_TERMS);
+    }
+    TRY(fx_scene_end(sc));
+    if (beta < 0 || beta > 4 * FX16_ONE)
+        return fx_scene_error(sc, "BETA out of range (0..4)");
+    if (sd < 0 || sd > FX16_ONE)
+        return fx_scene_error(sc, "SD out of range (0..1 chord lengths)");
+    int64_t dx = (int64_t)v[2] - v[0], dy = (int64_t)v[3] - v[1];
+    if (dx < 0)
+        dx = -dx;
+    if (dy < 0)
+        dy = -dy;
+    int64_t n = 4 * (dx > dy ? dx : dy) + 1;
+    if (n > FBM_CMD_SAMPLES)
+        n = FBM_CMD_SAMPLES;
+    if (terms == 0)
+        terms = n < 3 ? 1 : n > 2049 ? 1024 : (int32_t)(n - 1) / 2;
+    if (n < 2 * (int64_t)terms + 1)
+        n = 2 * (int64_t)terms + 1; /* no frequency above half the sampling rate */
+    fx16 *h = scratch(sc, (size_t)n * sizeof(fx16));
+    if (!h)
+        return fx_scene_error(sc, "out of scene memory for the curve's heights");
+    fx_fbm_params p = {beta, sd, (uint32_t)terms, (uint32_t)seed};
+    if (fx_fbm_spectral(&sc->ctx, v[0], v[1], v[2], v[3], &p, h, (int32_t)n) < 0)
+        return fx_scene_error(sc, "fbmcurve arguments out of range");
+    char b[24];
+    fx_trace(&sc->ctx, "fbmcurve: %d samples, %d terms, D = (5 - beta) / 2 = %s", (int)n, terms,
+             dec4(b, sizeof b, (5 * (int64_t)FX16_ONE - beta) / 2));
+    return 0;
+}
+
 static int cmd_mountain(fx_scene *sc)
 {
     fx16 size, height, rough = 45875 /* 0.7 */, sea = 13107 /* 0.2 */;
@@ -926,6 +980,10 @@ const fx_scene_cmd fx_scene_cmds_fractal[] = {
     {"orbit", cmd_orbit,
      "orbit C_RE C_IM N [CENTRE_RE CENTRE_IM WIDTH]   (the orbit of 0 under z^2 + c: its first values, "
      "explodes / fixed point / spiral / cycle of period p, drawn over the Mandelbrot view)",
+     FX_SCENE_DRAWS},
+    {"fbmcurve", cmd_fbmcurve,
+     "fbmcurve X0 Y0 X1 Y1 BETA SD SEED [TERMS]   (fractional Brownian curve by spectral synthesis: sinusoids "
+     "with amplitudes k^(-BETA/2), D = (5 - BETA)/2; SD in chord lengths)",
      FX_SCENE_DRAWS},
     {0, 0, 0, 0},
 };

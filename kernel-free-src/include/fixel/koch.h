@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* fixel — geometric and random fractal curves: Koch curves and snowflakes,
  * midpoint displacement (fractal lines, coastlines), diamond-square terrain,
- * and the Hilbert and Peano space-filling curves.
+ * fractional Brownian curves by spectral synthesis, and the Hilbert and
+ * Peano space-filling curves.
  *
  * Koch: an integer turtle on 40.24 fixed-point positions. Each segment from
  * S to E of order m > 0 becomes four of order m - 1: forward a third, turn
@@ -65,6 +66,60 @@ uint32_t fx_fractline(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32
  * fractal line, all from one random stream seeded with p->seed. c, xy or p
  * NULL, or n outside 1..INT32_MAX/2: nothing drawn, 0 returned. */
 uint32_t fx_coastline(const fx_ctx *c, const int32_t *xy, int n, const fx_fract_params *p);
+
+/* Fractional Brownian curves by spectral synthesis (issue #44): the
+ * course's 1/f^beta curve, whose graph has the box-counting dimension
+ * D = (5 - beta) / 2 for 1 < beta < 3 (Hurst exponent H = (beta - 1) / 2).
+ * Unlike midpoint displacement, which builds the curve from the top level
+ * down and is smooth below the scale where its displacements shrink
+ * (fx_fractline measures D near 1 for every beta), every scale is present
+ * at once: the height is the sum of sinusoids
+ *   y(t) = sum_{k=1..terms} k^(-beta/2) sin(2 pi k t + phi_k),  t in [0, 1],
+ * so the power at frequency k falls as k^-beta. The phases phi_k are
+ * uniform binary angles from a xorshift32 stream seeded with seed (drawn
+ * in order k = 1, 2, ...), so a seed gives the same curve on every target.
+ * y is scaled to unit standard deviation (the RMS over t of the sum) and
+ * shifted so that y(0) = y(1) = 0 (y has period 1), so the curve leaves
+ * and ends on its chord. Amplitudes are Q2.30 from fx16_exp2 and the sines
+ * fx_sin30; each term is rounded to Q16.16 once, so a height is within
+ * terms * 2^-16 of the exact sum for those amplitudes and phases. */
+#define FX_FBM_MAX_TERMS 4096        /* frequencies k = 1..terms */
+#define FX_FBM_MAX_SAMPLES (1 << 20) /* heights computed (work: samples x terms) */
+
+typedef struct fx_fbm_params {
+    fx16 beta;      /* spectral exponent, 0..4 (D = (5 - beta) / 2 holds for 1 < beta < 3) */
+    fx16 sd;        /* standard deviation of the height, in chord lengths, 0..1 */
+    uint32_t terms; /* sinusoids summed, 1..FX_FBM_MAX_TERMS, at most (n - 1) / 2 */
+    uint32_t seed;
+} fx_fbm_params;
+
+/* The heights of a fractional Brownian curve: y(i / (n - 1)),
+ * i = 0..n-1, into h[0..n) in Q16.16 units of the standard deviation
+ * (|h[i]| <= 2 sqrt(2 terms), so at most 182); p->sd is not used. Cost n x terms sines. Returns 0, or -FX_EINVAL with
+ * nothing written when h or p is NULL, n is outside 3..FX_FBM_MAX_SAMPLES,
+ * beta outside 0..4, or terms outside 1..FX_FBM_MAX_TERMS or above
+ * (n - 1) / 2 (a frequency above half the sampling rate would alias). */
+int fx_fbm_heights(fx16 *h, int32_t n, const fx_fbm_params *p);
+
+/* Draws heights along a chord: the polyline through the n points
+ * P(t) + sd * h[i] * (-(y1 - y0), x1 - x0), t = i / (n - 1), where P runs from (x0, y0) to (x1, y1): heights from
+ * fx_fbm_heights, displaced at right angles to the chord (towards +y of the
+ * frame for a chord along +x, so upward after 'coords course') by sd
+ * chord lengths per unit. Points are computed in 48.16 and rounded to the
+ * nearest pixel (ties up), saturating at the int32 range; segments are
+ * fx_line. Any int32 end points. Returns the segments drawn (n - 1), or
+ * -FX_EINVAL when c or h is NULL, n is outside 2..FX_FBM_MAX_SAMPLES or sd
+ * is outside 0..1 (FX16_ONE). */
+int32_t fx_fbm_draw(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1, const fx16 *h, int32_t n,
+                    fx16 sd);
+
+/* A fractional Brownian curve from (x0, y0) to (x1, y1): heights into the
+ * caller's work[0..n) by fx_fbm_heights (n samples; a few per pixel of the
+ * chord keep it rough down to the pixel), then fx_fbm_draw with p->sd.
+ * Returns the segments drawn or -FX_EINVAL (either function's
+ * conditions; nothing drawn). */
+int32_t fx_fbm_spectral(const fx_ctx *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1, const fx_fbm_params *p,
+                        fx16 *work, int32_t n);
 
 /* Diamond-square terrain on a (2^k + 1)^2 grid (k = 1..12) into h (row
  * stride in elements): corners and every new point get uniform noise of
