@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* fixel — kinematics of a jointed chain (issue #44, the notes' "motion":
- * kinematics and goal-directed systems): forward kinematics (joint angles
- * and link lengths give the joint positions), inverse kinematics by cyclic
- * coordinate descent (an arm reaching a target), and a goal-directed
- * motion (a point moving at a bounded speed toward a goal, the arm
- * following it).
+/* fixel — kinematics of a jointed chain, an arm reaching a target.
+ *
+ * Issue #44, the notes' "motion" (kinematics and goal-directed systems):
+ * forward kinematics (joint angles and link lengths give the joint
+ * positions), inverse kinematics by cyclic coordinate descent, and a
+ * goal-directed motion (a point moving at a bounded speed toward a goal,
+ * the arm following it).
  *
  * A planar chain of n links hangs from a base (x, y). Joint i turns link i
  * by theta[i] relative to link i - 1 (link 0 relative to the chain's
@@ -63,12 +64,16 @@ int fx_kin_forward(const fx_kin_chain *c, const fx_angle *theta, fx16 *xy);
 /* Inverse kinematics by cyclic coordinate descent: each sweep turns the
  * joints from the last to the first, each so that the line from that joint
  * to the end passes through the target (fx_atan2 of the two directions),
- * until |end - target| <= tol or max_iter sweeps have run. theta holds the
- * start on entry (the previous frame's pose: the arm moves continuously)
- * and the pose on return. A target at or beyond the reach (|target - base|
- * >= total length) is answered in closed form: the straight arm pointing
- * at it (theta[0] toward the target, the others 0), which is the nearest
- * the end can come. Targets inside the reach that no pose touches (a long
+ * except that joint 1 takes, when it exists, the closed-form bend of the
+ * triangle (link 0, the rest of the chain as one rigid piece, the
+ * base-to-target distance) by the law of cosines, since plain CCD creeps
+ * when the arm is nearly straight; joint 0 then turns the end onto the
+ * target. The sweeps run until |end - target| <= tol or max_iter sweeps
+ * have run. theta holds the start on entry (the previous frame's pose: the
+ * arm moves continuously) and the pose on return. A target at or beyond
+ * the reach less the tolerance (|target - base| >= total length - tol) is
+ * answered in closed form: the straight arm pointing at it (theta[0]
+ * toward the target, the others 0), the nearest the end can come. Targets inside the reach that no pose touches (a long
  * first link and short others leave a hole round the base) give the best
  * pose found within max_iter, reached 0.
  * Returns the sweeps used (0..max_iter), res filled when not NULL; or
