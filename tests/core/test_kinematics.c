@@ -321,3 +321,23 @@ FX_TEST(kinem_arm_follows_the_goal)
         FX_CHECK(hypot(trail[2 * f] / U - ox, trail[2 * f + 1] / U - oy) <= 2 + 2 * tol / U + 1e-4);
     }
 }
+
+/* A long first link leaves a hole round the base that no pose reaches: the
+ * solve spends its sweeps, says so, and its distance is never below the
+ * hole's true gap (L0 - the rest - |target - base|). */
+FX_TEST(kinem_hole_round_the_base_is_not_reached)
+{
+    fx16 len[3] = {100 << 16, 30 << 16, 20 << 16};
+    fx_kin_chain c = {0, 0, 0, 3, len};
+    for (int k = 0; k < 40; k++) {
+        fx_angle th[3] = {(fx_angle)k * 0x06000000u, 0x40000000u, 0};
+        double a = k * 0.3, r = 5 + k;
+        fx16 tx = (fx16)lround(r * cos(a) * U), ty = (fx16)lround(r * sin(a) * U);
+        fx_kin_result res;
+        FX_CHECK_EQ(fx_kin_ccd(&c, th, tx, ty, 65536 / 64, 60, &res), 60);
+        FX_CHECK_EQ(res.reached, 0);
+        double gap = 100 - 50 - hypot(tx / U, ty / U);
+        FX_CHECK_MSG(res.distance / U >= gap - 1e-3, "target %d: distance %.4f below the gap %.4f", k,
+                     res.distance / U, gap);
+    }
+}
