@@ -12,6 +12,7 @@
 #include "fixel/circle.h"
 #include "fixel/error.h"
 #include "fixel/fill.h"
+#include "fixel/kinematics.h"
 #include "fixel/line.h"
 #include "fixel/scene.h"
 #include "fixel/xform.h"
@@ -33,6 +34,8 @@
 #define NAME_MAX 24
 #define REC_BYTES 65536
 #define REC_LINES 1024
+#define ARM_SWEEPS 256 /* CCD sweeps per solve of 'arm' and per step of 'armgoal' */
+#define ARM_STEPS 4096
 
 typedef struct track {
     char name[NAME_MAX];
@@ -516,6 +519,100 @@ static int cmd_bounce(fx_scene *sc)
     return 0;
 }
 
+/* ---- kinematics (issue #44): an arm reaching a target ---- */
+
+/* X Y and the lengths L... of an arm command; the chain from the base along
+ * +x with every joint at 0 (the straight arm) as the starting pose. */
+static int arm_args(fx_scene *sc, int32_t *xy, int nxy, fx16 *speed, int32_t *steps, fx16 *len, int32_t *n)
+{
+    for (int i = 0; i < nxy; i++)
+        TRY(fx_scene_arg_int(sc, &xy[i]));
+    if (speed) {
+        TRY(fx_scene_arg_fx16(sc, speed));
+        TRY(fx_scene_arg_int(sc, steps));
+    }
+    int64_t sum = 0;
+    *n = 0;
+    while (fx_scene_more(sc)) {
+        int32_t l;
+        if (*n == FX_KIN_MAX_JOINTS)
+            return fx_scene_error(sc, "at most %d links (FX_KIN_MAX_JOINTS)", FX_KIN_MAX_JOINTS);
+        TRY(fx_scene_arg_int(sc, &l));
+        sum += l;
+        len[(*n)++] = fx16_from_int(l);
+    }
+    TRY(fx_scene_end(sc));
+    if (!*n)
+        return fx_scene_error(sc, "an arm needs at least one link length");
+    if (sum > FX_KIN_REACH)
+        return fx_scene_error(sc, "the links' total length %lld is over %d (FX_KIN_REACH)", (long long)sum,
+                              FX_KIN_REACH);
+    return 0;
+}
+
+/* The chain (links, a ring at each joint, a dot at the end) and the target
+ * (a ringed cross). */
+static void draw_arm(fx_scene *sc, const fx_kin_chain *c, const fx_angle *theta, fx16 tx, fx16 ty)
+{
+    fx16 p[2 * (FX_KIN_MAX_JOINTS + 1)];
+    int32_t x[FX_KIN_MAX_JOINTS + 1], y[FX_KIN_MAX_JOINTS + 1];
+    fx_kin_forward(c, theta, p);
+    for (int32_t i = 0; i <= c->n; i++)
+        map(sc, p[2 * i], p[2 * i + 1], &x[i], &y[i]);
+    for (int32_t i = 0; i < c->n; i++)
+        fx_line(&sc->ctx, x[i], y[i], x[i + 1], y[i + 1]);
+    for (int32_t i = 0; i < c->n; i++)
+        fx_circle(&sc->ctx, x[i], y[i], 4);
+    fx_disc(&sc->ctx, x[c->n], y[c->n], 3);
+    int32_t gx, gy;
+    map(sc, tx, ty, &gx, &gy);
+    fx_line(&sc->ctx, gx - 6, gy, gx + 6, gy);
+    fx_line(&sc->ctx, gx, gy - 6, gx, gy + 6);
+    fx_circle(&sc->ctx, gx, gy, 6);
+}
+
+static int cmd_arm(fx_scene *sc)
+{
+    int32_t v[4], n;
+    fx16 len[FX_KIN_MAX_JOINTS];
+    fx_angle theta[FX_KIN_MAX_JOINTS] = {0};
+    TRY(arm_args(sc, v, 4, 0, 0, len, &n));
+    fx_kin_chain c = {fx16_from_int(v[0]), fx16_from_int(v[1]), 0, n, len};
+    fx16 tx = fx16_from_int(v[2]), ty = fx16_from_int(v[3]);
+    if (fx_kin_ccd(&c, theta, tx, ty, FX16_ONE / 64, ARM_SWEEPS, 0) < 0)
+        return fx_scene_error(sc, "arm: a coordinate is past +-%d (FX_KIN_COORD)", FX_KIN_COORD);
+    draw_arm(sc, &c, theta, tx, ty);
+    return 0;
+}
+
+static int cmd_armgoal(fx_scene *sc)
+{
+    int32_t v[4], n, steps;
+    fx16 len[FX_KIN_MAX_JOINTS], speed, trail[2 * ARM_STEPS];
+    fx_angle theta[FX_KIN_MAX_JOINTS] = {0};
+    TRY(arm_args(sc, v, 4, &speed, &steps, len, &n));
+    if (steps < 0 || steps > ARM_STEPS)
+        return fx_scene_error(sc, "STEPS %d out of range, expected 0..%d", steps, ARM_STEPS);
+    fx_kin_chain c = {fx16_from_int(v[0]), fx16_from_int(v[1]), 0, n, len};
+    fx16 px, py, gx = fx16_from_int(v[2]), gy = fx16_from_int(v[3]);
+    fx16 p[2 * (FX_KIN_MAX_JOINTS + 1)];
+    fx_kin_forward(&c, theta, p); /* the aim starts at the straight arm's end */
+    px = p[2 * n], py = p[2 * n + 1];
+    if (fx_kin_follow(&c, theta, &px, &py, gx, gy, speed, steps, FX16_ONE / 64, ARM_SWEEPS, trail) < 0)
+        return fx_scene_error(sc, "armgoal: the straight arm's end, where the aim starts, is past +-%d "
+                                  "(FX_KIN_COORD)", FX_KIN_COORD);
+    int32_t ox, oy;
+    map(sc, p[2 * n], p[2 * n + 1], &ox, &oy);
+    for (int32_t f = 0; f < steps; f++) { /* the end's path, frame by frame */
+        int32_t x, y;
+        map(sc, trail[2 * f], trail[2 * f + 1], &x, &y);
+        fx_line(&sc->ctx, ox, oy, x, y);
+        ox = x, oy = y;
+    }
+    draw_arm(sc, &c, theta, gx, gy);
+    return 0;
+}
+
 /* ---- motion blur ---- */
 
 int fx_scene_anim_recording(const fx_scene *sc)
@@ -646,6 +743,10 @@ const fx_scene_cmd fx_scene_cmds_anim[] = {
     {"morph", cmd_morph, "morph A B fill|outline|vertices T0 T1 [none|in|out|inout|smooth] (A at T0 to B at T1)", D},
     {"bounce", cmd_bounce, "bounce X0 Y0 X1 Y1 X Y VX VY G E R [TRAIL] (a ball in the box at the clock)", D},
     /* the accumulation reads and writes the whole clip rectangle, not a band's rows */
+    {"arm", cmd_arm, "arm X Y TX TY L1 [L2 ...] (a chain of links from X Y reaching for TX TY by CCD)", D},
+    {"armgoal", cmd_armgoal,
+     "armgoal X Y GX GY SPEED STEPS L1 [L2 ...] (the arm's end moving toward GX GY, SPEED a step, for STEPS steps)",
+     D},
     {"blur", cmd_blur, "blur N SHUTTER (the lines up to 'endblur' drawn at N times across SHUTTER, averaged)",
      D | FX_SCENE_SERIAL},
     {"endblur", cmd_endblur, "endblur", D | FX_SCENE_SERIAL},

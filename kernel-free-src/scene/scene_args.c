@@ -30,6 +30,7 @@
 #include "fixel/turtle.h"
 #include "scene_fractal.h"
 #include "fixel/anim.h"
+#include "fixel/kinematics.h"
 
 #define CO 1048576 /* coordinate bound, 2^20 */
 #define G3 1024    /* 3D geometry bound */
@@ -316,6 +317,11 @@ A(bounce, I("X0", -FX_ANIM_BALL_POS, FX_ANIM_BALL_POS), I("Y0", -FX_ANIM_BALL_PO
   F("VX", -FX_ANIM_BALL_SPEED, FX_ANIM_BALL_SPEED), F("VY", -FX_ANIM_BALL_SPEED, FX_ANIM_BALL_SPEED),
   F("G", 0, FX_ANIM_BALL_G), F("E", 0, 1), I("R", 0, 1024), OPT, IW("TRAIL", 1, 4096));
 A(blur, IW("N", 1, 64), TM("SHUTTER"));
+#define KC(n) I(n, -FX_KIN_COORD, FX_KIN_COORD)
+#define KLINKS REP("link", 1, FX_KIN_MAX_JOINTS), I("L", 0, FX_KIN_REACH)
+A(arm, KC("X"), KC("Y"), KC("TX"), KC("TY"), KLINKS);
+A(armgoal, KC("X"), KC("Y"), KC("GX"), KC("GY"), F("SPEED", 0, FX_KIN_REACH), IW("STEPS", 0, 4096), KLINKS);
+#define ARMW "at most 256 CCD sweeps (each N^2 link evaluations, N <= 16 links) per step; the links' total length at most 8192 (FX_KIN_REACH)"
 #define BLURW "N runs of the block's lines (at most 1024 lines, 64 KiB), each preceded by a copy of the arena and the pixels"
 #define BALLW "at most 4096 impacts solved per position (FX_ANIM_BALL_MAX_BOUNCES), TRAIL + 1 positions"
 #define KEYS2 "key a 0 0 0\nkey a 1 10 10"
@@ -411,6 +417,7 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"time", a_time, 0, 0}, {"key", a_key, 0, 0}, {"keycolor", a_keycolor, 0, 0}, {"interp", a_interp, 0, 0},
     {"ease", a_ease, 0, 0}, {"tween", a_tween, KEYS2, 0}, {"path", a_path, KEYS2, 0}, {"shape", a_shape, 0, 0},
     {"morph", a_morph, "shape a 0 0 10 0 0 10\nshape b 0 0 10 0 10 10 0 10", 0}, {"bounce", a_bounce, 0, BALLW},
+    {"arm", a_arm, 0, ARMW}, {"armgoal", a_armgoal, 0, ARMW},
     {"blur", a_blur, 0, BLURW}, {"endblur", a_none, "blur 2 0.1", BLURW},
     /* issue #44 (the course's remaining methods) */
     {"gouraudscan", a_gouraudscan, 0, 0}, {"orbit", a_orbit, 0, 0},

@@ -83,6 +83,7 @@
 #include "fixel/ifs.h"
 #include "fixel/input.h"
 #include "fixel/julia.h"
+#include "fixel/kinematics.h"
 #include "fixel/koch.h"
 #include "fixel/line.h"
 #include "fixel/mask.h"
