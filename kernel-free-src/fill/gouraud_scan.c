@@ -43,7 +43,7 @@ int fx_fill_poly_gouraud_scan(const fx_ctx *c, const int32_t *xy, const fx_color
                 continue;
             int64_t dy = yb - ya, t = y - ya;
             xing e;
-            e.x = (xa << 16) + div_round(t * (xb - xa) * 65536, dy);
+            e.x = xa * 65536 + div_round(t * (xb - xa) * 65536, dy);
             /* ceil of the exact rational crossing xa + t (xb - xa) / dy, as fill.h's rule */
             int64_t num = xa * dy + t * (xb - xa), den = dy;
             if (den < 0)
@@ -66,7 +66,7 @@ int fx_fill_poly_gouraud_scan(const fx_ctx *c, const int32_t *xy, const fx_color
         for (int64_t x = xa; x < xb; x++) {
             fx_color out = 0;
             for (int k = 0; k < 4; k++) {
-                int64_t v = l.c[k] + div_round((r.c[k] - l.c[k]) * ((x << 16) - l.x), w);
+                int64_t v = l.c[k] + div_round((r.c[k] - l.c[k]) * (x * 65536 - l.x), w);
                 int64_t b = (v + 32768) >> 16;
                 out |= (fx_color)(b < 0 ? 0 : b > 255 ? 255 : b) << (24 - 8 * k);
             }

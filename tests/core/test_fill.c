@@ -712,4 +712,23 @@ FX_TEST(gouraud_scan_is_the_notes_scan_line_rule)
     FX_CHECK_EQ(fx_fill_poly_gouraud_scan(&ca, quad, col, 2), -FX_EINVAL);
     const int32_t far[6] = {0, 0, FX_GOURAUD_SCAN_COORD + 1, 0, 0, 5};
     FX_CHECK_EQ(fx_fill_poly_gouraud_scan(&ca, far, col, 3), -FX_EINVAL);
+    /* off the left edge and at the coordinate limits: the crossings of
+     * negative x were shifted left (UB, found by fuzz_grammar); the
+     * visible part is the same as fx_fill_poly's */
+    const int32_t left[6] = {-14, 0, 30, 2, 5, 30};
+    const int32_t huge[6] = {-FX_GOURAUD_SCAN_COORD, -FX_GOURAUD_SCAN_COORD, FX_GOURAUD_SCAN_COORD, 3,
+                             -FX_GOURAUD_SCAN_COORD, FX_GOURAUD_SCAN_COORD};
+    const int32_t *cases[2] = {left, huge};
+    for (int k = 0; k < 2; k++) {
+        memset(a, 0, sizeof a), memset(b, 0, sizeof b);
+        FX_CHECK_EQ(fx_fill_poly_gouraud_scan(&ca, cases[k], col, 3), 0);
+        cb.color = 0xFFFFFFFFu;
+        FX_CHECK_EQ(fx_fill_poly(&cb, cases[k], 3, FX_FILL_EVENODD), 0);
+        int lit = 0, agree = 1;
+        for (int i = 0; i < 32 * 32; i++) {
+            lit += a[i] != 0;
+            agree &= (a[i] != 0) == (b[i] != 0);
+        }
+        FX_CHECK_MSG(lit > 0 && agree, "case %d: %d lit", k, lit);
+    }
 }
