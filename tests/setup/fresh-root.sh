@@ -16,14 +16,21 @@
 #         libfixel0, libfixel-dev and fixel-tools into a third untouched root,
 #         the README's example builds there with pkg-config and runs, and the
 #         packaged fixel-draw renders.
+#   deb-build with --deb-build: in another untouched root, root's first `make
+#         deb DEB_ARCHES=<native>` in a copy of the tree without .git (what
+#         a release tarball or a ZIP gives) installs its build set, builds
+#         the packages and passes lintian; those packages are then the ones
+#         the debs step installs (unless --debs names others).
 # The suites' totals are added to this script's own. Every root is copied
 # from one mmdebstrap run and removed on every exit path; packages come from
 # the Debian mirror. Within one run the roots share one apt archive directory
 # (bind-mounted /var/cache/apt/archives), so a package is downloaded once per
 # run, not once per root; apt still resolves and installs everything in each.
 #
-# usage: fresh-root.sh [--no-test] [--debs DIR] [WORKDIR]   (root; default WORKDIR build/setup)
+# usage: fresh-root.sh [--no-test] [--no-run] [--deb-build] [--debs DIR] [WORKDIR]
+#                        (root; default WORKDIR build/setup)
 #   --no-test                skips both make test runs (make test-setup-run)
+#   --no-run                 skips the user's and root's steps (make test-setup-deb)
 #   SETUP_TEST_ARGS=...      variables for root's make test (make test-setup
 #                            passes the CI subset: tests/README.md, "CI")
 #   SETUP_USER_TEST_ARGS=... the same for the user's make test (default: as root's)
@@ -32,12 +39,14 @@
 # Ends with "setup: N passed, N failed". Commits only: the copy is a clone of
 # HEAD, uncommitted changes are not in it.
 set -u
-do_test=1; debs=""
+do_test=1; do_run=1; deb_build=0; debs=""
 while :; do
     case ${1:-} in
     --test) do_test=1; shift ;;
     --no-test) do_test=0; shift ;;
     --debs) debs=$(cd "$2" && pwd); shift 2 ;;
+    --no-run) do_run=0; shift ;;
+    --deb-build) deb_build=1; shift ;;
     *) break ;;
     esac
 done
@@ -67,7 +76,7 @@ exec 9> "$W/.lock"
 if ! flock -n 9; then fail "another fresh-root.sh runs in $W"; exit 1; fi
 if grep -q " $W/" /proc/mounts; then fail "mounts left under $W (umount -R them)"; exit 1; fi
 
-ROOTS="$W/pristine $W/user $W/root $W/deb $W/archives"
+ROOTS="$W/pristine $W/user $W/root $W/debsrc $W/deb $W/debs-built $W/archives"
 MOUNTED=""
 umount_all() {
     for m in $MOUNTED; do umount -R "$m" 2>/dev/null || umount -R -l "$m" 2>/dev/null; done
@@ -144,12 +153,17 @@ if bootstrap || { tail -n 5 "$W/mmdebstrap.log"; echo "fresh-root.sh: mmdebstrap
 else
     tail -n 20 "$W/mmdebstrap.log"; fail "mmdebstrap bookworm, twice (mirror unreachable?)"; finish
 fi
-for r in user root deb; do
-    [ $r = deb ] && [ -z "$debs" ] && continue
+for r in user root debsrc deb; do
+    case $r in
+    user|root) [ $do_run = 1 ] || continue ;;
+    debsrc) [ $deb_build = 1 ] || continue ;;
+    deb) [ -n "$debs" ] || [ $deb_build = 1 ] || continue ;;
+    esac
     cp -a "$W/pristine" "$W/$r"
 done
 
 # --- a normal user: the exact line, then success --------------------------------
+if [ $do_run = 1 ]; then
 t0=$(now)
 U=$W/user
 echo 'fx:x:1000:1000:fixel user:/home/fx:/bin/sh' >> "$U/etc/passwd"
@@ -258,6 +272,31 @@ if [ $do_test = 1 ]; then
     fi
 fi
 umount_all
+fi # do_run
+
+# --- make deb in a fresh root, from a tree without .git -------------------------
+if [ $deb_build = 1 ]; then
+    t0=$(now)
+    S=$W/debsrc
+    arch=$(dpkg --print-architecture)
+    mkdir -p "$S/root/fixel-src"
+    # git archive: a release tarball of HEAD (no .git, no build/)
+    git -C "$SRC" archive --format=tar HEAD | tar -x -C "$S/root/fixel-src"
+    mount_in "$S"
+    in_root "$S" "cd /root/fixel-src && $MK deb DEB_ARCHES=$arch" > "$W/debsrc.log" 2>&1; rc=$?
+    built=$(ls "$S/root/fixel-src/build/deb/$arch"/*.deb 2>/dev/null | wc -l)
+    if [ $rc -eq 0 ] && [ "$built" -ge 3 ] && grep -q '^deps: make deb installs' "$W/debsrc.log" &&
+       grep -qE '^deb: [0-9]+ passed, 0 failed' "$W/debsrc.log"; then
+        pass "root make deb DEB_ARCHES=$arch, first try, no .git: installed its build set, $built packages, lintian clean ($(( $(now) - t0 )) s)"
+        if [ -z "$debs" ]; then
+            mkdir -p "$W/debs-built/$arch" && cp "$S/root/fixel-src/build/deb/$arch"/*.deb "$W/debs-built/$arch/"
+            debs=$W/debs-built
+        fi
+    else
+        tail -n 40 "$W/debsrc.log"; fail "root make deb DEB_ARCHES=$arch in a fresh root without .git: exit $rc, $built packages"
+    fi
+    umount_all
+fi
 
 # --- the Debian packages in a fresh root ----------------------------------------
 if [ -n "$debs" ]; then
