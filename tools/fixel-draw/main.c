@@ -259,17 +259,9 @@ static FILE *open_input(const char *path, int fifo_ok)
 static int load_file(void *u, const char *path, const uint8_t **data, size_t *len)
 {
     host *H = u;
-    /* the script's error gets only the code: "not supported" for a FIFO or
-     * a device, so what it is goes to stderr with the name (as load_image
-     * does); the other codes say it themselves */
-    char why[160] = "";
-    FILE *f = fx_fopen_regular(path, NULL, why, sizeof why);
-    if (!f) {
-        int e = errno;
-        if (e == EOPNOTSUPP && *why)
-            fprintf(stderr, "fixel-draw: %s: %s\n", path, why);
-        return fx_code(e);
-    }
+    FILE *f = open_input(path, 0);
+    if (!f)
+        return fx_code(errno);
     uint8_t *buf;
     int r = read_all(f, FILE_MAX, &buf, len);
     fclose(f);
