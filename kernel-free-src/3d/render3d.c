@@ -1546,7 +1546,9 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
         fx16 pv[4] = {p.x, p.y, p.z, p.w}, lv[4] = {l.x, l.y, l.z, l.w};
         for (int i = 0; i < 4; i++)
             for (int j = 0; j < 4; j++)
-                shadow.m[i][j] = (i == j ? pl : 0) - fx16_mul(lv[i], pv[j]);
+                /* in 64 bits: a product of INT32_MIN (a saturated
+                 * light or plane) negated overflowed int (fuzz_grammar) */
+                shadow.m[i][j] = fx_sat32((int64_t)(i == j ? pl : 0) - fx16_mul(lv[i], pv[j]));
     }
 
     int smooth = m->nrm != NULL;
