@@ -128,20 +128,91 @@ GLenum glGetError(void)
 }
 
 /* ---- display lists: recording ---- */
+/* Every GL call a display list holds, declared once: X(NAME, replay)
+ * makes both the OP_ enum and the replay switch, so a call recorded under
+ * a name always has its replay. `a` is the recorded doubles, `d` the
+ * nesting depth; a blob (bitmap or pixel rows, unpacked at compile time as
+ * GL says) follows the call's doubles in the pool, at a + its count. The
+ * calls GL runs at once even while compiling (glGen*, glGet*, glIsList,
+ * glDeleteLists, glPixelStore, glReadPixels, glFlush, glFinish, client
+ * state) are not listed. */
+#define FX_GLUT_LIST_OPS(X)                                                                          \
+    X(BEGIN, glBegin((GLenum)a[0]))                                                                  \
+    X(END, glEnd())                                                                                  \
+    X(VERTEX, vertex(a[0], a[1], a[2], a[3]))                                                        \
+    X(COLOR, set_color(a[0], a[1], a[2], a[3]))                                                      \
+    X(NORMAL, set_normal(a[0], a[1], a[2]))                                                          \
+    X(TEXCOORD, set_tc(a[0], a[1]))                                                                  \
+    X(MATRIXMODE, glMatrixMode((GLenum)a[0]))                                                        \
+    X(LOADIDENTITY, glLoadIdentity())                                                                \
+    X(PUSH, glPushMatrix())                                                                          \
+    X(POP, glPopMatrix())                                                                            \
+    X(MULT, glMultMatrixd(a))                                                                        \
+    X(LOAD, glLoadMatrixd(a))                                                                        \
+    X(TRANSLATE, glTranslated(a[0], a[1], a[2]))                                                     \
+    X(ROTATE, glRotated(a[0], a[1], a[2], a[3]))                                                     \
+    X(SCALE, glScaled(a[0], a[1], a[2]))                                                             \
+    X(ENABLE, glEnable((GLenum)a[0]))                                                                \
+    X(DISABLE, glDisable((GLenum)a[0]))                                                              \
+    X(SHADE, glShadeModel((GLenum)a[0]))                                                             \
+    X(POINTSIZE, glPointSize((GLfloat)a[0]))                                                         \
+    X(LINEWIDTH, glLineWidth((GLfloat)a[0]))                                                         \
+    X(MATERIAL, material_v((GLenum)a[0], (GLenum)a[1], a + 2))                                       \
+    X(LIGHT, light_v((GLenum)a[0], (GLenum)a[1], a + 2))                                             \
+    X(CALLLIST, replay((GLuint)a[0], d + 1))                                                         \
+    X(CALLLIST_BASE, replay(fx_gl.list_base + (GLuint)a[0], d + 1))                                  \
+    X(LISTBASE, glListBase((GLuint)a[0]))                                                            \
+    X(BINDTEX, glBindTexture((GLenum)a[0], (GLuint)a[1]))                                            \
+    X(TEXPARAM, glTexParameteri((GLenum)a[0], (GLenum)a[1], (GLint)a[2]))                            \
+    X(TEXENV, glTexEnvi((GLenum)a[0], (GLenum)a[1], (GLint)a[2]))                                    \
+    X(TEXENVCOLOR, tex_env_color(a))                                                                 \
+    X(RECT, glRectd(a[0], a[1], a[2], a[3]))                                                         \
+    X(ORTHO, glOrtho(a[0], a[1], a[2], a[3], a[4], a[5]))                                            \
+    X(FRUSTUM, glFrustum(a[0], a[1], a[2], a[3], a[4], a[5]))                                        \
+    X(POLYMODE, glPolygonMode((GLenum)a[0], (GLenum)a[1]))                                           \
+    X(STIPPLE, glLineStipple((GLint)a[0], (GLushort)a[1]))                                           \
+    X(LIGHTMODEL, light_model((GLenum)a[0], a + 1))                                                  \
+    X(COLORMATERIAL, glColorMaterial((GLenum)a[0], (GLenum)a[1]))                                    \
+    X(RASTERPOS, raster_pos(a[0], a[1], a[2], a[3]))                                                 \
+    X(WINDOWPOS, window_pos(a[0], a[1]))                                                             \
+    X(BITMAP, bitmap_rec(a))                                                                         \
+    X(BITMAPCHAR, bitmapchar_rec(a))                                                                 \
+    X(DRAWPIXELS, draw_pixels_rec(a))                                                                \
+    X(PIXELZOOM, glPixelZoom((GLfloat)a[0], (GLfloat)a[1]))                                          \
+    X(BLENDFUNC, glBlendFunc((GLenum)a[0], (GLenum)a[1]))                                            \
+    X(DEPTHFUNC, glDepthFunc((GLenum)a[0]))                                                          \
+    X(DEPTHMASK, glDepthMask((GLboolean)a[0]))                                                       \
+    X(COLORMASK, glColorMask((GLboolean)a[0], (GLboolean)a[1], (GLboolean)a[2], (GLboolean)a[3]))    \
+    X(CULLFACE, glCullFace((GLenum)a[0]))                                                            \
+    X(FRONTFACE, glFrontFace((GLenum)a[0]))                                                          \
+    X(VIEWPORT, glViewport((GLint)a[0], (GLint)a[1], (GLsizei)a[2], (GLsizei)a[3]))                  \
+    X(SCISSOR, glScissor((GLint)a[0], (GLint)a[1], (GLsizei)a[2], (GLsizei)a[3]))                    \
+    X(CLEAR, glClear((GLbitfield)a[0]))                                                              \
+    X(CLEARCOLOR, glClearColor((GLclampf)a[0], (GLclampf)a[1], (GLclampf)a[2], (GLclampf)a[3]))      \
+    X(CLEARDEPTH, glClearDepth(a[0]))
 enum {
-    OP_BEGIN = 1, OP_END, OP_VERTEX, OP_COLOR, OP_NORMAL, OP_TEXCOORD, OP_MATRIXMODE,
-    OP_LOADIDENTITY, OP_PUSH, OP_POP, OP_MULT, OP_LOAD, OP_TRANSLATE, OP_ROTATE, OP_SCALE,
-    OP_ENABLE, OP_DISABLE, OP_SHADE, OP_POINTSIZE, OP_LINEWIDTH, OP_MATERIAL, OP_LIGHT,
-    OP_CALLLIST, OP_BINDTEX, OP_RECT, OP_ORTHO, OP_FRUSTUM, OP_POLYMODE, OP_STIPPLE,
-    OP_LIGHTMODEL, OP_COLORMATERIAL, OP_RASTERPOS, OP_BITMAPCHAR, OP_BLENDFUNC, OP_DEPTHFUNC,
-    OP_CULLFACE, OP_FRONTFACE, OP_CLEAR, OP_CLEARCOLOR
+#define FX_GLUT_OP_ENUM(name, run) OP_##name,
+    OP_NONE_ = 0,
+    FX_GLUT_LIST_OPS(FX_GLUT_OP_ENUM)
+#undef FX_GLUT_OP_ENUM
 };
 
 static int recording(void) { return fx_gl.cur_list != 0 && !fx_gl.replaying; }
 
-static void record(int op, int n, const double *a)
+/* A list's pool holds at most FXG_LIST_POOL doubles (1 GiB): a bigger
+ * list is GL_OUT_OF_MEMORY, before any int sum of sizes can wrap. */
+#define FXG_LIST_POOL (1 << 27)
+/* n doubles from a, then a blob of nb bytes (bitmap or pixel rows) padded
+ * to whole doubles; the replay finds the blob at a + n. */
+static void record_blob(int op, int n, const double *a, const void *blob, size_t nb)
 {
     fx_glut_list *l = &fx_gl.lists[fx_gl.cur_list];
+    size_t nblob = (nb + sizeof(double) - 1) / sizeof(double);
+    if (nblob > FXG_LIST_POOL || (size_t)l->npool + (size_t)n + nblob > FXG_LIST_POOL) {
+        fx_glut_set_error(GL_OUT_OF_MEMORY);
+        return;
+    }
+    int all = n + (int)nblob;
     if (l->nrec == l->caprec) {
         int nc = l->caprec ? l->caprec * 2 : 64;
         fx_glut_rec *r = realloc(l->rec, (size_t)nc * sizeof *r);
@@ -151,9 +222,9 @@ static void record(int op, int n, const double *a)
         }
         l->rec = r, l->caprec = nc;
     }
-    if (l->npool + n > l->cappool) {
+    if (l->npool + all > l->cappool) {
         int nc = l->cappool ? l->cappool * 2 : 256;
-        while (nc < l->npool + n)
+        while (nc < l->npool + all)
             nc *= 2;
         double *p = realloc(l->pool, (size_t)nc * sizeof *p);
         if (!p) {
@@ -162,11 +233,16 @@ static void record(int op, int n, const double *a)
         }
         l->pool = p, l->cappool = nc;
     }
-    l->rec[l->nrec++] = (fx_glut_rec){(uint16_t)op, (uint16_t)n, (uint32_t)l->npool};
+    l->rec[l->nrec++] = (fx_glut_rec){(uint32_t)op, (uint32_t)all, (uint32_t)l->npool};
     if (n) /* a call of no arguments before the pool exists: memcpy(NULL, ...) is undefined */
         memcpy(l->pool + l->npool, a, (size_t)n * sizeof *a);
-    l->npool += n;
+    if (nb) {
+        l->pool[l->npool + all - 1] = 0; /* the padding of the last double */
+        memcpy(l->pool + l->npool + n, blob, nb);
+    }
+    l->npool += all;
 }
+static void record(int op, int n, const double *a) { record_blob(op, n, a, NULL, 0); }
 
 /* Record and tell whether to execute now. */
 #define REC(op, ...)                                             \
@@ -495,6 +571,7 @@ void gluLookAt(GLdouble ex, GLdouble ey, GLdouble ez, GLdouble cx, GLdouble cy, 
  * stay inside the rasterizers' range (fixel/glcore.h, FX_GL_WIN_MAX). */
 void glViewport(GLint x, GLint y, GLsizei w, GLsizei h)
 {
+    REC(OP_VIEWPORT, x, y, w, h);
     if (w < 0 || h < 0) {
         fx_glut_set_error(GL_INVALID_VALUE);
         return;
@@ -508,6 +585,7 @@ void glViewport(GLint x, GLint y, GLsizei w, GLsizei h)
 }
 void glScissor(GLint x, GLint y, GLsizei w, GLsizei h)
 {
+    REC(OP_SCISSOR, x, y, w, h);
     if (w < 0 || h < 0) {
         fx_glut_set_error(GL_INVALID_VALUE);
         return;
@@ -656,7 +734,11 @@ void glDepthFunc(GLenum f)
     }
     fx_gl.depth_func = f;
 }
-void glDepthMask(GLboolean flag) { fx_gl.depth_mask = flag != 0; }
+void glDepthMask(GLboolean flag)
+{
+    REC(OP_DEPTHMASK, flag);
+    fx_gl.depth_mask = flag != 0;
+}
 void glDepthRange(GLclampd n, GLclampd f)
 {
     if (n != 0.0 || f != 1.0)
@@ -708,6 +790,7 @@ void glBlendFunc(GLenum s, GLenum d)
 }
 void glColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a)
 {
+    REC(OP_COLORMASK, r, g, b, a);
     fx_gl.color_mask = (uint8_t)((r ? 1 : 0) | (g ? 2 : 0) | (b ? 4 : 0) | (a ? 8 : 0));
     if (!fx_gl.color_mask)
         fx_gl.color_mask = 0x10; /* nothing written */
@@ -723,6 +806,7 @@ void glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a)
 }
 void glClearDepth(GLclampd d)
 {
+    REC(OP_CLEARDEPTH, d);
     d = !(d > 0) ? 0 : d > 1 ? 1 : d; /* NaN as 0 */
     int64_t z = llrint(d * 16777216.0);
     fx_gl.clear_depth = z > 0xFFFFFF ? 0xFFFFFF : (uint32_t)z;
@@ -1625,22 +1709,20 @@ void glRasterPos4iv(const GLint *v) { raster_pos(v[0], v[1], v[2], v[3]); }
 void glRasterPos4fv(const GLfloat *v) { raster_pos(v[0], v[1], v[2], v[3]); }
 void glRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { raster_pos(x, y, z, w); }
 void glRasterPos4dv(const GLdouble *v) { raster_pos(v[0], v[1], v[2], v[3]); }
-void glWindowPos2i(GLint x, GLint y)
+static void window_pos(double x, double y)
 {
-    fx_gl.rx = clamp_win((int64_t)x * 256), fx_gl.ry = clamp_win((int64_t)y * 256);
+    REC(OP_WINDOWPOS, x, y);
+    fx_gl.rx = fx_glut_d2win(x), fx_gl.ry = fx_glut_d2win(y);
     fx_gl.raster_valid = 1;
     for (int k = 0; k < 4; k++)
         fx_gl.raster_color[k] = fx_gl.color[k];
 }
-void glWindowPos2f(GLfloat x, GLfloat y)
-{
-    glWindowPos2i(0, 0);
-    fx_gl.rx = fx_glut_d2win(x), fx_gl.ry = fx_glut_d2win(y);
-}
+void glWindowPos2i(GLint x, GLint y) { window_pos(x, y); }
+void glWindowPos2f(GLfloat x, GLfloat y) { window_pos(x, y); }
 
 /* Bitmap at the raster position: rows given top first; window rows go up. */
-void fx_glut_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmove,
-                const uint8_t *rows, int32_t row_bytes, int32_t scale)
+static void bitmap_draw(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmove,
+                        const uint8_t *rows, int32_t row_bytes, int32_t scale)
 {
     if (!fx_gl.raster_valid)
         return;
@@ -1671,6 +1753,47 @@ void fx_glut_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t 
     fx_gl.rx = clamp_win(fx_gl.rx + (int64_t)xmove * 256);
 }
 
+/* GLUT's bitmap characters: inside glNewList they are compiled, as
+ * freeglut's glBitmap calls are. */
+void fx_glut_bitmap(int32_t w, int32_t h, int32_t xorig, int32_t yorig, int32_t xmove,
+                    const uint8_t *rows, int32_t row_bytes, int32_t scale)
+{
+    if (recording()) {
+        double a[7] = {w, h, xorig, yorig, xmove, row_bytes, scale};
+        size_t nb = w > 0 && h > 0 && row_bytes > 0 ? (size_t)h * (size_t)row_bytes : 0;
+        record_blob(OP_BITMAPCHAR, 7, a, rows, nb);
+        if (!fx_gl.list_exec)
+            return;
+    }
+    bitmap_draw(w, h, xorig, yorig, xmove, rows, row_bytes, scale);
+}
+static void bitmapchar_rec(const double *a)
+{
+    int32_t w = (int32_t)a[0], h = (int32_t)a[1], rb = (int32_t)a[5];
+    bitmap_draw(w, h, (int32_t)a[2], (int32_t)a[3], (int32_t)a[4], w > 0 && h > 0 && rb > 0 ? (const uint8_t *)(a + 7) : NULL,
+                rb, (int32_t)a[6]);
+}
+
+/* rows: top row first, rb bytes each (NULL: nothing drawn, the raster
+ * position still moves) */
+static void bitmap_exec(int32_t w, int32_t h, int32_t xo, int32_t yo, double xmove, double ymove,
+                        const uint8_t *rows, int32_t rb)
+{
+    if (rows)
+        bitmap_draw(w, h, xo, yo, 0, rows, rb, 1);
+    /* the raster position moves by any float: the sum saturates at the
+     * rasterizers' range (+-2^21 pixels) instead of overflowing */
+    if (fx_gl.raster_valid) {
+        fx_gl.rx = clamp_win(fx_gl.rx + fx_glut_d2win(xmove));
+        fx_gl.ry = clamp_win(fx_gl.ry + fx_glut_d2win(ymove));
+    }
+}
+static void bitmap_rec(const double *a)
+{
+    int32_t w = (int32_t)a[0], h = (int32_t)a[1], rb = (int32_t)a[6];
+    bitmap_exec(w, h, (int32_t)a[2], (int32_t)a[3], a[4], a[5], rb > 0 ? (const uint8_t *)(a + 7) : NULL, rb);
+}
+
 void glBitmap(GLsizei w, GLsizei h, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
               const GLubyte *bitmap)
 {
@@ -1682,26 +1805,33 @@ void glBitmap(GLsizei w, GLsizei h, GLfloat xorig, GLfloat yorig, GLfloat xmove,
      * alignment; (w + 7) / 8 in 64 bits: w + 7 passes INT32_MAX */
     int64_t al = fx_gl.unpack_align, rb = ((int64_t)w + 7) / 8;
     rb = (rb + al - 1) / al * al;
-    if (bitmap && w > 0 && h > 0) {
-        uint8_t *flip = malloc((size_t)rb * (size_t)h);
-        if (flip) {
-            for (int32_t r = 0; r < h; r++)
-                memcpy(flip + (size_t)r * (size_t)rb, bitmap + (size_t)(h - 1 - r) * (size_t)rb, (size_t)rb);
-            /* the origin clamped to the raster range: beyond it the bitmap
-             * is off the surface either way */
-            int32_t xo = fx_glut_d2i(xorig), yo = fx_glut_d2i(yorig);
-            xo = xo > FXG_VIEWPORT_BOUND * 4 ? FXG_VIEWPORT_BOUND * 4 : xo < -FXG_VIEWPORT_BOUND * 4 ? -FXG_VIEWPORT_BOUND * 4 : xo;
-            yo = yo > FXG_VIEWPORT_BOUND * 4 ? FXG_VIEWPORT_BOUND * 4 : yo < -FXG_VIEWPORT_BOUND * 4 ? -FXG_VIEWPORT_BOUND * 4 : yo;
-            fx_glut_bitmap(w, h, xo, yo, 0, flip, (int32_t)(rb > INT32_MAX ? INT32_MAX : rb), 1);
+    /* the origin clamped to the raster range: beyond it the bitmap is off
+     * the surface either way */
+    int32_t xo = fx_glut_d2i(xorig), yo = fx_glut_d2i(yorig);
+    xo = xo > FXG_VIEWPORT_BOUND * 4 ? FXG_VIEWPORT_BOUND * 4 : xo < -FXG_VIEWPORT_BOUND * 4 ? -FXG_VIEWPORT_BOUND * 4 : xo;
+    yo = yo > FXG_VIEWPORT_BOUND * 4 ? FXG_VIEWPORT_BOUND * 4 : yo < -FXG_VIEWPORT_BOUND * 4 ? -FXG_VIEWPORT_BOUND * 4 : yo;
+    uint8_t *flip = NULL;
+    if (bitmap && w > 0 && h > 0 && rb <= INT32_MAX && (uint64_t)rb * (uint64_t)h <= SIZE_MAX / 2) {
+        flip = malloc((size_t)rb * (size_t)h);
+        if (!flip) {
+            fx_glut_set_error(GL_OUT_OF_MEMORY);
+            return;
+        }
+        for (int32_t r = 0; r < h; r++)
+            memcpy(flip + (size_t)r * (size_t)rb, bitmap + (size_t)(h - 1 - r) * (size_t)rb, (size_t)rb);
+    }
+    /* compiled with its rows unpacked now, as GL says: the caller's array
+     * may change before the list runs */
+    if (recording()) {
+        double a[7] = {w, h, xo, yo, xmove, ymove, flip ? (double)rb : 0};
+        record_blob(OP_BITMAP, 7, a, flip, flip ? (size_t)rb * (size_t)h : 0);
+        if (!fx_gl.list_exec) {
             free(flip);
+            return;
         }
     }
-    /* the raster position moves by any float: the sum saturates at the
-     * rasterizers' range (+-2^21 pixels) instead of overflowing */
-    if (fx_gl.raster_valid) {
-        fx_gl.rx = clamp_win(fx_gl.rx + fx_glut_d2win(xmove));
-        fx_gl.ry = clamp_win(fx_gl.ry + fx_glut_d2win(ymove));
-    }
+    bitmap_exec(w, h, xo, yo, xmove, ymove, flip, (int32_t)rb);
+    free(flip);
 }
 
 void glPixelStorei(GLenum pname, GLint param)
@@ -1714,7 +1844,11 @@ void glPixelStorei(GLenum pname, GLint param)
         fx_glut_set_error(GL_INVALID_VALUE);
 }
 void glPixelStoref(GLenum pname, GLfloat param) { glPixelStorei(pname, fx_glut_d2i(param)); }
-void glPixelZoom(GLfloat xf, GLfloat yf) { fx_gl.zoom_x = xf, fx_gl.zoom_y = yf; }
+void glPixelZoom(GLfloat xf, GLfloat yf)
+{
+    REC(OP_PIXELZOOM, xf, yf);
+    fx_gl.zoom_x = xf, fx_gl.zoom_y = yf;
+}
 
 static int comps(GLenum format)
 {
@@ -1803,8 +1937,6 @@ void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid
         fx_glut_unimplemented("glDrawPixels (this format/type)", GL_INVALID_ENUM);
         return;
     }
-    if (!fx_gl.raster_valid)
-        return;
     if (w < 0 || h < 0) {
         fx_glut_set_error(GL_INVALID_VALUE);
         return;
@@ -1812,6 +1944,22 @@ void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid
     int bpc = type == GL_FLOAT ? 4 : 1;
     size_t rowb = (size_t)w * nc * bpc, al = (size_t)fx_gl.unpack_align;
     rowb = (rowb + al - 1) / al * al;
+    /* compiled with its pixels copied now (GL unpacks at compile time);
+     * the rows keep the alignment they were given under, recorded with
+     * them. record_blob refuses a size past its pool bound. */
+    if (recording()) {
+        size_t nb = pixels && w > 0 && h > 0 && rowb <= (SIZE_MAX >> 4) / (size_t)h ? rowb * (size_t)h : 0;
+        if (pixels && w > 0 && h > 0 && !nb) {
+            fx_glut_set_error(GL_OUT_OF_MEMORY);
+            return;
+        }
+        double a[6] = {w, h, format, type, (double)al, nb != 0};
+        record_blob(OP_DRAWPIXELS, 6, a, pixels, nb);
+        if (!fx_gl.list_exec)
+            return;
+    }
+    if (!fx_gl.raster_valid || !pixels)
+        return;
     int64_t x0 = fx_gl.rx >> 8, y0 = fx_gl.ry >> 8;
     /* Zoom factors are any float (glPixelZoom stores them as given): here
      * they are whole pixels in [1, 2^24] (NaN as 1), and each source pixel
@@ -1865,6 +2013,13 @@ void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid
                     fx_surface_put_native(&fx_gl.fb.surf, (int32_t)X, fx_gl.h - 1 - (int32_t)Y, native);
         }
     }
+}
+static void draw_pixels_rec(const double *a)
+{
+    int al = fx_gl.unpack_align;
+    fx_gl.unpack_align = (int)a[4];
+    glDrawPixels((GLsizei)a[0], (GLsizei)a[1], (GLenum)a[2], (GLenum)a[3], a[5] != 0 ? a + 6 : NULL);
+    fx_gl.unpack_align = al;
 }
 
 /* ---- textures ---- */
@@ -1980,6 +2135,7 @@ void glTexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei w, G
 }
 void glTexParameteri(GLenum target, GLenum pname, GLint param)
 {
+    REC(OP_TEXPARAM, (double)target, (double)pname, param);
     if (target != GL_TEXTURE_2D) {
         fx_glut_set_error(GL_INVALID_ENUM);
         return;
@@ -2003,17 +2159,28 @@ void glTexParameterfv(GLenum target, GLenum pname, const GLfloat *p)
 }
 void glTexEnvi(GLenum target, GLenum pname, GLint param)
 {
+    REC(OP_TEXENV, (double)target, (double)pname, param);
     if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE)
         fx_gl.tex_env = (GLenum)param;
 }
 void glTexEnvf(GLenum target, GLenum pname, GLfloat param) { glTexEnvi(target, pname, fx_glut_d2i(param)); }
 void glTexEnviv(GLenum target, GLenum pname, const GLint *p) { glTexEnvi(target, pname, p[0]); }
+static void tex_env_color(const double *p)
+{
+    if (recording()) {
+        record(OP_TEXENVCOLOR, 4, p);
+        if (!fx_gl.list_exec)
+            return;
+    }
+    for (int k = 0; k < 4; k++)
+        fx_gl.tgt.tex_env_color[k] = fx_glut_d2c(p[k]);
+}
 void glTexEnvfv(GLenum target, GLenum pname, const GLfloat *p)
 {
-    if (pname == GL_TEXTURE_ENV_COLOR)
-        for (int k = 0; k < 4; k++)
-            fx_gl.tgt.tex_env_color[k] = fx_glut_d2c(p[k]);
-    else
+    if (pname == GL_TEXTURE_ENV_COLOR) {
+        double d[4] = {p[0], p[1], p[2], p[3]};
+        tex_env_color(d);
+    } else
         glTexEnvi(target, pname, fx_glut_d2i(p[0]));
 }
 
@@ -2074,55 +2241,24 @@ void glDeleteLists(GLuint list, GLsizei range)
         }
     }
 }
-void glListBase(GLuint base) { fx_gl.list_base = base; }
-
-static void replay(GLuint id, int depth)
+void glListBase(GLuint base)
 {
-    if (!id || id >= FXG_MAX_LISTS || depth > 64)
+    REC(OP_LISTBASE, (double)base);
+    fx_gl.list_base = base;
+}
+
+static void replay(GLuint id, int d)
+{
+    if (!id || id >= FXG_MAX_LISTS || d > 64)
         return;
     fx_glut_list *l = &fx_gl.lists[id];
     for (int i = 0; i < l->nrec; i++) {
         const double *a = l->pool + l->rec[i].off;
         switch (l->rec[i].op) {
-        case OP_BEGIN: glBegin((GLenum)a[0]); break;
-        case OP_END: glEnd(); break;
-        case OP_VERTEX: vertex(a[0], a[1], a[2], a[3]); break;
-        case OP_COLOR: set_color(a[0], a[1], a[2], a[3]); break;
-        case OP_NORMAL: set_normal(a[0], a[1], a[2]); break;
-        case OP_TEXCOORD: set_tc(a[0], a[1]); break;
-        case OP_MATRIXMODE: glMatrixMode((GLenum)a[0]); break;
-        case OP_LOADIDENTITY: glLoadIdentity(); break;
-        case OP_PUSH: glPushMatrix(); break;
-        case OP_POP: glPopMatrix(); break;
-        case OP_MULT: glMultMatrixd(a); break;
-        case OP_LOAD: glLoadMatrixd(a); break;
-        case OP_TRANSLATE: glTranslated(a[0], a[1], a[2]); break;
-        case OP_ROTATE: glRotated(a[0], a[1], a[2], a[3]); break;
-        case OP_SCALE: glScaled(a[0], a[1], a[2]); break;
-        case OP_ENABLE: glEnable((GLenum)a[0]); break;
-        case OP_DISABLE: glDisable((GLenum)a[0]); break;
-        case OP_SHADE: glShadeModel((GLenum)a[0]); break;
-        case OP_POINTSIZE: glPointSize((GLfloat)a[0]); break;
-        case OP_LINEWIDTH: glLineWidth((GLfloat)a[0]); break;
-        case OP_MATERIAL: material_v((GLenum)a[0], (GLenum)a[1], a + 2); break;
-        case OP_LIGHT: light_v((GLenum)a[0], (GLenum)a[1], a + 2); break;
-        case OP_CALLLIST: replay((GLuint)a[0], depth + 1); break;
-        case OP_BINDTEX: glBindTexture((GLenum)a[0], (GLuint)a[1]); break;
-        case OP_RECT: glRectd(a[0], a[1], a[2], a[3]); break;
-        case OP_ORTHO: glOrtho(a[0], a[1], a[2], a[3], a[4], a[5]); break;
-        case OP_FRUSTUM: glFrustum(a[0], a[1], a[2], a[3], a[4], a[5]); break;
-        case OP_POLYMODE: glPolygonMode((GLenum)a[0], (GLenum)a[1]); break;
-        case OP_STIPPLE: glLineStipple((GLint)a[0], (GLushort)a[1]); break;
-        case OP_LIGHTMODEL: light_model((GLenum)a[0], a + 1); break;
-        case OP_COLORMATERIAL: glColorMaterial((GLenum)a[0], (GLenum)a[1]); break;
-        case OP_RASTERPOS: raster_pos(a[0], a[1], a[2], a[3]); break;
-        case OP_BITMAPCHAR: break;
-        case OP_BLENDFUNC: glBlendFunc((GLenum)a[0], (GLenum)a[1]); break;
-        case OP_DEPTHFUNC: glDepthFunc((GLenum)a[0]); break;
-        case OP_CULLFACE: glCullFace((GLenum)a[0]); break;
-        case OP_FRONTFACE: glFrontFace((GLenum)a[0]); break;
-        case OP_CLEAR: glClear((GLbitfield)a[0]); break;
-        case OP_CLEARCOLOR: glClearColor((GLclampf)a[0], (GLclampf)a[1], (GLclampf)a[2], (GLclampf)a[3]); break;
+#define FX_GLUT_OP_CASE(name, run) \
+    case OP_##name: run; break;
+            FX_GLUT_LIST_OPS(FX_GLUT_OP_CASE)
+#undef FX_GLUT_OP_CASE
         default: break;
         }
     }
@@ -2148,6 +2284,17 @@ void glCallLists(GLsizei n, GLenum type, const GLvoid *lists)
         case GL_UNSIGNED_INT: id = ((const GLuint *)lists)[i]; break;
         case GL_FLOAT: id = (GLuint)((const GLfloat *)lists)[i]; break;
         default: fx_glut_set_error(GL_INVALID_ENUM); return;
+        }
+        if (recording()) { /* GL adds the base in effect when the list runs */
+            double a = id;
+            record(OP_CALLLIST_BASE, 1, &a);
+            if (!fx_gl.list_exec)
+                continue;
+            int was = fx_gl.replaying;
+            fx_gl.replaying = 1;
+            replay(fx_gl.list_base + id, 0);
+            fx_gl.replaying = was;
+            continue;
         }
         glCallList(fx_gl.list_base + id);
     }
@@ -2205,6 +2352,8 @@ static int get_values(GLenum pname, double *v)
     case GL_RGBA_MODE: v[0] = 1; return 1;
     case GL_TEXTURE_BINDING_2D: v[0] = fx_gl.bound_tex; return 1;
     case GL_LIST_BASE: v[0] = fx_gl.list_base; return 1;
+    case GL_ZOOM_X: v[0] = fx_gl.zoom_x; return 1;
+    case GL_ZOOM_Y: v[0] = fx_gl.zoom_y; return 1;
     case GL_LIST_INDEX: v[0] = fx_gl.cur_list; return 1;
     case GL_UNPACK_ALIGNMENT: v[0] = fx_gl.unpack_align; return 1;
     case GL_PACK_ALIGNMENT: v[0] = fx_gl.pack_align; return 1;

@@ -27,8 +27,8 @@ typedef struct fx_glut_tex {
 } fx_glut_tex;
 
 typedef struct fx_glut_rec {
-    uint16_t op, n;
-    uint32_t off; /* into the list's double pool */
+    uint32_t op, n; /* n: doubles, a blob's included */
+    uint32_t off;   /* into the list's double pool */
 } fx_glut_rec;
 
 typedef struct fx_glut_list {

@@ -172,7 +172,28 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             break;
         }
         case 9: {
-            GLuint l = 1 + take(&s, 1) % 4;
+            uint32_t b = take(&s, 1);
+            GLuint l = 1 + b % 4;
+            /* what a list holds besides the calls of the entry table: bases
+             * and glCallLists (resolved when the list runs), bitmaps (copied
+             * when it is compiled) */
+            if ((b >> 2) % 8 == 5) {
+                glListBase((GLuint)any_i32(&s));
+                break;
+            }
+            if ((b >> 2) % 8 == 6) {
+                GLubyte ids[4] = {(GLubyte)take(&s, 1), (GLubyte)take(&s, 1), (GLubyte)take(&s, 1), (GLubyte)take(&s, 1)};
+                glCallLists((GLsizei)(take(&s, 1) % 5), GL_UNSIGNED_BYTE, ids);
+                break;
+            }
+            if ((b >> 2) % 8 == 7) {
+                static GLubyte bits[8 * 16];
+                for (size_t i = 0; i < 8; i++)
+                    bits[i] = (GLubyte)take(&s, 1);
+                glBitmap((GLsizei)(take(&s, 1) % 65), (GLsizei)(take(&s, 1) % 17), (GLfloat)any_i32(&s),
+                         (GLfloat)any_i32(&s), (GLfloat)any_i32(&s), (GLfloat)any_i32(&s), bits);
+                break;
+            }
             uint32_t k = take(&s, 1) % 3;
             if (k == 0)
                 glNewList(l, take(&s, 1) & 1 ? GL_COMPILE : GL_COMPILE_AND_EXECUTE);

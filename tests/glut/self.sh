@@ -16,16 +16,19 @@ if ! ${CC:-gcc} -std=gnu11 -O2 -Wall -Wextra -Werror -I boards/glut/include test
         "$B/libfixel-glut.a" "$B/libfixel.a" ${GLUT_FIXEL_LIBS:-} -lm -o "$out/winlife" 2> "$out/build.log"; then
     cat "$out/build.log"; echo "glut-self: 0 passed, 1 failed"; exit 1
 fi
-${CC:-gcc} -std=gnu11 -O2 -Wall -Wextra -Werror -I boards/glut/include tests/glut/self/glyphs.c \
-    "$B/libfixel-glut.a" "$B/libfixel.a" ${GLUT_FIXEL_LIBS:-} -lm -o "$out/glyphs" 2>> "$out/build.log" ||
-    { cat "$out/build.log"; echo "glut-self: 0 passed, 1 failed"; exit 1; }
+for prog in glyphs lists; do
+    ${CC:-gcc} -std=gnu11 -O2 -Wall -Wextra -Werror -I boards/glut/include tests/glut/self/$prog.c \
+        "$B/libfixel-glut.a" "$B/libfixel.a" ${GLUT_FIXEL_LIBS:-} -lm -o "$out/$prog" 2>> "$out/build.log" ||
+        { cat "$out/build.log"; echo "glut-self: 0 passed, 1 failed"; exit 1; }
+done
 # The Mesa side is built without the sanitizers CC may carry (SAN=1):
 # Mesa and the X libraries are not ours to check, and leak at exit.
 mcc=${CC:-gcc}; mcc=${mcc%% *}
 mesa=
 if command -v xvfb-run >/dev/null && $mcc -std=gnu11 -O2 -o "$out/winlife-mesa" \
         tests/glut/self/winlife.c -lglut -lGL 2> "$out/build-mesa.log" &&
-        $mcc -std=gnu11 -O2 -o "$out/glyphs-mesa" tests/glut/self/glyphs.c -lglut -lGL 2>> "$out/build-mesa.log"; then
+        $mcc -std=gnu11 -O2 -o "$out/glyphs-mesa" tests/glut/self/glyphs.c -lglut -lGL 2>> "$out/build-mesa.log" &&
+        $mcc -std=gnu11 -O2 -o "$out/lists-mesa" tests/glut/self/lists.c -lglut -lGL 2>> "$out/build-mesa.log"; then
     mesa=1
 else
     echo "glut-self: freeglut/Mesa/xvfb-run absent: the Mesa half is skipped (sh tests/glut/deps.sh)"
@@ -51,6 +54,7 @@ while IFS='|' read -r mode rc want; do
     echo "\$mode \$?" >> "$out/mesa.rc"
 done < "$out/cases"
 LIBGL_ALWAYS_SOFTWARE=1 timeout 120 "$out/glyphs-mesa" > "$out/glyphs.mesa" 2>&1
+LIBGL_ALWAYS_SOFTWARE=1 timeout 60 "$out/lists-mesa" > "$out/lists.mesa" 2> "$out/lists.mesa.err"
 M
     rm -f "$out/mesa.rc"
     xvfb-run -a -s "-screen 0 1024x768x24 -nolisten tcp" sh "$out/mesa.sh"
@@ -60,6 +64,16 @@ M
         if [ "$got_rc" = "$rc" ] && [ "$got" = "$want" ]; then pass "mesa $mode"
         else echo "  exit $got_rc, output: $got"; fail "mesa $mode"; fi
     done < "$out/cases"
+fi
+# Issue #38: what glNewList(GL_COMPILE) holds (self/lists.c): every line
+# "ok", and, with Mesa, the same lines Mesa prints.
+FIXEL_BACKEND=memory "$out/lists" > "$out/lists.fixel" 2> "$out/lists.err"
+st=$?
+if [ $st = 0 ] && [ "$(grep -c '^ok ' "$out/lists.fixel")" -ge 28 ] && ! grep -qv '^ok ' "$out/lists.fixel"
+then pass "fixel lists: $(wc -l < "$out/lists.fixel") checks"; else echo "  exit $st"; grep -v '^ok' "$out/lists.fixel"; fail "fixel lists" "$out/lists.err"; fi
+if [ -n "$mesa" ]; then
+    if cmp -s "$out/lists.mesa" "$out/lists.fixel"; then pass "mesa lists: the same lines"
+    else diff "$out/lists.mesa" "$out/lists.fixel" | head -10; fail "mesa lists" "$out/lists.mesa.err"; fi
 fi
 # Issue #37: every glyph of every bitmap font as freeglut draws it, from the
 # X11 fonts of xfonts-base/xfonts-75dpi. The glyphs freeglut's data hold in
