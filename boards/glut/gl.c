@@ -978,8 +978,8 @@ static void light_v(GLenum light, GLenum pname, const double *p)
         const fx_glm *m = &fx_gl.mv[fx_gl.mv_top];
         fx32 d[3] = {fx_glut_d2x(p[0]), fx_glut_d2x(p[1]), fx_glut_d2x(p[2])};
         for (int r = 0; r < 3; r++)
-            l->spot_dir[r] = fx32_mul(m->m[r], d[0]) + fx32_mul(m->m[4 + r], d[1]) +
-                             fx32_mul(m->m[8 + r], d[2]);
+            l->spot_dir[r] = fx32_add(fx32_add(fx32_mul(m->m[r], d[0]), fx32_mul(m->m[4 + r], d[1])),
+                                      fx32_mul(m->m[8 + r], d[2])); /* each product may saturate */
         break;
     }
     case GL_SPOT_EXPONENT: l->spot_exp = fx_glut_d2q16(p[0]); break;
@@ -1235,7 +1235,7 @@ static int32_t isize(float s)
 /* Q32.32 -> Q16.16, rounded to nearest, saturating. */
 static fx16 q32_to_q16(fx32 v)
 {
-    int64_t r = (v + 0x8000) >> 16;
+    int64_t r = (v >= INT64_MAX - 0x8000 ? INT64_MAX : v + 0x8000) >> 16; /* v may be saturated */
     return r > INT32_MAX ? INT32_MAX : r < INT32_MIN ? INT32_MIN : (fx16)r;
 }
 

@@ -143,6 +143,57 @@ FX_TEST(glut_hostile_huge_light_position)
     glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 180);
 }
 
+/* A spot direction under a saturated modelview (found by fuzz_gl after the
+ * campaign): three saturated products were summed in int64 and overflowed;
+ * now the sum pins, and the direction stays a huge vector along -1,-1,-1. */
+FX_TEST(glut_hostile_spot_direction_saturated_modelview)
+{
+    setup();
+    GLdouble m[16];
+    for (int i = 0; i < 16; i++)
+        m[i] = 2e9;
+    glLoadMatrixd(m);
+    GLfloat dir[3] = {-2e9f, -2e9f, -2e9f};
+    glLightfv(GL_LIGHT1, GL_SPOT_DIRECTION, dir);
+    for (int k = 0; k < 3; k++)
+        FX_CHECK(fx_gl.L.light[1].spot_dir[k] == INT64_MIN);
+    glLoadIdentity();
+    GLfloat def[3] = {0, 0, -1};
+    glLightfv(GL_LIGHT1, GL_SPOT_DIRECTION, def);
+}
+
+/* A texture matrix that saturates the texture coordinates (fuzz_gl): the
+ * rounding to Q16.16 added half a unit to INT64_MAX. */
+FX_TEST(glut_hostile_texture_matrix_saturated)
+{
+    setup();
+    GLdouble m[16];
+    for (int i = 0; i < 16; i++)
+        m[i] = i % 4 == 3 ? i == 15 : 2e9; /* q stays 1: no divide */
+    glMatrixMode(GL_TEXTURE);
+    glLoadMatrixd(m);
+    glMatrixMode(GL_MODELVIEW);
+    static const GLubyte white[4] = {255, 255, 255, 255};
+    GLuint t;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D, t);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
+    glEnable(GL_TEXTURE_2D);
+    glBegin(GL_QUADS);
+    glTexCoord2f(1, 1), glVertex2f(10, 10);
+    glTexCoord2f(1, 1), glVertex2f(30, 10);
+    glTexCoord2f(1, 1), glVertex2f(30, 30);
+    glTexCoord2f(1, 1), glVertex2f(10, 30);
+    glEnd();
+    glDisable(GL_TEXTURE_2D);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glDeleteTextures(1, &t);
+    glMatrixMode(GL_TEXTURE);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    FX_CHECK(lit(20, 20)); /* drawn, the texture or its colour */
+}
+
 /* vertices at the boundary's saturation point (+-2^31 units): the
  * clipper's distances and the window transform overflowed */
 FX_TEST(glut_hostile_vertices_near_saturation)
