@@ -265,7 +265,7 @@ static fx3d_rgb shade_m(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_v
                 if (ft) { /* frame mapping: Kajiya-Kay's highlight about H (rt.h) */
                     fx_vec3 H = fx_vec3_add(L, V);
                     if (fx_vec3_normalize(&H) == 0)
-                        sp = fx_rt_aniso_spec(sp, fk, *ft, H, m->shininess);
+                        sp = fx_rt_aniso_spec(sp, fk, *ft, H, ndl, m->shininess);
                 }
                 if (rv > 0 || ft)
                     rgb_madd(&c, rgb_mul(e->spec, m->specular), sp);

@@ -71,7 +71,7 @@ void fx_rt_frame(fx_vec3 dir, fx_vec3 n, fx_vec3 *t, fx_vec3 *b)
     *b = fx_vec3_make(0, FX16_ONE, 0);
 }
 
-fx16 fx_rt_aniso_spec(fx16 spec, fx16 k, fx_vec3 t, fx_vec3 h, int32_t n)
+fx16 fx_rt_aniso_spec(fx16 spec, fx16 k, fx_vec3 t, fx_vec3 h, fx16 nl, int32_t n)
 {
     if (k <= 0)
         return spec;
@@ -84,6 +84,7 @@ fx16 fx_rt_aniso_spec(fx16 spec, fx16 k, fx_vec3 t, fx_vec3 h, int32_t n)
         if (s2 > ONE)
             s2 = ONE;
         kk = fx16_powi(fx16_sqrt((fx16)s2), n < 0 ? 0 : n > 256 ? 256 : n);
+        kk = (fx16)rt_mul(kk, nl < 0 ? 0 : nl > FX16_ONE ? FX16_ONE : nl);
     }
     return rt_sat(spec + rt_mul((int64_t)kk - spec, k));
 }

@@ -313,7 +313,7 @@ static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 we
                 fx16 mh = dot(m, h);
                 fx16 sp = mh > 0 ? fx16_powi(mh, mat->shininess) : 0;
                 if (aniso)
-                    sp = fx_rt_aniso_spec(sp, mat->frame_k, ft, h, mat->shininess);
+                    sp = fx_rt_aniso_spec(sp, mat->frame_k, ft, h, lam, mat->shininess);
                 if (mh > 0 || aniso)
                     Ispec = rgb_add(Ispec, rgb_scale(rgb_mul(Il, mat->specular), sp));
             }

@@ -236,9 +236,10 @@ fx_vec3 fx_rt_bump_gradient(fx16 height, fx16 scale, fx_vec3 q);
  *   FX_RT_FRAME_SPUN:    around the y axis, circles in planes y = const
  *                        (a turned or spun disc; the wood texture's rings).
  * The shading is Kajiya-Kay's anisotropic highlight (a surface of fine
- * fibres along T): spec = (sqrt(1 - (T.H)^2))^n with H the half-way
- * vector and n the material's exponent, brightest where T is
- * perpendicular to H, so the highlight is a band across T. Diffuse stays
+ * fibres along T): spec = (sqrt(1 - (T.H)^2))^n (N.L) with H the
+ * half-way vector and n the material's exponent, brightest where T is
+ * perpendicular to H, so the highlight is a band across T (N.L, which
+ * Kajiya-Kay lack, keeps it off the silhouette). Diffuse stays
  * Lambert's on N. Both the ray tracer (fx_rt_material.frame) and the
  * rasterizer's Phong path (fx3d_frame) shade with these three functions. */
 typedef enum fx_rt_frame_kind { FX_RT_FRAME_NONE, FX_RT_FRAME_BRUSHED, FX_RT_FRAME_SPUN } fx_rt_frame_kind;
@@ -250,9 +251,13 @@ fx_vec3 fx_rt_frame_dir(int kind, fx_vec3 q);
  * (nearly) along n, any unit t perpendicular to n. */
 void fx_rt_frame(fx_vec3 dir, fx_vec3 n, fx_vec3 *t, fx_vec3 *b);
 /* The highlight blended toward Kajiya-Kay's by strength k (0..1, clamped):
- * spec + k ((sqrt(1 - (t.h)^2))^n - spec), t and h unit, n 0..256 the
- * Phong exponent, spec the isotropic highlight it replaces (0..1). */
-fx16 fx_rt_aniso_spec(fx16 spec, fx16 k, fx_vec3 t, fx_vec3 h, int32_t n);
+ * spec + k ((sqrt(1 - (t.h)^2))^n nl - spec), t and h unit, n 0..256 the
+ * Phong exponent, spec the isotropic highlight it replaces (0..1), nl =
+ * N.L (0..1). The factor nl is not Kajiya-Kay's: their fibres shine up to
+ * the silhouette, where T.H goes to 0 whatever the grain, and a surface
+ * rim lit all round hides the band; it fades the band toward where the
+ * light grazes the surface, as real-time hair shaders do. */
+fx16 fx_rt_aniso_spec(fx16 spec, fx16 k, fx_vec3 t, fx_vec3 h, fx16 nl, int32_t n);
 
 #ifdef __cplusplus
 }  /* extern "C" */
