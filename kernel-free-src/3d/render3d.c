@@ -64,6 +64,7 @@ typedef struct tri_mode {
     uint8_t vcol;        /* Phong with vertex colours in A_VCOL.. */
     uint8_t solid;       /* solid texture from A_OBJ.. */
     uint8_t bump;        /* Phong normals tilted by the bumps at A_OBJ.. */
+    uint8_t frame;       /* Phong highlights along the frame map at A_OBJ.. (fx3d_frame) */
     uint8_t blend, alpha; /* translucent (fx3d_alpha): blended over with alpha 0..254;
                            * blend 2: added with saturation (fx3d_pass) */
     int32_t zbias;
@@ -79,6 +80,9 @@ typedef struct tri_mode {
     fx16 obj_scale;         /* A_OBJ holds the object point / obj_scale */
     fx16 bump_h, bump_s;    /* fx3d_bump */
     fx16 bnm[3][3];         /* the normal matrix, for the height's gradient */
+    int8_t frame_kind;      /* fx3d_frame */
+    fx16 frame_k, frame_s;
+    fx16 fmv[3][3];         /* the model-view's linear part: tangents go to eye space by it */
 } tri_mode;
 
 typedef struct pctx { /* per-draw state */
@@ -189,7 +193,7 @@ static void prepare_lights(const fx3d *r, elight *el, int *nl)
  * for the material's ambient and diffuse reflectance (glColorMaterial's
  * GL_AMBIENT_AND_DIFFUSE). */
 static fx3d_rgb shade_m(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_vec3 N, uint32_t dmask, int amb,
-                        const fx3d_rgb *vcol, fx16 kd_in, fx16 kd_out)
+                        const fx3d_rgb *vcol, fx16 kd_in, fx16 kd_out, const fx_vec3 *ft, fx16 fk)
 {
     fx3d_material mc;
     const fx3d_material *m = &r->mat;
@@ -252,11 +256,19 @@ static fx3d_rgb shade_m(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_v
                 }
                 fx_vec3 R = fx_vec3_sub(fx_vec3_scale(N, 2 * ndl), L);
                 fx16 rv = fx_vec3_dot(R, V);
+                fx16 sp = 0;
                 if (rv > 0) {
                     if (rv > FX16_ONE)
                         rv = FX16_ONE;
-                    rgb_madd(&c, rgb_mul(e->spec, m->specular), fx16_powi(rv, m->shininess));
+                    sp = fx16_powi(rv, m->shininess);
                 }
+                if (ft) { /* frame mapping: Kajiya-Kay's highlight about H (rt.h) */
+                    fx_vec3 H = fx_vec3_add(L, V);
+                    if (fx_vec3_normalize(&H) == 0)
+                        sp = fx_rt_aniso_spec(sp, fk, *ft, H, ndl, m->shininess);
+                }
+                if (rv > 0 || ft)
+                    rgb_madd(&c, rgb_mul(e->spec, m->specular), sp);
             }
         }
         rgb_madd(&acc, c, sf);
@@ -268,7 +280,14 @@ static fx3d_rgb shade_m(const fx3d *r, const elight *el, int nl, fx_vec3 P, fx_v
  * specular of the lights in `skip` (a mask). */
 static fx3d_rgb pshade(const pctx *pc, fx_vec3 P, fx_vec3 N, uint32_t skip, const fx3d_rgb *vcol)
 {
-    return shade_m(pc->r, pc->el, pc->nl, P, N, pc->dmask & ~skip, pc->amb, vcol, pc->kd_in, pc->kd_out);
+    return shade_m(pc->r, pc->el, pc->nl, P, N, pc->dmask & ~skip, pc->amb, vcol, pc->kd_in, pc->kd_out, NULL, 0);
+}
+
+/* pshade with frame mapping's tangent ft (unit, eye space) of strength fk */
+static fx3d_rgb pshade_frame(const pctx *pc, fx_vec3 P, fx_vec3 N, uint32_t skip, const fx3d_rgb *vcol,
+                             const fx_vec3 *ft, fx16 fk)
+{
+    return shade_m(pc->r, pc->el, pc->nl, P, N, pc->dmask & ~skip, pc->amb, vcol, pc->kd_in, pc->kd_out, ft, fk);
 }
 
 fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal)
@@ -276,7 +295,7 @@ fx3d_rgb fx3d_shade(const fx3d *r, fx_vec3 eye_pos, fx_vec3 eye_normal)
     elight el[FX3D_MAX_LIGHTS];
     int nl;
     prepare_lights(r, el, &nl);
-    return shade_m(r, el, nl, eye_pos, eye_normal, ~0u, 1, NULL, FX16_ONE, 0);
+    return shade_m(r, el, nl, eye_pos, eye_normal, ~0u, 1, NULL, FX16_ONE, 0, NULL, 0);
 }
 
 /* ------------------------------------------------------------------ */
@@ -531,6 +550,34 @@ static fx_vec3 bump_normal(const tri_mode *m, const int64_t *val, fx_vec3 N)
     if (fx_vec3_normalize(&o) < 0)
         return N;
     return o;
+}
+
+void fx3d_frame(fx3d *r, int kind, fx16 strength, fx16 scale)
+{
+    r->frame = kind == FX_RT_FRAME_BRUSHED || kind == FX_RT_FRAME_SPUN ? kind : FX_RT_FRAME_NONE;
+    r->frame_k = strength > 0 ? FX_MIN(strength, FX16_ONE) : 0;
+    r->frame_scale = FX_MIN(FX_MAX(scale, FX16_ONE / 16), 64 * FX16_ONE);
+}
+
+/* The eye-space tangent of the frame map at texture point A_OBJ and unit
+ * eye-space normal N: the map's object-space grain direction goes to eye
+ * space like a position's difference (by the model-view), then loses its
+ * normal part (fx_rt_frame). */
+static fx_vec3 frame_tangent(const tri_mode *m, const int64_t *val, fx_vec3 N)
+{
+    int64_t q[3];
+    for (int i = 0; i < 3; i++) {
+        q[i] = val[1 + A_OBJ + i] >> 16;
+        if (m->obj_scale != m->frame_s)
+            q[i] = q[i] * m->obj_scale / m->frame_s;
+    }
+    fx_vec3 d = fx_rt_frame_dir(m->frame_kind, fx_vec3_make(fx_sat32(q[0]), fx_sat32(q[1]), fx_sat32(q[2])));
+    int64_t e[3];
+    for (int i = 0; i < 3; i++)
+        e[i] = ((int64_t)m->fmv[i][0] * d.x + (int64_t)m->fmv[i][1] * d.y + (int64_t)m->fmv[i][2] * d.z) >> 16;
+    fx_vec3 t, b;
+    fx_rt_frame(fx_vec3_make(fx_sat32(e[0]), fx_sat32(e[1]), fx_sat32(e[2])), N, &t, &b);
+    return t;
 }
 
 void fx3d_plane_shadow(fx3d *r, const fx16 plane[4], int light, fx_color c)
@@ -966,7 +1013,13 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
                         N = bump_normal(m, val, N);
                     fx3d_rgb vc = {(fx16)(val[1 + A_VCOL] >> 16), (fx16)(val[2 + A_VCOL] >> 16),
                                    (fx16)(val[3 + A_VCOL] >> 16)};
-                    col = fx3d_rgb_to_color(pshade(pc, P, N, sm_lights(pc, sh), m->vcol ? &vc : NULL));
+                    if (m->frame) {
+                        fx_vec3 ft = frame_tangent(m, val, N);
+                        col = fx3d_rgb_to_color(
+                            pshade_frame(pc, P, N, sm_lights(pc, sh), m->vcol ? &vc : NULL, &ft, m->frame_k));
+                    } else {
+                        col = fx3d_rgb_to_color(pshade(pc, P, N, sm_lights(pc, sh), m->vcol ? &vc : NULL));
+                    }
                 }
                 if (m->tex)
                     col = tex_apply(m, val, st0, col);
@@ -1604,6 +1657,18 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                 for (int j = 0; j < 3; j++)
                     tm.bnm[i][j] = nm.m[i][j];
         }
+        if (r->frame && r->frame_k > 0 && tm.kind == K_PHONG) {
+            tm.frame = 1;
+            tm.na = FX_MAX(tm.na, A_SMK);
+            tm.frame_kind = (int8_t)r->frame;
+            tm.frame_k = r->frame_k;
+            tm.frame_s = r->frame_scale;
+            if (!tm.solid && !tm.bump)
+                tm.obj_scale = r->frame_scale;
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    tm.fmv[i][j] = mv.m[i][j];
+        }
         if (tm.use_sm > 1)
             tm.na = NA;
     } else {
@@ -1690,7 +1755,7 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                 int flip = f < 0;
                 if (flip)
                     fn = fx_vec3_make(-fn.x, -fn.y, -fn.z);
-                if (tm.solid || tm.bump)
+                if (tm.solid || tm.bump || tm.frame)
                     for (int i = 0; i < 3; i++) {
                         fx_vec3 o = m->pos[idx[i]];
                         fx16 sc = tm.obj_scale;

@@ -239,6 +239,19 @@ static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 we
             say(tr, depth, "  bumped normal", 0, 3, v);
         }
     }
+    /* frame mapping: the grain's tangent at the (bumped) normal */
+    fx_vec3 ft = {0, 0, 0}, fb;
+    int aniso = mat->frame != FX_RT_FRAME_NONE && mat->frame_k > 0 && mat->shininess > 0;
+    if (aniso) {
+        fx16 sc = FX_MIN(FX_MAX(mat->frame_scale, FX16_ONE / 16), 64 * FX16_ONE);
+        fx_vec3 q = fx_vec3_make(rt_sat((int64_t)P.x * 65536 / sc), rt_sat((int64_t)P.y * 65536 / sc),
+                                 rt_sat((int64_t)P.z * 65536 / sc));
+        fx_rt_frame(fx_rt_frame_dir(mat->frame, q), m, &ft, &fb);
+        if (tr->trace) {
+            fx16 v[6] = {ft.x, ft.y, ft.z, fb.x, fb.y, fb.z};
+            say(tr, depth, "  frame tangent, bitangent", 0, 6, v);
+        }
+    }
     fx3d_rgb diff = texture(mat, P);
     fx3d_rgb Iamb = rgb_add(mat->emissive, rgb_mul(s->ambient, mat->ambient)), Idiff = rgb(0, 0, 0), Ispec = rgb(0, 0, 0);
     for (int li = 0; li < s->nlights; li++) {
@@ -298,8 +311,11 @@ static fx3d_rgb shade(const tracer *tr, fx_vec3 S, fx_vec3 c, int depth, fx16 we
             fx_vec3 h = fx_vec3_make(l.x - c.x, l.y - c.y, l.z - c.z);
             if (fx_vec3_normalize(&h) == 0) {
                 fx16 mh = dot(m, h);
-                if (mh > 0)
-                    Ispec = rgb_add(Ispec, rgb_scale(rgb_mul(Il, mat->specular), fx16_powi(mh, mat->shininess)));
+                fx16 sp = mh > 0 ? fx16_powi(mh, mat->shininess) : 0;
+                if (aniso)
+                    sp = fx_rt_aniso_spec(sp, mat->frame_k, ft, h, lam, mat->shininess);
+                if (mh > 0 || aniso)
+                    Ispec = rgb_add(Ispec, rgb_scale(rgb_mul(Il, mat->specular), sp));
             }
         }
     }

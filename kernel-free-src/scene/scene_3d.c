@@ -805,6 +805,26 @@ static int cmd_bump3d(fx_scene *sc)
     return 0;
 }
 
+/* frame3d off | frame3d brushed|spun STRENGTH SCALE (fx3d_frame) */
+static int cmd_frame3d(fx_scene *sc)
+{
+    GET(s);
+    static const char *const ch[] = {"off", "brushed", "spun", NULL};
+    int kind;
+    TRY(kind = fx_scene_arg_choice(sc, ch));
+    fx16 k = 0, scale = FX16_ONE;
+    if (kind) {
+        TRY(fx_scene_arg_fx16(sc, &k));
+        TRY(fx_scene_arg_fx16(sc, &scale));
+        if (k < 0 || k > FX16_ONE || scale < FX16_ONE / 16 || scale > 64 * FX16_ONE)
+            return fx_scene_error(sc, "frame3d: STRENGTH 0..1, SCALE 0.0625..64");
+    }
+    TRY(fx_scene_end(sc));
+    /* the choice order is rt.h's fx_rt_frame_kind */
+    fx3d_frame(&s->r, kind, k, scale);
+    return 0;
+}
+
 /* The texture matrix stack (OpenGL's GL_TEXTURE mode): moves, turns and
  * tiles the textures of the meshes drawn next; see fx3d_texture_stack. */
 static int cmd_texmatrix(fx_scene *sc)
@@ -1034,6 +1054,7 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
      "texmatrix identity|push|pop | texmatrix translate S T | texmatrix scale SS [ST] | texmatrix rotate DEG", D},
     {"solid3d", cmd_solid3d, "solid3d wood|marble|checker #C0 #C1 SCALE | solid3d off", D},
     {"bump3d", cmd_bump3d, "bump3d HEIGHT SCALE | bump3d off", D},
+    {"frame3d", cmd_frame3d, "frame3d brushed|spun STRENGTH SCALE | frame3d off   (Phong: anisotropic highlights)", D},
     {"attenuation", cmd_attenuation, "attenuation LIGHT KC KL KQ", D},
     {"texture3d", cmd_texture3d, "texture3d modulate|replace|decal | texture3d off", D},
     {"shadowmap", cmd_shadowmap, "shadowmap begin SIZE LIGHT TX TY TZ FOV NEAR FAR | shadowmap end | shadowmap off", D},

@@ -247,6 +247,7 @@ A(shadowplane, FORM("off"), FORM(0), P3("A"), P3("B"), P3("C"), P3("D"), I("LIGH
 A(polygon3d, REP("vertex", 3, 16), P3("X"), P3("Y"), P3("Z"), C("COLOR"));
 A(solid3d, FORM("off"), FORM(0), W("wood|marble|checker"), C("C0"), C("C1"), FR("SCALE", 4096, 64 * 65536));
 A(bump3d, FORM("off"), FORM(0), F("HEIGHT", 0, 1), FR("SCALE", 4096, 64 * 65536));
+A(frame3d, FORM("off"), FORM(0), W("brushed|spun"), F("STRENGTH", 0, 1), FR("SCALE", 4096, 64 * 65536));
 A(texgen, W("sphere|off"));
 A(alpha3d, F("OPACITY", 0, 1), OPT, IW("MAXTRIANGLES", 1, 1048576));
 A(texmatrix, FORM("identity"), FORM("push"), FORM("pop"), FORM("translate"), F("S", -1024, 1024), F("T", -1024, 1024),
@@ -285,6 +286,7 @@ A(rtmaterial, C("AMB"), C("DIFF"), C("SPEC"), I("SHININESS", 0, 256), OPT, F("RE
   F("IOR", 1, 4));
 A(rttexture, FORM("none"), FORM(0), W("wood|marble|checker"), C("COLOR"), FR("SCALE", 4096, 64 * 65536));
 A(rtbump, FORM("none"), FORM(0), F("HEIGHT", 0, 1), FR("SCALE", 4096, 64 * 65536));
+A(rtframe, FORM("none"), FORM(0), W("brushed|spun"), F("STRENGTH", 0, 1), FR("SCALE", 4096, 64 * 65536));
 A(rtdepth, I("DEPTH", 0, FX_RT_MAX_RECURSION), OPT, F("CUTOFF", 0, 1));
 A(rttranslate, WR("X"), WR("Y"), WR("Z"));
 A(rtscale, F("SX", -16, 16), F("SY", -16, 16), F("SZ", -16, 16));
@@ -392,11 +394,11 @@ const fx_scene_argspec fx_scene_argspecs[] = {
     {"floor", a_sizen, 0, TRIS}, {"obj", a_obj, 0, TRIS}, {"shadowplane", a_shadowplane, L3, 0},
     {"shadowmap", a_shadowmap, L3, 0}, {"pass3d", a_pass3d, 0, 0}, {"texture3d", a_texture3d, TEX, 0},
     {"attenuation", a_attenuation, 0, 0}, {"polygon3d", a_polygon3d, 0, 0},
-    {"solid3d", a_solid3d, 0, 0}, {"bump3d", a_bump3d, 0, 0}, {"texgen", a_texgen, 0, 0},
+    {"solid3d", a_solid3d, 0, 0}, {"bump3d", a_bump3d, 0, 0}, {"frame3d", a_frame3d, 0, 0}, {"texgen", a_texgen, 0, 0},
     {"texmatrix", a_texmatrix, 0, 0}, {"alpha3d", a_alpha3d, 0, 0},
     {"rtcamera", a_rtcamera, 0, 0}, {"rtlight", a_rtlight, 0, 0}, {"rtambient", a_color, 0, 0},
     {"rtbackground", a_color, 0, 0}, {"rtmaterial", a_rtmaterial, 0, 0}, {"rttexture", a_rttexture, 0, 0},
-    {"rtbump", a_rtbump, 0, 0},
+    {"rtbump", a_rtbump, 0, 0}, {"rtframe", a_rtframe, 0, 0},
     {"rtdepth", a_rtdepth, 0, 0}, {"rtidentity", a_none, 0, 0}, {"rtpush", a_none, 0, 0},
     {"rtpop", a_none, "rtpush", 0}, {"rttranslate", a_rttranslate, 0, 0}, {"rtscale", a_rtscale, 0, 0},
     {"rtrotate", a_rtrotate, 0, 0}, {"rtshape", a_rtshape, 0, 0},

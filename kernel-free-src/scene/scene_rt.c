@@ -177,6 +177,28 @@ static int cmd_bump(fx_scene *sc)
     return 0;
 }
 
+/* rtframe none | rtframe brushed|spun STRENGTH SCALE: frame mapping of
+ * the shapes that follow (rt.h, fx_rt_frame_dir) */
+static int cmd_frame(fx_scene *sc)
+{
+    GET(r);
+    static const char *const ch[] = {"none", "brushed", "spun", NULL};
+    int kind;
+    TRY(kind = fx_scene_arg_choice(sc, ch));
+    fx16 k[2] = {0, FX16_ONE};
+    if (kind) {
+        TRY(fxs(sc, k, 2));
+        if (k[0] < 0 || k[0] > FX16_ONE || k[1] < FX16_ONE / 16 || k[1] > 64 * FX16_ONE)
+            return fx_scene_error(sc, "rtframe: STRENGTH 0..1, SCALE 0.0625..64");
+    }
+    TRY(fx_scene_end(sc));
+    /* the choice order is rt.h's fx_rt_frame_kind */
+    r->mat.frame = kind;
+    r->mat.frame_k = k[0];
+    r->mat.frame_scale = k[1];
+    return 0;
+}
+
 static int cmd_depth(fx_scene *sc)
 {
     GET(r);
@@ -634,6 +656,7 @@ const fx_scene_cmd fx_scene_cmds_rt[] = {
     {"rtmaterial", cmd_material, "rtmaterial #AMB #DIFF #SPEC SHININESS [REFLECT TRANSP IOR]", D},
     {"rttexture", cmd_texture, "rttexture none | wood|marble|checker #RGB SCALE", D},
     {"rtbump", cmd_bump, "rtbump none | rtbump HEIGHT SCALE", D},
+    {"rtframe", cmd_frame, "rtframe none | rtframe brushed|spun STRENGTH SCALE   (anisotropic highlights along the grain)", D},
     {"rtdepth", cmd_depth, "rtdepth DEPTH [CUTOFF]", D},
     {"rtidentity", cmd_identity, "rtidentity", D},
     {"rtpush", cmd_push, "rtpush", D},

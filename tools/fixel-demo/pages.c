@@ -25,6 +25,7 @@
 #include "fixel/mesh.h"
 #include "fixel/par.h"
 #include "fixel/render3d.h"
+#include "fixel/rt.h"
 #include "fixel/texture.h"
 #include "fixel/viz.h"
 #include "fixel/xform.h"
@@ -455,6 +456,60 @@ static void page_fills(fx_ctx *c, demo_state *st)
 
 
 /* ---- textures ---- */
+static fx_rect clip_in(const fx_ctx *c, fx_rect r);
+
+/* A Phong-shaded sphere in r, bump mapped (bump > 0) or frame mapped
+ * (frame: FX_RT_FRAME_*), lit from the upper left: the two perturbations
+ * of the local frame that the notes name among the texturing methods. */
+static void draw_mapped_sphere(fx_ctx *c, fx_rect r, fx_color col, fx16 bump, int frame)
+{
+    fx_surface s = fx_surface_sub(c->surf, r);
+    fx_rect band = clip_in(c, r);
+    if (fx_rect_empty(band))
+        return;
+    fx_mesh_params mp = {FX_MESH_SPHERE, FX16_ONE, 0, 0, 40, 20};
+    int32_t nv, nt;
+    if (fx_mesh_size(&mp, &nv, &nt) < 0)
+        return;
+    fx_mesh m;
+    memset(&m, 0, sizeof m);
+    m.pos = malloc((size_t)nv * 2 * sizeof(fx_vec3));
+    m.tri = malloc((size_t)nt * 3 * sizeof(uint32_t));
+    void *z = malloc(fx3d_depth_bytes(&s, 32));
+    fx3d *rd = malloc(sizeof *rd);
+    fx_mat4 ms[2], ps[2];
+    if (m.pos && m.tri && z && rd) {
+        m.nrm = m.pos + nv;
+        m.cap_verts = nv;
+        m.cap_tris = nt;
+        if (fx_mesh_make(&m, &mp) == 0 && fx3d_init(rd, &s, ms, 2, ps, 2) == 0) {
+            rd->ctx.clip = fx_rect_intersect(rd->ctx.clip, band);
+            fx3d_set_depth(rd, z, 32);
+            fx3d_perspective(rd, fx_angle_from_deg(40), fx16_from_ratio(s.w, s.h), FX16_ONE / 2, 50 * FX16_ONE);
+            rd->light[0].type = FX3D_LIGHT_DIRECTIONAL;
+            rd->light[0].pos = fx_vec3_make(-FX16_ONE, FX16_ONE, 2 * FX16_ONE);
+            rd->ambient = fx3d_rgb_from_color(0x303030);
+            rd->mat.ambient = rd->mat.diffuse = fx3d_rgb_from_color(col);
+            rd->mat.specular = fx3d_rgb_from_color(0xFFFFFF);
+            rd->mat.shininess = 40;
+            rd->shading = FX3D_PHONG;
+            if (bump > 0)
+                fx3d_bump(rd, bump, FX16_ONE / 4);
+            if (frame)
+                fx3d_frame(rd, frame, FX16_ONE, FX16_ONE / 16);
+            fx_mat4 *top = fx_mat_stack_top(&rd->model), tilt;
+            fx_mat4_translate(top, 0, 0, -4 * FX16_ONE);
+            fx_mat4_rotate_x(&tilt, frame == FX_RT_FRAME_SPUN ? FX_ANGLE_90 * 2 / 3 : 0);
+            fx_mat4_mul(top, top, &tilt);
+            fx3d_draw(rd, &m);
+        }
+    }
+    free(rd);
+    free(z);
+    free(m.tri);
+    free(m.pos);
+}
+
 static void page_textures(fx_ctx *c, demo_state *st)
 {
     (void)st;
@@ -488,17 +543,17 @@ static void page_textures(fx_ctx *c, demo_state *st)
     fx_surface_init(&tx.img, texels, 64, 64, 64 * 4, FX_FMT_XRGB8888);
     tx.wrap = FX_TEX_REPEAT;
     tx.filter = FX_TEX_BILINEAR;
-    panel(c, 8, top + 178, 300, 266, "Texture mapped (bilinear)");
-    int32_t quad[8] = {40, top + 420, 90, top + 220, 250, top + 240, 290, top + 430};
+    panel(c, 8, top + 178, 236, 266, "Texture mapped (bilinear)");
+    int32_t quad[8] = {28, top + 420, 70, top + 220, 200, top + 240, 232, top + 430};
     fx16 st4[8] = {0, FX16_ONE * 2, 0, 0, FX16_ONE * 2, 0, FX16_ONE * 2, FX16_ONE * 2};
     fx_fill_poly_tex(c, quad, st4, 4, &tx);
 
-    panel(c, 316, top + 178, 236, 266, "Linear gradient");
+    panel(c, 252, top + 178, 160, 266, "Linear gradient");
     fx_gradient g;
     memset(&g, 0, sizeof g);
-    g.x0 = 330;
+    g.x0 = 266;
     g.y0 = top + 200;
-    g.x1 = 540;
+    g.x1 = 400;
     g.y1 = top + 430;
     g.nstops = 4;
     g.stops[0] = 0xFF1E3A5Fu;
@@ -507,21 +562,32 @@ static void page_textures(fx_ctx *c, demo_state *st)
     g.stops[3] = 0xFFF78154u;
     fx_fill_style gs;
     fx_ctx s = shader_ctx(c, &gs, fx_gradient_shade, &g);
-    styled_rect(&s, 324, top + 200, 220, 236);
+    styled_rect(&s, 260, top + 200, 144, 236);
 
-    panel(c, 560, top + 178, 232, 266, "Radial gradient");
+    panel(c, 420, top + 178, 160, 266, "Radial gradient");
     fx_gradient r;
     memset(&r, 0, sizeof r);
     r.radial = 1;
-    r.x0 = 650;
+    r.x0 = 480;
     r.y0 = top + 290;
-    r.r = 110;
+    r.r = 80;
     r.nstops = 3;
     r.stops[0] = 0xFFFFFFFFu;
     r.stops[1] = 0xFFE15554u;
     r.stops[2] = 0xFF18263Au;
     gs.user = &r;
-    styled_disc(&s, 676, top + 316, 108);
+    styled_disc(&s, 500, top + 316, 72);
+
+    /* bump mapping tilts the normal; frame mapping turns the whole frame,
+     * so the highlight runs across the grain (Kajiya-Kay, fixel/rt.h) */
+    panel(c, 588, top + 178, 204, 266, "Bump / frame mapping");
+    static const char *mname[4] = {"plain", "bumped", "brushed", "spun"};
+    for (int i = 0; i < 4; i++) {
+        int32_t x = 592 + (i & 1) * 100, y = top + 196 + (i >> 1) * 124;
+        draw_mapped_sphere(c, (fx_rect){x, y, x + 96, y + 112}, i < 2 ? 0xFFD07030u : 0xFF506070u,
+                           i == 1 ? FX16_ONE / 16 : 0, i == 2 ? FX_RT_FRAME_BRUSHED : i == 3 ? FX_RT_FRAME_SPUN : 0);
+        demo_text(c, x + 4, y + 112, INK, "%s", mname[i]);
+    }
 }
 
 /* ---- transforms ---- */

@@ -183,6 +183,8 @@ typedef struct fx3d {
     fx16 solid_scale;
     int tex_sphere_map;        /* fx3d_sphere_map */
     fx16 bump, bump_scale;     /* fx3d_bump */
+    int frame;                 /* fx3d_frame: FX_RT_FRAME_* of rt.h; 0 none */
+    fx16 frame_k, frame_scale;
     /* Texture matrix stack (fx3d_texture_stack); slot NULL: identity. */
     fx_mat_stack texm;
     /* Translucency (fx3d_alpha, fx3d_set_translucent) */
@@ -336,6 +338,14 @@ void fx3d_solid(fx3d *r, int kind, fx_color c0, fx_color c1, fx16 scale);
  * by the normal matrix. height 0 (or <= 0) turns it off; height 0..1,
  * scale 1/16..64 object units per noise cell (clamped). */
 void fx3d_bump(fx3d *r, fx16 height, fx16 scale);
+/* Frame mapping under Phong shading (FX3D_PHONG; other shadings ignore
+ * it): the ray tracer's frame map (fx_rt_frame_dir, kind FX_RT_FRAME_* of
+ * rt.h, at the object-space point / scale) gives each pixel a tangent,
+ * taken to eye space by the model-view, and the highlight is blended
+ * toward Kajiya-Kay's anisotropic one by strength (fx_rt_aniso_spec;
+ * Phong's R.V highlight at 0). kind 0 or strength <= 0 turns it off;
+ * strength 0..1, scale 1/16..64 object units per jitter cell (clamped). */
+void fx3d_frame(fx3d *r, int kind, fx16 strength, fx16 scale);
 
 /* Draw a mesh with the current state. Returns 0 or a negative error. */
 int fx3d_draw(fx3d *r, const fx_mesh *m);

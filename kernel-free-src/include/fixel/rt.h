@@ -77,6 +77,9 @@ typedef struct fx_rt_material {
     fx16 bump;          /* bump height, world units 0..1 (0: smooth; fx_rt_bump_normal) */
     fx16 bump_scale;    /* world units per noise cell of the bumps, 1/16..64 */
     fx3d_rgb emissive;  /* light the surface gives off itself, added to Iamb (0..1; the SDL's emissive) */
+    int32_t frame;      /* fx_rt_frame_kind: anisotropic highlights (fx_rt_frame_dir); 0 none */
+    fx16 frame_k;       /* their strength 0..1 (0: the Blinn-Phong highlight unchanged) */
+    fx16 frame_scale;   /* world units per jitter cell of the frame map, 1/16..64 */
 } fx_rt_material;
 
 /* A material with no texture and no bumps: ambient, diffuse and specular
@@ -221,6 +224,40 @@ fx_vec3 fx_rt_bump_normal(fx16 height, fx16 scale, fx_vec3 P, fx_vec3 n);
  * taken with respect to P (so times height / scale), at texture point q;
  * each component within +-24 units. The rasterizer's bumps use it. */
 fx_vec3 fx_rt_bump_gradient(fx16 height, fx16 scale, fx_vec3 q);
+
+/* Frame mapping: where bump mapping tilts only the normal, a frame map
+ * gives the whole local frame (tangent T, bitangent B, normal N) at each
+ * point, for surfaces whose highlights stretch along a grain (brushed or
+ * spun metal, wood, hair). The map gives the direction T leans along at
+ * texture point q (world or object point / scale), with a small jitter
+ * from fx_rt_noise3 that varies fast across the grain and slowly along
+ * it (so the highlight breaks into streaks):
+ *   FX_RT_FRAME_BRUSHED: along the x axis (brushed along one direction);
+ *   FX_RT_FRAME_SPUN:    around the y axis, circles in planes y = const
+ *                        (a turned or spun disc; the wood texture's rings).
+ * The shading is Kajiya-Kay's anisotropic highlight (a surface of fine
+ * fibres along T): spec = (sqrt(1 - (T.H)^2))^n (N.L) with H the
+ * half-way vector and n the material's exponent, brightest where T is
+ * perpendicular to H, so the highlight is a band across T (N.L, which
+ * Kajiya-Kay lack, keeps it off the silhouette). Diffuse stays
+ * Lambert's on N. Both the ray tracer (fx_rt_material.frame) and the
+ * rasterizer's Phong path (fx3d_frame) shade with these three functions. */
+typedef enum fx_rt_frame_kind { FX_RT_FRAME_NONE, FX_RT_FRAME_BRUSHED, FX_RT_FRAME_SPUN } fx_rt_frame_kind;
+/* The map's grain direction at texture point q (not unit, length about 1
+ * unit); kind NONE or unknown (and SPUN on the y axis) gives (1, 0, 0). */
+fx_vec3 fx_rt_frame_dir(int kind, fx_vec3 q);
+/* The orthonormal frame at unit normal n: *t the grain direction dir with
+ * its normal part removed (Gram-Schmidt), unit; *b = n x t. When dir is
+ * (nearly) along n, any unit t perpendicular to n. */
+void fx_rt_frame(fx_vec3 dir, fx_vec3 n, fx_vec3 *t, fx_vec3 *b);
+/* The highlight blended toward Kajiya-Kay's by strength k (0..1, clamped):
+ * spec + k ((sqrt(1 - (t.h)^2))^n nl - spec), t and h unit, n 0..256 the
+ * Phong exponent, spec the isotropic highlight it replaces (0..1), nl =
+ * N.L (0..1). The factor nl is not Kajiya-Kay's: their fibres shine up to
+ * the silhouette, where T.H goes to 0 whatever the grain, and a surface
+ * rim lit all round hides the band; it fades the band toward where the
+ * light grazes the surface, as real-time hair shaders do. */
+fx16 fx_rt_aniso_spec(fx16 spec, fx16 k, fx_vec3 t, fx_vec3 h, fx16 nl, int32_t n);
 
 #ifdef __cplusplus
 }  /* extern "C" */
