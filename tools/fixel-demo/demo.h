@@ -3,11 +3,13 @@
  * headless renderer and the interactive loop. */
 #ifndef FIXEL_DEMO_H
 #define FIXEL_DEMO_H
+#include <stddef.h>
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/clip.h"
 #include "fixel/mat3d.h"
 #include "fixel/anim.h"
+#include "fixel/julia.h"
 
 #define DEMO_FLIGHT_MAX 32
 
@@ -32,6 +34,7 @@ typedef struct demo_state {
     int64_t mcre, mcim, mwidth; /* Mandelbrot view, fx56 */
     int32_t julia_x, julia_y;   /* pointer position choosing c */
     int koch_order;
+    int orbit_off;              /* 1: the orbit-of-0 overlay hidden ('o') */
     /* colour page: chosen point on the wheel */
     int32_t pick_x, pick_y;
     /* 3D */
@@ -109,6 +112,14 @@ void demo_anim_page(fx_ctx *c, demo_state *st, int32_t top);
 int demo_anim_key(demo_state *st, int key);
 int demo_camera_key(fx_camera *cam, int key, fx16 step);
 void demo_anim_set_file(const char *path);
+
+/* The Fractals page's orbit-of-0 overlay (orbit.c): fx_orbit0 of c for n
+ * values into zre / zim (n entries each) and info, with two lines of text:
+ * head "orbit of 0, c = RE IMi: KIND" (fixed point, spiral into a fixed
+ * point, cycle of period P, explodes (|zK| > 2), bounded, no cycle found)
+ * and vals, the first values z1..z4. Returns fx_orbit0's result. */
+int demo_orbit_text(fx56 cre, fx56 cim, fx56 *zre, fx56 *zim, uint32_t n, fx_orbit0_info *info, char *head,
+                    size_t nhead, char *vals, size_t nvals);
 
 /* helpers */
 void demo_text(const fx_ctx *c, int32_t x, int32_t y, fx_color col, const char *fmt, ...)
