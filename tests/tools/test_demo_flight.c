@@ -101,3 +101,57 @@ FX_TEST(demo_flight_records_to_its_file_and_plays_back)
     unlink(path);
     demo_anim_set_file(NULL);
 }
+
+/* The end of the chain in st's pose, in Q16.16 px. */
+static void arm_end(const demo_state *st, int32_t x0, int32_t y0, fx16 *ex, fx16 *ey)
+{
+    fx_kin_chain ch;
+    fx16 p[2 * (DEMO_ARM_LINKS + 1)];
+    demo_arm_chain(x0, y0, &ch);
+    FX_CHECK_EQ(fx_kin_forward(&ch, st->arm_theta, p), DEMO_ARM_LINKS + 1);
+    *ex = p[2 * DEMO_ARM_LINKS], *ey = p[2 * DEMO_ARM_LINKS + 1];
+}
+
+static int64_t dist2(fx16 ax, fx16 ay, fx16 bx, fx16 by)
+{
+    int64_t dx = (int64_t)ax - bx, dy = (int64_t)ay - by;
+    return dx * dx + dy * dy;
+}
+
+/* The Animation page's arm: it starts straight, far from its target, chases
+ * it at no more than 3 px a frame, and once caught its end stays within a
+ * pixel of the moving target, headless (frames 0..36, the golden's) and
+ * from any frame on a display. */
+FX_TEST(demo_arm_reaches_its_goal_directed_target)
+{
+    static demo_state st;
+    memset(&st, 0, sizeof st);
+    const int32_t x0 = 204, y0 = DEMO_TAB_H + 8 + 198;
+    fx16 tx, ty, ex, ey;
+    demo_arm_advance(&st, 36, x0, y0, &tx, &ty); /* headless: from frame 0 */
+    FX_CHECK_EQ(st.arm_frame, 36u);
+    FX_CHECK_EQ(st.arm_ntrail, 36);
+    arm_end(&st, x0, y0, &ex, &ey);
+    FX_CHECK_MSG(dist2(ex, ey, tx, ty) <= (int64_t)FX16_ONE * FX16_ONE, "end (%d, %d) target (%d, %d)", ex >> 16,
+                 ey >> 16, tx >> 16, ty >> 16);
+
+    memset(&st, 0, sizeof st);
+    st.interactive = 1;
+    demo_arm_advance(&st, 500, x0, y0, &tx, &ty); /* a display: straight at the frame it opens */
+    FX_CHECK_EQ(st.arm_ntrail, 0);
+    arm_end(&st, x0, y0, &ex, &ey);
+    FX_CHECK(dist2(ex, ey, tx, ty) > (int64_t)20 * 20 * FX16_ONE * FX16_ONE);
+    fx16 px = ex, py = ey;
+    for (uint32_t f = 501; f <= 740; f++) {
+        demo_arm_advance(&st, f, x0, y0, &tx, &ty);
+        arm_end(&st, x0, y0, &ex, &ey);
+        /* bounded speed: the aim steps 3 px, the end follows it to 1/64 */
+        FX_CHECK_MSG(dist2(ex, ey, px, py) <= (int64_t)(3 * FX16_ONE + FX16_ONE / 16) * (3 * FX16_ONE + FX16_ONE / 16),
+                     "frame %u: the end jumped", f);
+        if (f >= 560) /* caught within 2 s, and kept */
+            FX_CHECK_MSG(dist2(ex, ey, tx, ty) <= (int64_t)FX16_ONE * FX16_ONE, "frame %u: end (%d, %d) target (%d, %d)",
+                         f, ex >> 16, ey >> 16, tx >> 16, ty >> 16);
+        px = ex, py = ey;
+    }
+    FX_CHECK_EQ(st.arm_ntrail, DEMO_ARM_TRAIL);
+}

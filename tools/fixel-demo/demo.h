@@ -3,13 +3,18 @@
  * headless renderer and the interactive loop. */
 #ifndef FIXEL_DEMO_H
 #define FIXEL_DEMO_H
+#include <stddef.h>
 #include <stdint.h>
 #include "fixel/draw.h"
 #include "fixel/clip.h"
 #include "fixel/mat3d.h"
 #include "fixel/anim.h"
+#include "fixel/julia.h"
+#include "fixel/kinematics.h"
 
 #define DEMO_FLIGHT_MAX 32
+#define DEMO_ARM_LINKS 3
+#define DEMO_ARM_TRAIL 48
 
 #define DEMO_TAB_H 22
 
@@ -32,6 +37,7 @@ typedef struct demo_state {
     int64_t mcre, mcim, mwidth; /* Mandelbrot view, fx56 */
     int32_t julia_x, julia_y;   /* pointer position choosing c */
     int koch_order;
+    int orbit_off;              /* 1: the orbit-of-0 overlay hidden ('o') */
     /* colour page: chosen point on the wheel */
     int32_t pick_x, pick_y;
     /* 3D */
@@ -51,6 +57,14 @@ typedef struct demo_state {
     int32_t nflight;
     int flying;
     uint32_t fly_from; /* the frame the flight started */
+    /* the Animation page's arm (page_anim.c): its pose and aim point at
+     * frame arm_frame, and the end's last DEMO_ARM_TRAIL positions */
+    int arm_ready;
+    uint32_t arm_frame;
+    fx_angle arm_theta[DEMO_ARM_LINKS];
+    fx16 arm_aim[2];
+    fx16 arm_trail[2 * DEMO_ARM_TRAIL];
+    int32_t arm_ntrail;
 } demo_state;
 
 typedef struct demo_page {
@@ -109,6 +123,21 @@ void demo_anim_page(fx_ctx *c, demo_state *st, int32_t top);
 int demo_anim_key(demo_state *st, int key);
 int demo_camera_key(fx_camera *cam, int key, fx16 step);
 void demo_anim_set_file(const char *path);
+
+/* The Fractals page's orbit-of-0 overlay (orbit.c): fx_orbit0 of c for n
+ * values into zre / zim (n entries each) and info, with two lines of text:
+ * head "orbit of 0, c = RE IMi: KIND" (fixed point, spiral into a fixed
+ * point, cycle of period P, explodes (|zK| > 2), bounded, no cycle found)
+ * and vals, the first values z1..z4. Returns fx_orbit0's result. */
+int demo_orbit_text(fx56 cre, fx56 cim, fx56 *zre, fx56 *zim, uint32_t n, fx_orbit0_info *info, char *head,
+                    size_t nhead, char *vals, size_t nvals);
+
+/* The Animation page's arm (page_anim.c): advance st's arm to frame f (the
+ * page's clock in frames), a chain reaching by CCD for an aim point that
+ * chases, at a bounded speed, a target running a figure of eight in the
+ * panel at (x0, y0); the target at frame f goes to tx, ty (Q16.16 px). */
+void demo_arm_advance(demo_state *st, uint32_t f, int32_t x0, int32_t y0, fx16 *tx, fx16 *ty);
+void demo_arm_chain(int32_t x0, int32_t y0, fx_kin_chain *c);
 
 /* helpers */
 void demo_text(const fx_ctx *c, int32_t x, int32_t y, fx_color col, const char *fmt, ...)

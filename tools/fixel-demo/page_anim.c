@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* fixel-demo — the Animation page (docs/ANIMATION.md): a morph by added
- * vertices, the bouncing ball, an eased square following a spline path, and
+ * vertices, the bouncing ball, an eased square following a spline path, a
+ * jointed arm reaching by inverse kinematics for a goal-directed target, and
  * a 3D camera flight recorded from key presses and played back through
  * fx_anim_eval. The clock is the demo's frame counter (30 a second); the
  * headless picture is drawn at 1.2 s with the default flight half flown. */
@@ -14,6 +15,7 @@
 #include "fixel/circle.h"
 #include "fixel/files.h"
 #include "fixel/fill.h"
+#include "fixel/kinematics.h"
 #include "fixel/line.h"
 #include "fixel/mesh.h"
 #include "fixel/render3d.h"
@@ -148,7 +150,7 @@ static void draw_ball(fx_ctx *c, fx16 t, int32_t x0, int32_t y0, int32_t w, int3
 
 static void draw_path(fx_ctx *c, fx16 t, int32_t x0, int32_t y0)
 {
-    static const int32_t pts[5][2] = {{20, 100}, {90, 20}, {180, 110}, {280, 30}, {350, 90}};
+    static const int32_t pts[5][2] = {{10, 100}, {45, 20}, {90, 110}, {140, 30}, {175, 90}};
     fx_anim_key k[5];
     for (int i = 0; i < 5; i++) {
         memset(&k[i], 0, sizeof k[i]);
@@ -182,7 +184,118 @@ static void draw_path(fx_ctx *c, fx16 t, int32_t x0, int32_t y0)
     int starts[2] = {0, 4};
     fx_ctx_set_color(c, 0xFF60D080u);
     fx_poly_fill16(c, sq, starts, 1);
-    demo_text(c, x0 + 4, y0 + 120, DIM, "spline path, ease in/out, facing its way");
+    demo_text(c, x0 + 4, y0 + 120, DIM, "spline path, ease in/out,");
+    demo_text(c, x0 + 4, y0 + 134, DIM, "facing its way");
+}
+
+/* ---- kinematics: an arm after a goal-directed target ---- */
+
+/* The arm stands on the bottom middle of its ARM_W x ARM_H panel at (x0, y0)
+ * pointing up; its target runs a figure of eight round (ARM_CX, ARM_CY) in
+ * ARM_PERIOD frames, inside the reach; the aim point chases it at ARM_SPEED
+ * px a frame (the target's fastest is about 2.3), so the end lags after a
+ * restart and then stays on the target. */
+#define ARM_W 184
+#define ARM_H 196
+#define ARM_CX (ARM_W / 2)
+#define ARM_CY 110
+#define ARM_RX 55
+#define ARM_RY 30
+#define ARM_PERIOD 240
+#define ARM_SPEED (3 * FX16_ONE)
+
+static const fx16 arm_len[DEMO_ARM_LINKS] = {60 * FX16_ONE, 45 * FX16_ONE, 30 * FX16_ONE};
+
+void demo_arm_chain(int32_t x0, int32_t y0, fx_kin_chain *c)
+{
+    c->x = (x0 + ARM_W / 2) * FX16_ONE;
+    c->y = (y0 + ARM_H - 14) * FX16_ONE;
+    c->dir = FX_ANGLE_270; /* up the y-down screen */
+    c->n = DEMO_ARM_LINKS;
+    c->len = arm_len;
+}
+
+static void arm_target(uint32_t f, int32_t x0, int32_t y0, fx16 *tx, fx16 *ty)
+{
+    fx_angle a = (fx_angle)((uint64_t)(f % ARM_PERIOD) * 0x100000000ull / ARM_PERIOD);
+    *tx = (x0 + ARM_CX) * FX16_ONE + ARM_RX * fx_sin(a);
+    *ty = (y0 + ARM_CY) * FX16_ONE - ARM_RY * fx_sin((fx_angle)(2 * a));
+}
+
+void demo_arm_advance(demo_state *st, uint32_t f, int32_t x0, int32_t y0, fx16 *tx, fx16 *ty)
+{
+    fx_kin_chain ch;
+    demo_arm_chain(x0, y0, &ch);
+    /* a fresh page, a reset clock or a long gap: the straight arm again,
+     * from frame 0 when headless so its picture shows the chase (never
+     * more than 4 periods of steps at once) */
+    if (!st->arm_ready || f < st->arm_frame || f - st->arm_frame > 4 * ARM_PERIOD) {
+        fx16 p[2 * (DEMO_ARM_LINKS + 1)];
+        memset(st->arm_theta, 0, sizeof st->arm_theta);
+        fx_kin_forward(&ch, st->arm_theta, p);
+        st->arm_aim[0] = p[2 * DEMO_ARM_LINKS];
+        st->arm_aim[1] = p[2 * DEMO_ARM_LINKS + 1];
+        st->arm_frame = st->interactive || f > 4 * ARM_PERIOD ? f : 0;
+        st->arm_ntrail = 0;
+        st->arm_ready = 1;
+    }
+    while (st->arm_frame < f) {
+        fx16 gx, gy, end[2];
+        st->arm_frame++;
+        arm_target(st->arm_frame, x0, y0, &gx, &gy);
+        fx_kin_follow(&ch, st->arm_theta, &st->arm_aim[0], &st->arm_aim[1], gx, gy, ARM_SPEED, 1, FX16_ONE / 64,
+                      64, end);
+        if (st->arm_ntrail == DEMO_ARM_TRAIL) {
+            memmove(st->arm_trail, st->arm_trail + 2, (2 * DEMO_ARM_TRAIL - 2) * sizeof st->arm_trail[0]);
+            st->arm_ntrail--;
+        }
+        st->arm_trail[2 * st->arm_ntrail] = end[0];
+        st->arm_trail[2 * st->arm_ntrail + 1] = end[1];
+        st->arm_ntrail++;
+    }
+    arm_target(st->arm_frame, x0, y0, tx, ty);
+}
+
+static void draw_arm(fx_ctx *c, demo_state *st, uint32_t f, int32_t x0, int32_t y0)
+{
+    box(c, x0, y0, ARM_W, ARM_H);
+    fx16 tx, ty, p[2 * (DEMO_ARM_LINKS + 1)];
+    demo_arm_advance(st, f, x0, y0, &tx, &ty);
+    fx_ctx_set_color(c, 0xFF505A6Au); /* the target's path */
+    int32_t ox = 0, oy = 0;
+    for (uint32_t i = 0; i <= 96; i++) {
+        fx16 x, y;
+        arm_target(i * ARM_PERIOD / 96, x0, y0, &x, &y);
+        if (i)
+            fx_line(c, ox, oy, fx16_round(x), fx16_round(y));
+        ox = fx16_round(x), oy = fx16_round(y);
+    }
+    fx_ctx_set_color(c, 0xFF60D080u); /* where the end has been */
+    for (int32_t i = 1; i < st->arm_ntrail; i++)
+        fx_line(c, fx16_round(st->arm_trail[2 * i - 2]), fx16_round(st->arm_trail[2 * i - 1]),
+                fx16_round(st->arm_trail[2 * i]), fx16_round(st->arm_trail[2 * i + 1]));
+    int32_t gx = fx16_round(tx), gy = fx16_round(ty);
+    fx_ctx_set_color(c, 0xFFFF4040u);
+    fx_line(c, gx - 7, gy, gx + 7, gy);
+    fx_line(c, gx, gy - 7, gx, gy + 7);
+    fx_circle(c, gx, gy, 6);
+    fx_kin_chain ch;
+    demo_arm_chain(x0, y0, &ch);
+    fx_kin_forward(&ch, st->arm_theta, p);
+    fx_ctx_set_color(c, DIM);
+    fx_fill_rect(c, fx16_round(ch.x) - 12, fx16_round(ch.y), 25, 6);
+    fx_ctx_set_color(c, 0xFF3C8CD0u);
+    for (int32_t i = 0; i < DEMO_ARM_LINKS; i++)
+        for (int32_t d = -1; d <= 1; d++) /* three pixels thick */
+            fx_line(c, fx16_round(p[2 * i]) + d, fx16_round(p[2 * i + 1]), fx16_round(p[2 * i + 2]) + d,
+                    fx16_round(p[2 * i + 3]));
+    fx_ctx_set_color(c, INK);
+    for (int32_t i = 0; i < DEMO_ARM_LINKS; i++)
+        fx_circle(c, fx16_round(p[2 * i]), fx16_round(p[2 * i + 1]), 3);
+    fx_ctx_set_color(c, ACCENT);
+    fx_disc(c, fx16_round(p[2 * DEMO_ARM_LINKS]), fx16_round(p[2 * DEMO_ARM_LINKS + 1]), 3);
+    demo_text(c, x0 + 6, y0 + 5, ACCENT, "Arm: CCD inverse kinematics");
+    demo_text(c, x0 + 6, y0 + 18, DIM, "goal-directed, 3 px a frame");
 }
 
 /* ---- 3D: the flight ---- */
@@ -280,6 +393,7 @@ void demo_anim_page(fx_ctx *c, demo_state *st, int32_t top)
     draw_morph(c, t, 80, top + 90);
     draw_ball(c, t, 170, top + 20, 216, 140);
     draw_path(c, t, 16, top + 220);
+    draw_arm(c, st, st->frame + (st->interactive ? 0 : 36), 204, top + 198);
     if (st->flying && st->nflight) {
         fx_anim_track tr = flight_track(st);
         fx16 v[FX_ANIM_MAX_CH], ft = clock_of(st, st->fly_from);

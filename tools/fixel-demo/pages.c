@@ -993,6 +993,86 @@ static void draw_mountain(fx_ctx *c, fx_rect r)
     free(z);
 }
 
+/* Text with a one-pixel black shadow, readable over any colour of the set. */
+static void shadow_text(const fx_ctx *c, int32_t x, int32_t y, fx_color col, const char *s)
+{
+    demo_text(c, x + 1, y + 1, 0xFF000000u, "%s", s);
+    demo_text(c, x, y, col, "%s", s);
+}
+
+/* The orbit of 0 under z^2 + c over the Mandelbrot frame r of view v: its
+ * points joined in order (the first ORBIT_SHOW), z0..z3 marked with their
+ * index, and two lines at ty: c with fx_orbit0's classification, and the
+ * first values. */
+#define ORBIT_N 2000
+#define ORBIT_SHOW 200
+
+/* The frame pixel of an orbit value, 0 when it is past what
+ * fx_julia_to_pixel takes (parts above 16) or lands over 2^20 px out (an
+ * escaping value, or a deep zoom away from 0): the line stops there rather
+ * than run off towards a saturated, overflowing coordinate. */
+static int orbit_pixel(const fx_fractal_view *v, fx56 re, fx56 im, int32_t *x, int32_t *y)
+{
+    if (re > 16 * FX56_ONE || re < -16 * FX56_ONE || im > 16 * FX56_ONE || im < -16 * FX56_ONE)
+        return 0;
+    fx_julia_to_pixel(v, re, im, x, y);
+    return *x > -(1 << 20) && *x < (1 << 20) && *y > -(1 << 20) && *y < (1 << 20);
+}
+static void draw_orbit(const fx_ctx *c, const fx_fractal_view *v, fx_rect r, fx56 cre, fx56 cim, int32_t ty)
+{
+    fx56 *zre = malloc(2 * ORBIT_N * sizeof *zre);
+    if (!zre)
+        return;
+    fx56 *zim = zre + ORBIT_N;
+    fx_orbit0_info info;
+    char head[96], vals[96];
+    if (demo_orbit_text(cre, cim, zre, zim, ORBIT_N, &info, head, sizeof head, vals, sizeof vals) < 0) {
+        free(zre);
+        return;
+    }
+    fx_surface s = fx_surface_sub(c->surf, r);
+    fx_ctx oc;
+    fx_ctx_init(&oc, &s);
+    /* fx_julia_to_pixel maps in Q4.28: below a width of 2^-16 its pixels
+     * grow coarse, so deeper zooms print the orbit without plotting it */
+    int plot = v->width >= (FX56_ONE >> 16);
+    fx_ctx_set_color(&oc, 0xFF5CE1E6u);
+    int32_t px = 0, py = 0, have = 0;
+    for (uint32_t k = 0; plot && k <= info.steps && k < ORBIT_SHOW; k++) {
+        int32_t x, y;
+        if (!orbit_pixel(v, zre[k], zim[k], &x, &y))
+            break;
+        if (have)
+            for (int32_t d = 0; d <= 1; d++) /* two pixels wide, to show on the set's black */
+                fx_line(&oc, px + d, py, x + d, y);
+        fx_disc(&oc, x, y, 2);
+        px = x, py = y, have = 1;
+    }
+    int32_t lx[4], ly[4];
+    for (uint32_t k = 0; plot && k <= info.steps && k < 4; k++) {
+        int32_t x, y, seen = 0;
+        if (!orbit_pixel(v, zre[k], zim[k], &x, &y))
+            break;
+        lx[k] = x, ly[k] = y;
+        for (uint32_t j = 0; j < k; j++) /* a value back on an earlier one (a cycle) keeps that label */
+            seen |= x - lx[j] < 8 && lx[j] - x < 8 && y - ly[j] < 8 && ly[j] - y < 8;
+        if (seen)
+            continue;
+        fx_ctx_set_color(&oc, 0xFFFFFFFFu);
+        fx_disc(&oc, x, y, 3);
+        fx_ctx_set_color(&oc, 0xFF000000u);
+        fx_circle(&oc, x, y, 3);
+        char lab[4] = {'z', (char)('0' + k), 0, 0};
+        shadow_text(&oc, x + 5, y - 12, 0xFFFFFFFFu, lab);
+    }
+    /* the text on a dark strip: the set's edge behind it is too busy */
+    fx_ctx_set_color(&oc, 0xFF101820u);
+    fx_fill_rect(&oc, 0, ty - 3 - r.y0, s.w, 28);
+    demo_text(c, r.x0 + 6, ty, 0xFFFFFFFFu, "%s", head);
+    demo_text(c, r.x0 + 6, ty + 13, 0xFF5CE1E6u, "%s", vals);
+    free(zre);
+}
+
 static void page_fractals(fx_ctx *c, demo_state *st)
 {
     int32_t top = DEMO_TAB_H + 8;
@@ -1000,7 +1080,7 @@ static void page_fractals(fx_ctx *c, demo_state *st)
     dwell_lut(lut, 64, c->surf.format, FX_CMAP_HOT);
     fx_dwell_pal pal = {lut, 64, 65536, 1, fx_pack(c->surf.format, 0xFF000000u)};
     /* Mandelbrot */
-    panel(c, 8, top, 388, 250, "Mandelbrot: click to zoom, right click out");
+    panel(c, 8, top, 388, 250, "Mandelbrot: click zooms, right click out, o orbit");
     fx_rect mr = {14, top + 20, 390, top + 244};
     /* deeper zooms need more iterations before points near the set escape */
     uint32_t maxiter = 192;
@@ -1057,6 +1137,8 @@ static void page_fractals(fx_ctx *c, demo_state *st)
                   maxiter);
     color(c, 0xFFFFFFFFu);
     fx_circle(c, st->julia_x, st->julia_y, 3);
+    if (!st->orbit_off)
+        draw_orbit(c, &mv, mr, jre, jim, top + 204);
 
     /* the bottom row: five panels of 152 px */
     int32_t by = top + 258, bh = 186;
@@ -1454,6 +1536,10 @@ int demo_key(demo_state *st, int key)
     }
     if (!strcmp(name, "fractals") && key >= '0' && key <= '6') {
         st->koch_order = key - '0';
+        return 1;
+    }
+    if (!strcmp(name, "fractals") && key == 'o') {
+        st->orbit_off = !st->orbit_off;
         return 1;
     }
     return 0;
