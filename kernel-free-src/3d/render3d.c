@@ -1129,11 +1129,14 @@ static int64_t plane_dist(const pctx *pc, const cvert *v, int p)
     }
 }
 
-/* Sutherland-Hodgman in homogeneous space; n in, returns n out (<= 9). The
+/* Sutherland-Hodgman in homogeneous space; n in, returns n out (<= n + 6
+ * for a convex polygon: a triangle gives at most 9), or -1 when more than
+ * cap (<= SCAN_MAXC + 2) vertices would be needed, which a non-planar
+ * face crossing a plane several times can ask for. The
  * crossing parameter t = d0 / (d0 - d1) is kept in Q28 (distances stay
  * below 2^34), so a new vertex lies on its plane to within the Q16.16
  * rounding of its coordinates. */
-static int clip_poly(const pctx *pc, cvert *v, int n, cvert *tmp, int na)
+static int clip_poly(const pctx *pc, cvert *v, int n, cvert *tmp, int na, int cap)
 {
     for (int p = 0; p < 6 && n >= 3; p++) {
         int64_t d[SCAN_MAXC + 2];
@@ -1147,6 +1150,8 @@ static int clip_poly(const pctx *pc, cvert *v, int n, cvert *tmp, int na)
         int m = 0;
         for (int i = 0; i < n; i++) {
             int j = i + 1 == n ? 0 : i + 1;
+            if (m + 2 > cap)
+                return -1;
             if (d[i] >= 0)
                 tmp[m++] = v[i];
             if ((d[i] < 0) != (d[j] < 0)) {
@@ -1241,7 +1246,7 @@ static void draw_clipped(pctx *pc, const cvert *tri, const tri_mode *m)
     v[0] = tri[0];
     v[1] = tri[1];
     v[2] = tri[2];
-    int n = clip_poly(pc, v, 3, tmp, m->na);
+    int n = clip_poly(pc, v, 3, tmp, m->na, 12);
     if (n < 3)
         return;
     if (n > 3)
@@ -1602,35 +1607,45 @@ static int turn3(const cvert *a, const cvert *b, const cvert *c)
     return facing(t);
 }
 
-/* Clip, project and draw a face of n corners (4..FX3D_SCAN_MAX_VERTS):
- * its fan triangles give coverage, depth and the other attributes as
- * draw_clipped's do, the face its colours (pc->scan). */
-static void draw_face(pctx *pc, const cvert *face, int n, const tri_mode *m)
+/* The face (n corners, 4..FX3D_SCAN_MAX_VERTS) clipped whole and
+ * projected into sp; 0 when nothing is left or its clip would need more
+ * corners than it can have (not convex in space). Kept out of line so that
+ * its clip arrays are gone before draw_clipped's. */
+__attribute__((noinline)) static int face_outline(const pctx *pc, const cvert *face, int n, int na, scanpoly *sp)
 {
     cvert v[SCAN_MAXC + 2], tmp[SCAN_MAXC + 2];
     for (int i = 0; i < n; i++)
         v[i] = face[i];
-    int n0 = n;
-    n = clip_poly(pc, v, n, tmp, m->na);
-    if (n < 3)
-        return;
-    if (n > n0)
-        pc->r->stat_clipped++;
-    svert s[SCAN_MAXC + 2];
-    scanpoly sp;
-    sp.n = n;
-    for (int i = 0; i < n; i++) {
-        project(pc, &v[i], &s[i], m->na);
-        sp.x[i] = s[i].x;
-        sp.y[i] = s[i].y;
+    int nc = clip_poly(pc, v, n, tmp, na, SCAN_MAXC);
+    if (nc < 3)
+        return 0;
+    sp->n = nc;
+    for (int i = 0; i < nc; i++) {
+        svert s;
+        project(pc, &v[i], &s, A_COL + 3);
+        sp->x[i] = s.x;
+        sp->y[i] = s.y;
         for (int k = 0; k < 3; k++)
-            sp.c[i][k] = s[i].a[A_COL + k];
+            sp->c[i][k] = s.a[A_COL + k];
     }
+    return 1;
+}
+
+/* Draw a face: its triangles, each clipped and drawn as draw_clipped draws
+ * it (so coverage, depth and the other attributes are FX3D_GOURAUD's, also
+ * where a non-planar face crosses a clip plane), coloured from the whole
+ * face (pc->scan); a face face_outline refuses keeps the triangles'
+ * colours. */
+static void draw_face(pctx *pc, const cvert *face, int n, const tri_mode *m)
+{
+    scanpoly sp;
     /* emit_tri keeps triangles for a sort without pc->scan: the painter
      * draws them later with the triangle rule */
-    pc->scan = &sp;
-    for (int i = 1; i + 1 < n; i++)
-        emit_tri(pc, &s[0], &s[i], &s[i + 1], m);
+    pc->scan = face_outline(pc, face, n, m->na, &sp) ? &sp : NULL;
+    for (int i = 1; i + 1 < n; i++) {
+        cvert t[3] = {face[0], face[i], face[i + 1]};
+        draw_clipped(pc, t, m);
+    }
     pc->scan = NULL;
 }
 

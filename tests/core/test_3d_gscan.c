@@ -170,3 +170,47 @@ FX_TEST(gscan3d_depth_hides_the_same_under_both_rules)
     free(a);
     free(b);
 }
+
+/* Non-planar fans whose corners zig-zag across the near plane: convex on
+ * the screen, a face to the gatherer, but a clip of such a face can need
+ * more corners than a convex one (n + 6), and its clipped outline is not
+ * its clipped triangles. Drawn without a fault (ASan finds one on the
+ * stack), covering the same pixels at the same depths as the triangles. */
+FX_TEST(gscan3d_zigzag_faces_across_the_near_plane)
+{
+    uint32_t seed = 12345;
+    for (int it = 0; it < 400; it++) {
+        gs *a = gs_new(FX3D_GOURAUD_SCAN, 1), *b = gs_new(FX3D_GOURAUD, 1);
+        gs *gg[2] = {a, b};
+        fx_vec3 pos[8];
+        uint32_t col[8], tri[18];
+        for (int i = 0; i < 8; i++) {
+            fx_angle th = (fx_angle)((uint32_t)i << 29);
+            seed = seed * 1103515245u + 12345u;
+            fx16 z = (i & 1 ? -ONE / 2 : -2 * ONE) + (fx16)(seed >> 16 & 0x3FFF);
+            seed = seed * 1103515245u + 12345u;
+            /* every other time the near corners far out too, beyond the
+             * guard band (4 w) */
+            fx16 rr = ((i & it & 1) ? 20 * ONE : ONE / 4) + (fx16)(seed >> 15 & 0xFFFF);
+            pos[i] = fx_vec3_make(fx16_mul(rr, fx_cos(th)), fx16_mul(rr, fx_sin(th)), z);
+            col[i] = 0xFF000000u | seed;
+        }
+        for (int i = 0; i < 6; i++) {
+            tri[3 * i] = 0;
+            tri[3 * i + 1] = (uint32_t)i + 1;
+            tri[3 * i + 2] = (uint32_t)i + 2;
+        }
+        fx_mesh m = {pos, NULL, tri, 8, 6, 8, 6, NULL, col};
+        for (int k = 0; k < 2; k++) {
+            FX_CHECK_EQ(fx3d_perspective(&gg[k]->r, fx_angle_from_deg(90), ONE, ONE, 10 * ONE), 0);
+            FX_CHECK_EQ(fx3d_draw(&gg[k]->r, &m), 0);
+        }
+        int same = 1;
+        for (int i = 0; i < N * N; i++)
+            same &= (a->px[i] == 0) == (b->px[i] == 0);
+        FX_CHECK_MSG(same, "iteration %d: the rules cover different pixels", it);
+        FX_CHECK_MSG(memcmp(a->depth, b->depth, sizeof a->depth) == 0, "iteration %d: different depths", it);
+        free(a);
+        free(b);
+    }
+}

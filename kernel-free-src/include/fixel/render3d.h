@@ -119,9 +119,13 @@ typedef struct fx3d_material {
  * corner of it turning the same way on the screen (a convex polygon, so a
  * cylinder's cap fan around its centre stops growing before half a turn),
  * of at most FX3D_SCAN_MAX_VERTS vertices (a longer fan goes on as a new
- * face). Faces cut by the near or far plane are clipped whole. Faces fall
- * back to the triangle rule where their triangles are kept for a sort
- * (painter's visibility, sorted translucency) or lit with shadow maps. */
+ * face). A face cut by a clip plane takes its colours from the face
+ * clipped whole, its pixels from its triangles clipped one by one (the
+ * same pixels and depths as FX3D_GOURAUD, even for a face that is not
+ * planar). Faces keep the triangle rule where their triangles are kept for
+ * a sort (painter's visibility, sorted translucency), where they are lit
+ * with shadow maps, and where a face clipped whole would need more than
+ * FX3D_SCAN_MAX_VERTS + 6 corners (not convex in space). */
 typedef enum fx3d_shading { FX3D_FLAT, FX3D_GOURAUD, FX3D_PHONG, FX3D_GOURAUD_SCAN } fx3d_shading;
 #define FX3D_SCAN_MAX_VERTS 8
 typedef enum fx3d_cull { FX3D_CULL_NONE, FX3D_CULL_BACK, FX3D_CULL_FRONT } fx3d_cull;
