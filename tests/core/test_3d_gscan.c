@@ -214,3 +214,44 @@ FX_TEST(gscan3d_zigzag_faces_across_the_near_plane)
         free(b);
     }
 }
+
+/* An OBJ quad (the parser's fan is a face) lit by a point light near one
+ * corner: the centre is the mean of the four lit corners under the notes'
+ * rule (half-way along the side edges, then half-way across), the mean of
+ * the two on the split diagonal under the triangle rule. */
+FX_TEST(gscan3d_obj_quad_is_one_face)
+{
+    const char *t = "v -0.8 -0.8 -2\nv 0.8 -0.8 -2\nv 0.8 0.8 -2\nv -0.8 0.8 -2\nf 1 2 3 4\n";
+    fx_vec3 pos[4], nrm[4];
+    uint32_t tri[6];
+    fx_mesh m = {pos, nrm, tri, 0, 0, 4, 2, NULL, NULL};
+    fx_obj_error err;
+    FX_CHECK_EQ(fx_mesh_obj_parse(&m, t, strlen(t), &err), 0);
+    FX_CHECK_EQ(m.ntris, 2);
+    gs *g[2] = {gs_new(FX3D_GOURAUD_SCAN, 1), gs_new(FX3D_GOURAUD, 1)};
+    fx_color c[4];
+    for (int k = 0; k < 2; k++) {
+        fx3d *r = &g[k]->r;
+        r->ambient = fx3d_rgb_from_color(0);
+        r->mat.specular = fx3d_rgb_from_color(0);
+        r->mat.diffuse = fx3d_rgb_from_color(0xFFFFFF);
+        r->light[0].type = FX3D_LIGHT_POINT;
+        r->light[0].pos = fx_vec3_make(-ONE * 7 / 10, -ONE * 7 / 10, -ONE * 17 / 10);
+        FX_CHECK_EQ(fx3d_draw(r, &m), 0);
+        for (int i = 0; i < 4 && k == 0; i++)
+            c[i] = fx3d_rgb_to_color(fx3d_shade(r, pos[i], fx_vec3_make(0, 0, ONE)));
+    }
+    int all = 0, diag = 0;
+    for (int i = 0; i < 4; i++)
+        all += (int)(c[i] & 255);
+    diag = (int)(c[0] & 255) + (int)(c[2] & 255);
+    all = (all + 2) / 4;
+    diag = (diag + 1) / 2;
+    FX_CHECK_MSG(abs(all - diag) > 8, "corners %06X %06X %06X %06X do not tell the rules apart", (unsigned)c[0],
+                 (unsigned)c[1], (unsigned)c[2], (unsigned)c[3]);
+    uint32_t cs = at(g[0], N / 2, N / 2), ct = at(g[1], N / 2, N / 2);
+    FX_CHECK_MSG(near_rgb(cs, all, all, all), "scan-line centre %06X, wanted %d", (unsigned)cs, all);
+    FX_CHECK_MSG(near_rgb(ct, diag, diag, diag), "triangle-rule centre %06X, wanted %d", (unsigned)ct, diag);
+    free(g[0]);
+    free(g[1]);
+}
