@@ -85,6 +85,18 @@ typedef struct tri_mode {
     fx16 fmv[3][3];         /* the model-view's linear part: tangents go to eye space by it */
 } tri_mode;
 
+/* A face drawn with the notes' scan-line Gouraud (FX3D_GOURAUD_SCAN): its
+ * clipped, projected corners (24.8) and their colours (Q16.16), which the
+ * rasterizer interpolates along the edges, then across the span, instead of
+ * over the triangle. A projected face has at most FX3D_SCAN_MAX_VERTS + 6
+ * corners (one more per clip plane). */
+#define SCAN_MAXC (FX3D_SCAN_MAX_VERTS + 6)
+typedef struct scanpoly {
+    int n;
+    int32_t x[SCAN_MAXC], y[SCAN_MAXC];
+    int32_t c[SCAN_MAXC][3];
+} scanpoly;
+
 typedef struct pctx { /* per-draw state */
     fx3d *r;
     const fx_surface *s;
@@ -104,6 +116,7 @@ typedef struct pctx { /* per-draw state */
     int amb;        /* whether it adds the ambient terms and emission */
     fx16 kd_in;     /* the share of their diffuse it adds (1 - dim in a light pass after a dim ambient one) */
     fx16 kd_out;    /* the share of the other lights' diffuse (the ambient pass's dim diffuse) */
+    const scanpoly *scan; /* the face of the triangles being drawn, under FX3D_GOURAUD_SCAN */
 } pctx;
 
 typedef struct ptri { /* a triangle kept for the painter's sort */
@@ -895,6 +908,69 @@ static fx_color tex_apply(const tri_mode *m, const int64_t *val, const int32_t s
     return out;
 }
 
+/* round(n / d) for d > 0, halves away from zero */
+static int64_t div_round(int64_t n, int64_t d) { return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d); }
+
+/* One row of a scan-line Gouraud face: the leftmost and rightmost crossings
+ * of the row with the face's edges (16 fraction bits of a pixel) and the
+ * colours there, interpolated along those edges. */
+typedef struct scanrow {
+    int ok;
+    int64_t xl, xr;
+    int64_t cl[3], cr[3];
+} scanrow;
+
+/* Colours beyond +-256.0 (lit far past white) are clamped so that the
+ * products below stay in int64; they show as white or black either way. */
+static int64_t clamp_c(int64_t c) { return c < -(1 << 24) ? -(1 << 24) : c > (1 << 24) ? (1 << 24) : c; }
+
+static void scan_row(const scanpoly *p, int32_t y, scanrow *r)
+{
+    int64_t py = (int64_t)y * 256;
+    r->ok = 0;
+    for (int i = 0; i < p->n; i++) {
+        int j = i + 1 == p->n ? 0 : i + 1;
+        int64_t ya = p->y[i], yb = p->y[j];
+        /* a row through a horizontal edge meets its ends on the edges beside it */
+        if (ya == yb || py < FX_MIN(ya, yb) || py > FX_MAX(ya, yb))
+            continue;
+        int64_t dy = yb - ya, t = py - ya;
+        int64_t x = (int64_t)p->x[i] * 256 + div_round(((int64_t)p->x[j] - p->x[i]) * t * 256, dy);
+        int64_t c[3];
+        for (int k = 0; k < 3; k++) {
+            int64_t ca = clamp_c(p->c[i][k]), cb = clamp_c(p->c[j][k]);
+            c[k] = ca + div_round((cb - ca) * t, dy);
+        }
+        if (!r->ok || x < r->xl) {
+            r->xl = x;
+            for (int k = 0; k < 3; k++)
+                r->cl[k] = c[k];
+        }
+        if (!r->ok || x > r->xr) {
+            r->xr = x;
+            for (int k = 0; k < 3; k++)
+                r->cr[k] = c[k];
+        }
+        r->ok = 1;
+    }
+}
+
+/* The colour at pixel centre x of the row, across the span. */
+static fx3d_rgb scan_at(const scanrow *r, int64_t x)
+{
+    int64_t w = r->xr - r->xl, t = x * 65536 - r->xl;
+    t = t < 0 ? 0 : t > w ? w : t;
+    while (w >= ((int64_t)1 << 30)) {
+        w >>= 1;
+        t >>= 1;
+    }
+    int64_t c[3];
+    for (int k = 0; k < 3; k++)
+        c[k] = w > 0 ? r->cl[k] + div_round((r->cr[k] - r->cl[k]) * t, w) : r->cl[k];
+    fx3d_rgb o = {fx_sat32(c[0]), fx_sat32(c[1]), fx_sat32(c[2])};
+    return o;
+}
+
 /* Fill triangle v0 v1 v2 (either orientation) with mode m. */
 static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const svert *v2,
                        const tri_mode *m)
@@ -963,6 +1039,9 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
         }
         if (xl > xr)
             continue;
+        scanrow srow = {0, 0, 0, {0, 0, 0}, {0, 0, 0}};
+        if (pc->scan && m->kind == K_GOURAUD)
+            scan_row(pc->scan, y, &srow);
         int64_t val[1 + NA];
         for (int k = 0; k < ps.n; k++)
             val[k] = ps.base[k] + ps.gx[k] * (xl - ps.bx) + ps.gy[k] * (y - ps.by);
@@ -994,6 +1073,8 @@ static void raster_tri(const pctx *pc, const svert *v0, const svert *v1, const s
                 } else if (m->kind == K_GOURAUD) {
                     int o = 1 + (sh && m->use_sm == 1 ? A_POS : A_COL);
                     fx3d_rgb c = {(fx16)(val[o] >> 16), (fx16)(val[o + 1] >> 16), (fx16)(val[o + 2] >> 16)};
+                    if (srow.ok) /* the face's colour (no shadow maps: see fx3d_draw) */
+                        c = scan_at(&srow, x);
                     if (m->use_sm > 1 && sh) {
                         fx3d_rgb wo[FX3D_MAX_SHADOWS];
                         for (int k = 0; k < m->use_sm; k++) {
@@ -1101,14 +1182,17 @@ static int64_t plane_dist(const pctx *pc, const cvert *v, int p)
     }
 }
 
-/* Sutherland-Hodgman in homogeneous space; n in, returns n out (<= 9). The
+/* Sutherland-Hodgman in homogeneous space; n in, returns n out (<= n + 6
+ * for a convex polygon: a triangle gives at most 9), or -1 when more than
+ * cap (<= SCAN_MAXC + 2) vertices would be needed, which a non-planar
+ * face crossing a plane several times can ask for. The
  * crossing parameter t = d0 / (d0 - d1) is kept in Q28 (distances stay
  * below 2^34), so a new vertex lies on its plane to within the Q16.16
  * rounding of its coordinates. */
-static int clip_poly(const pctx *pc, cvert *v, int n, cvert *tmp, int na)
+static int clip_poly(const pctx *pc, cvert *v, int n, cvert *tmp, int na, int cap)
 {
     for (int p = 0; p < 6 && n >= 3; p++) {
-        int64_t d[12];
+        int64_t d[SCAN_MAXC + 2];
         int out = 0;
         for (int i = 0; i < n; i++) {
             d[i] = plane_dist(pc, &v[i], p);
@@ -1119,6 +1203,8 @@ static int clip_poly(const pctx *pc, cvert *v, int n, cvert *tmp, int na)
         int m = 0;
         for (int i = 0; i < n; i++) {
             int j = i + 1 == n ? 0 : i + 1;
+            if (m + 2 > cap)
+                return -1;
             if (d[i] >= 0)
                 tmp[m++] = v[i];
             if ((d[i] < 0) != (d[j] < 0)) {
@@ -1213,7 +1299,7 @@ static void draw_clipped(pctx *pc, const cvert *tri, const tri_mode *m)
     v[0] = tri[0];
     v[1] = tri[1];
     v[2] = tri[2];
-    int n = clip_poly(pc, v, 3, tmp, m->na);
+    int n = clip_poly(pc, v, 3, tmp, m->na, 12);
     if (n < 3)
         return;
     if (n > 3)
@@ -1273,6 +1359,7 @@ static void pctx_init(pctx *pc, fx3d *r)
     pc->amb = 1;
     pc->kd_in = FX16_ONE;
     pc->kd_out = 0;
+    pc->scan = NULL;
     if (r->sm_phase == 2 && r->sm) {
         if (r->sm_n > 1) {
             for (int k = 0; k < r->sm_n; k++)
@@ -1553,6 +1640,105 @@ static int draw_shadow_pass(fx3d *r, const fx_mesh *m)
     return 0;
 }
 
+/* FX3D_GOURAUD_SCAN: the face being gathered from a fan of triangles
+ * (render3d.h says what a face is), drawn when the fan ends. */
+typedef struct scanfan {
+    int n, f;
+    uint32_t idx[FX3D_SCAN_MAX_VERTS];
+    cvert v[FX3D_SCAN_MAX_VERTS];
+} scanfan;
+
+/* The turn a -> b -> c on the screen, as facing() gives it. */
+static int turn3(const cvert *a, const cvert *b, const cvert *c)
+{
+    cvert t[3];
+    for (int k = 0; k < 4; k++) {
+        t[0].c[k] = a->c[k];
+        t[1].c[k] = b->c[k];
+        t[2].c[k] = c->c[k];
+    }
+    return facing(t);
+}
+
+/* The face (n corners, 4..FX3D_SCAN_MAX_VERTS) clipped whole and
+ * projected into sp; 0 when nothing is left or its clip would need more
+ * corners than it can have (not convex in space). Kept out of line so that
+ * its clip arrays are gone before draw_clipped's. */
+__attribute__((noinline)) static int face_outline(const pctx *pc, const cvert *face, int n, int na, scanpoly *sp)
+{
+    cvert v[SCAN_MAXC + 2], tmp[SCAN_MAXC + 2];
+    for (int i = 0; i < n; i++)
+        v[i] = face[i];
+    int nc = clip_poly(pc, v, n, tmp, na, SCAN_MAXC);
+    if (nc < 3)
+        return 0;
+    sp->n = nc;
+    for (int i = 0; i < nc; i++) {
+        svert s;
+        project(pc, &v[i], &s, A_COL + 3);
+        sp->x[i] = s.x;
+        sp->y[i] = s.y;
+        for (int k = 0; k < 3; k++)
+            sp->c[i][k] = s.a[A_COL + k];
+    }
+    return 1;
+}
+
+/* Draw a face: its triangles, each clipped and drawn as draw_clipped draws
+ * it (so coverage, depth and the other attributes are FX3D_GOURAUD's, also
+ * where a non-planar face crosses a clip plane), coloured from the whole
+ * face (pc->scan); a face face_outline refuses keeps the triangles'
+ * colours. */
+static void draw_face(pctx *pc, const cvert *face, int n, const tri_mode *m)
+{
+    scanpoly sp;
+    /* emit_tri keeps triangles for a sort without pc->scan: the painter
+     * draws them later with the triangle rule */
+    pc->scan = face_outline(pc, face, n, m->na, &sp) ? &sp : NULL;
+    for (int i = 1; i + 1 < n; i++) {
+        cvert t[3] = {face[0], face[i], face[i + 1]};
+        draw_clipped(pc, t, m);
+    }
+    pc->scan = NULL;
+}
+
+static void scan_flush(pctx *pc, scanfan *fan, const tri_mode *m)
+{
+    if (fan->n == 3)
+        draw_clipped(pc, fan->v, m); /* a triangle: exactly FX3D_GOURAUD's */
+    else if (fan->n > 3)
+        draw_face(pc, fan->v, fan->n, m);
+    fan->n = 0;
+}
+
+/* Add triangle v (mesh indices idx, facing f) to the face being gathered
+ * when it continues its fan and keeps it convex; otherwise draw that face
+ * and start another with v. */
+static void scan_add(pctx *pc, scanfan *fan, const cvert *v, const uint32_t *idx, int f, const tri_mode *m)
+{
+    int n = fan->n, grow = n >= 3 && n < FX3D_SCAN_MAX_VERTS && f == fan->f && idx[0] == fan->idx[0] &&
+                           idx[1] == fan->idx[n - 1];
+    for (int i = 0; grow && i < n; i++)
+        grow = idx[2] != fan->idx[i];
+    /* the corners at the last vertex, the new one and the first */
+    if (grow)
+        grow = turn3(&fan->v[n - 2], &fan->v[n - 1], &v[2]) == f && turn3(&fan->v[n - 1], &v[2], &fan->v[0]) == f &&
+               turn3(&v[2], &fan->v[0], &fan->v[1]) == f;
+    if (grow) {
+        fan->v[n] = v[2];
+        fan->idx[n] = idx[2];
+        fan->n = n + 1;
+        return;
+    }
+    scan_flush(pc, fan, m);
+    for (int i = 0; i < 3; i++) {
+        fan->v[i] = v[i];
+        fan->idx[i] = idx[i];
+    }
+    fan->n = 3;
+    fan->f = f;
+}
+
 int fx3d_draw(fx3d *r, const fx_mesh *m)
 {
     if (!m || !m->pos || !m->tri || m->ntris < 0 || m->nverts < 0)
@@ -1624,7 +1810,9 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
     }
     tm.na = 0;
     if (r->polymode == FX3D_FILL) {
-        tm.kind = r->shading == FX3D_FLAT ? K_FLAT : r->shading == FX3D_GOURAUD ? K_GOURAUD : K_PHONG;
+        tm.kind = r->shading == FX3D_FLAT                                         ? K_FLAT
+                  : r->shading == FX3D_GOURAUD || r->shading == FX3D_GOURAUD_SCAN ? K_GOURAUD
+                                                                                  : K_PHONG;
         tm.na = tm.kind == K_FLAT ? 0 : 6;
         if (tm.use_sm)
             tm.na = 9;
@@ -1683,6 +1871,15 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
      * the set a full buffer drops, and the order of equal keys, would
      * change with the clip. */
     int may_skip = r->visibility != FX3D_VIS_PAINTER && !(tm.blend == 1 && r->tbuf);
+    /* The notes' scan-line Gouraud gathers faces from fans (not with
+     * shadow maps, whose shadowed colours are the triangles'); no triangle
+     * of a face is skipped, or the rule of the rest would change with the
+     * clip. */
+    scanfan fan;
+    fan.n = 0;
+    int scan = r->shading == FX3D_GOURAUD_SCAN && tm.kind == K_GOURAUD && !tm.use_sm;
+    if (scan)
+        may_skip = 0;
     /* The vertex cache: entries of an earlier draw have an older gen. */
     vcent *vc = NULL;
     uint32_t gen = 0;
@@ -1707,8 +1904,10 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
             uint32_t idx[3];
             for (int i = 0; i < 3; i++) {
                 idx[i] = m->tri[3 * t + i];
-                if (idx[i] >= (uint32_t)m->nverts)
+                if (idx[i] >= (uint32_t)m->nverts) {
+                    scan_flush(&pc, &fan, &tm); /* what came before is drawn, as without it */
                     return -FX_EINVAL;
+                }
                 vcent *ce = vc ? &vc[idx[i]] : NULL;
                 if (ce && ce->gen == gen) {
                     ep[i] = ce->ep;
@@ -1859,7 +2058,10 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                 if (plane_on && f > 0)
                     for (int i = 0; i < 3; i++)
                         keep[i] = v[i];
-                draw_clipped(&pc, v, &tm);
+                if (scan)
+                    scan_add(&pc, &fan, v, idx, f, &tm);
+                else
+                    draw_clipped(&pc, v, &tm);
             }
 
             if (plane_on && f > 0) {
@@ -1885,6 +2087,7 @@ int fx3d_draw(fx3d *r, const fx_mesh *m)
                 draw_clipped(&pc, keep, &sm_mode);
             }
         }
+        scan_flush(&pc, &fan, &tm);
     }
     return 0;
 }

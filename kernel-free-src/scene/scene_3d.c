@@ -516,7 +516,8 @@ static int choice_cmd(fx_scene *sc, const char *const *ch, int *out)
 static int cmd_shading(fx_scene *sc)
 {
     GET(s);
-    static const char *const ch[] = {"flat", "gouraud", "phong", NULL};
+    /* in fx3d_shading's order: gouraudscan is FX3D_GOURAUD_SCAN */
+    static const char *const ch[] = {"flat", "gouraud", "phong", "gouraudscan", NULL};
     int c;
     TRY(choice_cmd(sc, ch, &c));
     s->r.shading = (fx3d_shading)c;
@@ -1029,7 +1030,10 @@ const fx_scene_cmd fx_scene_cmds_3d[] = {
      "light I off | directional DX DY DZ #RGB | point X Y Z #RGB | spot X Y Z DX DY DZ CUTOFF EXP #RGB", D},
     {"ambient", cmd_ambient, "ambient #RRGGBB", D},
     {"material", cmd_material, "material #AMB #DIFF #SPEC SHININESS [#EMISSION]", D},
-    {"shading", cmd_shading, "shading flat|gouraud|phong", D},
+    {"shading", cmd_shading,
+     "shading flat|gouraud|phong|gouraudscan   (gouraudscan: the notes' scan-line Gouraud, along each face's edges "
+     "then across the span; gouraud splits faces into triangles)",
+     D},
     {"cull", cmd_cull, "cull none|back|front", D},
     {"polymode", cmd_polygon, "polymode fill|wire|hidden", D},
     {"background", cmd_background, "background #RRGGBB", D},

@@ -232,7 +232,7 @@ A(light, I("N", 0, FX3D_MAX_LIGHTS - 1), FORM("off"), FORM("directional"), P3("X
   FORM("point"), P3("X"), P3("Y"), P3("Z"), C("COLOR"), FORM("spot"), P3("X"), P3("Y"), P3("Z"), P3("DX"),
   P3("DY"), P3("DZ"), F("CUTOFF", 0, 90), F("EXPONENT", 0, 128), C("COLOR"));
 A(material, C("AMB"), C("DIFF"), C("SPEC"), I("SHININESS", 0, 128), OPT, C("EMISSION"));
-A(shading, W("flat|gouraud|phong"));
+A(shading, W("flat|gouraud|phong|gouraudscan"));
 A(cull, W("none|back|front"));
 A(polymode, W("fill|wire|hidden"));
 A(size3, P3("SIZE"));

@@ -97,7 +97,37 @@ typedef struct fx3d_material {
     int32_t shininess; /* 0..128 */
 } fx3d_material;
 
-typedef enum fx3d_shading { FX3D_FLAT, FX3D_GOURAUD, FX3D_PHONG } fx3d_shading;
+/* Shading: one colour per face (FX3D_FLAT, GL's last vertex), colours lit
+ * at the vertices and interpolated (FX3D_GOURAUD, FX3D_GOURAUD_SCAN), or
+ * normals interpolated and lit per pixel (FX3D_PHONG).
+ *
+ * The two Gouraud rules differ for faces of four or more vertices.
+ * FX3D_GOURAUD interpolates over each triangle (GL's rule: a quad is two
+ * triangles, and its colour depends on the diagonal). FX3D_GOURAUD_SCAN is
+ * the notes' scan-line rule: on each row the colours are interpolated along
+ * the two edges of the face the row crosses, then across the span between
+ * them, so the notes' quad with red, green, blue and white corners has
+ * centre (128,128,128) where the triangle rule gives (128,0,128) (its first
+ * triangle cuts along the red-blue diagonal). Triangles are drawn the same
+ * by both, pixel for pixel. Only the colour changes: coverage, depth (and
+ * so visibility) and the other attributes come from the face's triangles
+ * as under FX3D_GOURAUD.
+ *
+ * A face is what the mesh generators, fx_mesh_obj_parse and the scripts'
+ * polygon3d write for a polygon: a run of consecutive triangles forming a
+ * fan (a, b, c), (a, c, d), (a, d, e), ... facing the same way, every
+ * corner of it turning the same way on the screen (a convex polygon, so a
+ * cylinder's cap fan around its centre stops growing before half a turn),
+ * of at most FX3D_SCAN_MAX_VERTS vertices (a longer fan goes on as a new
+ * face). A face cut by a clip plane takes its colours from the face
+ * clipped whole, its pixels from its triangles clipped one by one (the
+ * same pixels and depths as FX3D_GOURAUD, even for a face that is not
+ * planar). Faces keep the triangle rule where their triangles are kept for
+ * a sort (painter's visibility, sorted translucency), where they are lit
+ * with shadow maps, and where a face clipped whole would need more than
+ * FX3D_SCAN_MAX_VERTS + 6 corners (not convex in space). */
+typedef enum fx3d_shading { FX3D_FLAT, FX3D_GOURAUD, FX3D_PHONG, FX3D_GOURAUD_SCAN } fx3d_shading;
+#define FX3D_SCAN_MAX_VERTS 8
 typedef enum fx3d_cull { FX3D_CULL_NONE, FX3D_CULL_BACK, FX3D_CULL_FRONT } fx3d_cull;
 typedef enum fx3d_polymode {
     FX3D_FILL,
