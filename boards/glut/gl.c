@@ -2247,12 +2247,28 @@ void glListBase(GLuint base)
     fx_gl.list_base = base;
 }
 
+/* Nesting multiplies: a list that calls itself twice runs 2^64 times at
+ * GL's nesting depth of 64 (Mesa hangs on it). One top-level glCallList
+ * (or each list of a top-level glCallLists) replays at most
+ * FXG_REPLAY_BUDGET recorded calls, 16M,
+ * more than a frame of any real program; the rest is skipped and logged
+ * once. */
+#define FXG_REPLAY_BUDGET ((int64_t)1 << 24)
 static void replay(GLuint id, int d)
 {
     if (!id || id >= FXG_MAX_LISTS || d > 64)
         return;
     fx_glut_list *l = &fx_gl.lists[id];
     for (int i = 0; i < l->nrec; i++) {
+        if (fx_gl.replay_left <= 0) {
+            if (!fx_gl.replay_cut_logged)
+                fx_glut_log("glCallList: stopped after %lld calls replayed by one top-level call "
+                            "(lists calling lists multiply; the rest is skipped)",
+                            (long long)(fx_gl.replay_budget > 0 ? fx_gl.replay_budget : FXG_REPLAY_BUDGET));
+            fx_gl.replay_cut_logged = 1;
+            return;
+        }
+        fx_gl.replay_left--;
         const double *a = l->pool + l->rec[i].off;
         switch (l->rec[i].op) {
 #define FX_GLUT_OP_CASE(name, run) \
@@ -2263,13 +2279,19 @@ static void replay(GLuint id, int d)
         }
     }
 }
-void glCallList(GLuint list)
+static void call_list(GLuint list)
 {
-    REC(OP_CALLLIST, (double)list);
     int was = fx_gl.replaying;
+    if (!was)
+        fx_gl.replay_left = fx_gl.replay_budget > 0 ? fx_gl.replay_budget : FXG_REPLAY_BUDGET;
     fx_gl.replaying = 1;
     replay(list, 0);
     fx_gl.replaying = was;
+}
+void glCallList(GLuint list)
+{
+    REC(OP_CALLLIST, (double)list);
+    call_list(list);
 }
 void glCallLists(GLsizei n, GLenum type, const GLvoid *lists)
 {
@@ -2288,12 +2310,8 @@ void glCallLists(GLsizei n, GLenum type, const GLvoid *lists)
         if (recording()) { /* GL adds the base in effect when the list runs */
             double a = id;
             record(OP_CALLLIST_BASE, 1, &a);
-            if (!fx_gl.list_exec)
-                continue;
-            int was = fx_gl.replaying;
-            fx_gl.replaying = 1;
-            replay(fx_gl.list_base + id, 0);
-            fx_gl.replaying = was;
+            if (fx_gl.list_exec)
+                call_list(fx_gl.list_base + id);
             continue;
         }
         glCallList(fx_gl.list_base + id);

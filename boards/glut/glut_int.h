@@ -98,6 +98,9 @@ typedef struct fx_glut_gl {
     int list_exec; /* COMPILE_AND_EXECUTE */
     int replaying;
     GLuint list_base;
+    int64_t replay_left;   /* what one top-level glCallList may still replay */
+    int64_t replay_budget; /* its start: 0 is FXG_REPLAY_BUDGET (the fuzz target sets less) */
+    int replay_cut_logged;
     /* logged-once flags for unimplemented calls */
     char logged[512];
 } fx_glut_gl;

@@ -194,6 +194,28 @@ FX_TEST(glut_hostile_texture_matrix_saturated)
     FX_CHECK(lit(20, 20)); /* drawn, the texture or its colour */
 }
 
+/* A list that calls itself twice (fuzz_gl's slow input): at GL's nesting
+ * depth of 64 that is 2^64 replays, a hang in Mesa too. One top-level call
+ * stops at the budget, and the next top-level call has a whole one again. */
+FX_TEST(glut_hostile_list_calling_itself_twice_ends)
+{
+    setup();
+    GLuint l = glGenLists(1);
+    glNewList(l, GL_COMPILE);
+    glCallList(l);
+    glCallList(l);
+    glEndList();
+    glCallList(l);
+    FX_CHECK(fx_gl.replay_left == 0);
+    FX_CHECK(!fx_gl.replaying);
+    glNewList(l, GL_COMPILE);
+    glRectd(10, 10, 30, 30);
+    glEndList();
+    glCallList(l);
+    FX_CHECK(lit(20, 20)); /* a fresh budget: the next call draws */
+    glDeleteLists(l, 1);
+}
+
 /* vertices at the boundary's saturation point (+-2^31 units): the
  * clipper's distances and the window transform overflowed */
 FX_TEST(glut_hostile_vertices_near_saturation)
