@@ -270,6 +270,7 @@ const char *fx_strerror(int err)
     case FX_EINVAL: return "invalid argument";
     case FX_EFBIG: return "file too large";
     case FX_ENOSPC: return "out of caller-provided space";
+    case FX_ESPIPE: return "not a regular file (a FIFO, socket or device)";
     case FX_EDOM: return "argument out of domain";
     case FX_ERANGE: return "value out of range";
     case FX_EBADMSG: return "malformed data";

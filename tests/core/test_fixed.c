@@ -263,10 +263,11 @@ FX_TEST(strerror_covers_every_code)
     FX_CHECK(strcmp(fx_strerror(FX_EACCES), "permission denied") == 0);
     FX_CHECK(strcmp(fx_strerror(-9999), "unknown error") == 0);
     FX_CHECK(strcmp(fx_strerror(-FX_ENOENT), "no such file or directory") == 0);
+    FX_CHECK(strcmp(fx_strerror(-FX_ESPIPE), "not a regular file (a FIFO, socket or device)") == 0);
     static const int codes[] = {FX_ENOENT, FX_EIO,    FX_E2BIG,  FX_ENOMEM,    FX_EACCES,
                                 FX_EBUSY,  FX_ENODEV, FX_ENOTDIR, FX_EISDIR,   FX_EINVAL,
                                 FX_EFBIG,  FX_ENOSPC, FX_EDOM,   FX_ERANGE,    FX_EBADMSG,
-                                FX_EOVERFLOW, FX_ENOTSUP};
+                                FX_EOVERFLOW, FX_ENOTSUP, FX_ESPIPE};
     for (size_t i = 0; i < sizeof codes / sizeof codes[0]; i++) {
         FX_CHECK_MSG(strcmp(fx_strerror(-codes[i]), "unknown error") != 0, "code %d", codes[i]);
         for (size_t j = 0; j < i; j++) /* each message tells its code apart */

@@ -90,9 +90,9 @@ script "colorbar 0 0 2147483647 2147483647 100"
 check colorbar-huge 0 "" "$draw" -o "$png" "$out/s.fxs"
 mkfifo "$out/fifo"
 script "obj \"$out/fifo\""
-check obj-fifo 1 "not supported" "$draw" -o "$png" "$out/s.fxs"
+check obj-fifo 1 "not a regular file (a FIFO, socket or device)" "$draw" -o "$png" "$out/s.fxs"
 script "font \"$out/fifo\""
-check font-fifo 1 "not supported" "$draw" -o "$png" "$out/s.fxs"
+check font-fifo 1 "not a regular file (a FIFO, socket or device)" "$draw" -o "$png" "$out/s.fxs"
 
 # ---- scripts: results and messages ----
 script "size 8 8" "polygon 5 5 5 5"

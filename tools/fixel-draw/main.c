@@ -222,7 +222,7 @@ static int fx_code(int e)
     case ENOTDIR: return -FX_ENOTDIR;
     case ENOMEM: return -FX_ENOMEM;
     case ENAMETOOLONG: return -FX_ERANGE;
-    case EOPNOTSUPP: return -FX_ENOTSUP; /* a FIFO, socket or device where a file is needed */
+    case EOPNOTSUPP: return -FX_ESPIPE; /* a FIFO, socket or device where a file is needed */
     default: return -FX_EIO;
     }
 }

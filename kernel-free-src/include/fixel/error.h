@@ -27,6 +27,7 @@ enum {
     FX_EINVAL = 22,
     FX_EFBIG = 27,
     FX_ENOSPC = 28,
+    FX_ESPIPE = 29, /* a FIFO, socket or device where a regular file is needed */
     FX_EDOM = 33,
     FX_ERANGE = 34,
     FX_EBADMSG = 74,
