@@ -821,8 +821,7 @@ void glClear(GLbitfield mask)
     }
     fx_rect r = {0, 0, fx_gl.w, fx_gl.h};
     if (fx_gl.scissor_on)
-        r = (fx_rect){fx_gl.scissor[0], fx_gl.scissor[1], fx_gl.scissor[0] + fx_gl.scissor[2],
-                      fx_gl.scissor[1] + fx_gl.scissor[3]};
+        r = fx_glut_scissor_rect(); /* x + w may pass INT32_MAX */
     fx_color c = ((fx_color)lvl(fx_gl.clear_color[3]) << 24) | ((fx_color)lvl(fx_gl.clear_color[0]) << 16) |
                  ((fx_color)lvl(fx_gl.clear_color[1]) << 8) | (fx_color)lvl(fx_gl.clear_color[2]);
     fx_gl_clear(&fx_gl.tgt, r, c, (mask & GL_COLOR_BUFFER_BIT) != 0, fx_gl.clear_depth,

@@ -216,6 +216,23 @@ FX_TEST(glut_hostile_list_calling_itself_twice_ends)
     glDeleteLists(l, 1);
 }
 
+/* glClear inside a scissor box reaching past INT32_MAX (fuzz_gl): its
+ * corners were summed in int; now it clears from (1, 1) to the edges. */
+FX_TEST(glut_hostile_clear_huge_scissor)
+{
+    setup();
+    glClearColor(1, 1, 1, 1);
+    glScissor(1, 1, INT32_MAX, INT32_MAX);
+    glEnable(GL_SCISSOR_TEST);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    glScissor(0, 0, 40, 40);
+    glClearColor(0, 0, 0, 1);
+    FX_CHECK(lit(39, 39));
+    FX_CHECK(lit(1, 1));
+    FX_CHECK(!lit(0, 0));
+}
+
 /* vertices at the boundary's saturation point (+-2^31 units): the
  * clipper's distances and the window transform overflowed */
 FX_TEST(glut_hostile_vertices_near_saturation)
