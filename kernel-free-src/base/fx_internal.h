@@ -53,7 +53,9 @@ static inline uint32_t fx_luma(fx_color c)
 }
 
 /* fx_pack, inline for fx_ctx_set_color: a program that sets the colour
- * before every primitive pays no call for it. */
+ * before every primitive pays no call for it. No default case: -Wswitch
+ * (in -Wall, an error under -Werror) then names a format left out here,
+ * which used to pack to 0 and draw black without a word (issue #42). */
 static inline uint32_t fx_pack_inline(fx_format f, fx_color c)
 {
     uint32_t r = (c >> 16) & 0xFF, g = (c >> 8) & 0xFF, b = c & 0xFF;
@@ -67,8 +69,9 @@ static inline uint32_t fx_pack_inline(fx_format f, fx_color c)
     case FX_FMT_BGR888: return (b << 16) | (g << 8) | r;
     case FX_FMT_GRAY8: return fx_luma(c);
     case FX_FMT_MONO1: return fx_luma(c) >= 128;
-    default: return 0;
+    case FX_FMT_COUNT: break; /* no format */
     }
+    return 0;
 }
 
 /* fx_rect_intersect, inline for the per-primitive entry points. */

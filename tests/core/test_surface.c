@@ -11,6 +11,119 @@
 static const fx_format all[] = {FX_FMT_XRGB8888, FX_FMT_ARGB8888, FX_FMT_XBGR8888,
                                 FX_FMT_RGB565,   FX_FMT_BGR565,   FX_FMT_RGB888,
                                 FX_FMT_BGR888,   FX_FMT_GRAY8,    FX_FMT_MONO1};
+_Static_assert(sizeof all / sizeof all[0] == FX_FMT_COUNT, "a format is missing from all[]");
+
+static int absd(int a, int b) { return a > b ? a - b : b - a; }
+static int chan(fx_color c, int shift) { return (int)((c >> shift) & 0xFF); }
+static int ref_luma(fx_color c)
+{
+    return (77 * chan(c, 16) + 150 * chan(c, 8) + 29 * chan(c, 0) + 128) >> 8;
+}
+
+/* Whether got (an unpacked pixel) renders want within what format fi can
+ * hold. The precision comes from the table row alone, so a new format needs
+ * no entry here: 24 and 32 bits per pixel are 8 bits a channel (exact), 16
+ * bits at least 5 (555, 565: truncation loses up to 7), 8 bits and fewer are
+ * grey levels (GRAY8, MONO1), judged on luma to within half a level. A
+ * format these rules do not describe (RGB332, ARGB4444) fails until the
+ * rule is extended, which is the point: it cannot pass unnoticed. */
+static int renders(const fx_format_info *fi, fx_color want, fx_color got)
+{
+    unsigned bpp = fi->bits_per_pixel;
+    if ((got >> 24) != (fi->has_alpha ? want >> 24 : 0xFFu))
+        return 0;
+    if (bpp >= 16) {
+        int tol = bpp >= 24 ? 0 : 7;
+        for (int sh = 0; sh <= 16; sh += 8)
+            if (absd(chan(got, sh), chan(want, sh)) > tol)
+                return 0;
+        return 1;
+    }
+    if (chan(got, 16) != chan(got, 8) || chan(got, 8) != chan(got, 0))
+        return 0;
+    int levels = 1 << bpp;
+    return 2 * absd(chan(got, 0), ref_luma(want)) * (levels - 1) <= 255;
+}
+
+/* Issue #42: a format missing from fx_pack or fx_unpack packed to 0 and drew
+ * black. Every row of the table, reached through fx_format_get, must round
+ * trip every probe colour within its precision, and pack a colour to
+ * black's value only when black renders it. */
+FX_TEST(format_table_every_format_packs_and_unpacks)
+{
+    static const fx_color probes[] = {
+        0xFF000000, 0xFFFFFFFF, 0xFFFF0000, 0xFF00FF00, 0xFF0000FF, 0xFFFFFF00, 0xFF00FFFF,
+        0xFFFF00FF, 0xFF808080, 0xFF7F7F7F, 0xFF010101, 0xFF080808, 0xFF123456, 0xFFFEDCBA,
+        0x80FF8040, 0x00FFFFFF, 0x40102030, 0x00000000, 0x7F0000FF,
+    };
+    int nfmt = 0;
+    for (fx_format f = 0; fx_format_get(f); f++, nfmt++) {
+        const fx_format_info *fi = fx_format_get(f);
+        const char *name = fi->name ? fi->name : "(unnamed)";
+        uint32_t s = 42;
+        int bad = 0;
+        for (int i = 0; i < 20000 && bad < 3; i++) {
+            fx_color c = i < (int)(sizeof probes / sizeof probes[0]) ? probes[i] : fx_test_rand(&s);
+            fx_color black = fi->has_alpha ? c & 0xFF000000u : 0xFF000000u;
+            uint32_t v = fx_pack(f, c);
+            fx_color back = fx_unpack(f, v);
+            if (!renders(fi, c, back)) {
+                FX_CHECK_MSG(0, "%s: %08x packs to %x, unpacks to %08x", name, c, v, back);
+                bad++;
+            }
+            if (v == fx_pack(f, black) && !renders(fi, c, black)) {
+                FX_CHECK_MSG(0, "%s: %08x packs to black's value %x", name, c, v);
+                bad++;
+            }
+        }
+    }
+    FX_CHECK_EQ(nfmt, FX_FMT_COUNT);
+}
+
+static int same_name(const char *a, const char *b)
+{
+    for (;; a++, b++) {
+        int x = *a >= 'a' && *a <= 'z' ? *a - 32 : *a, y = *b >= 'a' && *b <= 'z' ? *b - 32 : *b;
+        if (x != y)
+            return 0;
+        if (!x)
+            return 1;
+    }
+}
+
+/* Issue #42: a row with no name made fx_format_from_name read through NULL.
+ * Every row has a non-empty name, unique as the case-insensitive lookup
+ * sees it, that finds its own format in any case, and a size the pixel
+ * accessors know. */
+FX_TEST(format_table_rows_are_named_and_unique)
+{
+    for (fx_format f = 0; f < FX_FMT_COUNT; f++) {
+        const fx_format_info *fi = fx_format_get(f);
+        FX_CHECK(fi != NULL);
+        if (!fi)
+            continue;
+        FX_CHECK_MSG(fi->name && fi->name[0], "format %d has no name", (int)f);
+        if (!fi->name || !fi->name[0])
+            continue;
+        unsigned b = fi->bits_per_pixel;
+        FX_CHECK_MSG(b == 1 || b == 8 || b == 16 || b == 24 || b == 32, "%s: %u bits", fi->name, b);
+        FX_CHECK_EQ(fx_format_from_name(fi->name), f);
+        char lower[32];
+        size_t n = 0;
+        for (; fi->name[n] && n < sizeof lower - 1; n++)
+            lower[n] = fi->name[n] >= 'A' && fi->name[n] <= 'Z' ? fi->name[n] + 32 : fi->name[n];
+        lower[n] = 0;
+        FX_CHECK_EQ(fx_format_from_name(lower), f);
+        for (fx_format g = 0; g < f; g++) {
+            const char *o = fx_format_get(g)->name;
+            FX_CHECK_MSG(!o || !same_name(o, fi->name), "formats %d and %d are both %s", (int)g,
+                         (int)f, fi->name);
+        }
+    }
+    FX_CHECK(fx_format_get(FX_FMT_COUNT) == NULL);
+    FX_CHECK_EQ(fx_format_from_name(NULL), FX_FMT_COUNT);
+    FX_CHECK_EQ(fx_format_from_name(""), FX_FMT_COUNT);
+}
 
 FX_TEST(rgb565_packs_by_truncation_for_every_colour)
 {

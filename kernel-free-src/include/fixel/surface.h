@@ -78,7 +78,8 @@ typedef struct fx_rect {
 /* The description of pixel format f (name, DRM code, bits per pixel);
  * NULL for a value that is no format. */
 const fx_format_info *fx_format_get(fx_format f);
-/* Case-insensitive lookup by name; returns FX_FMT_COUNT when unknown. */
+/* Case-insensitive lookup by name; returns FX_FMT_COUNT when unknown or
+ * NULL. */
 fx_format fx_format_from_name(const char *name);
 /* Smallest stride in bytes for w pixels (MONO1 rounds up to whole bytes);
  * INT32_MAX when it does not fit. */
