@@ -54,6 +54,8 @@ fx_format fx_format_from_name(const char *name)
 /* Saturates at INT32_MAX: 2^30 XRGB8888 pixels wrapped to 0 (issue #26). */
 int32_t fx_format_min_stride(fx_format f, int32_t w)
 {
+    if ((unsigned)f >= FX_FMT_COUNT || w < 0) /* the table is indexed by f */
+        return 0;
     int64_t b = ((int64_t)w * fx_format_table[f].bits_per_pixel + 7) / 8;
     return b > INT32_MAX ? INT32_MAX : (int32_t)b;
 }

@@ -95,6 +95,16 @@ static int same_name(const char *a, const char *b)
  * Every row has a non-empty name, unique as the case-insensitive lookup
  * sees it, that finds its own format in any case, and a size the pixel
  * accessors know. */
+FX_TEST(format_min_stride_refuses_unknown_formats)
+{
+    FX_CHECK_EQ(fx_format_min_stride(FX_FMT_COUNT, 10), 0);
+    FX_CHECK_EQ(fx_format_min_stride((fx_format)-1, 10), 0);
+    FX_CHECK_EQ(fx_format_min_stride(FX_FMT_XRGB8888, -1), 0);
+    FX_CHECK_EQ(fx_format_min_stride(FX_FMT_XRGB8888, 10), 40);
+    FX_CHECK_EQ(fx_format_min_stride(FX_FMT_MONO1, 9), 2);
+    FX_CHECK_EQ(fx_format_min_stride(FX_FMT_XRGB8888, INT32_MAX), INT32_MAX);
+}
+
 FX_TEST(format_table_rows_are_named_and_unique)
 {
     for (fx_format f = 0; f < FX_FMT_COUNT; f++) {

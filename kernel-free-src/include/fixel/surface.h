@@ -82,7 +82,7 @@ const fx_format_info *fx_format_get(fx_format f);
  * NULL. */
 fx_format fx_format_from_name(const char *name);
 /* Smallest stride in bytes for w pixels (MONO1 rounds up to whole bytes);
- * INT32_MAX when it does not fit. */
+ * INT32_MAX when it does not fit; 0 for an unknown format or w < 0. */
 int32_t fx_format_min_stride(fx_format f, int32_t w);
 
 /* Wrap caller memory. Preconditions, each checked (-FX_EINVAL): s and pixels
