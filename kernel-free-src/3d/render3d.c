@@ -545,18 +545,30 @@ void fx3d_bump(fx3d *r, fx16 height, fx16 scale)
 /* The eye-space normal N (unit) of a bumped surface at texture point A_OBJ:
  * the height's object-space gradient goes to eye space like a normal (it
  * is a covector), then N loses its tangential part. */
-static fx_vec3 bump_normal(const tri_mode *m, const int64_t *val, fx_vec3 N)
+/* The object point at A_OBJ (stored / obj_scale), in the units of a map
+ * whose cell is `scale` (the bump or frame map's own scale). */
+static fx_vec3 map_point(const tri_mode *m, const int64_t *val, fx16 scale)
 {
     int64_t q[3];
     for (int i = 0; i < 3; i++) {
         q[i] = val[1 + A_OBJ + i] >> 16;
-        if (m->obj_scale != m->bump_s) /* the solid texture's scale */
-            q[i] = q[i] * m->obj_scale / m->bump_s;
+        if (m->obj_scale != scale) /* the solid texture's scale */
+            q[i] = q[i] * m->obj_scale / scale;
     }
-    fx_vec3 g = fx_rt_bump_gradient(m->bump_h, m->bump_s, fx_vec3_make(fx_sat32(q[0]), fx_sat32(q[1]), fx_sat32(q[2])));
-    int64_t e[3];
+    return fx_vec3_make(fx_sat32(q[0]), fx_sat32(q[1]), fx_sat32(q[2]));
+}
+/* M v for a Q16.16 3x3 matrix, unsaturated (callers saturate) */
+static void mat3_apply(const fx16 M[3][3], fx_vec3 v, int64_t e[3])
+{
     for (int i = 0; i < 3; i++)
-        e[i] = ((int64_t)m->bnm[i][0] * g.x + (int64_t)m->bnm[i][1] * g.y + (int64_t)m->bnm[i][2] * g.z) >> 16;
+        e[i] = ((int64_t)M[i][0] * v.x + (int64_t)M[i][1] * v.y + (int64_t)M[i][2] * v.z) >> 16;
+}
+
+static fx_vec3 bump_normal(const tri_mode *m, const int64_t *val, fx_vec3 N)
+{
+    fx_vec3 g = fx_rt_bump_gradient(m->bump_h, m->bump_s, map_point(m, val, m->bump_s));
+    int64_t e[3];
+    mat3_apply(m->bnm, g, e);
     int64_t gn = (e[0] * N.x + e[1] * N.y + e[2] * N.z) >> 16;
     fx_vec3 o = fx_vec3_make(fx_sat32(N.x - e[0] + ((gn * N.x) >> 16)), fx_sat32(N.y - e[1] + ((gn * N.y) >> 16)),
                              fx_sat32(N.z - e[2] + ((gn * N.z) >> 16)));
@@ -578,16 +590,9 @@ void fx3d_frame(fx3d *r, int kind, fx16 strength, fx16 scale)
  * normal part (fx_rt_frame). */
 static fx_vec3 frame_tangent(const tri_mode *m, const int64_t *val, fx_vec3 N)
 {
-    int64_t q[3];
-    for (int i = 0; i < 3; i++) {
-        q[i] = val[1 + A_OBJ + i] >> 16;
-        if (m->obj_scale != m->frame_s)
-            q[i] = q[i] * m->obj_scale / m->frame_s;
-    }
-    fx_vec3 d = fx_rt_frame_dir(m->frame_kind, fx_vec3_make(fx_sat32(q[0]), fx_sat32(q[1]), fx_sat32(q[2])));
+    fx_vec3 d = fx_rt_frame_dir(m->frame_kind, map_point(m, val, m->frame_s));
     int64_t e[3];
-    for (int i = 0; i < 3; i++)
-        e[i] = ((int64_t)m->fmv[i][0] * d.x + (int64_t)m->fmv[i][1] * d.y + (int64_t)m->fmv[i][2] * d.z) >> 16;
+    mat3_apply(m->fmv, d, e);
     fx_vec3 t, b;
     fx_rt_frame(fx_vec3_make(fx_sat32(e[0]), fx_sat32(e[1]), fx_sat32(e[2])), N, &t, &b);
     return t;
